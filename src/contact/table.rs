@@ -1,0 +1,99 @@
+//! The contact table: u_c and ū_c against the reduced pressure P0/E*, built once per surface.
+//!
+//! For a given spectrum and settings, the critical junction depends on the nominal pressure
+//! and the rubber only through `s = P0/E*` (DESIGN §2). ζc, λc and h_rms(ζc) are closed forms
+//! and are always computed exactly; only the quadrature results u_c and ū_c are tabulated, as
+//! `ln(u/h_rms)` on a uniform grid in `ln s`, with 4-point cubic interpolation. Outside the
+//! tabulated range the exact path answers, so a lookup is never less accurate than the table's
+//! stated tolerance.
+
+use super::{Junction, PerssonContact};
+use crate::numerics::interp::UniformCubic;
+
+/// How the table is laid out.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TableSettings {
+    /// Grid points per decade of `P0/E*`.
+    pub points_per_decade: f64,
+    /// Decades of `P0/E*` covered below the sealing pressure.
+    pub decades: f64,
+    /// The table ends at `s_seal · (1 − upper_gap)`; closer to sealing the exact path answers.
+    pub upper_gap: f64,
+}
+
+impl Default for TableSettings {
+    fn default() -> Self {
+        TableSettings { points_per_decade: 12.0, decades: 8.0, upper_gap: 0.02 }
+    }
+}
+
+/// u_c(P0/E*) and ū_c(P0/E*) for one surface (see the module docs).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ContactTable {
+    exact: PerssonContact,
+    s_seal: f64,
+    ln_h: f64,
+    u_c: UniformCubic,
+    ubar_c: UniformCubic,
+}
+
+impl ContactTable {
+    /// Builds the table by evaluating the exact path at every node.
+    pub fn build(exact: PerssonContact, settings: TableSettings) -> Self {
+        let s_seal = exact.sealing_reduced_pressure();
+        let r_hi = 1.0 - settings.upper_gap;
+        let hi = logit(r_hi);
+        let lo = logit(10f64.powf(-settings.decades));
+        let n = ((hi - lo) / std::f64::consts::LN_10 * settings.points_per_decade).ceil().max(4.0) as usize;
+        let h = (hi - lo) / (n - 1) as f64;
+        let ln_h = exact.spectrum().rms_roughness().ln();
+        let mut u = Vec::with_capacity(n);
+        let mut ub = Vec::with_capacity(n);
+        for i in 0..n {
+            let s = s_seal * logistic(lo + h * i as f64);
+            let j = match exact.critical_junction(s) {
+                Junction::Leaking(j) => j,
+                Junction::Sealed => unreachable!("the table stays below the sealing pressure"),
+            };
+            u.push(j.u_c.ln() - ln_h);
+            ub.push(j.ubar_c.ln() - ln_h);
+        }
+        ContactTable { exact, s_seal, ln_h, u_c: UniformCubic::new(lo, h, u), ubar_c: UniformCubic::new(lo, h, ub) }
+    }
+
+    /// The exact path the table was built from.
+    pub fn exact(&self) -> &PerssonContact {
+        &self.exact
+    }
+
+    /// Range of `P0/E*` the table covers; outside it lookups use the exact path.
+    pub fn range(&self) -> (f64, f64) {
+        let (a, b) = self.u_c.range();
+        (self.s_seal * logistic(a), self.s_seal * logistic(b))
+    }
+
+    /// The critical junction at `s = P0/E*`: ζc exact, u_c and ū_c interpolated.
+    pub fn critical_junction(&self, s: f64) -> Junction {
+        let ln_s = logit(s / self.s_seal);
+        let (lo, hi) = self.u_c.range();
+        if !(ln_s >= lo && ln_s <= hi) {
+            return self.exact.critical_junction(s);
+        }
+        let Some(ln_a) = self.exact.critical_ln_q(s) else {
+            return Junction::Sealed;
+        };
+        let u_c = (self.u_c.eval(ln_s) + self.ln_h).exp();
+        let ubar_c = (self.ubar_c.eval(ln_s) + self.ln_h).exp();
+        Junction::Leaking(self.exact.junction_from(ln_a, u_c, ubar_c))
+    }
+}
+
+/// `ln(r/(1−r))`: log-uniform for r → 0, stretched towards the sealing end r → 1.
+fn logit(r: f64) -> f64 {
+    r.ln() - (-r).ln_1p()
+}
+
+/// Inverse of [`logit`].
+fn logistic(v: f64) -> f64 {
+    1.0 / (1.0 + (-v).exp())
+}

@@ -1,0 +1,168 @@
+//! Leak rate of a static seal through its critical constriction (PY08 §2, eqs. 1–3).
+
+use crate::contact::{ContactSettings, ContactTable, Elastic, Junction, PerssonContact, TableSettings};
+use crate::surface::Spectrum;
+use std::fmt;
+
+/// A Newtonian, incompressible fluid and the pressure it pushes across the seal.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Fluid {
+    /// Dynamic viscosity η [Pa·s].
+    pub viscosity: f64,
+    /// ΔP = P_a − P_b across the seal [Pa] (≥ 0).
+    pub pressure_difference: f64,
+}
+
+/// A flat seal: uniform nominal pressure over a rectangle `width × length` (PY08 Fig. 2).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FlatSeal {
+    /// Nominal squeezing pressure P0 [Pa].
+    pub nominal_pressure: f64,
+    /// L_x, the width along the flow [m].
+    pub width: f64,
+    /// L_y, the length across the flow [m].
+    pub length: f64,
+}
+
+/// Which path evaluates the critical junction.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Fidelity {
+    /// Quadrature at every pressure.
+    Exact,
+    /// Interpolation in a [`ContactTable`] built once per surface (falls back to the exact
+    /// path outside the table's range).
+    #[default]
+    Table,
+}
+
+/// Everything the static leak calculation needs, in SI units.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StaticProblem {
+    pub material: Elastic,
+    pub spectrum: Spectrum,
+    pub fluid: Fluid,
+    pub seal: FlatSeal,
+    pub contact: ContactSettings,
+    /// Shape factor α of the critical constriction (PY08 eq. 2), ≈ 1.
+    pub shape_factor: f64,
+}
+
+/// One evaluated pressure point.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LeakPoint {
+    /// Nominal squeezing pressure P0 [Pa].
+    pub nominal_pressure: f64,
+    pub junction: Junction,
+    /// Volume leak rate Q̇ [m³/s]; exactly 0 when sealed.
+    pub leak_rate: f64,
+}
+
+/// A physics caveat about a result: the model was used outside the range where it holds.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Warning {
+    /// ΔP/P0 is not small: the fluid pressure deforms the contact (PY08 §2 assumes P0 ≫ ΔP).
+    PressureRatio { nominal_pressure: f64, ratio: f64 },
+    /// u_c/λ_c is not small: the lubrication (thin-gap) approximation behind eq. 1 fails.
+    AspectRatio { nominal_pressure: f64, ratio: f64 },
+    /// u_c is below a molecular size (1 nm): continuum flow is not a valid picture.
+    MolecularGap { nominal_pressure: f64, u_c: f64 },
+    /// ζc is within a factor 2 of q1/q0: the result depends on the (often uncertain) cut-off.
+    NearCutoff { nominal_pressure: f64, zeta_c: f64, zeta_1: f64 },
+}
+
+impl fmt::Display for Warning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            Warning::PressureRatio { nominal_pressure, ratio } => write!(
+                f,
+                "at P0 = {nominal_pressure:.4e} Pa, ΔP/P0 = {ratio:.3}: the theory assumes P0 ≫ ΔP \
+                 (the fluid pressure opens the interface; the leak rate is underestimated)"
+            ),
+            Warning::AspectRatio { nominal_pressure, ratio } => write!(
+                f,
+                "at P0 = {nominal_pressure:.4e} Pa, u_c/λ_c = {ratio:.3}: the thin-gap flow assumption \
+                 u_c ≪ λ_c does not hold"
+            ),
+            Warning::MolecularGap { nominal_pressure, u_c } => write!(
+                f,
+                "at P0 = {nominal_pressure:.4e} Pa, u_c = {u_c:.3e} m is below 1 nm: continuum flow is \
+                 not valid there; read the leak rate as 'effectively zero'"
+            ),
+            Warning::NearCutoff { nominal_pressure, zeta_c, zeta_1 } => write!(
+                f,
+                "at P0 = {nominal_pressure:.4e} Pa, ζc = {zeta_c:.4e} is within a factor 2 of q1/q0 = \
+                 {zeta_1:.4e}: the result depends on the short-wavelength cut-off q1"
+            ),
+        }
+    }
+}
+
+/// Leak rate through the critical constrictions of a flat seal (PY08 eqs. 1–3):
+/// `Q̇ = (L_y/L_x) α u_c³ ΔP / (12 η)` [m³/s].
+pub fn leak_rate(u_c: f64, fluid: &Fluid, width: f64, length: f64, shape_factor: f64) -> f64 {
+    (length / width) * shape_factor * u_c.powi(3) * fluid.pressure_difference / (12.0 * fluid.viscosity)
+}
+
+/// Evaluates the critical junction of one surface at many pressures, by the exact path or a
+/// contact table built once (and re-used for every pressure).
+#[derive(Debug, Clone)]
+pub struct StaticSolver {
+    problem: StaticProblem,
+    exact: PerssonContact,
+    table: Option<ContactTable>,
+}
+
+impl StaticSolver {
+    /// Prepares the solver; with [`Fidelity::Table`] this builds the contact table.
+    pub fn new(problem: StaticProblem, fidelity: Fidelity) -> Self {
+        let exact = PerssonContact::new(problem.spectrum.clone(), problem.contact);
+        let table = match fidelity {
+            Fidelity::Exact => None,
+            Fidelity::Table => Some(ContactTable::build(exact.clone(), TableSettings::default())),
+        };
+        StaticSolver { problem, exact, table }
+    }
+
+    pub fn problem(&self) -> &StaticProblem {
+        &self.problem
+    }
+
+    /// The junction and leak rate at nominal pressure `p0` [Pa] (> 0).
+    pub fn evaluate(&self, p0: f64) -> LeakPoint {
+        let s = p0 / self.problem.material.effective_modulus();
+        let junction = match &self.table {
+            Some(t) => t.critical_junction(s),
+            None => self.exact.critical_junction(s),
+        };
+        let pb = &self.problem;
+        let leak_rate = match junction {
+            Junction::Leaking(j) => leak_rate(j.u_c, &pb.fluid, pb.seal.width, pb.seal.length, pb.shape_factor),
+            Junction::Sealed => 0.0,
+        };
+        LeakPoint { nominal_pressure: p0, junction, leak_rate }
+    }
+
+    /// The validity caveats of one result (empty when the model holds).
+    pub fn warnings(&self, point: &LeakPoint) -> Vec<Warning> {
+        let p0 = point.nominal_pressure;
+        let mut w = Vec::new();
+        let ratio = self.problem.fluid.pressure_difference / p0;
+        if ratio > 0.1 {
+            w.push(Warning::PressureRatio { nominal_pressure: p0, ratio });
+        }
+        if let Junction::Leaking(j) = point.junction {
+            let aspect = j.u_c / j.lambda_c;
+            if aspect > 0.1 {
+                w.push(Warning::AspectRatio { nominal_pressure: p0, ratio: aspect });
+            }
+            if j.u_c < 1e-9 {
+                w.push(Warning::MolecularGap { nominal_pressure: p0, u_c: j.u_c });
+            }
+            let zeta_1 = self.problem.spectrum.q1() / self.problem.spectrum.q0();
+            if j.zeta_c > 0.5 * zeta_1 {
+                w.push(Warning::NearCutoff { nominal_pressure: p0, zeta_c: j.zeta_c, zeta_1 });
+            }
+        }
+        w
+    }
+}
