@@ -1,6 +1,8 @@
 //! Leak rate of a static seal through its critical constriction (PY08 §2, eqs. 1–3).
 
-use crate::contact::{ContactSettings, ContactTable, Elastic, Junction, PerssonContact, TableSettings};
+use crate::contact::{
+    ContactSettings, ContactTable, Elastic, Junction, PerssonContact, TableSettings,
+};
 use crate::surface::Spectrum;
 use std::fmt;
 
@@ -67,28 +69,45 @@ pub enum Warning {
     /// u_c is below a molecular size (1 nm): continuum flow is not a valid picture.
     MolecularGap { nominal_pressure: f64, u_c: f64 },
     /// ζc is within a factor 2 of q1/q0: the result depends on the (often uncertain) cut-off.
-    NearCutoff { nominal_pressure: f64, zeta_c: f64, zeta_1: f64 },
+    NearCutoff {
+        nominal_pressure: f64,
+        zeta_c: f64,
+        zeta_1: f64,
+    },
 }
 
 impl fmt::Display for Warning {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match *self {
-            Warning::PressureRatio { nominal_pressure, ratio } => write!(
+            Warning::PressureRatio {
+                nominal_pressure,
+                ratio,
+            } => write!(
                 f,
                 "at P0 = {nominal_pressure:.4e} Pa, ΔP/P0 = {ratio:.3}: the theory assumes P0 ≫ ΔP \
                  (the fluid pressure opens the interface; the leak rate is underestimated)"
             ),
-            Warning::AspectRatio { nominal_pressure, ratio } => write!(
+            Warning::AspectRatio {
+                nominal_pressure,
+                ratio,
+            } => write!(
                 f,
                 "at P0 = {nominal_pressure:.4e} Pa, u_c/λ_c = {ratio:.3}: the thin-gap flow assumption \
                  u_c ≪ λ_c does not hold"
             ),
-            Warning::MolecularGap { nominal_pressure, u_c } => write!(
+            Warning::MolecularGap {
+                nominal_pressure,
+                u_c,
+            } => write!(
                 f,
                 "at P0 = {nominal_pressure:.4e} Pa, u_c = {u_c:.3e} m is below 1 nm: continuum flow is \
                  not valid there; read the leak rate as 'effectively zero'"
             ),
-            Warning::NearCutoff { nominal_pressure, zeta_c, zeta_1 } => write!(
+            Warning::NearCutoff {
+                nominal_pressure,
+                zeta_c,
+                zeta_1,
+            } => write!(
                 f,
                 "at P0 = {nominal_pressure:.4e} Pa, ζc = {zeta_c:.4e} is within a factor 2 of q1/q0 = \
                  {zeta_1:.4e}: the result depends on the short-wavelength cut-off q1"
@@ -100,7 +119,8 @@ impl fmt::Display for Warning {
 /// Leak rate through the critical constrictions of a flat seal (PY08 eqs. 1–3):
 /// `Q̇ = (L_y/L_x) α u_c³ ΔP / (12 η)` [m³/s].
 pub fn leak_rate(u_c: f64, fluid: &Fluid, width: f64, length: f64, shape_factor: f64) -> f64 {
-    (length / width) * shape_factor * u_c.powi(3) * fluid.pressure_difference / (12.0 * fluid.viscosity)
+    (length / width) * shape_factor * u_c.powi(3) * fluid.pressure_difference
+        / (12.0 * fluid.viscosity)
 }
 
 /// Evaluates the critical junction of one surface at many pressures, by the exact path or a
@@ -120,7 +140,11 @@ impl StaticSolver {
             Fidelity::Exact => None,
             Fidelity::Table => Some(ContactTable::build(exact.clone(), TableSettings::default())),
         };
-        StaticSolver { problem, exact, table }
+        StaticSolver {
+            problem,
+            exact,
+            table,
+        }
     }
 
     pub fn problem(&self) -> &StaticProblem {
@@ -136,10 +160,20 @@ impl StaticSolver {
         };
         let pb = &self.problem;
         let leak_rate = match junction {
-            Junction::Leaking(j) => leak_rate(j.u_c, &pb.fluid, pb.seal.width, pb.seal.length, pb.shape_factor),
+            Junction::Leaking(j) => leak_rate(
+                j.u_c,
+                &pb.fluid,
+                pb.seal.width,
+                pb.seal.length,
+                pb.shape_factor,
+            ),
             Junction::Sealed => 0.0,
         };
-        LeakPoint { nominal_pressure: p0, junction, leak_rate }
+        LeakPoint {
+            nominal_pressure: p0,
+            junction,
+            leak_rate,
+        }
     }
 
     /// The validity caveats of one result (empty when the model holds).
@@ -148,19 +182,32 @@ impl StaticSolver {
         let mut w = Vec::new();
         let ratio = self.problem.fluid.pressure_difference / p0;
         if ratio > 0.1 {
-            w.push(Warning::PressureRatio { nominal_pressure: p0, ratio });
+            w.push(Warning::PressureRatio {
+                nominal_pressure: p0,
+                ratio,
+            });
         }
         if let Junction::Leaking(j) = point.junction {
             let aspect = j.u_c / j.lambda_c;
             if aspect > 0.1 {
-                w.push(Warning::AspectRatio { nominal_pressure: p0, ratio: aspect });
+                w.push(Warning::AspectRatio {
+                    nominal_pressure: p0,
+                    ratio: aspect,
+                });
             }
             if j.u_c < 1e-9 {
-                w.push(Warning::MolecularGap { nominal_pressure: p0, u_c: j.u_c });
+                w.push(Warning::MolecularGap {
+                    nominal_pressure: p0,
+                    u_c: j.u_c,
+                });
             }
             let zeta_1 = self.problem.spectrum.q1() / self.problem.spectrum.q0();
             if j.zeta_c > 0.5 * zeta_1 {
-                w.push(Warning::NearCutoff { nominal_pressure: p0, zeta_c: j.zeta_c, zeta_1 });
+                w.push(Warning::NearCutoff {
+                    nominal_pressure: p0,
+                    zeta_c: j.zeta_c,
+                    zeta_1,
+                });
             }
         }
         w

@@ -102,7 +102,12 @@ impl Spectrum {
         let slope = -2.0 * (1.0 + hurst);
         let (ln_q0, ln_q1) = (q0.ln(), q1.ln());
         let segments = match rolloff {
-            None => vec![Segment { ln_q: ln_q0, ln_q_end: ln_q1, ln_c: 0.0, slope }],
+            None => vec![Segment {
+                ln_q: ln_q0,
+                ln_q_end: ln_q1,
+                ln_c: 0.0,
+                slope,
+            }],
             Some(qr) => {
                 positive_finite("roll-off wavevector", qr)?;
                 if !(qr > q0 && qr < q1) {
@@ -112,8 +117,18 @@ impl Spectrum {
                 }
                 let ln_qr = qr.ln();
                 vec![
-                    Segment { ln_q: ln_q0, ln_q_end: ln_qr, ln_c: 0.0, slope: 0.0 },
-                    Segment { ln_q: ln_qr, ln_q_end: ln_q1, ln_c: 0.0, slope },
+                    Segment {
+                        ln_q: ln_q0,
+                        ln_q_end: ln_qr,
+                        ln_c: 0.0,
+                        slope: 0.0,
+                    },
+                    Segment {
+                        ln_q: ln_qr,
+                        ln_q_end: ln_q1,
+                        ln_c: 0.0,
+                        slope,
+                    },
                 ]
             }
         };
@@ -127,7 +142,9 @@ impl Spectrum {
     /// linearly in `ln C` against `ln q` (DESIGN §2). At least two points.
     pub fn tabulated(q: &[f64], c: &[f64]) -> Result<Self, SpectrumError> {
         if q.len() != c.len() {
-            return Err(SpectrumError::Invalid("q and C columns differ in length".into()));
+            return Err(SpectrumError::Invalid(
+                "q and C columns differ in length".into(),
+            ));
         }
         if q.len() < 2 {
             return Err(SpectrumError::Invalid(format!(
@@ -172,7 +189,11 @@ impl Spectrum {
             let prev = segments[k - 1];
             segments[k].ln_c = prev.ln_c_at(prev.ln_q_end);
         }
-        let mut s = Spectrum { segments, cum_m3: Vec::new(), cum_m1: Vec::new() };
+        let mut s = Spectrum {
+            segments,
+            cum_m3: Vec::new(),
+            cum_m1: Vec::new(),
+        };
         s.recompute_cumulative();
         s
     }
@@ -222,7 +243,12 @@ impl Spectrum {
             .filter(|s| s.ln_q_end > lo && s.ln_q < hi)
             .map(|s| {
                 let start = s.ln_q.max(lo);
-                Segment { ln_q: start, ln_q_end: s.ln_q_end.min(hi), ln_c: s.ln_c_at(start), slope: s.slope }
+                Segment {
+                    ln_q: start,
+                    ln_q_end: s.ln_q_end.min(hi),
+                    ln_c: s.ln_c_at(start),
+                    slope: s.slope,
+                }
             })
             .collect();
         Ok(Spectrum::from_segments(segments))
@@ -352,7 +378,10 @@ impl Spectrum {
         if !(target >= 0.0) || target > self.total_m3() {
             return None;
         }
-        let k = self.cum_m3.partition_point(|&m| m <= target).saturating_sub(1);
+        let k = self
+            .cum_m3
+            .partition_point(|&m| m <= target)
+            .saturating_sub(1);
         let k = k.min(self.segments.len() - 1);
         let seg = &self.segments[k];
         let rest = target - self.cum_m3[k];
@@ -360,7 +389,11 @@ impl Spectrum {
         let base = (4.0 * seg.ln_q + seg.ln_c).exp();
         let e = 4.0 + seg.slope;
         let r = rest / base;
-        let l = if (e * r).abs() < 1e-12 { r * (1.0 - 0.5 * e * r) } else { (e * r).ln_1p() / e };
+        let l = if (e * r).abs() < 1e-12 {
+            r * (1.0 - 0.5 * e * r)
+        } else {
+            (e * r).ln_1p() / e
+        };
         Some((seg.ln_q + l).min(seg.ln_q_end))
     }
 }
@@ -369,7 +402,9 @@ fn positive_finite(what: &str, v: f64) -> Result<(), SpectrumError> {
     if v.is_finite() && v > 0.0 {
         Ok(())
     } else {
-        Err(SpectrumError::Invalid(format!("{what} must be positive and finite, got {v}")))
+        Err(SpectrumError::Invalid(format!(
+            "{what} must be positive and finite, got {v}"
+        )))
     }
 }
 

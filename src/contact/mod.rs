@@ -52,14 +52,20 @@ pub struct QuadratureSettings {
 
 impl Default for QuadratureSettings {
     fn default() -> Self {
-        QuadratureSettings { panel_width: 1.0, order: 8 }
+        QuadratureSettings {
+            panel_width: 1.0,
+            order: 8,
+        }
     }
 }
 
 impl QuadratureSettings {
     /// The same rule with `factor`× as many nodes (narrower panels): for convergence checks.
     pub fn refined(self, factor: f64) -> Self {
-        QuadratureSettings { panel_width: self.panel_width / factor, order: self.order }
+        QuadratureSettings {
+            panel_width: self.panel_width / factor,
+            order: self.order,
+        }
     }
 }
 
@@ -76,7 +82,11 @@ pub struct ContactSettings {
 
 impl Default for ContactSettings {
     fn default() -> Self {
-        ContactSettings { percolation_threshold: 0.4, gamma: 0.4, quadrature: QuadratureSettings::default() }
+        ContactSettings {
+            percolation_threshold: 0.4,
+            gamma: 0.4,
+            quadrature: QuadratureSettings::default(),
+        }
     }
 }
 
@@ -99,7 +109,9 @@ pub struct CriticalJunction {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Junction {
     Leaking(CriticalJunction),
-    /// `A(q1/q0)/A0` is still above the threshold: no open channel, no leak.
+    /// `A(q1/q0)/A0` is still above the threshold, so no non-contact channel percolates; or
+    /// (within ≈3 % of the sealing pressure) the constriction height underflows double
+    /// precision. No leak.
     Sealed,
 }
 
@@ -154,7 +166,13 @@ impl PerssonContact {
     pub fn new(spectrum: Spectrum, settings: ContactSettings) -> Self {
         let (nodes, weights) = gauss_legendre(settings.quadrature.order.max(1));
         let e = erf_inv(settings.percolation_threshold);
-        PerssonContact { spectrum, settings, erfinv2: e * e, nodes, weights }
+        PerssonContact {
+            spectrum,
+            settings,
+            erfinv2: e * e,
+            nodes,
+            weights,
+        }
     }
 
     pub fn spectrum(&self) -> &Spectrum {
@@ -208,13 +226,22 @@ impl PerssonContact {
         let dm3 = (4.0 * ln_a + sp.ln_c(ln_a)).exp();
         let y = s / (PI * m3).sqrt();
         let area = erf(y);
-        let area_d = if m3 > 0.0 { -(y / PI.sqrt()) * (-y * y).exp() * dm3 / m3 } else { 0.0 };
+        let area_d = if m3 > 0.0 {
+            -(y / PI.sqrt()) * (-y * y).exp() * dm3 / m3
+        } else {
+            0.0
+        };
         let pr = s / area; // p(ζ)/E*
         let pr_d = -s * area_d / (area * area);
 
         let ln_t_max = (sp.ln_q1() - ln_a).exp_m1().ln();
         if !(ln_t_max.is_finite()) {
-            return Separation { mean: 0.0, mean_dlnzeta: 0.0, area, area_dlnzeta: area_d };
+            return Separation {
+                mean: 0.0,
+                mean_dlnzeta: 0.0,
+                area,
+                area_dlnzeta: area_d,
+            };
         }
         // Lower cut: w(q) pr = X_CUT ⇔ π M3(a, q) = (pr/X_CUT)², to leading order in t.
         let m_cut = (pr / X_CUT).powi(2) / PI;
@@ -228,7 +255,12 @@ impl PerssonContact {
             }
         };
         if ln_t_min >= ln_t_max {
-            return Separation { mean: 0.0, mean_dlnzeta: 0.0, area, area_dlnzeta: area_d };
+            return Separation {
+                mean: 0.0,
+                mean_dlnzeta: 0.0,
+                area,
+                area_dlnzeta: area_d,
+            };
         }
 
         // Panel breakpoints: ends plus the spectrum's kinks above a.
@@ -278,7 +310,12 @@ impl PerssonContact {
             }
         }
         let sqrt_pi = PI.sqrt();
-        Separation { mean: sqrt_pi * mean, mean_dlnzeta: sqrt_pi * mean_d, area, area_dlnzeta: area_d }
+        Separation {
+            mean: sqrt_pi * mean,
+            mean_dlnzeta: sqrt_pi * mean_d,
+            area,
+            area_dlnzeta: area_d,
+        }
     }
 
     /// The critical junction at reduced pressure `s = P0/E*` by quadrature (the exact path).
@@ -288,7 +325,13 @@ impl PerssonContact {
             return Junction::Sealed;
         };
         let sep = self.separation_at(ln_a, m3, s);
-        Junction::Leaking(self.junction_from(ln_a, sep.u1(), sep.mean))
+        let (u_c, ubar_c) = (sep.u1(), sep.mean);
+        // So close to the sealing pressure that the gap integrand is below e^{-64} everywhere:
+        // the channel exists in principle but has no height in double precision.
+        if !(ubar_c > 0.0 && u_c > ubar_c) {
+            return Junction::Sealed;
+        }
+        Junction::Leaking(self.junction_from(ln_a, u_c, ubar_c))
     }
 
     /// Assembles the junction at `ln(ζc q0) = ln_a` from u_c and ū_c (used by the table).
@@ -297,8 +340,8 @@ impl PerssonContact {
         CriticalJunction {
             zeta_c,
             lambda_c: 2.0 * PI / ln_a.exp(),
-            u_c: u_c.max(0.0),
-            ubar_c: ubar_c.max(0.0),
+            u_c,
+            ubar_c,
             hrms_c: self.spectrum.rms_roughness_above(ln_a.exp()),
         }
     }
@@ -329,7 +372,11 @@ mod tests {
             let m = c.separation(zeta, s);
             let fd_u = (b.mean - a.mean) / (2.0 * h);
             let fd_a = (b.area - a.area) / (2.0 * h);
-            assert!((fd_u / m.mean_dlnzeta - 1.0).abs() < 1e-6, "zeta={zeta}: {fd_u} vs {}", m.mean_dlnzeta);
+            assert!(
+                (fd_u / m.mean_dlnzeta - 1.0).abs() < 1e-6,
+                "zeta={zeta}: {fd_u} vs {}",
+                m.mean_dlnzeta
+            );
             assert!((fd_a / m.area_dlnzeta - 1.0).abs() < 1e-6);
         }
     }

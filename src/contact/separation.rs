@@ -48,8 +48,12 @@ fn k_table() -> &'static KTable {
             let (a, b) = (i as f64 * h, (i + 1) as f64 * h);
             let mid = 0.5 * (a + b);
             let half = 0.5 * h;
-            let integral: f64 =
-                gx.iter().zip(&gw).map(|(t, w)| w * k_prime(mid + half * t)).sum::<f64>() * half;
+            let integral: f64 = gx
+                .iter()
+                .zip(&gw)
+                .map(|(t, w)| w * k_prime(mid + half * t))
+                .sum::<f64>()
+                * half;
             y[i] = y[i + 1] - integral;
         }
         let dy = (0..=n).map(|i| k_prime(i as f64 * h)).collect();
@@ -111,7 +115,10 @@ mod tests {
         ];
         for (x, want) in cases {
             let got = f(x, 0.4);
-            assert!((got / want - 1.0).abs() < 1e-9, "F({x}) = {got}, want {want}");
+            assert!(
+                (got / want - 1.0).abs() < 1e-9,
+                "F({x}) = {got}, want {want}"
+            );
         }
     }
 

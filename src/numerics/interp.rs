@@ -13,7 +13,10 @@ pub struct UniformCubic {
 impl UniformCubic {
     /// `y` sampled at `x0 + i h`; needs at least four samples and `h > 0`.
     pub fn new(x0: f64, h: f64, y: Vec<f64>) -> Self {
-        assert!(y.len() >= 4 && h > 0.0, "cubic interpolation needs ≥ 4 nodes and h > 0");
+        assert!(
+            y.len() >= 4 && h > 0.0,
+            "cubic interpolation needs ≥ 4 nodes and h > 0"
+        );
         UniformCubic { x0, h, y }
     }
 
@@ -56,7 +59,9 @@ mod tests {
             let h = 1.0 / n as f64;
             let y = (0..=n).map(|i| (i as f64 * h).sin()).collect();
             let c = UniformCubic::new(0.0, h, y);
-            (0..1000).map(|k| (c.eval(k as f64 / 1000.0) - (k as f64 / 1000.0).sin()).abs()).fold(0.0, f64::max)
+            (0..1000)
+                .map(|k| (c.eval(k as f64 / 1000.0) - (k as f64 / 1000.0).sin()).abs())
+                .fold(0.0, f64::max)
         };
         let ratio = err(10) / err(20);
         assert!(ratio > 12.0 && ratio < 20.0, "ratio {ratio}");

@@ -52,7 +52,11 @@ mod tests {
             assert!((w.iter().sum::<f64>() - 2.0).abs() < 1e-14);
             for deg in 0..(2 * n) {
                 let got: f64 = x.iter().zip(&w).map(|(x, w)| w * x.powi(deg as i32)).sum();
-                let exact = if deg % 2 == 1 { 0.0 } else { 2.0 / (deg as f64 + 1.0) };
+                let exact = if deg % 2 == 1 {
+                    0.0
+                } else {
+                    2.0 / (deg as f64 + 1.0)
+                };
                 assert!((got - exact).abs() < 1e-13, "n={n} deg={deg}");
             }
         }

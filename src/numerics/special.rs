@@ -145,7 +145,11 @@ mod tests {
             (40.0, 1.036_773_261_451_657e-19),
         ];
         for (z, e) in cases {
-            assert!((exp_int_e1(z) / e - 1.0).abs() < 1e-10, "z={z}: {} vs {e}", exp_int_e1(z));
+            assert!(
+                (exp_int_e1(z) / e - 1.0).abs() < 1e-10,
+                "z={z}: {} vs {e}",
+                exp_int_e1(z)
+            );
         }
     }
 }

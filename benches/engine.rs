@@ -1,0 +1,38 @@
+//! Speed of the static engine: exact evaluation per pressure point, contact-table build per
+//! surface, and table lookup (targets: ≤ 1 ms, ≤ 5 ms, ≤ 1 µs). Figures go in the README.
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use sealsim::contact::{ContactSettings, ContactTable, PerssonContact, TableSettings};
+use sealsim::surface::Spectrum;
+use std::hint::black_box;
+
+fn paper_contact() -> PerssonContact {
+    // PY08 §3: h_rms = 2 µm, H = 0.8, q0 = 1e4 1/m, q1 = 7.8e9 1/m
+    let sp = Spectrum::self_affine(2e-6, 0.8, 1e4, 7.8e9, None).expect("valid spectrum");
+    PerssonContact::new(sp, ContactSettings::default())
+}
+
+fn engine(c: &mut Criterion) {
+    let exact = paper_contact();
+    let s = 0.2e6 / (10e6 / 0.75); // P0 = 0.2 MPa on E = 10 MPa, ν = 0.5
+    c.bench_function("exact critical junction (paper case, P0 = 0.2 MPa)", |b| {
+        b.iter(|| exact.critical_junction(black_box(s)))
+    });
+    c.bench_function("contact table build (paper surface)", |b| {
+        b.iter(|| ContactTable::build(black_box(exact.clone()), TableSettings::default()))
+    });
+    let table = ContactTable::build(exact.clone(), TableSettings::default());
+    let pressures: Vec<f64> = (0..64)
+        .map(|i| s * 10f64.powf(-1.0 + i as f64 / 64.0))
+        .collect();
+    c.bench_function("contact table lookup (64 pressures, per batch)", |b| {
+        b.iter(|| {
+            for &p in &pressures {
+                black_box(table.critical_junction(black_box(p)));
+            }
+        })
+    });
+}
+
+criterion_group!(benches, engine);
+criterion_main!(benches);

@@ -1,0 +1,148 @@
+//! SVG plots (plotters), log–log line charts of one quantity against another.
+
+use plotters::prelude::*;
+use std::fmt;
+
+/// One labelled curve; points with non-positive or non-finite coordinates are not drawn
+/// (on log axes they do not exist — e.g. a sealed state with zero leak rate).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Series {
+    pub label: String,
+    pub points: Vec<(f64, f64)>,
+}
+
+/// A log–log chart.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LogLogChart {
+    pub title: String,
+    pub x_label: String,
+    pub y_label: String,
+    pub series: Vec<Series>,
+}
+
+/// Why a chart could not be drawn.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlotError(pub String);
+
+impl fmt::Display for PlotError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "plot: {}", self.0)
+    }
+}
+
+impl std::error::Error for PlotError {}
+
+fn err<E: fmt::Display>(e: E) -> PlotError {
+    PlotError(e.to_string())
+}
+
+/// Bounds of the drawable points, widened to whole decades.
+fn decade_bounds(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
+    let (lo, hi) = values
+        .filter(|v| v.is_finite() && *v > 0.0)
+        .fold((f64::INFINITY, 0.0f64), |(lo, hi), v| {
+            (lo.min(v), hi.max(v))
+        });
+    if hi <= 0.0 {
+        return None;
+    }
+    let (a, mut b) = (lo.log10().floor(), hi.log10().ceil());
+    if b <= a {
+        b = a + 1.0;
+    }
+    Some((10f64.powf(a), 10f64.powf(b)))
+}
+
+impl LogLogChart {
+    /// Renders the chart as an SVG document.
+    pub fn to_svg(&self) -> Result<String, PlotError> {
+        let drawable = |s: &Series| -> Vec<(f64, f64)> {
+            s.points
+                .iter()
+                .copied()
+                .filter(|(x, y)| x.is_finite() && y.is_finite() && *x > 0.0 && *y > 0.0)
+                .collect()
+        };
+        let all: Vec<(f64, f64)> = self.series.iter().flat_map(drawable).collect();
+        let x = decade_bounds(all.iter().map(|p| p.0))
+            .ok_or_else(|| PlotError("no positive x values".into()))?;
+        let y = decade_bounds(all.iter().map(|p| p.1))
+            .ok_or_else(|| PlotError("no positive y values".into()))?;
+        let mut svg = String::new();
+        {
+            let root = SVGBackend::with_string(&mut svg, (800, 560)).into_drawing_area();
+            root.fill(&WHITE).map_err(err)?;
+            let mut chart = ChartBuilder::on(&root)
+                .caption(&self.title, ("sans-serif", 20))
+                .margin(16)
+                .x_label_area_size(48)
+                .y_label_area_size(80)
+                .build_cartesian_2d((x.0..x.1).log_scale(), (y.0..y.1).log_scale())
+                .map_err(err)?;
+            chart
+                .configure_mesh()
+                .x_desc(&self.x_label)
+                .y_desc(&self.y_label)
+                .x_label_formatter(&|v| format!("{v:.0e}"))
+                .y_label_formatter(&|v| format!("{v:.0e}"))
+                .draw()
+                .map_err(err)?;
+            for (i, s) in self.series.iter().enumerate() {
+                let colour = Palette99::pick(i).to_rgba();
+                chart
+                    .draw_series(LineSeries::new(drawable(s), colour.stroke_width(2)))
+                    .map_err(err)?
+                    .label(s.label.clone())
+                    .legend(move |(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2))
+                    });
+            }
+            chart
+                .configure_series_labels()
+                .background_style(WHITE.mix(0.8))
+                .border_style(BLACK)
+                .draw()
+                .map_err(err)?;
+            root.present().map_err(err)?;
+        }
+        Ok(svg)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn draws_curves_and_skips_non_positive_points() {
+        let chart = LogLogChart {
+            title: "t".into(),
+            x_label: "x".into(),
+            y_label: "y".into(),
+            series: vec![Series {
+                label: "a".into(),
+                points: vec![(1.0, 1.0), (10.0, 0.1), (100.0, 0.0)],
+            }],
+        };
+        let svg = chart.to_svg().unwrap();
+        assert!(svg.starts_with("<svg") && svg.contains("</svg>"));
+        assert!(svg.contains(">\na\n</text>"), "legend label drawn");
+        // the zero point is skipped: the curve is a polyline of two vertices
+        let curve = svg
+            .lines()
+            .find(|l| l.contains("stroke-width=\"2\" points="))
+            .unwrap();
+        assert_eq!(curve.matches(',').count(), 2, "{curve}");
+    }
+
+    #[test]
+    fn empty_chart_is_an_error_not_a_panic() {
+        let chart = LogLogChart {
+            title: "t".into(),
+            x_label: "x".into(),
+            y_label: "y".into(),
+            series: vec![],
+        };
+        assert!(chart.to_svg().is_err());
+    }
+}

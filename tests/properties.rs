@@ -1,0 +1,117 @@
+//! Property tests of the static engine over wide parameter ranges, including the extremes
+//! the issue names: P0 from 1 Pa to 1 GPa, H from 0.05 to 0.95, q1/q0 from 10 to 1e8,
+//! h_rms from 1 nm to 1 mm, ν from 0 to 0.5.
+
+use proptest::prelude::*;
+use sealsim::contact::{ContactSettings, Elastic, Junction};
+use sealsim::leak::{Fidelity, FlatSeal, Fluid, LeakPoint, StaticProblem, StaticSolver};
+use sealsim::surface::Spectrum;
+
+#[derive(Debug, Clone, Copy)]
+struct Params {
+    h_rms: f64,
+    hurst: f64,
+    q0: f64,
+    ratio: f64,
+    youngs: f64,
+    nu: f64,
+}
+
+fn log_uniform(lo: f64, hi: f64) -> impl Strategy<Value = f64> {
+    (lo.ln()..=hi.ln()).prop_map(f64::exp)
+}
+
+fn params() -> impl Strategy<Value = Params> {
+    (
+        log_uniform(1e-9, 1e-3),
+        0.05..=0.95f64,
+        log_uniform(1e2, 1e6),
+        log_uniform(10.0, 1e8),
+        log_uniform(1e5, 1e10),
+        0.0..=0.5f64,
+    )
+        .prop_map(|(h_rms, hurst, q0, ratio, youngs, nu)| Params {
+            h_rms,
+            hurst,
+            q0,
+            ratio,
+            youngs,
+            nu,
+        })
+}
+
+fn solver(p: Params, fidelity: Fidelity) -> StaticSolver {
+    let problem = StaticProblem {
+        material: Elastic {
+            youngs_modulus: p.youngs,
+            poisson_ratio: p.nu,
+        },
+        spectrum: Spectrum::self_affine(p.h_rms, p.hurst, p.q0, p.q0 * p.ratio, None).unwrap(),
+        fluid: Fluid {
+            viscosity: 1e-3,
+            pressure_difference: 1e4,
+        },
+        seal: FlatSeal {
+            nominal_pressure: 1e5,
+            width: 1e-3,
+            length: 1e-3,
+        },
+        contact: ContactSettings::default(),
+        shape_factor: 1.0,
+    };
+    StaticSolver::new(problem, fidelity)
+}
+
+fn check_point(pt: &LeakPoint) -> Result<(), TestCaseError> {
+    prop_assert!(
+        pt.leak_rate.is_finite() && pt.leak_rate >= 0.0,
+        "leak rate {}",
+        pt.leak_rate
+    );
+    match pt.junction {
+        Junction::Leaking(j) => {
+            for v in [j.zeta_c, j.lambda_c, j.u_c, j.ubar_c, j.hrms_c] {
+                prop_assert!(v.is_finite(), "non-finite in {j:?}");
+            }
+            prop_assert!(j.zeta_c >= 1.0);
+            prop_assert!(
+                j.u_c > j.ubar_c && j.ubar_c > 0.0,
+                "u_c > ū_c > 0 fails: {j:?}"
+            );
+            prop_assert!(pt.leak_rate > 0.0 || j.u_c < 1e-100);
+        }
+        Junction::Sealed => prop_assert_eq!(pt.leak_rate, 0.0),
+    }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 200, ..ProptestConfig::default() })]
+
+    #[test]
+    fn every_output_is_finite_over_the_extremes(p in params(), p0 in log_uniform(1.0, 1e9)) {
+        for fidelity in [Fidelity::Exact, Fidelity::Table] {
+            check_point(&solver(p, fidelity).evaluate(p0))?;
+        }
+        // the end points themselves
+        let exact = solver(p, Fidelity::Exact);
+        check_point(&exact.evaluate(1.0))?;
+        check_point(&exact.evaluate(1e9))?;
+    }
+
+    #[test]
+    fn leak_rate_does_not_increase_with_pressure(p in params(), a in log_uniform(1.0, 1e9), b in log_uniform(1.0, 1e9)) {
+        let (lo, hi) = if a < b { (a, b) } else { (b, a) };
+        let s = solver(p, Fidelity::Exact);
+        let (q_lo, q_hi) = (s.evaluate(lo).leak_rate, s.evaluate(hi).leak_rate);
+        prop_assert!(q_hi <= q_lo * (1.0 + 1e-9), "Q({hi}) = {q_hi} > Q({lo}) = {q_lo}");
+    }
+
+    #[test]
+    fn leak_rate_does_not_decrease_with_roughness(p in params(), f in 1.0..100.0f64, p0 in log_uniform(1.0, 1e9)) {
+        let rougher = Params { h_rms: (p.h_rms * f).min(1e-3), ..p };
+        let q_smooth = solver(p, Fidelity::Exact).evaluate(p0).leak_rate;
+        let q_rough = solver(rougher, Fidelity::Exact).evaluate(p0).leak_rate;
+        prop_assert!(q_rough >= q_smooth * (1.0 - 1e-9), "{q_rough} < {q_smooth}");
+    }
+}
