@@ -375,7 +375,7 @@ impl Spectrum {
     /// The `ln q` at which `∫_{q0}^{q} q'³ C dq' = target`, or `None` if `target` exceeds the
     /// total over the band. Exact inversion of the piecewise power law.
     pub fn invert_m3(&self, target: f64) -> Option<f64> {
-        if !(target >= 0.0) || target > self.total_m3() {
+        if target.is_nan() || target < 0.0 || target > self.total_m3() {
             return None;
         }
         let k = self

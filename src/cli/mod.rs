@@ -1,4 +1,127 @@
-//! placeholder
+//! The `sealsim` command line: argument parsing (clap derive), dispatch, exit codes.
+//!
+//! Each subcommand lives in its own module with an `Args` struct and a
+//! `run(args) -> Result<(), CliError>`; adding one means a variant in [`Command`] and an arm in
+//! [`run`]. Exit status: 0 success, 2 bad input (usage, flag values, scenario files), 1 failure
+//! to write the output or an internal error.
+
+pub mod leak;
+
+use crate::report::{self, ReportError};
+use crate::scenario::ScenarioError;
+use clap::{Parser, Subcommand};
+use std::fmt;
+use std::io::{self, Write};
+use std::path::Path;
+
+/// Exit status for bad input, the same as clap's for usage errors.
+pub const EXIT_BAD_INPUT: i32 = 2;
+/// Exit status for a failure to write the output, or an internal error.
+pub const EXIT_FAILURE: i32 = 1;
+
+/// Leak rate of rubber seals from rough-surface contact mechanics (Persson & Yang 2008).
+#[derive(Debug, Parser)]
+#[command(name = "sealsim", version, about, propagate_version = true)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The subcommands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Leak rate of a flat seal at one or more nominal pressures, as CSV.
+    Leak(leak::LeakArgs),
+}
+
+/// Why a command failed; decides the exit status.
+#[derive(Debug)]
+pub enum CliError {
+    /// A flag value or combination the user must fix.
+    Input(String),
+    /// The scenario (or a file it names) is invalid.
+    Scenario(ScenarioError),
+    /// The output could not be written.
+    Output { target: String, source: io::Error },
+    /// A bug: the result could not be reported faithfully.
+    Internal(String),
+}
+
+impl CliError {
+    /// The process exit status for this error.
+    pub fn exit_code(&self) -> i32 {
+        match self {
+            CliError::Input(_) | CliError::Scenario(_) => EXIT_BAD_INPUT,
+            CliError::Output { .. } | CliError::Internal(_) => EXIT_FAILURE,
+        }
+    }
+}
+
+impl fmt::Display for CliError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            CliError::Input(msg) | CliError::Internal(msg) => f.write_str(msg),
+            CliError::Scenario(e) => e.fmt(f),
+            CliError::Output { target, source } => write!(f, "cannot write {target}: {source}"),
+        }
+    }
+}
+
+impl std::error::Error for CliError {}
+
+impl From<ScenarioError> for CliError {
+    fn from(e: ScenarioError) -> Self {
+        CliError::Scenario(e)
+    }
+}
+
+impl From<ReportError> for CliError {
+    fn from(e: ReportError) -> Self {
+        CliError::Internal(e.to_string())
+    }
+}
+
+/// Runs the command line of this process; returns the exit status.
 pub fn main() -> i32 {
-    0
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            // Usage errors go to stderr (exit 2), --help and --version to stdout (exit 0).
+            let _ = e.print();
+            return e.exit_code();
+        }
+    };
+    match run(cli.command) {
+        Ok(()) => 0,
+        Err(e) => {
+            eprintln!("error: {e}");
+            e.exit_code()
+        }
+    }
+}
+
+/// Dispatches to the subcommand.
+pub fn run(command: Command) -> Result<(), CliError> {
+    match command {
+        Command::Leak(args) => leak::run(args),
+    }
+}
+
+/// Writes a finished output: atomically to `path`, or to stdout.
+pub(crate) fn write_output(path: Option<&Path>, bytes: &[u8]) -> Result<(), CliError> {
+    match path {
+        Some(path) => report::write_atomic(path, bytes).map_err(|source| CliError::Output {
+            target: path.display().to_string(),
+            source,
+        }),
+        None => {
+            let mut out = io::stdout().lock();
+            out.write_all(bytes)
+                .and_then(|()| out.flush())
+                .map_err(|source| CliError::Output {
+                    target: "standard output".into(),
+                    source,
+                })
+        }
+    }
 }

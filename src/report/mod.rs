@@ -1,2 +1,114 @@
-//! placeholder
+//! Output boundary: tables (CSV) and files written atomically.
+//!
+//! Units are printed only here (column names carry them); the physics hands over SI values.
+
+pub mod csv;
 pub mod plot;
+
+use std::fmt;
+use std::fs::{self, File, OpenOptions};
+use std::io::{self, Write};
+use std::path::Path;
+use std::sync::atomic::{AtomicU64, Ordering};
+
+/// Why a report could not be produced. Both cases are internal errors (bugs), not user
+/// errors: the physics must never hand over a non-finite number.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ReportError {
+    /// A value to be written is NaN or infinite (`row` counts data rows from 1).
+    NonFinite {
+        row: usize,
+        column: &'static str,
+        value: f64,
+    },
+    /// The CSV encoder failed.
+    Csv(String),
+}
+
+impl fmt::Display for ReportError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ReportError::NonFinite { row, column, value } => write!(
+                f,
+                "internal error: non-finite value {value} in column {column}, row {row}; nothing was written"
+            ),
+            ReportError::Csv(msg) => write!(f, "internal error: CSV encoding failed: {msg}"),
+        }
+    }
+}
+
+impl std::error::Error for ReportError {}
+
+/// Writes `bytes` to `path` whole or not at all.
+///
+/// The bytes go to a temporary file in the same directory (`.{name}.tmp-{pid}-{n}`), which is
+/// flushed and synced and then renamed over `path`. On any error the temporary file is
+/// removed and an existing `path` is left untouched. (A replaced file gets default
+/// permissions, not those of the file it replaces.)
+pub fn write_atomic(path: &Path, bytes: &[u8]) -> io::Result<()> {
+    let name = path.file_name().ok_or_else(|| {
+        io::Error::new(
+            io::ErrorKind::InvalidInput,
+            format!("{} is not a file name", path.display()),
+        )
+    })?;
+    let dir = match path.parent() {
+        Some(dir) if !dir.as_os_str().is_empty() => dir,
+        _ => Path::new("."),
+    };
+    let tmp = dir.join(format!(
+        ".{}.tmp-{}-{}",
+        name.to_string_lossy(),
+        std::process::id(),
+        next_serial()
+    ));
+    // `create_new`: never clobber a file that is not ours (so only remove it if we made it).
+    let file = OpenOptions::new().write(true).create_new(true).open(&tmp)?;
+    let result = fill_and_rename(file, bytes, &tmp, path);
+    if result.is_err() {
+        // Best effort: the original error is the one worth reporting.
+        let _ = fs::remove_file(&tmp);
+    }
+    result
+}
+
+fn fill_and_rename(mut file: File, bytes: &[u8], tmp: &Path, path: &Path) -> io::Result<()> {
+    file.write_all(bytes)?;
+    file.flush()?;
+    file.sync_all()?;
+    drop(file);
+    fs::rename(tmp, path)
+}
+
+/// A number unique within this process, so that concurrent writes never share a temp file.
+fn next_serial() -> u64 {
+    static SERIAL: AtomicU64 = AtomicU64::new(0);
+    SERIAL.fetch_add(1, Ordering::Relaxed)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn replaces_whole_file_and_leaves_no_temporaries() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("out.csv");
+        fs::write(&path, "old content that is longer").unwrap();
+        write_atomic(&path, b"new").unwrap();
+        assert_eq!(fs::read_to_string(&path).unwrap(), "new");
+        assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 1);
+    }
+
+    #[test]
+    fn failure_leaves_nothing_behind() {
+        let dir = tempfile::tempdir().unwrap();
+        // Renaming a file over a non-empty directory fails.
+        let target = dir.path().join("sub");
+        fs::create_dir(&target).unwrap();
+        fs::write(target.join("keep"), "x").unwrap();
+        assert!(write_atomic(&target, b"data").is_err());
+        assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 1);
+        assert!(write_atomic(&dir.path().join("missing/out.csv"), b"data").is_err());
+    }
+}

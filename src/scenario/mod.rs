@@ -1,1 +1,193 @@
-//! placeholder
+//! Scenario files: TOML → validated model types in SI units.
+//!
+//! A scenario is read in two steps, so that the physics never sees a string or a unit:
+//! 1. `raw`: serde reads the TOML into one struct per table, every value wrapped in
+//!    [`toml::Spanned`] and unknown keys rejected;
+//! 2. `validate`: every quantity is converted to SI ("10 MPa" → 1e7; a bare number is
+//!    already SI) and checked against its range once, giving a [`leak::StaticProblem`].
+//!
+//! Every error is a [`ScenarioError`] naming the file, the line and the key, e.g.
+//! `scenarios/x.toml:7: surface.hurst_exponent: must lie strictly between 0 and 1, got 1.2`.
+//! The keys are documented in README.md, "Scenario file reference".
+//!
+//! [`leak::StaticProblem`]: crate::leak::StaticProblem
+
+mod error;
+mod psd;
+mod raw;
+mod validate;
+
+pub use error::ScenarioError;
+
+use crate::leak::StaticProblem;
+use error::Source;
+use raw::RawScenario;
+use serde::Deserialize;
+use std::path::{Path, PathBuf};
+use toml::de::DeTable;
+
+/// A validated scenario: everything in SI units, ready for the solvers.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Scenario {
+    /// The `name` key, or the file stem when it is absent.
+    pub name: String,
+    /// The file the scenario was read from (as given).
+    pub path: PathBuf,
+    /// The static leak problem of the seal.
+    pub problem: StaticProblem,
+}
+
+impl Scenario {
+    /// Reads and validates the scenario file at `path` (a `psd_file` is resolved against its
+    /// directory).
+    pub fn load(path: &Path) -> Result<Scenario, ScenarioError> {
+        let text = std::fs::read_to_string(path).map_err(|source| ScenarioError::Read {
+            path: path.to_path_buf(),
+            source,
+        })?;
+        Scenario::from_str(&text, path)
+    }
+
+    /// Validates scenario `text` as if it had been read from `path` (used for the messages,
+    /// the default name and to resolve a relative `psd_file`; `path` itself is not read).
+    pub fn from_str(text: &str, path: &Path) -> Result<Scenario, ScenarioError> {
+        let source = Source { path, text };
+        let doc = DeTable::parse(text).map_err(|e| source.syntax_error(&e))?;
+        let raw = RawScenario::deserialize(toml::de::Deserializer::from(doc.clone()))
+            .map_err(|e| source.schema_error(&doc, &e))?;
+        let validated = source.scenario(&raw)?;
+        let name = validated.name.unwrap_or_else(|| {
+            path.file_stem()
+                .map(|s| s.to_string_lossy().into_owned())
+                .unwrap_or_default()
+        });
+        Ok(Scenario {
+            name,
+            path: path.to_path_buf(),
+            problem: validated.problem,
+        })
+    }
+}
+
+/// A number for a message: plain when moderate (`0.6`, `1200`), else scientific (`1e10`).
+fn show(v: f64) -> String {
+    if v == 0.0 || (1e-3..1e6).contains(&v.abs()) {
+        format!("{v}")
+    } else {
+        format!("{v:e}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const PAPER: &str = include_str!("../../scenarios/persson-yang-2008.toml");
+
+    fn load(text: &str) -> Result<Scenario, ScenarioError> {
+        Scenario::from_str(text, Path::new("dir/x.toml"))
+    }
+
+    fn error(text: &str) -> String {
+        load(text)
+            .expect_err("the scenario should be rejected")
+            .to_string()
+    }
+
+    #[test]
+    fn paper_scenario_is_in_si_units() {
+        let s = load(PAPER).unwrap();
+        let p = &s.problem;
+        assert_eq!(s.name, "Persson & Yang 2008, section 3");
+        assert_eq!(p.material.youngs_modulus, 1e7);
+        assert_eq!(p.material.poisson_ratio, 0.5);
+        assert!((p.spectrum.rms_roughness() / 2e-6 - 1.0).abs() < 1e-12);
+        assert!((p.spectrum.q0() / 1e4 - 1.0).abs() < 1e-12);
+        assert!((p.spectrum.q1() / 7.8e9 - 1.0).abs() < 1e-12);
+        assert_eq!(p.fluid.viscosity, 1e-3);
+        assert_eq!(p.fluid.pressure_difference, 1e4);
+        assert_eq!(p.seal.nominal_pressure, 2e5);
+        assert_eq!(p.seal.width, 1e-3);
+        assert_eq!(p.seal.length, 1e-3);
+        assert_eq!(p.contact, crate::contact::ContactSettings::default());
+        assert_eq!(p.shape_factor, 1.0);
+    }
+
+    #[test]
+    fn name_defaults_to_the_file_stem_and_bare_numbers_are_si() {
+        let text = PAPER
+            .replace("name = \"Persson & Yang 2008, section 3\"\n", "")
+            .replace("\"10 MPa\"", "1e7");
+        let s = load(&text).unwrap();
+        assert_eq!(s.name, "x");
+        assert_eq!(s.problem.material.youngs_modulus, 1e7);
+    }
+
+    #[test]
+    fn model_table_overrides_defaults() {
+        let text = format!(
+            "{PAPER}\n[model]\npercolation_threshold = 0.42\nshape_factor = 2\ngamma = 0.5\n"
+        );
+        let p = load(&text).unwrap().problem;
+        assert_eq!(p.contact.percolation_threshold, 0.42);
+        assert_eq!(p.contact.gamma, 0.5);
+        assert_eq!(p.shape_factor, 2.0);
+    }
+
+    #[test]
+    fn errors_name_file_line_and_key() {
+        let e = error(&PAPER.replace("hurst_exponent = 0.8", "hurst_exponent = 1.2"));
+        assert!(
+            e.starts_with(
+                "dir/x.toml:7: surface.hurst_exponent: must lie strictly between 0 and 1"
+            ),
+            "{e}"
+        );
+        let e = error(&PAPER.replace("poisson_ratio", "poisson"));
+        assert!(
+            e.starts_with("dir/x.toml:4: material.poisson: unknown key `poisson`"),
+            "{e}"
+        );
+        let e = error(&PAPER.replace("viscosity = \"1e-3 Pa*s\"\n", ""));
+        assert!(e.starts_with("dir/x.toml:"), "{e}");
+        assert!(
+            e.contains("fluid.viscosity: missing key `viscosity` in [fluid]"),
+            "{e}"
+        );
+        let e = error(&PAPER.replace("\"0.2 MPa\"", "\"10 m\""));
+        assert!(
+            e.contains(":14: seal.nominal_pressure: expected a pressure"),
+            "{e}"
+        );
+        let e = error(&PAPER.replace("poisson_ratio = 0.5", "poisson_ratio = true"));
+        assert!(
+            e.contains(":4: material.poisson_ratio: invalid type"),
+            "{e}"
+        );
+        let e = error(&PAPER.replace("[seal]", "[seal"));
+        assert!(e.contains(":13: TOML syntax error"), "{e}");
+        let e = error(&PAPER.replace("[fluid]", "[fluidx]"));
+        assert!(e.contains("fluidx: unknown key"), "{e}");
+    }
+
+    #[test]
+    fn surface_needs_exactly_one_kind_of_spectrum() {
+        let start = PAPER.find("rms_roughness").unwrap();
+        let end = PAPER.find("[fluid]").unwrap();
+        let none = format!("{}{}", &PAPER[..start], &PAPER[end..]);
+        let e = error(&none);
+        assert!(
+            e.contains(": surface: no spectrum given") && e.contains("psd_file"),
+            "{e}"
+        );
+        let both = PAPER.replace("[surface]", "[surface]\npsd_file = \"p.csv\"");
+        let e = error(&both);
+        assert!(
+            e.contains("surface.rms_roughness: psd_file gives the whole spectrum"),
+            "{e}"
+        );
+        let partial = PAPER.replace("q1 = \"7.8e9 1/m\"\n", "");
+        let e = error(&partial);
+        assert!(e.contains(":5: surface.q1: missing key"), "{e}");
+    }
+}

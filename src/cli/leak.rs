@@ -1,0 +1,186 @@
+//! `sealsim leak`: leak rate of a flat seal at one or more nominal pressures, as CSV.
+
+use super::{CliError, write_output};
+use crate::leak::{Fidelity, LeakPoint, StaticSolver, Warning};
+use crate::report::csv::leak_table;
+use crate::scenario::Scenario;
+use crate::units::{self, Dimension};
+use clap::{Args, ValueEnum};
+use std::mem::discriminant;
+use std::path::PathBuf;
+
+/// Default number of points of `--sweep`.
+const DEFAULT_SWEEP_POINTS: u32 = 20;
+/// Upper limit of `--points` (a guard against typos that would exhaust memory).
+const MAX_SWEEP_POINTS: i64 = 1_000_000;
+
+/// Arguments of `sealsim leak`.
+#[derive(Debug, Clone, Args)]
+#[command(
+    after_help = "Pressures take units (\"0.2 MPa\", \"2bar\", \"30psi\"); bare numbers are Pa.\n\
+    Output columns: nominal_pressure_Pa, zeta_c, lambda_c_m, u_c_m, ubar_c_m, hrms_c_m, \
+    leak_rate_m3_per_s, state (leaking|sealed); lambda_c = 2π/(zeta_c q0)."
+)]
+pub struct LeakArgs {
+    /// Scenario file (TOML).
+    #[arg(value_name = "SCENARIO")]
+    pub scenario: PathBuf,
+
+    /// Comma-separated nominal pressures [default: the scenario's seal.nominal_pressure].
+    #[arg(long, value_name = "P,...", value_delimiter = ',', value_parser = parse_pressure)]
+    pub pressures: Option<Vec<f64>>,
+
+    /// Log-spaced nominal pressures from A to B inclusive, e.g. 0.05MPa..1MPa.
+    #[arg(long, value_name = "A..B", value_parser = parse_sweep, conflicts_with = "pressures")]
+    pub sweep: Option<Sweep>,
+
+    /// Number of points of --sweep [default: 20].
+    #[arg(long, value_name = "N", requires = "sweep", value_parser = clap::value_parser!(u32).range(2..=MAX_SWEEP_POINTS))]
+    pub points: Option<u32>,
+
+    /// Exact quadrature at every pressure, or interpolation in a contact table built once.
+    #[arg(long, value_enum, default_value_t = FidelityArg::Table)]
+    pub fidelity: FidelityArg,
+
+    /// Write the CSV to FILE (atomically) instead of standard output.
+    #[arg(short, long, value_name = "FILE")]
+    pub output: Option<PathBuf>,
+}
+
+/// `--fidelity` values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum FidelityArg {
+    /// Quadrature at every pressure.
+    Exact,
+    /// Contact-table interpolation.
+    Table,
+}
+
+impl From<FidelityArg> for Fidelity {
+    fn from(f: FidelityArg) -> Self {
+        match f {
+            FidelityArg::Exact => Fidelity::Exact,
+            FidelityArg::Table => Fidelity::Table,
+        }
+    }
+}
+
+/// `--sweep A..B`: pressures in Pa with `0 < from < to`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sweep {
+    pub from: f64,
+    pub to: f64,
+}
+
+impl Sweep {
+    /// `points` log-spaced pressures from `from` to `to`, both included.
+    pub fn pressures(&self, points: u32) -> Vec<f64> {
+        let n = points.max(2);
+        let ratio = (self.to / self.from).ln();
+        (0..n)
+            .map(|i| match i {
+                0 => self.from,
+                _ if i == n - 1 => self.to,
+                _ => self.from * (ratio * f64::from(i) / f64::from(n - 1)).exp(),
+            })
+            .collect()
+    }
+}
+
+/// A positive nominal pressure: "0.2 MPa", "2bar", or a bare number in Pa.
+fn parse_pressure(text: &str) -> Result<f64, String> {
+    let text = text.trim();
+    let value = match text.parse::<f64>() {
+        Ok(v) => v,
+        Err(_) => units::parse_quantity(text, Dimension::PRESSURE).map_err(|e| e.to_string())?,
+    };
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(format!(
+            "a nominal pressure must be positive and finite, got {value:e} Pa"
+        ))
+    }
+}
+
+/// `A..B` with `0 < A < B`.
+fn parse_sweep(text: &str) -> Result<Sweep, String> {
+    let (a, b) = text
+        .split_once("..")
+        .ok_or_else(|| format!("expected A..B (e.g. 0.05MPa..1MPa), got {text:?}"))?;
+    let (from, to) = (parse_pressure(a)?, parse_pressure(b)?);
+    if to > from {
+        Ok(Sweep { from, to })
+    } else {
+        Err(format!(
+            "the end of the sweep must exceed its start, got {from:e} Pa..{to:e} Pa"
+        ))
+    }
+}
+
+/// Runs `sealsim leak`.
+pub fn run(args: LeakArgs) -> Result<(), CliError> {
+    let scenario = Scenario::load(&args.scenario)?;
+    let pressures = match (&args.pressures, args.sweep) {
+        (Some(list), _) => list.clone(),
+        (None, Some(sweep)) => sweep.pressures(args.points.unwrap_or(DEFAULT_SWEEP_POINTS)),
+        (None, None) => vec![scenario.problem.seal.nominal_pressure],
+    };
+    let solver = StaticSolver::new(scenario.problem, args.fidelity.into());
+    let points: Vec<LeakPoint> = pressures.iter().map(|&p0| solver.evaluate(p0)).collect();
+    let csv = leak_table(&points)?;
+    print_warnings(points.iter().flat_map(|p| solver.warnings(p)));
+    write_output(args.output.as_deref(), csv.as_bytes())
+}
+
+/// Prints warnings to stderr, one line per kind: the first message, and how many more
+/// pressures raised the same kind.
+fn print_warnings(warnings: impl IntoIterator<Item = Warning>) {
+    // (first warning of a kind, occurrences), in order of first occurrence
+    let mut kinds: Vec<(Warning, usize)> = Vec::new();
+    for w in warnings {
+        match kinds
+            .iter_mut()
+            .find(|(first, _)| discriminant(first) == discriminant(&w))
+        {
+            Some((_, n)) => *n += 1,
+            None => kinds.push((w, 1)),
+        }
+    }
+    for (first, n) in kinds {
+        match n - 1 {
+            0 => eprintln!("warning: {first}"),
+            1 => eprintln!("warning: {first} (and 1 more pressure)"),
+            more => eprintln!("warning: {first} (and {more} more pressures)"),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sweeps_are_log_spaced_and_inclusive() {
+        let p = Sweep { from: 5e4, to: 1e6 }.pressures(20);
+        assert_eq!(p.len(), 20);
+        assert_eq!((p[0], p[19]), (5e4, 1e6));
+        let r = p[1] / p[0];
+        assert!(p.windows(2).all(|w| (w[1] / w[0] / r - 1.0).abs() < 1e-12));
+    }
+
+    #[test]
+    fn pressures_take_units_or_pascals() {
+        assert_eq!(parse_pressure("0.2 MPa"), Ok(2e5));
+        assert_eq!(parse_pressure(" 2e5 "), Ok(2e5));
+        assert!(parse_pressure("10 m").is_err());
+        assert!(parse_pressure("-1 MPa").is_err());
+        assert!(parse_pressure("0").is_err());
+        assert_eq!(
+            parse_sweep("0.05MPa..1MPa"),
+            Ok(Sweep { from: 5e4, to: 1e6 })
+        );
+        assert!(parse_sweep("1MPa..0.05MPa").is_err());
+        assert!(parse_sweep("1MPa").is_err());
+    }
+}

@@ -1,0 +1,372 @@
+//! Raw scenario → SI model types, checking every value once, each error located.
+//!
+//! Every numeric key is described by a [`Field`] (key path, dimension, SI unit, allowed
+//! range); [`Source::quantity`] is the one place where a written quantity becomes a checked SI
+//! number.
+
+use super::error::{ScenarioError, Source};
+use super::raw::{
+    Quantity, RawFluid, RawMaterial, RawModel, RawQuantity, RawScenario, RawSeal, RawSurface,
+};
+use super::{psd, show};
+use crate::contact::{ContactSettings, Elastic};
+use crate::leak::{FlatSeal, Fluid, StaticProblem};
+use crate::surface::Spectrum;
+use crate::units::{self, Dimension};
+use std::path::PathBuf;
+use toml::Spanned;
+
+/// The values a key accepts (all of them also finite).
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Bound {
+    /// > 0
+    Positive,
+    /// ≥ 0
+    NonNegative,
+    /// strictly inside (lo, hi)
+    Open(f64, f64),
+    /// inside [lo, hi]
+    Closed(f64, f64),
+}
+
+impl Bound {
+    /// `None` if `v` is allowed, else what is wrong ("must …").
+    fn violation(self, v: f64, unit: &str) -> Option<String> {
+        let got = if unit.is_empty() {
+            show(v)
+        } else {
+            format!("{} {unit}", show(v))
+        };
+        let ok = v.is_finite()
+            && match self {
+                Bound::Positive => v > 0.0,
+                Bound::NonNegative => v >= 0.0,
+                Bound::Open(lo, hi) => v > lo && v < hi,
+                Bound::Closed(lo, hi) => (lo..=hi).contains(&v),
+            };
+        if ok {
+            return None;
+        }
+        Some(match self {
+            _ if !v.is_finite() => format!("must be finite, got {got}"),
+            Bound::Positive => format!("must be positive, got {got}"),
+            Bound::NonNegative => format!("must not be negative, got {got}"),
+            Bound::Open(lo, hi) => format!(
+                "must lie strictly between {} and {}, got {got}",
+                show(lo),
+                show(hi)
+            ),
+            Bound::Closed(lo, hi) => {
+                format!("must lie between {} and {}, got {got}", show(lo), show(hi))
+            }
+        })
+    }
+}
+
+/// One numeric key of the scenario file.
+#[derive(Debug, Clone, Copy)]
+struct Field {
+    /// Dotted key path, as printed in errors.
+    key: &'static str,
+    dimension: Dimension,
+    /// SI unit symbol, for messages ("" if dimensionless).
+    unit: &'static str,
+    bound: Bound,
+}
+
+const fn field(key: &'static str, dimension: Dimension, unit: &'static str, bound: Bound) -> Field {
+    Field {
+        key,
+        dimension,
+        unit,
+        bound,
+    }
+}
+
+const YOUNGS_MODULUS: Field = field(
+    "material.youngs_modulus",
+    Dimension::PRESSURE,
+    "Pa",
+    Bound::Positive,
+);
+const POISSON_RATIO: Field = field(
+    "material.poisson_ratio",
+    Dimension::DIMENSIONLESS,
+    "",
+    Bound::Closed(0.0, 0.5),
+);
+const RMS_ROUGHNESS: Field = field(
+    "surface.rms_roughness",
+    Dimension::LENGTH,
+    "m",
+    Bound::Positive,
+);
+const HURST_EXPONENT: Field = field(
+    "surface.hurst_exponent",
+    Dimension::DIMENSIONLESS,
+    "",
+    Bound::Open(0.0, 1.0),
+);
+const Q0: Field = field("surface.q0", Dimension::WAVEVECTOR, "1/m", Bound::Positive);
+const Q1: Field = field("surface.q1", Dimension::WAVEVECTOR, "1/m", Bound::Positive);
+const ROLLOFF: Field = field(
+    "surface.rolloff",
+    Dimension::WAVEVECTOR,
+    "1/m",
+    Bound::Positive,
+);
+const VISCOSITY: Field = field(
+    "fluid.viscosity",
+    Dimension::VISCOSITY,
+    "Pa·s",
+    Bound::Positive,
+);
+const PRESSURE_DIFFERENCE: Field = field(
+    "fluid.pressure_difference",
+    Dimension::PRESSURE,
+    "Pa",
+    Bound::NonNegative,
+);
+const NOMINAL_PRESSURE: Field = field(
+    "seal.nominal_pressure",
+    Dimension::PRESSURE,
+    "Pa",
+    Bound::Positive,
+);
+const WIDTH: Field = field("seal.width", Dimension::LENGTH, "m", Bound::Positive);
+const LENGTH: Field = field("seal.length", Dimension::LENGTH, "m", Bound::Positive);
+const PERCOLATION_THRESHOLD: Field = field(
+    "model.percolation_threshold",
+    Dimension::DIMENSIONLESS,
+    "",
+    Bound::Open(0.0, 1.0),
+);
+const SHAPE_FACTOR: Field = field(
+    "model.shape_factor",
+    Dimension::DIMENSIONLESS,
+    "",
+    Bound::Positive,
+);
+const GAMMA: Field = field(
+    "model.gamma",
+    Dimension::DIMENSIONLESS,
+    "",
+    Bound::Closed(0.0, 1.0),
+);
+
+/// Default of `model.shape_factor` (α ≈ 1, PY08 eq. 2).
+const DEFAULT_SHAPE_FACTOR: f64 = 1.0;
+
+/// The validated contents of a scenario file (before it is wrapped with its name and path).
+pub(super) struct Validated {
+    pub name: Option<String>,
+    pub problem: StaticProblem,
+}
+
+impl Source<'_> {
+    /// Checks the whole file.
+    pub fn scenario(&self, raw: &RawScenario) -> Result<Validated, ScenarioError> {
+        let material = self.material(raw.material.get_ref())?;
+        let spectrum = self.surface(&raw.surface)?;
+        let fluid = self.fluid(raw.fluid.get_ref())?;
+        let seal = self.seal(raw.seal.get_ref())?;
+        let (contact, shape_factor) = match &raw.model {
+            Some(model) => self.model(model.get_ref())?,
+            None => (ContactSettings::default(), DEFAULT_SHAPE_FACTOR),
+        };
+        Ok(Validated {
+            name: raw.name.as_ref().map(|n| n.get_ref().clone()),
+            problem: StaticProblem {
+                material,
+                spectrum,
+                fluid,
+                seal,
+                contact,
+                shape_factor,
+            },
+        })
+    }
+
+    /// A written quantity → a checked SI value: the unit must have the field's dimension and
+    /// the value must lie in its range.
+    fn quantity(&self, raw: &Quantity, field: &Field) -> Result<f64, ScenarioError> {
+        let value = match raw.get_ref() {
+            RawQuantity::Number(v) => *v,
+            RawQuantity::Text(text) => units::parse_quantity(text, field.dimension)
+                .map_err(|e| self.error(raw.span(), field.key, e.to_string()))?,
+        };
+        match field.bound.violation(value, field.unit) {
+            Some(message) => Err(self.error(raw.span(), field.key, message)),
+            None => Ok(value),
+        }
+    }
+
+    /// [`Source::quantity`] for a key that may be absent.
+    fn optional(
+        &self,
+        raw: Option<&Quantity>,
+        field: &Field,
+    ) -> Result<Option<f64>, ScenarioError> {
+        raw.map(|q| self.quantity(q, field)).transpose()
+    }
+
+    fn material(&self, raw: &RawMaterial) -> Result<Elastic, ScenarioError> {
+        Ok(Elastic {
+            youngs_modulus: self.quantity(&raw.youngs_modulus, &YOUNGS_MODULUS)?,
+            poisson_ratio: self.quantity(&raw.poisson_ratio, &POISSON_RATIO)?,
+        })
+    }
+
+    fn fluid(&self, raw: &RawFluid) -> Result<Fluid, ScenarioError> {
+        Ok(Fluid {
+            viscosity: self.quantity(&raw.viscosity, &VISCOSITY)?,
+            pressure_difference: self.quantity(&raw.pressure_difference, &PRESSURE_DIFFERENCE)?,
+        })
+    }
+
+    fn seal(&self, raw: &RawSeal) -> Result<FlatSeal, ScenarioError> {
+        Ok(FlatSeal {
+            nominal_pressure: self.quantity(&raw.nominal_pressure, &NOMINAL_PRESSURE)?,
+            width: self.quantity(&raw.width, &WIDTH)?,
+            length: self.quantity(&raw.length, &LENGTH)?,
+        })
+    }
+
+    fn model(&self, raw: &RawModel) -> Result<(ContactSettings, f64), ScenarioError> {
+        let defaults = ContactSettings::default();
+        let contact = ContactSettings {
+            percolation_threshold: self
+                .optional(raw.percolation_threshold.as_ref(), &PERCOLATION_THRESHOLD)?
+                .unwrap_or(defaults.percolation_threshold),
+            gamma: self
+                .optional(raw.gamma.as_ref(), &GAMMA)?
+                .unwrap_or(defaults.gamma),
+            quadrature: Default::default(),
+        };
+        let shape_factor = self
+            .optional(raw.shape_factor.as_ref(), &SHAPE_FACTOR)?
+            .unwrap_or(DEFAULT_SHAPE_FACTOR);
+        Ok((contact, shape_factor))
+    }
+
+    /// `[surface]`: a self-affine spectrum or a tabulated one from `psd_file`.
+    fn surface(&self, table: &Spanned<RawSurface>) -> Result<Spectrum, ScenarioError> {
+        let raw = table.get_ref();
+        match &raw.psd_file {
+            Some(file) => self.tabulated_surface(raw, file),
+            None if raw.rms_roughness.is_none() && raw.hurst_exponent.is_none() => Err(self.error(
+                table.span(),
+                "surface",
+                "no spectrum given: set either the self-affine parameters (rms_roughness, \
+                 hurst_exponent, q0, q1, optional rolloff) or psd_file (a CSV of q, C)",
+            )),
+            None => self.self_affine_surface(table),
+        }
+    }
+
+    fn self_affine_surface(&self, table: &Spanned<RawSurface>) -> Result<Spectrum, ScenarioError> {
+        let raw = table.get_ref();
+        let required = |q: Option<&Quantity>, field: &Field| {
+            match q {
+            Some(q) => self.quantity(q, field),
+            None => Err(self.error(
+                table.span(),
+                field.key,
+                "missing key: a self-affine spectrum needs rms_roughness, hurst_exponent, q0 and q1 \
+                 (or give psd_file instead)",
+            )),
+        }
+        };
+        let h_rms = required(raw.rms_roughness.as_ref(), &RMS_ROUGHNESS)?;
+        let hurst = required(raw.hurst_exponent.as_ref(), &HURST_EXPONENT)?;
+        let q0 = required(raw.q0.as_ref(), &Q0)?;
+        let q1 = required(raw.q1.as_ref(), &Q1)?;
+        if q0 >= q1 {
+            return Err(self.error(
+                raw.q0.as_ref().map_or(table.span(), Spanned::span),
+                Q0.key,
+                format!(
+                    "must be smaller than surface.q1, got q0 = {} 1/m and q1 = {} 1/m",
+                    show(q0),
+                    show(q1)
+                ),
+            ));
+        }
+        let rolloff = self.optional(raw.rolloff.as_ref(), &ROLLOFF)?;
+        if let (Some(qr), Some(qr_raw)) = (rolloff, &raw.rolloff)
+            && !(qr > q0 && qr < q1)
+        {
+            return Err(self.error(
+                qr_raw.span(),
+                ROLLOFF.key,
+                format!(
+                    "must lie strictly between q0 = {} 1/m and q1 = {} 1/m, got {} 1/m",
+                    show(q0),
+                    show(q1),
+                    show(qr)
+                ),
+            ));
+        }
+        Spectrum::self_affine(h_rms, hurst, q0, q1, rolloff)
+            .map_err(|e| self.error(table.span(), "surface", e.to_string()))
+    }
+
+    fn tabulated_surface(
+        &self,
+        raw: &RawSurface,
+        file: &Spanned<String>,
+    ) -> Result<Spectrum, ScenarioError> {
+        for (present, key) in [
+            (&raw.rms_roughness, RMS_ROUGHNESS.key),
+            (&raw.hurst_exponent, HURST_EXPONENT.key),
+            (&raw.rolloff, ROLLOFF.key),
+        ] {
+            if let Some(q) = present {
+                return Err(self.error(
+                    q.span(),
+                    key,
+                    format!("psd_file gives the whole spectrum; remove {key} (or remove psd_file)"),
+                ));
+            }
+        }
+        let line = self.line(file.span().start);
+        let psd_path = self.psd_path(file.get_ref());
+        let text = std::fs::read_to_string(&psd_path).map_err(|source| ScenarioError::PsdRead {
+            psd: psd_path.clone(),
+            scenario: self.path.to_path_buf(),
+            line,
+            source,
+        })?;
+        let format_error = |psd_line: Option<usize>, message: String| ScenarioError::PsdFormat {
+            psd: psd_path.clone(),
+            psd_line,
+            scenario: self.path.to_path_buf(),
+            line,
+            message,
+        };
+        let (q, c) = psd::parse(&text).map_err(|e| format_error(e.line, e.message))?;
+        let spectrum =
+            Spectrum::tabulated(&q, &c).map_err(|e| format_error(None, e.to_string()))?;
+
+        let q0 = self.optional(raw.q0.as_ref(), &Q0)?;
+        let q1 = self.optional(raw.q1.as_ref(), &Q1)?;
+        // A band error is reported at q0 if it is given, else at q1.
+        let (span, key) = match (&raw.q0, &raw.q1) {
+            (Some(q), _) => (q.span(), Q0.key),
+            (None, Some(q)) => (q.span(), Q1.key),
+            (None, None) => return Ok(spectrum),
+        };
+        let (lo, hi) = (q0.unwrap_or(spectrum.q0()), q1.unwrap_or(spectrum.q1()));
+        spectrum
+            .restricted(lo, hi)
+            .map_err(|e| self.error(span, key, e.to_string()))
+    }
+
+    /// `psd_file` resolved against the scenario file's directory.
+    fn psd_path(&self, file: &str) -> PathBuf {
+        match self.path.parent() {
+            Some(dir) => dir.join(file),
+            None => PathBuf::from(file),
+        }
+    }
+}

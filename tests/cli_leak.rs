@@ -1,0 +1,602 @@
+//! End-to-end tests of `sealsim leak`: the shipped scenarios, the CSV contract, and that
+//! every kind of bad input exits with status 2, names the file, line and key, never panics and
+//! never creates or touches the `-o` file.
+
+use assert_cmd::cargo::cargo_bin_cmd;
+use predicates::prelude::*;
+use std::fs;
+use std::path::{Path, PathBuf};
+use tempfile::TempDir;
+
+const PAPER: &str = include_str!("../scenarios/persson-yang-2008.toml");
+const PSD_EXAMPLE: &str = include_str!("../scenarios/psd-example.toml");
+const PSD_EXAMPLE_CSV: &str = include_str!("../scenarios/psd-example.csv");
+
+const HEADER: &str =
+    "nominal_pressure_Pa,zeta_c,lambda_c_m,u_c_m,ubar_c_m,hrms_c_m,leak_rate_m3_per_s,state";
+
+/// Reference values at P0 = 0.2 MPa from tests/reference/persson_reference.py (scipy).
+const REFERENCE_ZETA_C: f64 = 16.1860614;
+const REFERENCE_U_C: f64 = 1.23573438e-7;
+
+fn scenario_path(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenarios")
+        .join(name)
+}
+
+/// One parsed data row of the leak CSV.
+#[derive(Debug)]
+struct Row {
+    pressure: f64,
+    zeta_c: Option<f64>,
+    u_c: Option<f64>,
+    cells: Vec<String>,
+    leak_rate: f64,
+    state: String,
+}
+
+/// Runs `sealsim leak <args>`, expects success and parses stdout.
+fn leak_ok(args: &[&str]) -> Vec<Row> {
+    let out = cargo_bin_cmd!("sealsim")
+        .arg("leak")
+        .args(args)
+        .assert()
+        .success();
+    let stdout = String::from_utf8(out.get_output().stdout.clone()).unwrap();
+    parse_csv(&stdout)
+}
+
+fn parse_csv(text: &str) -> Vec<Row> {
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some(HEADER));
+    lines
+        .map(|line| {
+            let cells: Vec<String> = line.split(',').map(str::to_owned).collect();
+            assert_eq!(cells.len(), 8, "row {line:?}");
+            for cell in &cells[..7] {
+                assert!(
+                    !cell.contains("NaN") && !cell.contains("inf"),
+                    "row {line:?}"
+                );
+            }
+            let num = |i: usize| (!cells[i].is_empty()).then(|| cells[i].parse::<f64>().unwrap());
+            Row {
+                pressure: num(0).unwrap(),
+                zeta_c: num(1),
+                u_c: num(3),
+                leak_rate: num(6).unwrap(),
+                state: cells[7].clone(),
+                cells,
+            }
+        })
+        .collect()
+}
+
+fn rel(a: f64, b: f64) -> f64 {
+    (a / b - 1.0).abs()
+}
+
+#[test]
+fn shipped_scenario_matches_the_scipy_reference() {
+    let rows = leak_ok(&[scenario_path("persson-yang-2008.toml").to_str().unwrap()]);
+    assert_eq!(rows.len(), 1);
+    let r = &rows[0];
+    assert_eq!(r.state, "leaking");
+    assert_eq!(r.pressure, 2e5);
+    assert!(rel(r.zeta_c.unwrap(), REFERENCE_ZETA_C) < 1e-4, "{r:?}");
+    assert!(rel(r.u_c.unwrap(), REFERENCE_U_C) < 1e-3, "{r:?}");
+    assert!(r.leak_rate > 0.0);
+}
+
+#[test]
+fn sweep_is_log_spaced_and_leak_rate_never_increases() {
+    let path = scenario_path("persson-yang-2008.toml");
+    let rows = leak_ok(&[
+        path.to_str().unwrap(),
+        "--sweep",
+        "0.05MPa..1MPa",
+        "--points",
+        "20",
+    ]);
+    assert_eq!(rows.len(), 20);
+    assert_eq!(rows[0].pressure, 5e4);
+    assert_eq!(rows[19].pressure, 1e6);
+    for w in rows.windows(2) {
+        assert!(w[1].pressure > w[0].pressure);
+        assert!(
+            w[1].leak_rate <= w[0].leak_rate,
+            "{:?} then {:?}",
+            w[0],
+            w[1]
+        );
+    }
+}
+
+#[test]
+fn exact_and_table_fidelity_agree() {
+    let path = scenario_path("persson-yang-2008.toml");
+    let path = path.to_str().unwrap();
+    let run = |fidelity| {
+        leak_ok(&[
+            path,
+            "--sweep",
+            "0.05MPa..2MPa",
+            "--points",
+            "7",
+            "--fidelity",
+            fidelity,
+        ])
+    };
+    let (exact, table) = (run("exact"), run("table"));
+    assert_eq!(exact.len(), table.len());
+    for (e, t) in exact.iter().zip(&table) {
+        assert_eq!(e.state, t.state);
+        for (a, b) in e.cells[..7].iter().zip(&t.cells[..7]) {
+            let (a, b): (f64, f64) = (a.parse().unwrap(), b.parse().unwrap());
+            assert!(rel(a, b) < 1e-3, "exact {e:?} vs table {t:?}");
+        }
+    }
+}
+
+#[test]
+fn pressure_above_sealing_is_sealed_with_blank_cells() {
+    let path = scenario_path("persson-yang-2008.toml");
+    let rows = leak_ok(&[path.to_str().unwrap(), "--pressures", "0.2MPa,3MPa"]);
+    assert_eq!(rows.len(), 2);
+    assert_eq!(rows[0].state, "leaking");
+    let sealed = &rows[1];
+    assert_eq!(sealed.pressure, 3e6);
+    assert_eq!(sealed.state, "sealed");
+    assert_eq!(sealed.leak_rate, 0.0);
+    assert!(
+        sealed.cells[1..6].iter().all(String::is_empty),
+        "{sealed:?}"
+    );
+}
+
+#[test]
+fn bare_pressures_are_pascals() {
+    let path = scenario_path("persson-yang-2008.toml");
+    let rows = leak_ok(&[path.to_str().unwrap(), "--pressures", "200000,2bar"]);
+    assert_eq!(rows[0].pressure, 2e5);
+    assert_eq!(rows[1].pressure, 2e5);
+}
+
+#[test]
+fn output_file_gets_exactly_what_stdout_would() {
+    let dir = TempDir::new().unwrap();
+    let out = dir.path().join("leak.csv");
+    let path = scenario_path("persson-yang-2008.toml");
+    let args = [path.to_str().unwrap(), "--pressures", "0.1MPa,0.3MPa"];
+    cargo_bin_cmd!("sealsim")
+        .arg("leak")
+        .args(args)
+        .arg("-o")
+        .arg(&out)
+        .assert()
+        .success()
+        .stdout(predicate::str::is_empty());
+    let written = fs::read_to_string(&out).unwrap();
+    let stdout = cargo_bin_cmd!("sealsim")
+        .arg("leak")
+        .args(args)
+        .output()
+        .unwrap()
+        .stdout;
+    assert_eq!(written.as_bytes(), stdout.as_slice());
+    assert_eq!(parse_csv(&written).len(), 2);
+    // nothing but the output in the directory (no temporary left behind)
+    assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 1);
+}
+
+#[test]
+fn psd_example_scenario_runs() {
+    let rows = leak_ok(&[scenario_path("psd-example.toml").to_str().unwrap()]);
+    assert_eq!(rows.len(), 1);
+    assert_eq!(rows[0].state, "leaking");
+    assert!(rows[0].leak_rate > 0.0);
+}
+
+#[test]
+fn psd_file_is_found_relative_to_the_scenario_not_the_working_directory() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    cargo_bin_cmd!("sealsim")
+        .current_dir(src)
+        .args(["leak", "../scenarios/psd-example.toml"])
+        .assert()
+        .success()
+        .stdout(predicate::str::contains(",leaking\n"));
+}
+
+#[test]
+fn warnings_are_aggregated_per_kind() {
+    // ΔP/P0 = 0.2 and 0.1… at the two lowest pressures: one line, "and 1 more pressure".
+    let path = scenario_path("persson-yang-2008.toml");
+    cargo_bin_cmd!("sealsim")
+        .args([
+            "leak",
+            path.to_str().unwrap(),
+            "--pressures",
+            "0.05MPa,0.06MPa,1MPa",
+        ])
+        .assert()
+        .success()
+        .stderr(predicate::str::contains("warning: at P0 = 5.0000e4 Pa, ΔP/P0").count(1))
+        .stderr(predicate::str::contains("(and 1 more pressure)"));
+}
+
+// ---------------------------------------------------------------------------------------
+// Bad input: exit 2, located message, no panic, no output file.
+
+/// A scenario directory in a tempdir: `scenario.toml` (and optionally a PSD file).
+struct Case {
+    dir: TempDir,
+}
+
+impl Case {
+    fn new(scenario: &str) -> Case {
+        let dir = TempDir::new().unwrap();
+        fs::write(dir.path().join("scenario.toml"), scenario).unwrap();
+        Case { dir }
+    }
+
+    /// The shipped paper scenario with `from` replaced by `to` (which must occur).
+    fn paper_with(from: &str, to: &str) -> Case {
+        assert!(PAPER.contains(from), "{from:?} not in the shipped scenario");
+        Case::new(&PAPER.replacen(from, to, 1))
+    }
+
+    /// The PSD example scenario with its CSV file replaced by `csv` (or absent).
+    fn psd(csv: Option<&str>) -> Case {
+        let case = Case::new(PSD_EXAMPLE);
+        if let Some(csv) = csv {
+            fs::write(case.dir.path().join("psd-example.csv"), csv).unwrap();
+        }
+        case
+    }
+
+    fn scenario(&self) -> PathBuf {
+        self.dir.path().join("scenario.toml")
+    }
+
+    fn output(&self) -> PathBuf {
+        self.dir.path().join("out.csv")
+    }
+
+    /// Runs `leak scenario.toml -o out.csv <extra>`; expects exit 2, every `needle` in
+    /// stderr, no panic, and no out.csv. Returns stderr.
+    fn rejects(&self, extra: &[&str], needles: &[&str]) -> String {
+        let assert = cargo_bin_cmd!("sealsim")
+            .arg("leak")
+            .arg(self.scenario())
+            .arg("-o")
+            .arg(self.output())
+            .args(extra)
+            .assert()
+            .code(2)
+            .stdout(predicate::str::is_empty())
+            .stderr(predicate::str::starts_with("error: "))
+            .stderr(predicate::str::contains("panicked").not());
+        let stderr = String::from_utf8(assert.get_output().stderr.clone()).unwrap();
+        for needle in needles {
+            assert!(
+                stderr.contains(needle),
+                "stderr lacks {needle:?}:\n{stderr}"
+            );
+        }
+        assert!(!self.output().exists(), "the -o file was created");
+        stderr
+    }
+}
+
+/// Line numbers below refer to the shipped persson-yang-2008.toml.
+#[test]
+fn unknown_key_is_named_with_the_allowed_keys() {
+    let case = Case::paper_with("poisson_ratio", "poisson");
+    case.rejects(
+        &[],
+        &[
+            "scenario.toml:4: material.poisson: unknown key `poisson`",
+            "`poisson_ratio`",
+        ],
+    );
+}
+
+#[test]
+fn unknown_table_is_named() {
+    let case = Case::new(&format!("{PAPER}[simulation]\nsteps = 3\n"));
+    case.rejects(
+        &[],
+        &["scenario.toml:17: simulation: unknown key `simulation`"],
+    );
+}
+
+#[test]
+fn missing_key_is_named_with_its_table() {
+    let case = Case::paper_with("viscosity = \"1e-3 Pa*s\"\n", "");
+    case.rejects(
+        &[],
+        &["scenario.toml:10: fluid.viscosity: missing key `viscosity` in [fluid]"],
+    );
+}
+
+#[test]
+fn missing_table_is_named() {
+    let case = Case::paper_with(
+        "[fluid]\nviscosity = \"1e-3 Pa*s\"\npressure_difference = \"0.01 MPa\"\n",
+        "",
+    );
+    case.rejects(&[], &["scenario.toml:1: fluid: missing table [fluid]"]);
+}
+
+#[test]
+fn wrong_dimension_is_explained() {
+    let case = Case::paper_with(
+        "nominal_pressure = \"0.2 MPa\"",
+        "nominal_pressure = \"10 m\"",
+    );
+    case.rejects(
+        &[],
+        &[
+            "scenario.toml:14: seal.nominal_pressure: expected a pressure",
+            "length",
+        ],
+    );
+}
+
+#[test]
+fn wrong_type_is_explained() {
+    let case = Case::paper_with("poisson_ratio = 0.5", "poisson_ratio = true");
+    case.rejects(
+        &[],
+        &["scenario.toml:4: material.poisson_ratio: invalid type"],
+    );
+}
+
+#[test]
+fn hurst_exponent_zero_is_rejected() {
+    let case = Case::paper_with("hurst_exponent = 0.8", "hurst_exponent = 0");
+    case.rejects(
+        &[],
+        &["scenario.toml:7: surface.hurst_exponent: must lie strictly between 0 and 1, got 0"],
+    );
+}
+
+#[test]
+fn hurst_exponent_above_one_is_rejected() {
+    let case = Case::paper_with("hurst_exponent = 0.8", "hurst_exponent = 1.2");
+    case.rejects(
+        &[],
+        &["scenario.toml:7: surface.hurst_exponent: must lie strictly between 0 and 1, got 1.2"],
+    );
+}
+
+#[test]
+fn q0_not_below_q1_is_rejected() {
+    let case = Case::paper_with("q0 = \"1e4 1/m\"", "q0 = \"7.8e9 1/m\"");
+    case.rejects(
+        &[],
+        &["scenario.toml:8: surface.q0: must be smaller than surface.q1"],
+    );
+}
+
+#[test]
+fn non_positive_youngs_modulus_is_rejected() {
+    let case = Case::paper_with("\"10 MPa\"", "\"-10 MPa\"");
+    case.rejects(
+        &[],
+        &["scenario.toml:3: material.youngs_modulus: must be positive, got -1e7 Pa"],
+    );
+    let case = Case::paper_with("\"10 MPa\"", "0");
+    case.rejects(
+        &[],
+        &["scenario.toml:3: material.youngs_modulus: must be positive, got 0 Pa"],
+    );
+}
+
+#[test]
+fn non_positive_viscosity_is_rejected() {
+    let case = Case::paper_with("\"1e-3 Pa*s\"", "0");
+    case.rejects(
+        &[],
+        &["scenario.toml:11: fluid.viscosity: must be positive"],
+    );
+}
+
+#[test]
+fn non_positive_rms_roughness_is_rejected() {
+    let case = Case::paper_with("\"2 um\"", "\"-2 um\"");
+    case.rejects(
+        &[],
+        &["scenario.toml:6: surface.rms_roughness: must be positive"],
+    );
+}
+
+#[test]
+fn poisson_ratio_above_one_half_is_rejected() {
+    let case = Case::paper_with("poisson_ratio = 0.5", "poisson_ratio = 0.6");
+    case.rejects(
+        &[],
+        &["scenario.toml:4: material.poisson_ratio: must lie between 0 and 0.5, got 0.6"],
+    );
+}
+
+#[test]
+fn negative_poisson_ratio_is_rejected() {
+    let case = Case::paper_with("poisson_ratio = 0.5", "poisson_ratio = -0.1");
+    case.rejects(
+        &[],
+        &["scenario.toml:4: material.poisson_ratio: must lie between 0 and 0.5, got -0.1"],
+    );
+}
+
+#[test]
+fn toml_syntax_error_is_located() {
+    let case = Case::paper_with("[seal]", "[seal");
+    case.rejects(&[], &["scenario.toml:13: TOML syntax error"]);
+}
+
+#[test]
+fn surface_without_spectrum_names_both_options() {
+    let start = PAPER.find("rms_roughness").unwrap();
+    let end = PAPER.find("[fluid]").unwrap();
+    let case = Case::new(&format!("{}{}", &PAPER[..start], &PAPER[end..]));
+    case.rejects(
+        &[],
+        &[
+            "scenario.toml:5: surface: no spectrum given",
+            "rms_roughness",
+            "psd_file",
+        ],
+    );
+}
+
+#[test]
+fn psd_file_with_self_affine_keys_is_rejected() {
+    let case = Case::paper_with("[surface]\n", "[surface]\npsd_file = \"x.csv\"\n");
+    case.rejects(
+        &[],
+        &["scenario.toml:7: surface.rms_roughness: psd_file gives the whole spectrum; remove"],
+    );
+}
+
+#[test]
+fn missing_psd_file_is_named_with_the_scenario_line() {
+    let case = Case::psd(None);
+    case.rejects(
+        &[],
+        &[
+            "scenario.toml:10: surface.psd_file: cannot read PSD file",
+            "psd-example.csv",
+        ],
+    );
+}
+
+#[test]
+fn psd_with_text_cell_is_located() {
+    let case = Case::psd(Some("q,C\n1e4,1e-20\n1e5,abc\n"));
+    case.rejects(
+        &[],
+        &["psd-example.csv:3: C is not a number", "scenario.toml:10"],
+    );
+}
+
+#[test]
+fn psd_with_decreasing_q_is_located() {
+    let case = Case::psd(Some("# comment\n1e5,1e-20\n1e4,1e-21\n"));
+    case.rejects(
+        &[],
+        &[
+            "psd-example.csv:3: q must increase strictly",
+            "scenario.toml:10",
+        ],
+    );
+}
+
+#[test]
+fn psd_with_negative_c_is_located() {
+    let case = Case::psd(Some("1e4,1e-20\n1e5,-1e-21\n"));
+    case.rejects(
+        &[],
+        &["psd-example.csv:2: C must be positive", "scenario.toml:10"],
+    );
+}
+
+#[test]
+fn psd_with_one_row_is_rejected() {
+    let case = Case::psd(Some("q,C\n1e4,1e-20\n"));
+    case.rejects(
+        &[],
+        &[
+            "psd-example.csv: a PSD needs at least 2 data rows",
+            "scenario.toml:10",
+        ],
+    );
+}
+
+#[test]
+fn psd_with_wrong_column_count_is_located() {
+    let case = Case::psd(Some("1e4,1e-20\n1e5,1e-21,7\n"));
+    case.rejects(
+        &[],
+        &[
+            "psd-example.csv:2: expected 2 comma-separated columns",
+            "scenario.toml:10",
+        ],
+    );
+}
+
+#[test]
+fn psd_band_restriction_outside_the_table_is_rejected() {
+    let case = Case::new(&PSD_EXAMPLE.replace("# q0 = \"2e4 1/m\"", "q0 = \"1e3 1/m\""));
+    fs::write(case.dir.path().join("psd-example.csv"), PSD_EXAMPLE_CSV).unwrap();
+    case.rejects(&[], &["scenario.toml:11: surface.q0: the band"]);
+}
+
+#[test]
+fn nonexistent_scenario_file_is_named() {
+    let case = Case::new(PAPER);
+    fs::remove_file(case.scenario()).unwrap();
+    case.rejects(&[], &["scenario.toml: cannot read scenario file"]);
+}
+
+#[test]
+fn bad_pressure_value_is_rejected() {
+    let case = Case::new(PAPER);
+    case.rejects(
+        &["--pressures", "0.1MPa,10 m"],
+        &["--pressures", "expected a pressure"],
+    );
+    case.rejects(&["--pressures=-1MPa"], &["--pressures", "must be positive"]);
+}
+
+#[test]
+fn sweep_end_below_start_is_rejected() {
+    let case = Case::new(PAPER);
+    case.rejects(
+        &["--sweep", "1MPa..0.05MPa"],
+        &["--sweep", "must exceed its start"],
+    );
+}
+
+#[test]
+fn inconsistent_flags_are_usage_errors() {
+    let case = Case::new(PAPER);
+    case.rejects(&["--points", "5"], &["--sweep"]);
+    case.rejects(&["--sweep", "0.1MPa..1MPa", "--points", "1"], &["--points"]);
+    case.rejects(
+        &["--sweep", "0.1MPa..1MPa", "--pressures", "1MPa"],
+        &["cannot be used with"],
+    );
+}
+
+#[test]
+fn existing_output_file_keeps_its_content_on_error() {
+    let case = Case::paper_with("hurst_exponent = 0.8", "hurst_exponent = 1.2");
+    fs::write(case.output(), "precious\n").unwrap();
+    cargo_bin_cmd!("sealsim")
+        .arg("leak")
+        .arg(case.scenario())
+        .arg("-o")
+        .arg(case.output())
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("surface.hurst_exponent"));
+    assert_eq!(fs::read_to_string(case.output()).unwrap(), "precious\n");
+    assert_eq!(fs::read_dir(case.dir.path()).unwrap().count(), 2);
+}
+
+#[test]
+fn unwritable_output_exits_1() {
+    let dir = TempDir::new().unwrap();
+    let out = dir.path().join("no/such/dir/out.csv");
+    cargo_bin_cmd!("sealsim")
+        .arg("leak")
+        .arg(scenario_path("persson-yang-2008.toml"))
+        .arg("-o")
+        .arg(&out)
+        .assert()
+        .code(1)
+        .stderr(predicate::str::starts_with("error: cannot write"));
+}
