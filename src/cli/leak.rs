@@ -2,6 +2,7 @@
 
 use super::{CliError, write_output};
 use crate::leak::{Fidelity, LeakPoint, StaticSolver, Warning};
+use crate::numerics::log_spaced;
 use crate::report::csv::leak_table;
 use crate::scenario::Scenario;
 use crate::units::{self, Dimension};
@@ -75,15 +76,7 @@ pub struct Sweep {
 impl Sweep {
     /// `points` log-spaced pressures from `from` to `to`, both included.
     pub fn pressures(&self, points: u32) -> Vec<f64> {
-        let n = points.max(2);
-        let ratio = (self.to / self.from).ln();
-        (0..n)
-            .map(|i| match i {
-                0 => self.from,
-                _ if i == n - 1 => self.to,
-                _ => self.from * (ratio * f64::from(i) / f64::from(n - 1)).exp(),
-            })
-            .collect()
+        log_spaced(self.from, self.to, points as usize)
     }
 }
 
@@ -129,13 +122,14 @@ pub fn run(args: LeakArgs) -> Result<(), CliError> {
     let solver = StaticSolver::new(scenario.problem, args.fidelity.into());
     let points: Vec<LeakPoint> = pressures.iter().map(|&p0| solver.evaluate(p0)).collect();
     let csv = leak_table(&points)?;
-    print_warnings(points.iter().flat_map(|p| solver.warnings(p)));
+    print_warnings(None, points.iter().flat_map(|p| solver.warnings(p)));
     write_output(args.output.as_deref(), csv.as_bytes())
 }
 
 /// Prints warnings to stderr, one line per kind: the first message, and how many more
-/// pressures raised the same kind.
-fn print_warnings(warnings: impl IntoIterator<Item = Warning>) {
+/// pressures raised the same kind; `context` (e.g. the scenario's name) leads each line.
+pub(super) fn print_warnings(context: Option<&str>, warnings: impl IntoIterator<Item = Warning>) {
+    let lead = context.map(|c| format!("{c}: ")).unwrap_or_default();
     // (first warning of a kind, occurrences), in order of first occurrence
     let mut kinds: Vec<(Warning, usize)> = Vec::new();
     for w in warnings {
@@ -149,9 +143,9 @@ fn print_warnings(warnings: impl IntoIterator<Item = Warning>) {
     }
     for (first, n) in kinds {
         match n - 1 {
-            0 => eprintln!("warning: {first}"),
-            1 => eprintln!("warning: {first} (and 1 more pressure)"),
-            more => eprintln!("warning: {first} (and {more} more pressures)"),
+            0 => eprintln!("warning: {lead}{first}"),
+            1 => eprintln!("warning: {lead}{first} (and 1 more pressure)"),
+            more => eprintln!("warning: {lead}{first} (and {more} more pressures)"),
         }
     }
 }

@@ -5,6 +5,7 @@
 //! [`run`]. Exit status: 0 success, 2 bad input (usage, flag values, scenario files), 1 failure
 //! to write the output or an internal error.
 
+pub mod figures;
 pub mod leak;
 
 use crate::report::{self, ReportError};
@@ -32,6 +33,8 @@ pub struct Cli {
 pub enum Command {
     /// Leak rate of a flat seal at one or more nominal pressures, as CSV.
     Leak(leak::LeakArgs),
+    /// Data and SVG charts of groups of scenarios over a pressure sweep (PY08 §3 figures).
+    Figures(figures::FiguresArgs),
 }
 
 /// Why a command failed; decides the exit status.
@@ -104,6 +107,7 @@ pub fn main() -> i32 {
 pub fn run(command: Command) -> Result<(), CliError> {
     match command {
         Command::Leak(args) => leak::run(args),
+        Command::Figures(args) => figures::run(args),
     }
 }
 

@@ -24,9 +24,25 @@ pub const LEAK_COLUMNS: [&str; 8] = [
 
 /// The leak table of `points` (header plus one row per point), as CSV text.
 pub fn leak_table(points: &[LeakPoint]) -> Result<String, ReportError> {
+    table(None, points.iter().map(|p| ("", p)))
+}
+
+/// The leak table with a leading `scenario` column naming the scenario of each row (for
+/// results of several scenarios in one file).
+pub fn scenario_leak_table<'a>(
+    rows: impl IntoIterator<Item = (&'a str, &'a LeakPoint)>,
+) -> Result<String, ReportError> {
+    table(Some("scenario"), rows)
+}
+
+fn table<'a>(
+    label_column: Option<&str>,
+    rows: impl IntoIterator<Item = (&'a str, &'a LeakPoint)>,
+) -> Result<String, ReportError> {
     let mut writer = ::csv::Writer::from_writer(Vec::new());
-    writer.write_record(LEAK_COLUMNS).map_err(csv_error)?;
-    for (index, point) in points.iter().enumerate() {
+    let header = label_column.into_iter().chain(LEAK_COLUMNS);
+    writer.write_record(header).map_err(csv_error)?;
+    for (index, (label, point)) in rows.into_iter().enumerate() {
         let cell = |column: usize, value: f64| number(index + 1, LEAK_COLUMNS[column], value);
         let record = match point.junction {
             Junction::Leaking(j) => [
@@ -50,7 +66,10 @@ pub fn leak_table(points: &[LeakPoint]) -> Result<String, ReportError> {
                 "sealed".to_owned(),
             ],
         };
-        writer.write_record(&record).map_err(csv_error)?;
+        let label = label_column.map(|_| label.to_owned());
+        writer
+            .write_record(label.into_iter().chain(record))
+            .map_err(csv_error)?;
     }
     let bytes = writer
         .into_inner()

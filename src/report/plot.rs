@@ -36,8 +36,8 @@ fn err<E: fmt::Display>(e: E) -> PlotError {
     PlotError(e.to_string())
 }
 
-/// Bounds of the drawable points, widened to whole decades.
-fn decade_bounds(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
+/// Bounds of the drawable points; with `whole_decades`, widened to powers of ten.
+fn bounds(values: impl Iterator<Item = f64>, whole_decades: bool) -> Option<(f64, f64)> {
     let (lo, hi) = values
         .filter(|v| v.is_finite() && *v > 0.0)
         .fold((f64::INFINITY, 0.0f64), |(lo, hi), v| {
@@ -45,6 +45,9 @@ fn decade_bounds(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
         });
     if hi <= 0.0 {
         return None;
+    }
+    if !whole_decades && hi > lo {
+        return Some((lo, hi));
     }
     let (a, mut b) = (lo.log10().floor(), hi.log10().ceil());
     if b <= a {
@@ -64,10 +67,15 @@ impl LogLogChart {
                 .collect()
         };
         let all: Vec<(f64, f64)> = self.series.iter().flat_map(drawable).collect();
-        let x = decade_bounds(all.iter().map(|p| p.0))
+        let x = bounds(all.iter().map(|p| p.0), false)
             .ok_or_else(|| PlotError("no positive x values".into()))?;
-        let y = decade_bounds(all.iter().map(|p| p.1))
+        let y = bounds(all.iter().map(|p| p.1), true)
             .ok_or_else(|| PlotError("no positive y values".into()))?;
+        let (y_lo, y_hi) = (y.0.log10().round(), y.1.log10().round());
+        // one label per decade, or every other/third... when there are many
+        let decades = (y_hi - y_lo) as usize;
+        let step = decades.div_ceil(12).max(1);
+        let y_ticks = decades / step + 1;
         let mut svg = String::new();
         {
             let root = SVGBackend::with_string(&mut svg, (800, 560)).into_drawing_area();
@@ -77,20 +85,33 @@ impl LogLogChart {
                 .margin(16)
                 .x_label_area_size(48)
                 .y_label_area_size(80)
-                .build_cartesian_2d((x.0..x.1).log_scale(), (y.0..y.1).log_scale())
+                // y is drawn as log10(y) on a linear axis: plotters' log-axis labels thin out
+                // over the 20+ decades a leak rate spans.
+                .build_cartesian_2d((x.0..x.1).log_scale(), y_lo..y_hi)
                 .map_err(err)?;
             chart
                 .configure_mesh()
                 .x_desc(&self.x_label)
                 .y_desc(&self.y_label)
-                .x_label_formatter(&|v| format!("{v:.0e}"))
-                .y_label_formatter(&|v| format!("{v:.0e}"))
+                .x_labels(8)
+                .y_labels(y_ticks)
+                .x_label_formatter(&|v| format!("{v:.1e}"))
+                .y_label_formatter(&|v| {
+                    if (v - v.round()).abs() < 1e-9 {
+                        format!("1e{}", v.round())
+                    } else {
+                        String::new()
+                    }
+                })
                 .draw()
                 .map_err(err)?;
             for (i, s) in self.series.iter().enumerate() {
                 let colour = Palette99::pick(i).to_rgba();
                 chart
-                    .draw_series(LineSeries::new(drawable(s), colour.stroke_width(2)))
+                    .draw_series(LineSeries::new(
+                        drawable(s).into_iter().map(|(x, y)| (x, y.log10())),
+                        colour.stroke_width(2),
+                    ))
                     .map_err(err)?
                     .label(s.label.clone())
                     .legend(move |(x, y)| {

@@ -13,6 +13,7 @@
 //! [`leak::StaticProblem`]: crate::leak::StaticProblem
 
 mod error;
+pub mod figure_set;
 mod psd;
 mod raw;
 mod validate;

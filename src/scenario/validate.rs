@@ -18,7 +18,7 @@ use toml::Spanned;
 
 /// The values a key accepts (all of them also finite).
 #[derive(Debug, Clone, Copy, PartialEq)]
-enum Bound {
+pub(super) enum Bound {
     /// > 0
     Positive,
     /// ≥ 0
@@ -65,16 +65,21 @@ impl Bound {
 
 /// One numeric key of the scenario file.
 #[derive(Debug, Clone, Copy)]
-struct Field {
+pub(super) struct Field {
     /// Dotted key path, as printed in errors.
-    key: &'static str,
+    pub(super) key: &'static str,
     dimension: Dimension,
     /// SI unit symbol, for messages ("" if dimensionless).
     unit: &'static str,
     bound: Bound,
 }
 
-const fn field(key: &'static str, dimension: Dimension, unit: &'static str, bound: Bound) -> Field {
+pub(super) const fn field(
+    key: &'static str,
+    dimension: Dimension,
+    unit: &'static str,
+    bound: Bound,
+) -> Field {
     Field {
         key,
         dimension,
@@ -189,7 +194,7 @@ impl Source<'_> {
 
     /// A written quantity → a checked SI value: the unit must have the field's dimension and
     /// the value must lie in its range.
-    fn quantity(&self, raw: &Quantity, field: &Field) -> Result<f64, ScenarioError> {
+    pub(super) fn quantity(&self, raw: &Quantity, field: &Field) -> Result<f64, ScenarioError> {
         let value = match raw.get_ref() {
             RawQuantity::Number(v) => *v,
             RawQuantity::Text(text) => units::parse_quantity(text, field.dimension)
