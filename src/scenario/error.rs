@@ -153,6 +153,22 @@ impl Source<'_> {
         }
     }
 
+    /// Parses the text as TOML and deserializes it into the raw structs `T`, with located
+    /// syntax and schema errors.
+    pub fn deserialize<T: serde::de::DeserializeOwned>(&self) -> Result<T, ScenarioError> {
+        let doc = DeTable::parse(self.text).map_err(|e| self.syntax_error(&e))?;
+        T::deserialize(toml::de::Deserializer::from(doc.clone()))
+            .map_err(|e| self.schema_error(&doc, &e))
+    }
+
+    /// The file stem, the default name of a scenario or figure set.
+    pub fn file_stem(&self) -> String {
+        self.path
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default()
+    }
+
     /// A TOML syntax error (from parsing the document).
     pub fn syntax_error(&self, err: &toml::de::Error) -> ScenarioError {
         ScenarioError::Invalid {

@@ -14,13 +14,12 @@
 use super::error::{ScenarioError, Source};
 use super::raw::Quantity;
 use super::validate::{Bound, Field, field};
-use super::{Scenario, show};
+use super::{Scenario, read, show};
 use crate::numerics::log_spaced;
 use crate::units::Dimension;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 use toml::Spanned;
-use toml::de::DeTable;
 
 /// A chart of one group against the nominal pressure.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -102,14 +101,9 @@ const MAX_POINTS: i64 = 10_000;
 impl FigureSet {
     /// Reads and validates a figure set and every scenario it names.
     pub fn load(path: &Path) -> Result<FigureSet, ScenarioError> {
-        let text = std::fs::read_to_string(path).map_err(|source| ScenarioError::Read {
-            path: path.to_path_buf(),
-            source,
-        })?;
+        let text = read(path)?;
         let source = Source { path, text: &text };
-        let doc = DeTable::parse(&text).map_err(|e| source.syntax_error(&e))?;
-        let raw = RawFigureSet::deserialize(toml::de::Deserializer::from(doc.clone()))
-            .map_err(|e| source.schema_error(&doc, &e))?;
+        let raw: RawFigureSet = source.deserialize()?;
 
         let sweep = raw.pressures.get_ref();
         let (from, to) = (
@@ -206,11 +200,7 @@ impl FigureSet {
                 plots,
             });
         }
-        let name = raw.name.unwrap_or_else(|| {
-            path.file_stem()
-                .map(|s| s.to_string_lossy().into_owned())
-                .unwrap_or_default()
-        });
+        let name = raw.name.unwrap_or_else(|| source.file_stem());
         Ok(FigureSet {
             name,
             pressures,

@@ -23,9 +23,7 @@ pub use error::ScenarioError;
 use crate::leak::StaticProblem;
 use error::Source;
 use raw::RawScenario;
-use serde::Deserialize;
 use std::path::{Path, PathBuf};
-use toml::de::DeTable;
 
 /// A validated scenario: everything in SI units, ready for the solvers.
 #[derive(Debug, Clone, PartialEq)]
@@ -42,32 +40,30 @@ impl Scenario {
     /// Reads and validates the scenario file at `path` (a `psd_file` is resolved against its
     /// directory).
     pub fn load(path: &Path) -> Result<Scenario, ScenarioError> {
-        let text = std::fs::read_to_string(path).map_err(|source| ScenarioError::Read {
-            path: path.to_path_buf(),
-            source,
-        })?;
-        Scenario::from_str(&text, path)
+        Scenario::from_str(&read(path)?, path)
     }
 
     /// Validates scenario `text` as if it had been read from `path` (used for the messages,
     /// the default name and to resolve a relative `psd_file`; `path` itself is not read).
     pub fn from_str(text: &str, path: &Path) -> Result<Scenario, ScenarioError> {
         let source = Source { path, text };
-        let doc = DeTable::parse(text).map_err(|e| source.syntax_error(&e))?;
-        let raw = RawScenario::deserialize(toml::de::Deserializer::from(doc.clone()))
-            .map_err(|e| source.schema_error(&doc, &e))?;
+        let raw: RawScenario = source.deserialize()?;
         let validated = source.scenario(&raw)?;
-        let name = validated.name.unwrap_or_else(|| {
-            path.file_stem()
-                .map(|s| s.to_string_lossy().into_owned())
-                .unwrap_or_default()
-        });
+        let name = validated.name.unwrap_or_else(|| source.file_stem());
         Ok(Scenario {
             name,
             path: path.to_path_buf(),
             problem: validated.problem,
         })
     }
+}
+
+/// The text of a scenario-like file, or a located read error.
+fn read(path: &Path) -> Result<String, ScenarioError> {
+    std::fs::read_to_string(path).map_err(|source| ScenarioError::Read {
+        path: path.to_path_buf(),
+        source,
+    })
 }
 
 /// A number for a message: plain when moderate (`0.6`, `1200`), else scientific (`1e10`).
