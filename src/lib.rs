@@ -39,6 +39,7 @@
 pub mod cli;
 pub mod contact;
 pub mod leak;
+pub mod material;
 pub mod numerics;
 pub mod report;
 pub mod scenario;

@@ -1,0 +1,8 @@
+//! Viscoelastic rubber: Prony series in reduced time, time–temperature shift, fitting, and
+//! the material library's model types (DESIGN §5).
+
+pub mod prony;
+pub mod shift;
+
+pub use prony::{Creep, Prony, PronyError, PronyTerm, RelaxationState};
+pub use shift::{Shift, TemperatureHistory};

@@ -1,0 +1,336 @@
+//! Prony-series relaxation modulus in reduced time (DESIGN §5).
+//!
+//! `E(ξ) = E∞ + Σ E_i e^{−ξ/τ_i}`, `E0 = E∞ + Σ E_i`. Storage and loss moduli
+//! `E′(ω) = E∞ + Σ E_i ω²τ_i²/(1+ω²τ_i²)`, `E″(ω) = Σ E_i ωτ_i/(1+ω²τ_i²)`.
+//! The creep compliance `J(ξ) = 1/E∞ − Σ_j B_j e^{−ξ/λ_j}` is the exact interconversion
+//! (`s Ē(s) · s J̄(s) = 1`): the retardation times λ_j are the zeros of
+//! `Ê(−1/λ) = E∞ + Σ E_i τ_i/(τ_i − λ)`, one in each interval `(τ_i, τ_{i+1})` and one above
+//! τ_max (when E∞ > 0), and `B_j = 1/(λ_j Σ_i E_i τ_i/(λ_j − τ_i)²)` (Tschoegl, *The
+//! Phenomenological Theory of Linear Viscoelastic Behavior*, Springer 1989, ch. 4).
+
+use std::fmt;
+
+/// One Maxwell branch: modulus E_i [Pa], relaxation time τ_i [s, reduced time].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PronyTerm {
+    pub modulus: f64,
+    pub tau: f64,
+}
+
+/// Why a Prony series is invalid.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PronyError(pub String);
+
+impl fmt::Display for PronyError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for PronyError {}
+
+/// A Prony series with its terms sorted by τ (see the module docs).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Prony {
+    long_term: f64,
+    terms: Vec<PronyTerm>,
+}
+
+impl Prony {
+    /// `E∞ ≥ 0`, every `E_i > 0` and `τ_i > 0`, all finite, at least one of E∞ and the terms
+    /// positive. Terms are sorted by τ; equal τ are merged.
+    pub fn new(long_term: f64, terms: &[PronyTerm]) -> Result<Self, PronyError> {
+        if !(long_term.is_finite() && long_term >= 0.0) {
+            return Err(PronyError(format!("the long-term modulus must be finite and ≥ 0, got {long_term} Pa")));
+        }
+        for (i, t) in terms.iter().enumerate() {
+            if !(t.modulus.is_finite() && t.modulus > 0.0) {
+                return Err(PronyError(format!(
+                    "term {}: the modulus must be positive and finite, got {} Pa",
+                    i + 1,
+                    t.modulus
+                )));
+            }
+            if !(t.tau.is_finite() && t.tau > 0.0) {
+                return Err(PronyError(format!(
+                    "term {}: the relaxation time must be positive and finite, got {} s",
+                    i + 1,
+                    t.tau
+                )));
+            }
+        }
+        let mut sorted = terms.to_vec();
+        sorted.sort_by(|a, b| a.tau.total_cmp(&b.tau));
+        sorted.dedup_by(|b, a| {
+            let same = a.tau == b.tau;
+            if same {
+                a.modulus += b.modulus;
+            }
+            same
+        });
+        if long_term == 0.0 && sorted.is_empty() {
+            return Err(PronyError("the modulus is zero: give a long-term modulus or Prony terms".into()));
+        }
+        Ok(Prony { long_term, terms: sorted })
+    }
+
+    /// A purely elastic material (no terms): `E(t) = E`.
+    pub fn elastic(modulus: f64) -> Result<Self, PronyError> {
+        Prony::new(modulus, &[])
+    }
+
+    /// Long-term (relaxed) modulus E∞ [Pa].
+    pub fn long_term(&self) -> f64 {
+        self.long_term
+    }
+
+    /// Instantaneous (glassy-side) modulus E0 = E∞ + Σ E_i [Pa].
+    pub fn instantaneous(&self) -> f64 {
+        self.long_term + self.terms.iter().map(|t| t.modulus).sum::<f64>()
+    }
+
+    /// The branches, sorted by τ.
+    pub fn terms(&self) -> &[PronyTerm] {
+        &self.terms
+    }
+
+    /// Relaxation modulus E(ξ) [Pa] at reduced time ξ ≥ 0 [s].
+    pub fn relaxation(&self, xi: f64) -> f64 {
+        self.long_term + self.terms.iter().map(|t| t.modulus * (-xi / t.tau).exp()).sum::<f64>()
+    }
+
+    /// Storage modulus E′(ω) [Pa], ω [rad/s].
+    pub fn storage(&self, omega: f64) -> f64 {
+        self.long_term
+            + self
+                .terms
+                .iter()
+                .map(|t| {
+                    let w = omega * t.tau;
+                    t.modulus * w * w / (1.0 + w * w)
+                })
+                .sum::<f64>()
+    }
+
+    /// Loss modulus E″(ω) [Pa], ω [rad/s].
+    pub fn loss(&self, omega: f64) -> f64 {
+        self.terms
+            .iter()
+            .map(|t| {
+                let w = omega * t.tau;
+                t.modulus * w / (1.0 + w * w)
+            })
+            .sum()
+    }
+
+    /// Loss factor tan δ = E″/E′.
+    pub fn tan_delta(&self, omega: f64) -> f64 {
+        self.loss(omega) / self.storage(omega)
+    }
+
+    /// The creep compliance as a retardation series (see the module docs).
+    pub fn creep(&self) -> Creep {
+        let n = self.terms.len();
+        let mut retardation = Vec::with_capacity(n);
+        for j in 0..n {
+            let lo = self.terms[j].tau;
+            let hi = if j + 1 < n { Some(self.terms[j + 1].tau) } else { None };
+            let Some(lambda) = self.retardation_time(lo, hi) else { continue };
+            let sum: f64 = self.terms.iter().map(|t| t.modulus * t.tau / (lambda - t.tau).powi(2)).sum();
+            retardation.push(PronyTerm { modulus: 1.0 / (lambda * sum), tau: lambda });
+        }
+        // With E∞ = 0 the material flows: J gains a steady-flow term ξ/η0, η0 = Σ E_i τ_i.
+        let fluidity = if self.long_term > 0.0 {
+            0.0
+        } else {
+            1.0 / self.terms.iter().map(|t| t.modulus * t.tau).sum::<f64>()
+        };
+        Creep { instantaneous: 1.0 / self.instantaneous(), fluidity, retardation }
+    }
+
+    /// The zero of `Ê(−1/λ) = E∞ + Σ E_i τ_i/(τ_i − λ)` in `(lo, hi)` (`hi = None`: above the
+    /// last τ, which exists only when E∞ > 0). Bisection in ln λ: the function rises
+    /// monotonically from −∞ to +∞ (or to E∞) across the interval, so it is bracketed.
+    fn retardation_time(&self, lo: f64, hi: Option<f64>) -> Option<f64> {
+        let g = |lambda: f64| -> f64 {
+            self.long_term + self.terms.iter().map(|t| t.modulus * t.tau / (t.tau - lambda)).sum::<f64>()
+        };
+        let (mut a, mut b) = match hi {
+            Some(hi) => (lo.ln(), hi.ln()),
+            None => {
+                if self.long_term <= 0.0 {
+                    return None;
+                }
+                // g(λ) → E∞ from below; above λ = τ_max (1 + E_max-ish/E∞ ...) it is positive.
+                let mut b = lo.ln() + 1.0;
+                while g(b.exp()) <= 0.0 {
+                    b += 1.0;
+                    if b > 745.0 {
+                        return None;
+                    }
+                }
+                (lo.ln(), b)
+            }
+        };
+        for _ in 0..200 {
+            let m = 0.5 * (a + b);
+            if m <= a || m >= b {
+                break;
+            }
+            if g(m.exp()) < 0.0 {
+                a = m;
+            } else {
+                b = m;
+            }
+        }
+        Some((0.5 * (a + b)).exp())
+    }
+}
+
+/// Creep compliance `J(ξ) = 1/E0 + ξ/η0 + Σ_j B_j (1 − e^{−ξ/λ_j})` [1/Pa]; the flow term
+/// ξ/η0 is present only when E∞ = 0 (then `1/Ê(s)` has a pole at s = 0), otherwise
+/// `J(∞) = 1/E∞`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Creep {
+    instantaneous: f64,
+    /// 1/η0 [1/(Pa·s)], zero for a solid (E∞ > 0).
+    fluidity: f64,
+    /// B_j [1/Pa] in `modulus`, λ_j in `tau`.
+    retardation: Vec<PronyTerm>,
+}
+
+impl Creep {
+    /// J(ξ) [1/Pa].
+    pub fn compliance(&self, xi: f64) -> f64 {
+        let delayed: f64 = self.retardation.iter().map(|r| r.modulus * (-(-xi / r.tau).exp_m1())).sum();
+        self.instantaneous + self.fluidity * xi + delayed
+    }
+
+    /// 1/η0 [1/(Pa·s)] of the steady-flow term (zero when E∞ > 0).
+    pub fn fluidity(&self) -> f64 {
+        self.fluidity
+    }
+
+    /// The retardation terms (B_j in `modulus` [1/Pa], λ_j in `tau` [s]).
+    pub fn retardation(&self) -> &[PronyTerm] {
+        &self.retardation
+    }
+
+    /// J(0) = 1/E0 [1/Pa].
+    pub fn instantaneous(&self) -> f64 {
+        self.instantaneous
+    }
+}
+
+/// The branch stresses of a Prony material under a strain history, advanced by the exact
+/// exponential update for strain linear in reduced time within a step (Taylor, Pister &
+/// Goudreau, Int. J. Numer. Meth. Eng. 2 (1970) 45; Simo & Hughes, *Computational
+/// Inelasticity*, Springer 1998, §10.3):
+/// `h_i ← e^{−x} h_i + E_i φ(x) Δε`, `x = Δξ/τ_i`, `φ(x) = −expm1(−x)/x`;
+/// `σ = E∞ ε + Σ h_i`. Unconditionally stable and exact for piecewise-linear strain.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RelaxationState {
+    strain: f64,
+    branches: Vec<f64>,
+}
+
+impl RelaxationState {
+    /// Unstrained, relaxed state.
+    pub fn new(prony: &Prony) -> Self {
+        RelaxationState { strain: 0.0, branches: vec![0.0; prony.terms().len()] }
+    }
+
+    /// Advances by reduced time `d_xi ≥ 0` while the strain changes linearly by `d_strain`.
+    /// `d_xi = 0` is an instantaneous jump (φ(0) = 1).
+    pub fn step(&mut self, prony: &Prony, d_xi: f64, d_strain: f64) {
+        for (h, t) in self.branches.iter_mut().zip(prony.terms()) {
+            let x = d_xi / t.tau;
+            *h = (-x).exp() * *h + t.modulus * phi(x) * d_strain;
+        }
+        self.strain += d_strain;
+    }
+
+    /// Current stress σ = E∞ ε + Σ h_i [Pa].
+    pub fn stress(&self, prony: &Prony) -> f64 {
+        prony.long_term() * self.strain + self.branches.iter().sum::<f64>()
+    }
+
+    /// Current strain.
+    pub fn strain(&self) -> f64 {
+        self.strain
+    }
+}
+
+/// `φ(x) = (1 − e^{−x})/x`, → 1 at x = 0, accurate for small x.
+#[inline]
+fn phi(x: f64) -> f64 {
+    if x < 1e-8 { 1.0 - 0.5 * x } else { -(-x).exp_m1() / x }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn wide() -> Prony {
+        // one term per decade, τ from 1e-2 s to 1e28 s
+        let terms: Vec<PronyTerm> = (-2..=28)
+            .map(|k| PronyTerm { modulus: 1e6 * (1.0 + 0.3 * (k as f64).sin()), tau: 10f64.powi(k) })
+            .collect();
+        Prony::new(2e6, &terms).unwrap()
+    }
+
+    #[test]
+    fn recursive_update_equals_closed_form_at_constant_strain() {
+        let p = wide();
+        let mut s = RelaxationState::new(&p);
+        let eps = 0.1;
+        s.step(&p, 0.0, eps);
+        let mut t = 0.0;
+        let mut worst: f64 = 0.0;
+        // 10 steps per decade from 1e-3 s to 1e30 s
+        for k in 0..=330 {
+            let next = 10f64.powf(-3.0 + k as f64 / 10.0);
+            s.step(&p, next - t, 0.0);
+            t = next;
+            let exact = eps * p.relaxation(t);
+            worst = worst.max((s.stress(&p) / exact - 1.0).abs());
+        }
+        assert!(worst <= 1e-12, "worst relative error {worst:e}");
+    }
+
+    #[test]
+    fn storage_and_loss_limits() {
+        let p = wide();
+        assert!((p.storage(1e-40) / p.long_term() - 1.0).abs() < 1e-12);
+        assert!((p.storage(1e40) / p.instantaneous() - 1.0).abs() < 1e-12);
+        assert!(p.loss(1e-45) < 1e-15 * p.long_term());
+        // a single term peaks in loss at ωτ = 1 with E''/E_1 = 1/2
+        let one = Prony::new(1e6, &[PronyTerm { modulus: 4e6, tau: 10.0 }]).unwrap();
+        assert!((one.loss(0.1) - 2e6).abs() < 1e-6);
+        assert!((one.tan_delta(0.1) - 2e6 / 3e6).abs() < 1e-12);
+    }
+
+    #[test]
+    fn invalid_series_are_rejected() {
+        assert!(Prony::new(-1.0, &[]).is_err());
+        assert!(Prony::new(0.0, &[]).is_err());
+        assert!(Prony::new(1.0, &[PronyTerm { modulus: -1.0, tau: 1.0 }]).is_err());
+        assert!(Prony::new(1.0, &[PronyTerm { modulus: 1.0, tau: 0.0 }]).is_err());
+        assert!(Prony::new(1.0, &[PronyTerm { modulus: 1.0, tau: f64::NAN }]).is_err());
+    }
+
+    #[test]
+    fn creep_single_term_closed_form() {
+        // standard linear solid: λ = τ E0/E∞, J(t) = 1/E∞ − (1/E∞ − 1/E0) e^{−t/λ}
+        let (einf, e1, tau) = (1e6, 4e6, 10.0);
+        let p = Prony::new(einf, &[PronyTerm { modulus: e1, tau }]).unwrap();
+        let c = p.creep();
+        let lambda = tau * (einf + e1) / einf;
+        assert_eq!(c.retardation().len(), 1);
+        assert!((c.retardation()[0].tau / lambda - 1.0).abs() < 1e-12);
+        for t in [0.0, 1.0, 50.0, 1e4] {
+            let exact = 1.0 / einf - (1.0 / einf - 1.0 / (einf + e1)) * (-t / lambda).exp();
+            assert!((c.compliance(t) / exact - 1.0).abs() < 1e-12, "t={t}");
+        }
+    }
+}

@@ -1,0 +1,290 @@
+//! Time–temperature superposition: shift factors a_T and reduced time ξ(t) = ∫ dt / a_T(T(t))
+//! over a temperature history (DESIGN §5).
+//!
+//! * WLF (Williams, Landel & Ferry, J. Am. Chem. Soc. 77 (1955) 3701):
+//!   `log10 a_T = −C1 (T − Tref)/(C2 + T − Tref)`; a_T < 1 above Tref (faster relaxation).
+//!   At `T ≤ Tref − C2` the formula diverges and then flips sign; sealsim treats the material
+//!   as frozen there (a_T = ∞: no relaxation progresses, the response is instantaneous) and
+//!   reports it, never a NaN or a sign flip.
+//! * Arrhenius: `ln a_T = (Ea/R)(1/T − 1/Tref)`.
+//!
+//! Everything is carried as the *rate* `r(T) = 1/a_T`, through its natural log, so that shift
+//! factors of hundreds of decades neither overflow nor lose precision.
+
+use crate::numerics::quadrature::gauss_legendre;
+use std::sync::OnceLock;
+
+/// Molar gas constant R [J/(mol·K)] (CODATA 2018, exact).
+pub const GAS_CONSTANT: f64 = 8.314_462_618;
+
+/// Seconds in a day and in a Julian year (365.25 d).
+pub const DAY: f64 = 86_400.0;
+pub const YEAR: f64 = 365.25 * DAY;
+
+/// A time–temperature shift function.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Shift {
+    /// No temperature dependence (a_T = 1).
+    None,
+    /// WLF with reference temperature [K], C1 (dimensionless) and C2 [K], C2 > 0.
+    Wlf { reference: f64, c1: f64, c2: f64 },
+    /// Arrhenius with reference temperature [K] and activation energy [J/mol].
+    Arrhenius { reference: f64, activation_energy: f64 },
+}
+
+impl Shift {
+    /// `ln(1/a_T)` at temperature `t` [K]: +∞-safe; `−∞` when frozen (WLF at or below
+    /// Tref − C2).
+    pub fn ln_rate(&self, t: f64) -> f64 {
+        match *self {
+            Shift::None => 0.0,
+            Shift::Wlf { reference, c1, c2 } => {
+                let dt = t - reference;
+                if t <= reference - c2 || c2 + dt <= 0.0 {
+                    f64::NEG_INFINITY
+                } else {
+                    std::f64::consts::LN_10 * c1 * dt / (c2 + dt)
+                }
+            }
+            Shift::Arrhenius { reference, activation_energy } => {
+                -(activation_energy / GAS_CONSTANT) * (1.0 / t - 1.0 / reference)
+            }
+        }
+    }
+
+    /// `log10 a_T` (+∞ when frozen).
+    pub fn log10_factor(&self, t: f64) -> f64 {
+        -self.ln_rate(t) / std::f64::consts::LN_10
+    }
+
+    /// The shift factor a_T (+∞ when frozen).
+    pub fn factor(&self, t: f64) -> f64 {
+        (-self.ln_rate(t)).exp()
+    }
+
+    /// Whether the material is frozen (glassy, no relaxation) at `t` [K].
+    pub fn is_frozen(&self, t: f64) -> bool {
+        self.ln_rate(t) == f64::NEG_INFINITY
+    }
+
+    /// The temperature at and below which a WLF material is frozen, `Tref − C2` [K].
+    pub fn frozen_below(&self) -> Option<f64> {
+        match *self {
+            Shift::Wlf { reference, c2, .. } => Some(reference - c2),
+            _ => None,
+        }
+    }
+}
+
+/// A sinusoidal temperature cycle `A sin(2π (t − t0)/P)`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Cycle {
+    /// Amplitude [K].
+    pub amplitude: f64,
+    /// Period P [s].
+    pub period: f64,
+    /// Time of the upward zero crossing t0 [s].
+    pub phase: f64,
+}
+
+impl Cycle {
+    fn at(&self, t: f64) -> f64 {
+        self.amplitude * (std::f64::consts::TAU * (t - self.phase) / self.period).sin()
+    }
+}
+
+/// Temperature against time: a piecewise-linear table (constant beyond its ends) or a constant,
+/// plus optional sinusoidal cycles (daily, yearly).
+#[derive(Debug, Clone, PartialEq)]
+pub struct TemperatureHistory {
+    /// (time [s], temperature [K]) with strictly increasing times; one point = constant.
+    points: Vec<(f64, f64)>,
+    cycles: Vec<Cycle>,
+}
+
+impl TemperatureHistory {
+    /// Constant temperature [K].
+    pub fn constant(t: f64) -> Self {
+        TemperatureHistory { points: vec![(0.0, t)], cycles: Vec::new() }
+    }
+
+    /// Piecewise-linear table of (time [s], temperature [K]); times strictly increasing, at
+    /// least one point. Validated by the caller (the scenario boundary).
+    pub fn table(points: Vec<(f64, f64)>) -> Self {
+        TemperatureHistory { points, cycles: Vec::new() }
+    }
+
+    /// Adds a sinusoidal cycle.
+    pub fn with_cycle(mut self, cycle: Cycle) -> Self {
+        self.cycles.push(cycle);
+        self
+    }
+
+    /// Whether the temperature never changes.
+    pub fn is_constant(&self) -> bool {
+        self.points.len() == 1 && self.cycles.iter().all(|c| c.amplitude == 0.0)
+    }
+
+    /// T(t) [K].
+    pub fn at(&self, t: f64) -> f64 {
+        self.base(t) + self.cycles.iter().map(|c| c.at(t)).sum::<f64>()
+    }
+
+    fn base(&self, t: f64) -> f64 {
+        let p = &self.points;
+        let k = p.partition_point(|&(ti, _)| ti <= t);
+        if k == 0 {
+            return p[0].1;
+        }
+        if k == p.len() {
+            return p[p.len() - 1].1;
+        }
+        let ((t0, y0), (t1, y1)) = (p[k - 1], p[k]);
+        y0 + (y1 - y0) * (t - t0) / (t1 - t0)
+    }
+
+    /// Lowest and highest temperature the history can reach [K] (bounds, for warnings).
+    pub fn range(&self) -> (f64, f64) {
+        let amp: f64 = self.cycles.iter().map(|c| c.amplitude.abs()).sum();
+        let (lo, hi) = self.points.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+            (lo.min(p.1), hi.max(p.1))
+        });
+        (lo - amp, hi + amp)
+    }
+
+    /// Points where T(t) has a kink or a fast change inside `(a, b)`: table knots, and each
+    /// cycle's period split into eight (so that every piece is smooth and short).
+    fn breakpoints(&self, a: f64, b: f64) -> Vec<f64> {
+        let mut v = vec![a, b];
+        v.extend(self.points.iter().map(|p| p.0).filter(|&t| t > a && t < b));
+        for c in &self.cycles {
+            if c.amplitude == 0.0 {
+                continue;
+            }
+            let h = c.period / 8.0;
+            let first = ((a - c.phase) / h).floor() + 1.0;
+            let last = ((b - c.phase) / h).ceil() - 1.0;
+            let mut k = first;
+            while k <= last {
+                v.push(c.phase + k * h);
+                k += 1.0;
+            }
+        }
+        v.sort_by(f64::total_cmp);
+        v.dedup();
+        v
+    }
+}
+
+/// Reduced time accumulated over `[a, b]`: `ξ(b) − ξ(a) = ∫_a^b dt / a_T(T(t))` [s].
+///
+/// Exact for a constant temperature; otherwise the interval is split at the history's kinks
+/// and into eighths of each cycle, and each piece is integrated by adaptive Gauss–Legendre
+/// (8 against 16 nodes, bisecting until they agree to 1e-12 relative), so a_T may change by
+/// decades within a step. Frozen stretches contribute nothing.
+pub fn reduced_time(history: &TemperatureHistory, shift: &Shift, a: f64, b: f64) -> f64 {
+    if b <= a {
+        return 0.0;
+    }
+    if history.is_constant() || matches!(shift, Shift::None) {
+        return (b - a) / shift.factor(history.at(a));
+    }
+    let rate = |t: f64| shift.ln_rate(history.at(t)).exp();
+    history.breakpoints(a, b).windows(2).map(|w| adaptive(&rate, w[0], w[1], 0)).sum()
+}
+
+fn rules() -> &'static [(Vec<f64>, Vec<f64>); 2] {
+    static RULES: OnceLock<[(Vec<f64>, Vec<f64>); 2]> = OnceLock::new();
+    RULES.get_or_init(|| [gauss_legendre(8), gauss_legendre(16)])
+}
+
+fn gl(f: &impl Fn(f64) -> f64, rule: &(Vec<f64>, Vec<f64>), a: f64, b: f64) -> f64 {
+    let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
+    rule.0.iter().zip(&rule.1).map(|(x, w)| w * f(mid + half * x)).sum::<f64>() * half
+}
+
+fn adaptive(f: &impl Fn(f64) -> f64, a: f64, b: f64, depth: u32) -> f64 {
+    let [coarse, fine] = rules();
+    let (lo, hi) = (gl(f, coarse, a, b), gl(f, fine, a, b));
+    if (hi - lo).abs() <= 1e-12 * hi.abs() || depth >= 40 {
+        return hi;
+    }
+    let m = 0.5 * (a + b);
+    adaptive(f, a, m, depth + 1) + adaptive(f, m, b, depth + 1)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const WLF: Shift = Shift::Wlf { reference: 296.15, c1: 8.86, c2: 101.6 };
+
+    #[test]
+    fn wlf_sign_reference_and_frozen_limit() {
+        assert_eq!(WLF.factor(296.15), 1.0);
+        assert!(WLF.factor(353.15) < 1.0, "faster above Tref");
+        assert!(WLF.factor(273.15) > 1.0, "slower below Tref");
+        // hand value: T − Tref = 57 K: log10 a_T = −8.86·57/158.6 = −3.18426...
+        assert!((WLF.log10_factor(353.15) + 8.86 * 57.0 / 158.6).abs() < 1e-12);
+        // frozen at and below Tref − C2 = 194.55 K: a_T = ∞, rate 0, never NaN or negative
+        let edge = WLF.frozen_below().unwrap();
+        assert!((edge - 194.55).abs() < 1e-9);
+        for t in [edge, 194.0, 150.0, 1.0] {
+            assert!(WLF.is_frozen(t));
+            assert_eq!(WLF.factor(t), f64::INFINITY);
+        }
+        assert!(!WLF.is_frozen(194.56));
+        assert!(WLF.factor(194.56) > 1e100);
+    }
+
+    #[test]
+    fn arrhenius_hand_values() {
+        let s = Shift::Arrhenius { reference: 296.15, activation_energy: 90e3 };
+        assert_eq!(s.factor(296.15), 1.0);
+        // ln a_T(353.15 K) = (90000/8.314462618)(1/353.15 − 1/296.15) = −5.899459...
+        let expect = (90e3 / 8.314_462_618) * (1.0 / 353.15 - 1.0 / 296.15);
+        assert!((s.factor(353.15).ln() - expect).abs() < 1e-12);
+        assert!((expect + 5.899_459_6).abs() < 1e-6, "{expect}");
+        // ln a_T(273.15 K) = +3.0776...
+        let cold = (90e3 / 8.314_462_618) * (1.0 / 273.15 - 1.0 / 296.15);
+        assert!((s.factor(273.15).ln() - cold).abs() < 1e-12 && (cold - 3.0776).abs() < 1e-3);
+    }
+
+    #[test]
+    fn constant_history_gives_t_over_a_t_exactly() {
+        let h = TemperatureHistory::constant(353.15);
+        let xi = reduced_time(&h, &WLF, 0.0, 3.0e7);
+        assert_eq!(xi, 3.0e7 / WLF.factor(353.15));
+    }
+
+    #[test]
+    fn linear_ramp_matches_closed_form_arrhenius_integral() {
+        // For Arrhenius on a linear ramp T = T0 + k t there is no elementary closed form, so
+        // compare a steep WLF ramp against a 1e6-point midpoint rule instead.
+        let h = TemperatureHistory::table(vec![(0.0, 200.0), (1000.0, 400.0)]);
+        let xi = reduced_time(&h, &WLF, 0.0, 1000.0);
+        let n = 1_000_000;
+        let dt = 1000.0 / n as f64;
+        let reference: f64 = (0..n).map(|i| dt / WLF.factor(h.at((i as f64 + 0.5) * dt))).sum();
+        // a_T spans 12 decades along the ramp
+        assert!((xi / reference - 1.0).abs() < 1e-9, "{xi} vs {reference}");
+    }
+
+    #[test]
+    fn daily_cycle_is_additive_over_whole_periods() {
+        let s = Shift::Arrhenius { reference: 296.15, activation_energy: 90e3 };
+        let h = TemperatureHistory::constant(320.0).with_cycle(Cycle { amplitude: 15.0, period: DAY, phase: 0.0 });
+        let one = reduced_time(&h, &s, 0.0, DAY);
+        let ten = reduced_time(&h, &s, 0.0, 10.0 * DAY);
+        assert!((ten / (10.0 * one) - 1.0).abs() < 1e-11);
+        // hotter half-days dominate: more than the mean-temperature value
+        assert!(one > DAY / s.factor(320.0));
+    }
+
+    #[test]
+    fn frozen_stretches_add_no_reduced_time() {
+        let h = TemperatureHistory::table(vec![(0.0, 150.0), (100.0, 150.0), (200.0, 296.15)]);
+        assert_eq!(reduced_time(&h, &WLF, 0.0, 100.0), 0.0);
+        assert!(reduced_time(&h, &WLF, 0.0, 200.0).is_finite());
+    }
+}
