@@ -1,8 +1,10 @@
 //! Viscoelastic rubber: Prony series in reduced time, time–temperature shift, fitting, and
 //! the material library's model types (DESIGN §5).
 
+pub mod compound;
 pub mod prony;
 pub mod shift;
 
+pub use compound::{Ageing, Material, Status};
 pub use prony::{Creep, Prony, PronyError, PronyTerm, RelaxationState};
 pub use shift::{Shift, TemperatureHistory};
