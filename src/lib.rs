@@ -43,5 +43,7 @@ pub mod material;
 pub mod numerics;
 pub mod report;
 pub mod scenario;
+pub mod seal;
+pub mod simulate;
 pub mod surface;
 pub mod units;

@@ -5,7 +5,10 @@ use sealsim::material::{Prony, PronyTerm, RelaxationState};
 /// One term per decade, τ from 1e-2 s to 1e28 s, moduli varied so no symmetry hides errors.
 fn wide() -> Prony {
     let terms: Vec<PronyTerm> = (-2..=28)
-        .map(|k| PronyTerm { modulus: 1e6 * (1.2 + (0.7 * k as f64).sin()), tau: 10f64.powi(k) })
+        .map(|k| PronyTerm {
+            modulus: 1e6 * (1.2 + (0.7 * k as f64).sin()),
+            tau: 10f64.powi(k),
+        })
         .collect();
     Prony::new(0.5e6, &terms).unwrap()
 }
@@ -37,7 +40,11 @@ fn creep_and_relaxation_convolve_to_one() {
         let mut total = p.relaxation(t) * c.instantaneous();
         for r in c.retardation() {
             let e_inf_part = p.long_term() * r.tau * (-(-t / r.tau).exp_m1());
-            let branches: f64 = p.terms().iter().map(|e| e.modulus * overlap(t, e.tau, r.tau)).sum();
+            let branches: f64 = p
+                .terms()
+                .iter()
+                .map(|e| e.modulus * overlap(t, e.tau, r.tau))
+                .sum();
             total += r.modulus / r.tau * (e_inf_part + branches);
         }
         worst = worst.max((total - 1.0).abs());
@@ -70,7 +77,20 @@ fn creep_limits() {
 #[test]
 fn liquid_like_series_creeps_with_steady_flow() {
     // E∞ = 0: J(t) → t/η0 with η0 = Σ E_i τ_i
-    let p = Prony::new(0.0, &[PronyTerm { modulus: 2e6, tau: 1.0 }, PronyTerm { modulus: 1e6, tau: 100.0 }]).unwrap();
+    let p = Prony::new(
+        0.0,
+        &[
+            PronyTerm {
+                modulus: 2e6,
+                tau: 1.0,
+            },
+            PronyTerm {
+                modulus: 1e6,
+                tau: 100.0,
+            },
+        ],
+    )
+    .unwrap();
     let c = p.creep();
     let eta0 = 2e6 * 1.0 + 1e6 * 100.0;
     let t = 1e9;
@@ -78,7 +98,13 @@ fn liquid_like_series_creeps_with_steady_flow() {
 }
 
 /// Strain history: ramp to 20 % over 100 s, hold 1e4 s, unload to 5 % over 50 s, hold.
-const HISTORY: [(f64, f64); 5] = [(0.0, 0.0), (100.0, 0.2), (1.01e4, 0.2), (1.015e4, 0.05), (1e6, 0.05)];
+const HISTORY: [(f64, f64); 5] = [
+    (0.0, 0.0),
+    (100.0, 0.2),
+    (1.01e4, 0.2),
+    (1.015e4, 0.05),
+    (1e6, 0.05),
+];
 
 /// σ(t) = ∫_0^t E(t−s) ε′(s) ds by the midpoint rule with `n` steps per segment: an independent
 /// fine-step reference (no exponential update, no closed form).
@@ -92,21 +118,31 @@ fn hereditary_midpoint(p: &Prony, t: f64, n: usize) -> f64 {
         let rate = (e1 - e0) / (s1 - s0);
         let end = s1.min(t);
         let h = (end - s0) / n as f64;
-        sigma += (0..n).map(|k| p.relaxation(t - (s0 + (k as f64 + 0.5) * h))).sum::<f64>() * h * rate;
+        sigma += (0..n)
+            .map(|k| p.relaxation(t - (s0 + (k as f64 + 0.5) * h)))
+            .sum::<f64>()
+            * h
+            * rate;
     }
     sigma
 }
 
 fn strain_at(t: f64) -> f64 {
-    let k = HISTORY.partition_point(|&(s, _)| s <= t).clamp(1, HISTORY.len() - 1);
+    let k = HISTORY
+        .partition_point(|&(s, _)| s <= t)
+        .clamp(1, HISTORY.len() - 1);
     let ((s0, e0), (s1, e1)) = (HISTORY[k - 1], HISTORY[k]);
     e0 + (e1 - e0) * ((t - s0) / (s1 - s0)).min(1.0)
 }
 
 #[test]
 fn piecewise_linear_history_matches_fine_step_reference() {
-    let terms: Vec<PronyTerm> =
-        (-1..=5).map(|k| PronyTerm { modulus: 1e6 * (1.0 + 0.5 * k as f64), tau: 10f64.powi(k) }).collect();
+    let terms: Vec<PronyTerm> = (-1..=5)
+        .map(|k| PronyTerm {
+            modulus: 1e6 * (1.0 + 0.5 * k as f64),
+            tau: 10f64.powi(k),
+        })
+        .collect();
     let p = Prony::new(2e6, &terms).unwrap();
     // output times: coarse steps that straddle the history's kinks
     let outputs = [30.0, 100.0, 500.0, 1.01e4, 1.012e4, 1.015e4, 2e4, 1e5, 1e6];
@@ -122,7 +158,10 @@ fn piecewise_linear_history_matches_fine_step_reference() {
         if outputs.contains(&t) {
             let reference = hereditary_midpoint(&p, t, 200_000);
             let got = state.stress(&p);
-            assert!((got / reference - 1.0).abs() < 1e-6, "t = {t}: {got} vs {reference}");
+            assert!(
+                (got / reference - 1.0).abs() < 1e-6,
+                "t = {t}: {got} vs {reference}"
+            );
         }
     }
 }

@@ -6,7 +6,9 @@
 //! to write the output or an internal error.
 
 pub mod figures;
+pub mod fit_prony;
 pub mod leak;
+pub mod materials;
 
 use crate::report::{self, ReportError};
 use crate::scenario::ScenarioError;
@@ -35,6 +37,10 @@ pub enum Command {
     Leak(leak::LeakArgs),
     /// Data and SVG charts of groups of scenarios over a pressure sweep (PY08 §3 figures).
     Figures(figures::FiguresArgs),
+    /// Prony series fitted to relaxation or DMA data, written as a material TOML file.
+    FitProny(fit_prony::FitPronyArgs),
+    /// The material library: list, show, response curves, Abaqus/ANSYS export.
+    Materials(materials::MaterialsArgs),
 }
 
 /// Why a command failed; decides the exit status.
@@ -108,6 +114,8 @@ pub fn run(command: Command) -> Result<(), CliError> {
     match command {
         Command::Leak(args) => leak::run(args),
         Command::Figures(args) => figures::run(args),
+        Command::FitProny(args) => fit_prony::run(args),
+        Command::Materials(args) => materials::run(args),
     }
 }
 

@@ -1,5 +1,50 @@
 //! A rubber compound: its viscoelastic modulus, shift function, thermal and ageing data, and
 //! where each number came from.
+//!
+//! # Material TOML schema (shared by library files, scenario [material] tables and fit-prony output)
+//!
+//! A material file holds one `[material]` table; a scenario's inline `[material]` table uses the same keys.
+//! Quantities: bare number = SI, or "<number> <unit>" strings (src/units.rs: parse_quantity, parse_temperature).
+//!
+//! ```toml
+//! [material]
+//! name = "NBR, 70 Shore A"                 # string, required in library files
+//! status = "illustrative"                   # "published" | "illustrative"; library files only (required there)
+//! poisson_ratio = 0.4995                    # dimensionless, [0, 0.5]
+//! # EITHER elastic:
+//! youngs_modulus = "10 MPa"                 # > 0  (static engine's key from issue 2; must keep working)
+//! # OR viscoelastic (Prony series in reduced time at the shift's reference temperature):
+//! long_term_modulus = "4 MPa"               # E∞ >= 0
+//! prony = [ { modulus = "6 MPa", tau = "1000 h" }, { modulus = 1.5e6, tau = 3600 } ]   # E_i > 0, τ_i > 0 (time)
+//! glass_transition = "-30 C"                # optional, absolute temperature (parse_temperature)
+//! thermal_expansion = "2.3e-4 1/K"          # optional, linear CTE, > 0 (Dimension::THERMAL_EXPANSION)
+//! [material.shift]                          # optional; absent = no temperature dependence
+//! kind = "wlf"                              # "wlf" | "arrhenius"
+//! reference_temperature = "23 C"            # absolute temperature
+//! c1 = 8.86                                 # wlf: dimensionless, > 0
+//! c2 = "101.6 K"                            # wlf: temperature DIFFERENCE (parse_quantity with Dimension::TEMPERATURE), > 0
+//! # activation_energy = "90 kJ/mol"         # arrhenius: > 0 (Dimension::MOLAR_ENERGY)
+//! [material.ageing]                         # optional: Arrhenius chemical stress relaxation
+//! activation_energy = "90 kJ/mol"           # > 0
+//! rate = "1e-9 1/s"                         # k_ref > 0 (Dimension::FREQUENCY)
+//! reference_temperature = "100 C"
+//! [material.provenance]                     # string per parameter; REQUIRED in library files for every
+//! poisson_ratio = "..."                     # parameter present: poisson_ratio, long_term_modulus (or youngs_modulus),
+//! long_term_modulus = "..."                 # prony, shift, glass_transition, thermal_expansion, ageing
+//! prony = "..."
+//! shift = "..."
+//! glass_transition = "..."
+//! thermal_expansion = "..."
+//! ageing = "..."
+//! ```
+//! Rules: exactly one of `youngs_modulus` or (`long_term_modulus` with optional `prony`) [prony without
+//! long_term_modulus: E∞ = 0 is allowed only if written explicitly]. A scenario's [material] may instead be
+//! `library = "ID"` (no other keys except, later, scenario-level options such as asperity_modulus).
+//! Model type: `sealsim::material::Material` (src/material/compound.rs) with `prony: Prony`
+//! (src/material/prony.rs; `Prony::new(long_term, &[PronyTerm{modulus,tau}])`, `Prony::elastic(E)`), `shift: Shift`
+//! (src/material/shift.rs: `Shift::None | Wlf{reference,c1,c2} | Arrhenius{reference,activation_energy}`),
+//! `status: Status` (Published | Illustrative | User — inline scenario materials and fit output are User),
+//! `provenance: Vec<(String, String)>`.
 
 use super::{Prony, Shift};
 
@@ -57,7 +102,11 @@ pub struct Material {
 
 impl Material {
     /// A linear-elastic, temperature-independent material (a scenario's `youngs_modulus`).
-    pub fn elastic(name: impl Into<String>, youngs_modulus: f64, poisson_ratio: f64) -> Option<Self> {
+    pub fn elastic(
+        name: impl Into<String>,
+        youngs_modulus: f64,
+        poisson_ratio: f64,
+    ) -> Option<Self> {
         Some(Material {
             name: name.into(),
             status: Status::User,
@@ -73,6 +122,9 @@ impl Material {
 
     /// The provenance of `key`, if recorded.
     pub fn provenance_of(&self, key: &str) -> Option<&str> {
-        self.provenance.iter().find(|(k, _)| k == key).map(|(_, v)| v.as_str())
+        self.provenance
+            .iter()
+            .find(|(k, _)| k == key)
+            .map(|(_, v)| v.as_str())
     }
 }

@@ -2,6 +2,8 @@
 //! the material library's model types (DESIGN §5).
 
 pub mod compound;
+pub mod curve;
+pub mod fit;
 pub mod prony;
 pub mod shift;
 

@@ -41,7 +41,9 @@ impl Prony {
     /// positive. Terms are sorted by τ; equal τ are merged.
     pub fn new(long_term: f64, terms: &[PronyTerm]) -> Result<Self, PronyError> {
         if !(long_term.is_finite() && long_term >= 0.0) {
-            return Err(PronyError(format!("the long-term modulus must be finite and ≥ 0, got {long_term} Pa")));
+            return Err(PronyError(format!(
+                "the long-term modulus must be finite and ≥ 0, got {long_term} Pa"
+            )));
         }
         for (i, t) in terms.iter().enumerate() {
             if !(t.modulus.is_finite() && t.modulus > 0.0) {
@@ -69,9 +71,14 @@ impl Prony {
             same
         });
         if long_term == 0.0 && sorted.is_empty() {
-            return Err(PronyError("the modulus is zero: give a long-term modulus or Prony terms".into()));
+            return Err(PronyError(
+                "the modulus is zero: give a long-term modulus or Prony terms".into(),
+            ));
         }
-        Ok(Prony { long_term, terms: sorted })
+        Ok(Prony {
+            long_term,
+            terms: sorted,
+        })
     }
 
     /// A purely elastic material (no terms): `E(t) = E`.
@@ -96,7 +103,12 @@ impl Prony {
 
     /// Relaxation modulus E(ξ) [Pa] at reduced time ξ ≥ 0 [s].
     pub fn relaxation(&self, xi: f64) -> f64 {
-        self.long_term + self.terms.iter().map(|t| t.modulus * (-xi / t.tau).exp()).sum::<f64>()
+        self.long_term
+            + self
+                .terms
+                .iter()
+                .map(|t| t.modulus * (-xi / t.tau).exp())
+                .sum::<f64>()
     }
 
     /// Storage modulus E′(ω) [Pa], ω [rad/s].
@@ -134,10 +146,23 @@ impl Prony {
         let mut retardation = Vec::with_capacity(n);
         for j in 0..n {
             let lo = self.terms[j].tau;
-            let hi = if j + 1 < n { Some(self.terms[j + 1].tau) } else { None };
-            let Some(lambda) = self.retardation_time(lo, hi) else { continue };
-            let sum: f64 = self.terms.iter().map(|t| t.modulus * t.tau / (lambda - t.tau).powi(2)).sum();
-            retardation.push(PronyTerm { modulus: 1.0 / (lambda * sum), tau: lambda });
+            let hi = if j + 1 < n {
+                Some(self.terms[j + 1].tau)
+            } else {
+                None
+            };
+            let Some(lambda) = self.retardation_time(lo, hi) else {
+                continue;
+            };
+            let sum: f64 = self
+                .terms
+                .iter()
+                .map(|t| t.modulus * t.tau / (lambda - t.tau).powi(2))
+                .sum();
+            retardation.push(PronyTerm {
+                modulus: 1.0 / (lambda * sum),
+                tau: lambda,
+            });
         }
         // With E∞ = 0 the material flows: J gains a steady-flow term ξ/η0, η0 = Σ E_i τ_i.
         let fluidity = if self.long_term > 0.0 {
@@ -145,7 +170,11 @@ impl Prony {
         } else {
             1.0 / self.terms.iter().map(|t| t.modulus * t.tau).sum::<f64>()
         };
-        Creep { instantaneous: 1.0 / self.instantaneous(), fluidity, retardation }
+        Creep {
+            instantaneous: 1.0 / self.instantaneous(),
+            fluidity,
+            retardation,
+        }
     }
 
     /// The zero of `Ê(−1/λ) = E∞ + Σ E_i τ_i/(τ_i − λ)` in `(lo, hi)` (`hi = None`: above the
@@ -153,7 +182,12 @@ impl Prony {
     /// monotonically from −∞ to +∞ (or to E∞) across the interval, so it is bracketed.
     fn retardation_time(&self, lo: f64, hi: Option<f64>) -> Option<f64> {
         let g = |lambda: f64| -> f64 {
-            self.long_term + self.terms.iter().map(|t| t.modulus * t.tau / (t.tau - lambda)).sum::<f64>()
+            self.long_term
+                + self
+                    .terms
+                    .iter()
+                    .map(|t| t.modulus * t.tau / (t.tau - lambda))
+                    .sum::<f64>()
         };
         let (mut a, mut b) = match hi {
             Some(hi) => (lo.ln(), hi.ln()),
@@ -202,7 +236,11 @@ pub struct Creep {
 impl Creep {
     /// J(ξ) [1/Pa].
     pub fn compliance(&self, xi: f64) -> f64 {
-        let delayed: f64 = self.retardation.iter().map(|r| r.modulus * (-(-xi / r.tau).exp_m1())).sum();
+        let delayed: f64 = self
+            .retardation
+            .iter()
+            .map(|r| r.modulus * (-(-xi / r.tau).exp_m1()))
+            .sum();
         self.instantaneous + self.fluidity * xi + delayed
     }
 
@@ -237,7 +275,10 @@ pub struct RelaxationState {
 impl RelaxationState {
     /// Unstrained, relaxed state.
     pub fn new(prony: &Prony) -> Self {
-        RelaxationState { strain: 0.0, branches: vec![0.0; prony.terms().len()] }
+        RelaxationState {
+            strain: 0.0,
+            branches: vec![0.0; prony.terms().len()],
+        }
     }
 
     /// Advances by reduced time `d_xi ≥ 0` while the strain changes linearly by `d_strain`.
@@ -264,7 +305,11 @@ impl RelaxationState {
 /// `φ(x) = (1 − e^{−x})/x`, → 1 at x = 0, accurate for small x.
 #[inline]
 fn phi(x: f64) -> f64 {
-    if x < 1e-8 { 1.0 - 0.5 * x } else { -(-x).exp_m1() / x }
+    if x < 1e-8 {
+        1.0 - 0.5 * x
+    } else {
+        -(-x).exp_m1() / x
+    }
 }
 
 #[cfg(test)]
@@ -274,7 +319,10 @@ mod tests {
     fn wide() -> Prony {
         // one term per decade, τ from 1e-2 s to 1e28 s
         let terms: Vec<PronyTerm> = (-2..=28)
-            .map(|k| PronyTerm { modulus: 1e6 * (1.0 + 0.3 * (k as f64).sin()), tau: 10f64.powi(k) })
+            .map(|k| PronyTerm {
+                modulus: 1e6 * (1.0 + 0.3 * (k as f64).sin()),
+                tau: 10f64.powi(k),
+            })
             .collect();
         Prony::new(2e6, &terms).unwrap()
     }
@@ -305,7 +353,14 @@ mod tests {
         assert!((p.storage(1e40) / p.instantaneous() - 1.0).abs() < 1e-12);
         assert!(p.loss(1e-45) < 1e-15 * p.long_term());
         // a single term peaks in loss at ωτ = 1 with E''/E_1 = 1/2
-        let one = Prony::new(1e6, &[PronyTerm { modulus: 4e6, tau: 10.0 }]).unwrap();
+        let one = Prony::new(
+            1e6,
+            &[PronyTerm {
+                modulus: 4e6,
+                tau: 10.0,
+            }],
+        )
+        .unwrap();
         assert!((one.loss(0.1) - 2e6).abs() < 1e-6);
         assert!((one.tan_delta(0.1) - 2e6 / 3e6).abs() < 1e-12);
     }
@@ -314,9 +369,36 @@ mod tests {
     fn invalid_series_are_rejected() {
         assert!(Prony::new(-1.0, &[]).is_err());
         assert!(Prony::new(0.0, &[]).is_err());
-        assert!(Prony::new(1.0, &[PronyTerm { modulus: -1.0, tau: 1.0 }]).is_err());
-        assert!(Prony::new(1.0, &[PronyTerm { modulus: 1.0, tau: 0.0 }]).is_err());
-        assert!(Prony::new(1.0, &[PronyTerm { modulus: 1.0, tau: f64::NAN }]).is_err());
+        assert!(
+            Prony::new(
+                1.0,
+                &[PronyTerm {
+                    modulus: -1.0,
+                    tau: 1.0
+                }]
+            )
+            .is_err()
+        );
+        assert!(
+            Prony::new(
+                1.0,
+                &[PronyTerm {
+                    modulus: 1.0,
+                    tau: 0.0
+                }]
+            )
+            .is_err()
+        );
+        assert!(
+            Prony::new(
+                1.0,
+                &[PronyTerm {
+                    modulus: 1.0,
+                    tau: f64::NAN
+                }]
+            )
+            .is_err()
+        );
     }
 
     #[test]

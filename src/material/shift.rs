@@ -29,7 +29,10 @@ pub enum Shift {
     /// WLF with reference temperature [K], C1 (dimensionless) and C2 [K], C2 > 0.
     Wlf { reference: f64, c1: f64, c2: f64 },
     /// Arrhenius with reference temperature [K] and activation energy [J/mol].
-    Arrhenius { reference: f64, activation_energy: f64 },
+    Arrhenius {
+        reference: f64,
+        activation_energy: f64,
+    },
 }
 
 impl Shift {
@@ -46,9 +49,10 @@ impl Shift {
                     std::f64::consts::LN_10 * c1 * dt / (c2 + dt)
                 }
             }
-            Shift::Arrhenius { reference, activation_energy } => {
-                -(activation_energy / GAS_CONSTANT) * (1.0 / t - 1.0 / reference)
-            }
+            Shift::Arrhenius {
+                reference,
+                activation_energy,
+            } => -(activation_energy / GAS_CONSTANT) * (1.0 / t - 1.0 / reference),
         }
     }
 
@@ -105,13 +109,19 @@ pub struct TemperatureHistory {
 impl TemperatureHistory {
     /// Constant temperature [K].
     pub fn constant(t: f64) -> Self {
-        TemperatureHistory { points: vec![(0.0, t)], cycles: Vec::new() }
+        TemperatureHistory {
+            points: vec![(0.0, t)],
+            cycles: Vec::new(),
+        }
     }
 
     /// Piecewise-linear table of (time [s], temperature [K]); times strictly increasing, at
     /// least one point. Validated by the caller (the scenario boundary).
     pub fn table(points: Vec<(f64, f64)>) -> Self {
-        TemperatureHistory { points, cycles: Vec::new() }
+        TemperatureHistory {
+            points,
+            cycles: Vec::new(),
+        }
     }
 
     /// Adds a sinusoidal cycle.
@@ -143,12 +153,29 @@ impl TemperatureHistory {
         y0 + (y1 - y0) * (t - t0) / (t1 - t0)
     }
 
+    /// The shortest period among the cycles with a non-zero amplitude [s].
+    pub fn shortest_period(&self) -> Option<f64> {
+        self.cycles
+            .iter()
+            .filter(|c| c.amplitude != 0.0)
+            .map(|c| c.period)
+            .min_by(f64::total_cmp)
+    }
+
+    /// The times of the table's points [s] (kinks of T(t)).
+    pub fn knots(&self) -> impl Iterator<Item = f64> + '_ {
+        self.points.iter().map(|p| p.0)
+    }
+
     /// Lowest and highest temperature the history can reach [K] (bounds, for warnings).
     pub fn range(&self) -> (f64, f64) {
         let amp: f64 = self.cycles.iter().map(|c| c.amplitude.abs()).sum();
-        let (lo, hi) = self.points.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
-            (lo.min(p.1), hi.max(p.1))
-        });
+        let (lo, hi) = self
+            .points
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+                (lo.min(p.1), hi.max(p.1))
+            });
         (lo - amp, hi + amp)
     }
 
@@ -190,7 +217,11 @@ pub fn reduced_time(history: &TemperatureHistory, shift: &Shift, a: f64, b: f64)
         return (b - a) / shift.factor(history.at(a));
     }
     let rate = |t: f64| shift.ln_rate(history.at(t)).exp();
-    history.breakpoints(a, b).windows(2).map(|w| adaptive(&rate, w[0], w[1], 0)).sum()
+    history
+        .breakpoints(a, b)
+        .windows(2)
+        .map(|w| adaptive(&rate, w[0], w[1], 0))
+        .sum()
 }
 
 fn rules() -> &'static [(Vec<f64>, Vec<f64>); 2] {
@@ -200,7 +231,12 @@ fn rules() -> &'static [(Vec<f64>, Vec<f64>); 2] {
 
 fn gl(f: &impl Fn(f64) -> f64, rule: &(Vec<f64>, Vec<f64>), a: f64, b: f64) -> f64 {
     let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
-    rule.0.iter().zip(&rule.1).map(|(x, w)| w * f(mid + half * x)).sum::<f64>() * half
+    rule.0
+        .iter()
+        .zip(&rule.1)
+        .map(|(x, w)| w * f(mid + half * x))
+        .sum::<f64>()
+        * half
 }
 
 fn adaptive(f: &impl Fn(f64) -> f64, a: f64, b: f64, depth: u32) -> f64 {
@@ -217,7 +253,11 @@ fn adaptive(f: &impl Fn(f64) -> f64, a: f64, b: f64, depth: u32) -> f64 {
 mod tests {
     use super::*;
 
-    const WLF: Shift = Shift::Wlf { reference: 296.15, c1: 8.86, c2: 101.6 };
+    const WLF: Shift = Shift::Wlf {
+        reference: 296.15,
+        c1: 8.86,
+        c2: 101.6,
+    };
 
     #[test]
     fn wlf_sign_reference_and_frozen_limit() {
@@ -239,7 +279,10 @@ mod tests {
 
     #[test]
     fn arrhenius_hand_values() {
-        let s = Shift::Arrhenius { reference: 296.15, activation_energy: 90e3 };
+        let s = Shift::Arrhenius {
+            reference: 296.15,
+            activation_energy: 90e3,
+        };
         assert_eq!(s.factor(296.15), 1.0);
         // ln a_T(353.15 K) = (90000/8.314462618)(1/353.15 − 1/296.15) = −5.899459...
         let expect = (90e3 / 8.314_462_618) * (1.0 / 353.15 - 1.0 / 296.15);
@@ -265,15 +308,24 @@ mod tests {
         let xi = reduced_time(&h, &WLF, 0.0, 1000.0);
         let n = 1_000_000;
         let dt = 1000.0 / n as f64;
-        let reference: f64 = (0..n).map(|i| dt / WLF.factor(h.at((i as f64 + 0.5) * dt))).sum();
+        let reference: f64 = (0..n)
+            .map(|i| dt / WLF.factor(h.at((i as f64 + 0.5) * dt)))
+            .sum();
         // a_T spans 12 decades along the ramp
         assert!((xi / reference - 1.0).abs() < 1e-9, "{xi} vs {reference}");
     }
 
     #[test]
     fn daily_cycle_is_additive_over_whole_periods() {
-        let s = Shift::Arrhenius { reference: 296.15, activation_energy: 90e3 };
-        let h = TemperatureHistory::constant(320.0).with_cycle(Cycle { amplitude: 15.0, period: DAY, phase: 0.0 });
+        let s = Shift::Arrhenius {
+            reference: 296.15,
+            activation_energy: 90e3,
+        };
+        let h = TemperatureHistory::constant(320.0).with_cycle(Cycle {
+            amplitude: 15.0,
+            period: DAY,
+            phase: 0.0,
+        });
         let one = reduced_time(&h, &s, 0.0, DAY);
         let ten = reduced_time(&h, &s, 0.0, 10.0 * DAY);
         assert!((ten / (10.0 * one) - 1.0).abs() < 1e-11);

@@ -1,6 +1,7 @@
 //! Numerical building blocks, each documented with its method and reference.
 
 pub mod interp;
+pub mod nnls;
 pub mod quadrature;
 pub mod special;
 

@@ -14,13 +14,18 @@
 
 mod error;
 pub mod figure_set;
+pub mod fit_data;
+pub mod library;
+mod material;
 mod psd;
 mod raw;
 mod validate;
 
 pub use error::ScenarioError;
+pub use material::{PARAMETERS, load_material_file, material_from_str};
 
 use crate::leak::StaticProblem;
+use crate::material::Material;
 use error::Source;
 use raw::RawScenario;
 use std::path::{Path, PathBuf};
@@ -32,7 +37,10 @@ pub struct Scenario {
     pub name: String,
     /// The file the scenario was read from (as given).
     pub path: PathBuf,
-    /// The static leak problem of the seal.
+    /// The rubber (`[material]`: inline, or a library compound).
+    pub material: Material,
+    /// The static leak problem of the seal; its elastic constants are the material's relaxed
+    /// modulus E∞ and ν.
     pub problem: StaticProblem,
 }
 
@@ -49,10 +57,10 @@ impl Scenario {
         let source = Source { path, text };
         let raw: RawScenario = source.deserialize()?;
         let validated = source.scenario(&raw)?;
-        let name = validated.name.unwrap_or_else(|| source.file_stem());
         Ok(Scenario {
-            name,
+            name: validated.name,
             path: path.to_path_buf(),
+            material: validated.material,
             problem: validated.problem,
         })
     }

@@ -5,6 +5,7 @@
 //! misspelt key is an error with the key named, never silently ignored.
 
 use serde::de::{self, Deserialize, Deserializer, Visitor};
+use std::collections::BTreeMap;
 use std::fmt;
 use toml::Spanned;
 
@@ -67,12 +68,63 @@ impl RawScenario {
     pub const TABLES: &[&str] = &["material", "surface", "fluid", "seal", "model"];
 }
 
-/// `[material]`: linear-elastic rubber.
+/// `[material]`: the rubber compound (schema in [`crate::material::compound`]): a library
+/// reference (`library = "ID"`), an elastic rubber (`youngs_modulus`) or a viscoelastic one
+/// (`long_term_modulus` + `prony`). Which keys are required or allowed together is checked in
+/// validation (`super::material`), where the message can explain the choices. The same table
+/// is the whole content of a library file (`materials/ID.toml`).
 #[derive(Debug, serde::Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct RawMaterial {
-    pub youngs_modulus: Quantity,
-    pub poisson_ratio: Quantity,
+    pub library: Option<Spanned<String>>,
+    pub name: Option<Spanned<String>>,
+    pub status: Option<Spanned<String>>,
+    pub poisson_ratio: Option<Quantity>,
+    pub youngs_modulus: Option<Quantity>,
+    pub long_term_modulus: Option<Quantity>,
+    pub prony: Option<Spanned<Vec<Spanned<RawPronyTerm>>>>,
+    pub glass_transition: Option<Quantity>,
+    pub thermal_expansion: Option<Quantity>,
+    pub shift: Option<Spanned<RawShift>>,
+    pub ageing: Option<Spanned<RawAgeing>>,
+    /// Parameter key → where its value came from.
+    pub provenance: Option<Spanned<BTreeMap<String, Spanned<String>>>>,
+}
+
+/// One `prony` entry: `{ modulus = "6 MPa", tau = "1000 h" }`.
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawPronyTerm {
+    pub modulus: Quantity,
+    pub tau: Quantity,
+}
+
+/// `[material.shift]`: WLF (`c1`, `c2`) or Arrhenius (`activation_energy`); which keys belong to
+/// which `kind` is checked in validation.
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawShift {
+    pub kind: Spanned<String>,
+    pub reference_temperature: Option<Quantity>,
+    pub c1: Option<Quantity>,
+    pub c2: Option<Quantity>,
+    pub activation_energy: Option<Quantity>,
+}
+
+/// `[material.ageing]`: Arrhenius chemical stress relaxation.
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawAgeing {
+    pub activation_energy: Quantity,
+    pub rate: Quantity,
+    pub reference_temperature: Quantity,
+}
+
+/// A material file (`materials/ID.toml`): one `[material]` table.
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawMaterialFile {
+    pub material: Spanned<RawMaterial>,
 }
 
 /// `[surface]`: either the self-affine parameters or `psd_file` (checked in validation, so

@@ -5,12 +5,11 @@
 //! number.
 
 use super::error::{ScenarioError, Source};
-use super::raw::{
-    Quantity, RawFluid, RawMaterial, RawModel, RawQuantity, RawScenario, RawSeal, RawSurface,
-};
+use super::raw::{Quantity, RawFluid, RawModel, RawQuantity, RawScenario, RawSeal, RawSurface};
 use super::{psd, show};
-use crate::contact::{ContactSettings, Elastic};
+use crate::contact::ContactSettings;
 use crate::leak::{FlatSeal, Fluid, StaticProblem};
+use crate::material::Material;
 use crate::surface::Spectrum;
 use crate::units::{self, Dimension};
 use std::path::PathBuf;
@@ -88,18 +87,6 @@ pub(super) const fn field(
     }
 }
 
-const YOUNGS_MODULUS: Field = field(
-    "material.youngs_modulus",
-    Dimension::PRESSURE,
-    "Pa",
-    Bound::Positive,
-);
-const POISSON_RATIO: Field = field(
-    "material.poisson_ratio",
-    Dimension::DIMENSIONLESS,
-    "",
-    Bound::Closed(0.0, 0.5),
-);
 const RMS_ROUGHNESS: Field = field(
     "surface.rms_roughness",
     Dimension::LENGTH,
@@ -164,14 +151,21 @@ const DEFAULT_SHAPE_FACTOR: f64 = 1.0;
 
 /// The validated contents of a scenario file (before it is wrapped with its name and path).
 pub(super) struct Validated {
-    pub name: Option<String>,
+    /// The `name` key, or the file stem.
+    pub name: String,
+    pub material: Material,
     pub problem: StaticProblem,
 }
 
 impl Source<'_> {
     /// Checks the whole file.
     pub fn scenario(&self, raw: &RawScenario) -> Result<Validated, ScenarioError> {
-        let material = self.material(raw.material.get_ref())?;
+        let name = raw
+            .name
+            .as_ref()
+            .map_or_else(|| self.file_stem(), |n| n.get_ref().clone());
+        // An inline material without a name is called after the scenario.
+        let (material, elastic) = self.scenario_material(&raw.material, &name)?;
         let spectrum = self.surface(&raw.surface)?;
         let fluid = self.fluid(raw.fluid.get_ref())?;
         let seal = self.seal(raw.seal.get_ref())?;
@@ -180,9 +174,10 @@ impl Source<'_> {
             None => (ContactSettings::default(), DEFAULT_SHAPE_FACTOR),
         };
         Ok(Validated {
-            name: raw.name.as_ref().map(|n| n.get_ref().clone()),
+            name,
+            material,
             problem: StaticProblem {
-                material,
+                material: elastic,
                 spectrum,
                 fluid,
                 seal,
@@ -213,13 +208,6 @@ impl Source<'_> {
         field: &Field,
     ) -> Result<Option<f64>, ScenarioError> {
         raw.map(|q| self.quantity(q, field)).transpose()
-    }
-
-    fn material(&self, raw: &RawMaterial) -> Result<Elastic, ScenarioError> {
-        Ok(Elastic {
-            youngs_modulus: self.quantity(&raw.youngs_modulus, &YOUNGS_MODULUS)?,
-            poisson_ratio: self.quantity(&raw.poisson_ratio, &POISSON_RATIO)?,
-        })
     }
 
     fn fluid(&self, raw: &RawFluid) -> Result<Fluid, ScenarioError> {

@@ -1,0 +1,299 @@
+//! `sealsim materials`: the material library — list the compounds, show one with the
+//! provenance of every number, compute its response curve at a temperature, export its Prony
+//! series for Abaqus or ANSYS.
+//!
+//! A compound is named by its library id (`nbr-70`) or, with `--file PATH`, read from a
+//! material file (see [`crate::scenario::material_from_str`]: a library-format file, or a user
+//! material without `status` such as the output of `sealsim fit-prony`).
+
+use super::{CliError, write_output};
+use crate::material::curve::{Curve, response_curve};
+use crate::material::{Material, Shift};
+use crate::report::materials::{abaqus, ansys, curve_table, describe, human, library_table};
+use crate::report::plot::{LogLogChart, Series};
+use crate::scenario::{library, load_material_file};
+use crate::units;
+use clap::{Args, Subcommand, ValueEnum};
+use std::path::PathBuf;
+
+/// Default `--points-per-decade` of `curve`.
+const DEFAULT_POINTS_PER_DECADE: u32 = 10;
+/// Upper limit of `--points-per-decade`.
+const MAX_POINTS_PER_DECADE: i64 = 1000;
+
+/// Arguments of `sealsim materials`.
+#[derive(Debug, Clone, Args)]
+pub struct MaterialsArgs {
+    #[command(subcommand)]
+    pub command: MaterialsCommand,
+}
+
+/// The subcommands of `sealsim materials`.
+#[derive(Debug, Clone, Subcommand)]
+pub enum MaterialsCommand {
+    /// Table of the library's compounds: id, name, status, E0, E∞, T_g.
+    List,
+    /// Every parameter of a compound with its units and where it comes from.
+    Show(ShowArgs),
+    /// Relaxation modulus, creep compliance and dynamic moduli on a log time grid, as CSV.
+    Curve(CurveArgs),
+    /// The Prony series as Abaqus or ANSYS input.
+    Export(ExportArgs),
+}
+
+/// Which compound: a library id, or a material file.
+#[derive(Debug, Clone, Args)]
+pub struct MaterialRef {
+    /// Library id (see `sealsim materials list`).
+    #[arg(value_name = "ID", required_unless_present = "file")]
+    pub id: Option<String>,
+
+    /// Read the compound from a material file instead (the library's format; without
+    /// `status` it is a user material, e.g. the output of `sealsim fit-prony`).
+    #[arg(long, value_name = "PATH", conflicts_with = "id")]
+    pub file: Option<PathBuf>,
+}
+
+/// Arguments of `sealsim materials show`.
+#[derive(Debug, Clone, Args)]
+pub struct ShowArgs {
+    #[command(flatten)]
+    pub material: MaterialRef,
+}
+
+/// Arguments of `sealsim materials curve`.
+#[derive(Debug, Clone, Args)]
+#[command(
+    after_help = "One row per grid point (CSV): time_s, reduced_time_s = t/a_T, \
+    relaxation_modulus_Pa E(ξ), creep_compliance_per_Pa J(ξ), and at ω = 1/t of the same row: \
+    angular_frequency_rad_per_s, storage_modulus_Pa E′(ω a_T), loss_modulus_Pa E″(ω a_T), \
+    tan_delta.\nThe grid is log-uniform in reduced time over the Prony relaxation times widened \
+    by two decades on each side; at --temperature T the times are t = a_T ξ, so the curve moves \
+    along the time axis by exactly a_T.\nTemperatures take units (\"80C\", \"353.15 K\", \"176F\"); \
+    a bare number is kelvin."
+)]
+pub struct CurveArgs {
+    #[command(flatten)]
+    pub material: MaterialRef,
+
+    /// Temperature of the curve [default: the shift's reference temperature].
+    #[arg(long, value_name = "T", value_parser = parse_temperature, allow_hyphen_values = true)]
+    pub temperature: Option<f64>,
+
+    /// Grid points per decade of time.
+    #[arg(long, value_name = "N", default_value_t = DEFAULT_POINTS_PER_DECADE,
+          value_parser = clap::value_parser!(u32).range(1..=MAX_POINTS_PER_DECADE))]
+    pub points_per_decade: u32,
+
+    /// Write the CSV to FILE (atomically) instead of standard output.
+    #[arg(short, long, value_name = "FILE")]
+    pub output: Option<PathBuf>,
+
+    /// Also write an SVG chart of E(t), 1/J(t), E′ and E″ at ω = 1/t.
+    #[arg(long, value_name = "FILE.svg")]
+    pub plot: Option<PathBuf>,
+}
+
+/// Arguments of `sealsim materials export`.
+#[derive(Debug, Clone, Args)]
+pub struct ExportArgs {
+    #[command(flatten)]
+    pub material: MaterialRef,
+
+    /// Input format of the finite-element solver.
+    #[arg(long, value_enum)]
+    pub format: ExportFormat,
+
+    /// Write to FILE (atomically) instead of standard output.
+    #[arg(short, long, value_name = "FILE")]
+    pub output: Option<PathBuf>,
+}
+
+/// `--format` values of `export`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ExportFormat {
+    /// Abaqus keywords: *ELASTIC, MODULI=INSTANTANEOUS; *VISCOELASTIC, TIME=PRONY; *TRS.
+    Abaqus,
+    /// ANSYS Mechanical APDL commands: MP; TB,PRONY; TB,SHIFT.
+    Ansys,
+}
+
+/// An absolute temperature: `"80C"`, `"353.15 K"`, or a bare number in kelvin; above 0 K.
+fn parse_temperature(text: &str) -> Result<f64, String> {
+    let text = text.trim();
+    let kelvin = match text.parse::<f64>() {
+        Ok(v) => v,
+        Err(_) => units::parse_temperature(text).map_err(|e| e.to_string())?,
+    };
+    if kelvin.is_finite() && kelvin > 0.0 {
+        Ok(kelvin)
+    } else {
+        Err(format!(
+            "a temperature must be above absolute zero, got {kelvin} K"
+        ))
+    }
+}
+
+/// Runs `sealsim materials`.
+pub fn run(args: MaterialsArgs) -> Result<(), CliError> {
+    match args.command {
+        MaterialsCommand::List => list(),
+        MaterialsCommand::Show(args) => {
+            let (id, material) = resolve(&args.material)?;
+            write_output(None, describe(&id, &material).as_bytes())
+        }
+        MaterialsCommand::Curve(args) => curve(args),
+        MaterialsCommand::Export(args) => export(args),
+    }
+}
+
+/// The compound named on the command line, with the id used in outputs (the file stem for
+/// `--file`).
+fn resolve(reference: &MaterialRef) -> Result<(String, Material), CliError> {
+    match (&reference.file, &reference.id) {
+        (Some(path), _) => {
+            let material = load_material_file(path)?;
+            let id = path.file_stem().map_or_else(
+                || "material".to_owned(),
+                |s| s.to_string_lossy().into_owned(),
+            );
+            Ok((id, material))
+        }
+        (None, Some(id)) => {
+            let entry = library::get(id).map_err(|e| CliError::Input(e.to_string()))?;
+            Ok((entry.id.to_owned(), entry.load()?))
+        }
+        (None, None) => Err(CliError::Input(
+            "name a library material (ID) or give --file PATH".into(),
+        )),
+    }
+}
+
+fn list() -> Result<(), CliError> {
+    let mut loaded = Vec::new();
+    for id in library::ids() {
+        let entry = library::get(id).map_err(|e| CliError::Internal(e.to_string()))?;
+        loaded.push((id, entry.load()?));
+    }
+    let rows: Vec<(&str, &Material)> = loaded.iter().map(|(id, m)| (*id, m)).collect();
+    write_output(None, library_table(&rows).as_bytes())
+}
+
+fn curve(args: CurveArgs) -> Result<(), CliError> {
+    let (id, material) = resolve(&args.material)?;
+    if let (Some(t), Shift::None) = (args.temperature, material.shift) {
+        eprintln!(
+            "warning: {id} has no time–temperature shift; the curve is the same at {} °C",
+            human(t - 273.15, 6)
+        );
+    }
+    let curve = response_curve(&material, args.temperature, args.points_per_decade)
+        .map_err(|e| CliError::Input(format!("{id}: {e}")))?;
+    if let (true, Some(t)) = (curve.frozen, args.temperature) {
+        let limit = material
+            .shift
+            .frozen_below()
+            .map_or_else(String::new, |limit| {
+                format!(
+                    " (WLF: at or below T_ref − C2 = {} °C)",
+                    human(limit - 273.15, 6)
+                )
+            });
+        eprintln!(
+            "warning: {id} is frozen at {} °C{limit}: no relaxation at any finite time; the \
+             curve is the instantaneous response (E = E0, E″ = 0)",
+            human(t - 273.15, 6)
+        );
+    }
+    if curve.reference_grid && !curve.frozen {
+        let state = if curve.log10_shift > 0.0 {
+            "effectively frozen (the instantaneous response)"
+        } else {
+            "effectively fully relaxed"
+        };
+        eprintln!(
+            "warning: {id}: the shift factor a_T = 10^{} moves the relaxation outside the times \
+             a double can hold; the material is {state}, given on the reference time grid with \
+             ξ = t/a_T",
+            human(curve.log10_shift, 6)
+        );
+    }
+    let csv = curve_table(&curve)?;
+    let svg = match &args.plot {
+        Some(_) => Some(
+            chart(&id, &material, &curve)
+                .to_svg()
+                .map_err(|e| CliError::Internal(e.to_string()))?,
+        ),
+        None => None,
+    };
+    // everything is computed before the first file is written
+    if let (Some(path), Some(svg)) = (&args.plot, &svg) {
+        write_output(Some(path), svg.as_bytes())?;
+    }
+    write_output(args.output.as_deref(), csv.as_bytes())
+}
+
+/// The SVG chart of a curve: E(t), 1/J(t), E′ and E″ at ω = 1/t against t.
+fn chart(id: &str, material: &Material, curve: &Curve) -> LogLogChart {
+    let series = |label: &str, value: fn(&crate::material::curve::CurvePoint) -> f64| Series {
+        label: label.to_owned(),
+        points: curve.points.iter().map(|p| (p.time, value(p))).collect(),
+    };
+    let at = match curve.temperature {
+        Some(t) => format!("{} °C", human(t - 273.15, 6)),
+        None => match material.shift {
+            Shift::Wlf { reference, .. } | Shift::Arrhenius { reference, .. } => {
+                format!("{} °C (reference)", human(reference - 273.15, 6))
+            }
+            Shift::None => "any temperature".to_owned(),
+        },
+    };
+    LogLogChart {
+        title: format!("{id} at {at}"),
+        x_label: "time t [s]  (E′, E″ at ω = 1/t)".to_owned(),
+        y_label: "modulus [Pa]".to_owned(),
+        series: vec![
+            series("relaxation modulus E(t)", |p| p.relaxation),
+            series("1/J(t), inverse creep compliance", |p| 1.0 / p.compliance),
+            series("storage modulus E′(ω)", |p| p.storage),
+            series("loss modulus E″(ω)", |p| p.loss),
+        ],
+    }
+}
+
+fn export(args: ExportArgs) -> Result<(), CliError> {
+    let (id, material) = resolve(&args.material)?;
+    let text = match args.format {
+        ExportFormat::Abaqus => abaqus(&id, &material),
+        ExportFormat::Ansys => ansys(&id, &material),
+    };
+    if material.prony.long_term() == 0.0 {
+        eprintln!(
+            "warning: {id} has no relaxed modulus (E∞ = 0): Σ g_i = 1, which solvers reject for \
+             a solid"
+        );
+    }
+    if let Shift::Arrhenius { .. } = material.shift {
+        eprintln!(
+            "warning: {id} has an Arrhenius shift; no shift card is written, its constants are \
+             in a comment of the export"
+        );
+    }
+    write_output(args.output.as_deref(), text.as_bytes())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn temperatures_take_units_or_kelvin() {
+        assert_eq!(parse_temperature("80C"), Ok(353.15));
+        assert_eq!(parse_temperature(" 300 "), Ok(300.0));
+        assert_eq!(parse_temperature("300 K"), Ok(300.0));
+        assert!(parse_temperature("-300 C").is_err());
+        assert!(parse_temperature("0").is_err());
+        assert!(parse_temperature("10 m").is_err());
+    }
+}

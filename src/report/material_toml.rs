@@ -1,0 +1,274 @@
+//! A [`Material`] written as a material TOML file (the schema in
+//! `src/material/compound.rs`), e.g. the output of `sealsim fit-prony`.
+//!
+//! Quantities are written as strings in SI units with the shortest scientific form that
+//! round-trips to the same `f64` (`"4e6 Pa"`, `"3.6e3 s"`, `"2.9615e2 K"`), so that reading
+//! the file back gives exactly the same numbers; dimensionless numbers (Poisson's ratio, C1)
+//! are bare TOML floats. Optional parts (status, shift, glass transition, thermal expansion,
+//! ageing, provenance) are written only when present; `status` is omitted for
+//! [`Status::User`], which is what a file without it means.
+
+use crate::material::{Material, Shift, Status};
+use std::fmt::Write;
+
+/// The material TOML text of `m`: one `[material]` table with its sub-tables.
+///
+/// A series without terms is written as the elastic `youngs_modulus`, unless the provenance
+/// names `long_term_modulus` (then `long_term_modulus`, so that the provenance keys match the
+/// keys present).
+pub fn material_toml(m: &Material) -> String {
+    let mut out = String::from("[material]\n");
+    line(&mut out, "name", &string(&m.name));
+    if m.status != Status::User {
+        line(&mut out, "status", &string(m.status.as_str()));
+    }
+    line(&mut out, "poisson_ratio", &float(m.poisson_ratio));
+    let terms = m.prony.terms();
+    if terms.is_empty() && m.provenance_of("long_term_modulus").is_none() {
+        line(
+            &mut out,
+            "youngs_modulus",
+            &quantity(m.prony.long_term(), "Pa"),
+        );
+    } else {
+        line(
+            &mut out,
+            "long_term_modulus",
+            &quantity(m.prony.long_term(), "Pa"),
+        );
+    }
+    if !terms.is_empty() {
+        out.push_str("prony = [\n");
+        for t in terms {
+            let _ = writeln!(
+                out,
+                "  {{ modulus = {}, tau = {} }},",
+                quantity(t.modulus, "Pa"),
+                quantity(t.tau, "s")
+            );
+        }
+        out.push_str("]\n");
+    }
+    if let Some(tg) = m.glass_transition {
+        line(&mut out, "glass_transition", &quantity(tg, "K"));
+    }
+    if let Some(alpha) = m.thermal_expansion {
+        line(&mut out, "thermal_expansion", &quantity(alpha, "1/K"));
+    }
+    match m.shift {
+        Shift::None => {}
+        Shift::Wlf { reference, c1, c2 } => {
+            out.push_str("\n[material.shift]\n");
+            line(&mut out, "kind", &string("wlf"));
+            line(&mut out, "reference_temperature", &quantity(reference, "K"));
+            line(&mut out, "c1", &float(c1));
+            line(&mut out, "c2", &quantity(c2, "K"));
+        }
+        Shift::Arrhenius {
+            reference,
+            activation_energy,
+        } => {
+            out.push_str("\n[material.shift]\n");
+            line(&mut out, "kind", &string("arrhenius"));
+            line(&mut out, "reference_temperature", &quantity(reference, "K"));
+            line(
+                &mut out,
+                "activation_energy",
+                &quantity(activation_energy, "J/mol"),
+            );
+        }
+    }
+    if let Some(a) = m.ageing {
+        out.push_str("\n[material.ageing]\n");
+        line(
+            &mut out,
+            "activation_energy",
+            &quantity(a.activation_energy, "J/mol"),
+        );
+        line(&mut out, "rate", &quantity(a.rate, "1/s"));
+        line(
+            &mut out,
+            "reference_temperature",
+            &quantity(a.reference_temperature, "K"),
+        );
+    }
+    if !m.provenance.is_empty() {
+        out.push_str("\n[material.provenance]\n");
+        for (key, text) in &m.provenance {
+            line(&mut out, &bare_or_quoted_key(key), &string(text));
+        }
+    }
+    out
+}
+
+fn line(out: &mut String, key: &str, value: &str) {
+    let _ = writeln!(out, "{key} = {value}");
+}
+
+/// `"<shortest round-trip scientific> <unit>"`, e.g. `"4e6 Pa"`.
+fn quantity(value: f64, unit: &str) -> String {
+    string(&format!("{value:e} {unit}"))
+}
+
+/// A TOML float: Rust's shortest round-trip form always has a `.` or an exponent (`0.5`,
+/// `1.0`, `1e-7`), so it never reads back as an integer.
+fn float(value: f64) -> String {
+    format!("{value:?}")
+}
+
+/// A TOML basic string with `"`, `\` and control characters escaped.
+fn string(text: &str) -> String {
+    let mut out = String::with_capacity(text.len() + 2);
+    out.push('"');
+    for c in text.chars() {
+        match c {
+            '"' => out.push_str("\\\""),
+            '\\' => out.push_str("\\\\"),
+            '\n' => out.push_str("\\n"),
+            '\t' => out.push_str("\\t"),
+            '\r' => out.push_str("\\r"),
+            c if c.is_control() => {
+                let _ = write!(out, "\\u{:04X}", c as u32);
+            }
+            c => out.push(c),
+        }
+    }
+    out.push('"');
+    out
+}
+
+/// A key as a TOML bare key when it is one (`A-Za-z0-9_-`), else quoted.
+fn bare_or_quoted_key(key: &str) -> String {
+    let bare = !key.is_empty()
+        && key
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-');
+    if bare { key.to_string() } else { string(key) }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::material::{Ageing, Prony, PronyTerm};
+
+    fn fitted() -> Material {
+        let terms = [
+            PronyTerm {
+                modulus: 6e6,
+                tau: 3.6e6,
+            },
+            PronyTerm {
+                modulus: 1.5e6,
+                tau: 3600.0,
+            },
+        ];
+        Material {
+            name: "NBR \"70\"\\test".into(),
+            status: Status::User,
+            prony: Prony::new(4e6, &terms).unwrap(),
+            poisson_ratio: 0.5,
+            shift: Shift::None,
+            glass_transition: None,
+            thermal_expansion: None,
+            ageing: None,
+            provenance: vec![
+                ("poisson_ratio".into(), "assumed".into()),
+                ("prony".into(), "fitted\nby sealsim".into()),
+            ],
+        }
+    }
+
+    #[test]
+    fn user_material_text() {
+        let text = material_toml(&fitted());
+        let expected = "[material]\n\
+            name = \"NBR \\\"70\\\"\\\\test\"\n\
+            poisson_ratio = 0.5\n\
+            long_term_modulus = \"4e6 Pa\"\n\
+            prony = [\n  \
+              { modulus = \"1.5e6 Pa\", tau = \"3.6e3 s\" },\n  \
+              { modulus = \"6e6 Pa\", tau = \"3.6e6 s\" },\n\
+            ]\n\
+            \n[material.provenance]\n\
+            poisson_ratio = \"assumed\"\n\
+            prony = \"fitted\\nby sealsim\"\n";
+        assert_eq!(text, expected);
+        // valid TOML, with the values as written
+        let value: toml::Table = toml::from_str(&text).unwrap();
+        let material = value["material"].as_table().unwrap();
+        assert_eq!(material["name"].as_str(), Some("NBR \"70\"\\test"));
+        assert_eq!(material["prony"].as_array().unwrap().len(), 2);
+        assert_eq!(
+            material["provenance"]["prony"].as_str(),
+            Some("fitted\nby sealsim")
+        );
+    }
+
+    #[test]
+    fn every_optional_part_is_written() {
+        let mut m = fitted();
+        m.status = Status::Illustrative;
+        m.shift = Shift::Wlf {
+            reference: 296.15,
+            c1: 8.86,
+            c2: 101.6,
+        };
+        m.glass_transition = Some(243.15);
+        m.thermal_expansion = Some(2.3e-4);
+        m.ageing = Some(Ageing {
+            activation_energy: 9e4,
+            rate: 1e-9,
+            reference_temperature: 373.15,
+        });
+        m.provenance.push(("odd key".into(), "x".into()));
+        let text = material_toml(&m);
+        for needle in [
+            "status = \"illustrative\"\n",
+            "glass_transition = \"2.4315e2 K\"\n",
+            "thermal_expansion = \"2.3e-4 1/K\"\n",
+            "[material.shift]\nkind = \"wlf\"\nreference_temperature = \"2.9615e2 K\"\nc1 = 8.86\nc2 = \"1.016e2 K\"\n",
+            "[material.ageing]\nactivation_energy = \"9e4 J/mol\"\nrate = \"1e-9 1/s\"\nreference_temperature = \"3.7315e2 K\"\n",
+            "\"odd key\" = \"x\"\n",
+        ] {
+            assert!(text.contains(needle), "missing {needle:?} in\n{text}");
+        }
+        toml::from_str::<toml::Table>(&text).unwrap();
+        m.shift = Shift::Arrhenius {
+            reference: 296.15,
+            activation_energy: 9e4,
+        };
+        let text = material_toml(&m);
+        assert!(text.contains("kind = \"arrhenius\"\nreference_temperature = \"2.9615e2 K\"\nactivation_energy = \"9e4 J/mol\"\n"));
+    }
+
+    #[test]
+    fn elastic_materials_use_youngs_modulus() {
+        let m = Material::elastic("rubber", 1e7, 0.5).unwrap();
+        let text = material_toml(&m);
+        assert!(
+            text.contains("youngs_modulus = \"1e7 Pa\"\n") && !text.contains("prony"),
+            "{text}"
+        );
+        let mut m = m;
+        m.provenance
+            .push(("long_term_modulus".into(), "measured".into()));
+        assert!(material_toml(&m).contains("long_term_modulus = \"1e7 Pa\"\n"));
+    }
+
+    #[test]
+    fn quantities_round_trip_through_the_unit_parser() {
+        use crate::units::{Dimension, parse_quantity, parse_temperature};
+        for v in [0.1 + 0.2, 1.0 / 3.0, 6.02214076e23, 4.9e-324, 2.5e-11] {
+            let text = quantity(v, "Pa");
+            let inner = text.trim_matches('"');
+            assert_eq!(parse_quantity(inner, Dimension::PRESSURE), Ok(v));
+        }
+        let t = quantity(296.15, "K");
+        assert_eq!(parse_temperature(t.trim_matches('"')), Ok(296.15));
+        let e = quantity(90_123.456, "J/mol");
+        assert_eq!(
+            parse_quantity(e.trim_matches('"'), Dimension::MOLAR_ENERGY),
+            Ok(90_123.456)
+        );
+    }
+}

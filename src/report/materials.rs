@@ -1,0 +1,542 @@
+//! Outputs of `sealsim materials`: the library table, a compound's full description with
+//! provenance, its response curve as CSV, and its Prony series as Abaqus or ANSYS input.
+//!
+//! Units are printed only here; the model hands over SI values (Pa, s, K).
+
+use super::ReportError;
+use crate::material::curve::{Curve, CurvePoint};
+use crate::material::{Material, Shift, Status};
+
+/// Columns of the curve CSV, in order: one row per grid point, the dynamic moduli at the
+/// angular frequency ω = 1/t of the same row.
+pub const CURVE_COLUMNS: [&str; 8] = [
+    "time_s",
+    "reduced_time_s",
+    "relaxation_modulus_Pa",
+    "creep_compliance_per_Pa",
+    "angular_frequency_rad_per_s",
+    "storage_modulus_Pa",
+    "loss_modulus_Pa",
+    "tan_delta",
+];
+
+/// 0 °C in kelvin.
+const ZERO_CELSIUS: f64 = 273.15;
+
+/// The curve as CSV (header plus one row per point), numbers in shortest round-trip
+/// scientific notation.
+pub fn curve_table(curve: &Curve) -> Result<String, ReportError> {
+    let mut writer = ::csv::Writer::from_writer(Vec::new());
+    writer.write_record(CURVE_COLUMNS).map_err(csv_error)?;
+    for (index, p) in curve.points.iter().enumerate() {
+        let values = row(p);
+        let mut record = Vec::with_capacity(values.len());
+        for (column, value) in CURVE_COLUMNS.into_iter().zip(values) {
+            if !value.is_finite() {
+                return Err(ReportError::NonFinite {
+                    row: index + 1,
+                    column,
+                    value,
+                });
+            }
+            record.push(format!("{value:e}"));
+        }
+        writer.write_record(&record).map_err(csv_error)?;
+    }
+    let bytes = writer
+        .into_inner()
+        .map_err(|e| ReportError::Csv(e.to_string()))?;
+    String::from_utf8(bytes).map_err(|e| ReportError::Csv(e.to_string()))
+}
+
+fn row(p: &CurvePoint) -> [f64; 8] {
+    [
+        p.time,
+        p.reduced_time,
+        p.relaxation,
+        p.compliance,
+        p.angular_frequency,
+        p.storage,
+        p.loss,
+        p.tan_delta,
+    ]
+}
+
+fn csv_error(e: ::csv::Error) -> ReportError {
+    ReportError::Csv(e.to_string())
+}
+
+/// A number for people: `sig` significant digits, trailing zeros dropped; scientific outside
+/// 1e-3 ≤ |v| < 1e6.
+pub fn human(v: f64, sig: usize) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return format!("{v}");
+    }
+    let sig = sig.max(1);
+    if (1e-3..1e6).contains(&v.abs()) {
+        let magnitude = v.abs().log10().floor() as i64;
+        let decimals = (sig as i64 - 1 - magnitude).max(0) as usize;
+        trim_zeros(format!("{v:.decimals$}"))
+    } else {
+        let text = format!("{v:.*e}", sig - 1);
+        match text.split_once('e') {
+            Some((mantissa, exponent)) => format!("{}e{exponent}", trim_zeros(mantissa.into())),
+            None => text,
+        }
+    }
+}
+
+fn trim_zeros(text: String) -> String {
+    if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_owned()
+    } else {
+        text
+    }
+}
+
+/// `"23 °C (296.15 K)"`.
+fn temperature(kelvin: f64) -> String {
+    format!(
+        "{} °C ({} K)",
+        human(kelvin - ZERO_CELSIUS, 6),
+        human(kelvin, 6)
+    )
+}
+
+/// What a status means, for `show`.
+fn status_meaning(status: Status) -> &'static str {
+    match status {
+        Status::Published => "every number traced to a publication",
+        Status::Illustrative => {
+            "at least one number is estimated (see the sources); not for design decisions"
+        }
+        Status::User => "given by the user; no claim is made",
+    }
+}
+
+/// The library table of `sealsim materials list`: id, name, status, E0 and E∞ [MPa], T_g [°C].
+pub fn library_table(rows: &[(&str, &Material)]) -> String {
+    let header = ["id", "name", "status", "E0 [MPa]", "E∞ [MPa]", "T_g [°C]"];
+    let cells: Vec<[String; 6]> = rows
+        .iter()
+        .map(|(id, m)| {
+            [
+                (*id).to_owned(),
+                m.name.clone(),
+                m.status.as_str().to_owned(),
+                human(m.prony.instantaneous() / 1e6, 4),
+                human(m.prony.long_term() / 1e6, 4),
+                m.glass_transition
+                    .map_or_else(|| "-".to_owned(), |t| human(t - ZERO_CELSIUS, 4)),
+            ]
+        })
+        .collect();
+    let width = |i: usize| {
+        cells
+            .iter()
+            .map(|r| r[i].chars().count())
+            .chain([header[i].chars().count()])
+            .max()
+            .unwrap_or(0)
+    };
+    let widths: Vec<usize> = (0..header.len()).map(width).collect();
+    let line = |row: [&str; 6]| {
+        let mut out = String::new();
+        for (i, cell) in row.iter().enumerate() {
+            let pad = widths[i].saturating_sub(cell.chars().count());
+            // text columns left-aligned, numbers right-aligned
+            if i < 3 {
+                out.push_str(cell);
+                if i + 1 < row.len() {
+                    out.push_str(&" ".repeat(pad + 2));
+                }
+            } else {
+                out.push_str(&" ".repeat(pad));
+                out.push_str(cell);
+                if i + 1 < row.len() {
+                    out.push_str("  ");
+                }
+            }
+        }
+        out.push('\n');
+        out
+    };
+    let mut out = line(header);
+    for r in &cells {
+        out.push_str(&line([&r[0], &r[1], &r[2], &r[3], &r[4], &r[5]]));
+    }
+    out
+}
+
+/// Every parameter of `m` with its units and provenance (`sealsim materials show`).
+pub fn describe(id: &str, m: &Material) -> String {
+    const INDENT: &str = "                    ";
+    let mut out = format!("{id}: {}\n", m.name);
+    out += &format!(
+        "status: {} - {}\n\n",
+        m.status.as_str(),
+        status_meaning(m.status)
+    );
+    let mut param = |key: &str, value: String, extra: &[String]| {
+        out += &format!("{key:<20}{value}\n");
+        for line in extra {
+            out += &format!("{INDENT}{line}\n");
+        }
+        let source = m.provenance_of(key).unwrap_or("(none given)");
+        out += &format!("{INDENT}source: {source}\n");
+    };
+    param("poisson_ratio", format!("ν = {}", m.poisson_ratio), &[]);
+    let prony = &m.prony;
+    let terms = prony.terms();
+    if terms.is_empty() {
+        param(
+            "youngs_modulus",
+            format!("E = {} MPa (elastic)", human(prony.long_term() / 1e6, 6)),
+            &[],
+        );
+    } else {
+        param(
+            "long_term_modulus",
+            format!(
+                "E∞ = {} MPa (relaxed; the static leak problem uses it)",
+                human(prony.long_term() / 1e6, 6)
+            ),
+            &[],
+        );
+        let e0 = prony.instantaneous();
+        let at = match m.shift {
+            Shift::None => "no temperature dependence".to_owned(),
+            Shift::Wlf { reference, .. } | Shift::Arrhenius { reference, .. } => {
+                format!("at T_ref = {}", temperature(reference))
+            }
+        };
+        let (lo, hi) = (terms[0].tau, terms[terms.len() - 1].tau);
+        let mut lines = vec![
+            format!(
+                "E0 = E∞ + Σ E_i = {} MPa (instantaneous)",
+                human(e0 / 1e6, 6)
+            ),
+            format!(
+                "{:>4}  {:>12}  {:>12}  {:>10}",
+                "i", "tau [s]", "E_i [MPa]", "E_i/E0"
+            ),
+        ];
+        lines.extend(terms.iter().enumerate().map(|(i, t)| {
+            format!(
+                "{:>4}  {:>12}  {:>12}  {:>10}",
+                i + 1,
+                human(t.tau, 6),
+                human(t.modulus / 1e6, 6),
+                human(t.modulus / e0, 4)
+            )
+        }));
+        param(
+            "prony",
+            format!(
+                "{} terms, E(t) = E∞ + Σ E_i exp(−t/τ_i), τ from {} s to {} s ({} decades), {at}",
+                terms.len(),
+                human(lo, 4),
+                human(hi, 4),
+                human((hi / lo).log10(), 3)
+            ),
+            &lines,
+        );
+    }
+    match m.shift {
+        Shift::None => {}
+        Shift::Wlf { reference, c1, c2 } => param(
+            "shift",
+            format!(
+                "WLF, log10 a_T = −C1 (T − T_ref)/(C2 + T − T_ref): T_ref = {}, C1 = {}, C2 = {} K",
+                temperature(reference),
+                human(c1, 6),
+                human(c2, 6)
+            ),
+            &[format!(
+                "frozen (no relaxation) at and below T_ref − C2 = {}",
+                temperature(reference - c2)
+            )],
+        ),
+        Shift::Arrhenius {
+            reference,
+            activation_energy,
+        } => param(
+            "shift",
+            format!(
+                "Arrhenius, ln a_T = (Ea/R)(1/T − 1/T_ref): T_ref = {}, Ea = {} kJ/mol",
+                temperature(reference),
+                human(activation_energy / 1e3, 6)
+            ),
+            &[],
+        ),
+    }
+    if let Some(tg) = m.glass_transition {
+        param(
+            "glass_transition",
+            format!("T_g = {}", temperature(tg)),
+            &[],
+        );
+    }
+    if let Some(alpha) = m.thermal_expansion {
+        param(
+            "thermal_expansion",
+            format!("α = {} 1/K (linear)", human(alpha, 6)),
+            &[],
+        );
+    }
+    if let Some(a) = m.ageing {
+        param(
+            "ageing",
+            format!(
+                "Arrhenius chemical stress relaxation: k_ref = {} 1/s at {}, Ea = {} kJ/mol",
+                human(a.rate, 6),
+                temperature(a.reference_temperature),
+                human(a.activation_energy / 1e3, 6)
+            ),
+            &[],
+        );
+    }
+    out
+}
+
+/// A number for solver input: exact (round-trip) and in a form both Abaqus and ANSYS read.
+fn solver_number(v: f64) -> String {
+    if v == 0.0 || (1e-3..1e7).contains(&v.abs()) {
+        let text = format!("{v}");
+        if text.contains('.') {
+            text
+        } else {
+            format!("{text}.")
+        }
+    } else {
+        format!("{v:E}")
+    }
+}
+
+/// Text safe for any solver's comment lines (ASCII only).
+fn ascii(text: &str) -> String {
+    text.chars()
+        .map(|c| match c {
+            'ν' => "nu".to_owned(),
+            'τ' => "tau".to_owned(),
+            '∞' => "inf".to_owned(),
+            'Σ' => "sum".to_owned(),
+            '—' | '–' | '−' => "-".to_owned(),
+            c if c.is_ascii() => c.to_string(),
+            _ => "?".to_owned(),
+        })
+        .collect()
+}
+
+/// The comment lines common to both exports (without the comment marker).
+fn export_header(id: &str, m: &Material, solver: &str, format: &str) -> Vec<String> {
+    let prony = &m.prony;
+    let e0 = prony.instantaneous();
+    let sum: f64 = prony.terms().iter().map(|t| t.modulus / e0).sum();
+    let mut lines = vec![
+        format!("sealsim materials export {id} --format {format}"),
+        format!("material: {}", ascii(&m.name)),
+        format!(
+            "status: {} - provenance of every number: sealsim materials show {id}",
+            m.status.as_str()
+        ),
+        "units: SI - moduli in Pa, times in s, temperatures in K".to_owned(),
+        format!(
+            "instantaneous modulus E0 = {} Pa, relaxed modulus E_inf = {} Pa, Poisson ratio {}",
+            solver_number(e0),
+            solver_number(prony.long_term()),
+            solver_number(m.poisson_ratio)
+        ),
+        format!(
+            "Prony coefficients are relative to the INSTANTANEOUS modulus: g_i = E_i/E0, \
+             sum g_i = 1 - E_inf/E0 = {}",
+            solver_number(sum)
+        ),
+    ];
+    lines.push(match m.shift {
+        Shift::None => {
+            "relaxation times tau_i: the material has no time-temperature shift".to_owned()
+        }
+        Shift::Wlf { reference, .. } | Shift::Arrhenius { reference, .. } => format!(
+            "relaxation times tau_i are at the reference temperature T_ref = {} K",
+            solver_number(reference)
+        ),
+    });
+    lines.extend([
+        format!(
+            "{solver} defines the Prony series for the shear modulus G; with a constant Poisson \
+             ratio G(t)/G0 = E(t)/E0,"
+        ),
+        "so the normalised coefficients of E and G are identical.".to_owned(),
+    ]);
+    if m.poisson_ratio >= 0.5 {
+        lines.push(
+            "nu = 0.5 is exactly incompressible: most solvers need nu < 0.5 (e.g. 0.4995) with \
+             hybrid/mixed elements"
+                .to_owned(),
+        );
+    }
+    lines
+}
+
+/// Abaqus input: `*MATERIAL`, `*ELASTIC, MODULI=INSTANTANEOUS` (E0, ν),
+/// `*VISCOELASTIC, TIME=PRONY` (g_i, k_i = 0, τ_i) and, for WLF, `*TRS, DEFINITION=WLF`.
+pub fn abaqus(id: &str, m: &Material) -> String {
+    let prony = &m.prony;
+    let e0 = prony.instantaneous();
+    let mut out = String::new();
+    for line in export_header(id, m, "Abaqus", "abaqus") {
+        out += &format!("** {line}\n");
+    }
+    out += "** k_i = 0: no bulk relaxation (the bulk modulus is elastic)\n";
+    out += &format!("*MATERIAL, NAME={}\n", abaqus_name(id));
+    out += "*ELASTIC, MODULI=INSTANTANEOUS\n";
+    out += &format!(
+        "{}, {}\n",
+        solver_number(e0),
+        solver_number(m.poisson_ratio)
+    );
+    if !prony.terms().is_empty() {
+        out += "*VISCOELASTIC, TIME=PRONY\n";
+        for t in prony.terms() {
+            out += &format!(
+                "{}, 0., {}\n",
+                solver_number(t.modulus / e0),
+                solver_number(t.tau)
+            );
+        }
+    }
+    match m.shift {
+        Shift::None => {}
+        Shift::Wlf { reference, c1, c2 } => {
+            out += "** WLF shift: log10 a_T = -C1 (T - T_ref)/(C2 + T - T_ref); data: T_ref [K], C1, C2 [K]\n";
+            out += "*TRS, DEFINITION=WLF\n";
+            out += &format!(
+                "{}, {}, {}\n",
+                solver_number(reference),
+                solver_number(c1),
+                solver_number(c2)
+            );
+        }
+        Shift::Arrhenius {
+            reference,
+            activation_energy,
+        } => {
+            for line in arrhenius_note(reference, activation_energy) {
+                out += &format!("** {line}\n");
+            }
+        }
+    }
+    out
+}
+
+/// ANSYS Mechanical APDL input: `MP,EX` (E0), `MP,PRXY` (ν), `TB,PRONY,1,,N,SHEAR` with
+/// `TBDATA` pairs (a_i = E_i/E0, τ_i) and, for WLF, `TB,SHIFT,1,,3` (T_ref, C1, C2).
+pub fn ansys(id: &str, m: &Material) -> String {
+    let prony = &m.prony;
+    let e0 = prony.instantaneous();
+    let mut out = String::new();
+    for line in export_header(id, m, "ANSYS", "ansys") {
+        out += &format!("! {line}\n");
+    }
+    out += "! shear Prony series only (no TB,PRONY,,,,BULK): no bulk relaxation\n";
+    out += &format!("MP,EX,1,{}\n", solver_number(e0));
+    out += &format!("MP,PRXY,1,{}\n", solver_number(m.poisson_ratio));
+    let terms = prony.terms();
+    if !terms.is_empty() {
+        out += &format!("TB,PRONY,1,,{},SHEAR\n", terms.len());
+        // TBDATA takes six constants per command: three (a_i, tau_i) pairs
+        for (chunk_index, chunk) in terms.chunks(3).enumerate() {
+            let values: Vec<String> = chunk
+                .iter()
+                .flat_map(|t| [solver_number(t.modulus / e0), solver_number(t.tau)])
+                .collect();
+            out += &format!("TBDATA,{},{}\n", 1 + 6 * chunk_index, values.join(","));
+        }
+    }
+    match m.shift {
+        Shift::None => {}
+        Shift::Wlf { reference, c1, c2 } => {
+            out += "! WLF shift: log10 a_T = -C1 (T - T_ref)/(C2 + T - T_ref); data: T_ref [K], C1, C2 [K]\n";
+            out += "TB,SHIFT,1,,3\n";
+            out += &format!(
+                "TBDATA,1,{},{},{}\n",
+                solver_number(reference),
+                solver_number(c1),
+                solver_number(c2)
+            );
+        }
+        Shift::Arrhenius {
+            reference,
+            activation_energy,
+        } => {
+            for line in arrhenius_note(reference, activation_energy) {
+                out += &format!("! {line}\n");
+            }
+        }
+    }
+    out
+}
+
+/// Comment lines for an Arrhenius shift, which is written as data, not as a solver card.
+fn arrhenius_note(reference: f64, activation_energy: f64) -> [String; 3] {
+    [
+        "Arrhenius shift: ln a_T = (Ea/R)(1/T - 1/T_ref); no shift card is written, enter it in \
+         your solver's own Arrhenius form:"
+            .to_owned(),
+        format!(
+            "T_ref = {} K, Ea = {} J/mol, Ea/R = {} K (R = {} J/(mol K))",
+            solver_number(reference),
+            solver_number(activation_energy),
+            solver_number(activation_energy / crate::material::shift::GAS_CONSTANT),
+            solver_number(crate::material::shift::GAS_CONSTANT)
+        ),
+        "(solvers differ in sign convention and in whether they take Ea, Ea/R or an absolute-zero offset)".to_owned(),
+    ]
+}
+
+/// An Abaqus material name: letters, digits and `_`, starting with a letter.
+fn abaqus_name(id: &str) -> String {
+    let name: String = id
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() {
+                c.to_ascii_uppercase()
+            } else {
+                '_'
+            }
+        })
+        .collect();
+    if name.starts_with(|c: char| c.is_ascii_alphabetic()) {
+        name
+    } else {
+        format!("M_{name}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn human_numbers() {
+        assert_eq!(human(3.80976, 6), "3.80976");
+        assert_eq!(human(296.15 - 273.15, 6), "23");
+        assert_eq!(human(-34.0, 4), "-34");
+        assert_eq!(human(1e-6, 4), "1e-6");
+        assert_eq!(human(1.65e-4, 6), "1.65e-4");
+        assert_eq!(human(1e13, 4), "1e13");
+        assert_eq!(human(12.345678, 4), "12.35");
+    }
+
+    #[test]
+    fn solver_numbers_round_trip() {
+        for v in [0.5, 3809760.0, 1e-6, 1e13, 0.146_734_2, 296.15, 0.0] {
+            let text = solver_number(v);
+            assert_eq!(text.parse::<f64>().unwrap(), v, "{text}");
+            assert!(text.contains('.') || text.contains('E'), "{text}");
+        }
+        assert_eq!(abaqus_name("nbr-70"), "NBR_70");
+        assert_eq!(abaqus_name("70x"), "M_70X");
+    }
+}

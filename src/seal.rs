@@ -1,0 +1,243 @@
+//! Seal geometry and loading: the nominal contact-pressure profile across the sealing width.
+//!
+//! * Flat seal: uniform nominal pressure over `width × length` (PY08 Fig. 2).
+//! * O-ring of cord diameter d and mean diameter D squeezed by ε (compression/d) between flat
+//!   plates — Lindley's empirical relations for a laterally unrestrained O-ring
+//!   (P.B. Lindley, "Compression characteristics of laterally-unrestrained rubber O-rings",
+//!   J. Inst. Rubber Ind. 1 (1967) 209), as written in DESIGN §6:
+//!   force per unit length `f = E d (1.25 ε^{3/2} + 50 ε⁶)` [N/m], contact width
+//!   `b = d √(6ε/π)` [m], and a Hertz-shaped profile `p(x) = p_max √(1 − (2x/b)²)`,
+//!   `p_max = 4 f/(π b)`. The constants could not be checked word for word against the
+//!   original here (DESIGN marks them "recalled"); what is tested is their own consistency
+//!   (∫p dx = f) and the stated range: the relations are meant for squeeze up to ≈ 30 %, and
+//!   sealsim warns beyond (and below 5 %, where the ε⁶ term is irrelevant but the contact is
+//!   too narrow for a Hertz picture of a real groove).
+//!
+//! Viscoelasticity enters through the *squeeze function* `g(ε) = 1.25 ε^{3/2} + 50 ε⁶`: the
+//! sealing force is `f(t) = d ∫ E(ξ(t) − ξ(s)) dg(ε(s))` (quasi-linear viscoelasticity), so
+//! the Prony recursion runs on g rather than on ε.
+
+use std::f64::consts::PI;
+
+/// Lower and upper squeeze of the range in which Lindley's relations are used without warning.
+pub const LINDLEY_RANGE: (f64, f64) = (0.05, 0.30);
+
+/// Lindley's squeeze function `g(ε) = 1.25 ε^{3/2} + 50 ε⁶` (dimensionless); `f = E d g(ε)`.
+pub fn squeeze_function(eps: f64) -> f64 {
+    let e = eps.max(0.0);
+    1.25 * e.powf(1.5) + 50.0 * e.powi(6)
+}
+
+/// O-ring contact width `b = d √(6ε/π)` [m].
+pub fn oring_contact_width(cross_section: f64, eps: f64) -> f64 {
+    cross_section * (6.0 * eps.max(0.0) / PI).sqrt()
+}
+
+/// Where the nominal pressure comes from.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum SealGeometry {
+    /// Uniform nominal pressure `nominal_pressure` right after installation over
+    /// `width` (L_x, along the flow) × `length` (L_y, across it).
+    Flat {
+        nominal_pressure: f64,
+        width: f64,
+        length: f64,
+    },
+    /// O-ring: cord diameter d, mean diameter D (sealing length π D), squeeze ε0 at installation.
+    ORing {
+        cross_section: f64,
+        mean_diameter: f64,
+        squeeze: f64,
+    },
+}
+
+impl SealGeometry {
+    /// L_y, the sealing length across the flow [m] (O-ring: π D).
+    pub fn sealing_length(&self) -> f64 {
+        match *self {
+            SealGeometry::Flat { length, .. } => length,
+            SealGeometry::ORing { mean_diameter, .. } => PI * mean_diameter,
+        }
+    }
+
+    /// Whether Lindley's relations are used outside their range at squeeze `eps`.
+    pub fn squeeze_out_of_range(&self, eps: f64) -> bool {
+        matches!(self, SealGeometry::ORing { .. })
+            && !(LINDLEY_RANGE.0..=LINDLEY_RANGE.1).contains(&eps)
+    }
+}
+
+/// The nominal pressure across the sealing width at one instant.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Profile {
+    /// Uniform `pressure` [Pa] over `width` [m].
+    Uniform { pressure: f64, width: f64 },
+    /// `p(x) = peak √(1 − (2x/b)²)` over `width` b [m].
+    Hertz { peak: f64, width: f64 },
+}
+
+impl Profile {
+    /// Sealing force per unit length `∫ p dx` [N/m].
+    pub fn force_per_length(&self) -> f64 {
+        match *self {
+            Profile::Uniform { pressure, width } => pressure * width,
+            Profile::Hertz { peak, width } => PI / 4.0 * peak * width,
+        }
+    }
+
+    /// Peak nominal pressure [Pa].
+    pub fn peak(&self) -> f64 {
+        match *self {
+            Profile::Uniform { pressure, .. } => pressure,
+            Profile::Hertz { peak, .. } => peak,
+        }
+    }
+
+    /// Mean nominal pressure over the width [Pa].
+    pub fn mean(&self) -> f64 {
+        self.force_per_length() / self.width()
+    }
+
+    /// Contact width L_x [m].
+    pub fn width(&self) -> f64 {
+        match *self {
+            Profile::Uniform { width, .. } | Profile::Hertz { width, .. } => width,
+        }
+    }
+
+    /// The profile with the force scaled by `factor` and the width unchanged.
+    pub fn scaled(&self, factor: f64) -> Profile {
+        match *self {
+            Profile::Uniform { pressure, width } => Profile::Uniform {
+                pressure: pressure * factor,
+                width,
+            },
+            Profile::Hertz { peak, width } => Profile::Hertz {
+                peak: peak * factor,
+                width,
+            },
+        }
+    }
+
+    /// Hertz profile of force per length `f` over width `b`: `p_max = 4 f/(π b)`.
+    pub fn hertz(force_per_length: f64, width: f64) -> Profile {
+        Profile::Hertz {
+            peak: 4.0 * force_per_length / (PI * width),
+            width,
+        }
+    }
+
+    /// Leak rate through the profile as strips in series (DESIGN §3.2):
+    /// `Q̇ = L_y ΔP / ∫ dx / σ(p(x))` with the local conductance per unit width `σ(p)` [m³/(Pa·s)]
+    /// supplied by the caller (`σ = α u_c(p)³/(12η)`; `0` where sealed).
+    ///
+    /// For the Hertz profile `x = (b/2) sin θ` gives `∫ dx/σ = (b/2) ∫ cos θ / σ(p_max cos θ) dθ`,
+    /// a smooth integrand, integrated with `nodes` Gauss–Legendre points over (−π/2, π/2)
+    /// (symmetric, so half the points are evaluated). A sealed strip anywhere seals the seal.
+    pub fn series_leak_rate(
+        &self,
+        sealing_length: f64,
+        pressure_difference: f64,
+        rule: &(Vec<f64>, Vec<f64>),
+        conductance: impl Fn(f64) -> f64,
+    ) -> f64 {
+        let resistance = match *self {
+            Profile::Uniform { pressure, width } => {
+                let c = conductance(pressure);
+                if c <= 0.0 {
+                    return 0.0;
+                }
+                width / c
+            }
+            Profile::Hertz { peak, width } => {
+                let (x, w) = rule;
+                let mut total = 0.0;
+                for (xi, wi) in x.iter().zip(w) {
+                    if *xi < 0.0 {
+                        continue; // symmetric: count each positive node twice
+                    }
+                    let factor = if *xi == 0.0 { 1.0 } else { 2.0 };
+                    let theta = 0.5 * PI * xi;
+                    let c = conductance(peak * theta.cos());
+                    if c <= 0.0 {
+                        return 0.0;
+                    }
+                    total += factor * wi * theta.cos() / c;
+                }
+                0.5 * width * 0.5 * PI * total
+            }
+        };
+        sealing_length * pressure_difference / resistance
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::numerics::quadrature::gauss_legendre;
+
+    #[test]
+    fn hertz_profile_carries_its_force() {
+        let p = Profile::hertz(1000.0, 2e-3);
+        assert!((p.force_per_length() - 1000.0).abs() < 1e-9);
+        assert!((p.peak() - 4.0 * 1000.0 / (PI * 2e-3)).abs() < 1e-6);
+        assert!((p.mean() * 4.0 / PI - p.peak()).abs() < 1e-6);
+    }
+
+    #[test]
+    fn uniform_conductance_gives_the_flat_formula() {
+        // σ constant → Q̇ = L_y ΔP σ / b, for both profile kinds
+        let rule = gauss_legendre(16);
+        let flat = Profile::Uniform {
+            pressure: 1e5,
+            width: 1e-3,
+        };
+        let q = flat.series_leak_rate(0.1, 1e4, &rule, |_| 2e-12);
+        assert!((q / (0.1 * 1e4 * 2e-12 / 1e-3) - 1.0).abs() < 1e-14);
+        let hertz = Profile::hertz(100.0, 1e-3);
+        let qh = hertz.series_leak_rate(0.1, 1e4, &rule, |_| 2e-12);
+        assert!(
+            (qh / q - 1.0).abs() < 1e-12,
+            "∫cos θ dθ over (−π/2, π/2) = 2"
+        );
+    }
+
+    #[test]
+    fn series_resistance_matches_closed_form_for_linear_conductance_law() {
+        // σ(p) = c/p ⇒ ∫ dx p(x)/c = f/c exactly
+        let rule = gauss_legendre(32);
+        let hertz = Profile::hertz(250.0, 1.5e-3);
+        let c = 3e-7;
+        let q = hertz.series_leak_rate(1.0, 1.0, &rule, |p| c / p);
+        assert!((q / (c / 250.0) - 1.0).abs() < 1e-12, "{q}");
+    }
+
+    #[test]
+    fn a_sealed_strip_seals_the_seal() {
+        let rule = gauss_legendre(16);
+        let hertz = Profile::hertz(250.0, 1.5e-3);
+        let q = hertz.series_leak_rate(1.0, 1.0, &rule, |p| {
+            if p > 0.9 * hertz.peak() { 0.0 } else { 1e-12 }
+        });
+        assert_eq!(q, 0.0);
+    }
+
+    #[test]
+    fn lindley_relations() {
+        assert_eq!(squeeze_function(0.0), 0.0);
+        let e: f64 = 0.2;
+        assert!((squeeze_function(e) - (1.25 * e.powf(1.5) + 50.0 * e.powi(6))).abs() < 1e-15);
+        assert!((oring_contact_width(3.53e-3, 0.2) - 3.53e-3 * (1.2 / PI).sqrt()).abs() < 1e-15);
+        let g = SealGeometry::ORing {
+            cross_section: 3.53e-3,
+            mean_diameter: 0.05,
+            squeeze: 0.2,
+        };
+        assert!((g.sealing_length() - PI * 0.05).abs() < 1e-15);
+        assert!(
+            !g.squeeze_out_of_range(0.2)
+                && g.squeeze_out_of_range(0.35)
+                && g.squeeze_out_of_range(0.02)
+        );
+    }
+}

@@ -1,0 +1,182 @@
+//! Failure criteria (DESIGN §8) and the power-law interpolation used between time steps.
+
+use crate::surface::expm1_over_x;
+
+/// Which criterion ended the seal's life.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FailureMode {
+    LeakRate,
+    LeakedVolume,
+    RetainedForce,
+    LiftOff,
+}
+
+impl FailureMode {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            FailureMode::LeakRate => "leak_rate",
+            FailureMode::LeakedVolume => "leaked_volume",
+            FailureMode::RetainedForce => "retained_force",
+            FailureMode::LiftOff => "lift_off",
+        }
+    }
+}
+
+/// When and how the seal failed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FailureEvent {
+    /// Time to failure [s].
+    pub time: f64,
+    pub mode: FailureMode,
+}
+
+/// The scenario's failure criteria; any subset, the first event wins.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct FailureCriteria {
+    /// Leak rate above this [m³/s].
+    pub max_leak_rate: Option<f64>,
+    /// Cumulative leaked volume above this [m³].
+    pub max_leaked_volume: Option<f64>,
+    /// Sealing force below this fraction of its value right after installation.
+    pub min_retained_force: Option<f64>,
+    /// Peak contact pressure below the fluid pressure difference.
+    pub lift_off: bool,
+}
+
+/// What the criteria look at, at one instant.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EventInput {
+    pub leak_rate: f64,
+    pub leaked_volume: f64,
+    /// Sealing force / sealing force right after installation.
+    pub retained_force: f64,
+    /// Whether the peak contact pressure is below ΔP.
+    pub lifted: bool,
+}
+
+impl FailureCriteria {
+    /// No criterion at all.
+    pub fn is_empty(&self) -> bool {
+        self.max_leak_rate.is_none()
+            && self.max_leaked_volume.is_none()
+            && self.min_retained_force.is_none()
+            && !self.lift_off
+    }
+
+    const MODES: [FailureMode; 4] = [
+        FailureMode::LiftOff,
+        FailureMode::LeakRate,
+        FailureMode::LeakedVolume,
+        FailureMode::RetainedForce,
+    ];
+
+    /// Whether criterion `mode` (if set) has failed in state `x`.
+    pub fn crossed(&self, mode: FailureMode, x: &EventInput) -> bool {
+        match mode {
+            FailureMode::LeakRate => self.max_leak_rate.is_some_and(|m| x.leak_rate > m),
+            FailureMode::LeakedVolume => {
+                self.max_leaked_volume.is_some_and(|m| x.leaked_volume > m)
+            }
+            FailureMode::RetainedForce => self
+                .min_retained_force
+                .is_some_and(|m| x.retained_force < m),
+            FailureMode::LiftOff => self.lift_off && x.lifted,
+        }
+    }
+
+    /// The criteria that hold in `after` but not in `before`.
+    pub fn newly_crossed(&self, before: &EventInput, after: &EventInput) -> Vec<FailureMode> {
+        Self::MODES
+            .into_iter()
+            .filter(|&m| !self.crossed(m, before) && self.crossed(m, after))
+            .collect()
+    }
+
+    /// A criterion that already holds right after installation (time 0).
+    pub fn at_start(&self, x: &EventInput) -> Option<FailureEvent> {
+        Self::MODES
+            .into_iter()
+            .find(|&m| self.crossed(m, x))
+            .map(|mode| FailureEvent { time: 0.0, mode })
+    }
+}
+
+/// `q(t)` between `(a, qa)` and `(b, qb)` as a power law in t when both values and `a` are
+/// positive, linearly otherwise.
+pub fn interpolate_power_law(a: f64, qa: f64, b: f64, qb: f64, t: f64) -> f64 {
+    if a > 0.0 && qa > 0.0 && qb > 0.0 {
+        let k = (qb / qa).ln() / (b / a).ln();
+        qa * (t / a).powf(k)
+    } else {
+        qa + (qb - qa) * (t - a) / (b - a)
+    }
+}
+
+/// `∫_a^b q dt` for the interpolation of [`interpolate_power_law`]: exact for power-law
+/// segments, `qa a ln(b/a) φ((k+1) ln(b/a))` with `φ(x) = (e^x − 1)/x`; the trapezoid rule
+/// when the power law does not apply (a = 0 or a zero end).
+pub fn integrate_power_law(a: f64, qa: f64, b: f64, qb: f64) -> f64 {
+    if b <= a {
+        return 0.0;
+    }
+    if a > 0.0 && qa > 0.0 && qb > 0.0 {
+        let l = (b / a).ln();
+        let k = (qb / qa).ln() / l;
+        qa * a * l * expm1_over_x((k + 1.0) * l)
+    } else {
+        0.5 * (b - a) * (qa + qb)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn power_law_integral_is_exact() {
+        // q = 3 t^-0.5 on [2, 50]: ∫ = 6 (√50 − √2)
+        let q = |t: f64| 3.0 * t.powf(-0.5);
+        let got = integrate_power_law(2.0, q(2.0), 50.0, q(50.0));
+        assert!((got / (6.0 * (50f64.sqrt() - 2f64.sqrt())) - 1.0).abs() < 1e-13);
+        // k = −1: ∫ 4/t = 4 ln(b/a)
+        let got = integrate_power_law(1.0, 4.0, 1e3, 4e-3);
+        assert!((got / (4.0 * 1e3f64.ln()) - 1.0).abs() < 1e-12);
+        // constant, and a zero end (trapezoid)
+        assert!((integrate_power_law(1.0, 2.0, 3.0, 2.0) - 4.0).abs() < 1e-14);
+        assert_eq!(integrate_power_law(1.0, 0.0, 3.0, 2.0), 2.0);
+        assert!((interpolate_power_law(2.0, q(2.0), 50.0, q(50.0), 8.0) - q(8.0)).abs() < 1e-14);
+    }
+
+    #[test]
+    fn criteria() {
+        let c = FailureCriteria {
+            max_leak_rate: Some(1.0),
+            min_retained_force: Some(0.5),
+            ..Default::default()
+        };
+        let ok = EventInput {
+            leak_rate: 0.5,
+            leaked_volume: 0.0,
+            retained_force: 0.9,
+            lifted: false,
+        };
+        let bad = EventInput {
+            leak_rate: 2.0,
+            retained_force: 0.4,
+            ..ok
+        };
+        assert_eq!(
+            c.newly_crossed(&ok, &bad),
+            vec![FailureMode::LeakRate, FailureMode::RetainedForce]
+        );
+        assert!(c.at_start(&ok).is_none());
+        assert!(FailureCriteria::default().is_empty());
+        assert!(
+            !FailureCriteria {
+                lift_off: true,
+                ..Default::default()
+            }
+            .is_empty()
+        );
+    }
+}

@@ -1,0 +1,633 @@
+//! The seal-life time loop (DESIGN §1, §3.2, §5–6, §8).
+//!
+//! Each step: temperature T(t) → reduced time ξ (exact for constant T, adaptive quadrature
+//! otherwise) → squeeze ε(t) with thermal strain → exact Prony update of the hereditary
+//! sealing stress on Lindley's squeeze function g(ε) → optional ageing factor
+//! `exp(−∫ k(T) dt)` → nominal pressure profile → asperity modulus → critical junction of each
+//! strip (contact table, built once) → leak rate through the strips in series → leaked volume
+//! (integrated as a power law in time between steps, exact for power-law segments) → failure
+//! criteria, located between steps by bisection on the exact state update to ≤ 1e-12 relative
+//! in time.
+//!
+//! Steps are log-uniform in time from `start` (with an installation row at t = 0);
+//! temperature cycles add internal sub-steps (eight per shortest period) so that the strain is
+//! piecewise linear in reduced time within each step, as the exact update requires.
+
+pub mod events;
+
+use crate::contact::{ContactSettings, Junction};
+use crate::leak::{ContactPath, Fidelity, Fluid};
+use crate::material::shift::reduced_time;
+use crate::material::{Ageing, Material, RelaxationState, Shift, TemperatureHistory};
+use crate::numerics::quadrature::gauss_legendre;
+use crate::seal::{Profile, SealGeometry, oring_contact_width, squeeze_function};
+use crate::surface::Spectrum;
+pub use events::{FailureCriteria, FailureEvent, FailureMode};
+
+/// Which modulus the asperity contact sees (DESIGN §6).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum AsperityModulus {
+    /// E∞, the low-frequency modulus PY08 uses (conservative). The default.
+    Relaxed,
+    /// E0.
+    Instantaneous,
+    /// The bulk's own relaxation: E(ξ(t)) under displacement loading, 1/J(ξ(t)) under force
+    /// loading (the contact creeps under a constant load).
+    Follow,
+    /// A fixed modulus [Pa].
+    Fixed(f64),
+}
+
+/// How the seal is held.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Loading {
+    /// Fixed squeeze (O-ring in a groove): the sealing force relaxes.
+    Displacement,
+    /// Fixed load (spring-loaded): the sealing force stays.
+    Force,
+}
+
+/// Thermal strain of an O-ring: the cord expands with the rubber's CTE, the groove depth with
+/// the housing's. `ε(T) = ε0 + (α_r − α_h (1 − ε0)) (T − T_install)` (first order).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ThermalStrain {
+    /// Rubber linear CTE α_r [1/K].
+    pub rubber_expansion: f64,
+    /// Housing linear CTE α_h [1/K].
+    pub housing_expansion: f64,
+    /// Installation temperature [K].
+    pub installation_temperature: f64,
+}
+
+/// The output/evaluation grid.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TimeGrid {
+    /// First time after installation [s] (> 0).
+    pub start: f64,
+    /// Last time [s] (> start).
+    pub duration: f64,
+    /// Log-uniform points per decade.
+    pub points_per_decade: f64,
+}
+
+impl TimeGrid {
+    /// 0, then `start · 10^{k/n}` up to `duration` (which is always the last point).
+    pub fn times(&self) -> Vec<f64> {
+        let mut t = vec![0.0];
+        let decades = (self.duration / self.start).log10();
+        let n = (decades * self.points_per_decade).ceil().max(1.0) as usize;
+        for k in 0..n {
+            t.push(self.start * 10f64.powf(decades * k as f64 / n as f64));
+        }
+        t.push(self.duration);
+        t
+    }
+}
+
+/// A seal-life problem in SI units.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LifeProblem {
+    pub material: Material,
+    pub asperity_modulus: AsperityModulus,
+    pub spectrum: Spectrum,
+    pub contact: ContactSettings,
+    pub shape_factor: f64,
+    pub fluid: Fluid,
+    pub geometry: SealGeometry,
+    pub loading: Loading,
+    pub environment: TemperatureHistory,
+    pub thermal_strain: Option<ThermalStrain>,
+    pub ageing: Option<Ageing>,
+    pub failure: FailureCriteria,
+    pub time: TimeGrid,
+    pub fidelity: Fidelity,
+    /// Gauss–Legendre points across the Hertz profile (strips in series).
+    pub strips: usize,
+}
+
+/// State of the interface at one time.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SealState {
+    Leaking,
+    /// No channel percolates (somewhere across the width).
+    Sealed,
+    /// The peak contact pressure is below the fluid pressure: the seal opens; the leak rate
+    /// shown is the model's, which no longer applies.
+    LiftOff,
+}
+
+impl SealState {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            SealState::Leaking => "leaking",
+            SealState::Sealed => "sealed",
+            SealState::LiftOff => "lift_off",
+        }
+    }
+}
+
+/// One row of the history.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HistoryRow {
+    pub time: f64,
+    pub temperature: f64,
+    pub reduced_time: f64,
+    pub shift_factor: f64,
+    /// Sealing force per unit length [N/m].
+    pub sealing_force: f64,
+    pub peak_pressure: f64,
+    pub mean_pressure: f64,
+    pub contact_width: f64,
+    /// Height of the critical constriction at the peak pressure [m]; `None` when sealed there.
+    pub u_c: Option<f64>,
+    pub leak_rate: f64,
+    pub leaked_volume: f64,
+    pub state: SealState,
+}
+
+/// A validity caveat of a life run.
+#[derive(Debug, Clone, PartialEq)]
+pub enum LifeWarning {
+    /// The squeeze leaves Lindley's range.
+    SqueezeOutOfRange { time: f64, squeeze: f64 },
+    /// The temperature reached the WLF singularity: the rubber is frozen (no relaxation).
+    Frozen { time: f64, temperature: f64 },
+    /// The temperature is below the glass transition.
+    BelowGlassTransition {
+        time: f64,
+        temperature: f64,
+        glass_transition: f64,
+    },
+    /// ΔP is not small against the peak pressure.
+    PressureRatio { time: f64, ratio: f64 },
+    /// The critical constriction is below 1 nm.
+    MolecularGap { time: f64, u_c: f64 },
+    /// No failure criterion is set: the seal can only survive.
+    NoCriterion,
+}
+
+impl std::fmt::Display for LifeWarning {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match *self {
+            LifeWarning::SqueezeOutOfRange { time, squeeze } => write!(
+                f,
+                "at t = {time:.4e} s the squeeze is {:.1} %, outside the 5–30 % for which Lindley's \
+                 O-ring relations are used",
+                100.0 * squeeze
+            ),
+            LifeWarning::Frozen { time, temperature } => write!(
+                f,
+                "at t = {time:.4e} s, T = {temperature:.2} K is at or below the WLF singularity: the \
+                 rubber is treated as frozen (no relaxation)"
+            ),
+            LifeWarning::BelowGlassTransition {
+                time,
+                temperature,
+                glass_transition,
+            } => write!(
+                f,
+                "at t = {time:.4e} s, T = {temperature:.2} K is below the glass transition \
+                 ({glass_transition:.2} K): the rubbery Prony series does not describe glassy rubber"
+            ),
+            LifeWarning::PressureRatio { time, ratio } => write!(
+                f,
+                "at t = {time:.4e} s, ΔP/p_peak = {ratio:.3}: the theory assumes the contact pressure \
+                 far above the fluid pressure"
+            ),
+            LifeWarning::MolecularGap { time, u_c } => write!(
+                f,
+                "at t = {time:.4e} s, u_c = {u_c:.3e} m is below 1 nm: continuum flow is not valid; \
+                 read the leak rate as effectively zero"
+            ),
+            LifeWarning::NoCriterion => {
+                f.write_str("the [failure] block sets no criterion: the seal can only survive")
+            }
+        }
+    }
+}
+
+/// The result of a life run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LifeResult {
+    pub rows: Vec<HistoryRow>,
+    pub failure: Option<FailureEvent>,
+    pub warnings: Vec<LifeWarning>,
+}
+
+impl LifeResult {
+    pub fn initial_leak_rate(&self) -> f64 {
+        self.rows.first().map_or(0.0, |r| r.leak_rate)
+    }
+
+    pub fn final_leak_rate(&self) -> f64 {
+        self.rows.last().map_or(0.0, |r| r.leak_rate)
+    }
+
+    pub fn leaked_volume(&self) -> f64 {
+        self.rows.last().map_or(0.0, |r| r.leaked_volume)
+    }
+
+    /// Leak rate at time `t` [s], interpolated as a power law between rows (0 outside).
+    pub fn leak_rate_at(&self, t: f64) -> Option<f64> {
+        let k = self.rows.partition_point(|r| r.time < t);
+        let b = self.rows.get(k)?;
+        if k == 0 || b.time == t {
+            return Some(b.leak_rate);
+        }
+        let a = &self.rows[k - 1];
+        Some(events::interpolate_power_law(
+            a.time,
+            a.leak_rate,
+            b.time,
+            b.leak_rate,
+            t,
+        ))
+    }
+}
+
+/// Everything evaluated at one instant from the mechanical state.
+#[derive(Debug, Clone, Copy)]
+struct Snapshot {
+    temperature: f64,
+    profile: Profile,
+    u_c: Option<f64>,
+    leak_rate: f64,
+    state: SealState,
+    retained: f64,
+}
+
+/// The mechanical state carried along the time loop.
+#[derive(Debug, Clone)]
+struct Mechanics {
+    time: f64,
+    reduced_time: f64,
+    relaxation: RelaxationState,
+    /// ∫ k(T)/k_ref dt, for the ageing factor.
+    ageing_time: f64,
+    leaked_volume: f64,
+}
+
+/// A prepared life simulation: the contact path (table) is built once here.
+pub struct Simulator<'a> {
+    problem: &'a LifeProblem,
+    path: ContactPath,
+    rule: (Vec<f64>, Vec<f64>),
+    /// The load variable right after installation (g(ε0) for an O-ring, 1 for a flat seal).
+    load0: f64,
+    initial_profile: Profile,
+    creep: crate::material::Creep,
+}
+
+impl<'a> Simulator<'a> {
+    /// Prepares the run (builds the contact table when the fidelity asks for it).
+    pub fn new(problem: &'a LifeProblem) -> Self {
+        let path = ContactPath::new(&problem.spectrum, problem.contact, problem.fidelity);
+        let t0 = problem.environment.at(0.0);
+        let load0 = load_variable(problem, t0);
+        let initial_profile =
+            profile_for(problem, problem.material.prony.instantaneous() * load0, t0);
+        Simulator {
+            problem,
+            path,
+            rule: gauss_legendre(problem.strips.max(2)),
+            load0,
+            initial_profile,
+            creep: problem.material.prony.creep(),
+        }
+    }
+
+    /// Runs the whole life.
+    pub fn run(&self) -> LifeResult {
+        let p = self.problem;
+        let mut warnings = Vec::new();
+        if p.failure.is_empty() {
+            warnings.push(LifeWarning::NoCriterion);
+        }
+        let mut state = Mechanics {
+            time: 0.0,
+            reduced_time: 0.0,
+            relaxation: RelaxationState::new(&p.material.prony),
+            ageing_time: 0.0,
+            leaked_volume: 0.0,
+        };
+        // installation: an instantaneous jump of the load variable
+        state.relaxation.step(&p.material.prony, 0.0, self.load0);
+        let first = self.snapshot(&state);
+        self.check_warnings(&state, &first, &mut warnings);
+        let mut rows = vec![self.row(&state, &first)];
+        let mut failure = p.failure.at_start(&first.as_event_input(0.0));
+        let mut last = first;
+
+        let outputs = p.time.times();
+        for &target in &outputs[1..] {
+            for t in self.substeps(state.time, target) {
+                let before = state.clone();
+                let before_snap = last;
+                self.advance(&mut state, t, &before_snap);
+                let snap = self.snapshot(&state);
+                self.check_warnings(&state, &snap, &mut warnings);
+                if failure.is_none() {
+                    failure = self.locate_failure(&before, &before_snap, &state, &snap);
+                }
+                last = snap;
+            }
+            rows.push(self.row(&state, &last));
+        }
+        LifeResult {
+            rows,
+            failure,
+            warnings,
+        }
+    }
+
+    /// Internal step ends in (from, to]: `to`, plus eight per shortest temperature cycle
+    /// and the knots of a temperature table.
+    fn substeps(&self, from: f64, to: f64) -> Vec<f64> {
+        let h = self.problem.environment.shortest_period().map(|p| p / 8.0);
+        let mut v: Vec<f64> = self
+            .problem
+            .environment
+            .knots()
+            .filter(|&k| k > from && k < to)
+            .collect();
+        if let Some(h) = h {
+            let first = (from / h).floor() + 1.0;
+            let mut k = first;
+            while k * h < to {
+                v.push(k * h);
+                k += 1.0;
+            }
+        }
+        v.push(to);
+        v.sort_by(f64::total_cmp);
+        v.dedup();
+        v
+    }
+
+    /// Advances the mechanical state to time `t` (exact for strain linear in ξ over the step).
+    fn advance(&self, state: &mut Mechanics, t: f64, before: &Snapshot) {
+        let p = self.problem;
+        let (a, b) = (state.time, t);
+        let d_xi = reduced_time(&p.environment, &p.material.shift, a, b);
+        let d_load = match p.loading {
+            Loading::Displacement => {
+                load_variable(p, p.environment.at(b)) - state.relaxation.strain()
+            }
+            Loading::Force => 0.0,
+        };
+        state.relaxation.step(&p.material.prony, d_xi, d_load);
+        state.reduced_time += d_xi;
+        if let Some(ag) = &p.ageing {
+            let arrhenius = Shift::Arrhenius {
+                reference: ag.reference_temperature,
+                activation_energy: ag.activation_energy,
+            };
+            state.ageing_time += reduced_time(&p.environment, &arrhenius, a, b);
+        }
+        let after = self.snapshot_at(state, b);
+        state.leaked_volume += events::integrate_power_law(a, before.leak_rate, b, after.leak_rate);
+        state.time = b;
+    }
+
+    fn snapshot(&self, state: &Mechanics) -> Snapshot {
+        self.snapshot_at(state, state.time)
+    }
+
+    /// Profile, asperity modulus, junctions and leak rate at the state's time `t`.
+    fn snapshot_at(&self, state: &Mechanics, t: f64) -> Snapshot {
+        let p = self.problem;
+        let temperature = p.environment.at(t);
+        let ageing = p
+            .ageing
+            .map_or(1.0, |ag| (-ag.rate * state.ageing_time).exp());
+        let profile = match p.loading {
+            Loading::Displacement => profile_for(
+                p,
+                state.relaxation.stress(&p.material.prony) * ageing,
+                temperature,
+            ),
+            Loading::Force => self.initial_profile,
+        };
+        let retained = profile.force_per_length() / self.initial_profile.force_per_length();
+        let e_star = self.asperity_modulus(state) / (1.0 - p.material.poisson_ratio.powi(2));
+        let alpha_over_12eta = p.shape_factor / (12.0 * p.fluid.viscosity);
+        let conductance = |pressure: f64| match self.path.critical_junction(pressure / e_star) {
+            Junction::Leaking(j) => alpha_over_12eta * j.u_c.powi(3),
+            Junction::Sealed => 0.0,
+        };
+        let leak_rate = profile.series_leak_rate(
+            p.geometry.sealing_length(),
+            p.fluid.pressure_difference,
+            &self.rule,
+            conductance,
+        );
+        let u_c = self
+            .path
+            .critical_junction(profile.peak() / e_star)
+            .leaking()
+            .map(|j| j.u_c);
+        let state = if profile.peak() < p.fluid.pressure_difference {
+            SealState::LiftOff
+        } else if leak_rate > 0.0 {
+            SealState::Leaking
+        } else {
+            SealState::Sealed
+        };
+        Snapshot {
+            temperature,
+            profile,
+            u_c,
+            leak_rate: if leak_rate.is_finite() {
+                leak_rate
+            } else {
+                0.0
+            },
+            state,
+            retained,
+        }
+    }
+
+    fn asperity_modulus(&self, state: &Mechanics) -> f64 {
+        let prony = &self.problem.material.prony;
+        match self.problem.asperity_modulus {
+            AsperityModulus::Relaxed => prony.long_term(),
+            AsperityModulus::Instantaneous => prony.instantaneous(),
+            AsperityModulus::Fixed(e) => e,
+            AsperityModulus::Follow => match self.problem.loading {
+                Loading::Displacement => prony.relaxation(state.reduced_time),
+                Loading::Force => 1.0 / self.creep.compliance(state.reduced_time),
+            },
+        }
+    }
+
+    fn row(&self, state: &Mechanics, snap: &Snapshot) -> HistoryRow {
+        let p = self.problem;
+        HistoryRow {
+            time: state.time,
+            temperature: snap.temperature,
+            reduced_time: state.reduced_time,
+            shift_factor: p.material.shift.factor(snap.temperature),
+            sealing_force: snap.profile.force_per_length(),
+            peak_pressure: snap.profile.peak(),
+            mean_pressure: snap.profile.mean(),
+            contact_width: snap.profile.width(),
+            u_c: snap.u_c,
+            leak_rate: snap.leak_rate,
+            leaked_volume: state.leaked_volume,
+            state: snap.state,
+        }
+    }
+
+    /// The earliest criterion crossed between two steps, each located by bisection on the
+    /// exact state update to 1e-12 relative in time.
+    fn locate_failure(
+        &self,
+        before: &Mechanics,
+        before_snap: &Snapshot,
+        after: &Mechanics,
+        after_snap: &Snapshot,
+    ) -> Option<FailureEvent> {
+        let criteria = &self.problem.failure;
+        let modes = criteria.newly_crossed(
+            &before_snap.as_event_input(before.leaked_volume),
+            &after_snap.as_event_input(after.leaked_volume),
+        );
+        modes
+            .into_iter()
+            .map(|mode| {
+                let (mut lo, mut hi) = (before.time, after.time);
+                for _ in 0..200 {
+                    if hi - lo <= 1e-12 * hi {
+                        break;
+                    }
+                    let geometric = if lo > 0.0 {
+                        (lo * hi).sqrt()
+                    } else {
+                        0.5 * (lo + hi)
+                    };
+                    let mid = if geometric > lo && geometric < hi {
+                        geometric
+                    } else {
+                        0.5 * (lo + hi)
+                    };
+                    let mut trial = before.clone();
+                    self.advance(&mut trial, mid, before_snap);
+                    let snap = self.snapshot(&trial);
+                    if criteria.crossed(mode, &snap.as_event_input(trial.leaked_volume)) {
+                        hi = mid;
+                    } else {
+                        lo = mid;
+                    }
+                }
+                FailureEvent { time: hi, mode }
+            })
+            .min_by(|a, b| a.time.total_cmp(&b.time))
+    }
+
+    fn check_warnings(&self, state: &Mechanics, snap: &Snapshot, warnings: &mut Vec<LifeWarning>) {
+        let p = self.problem;
+        let t = state.time;
+        let mut push = |w: LifeWarning| {
+            if !warnings
+                .iter()
+                .any(|x| std::mem::discriminant(x) == std::mem::discriminant(&w))
+            {
+                warnings.push(w);
+            }
+        };
+        if let SealGeometry::ORing { .. } = p.geometry {
+            let eps = squeeze_at(p, snap.temperature);
+            if p.geometry.squeeze_out_of_range(eps) {
+                push(LifeWarning::SqueezeOutOfRange {
+                    time: t,
+                    squeeze: eps,
+                });
+            }
+        }
+        if p.material.shift.is_frozen(snap.temperature) {
+            push(LifeWarning::Frozen {
+                time: t,
+                temperature: snap.temperature,
+            });
+        }
+        if let Some(tg) = p.material.glass_transition
+            && snap.temperature < tg
+        {
+            push(LifeWarning::BelowGlassTransition {
+                time: t,
+                temperature: snap.temperature,
+                glass_transition: tg,
+            });
+        }
+        let ratio = p.fluid.pressure_difference / snap.profile.peak();
+        if ratio > 0.1 {
+            push(LifeWarning::PressureRatio { time: t, ratio });
+        }
+        if let Some(u) = snap.u_c
+            && u < 1e-9
+        {
+            push(LifeWarning::MolecularGap { time: t, u_c: u });
+        }
+    }
+}
+
+impl Snapshot {
+    fn as_event_input(&self, leaked_volume: f64) -> events::EventInput {
+        events::EventInput {
+            leak_rate: self.leak_rate,
+            leaked_volume,
+            retained_force: self.retained,
+            lifted: self.state == SealState::LiftOff,
+        }
+    }
+}
+
+/// Squeeze at temperature `t` including the thermal strain (O-rings only).
+fn squeeze_at(p: &LifeProblem, temperature: f64) -> f64 {
+    match p.geometry {
+        SealGeometry::ORing { squeeze, .. } => match p.thermal_strain {
+            Some(th) => {
+                squeeze
+                    + (th.rubber_expansion - th.housing_expansion * (1.0 - squeeze))
+                        * (temperature - th.installation_temperature)
+            }
+            None => squeeze,
+        },
+        SealGeometry::Flat { .. } => 0.0,
+    }
+}
+
+/// The variable the Prony recursion runs on: g(ε) for an O-ring, 1 for a flat seal.
+fn load_variable(p: &LifeProblem, temperature: f64) -> f64 {
+    match p.geometry {
+        SealGeometry::ORing { .. } => squeeze_function(squeeze_at(p, temperature)),
+        SealGeometry::Flat { .. } => 1.0,
+    }
+}
+
+/// The nominal profile for hereditary stress `stress` (on the load variable) at `temperature`.
+fn profile_for(p: &LifeProblem, stress: f64, temperature: f64) -> Profile {
+    match p.geometry {
+        SealGeometry::Flat {
+            nominal_pressure,
+            width,
+            ..
+        } => {
+            let e0 = p.material.prony.instantaneous();
+            Profile::Uniform {
+                pressure: nominal_pressure * stress / e0,
+                width,
+            }
+        }
+        SealGeometry::ORing { cross_section, .. } => {
+            let eps = squeeze_at(p, temperature);
+            let width = oring_contact_width(cross_section, eps).max(f64::MIN_POSITIVE);
+            Profile::hertz((cross_section * stress).max(0.0), width)
+        }
+    }
+}
+
+/// Runs a life problem (convenience wrapper around [`Simulator`]).
+pub fn simulate(problem: &LifeProblem) -> LifeResult {
+    Simulator::new(problem).run()
+}

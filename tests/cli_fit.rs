@@ -1,0 +1,415 @@
+//! End-to-end tests of `sealsim fit-prony`: pyvisco-style and plain data files of both kinds
+//! give a material TOML whose series reproduces the data, and every kind of bad input exits
+//! with status 2, names the file and line, and never creates or touches the `-o` file.
+
+use assert_cmd::cargo::cargo_bin_cmd;
+use predicates::prelude::*;
+use sealsim::material::{Prony, PronyTerm};
+use sealsim::numerics::log_spaced;
+use sealsim::units::{Dimension, parse_quantity};
+use std::fmt::Write;
+use std::fs;
+use std::path::PathBuf;
+use tempfile::TempDir;
+
+/// 13 terms, τ = 1e-4 … 1e8 s, E∞ = 2 MPa (the example of tests/fit.rs).
+fn truth() -> Prony {
+    let terms: Vec<PronyTerm> = (-4..=8)
+        .map(|k| PronyTerm {
+            modulus: 1e6 * (3.5 + 2.5 * (1.3 * k as f64).sin()),
+            tau: 10f64.powi(k),
+        })
+        .collect();
+    Prony::new(2e6, &terms).unwrap()
+}
+
+/// Relaxation data, 60 points over 1e-4 … 1e8 s: pyvisco style in MPa, or plain SI.
+fn relaxation_csv(pyvisco: bool) -> String {
+    let p = truth();
+    let mut text = if pyvisco {
+        "t,E_relax\ns, MPa\n".to_string()
+    } else {
+        "# plain SI\ntime,E\n".to_string()
+    };
+    for t in log_spaced(1e-4, 1e8, 60) {
+        let e = p.relaxation(t);
+        let _ = if pyvisco {
+            writeln!(text, "{t:e}, {:e}", e / 1e6)
+        } else {
+            writeln!(text, "{t:e},{e:e}")
+        };
+    }
+    text
+}
+
+/// DMA data, 60 points over ω = 1e-7 … 1e3 rad/s: pyvisco style (f in Hz, MPa), or plain
+/// SI with omega.
+fn dma_csv(pyvisco: bool) -> String {
+    let p = truth();
+    let mut text = if pyvisco {
+        "f, E_stor, E_loss\nHz, MPa, MPa\n".to_string()
+    } else {
+        "omega,storage,loss\n".to_string()
+    };
+    for w in log_spaced(1e-7, 1e3, 60) {
+        let (s, l) = (p.storage(w), p.loss(w));
+        let _ = if pyvisco {
+            writeln!(
+                text,
+                "{:e},{:e},{:e}",
+                w / std::f64::consts::TAU,
+                s / 1e6,
+                l / 1e6
+            )
+        } else {
+            writeln!(text, "{w:e},{s:e},{l:e}")
+        };
+    }
+    text
+}
+
+fn write(dir: &TempDir, name: &str, text: &str) -> PathBuf {
+    let path = dir.path().join(name);
+    fs::write(&path, text).unwrap();
+    path
+}
+
+/// The Prony series of a material TOML text, read with the unit parser.
+fn series_of(text: &str) -> Prony {
+    let doc: toml::Table = toml::from_str(text).unwrap();
+    let m = doc["material"].as_table().unwrap();
+    let q = |v: &toml::Value, d| parse_quantity(v.as_str().unwrap(), d).unwrap();
+    let terms: Vec<PronyTerm> = m["prony"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|t| PronyTerm {
+            modulus: q(&t["modulus"], Dimension::PRESSURE),
+            tau: q(&t["tau"], Dimension::TIME),
+        })
+        .collect();
+    Prony::new(q(&m["long_term_modulus"], Dimension::PRESSURE), &terms).unwrap()
+}
+
+fn fit_ok(args: &[&str]) -> (String, String) {
+    let out = cargo_bin_cmd!("sealsim")
+        .arg("fit-prony")
+        .args(args)
+        .assert()
+        .success();
+    let o = out.get_output();
+    (
+        String::from_utf8(o.stdout.clone()).unwrap(),
+        String::from_utf8(o.stderr.clone()).unwrap(),
+    )
+}
+
+fn worst(fitted: &Prony, f: impl Fn(&Prony, f64) -> f64, xs: &[f64]) -> f64 {
+    let p = truth();
+    xs.iter()
+        .map(|&x| (f(fitted, x) / f(&p, x) - 1.0).abs())
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn pyvisco_relaxation_file_gives_a_user_material() {
+    let dir = TempDir::new().unwrap();
+    let data = write(&dir, "nbr-relax.csv", &relaxation_csv(true));
+    let (stdout, stderr) = fit_ok(&[data.to_str().unwrap(), "--kind", "relaxation"]);
+    let doc: toml::Table = toml::from_str(&stdout).unwrap();
+    let m = doc["material"].as_table().unwrap();
+    assert_eq!(m["name"].as_str(), Some("nbr-relax"));
+    assert!(
+        m.get("status").is_none(),
+        "a fitted material is a user material"
+    );
+    assert_eq!(m["poisson_ratio"].as_float(), Some(0.5));
+    let provenance = m["provenance"].as_table().unwrap();
+    assert_eq!(
+        provenance["poisson_ratio"].as_str(),
+        Some("assumed: incompressible rubber; replace with a measured value")
+    );
+    let fitted = provenance["prony"].as_str().unwrap();
+    let expected = format!(
+        "fitted by sealsim fit-prony (NNLS, 1 term per decade) to {}: 60 points, rms relative residual",
+        data.display()
+    );
+    assert!(fitted.starts_with(&expected), "{fitted}");
+    assert_eq!(provenance["long_term_modulus"].as_str(), Some(fitted));
+    // the series reproduces the data (the grid holds the true τ: exact up to MPa rounding)
+    let p = series_of(&stdout);
+    assert!(worst(&p, Prony::relaxation, &log_spaced(1e-4, 1e8, 500)) < 1e-6);
+    assert!(
+        stderr.contains("60 points") && stderr.contains("rms relative residual"),
+        "{stderr}"
+    );
+    assert!(!stderr.contains("warning"), "{stderr}");
+}
+
+#[test]
+fn plain_relaxation_file_with_output_and_name() {
+    let dir = TempDir::new().unwrap();
+    let data = write(&dir, "plain.csv", &relaxation_csv(false));
+    let out = dir.path().join("material.toml");
+    let (stdout, stderr) = fit_ok(&[
+        data.to_str().unwrap(),
+        "--kind",
+        "relaxation",
+        "--terms-per-decade",
+        "2",
+        "--name",
+        "NBR 70, fitted",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(stdout.is_empty(), "{stdout}");
+    assert!(stderr.contains("rms relative residual"), "{stderr}");
+    let text = fs::read_to_string(&out).unwrap();
+    assert!(text.contains("name = \"NBR 70, fitted\"\n"), "{text}");
+    assert!(text.contains("(NNLS, 2 terms per decade)"), "{text}");
+    let p = series_of(&text);
+    assert!(worst(&p, Prony::relaxation, &log_spaced(1e-4, 1e8, 500)) < 1e-6);
+    // only the output file was added
+    assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 2);
+}
+
+#[test]
+fn dma_files_of_both_styles() {
+    let dir = TempDir::new().unwrap();
+    let grid = log_spaced(1e-7, 1e3, 500);
+    for (name, pyvisco) in [("dma-pyvisco.csv", true), ("dma-plain.csv", false)] {
+        let data = write(&dir, name, &dma_csv(pyvisco));
+        let (stdout, _) = fit_ok(&[data.to_str().unwrap(), "--kind", "dma"]);
+        let p = series_of(&stdout);
+        let (s, l) = (
+            worst(&p, Prony::storage, &grid),
+            worst(&p, Prony::loss, &grid),
+        );
+        assert!(s < 1e-6 && l < 1e-6, "{name}: E' {s:e}, E'' {l:e}");
+    }
+}
+
+/// Runs `fit-prony` on `text` with `-o`, expects exit 2, `needle` in stderr, and no output.
+fn rejected(text: &str, kind: &str, needle: &str) {
+    let dir = TempDir::new().unwrap();
+    let data = write(&dir, "data.csv", text);
+    let out = dir.path().join("out.toml");
+    cargo_bin_cmd!("sealsim")
+        .arg("fit-prony")
+        .arg(&data)
+        .args(["--kind", kind, "-o"])
+        .arg(&out)
+        .assert()
+        .code(2)
+        .stdout("")
+        .stderr(predicate::str::contains(format!(
+            "{}{needle}",
+            data.display()
+        )));
+    assert!(!out.exists(), "no output file on bad input");
+    assert_eq!(
+        fs::read_dir(dir.path()).unwrap().count(),
+        1,
+        "no temporary files"
+    );
+}
+
+#[test]
+fn text_cell_is_located() {
+    rejected(
+        "t,E_relax\ns,MPa\n1,5\n# note\n2,abc\n3,3\n",
+        "relaxation",
+        ":5: E_relax: not a number",
+    );
+}
+
+#[test]
+fn non_monotonic_time_is_located() {
+    rejected(
+        "t,E\n1,5e6\n3,4e6\n2,3e6\n",
+        "relaxation",
+        ":4: t: must increase strictly",
+    );
+    rejected(
+        "f,E_stor,E_loss\n1,5,1\n1,5,1\n2,5,1\n",
+        "dma",
+        ":3: f: must increase strictly",
+    );
+}
+
+#[test]
+fn wrong_column_count_is_located() {
+    rejected(
+        "t,E\n1,5e6\n2,4e6,7\n3,3e6\n",
+        "relaxation",
+        ":3: expected 2 comma-separated columns",
+    );
+}
+
+#[test]
+fn non_positive_values_are_located() {
+    rejected(
+        "t,E\n1,5e6\n2,0\n3,3e6\n",
+        "relaxation",
+        ":3: E: must be positive",
+    );
+    rejected(
+        "f,E_stor,E_loss\n1,5,1\n2,5,-1\n3,5,1\n",
+        "dma",
+        ":3: E_loss: must be positive",
+    );
+    rejected(
+        "t,E\n0,5e6\n2,4e6\n3,3e6\n",
+        "relaxation",
+        ":2: t: must be positive",
+    );
+}
+
+#[test]
+fn too_few_points_are_located() {
+    rejected(
+        "t,E\ns,Pa\n1,5e6\n2,4e6\n",
+        "relaxation",
+        ":4: too few points: 2 data rows",
+    );
+}
+
+#[test]
+fn too_few_points_for_the_unknowns_name_both_numbers() {
+    // 4 points over 6 decades: 9 grid terms + E∞ = 10 unknowns
+    rejected(
+        "t,E\n1,5e6\n1e2,4e6\n1e4,3e6\n1e6,2e6\n",
+        "relaxation",
+        ": too few points: 4 data points give 4 values for 10 unknowns",
+    );
+}
+
+#[test]
+fn mixed_modulus_units_are_refused() {
+    rejected(
+        "f,E_stor,E_loss\nHz,MPa,Pa\n1,5,1\n2,5,1\n3,5,1\n",
+        "dma",
+        ":2: mixed units",
+    );
+}
+
+#[test]
+fn wrong_unit_dimension_is_located() {
+    rejected(
+        "t,E_relax\nMPa,MPa\n1,5\n2,4\n3,3\n",
+        "relaxation",
+        ":2: t: unit \"MPa\" is pressure, expected a time",
+    );
+    rejected(
+        "f,E_stor,E_loss\nHz,MPa*s,MPa*s\n1,5,1\n2,5,1\n3,5,1\n",
+        "dma",
+        ":2: E_stor: unit",
+    );
+}
+
+#[test]
+fn kind_must_match_the_columns() {
+    rejected(
+        &dma_csv(true),
+        "relaxation",
+        ":1: --kind relaxation expects columns t,E_relax, but the header has f,E_stor,E_loss, which is DMA data (use --kind dma)",
+    );
+    rejected(
+        &relaxation_csv(true),
+        "dma",
+        ":1: --kind dma expects columns",
+    );
+}
+
+#[test]
+fn missing_header_and_unknown_columns_are_located() {
+    rejected(
+        "1,5e6\n2,4e6\n3,3e6\n",
+        "relaxation",
+        ":1: expected a header row",
+    );
+    rejected(
+        "t,E,T\n1,5e6,20\n",
+        "relaxation",
+        ":1: unknown column \"T\"",
+    );
+}
+
+#[test]
+fn missing_data_file_is_named() {
+    let dir = TempDir::new().unwrap();
+    let missing = dir.path().join("nope.csv");
+    cargo_bin_cmd!("sealsim")
+        .arg("fit-prony")
+        .arg(&missing)
+        .args(["--kind", "dma"])
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains(format!(
+            "{}: cannot read the data file",
+            missing.display()
+        )));
+}
+
+#[test]
+fn bad_flags_are_usage_errors() {
+    let dir = TempDir::new().unwrap();
+    let data = write(&dir, "d.csv", &relaxation_csv(false));
+    for args in [
+        vec!["--kind", "relaxation", "--terms-per-decade", "5"],
+        vec!["--kind", "relaxation", "--terms-per-decade", "0"],
+        vec!["--kind", "creep"],
+        vec![],
+        vec!["--kind", "relaxation", "--name", ""],
+    ] {
+        cargo_bin_cmd!("sealsim")
+            .arg("fit-prony")
+            .arg(&data)
+            .args(&args)
+            .assert()
+            .code(2);
+    }
+}
+
+#[test]
+fn existing_output_is_untouched_on_error() {
+    let dir = TempDir::new().unwrap();
+    let data = write(&dir, "d.csv", "t,E\n1,5e6\n2,abc\n3,3e6\n");
+    let out = write(&dir, "keep.toml", "old\n");
+    cargo_bin_cmd!("sealsim")
+        .arg("fit-prony")
+        .arg(&data)
+        .args(["--kind", "relaxation", "-o"])
+        .arg(&out)
+        .assert()
+        .code(2);
+    assert_eq!(fs::read_to_string(&out).unwrap(), "old\n");
+    assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 2);
+}
+
+#[test]
+fn output_reads_back_as_a_user_material() {
+    use sealsim::material::Status;
+    use sealsim::scenario::material_from_str;
+
+    let dir = TempDir::new().unwrap();
+    let data = write(&dir, "dma.csv", &dma_csv(true));
+    let (stdout, _) = fit_ok(&[
+        data.to_str().unwrap(),
+        "--kind",
+        "dma",
+        "--terms-per-decade",
+        "3",
+    ]);
+    let m = material_from_str(&stdout, &dir.path().join("fitted.toml"))
+        .unwrap_or_else(|e| panic!("{e}\n{stdout}"));
+    assert_eq!(m.status, Status::User);
+    assert_eq!(m.name, "dma");
+    assert_eq!(m.poisson_ratio, 0.5);
+    assert_eq!(m.prony, series_of(&stdout), "the numbers read back exactly");
+    assert!(
+        m.provenance_of("prony")
+            .unwrap()
+            .contains("(NNLS, 3 terms per decade)")
+    );
+}

@@ -1,0 +1,731 @@
+//! End-to-end tests of `sealsim materials` (list, show, curve, export) and of viscoelastic
+//! scenario materials in `sealsim leak`. Expected values are computed here from the Prony terms
+//! and shift constants read through the public `sealsim::scenario` API, never copied from the
+//! program's output.
+
+use assert_cmd::cargo::cargo_bin_cmd;
+use predicates::prelude::*;
+use sealsim::material::{Material, Shift};
+use sealsim::scenario::{library, load_material_file};
+use std::fs;
+use std::path::{Path, PathBuf};
+use tempfile::TempDir;
+
+const CURVE_HEADER: &str = "time_s,reduced_time_s,relaxation_modulus_Pa,creep_compliance_per_Pa,\
+                            angular_frequency_rad_per_s,storage_modulus_Pa,loss_modulus_Pa,tan_delta";
+
+/// The issue's single-term test rubber as a library-format file.
+const TEST_RUBBER: &str = r#"[material]
+name = "single-term test rubber"
+status = "illustrative"
+poisson_ratio = 0.5
+long_term_modulus = "4 MPa"
+prony = [ { modulus = "6 MPa", tau = "1000 h" } ]
+[material.shift]
+kind = "wlf"
+reference_temperature = "23 C"
+c1 = 8.86
+c2 = "101.6 K"
+[material.provenance]
+poisson_ratio = "test value: incompressible"
+long_term_modulus = "test value: E_inf"
+prony = "test value: one term"
+shift = "test value: universal WLF constants"
+"#;
+
+const PAPER: &str = include_str!("../scenarios/persson-yang-2008.toml");
+
+fn sealsim() -> assert_cmd::Command {
+    cargo_bin_cmd!("sealsim")
+}
+
+/// Runs `sealsim <args>`, expects success, returns (stdout, stderr).
+fn ok(args: &[&str]) -> (String, String) {
+    let out = sealsim().args(args).assert().success();
+    let o = out.get_output();
+    (
+        String::from_utf8(o.stdout.clone()).unwrap(),
+        String::from_utf8(o.stderr.clone()).unwrap(),
+    )
+}
+
+/// Runs `sealsim <args>`, expects exit status 2 and no panic; returns stderr.
+fn rejected(args: &[&str]) -> String {
+    let out = sealsim()
+        .args(args)
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("panicked").not());
+    String::from_utf8(out.get_output().stderr.clone()).unwrap()
+}
+
+struct Dir(TempDir);
+
+impl Dir {
+    fn new() -> Self {
+        Dir(tempfile::tempdir().unwrap())
+    }
+
+    fn write(&self, name: &str, text: &str) -> PathBuf {
+        let path = self.0.path().join(name);
+        fs::write(&path, text).unwrap();
+        path
+    }
+
+    fn path(&self, name: &str) -> PathBuf {
+        self.0.path().join(name)
+    }
+}
+
+fn s(path: &Path) -> &str {
+    path.to_str().unwrap()
+}
+
+/// One parsed row of the curve CSV.
+#[derive(Debug, Clone, Copy)]
+struct Row {
+    time: f64,
+    reduced_time: f64,
+    relaxation: f64,
+    compliance: f64,
+    omega: f64,
+    storage: f64,
+    loss: f64,
+    tan_delta: f64,
+}
+
+fn parse_curve(text: &str) -> Vec<Row> {
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some(CURVE_HEADER));
+    lines
+        .map(|line| {
+            let v: Vec<f64> = line
+                .split(',')
+                .map(|c| c.parse::<f64>().unwrap_or_else(|_| panic!("{line}")))
+                .collect();
+            assert_eq!(v.len(), 8, "{line}");
+            assert!(v.iter().all(|x| x.is_finite()), "{line}");
+            Row {
+                time: v[0],
+                reduced_time: v[1],
+                relaxation: v[2],
+                compliance: v[3],
+                omega: v[4],
+                storage: v[5],
+                loss: v[6],
+                tan_delta: v[7],
+            }
+        })
+        .collect()
+}
+
+fn close(a: f64, b: f64, rel: f64) -> bool {
+    (a - b).abs() <= rel * a.abs().max(b.abs())
+}
+
+/// E(t), E′(ω), E″(ω) from the series' terms, written out here independently of the library.
+fn series_values(m: &Material, t: f64, omega: f64) -> (f64, f64, f64) {
+    let e_inf = m.prony.long_term();
+    let terms = m.prony.terms();
+    let e = e_inf
+        + terms
+            .iter()
+            .map(|p| p.modulus * (-t / p.tau).exp())
+            .sum::<f64>();
+    let storage = e_inf
+        + terms
+            .iter()
+            .map(|p| {
+                let w = omega * p.tau;
+                p.modulus * w * w / (1.0 + w * w)
+            })
+            .sum::<f64>();
+    let loss = terms
+        .iter()
+        .map(|p| {
+            let w = omega * p.tau;
+            p.modulus * w / (1.0 + w * w)
+        })
+        .sum::<f64>();
+    (e, storage, loss)
+}
+
+/// WLF log10 a_T written out here: −C1 (T − Tref)/(C2 + T − Tref).
+fn wlf_shift_factor(shift: Shift, t: f64) -> f64 {
+    match shift {
+        Shift::Wlf { reference, c1, c2 } => {
+            10f64.powf(-c1 * (t - reference) / (c2 + t - reference))
+        }
+        other => panic!("not WLF: {other:?}"),
+    }
+}
+
+#[test]
+fn list_shows_every_library_compound() {
+    let (out, _) = ok(&["materials", "list"]);
+    let mut lines = out.lines();
+    let header = lines.next().unwrap();
+    for column in ["id", "name", "status", "E0 [MPa]", "E∞ [MPa]", "T_g [°C]"] {
+        assert!(header.contains(column), "{header}");
+    }
+    let rows: Vec<&str> = lines.collect();
+    let ids: Vec<&str> = library::ids().collect();
+    assert_eq!(rows.len(), ids.len());
+    for (row, id) in rows.iter().zip(&ids) {
+        let m = library::get(id).unwrap().load().unwrap();
+        assert!(row.starts_with(id), "{row}");
+        assert!(
+            row.contains(&m.name) && row.contains(m.status.as_str()),
+            "{row}"
+        );
+        // E0 and E∞ in MPa to four significant digits
+        let numbers: Vec<f64> = row
+            .split_whitespace()
+            .rev()
+            .take(3)
+            .filter_map(|c| c.parse().ok())
+            .collect();
+        assert!(
+            close(numbers[2], m.prony.instantaneous() / 1e6, 1e-3),
+            "{row}"
+        );
+        assert!(close(numbers[1], m.prony.long_term() / 1e6, 1e-3), "{row}");
+    }
+}
+
+#[test]
+fn show_gives_every_parameter_with_units_and_provenance() {
+    for id in library::ids() {
+        let m = library::get(id).unwrap().load().unwrap();
+        let (out, _) = ok(&["materials", "show", id]);
+        assert!(out.starts_with(&format!("{id}: {}", m.name)), "{out}");
+        assert!(out.contains(&format!("status: {}", m.status.as_str())));
+        for (key, source) in &m.provenance {
+            assert!(out.contains(&format!("{key:<20}")), "{id}: {key} missing");
+            assert!(
+                out.contains(&format!("source: {source}")),
+                "{id}: source of {key}"
+            );
+        }
+        assert!(out.contains("MPa") && out.contains("tau [s]") && out.contains("E_i [MPa]"));
+        // one line per Prony term
+        let term_lines = out
+            .lines()
+            .filter(|l| {
+                let cells: Vec<&str> = l.split_whitespace().collect();
+                cells.len() == 4 && cells.iter().all(|c| c.parse::<f64>().is_ok())
+            })
+            .count();
+        assert_eq!(term_lines, m.prony.terms().len(), "{id}");
+        if m.glass_transition.is_some() {
+            assert!(out.contains("T_g = ") && out.contains("°C"));
+        }
+        if m.ageing.is_some() {
+            assert!(out.contains("kJ/mol") && out.contains("1/s"));
+        }
+    }
+}
+
+#[test]
+fn curve_at_the_reference_temperature_is_the_series() {
+    let dir = Dir::new();
+    let file = dir.write("rubber.toml", TEST_RUBBER);
+    let m = load_material_file(&file).unwrap();
+    let (out, err) = ok(&["materials", "curve", "--file", s(&file)]);
+    assert!(err.is_empty(), "{err}");
+    let rows = parse_curve(&out);
+    // τ = 3.6e6 s widened by two decades each side, 10 points per decade
+    assert_eq!(rows.len(), 41);
+    assert!(close(rows[0].time, 3.6e4, 1e-12) && close(rows[40].time, 3.6e8, 1e-12));
+    let creep_lambda = 3.6e6 * 10.0 / 4.0; // standard linear solid: λ = τ E0/E∞
+    for r in &rows {
+        assert_eq!(r.time, r.reduced_time);
+        assert!(close(r.omega * r.time, 1.0, 1e-15));
+        let (e, storage, loss) = series_values(&m, r.time, r.omega);
+        assert!(close(r.relaxation, e, 1e-13), "{r:?} vs {e}");
+        assert!(close(r.storage, storage, 1e-12), "{r:?} vs {storage}");
+        assert!(close(r.loss, loss, 1e-12), "{r:?} vs {loss}");
+        assert!(close(r.tan_delta, loss / storage, 1e-12));
+        let j = 1.0 / 4e6 - (1.0 / 4e6 - 1.0 / 1e7) * (-r.time / creep_lambda).exp();
+        assert!(close(r.compliance, j, 1e-12), "{r:?} vs {j}");
+    }
+    // the same through a library compound, checked on a few rows
+    let nbr = library::get("nbr-70").unwrap().load().unwrap();
+    let (out, _) = ok(&["materials", "curve", "nbr-70", "--points-per-decade", "3"]);
+    let rows = parse_curve(&out);
+    let (lo, hi) = (
+        nbr.prony.terms()[0].tau,
+        nbr.prony.terms().last().unwrap().tau,
+    );
+    assert!(close(rows[0].time, lo / 100.0, 1e-12));
+    assert!(close(rows.last().unwrap().time, hi * 100.0, 1e-12));
+    for r in rows.iter().step_by(7) {
+        let (e, storage, loss) = series_values(&nbr, r.time, r.omega);
+        assert!(close(r.relaxation, e, 1e-12), "{r:?}");
+        assert!(
+            close(r.storage, storage, 1e-12) && close(r.loss, loss, 1e-10),
+            "{r:?}"
+        );
+    }
+}
+
+#[test]
+fn curve_at_a_higher_temperature_is_shifted_by_a_t() {
+    let dir = Dir::new();
+    let file = dir.write("rubber.toml", TEST_RUBBER);
+    let m = load_material_file(&file).unwrap();
+    let (reference, _) = ok(&["materials", "curve", "--file", s(&file)]);
+    let csv = dir.path("hot.csv");
+    let svg = dir.path("hot.svg");
+    let (out, err) = ok(&[
+        "materials",
+        "curve",
+        "--file",
+        s(&file),
+        "--temperature",
+        "80C",
+        "-o",
+        s(&csv),
+        "--plot",
+        s(&svg),
+    ]);
+    assert!(out.is_empty() && err.is_empty(), "{out}{err}");
+    assert!(fs::read_to_string(&svg).unwrap().contains("<svg"));
+    let a_t = wlf_shift_factor(m.shift, 353.15);
+    assert!(a_t < 1e-3, "{a_t}");
+    let (reference, hot) = (
+        parse_curve(&reference),
+        parse_curve(&fs::read_to_string(&csv).unwrap()),
+    );
+    assert_eq!(reference.len(), hot.len());
+    for (r, h) in reference.iter().zip(&hot) {
+        // same reduced time, physical time moved by exactly a_T, same moduli
+        assert!(close(h.time, a_t * r.time, 1e-12), "{h:?} {r:?}");
+        assert!(close(h.reduced_time, h.time / a_t, 1e-12));
+        assert_eq!(h.relaxation, r.relaxation);
+        assert_eq!(h.compliance, r.compliance);
+        // E′(ω; T) = E′(ω a_T) at the reference temperature
+        let (e, storage, loss) = series_values(&m, h.time / a_t, h.omega * a_t);
+        assert!(close(h.relaxation, e, 1e-12));
+        assert!(close(h.storage, storage, 1e-12) && close(h.loss, loss, 1e-12));
+    }
+    // colder than the reference: slower
+    let (cold, _) = ok(&[
+        "materials",
+        "curve",
+        "--file",
+        s(&file),
+        "--temperature",
+        "0 C",
+    ]);
+    let cold = parse_curve(&cold);
+    assert!(close(
+        cold[0].time / reference[0].time,
+        wlf_shift_factor(m.shift, 273.15),
+        1e-12
+    ));
+}
+
+#[test]
+fn frozen_temperature_warns_and_gives_the_instantaneous_response() {
+    let dir = Dir::new();
+    let file = dir.write("rubber.toml", TEST_RUBBER);
+    // Tref − C2 = 23 − 101.6 = −78.6 °C
+    let (out, err) = ok(&[
+        "materials",
+        "curve",
+        "--file",
+        s(&file),
+        "--temperature",
+        "-100C",
+    ]);
+    assert!(
+        err.starts_with("warning: ") && err.contains("frozen"),
+        "{err}"
+    );
+    assert!(err.contains("-78.6 °C"), "{err}");
+    let rows = parse_curve(&out);
+    assert!(!rows.is_empty());
+    for r in rows {
+        assert_eq!((r.reduced_time, r.relaxation, r.storage), (0.0, 1e7, 1e7));
+        assert_eq!((r.loss, r.tan_delta), (0.0, 0.0));
+        assert!(close(r.compliance, 1e-7, 1e-15));
+    }
+    // at the frozen limit itself too
+    let (out, err) = ok(&[
+        "materials",
+        "curve",
+        "--file",
+        s(&file),
+        "--temperature",
+        "194.55 K",
+    ]);
+    assert!(err.contains("frozen"), "{err}");
+    assert!(parse_curve(&out).iter().all(|r| r.relaxation == 1e7));
+}
+
+/// The data lines of an Abaqus export.
+struct Abaqus {
+    /// (E0, ν) of `*ELASTIC`.
+    elastic: (f64, f64),
+    /// (g_i, k_i, τ_i) of `*VISCOELASTIC`.
+    terms: Vec<[f64; 3]>,
+    /// (T_ref, C1, C2) of `*TRS, DEFINITION=WLF`.
+    trs: Option<[f64; 3]>,
+}
+
+fn parse_abaqus(text: &str) -> Abaqus {
+    let numbers = |line: &str| -> Vec<f64> {
+        line.split(',')
+            .map(|c| c.trim().parse::<f64>().unwrap())
+            .collect()
+    };
+    let lines: Vec<&str> = text.lines().filter(|l| !l.starts_with("**")).collect();
+    let at = |keyword: &str| lines.iter().position(|l| l.starts_with(keyword));
+    let elastic = numbers(lines[at("*ELASTIC, MODULI=INSTANTANEOUS").unwrap() + 1]);
+    let start = at("*VISCOELASTIC, TIME=PRONY").unwrap() + 1;
+    let terms = lines[start..]
+        .iter()
+        .take_while(|l| !l.starts_with('*'))
+        .map(|l| {
+            let v = numbers(l);
+            [v[0], v[1], v[2]]
+        })
+        .collect();
+    let trs = at("*TRS, DEFINITION=WLF").map(|i| {
+        let v = numbers(lines[i + 1]);
+        [v[0], v[1], v[2]]
+    });
+    Abaqus {
+        elastic: (elastic[0], elastic[1]),
+        terms,
+        trs,
+    }
+}
+
+#[test]
+fn abaqus_export_is_relative_to_the_instantaneous_modulus() {
+    for id in library::ids() {
+        let m = library::get(id).unwrap().load().unwrap();
+        let (out, _) = ok(&["materials", "export", id, "--format", "abaqus"]);
+        assert!(out.contains("*MATERIAL, NAME="), "{out}");
+        assert!(out.contains("** k_i = 0: no bulk relaxation"), "{out}");
+        assert!(
+            out.contains("Pa") && out.contains("reference temperature"),
+            "{out}"
+        );
+        assert!(out.is_ascii());
+        let Abaqus {
+            elastic: (e0, nu),
+            terms,
+            trs,
+        } = parse_abaqus(&out);
+        assert_eq!(e0, m.prony.instantaneous());
+        assert_eq!(nu, m.poisson_ratio);
+        assert_eq!(terms.len(), m.prony.terms().len());
+        let sum: f64 = terms.iter().map(|t| t[0]).sum();
+        assert!(
+            close(sum, 1.0 - m.prony.long_term() / e0, 1e-12),
+            "{id}: Σ g = {sum}"
+        );
+        for (t, p) in terms.iter().zip(m.prony.terms()) {
+            assert!(close(t[0], p.modulus / e0, 1e-15));
+            assert_eq!((t[1], t[2]), (0.0, p.tau));
+        }
+        match (m.shift, trs) {
+            (Shift::Wlf { reference, c1, c2 }, Some(trs)) => assert_eq!(trs, [reference, c1, c2]),
+            (Shift::Wlf { .. }, None) => panic!("{id}: no *TRS"),
+            (_, trs) => assert!(trs.is_none()),
+        }
+    }
+}
+
+#[test]
+fn ansys_export_pairs_sum_correctly() {
+    let dir = Dir::new();
+    let file = dir.write("rubber.toml", TEST_RUBBER);
+    let out_file = dir.path("rubber.mac");
+    for (args, m) in [
+        (
+            vec!["--file", s(&file), "-o", s(&out_file)],
+            load_material_file(&file).unwrap(),
+        ),
+        (
+            vec!["nbr-70"],
+            library::get("nbr-70").unwrap().load().unwrap(),
+        ),
+    ] {
+        let mut all = vec!["materials", "export", "--format", "ansys"];
+        all.extend(args.iter());
+        let (stdout, _) = ok(&all);
+        let text = if args.contains(&"-o") {
+            assert!(stdout.is_empty());
+            fs::read_to_string(&out_file).unwrap()
+        } else {
+            stdout
+        };
+        let e0 = m.prony.instantaneous();
+        assert!(
+            text.contains(&format!("MP,PRXY,1,{}", m.poisson_ratio)),
+            "{text}"
+        );
+        let ex: f64 = text
+            .lines()
+            .find_map(|l| l.strip_prefix("MP,EX,1,"))
+            .unwrap()
+            .parse()
+            .unwrap();
+        assert_eq!(ex, e0);
+        let n = m.prony.terms().len();
+        let prony_at = text
+            .lines()
+            .position(|l| l == format!("TB,PRONY,1,,{n},SHEAR"))
+            .unwrap_or_else(|| panic!("{text}"));
+        // TBDATA lines with (a_i, τ_i) pairs, starting locations 1, 7, 13, ...
+        let mut values = Vec::new();
+        for (k, line) in text
+            .lines()
+            .skip(prony_at + 1)
+            .take_while(|l| l.starts_with("TBDATA"))
+            .enumerate()
+        {
+            let cells: Vec<&str> = line.split(',').collect();
+            assert_eq!(cells[1], (1 + 6 * k).to_string(), "{line}");
+            values.extend(cells[2..].iter().map(|c| c.parse::<f64>().unwrap()));
+        }
+        assert_eq!(values.len(), 2 * n);
+        let sum: f64 = values.chunks(2).map(|p| p[0]).sum();
+        assert!(
+            close(sum, 1.0 - m.prony.long_term() / e0, 1e-12),
+            "Σ a = {sum}"
+        );
+        for (pair, term) in values.chunks(2).zip(m.prony.terms()) {
+            assert_eq!(pair[1], term.tau);
+        }
+        if let Shift::Wlf { reference, c1, c2 } = m.shift {
+            let at = text.lines().position(|l| l == "TB,SHIFT,1,,3").unwrap();
+            let line = text.lines().nth(at + 1).unwrap();
+            assert_eq!(line, format!("TBDATA,1,{reference},{c1},{c2}"));
+        }
+    }
+}
+
+#[test]
+fn bad_materials_exit_2_and_write_nothing() {
+    let dir = Dir::new();
+    let out = dir.path("out.csv");
+    let svg = dir.path("out.svg");
+    let err = rejected(&["materials", "curve", "nbr-99", "-o", s(&out)]);
+    assert!(err.contains("unknown library material \"nbr-99\""), "{err}");
+    for id in library::ids() {
+        assert!(err.contains(id), "{err}");
+    }
+    assert!(!out.exists());
+    let err = rejected(&["materials", "show", "nbr-99"]);
+    assert!(err.contains("the library has: "), "{err}");
+    let cases = [
+        (
+            "tau = \"1000 h\"",
+            "tau = \"-1 s\"",
+            "rubber.toml:6: material.prony[0].tau: must be positive, got -1 s",
+        ),
+        (
+            "modulus = \"6 MPa\"",
+            "modulus = 0",
+            "rubber.toml:6: material.prony[0].modulus: must be positive, got 0 Pa",
+        ),
+        (
+            "modulus = \"6 MPa\"",
+            "modulus = \"-6 MPa\"",
+            "rubber.toml:6: material.prony[0].modulus: must be positive",
+        ),
+        (
+            "long_term_modulus = \"4 MPa\"",
+            "long_term_modulus = \"-4 MPa\"",
+            "rubber.toml:5: material.long_term_modulus: must not be negative",
+        ),
+        (
+            "c2 = \"101.6 K\"",
+            "c2 = 0",
+            "rubber.toml:11: material.shift.c2: must be positive, got 0 K",
+        ),
+        (
+            "c2 = \"101.6 K\"",
+            "c2 = \"-5 K\"",
+            "rubber.toml:11: material.shift.c2: must be positive, got -5 K",
+        ),
+        (
+            "shift = \"test value: universal WLF constants\"\n",
+            "",
+            "rubber.toml:7: material.shift: missing provenance",
+        ),
+    ];
+    for (from, to, expected) in cases {
+        let file = dir.write("rubber.toml", &TEST_RUBBER.replacen(from, to, 1));
+        for command in [
+            vec![
+                "materials",
+                "curve",
+                "--file",
+                s(&file),
+                "-o",
+                s(&out),
+                "--plot",
+                s(&svg),
+            ],
+            vec![
+                "materials",
+                "export",
+                "--file",
+                s(&file),
+                "--format",
+                "abaqus",
+                "-o",
+                s(&out),
+            ],
+            vec!["materials", "show", "--file", s(&file)],
+        ] {
+            let err = rejected(&command);
+            assert!(
+                err.starts_with("error: ") && err.contains(expected),
+                "{to}: {err}"
+            );
+            assert!(!out.exists());
+            assert!(!svg.exists());
+        }
+    }
+    // flags
+    for args in [
+        vec!["materials", "curve", "nbr-70", "--temperature", "80 m"],
+        vec!["materials", "curve", "nbr-70", "--temperature", "-300 C"],
+        vec!["materials", "curve", "nbr-70", "--points-per-decade", "0"],
+        vec!["materials", "export", "nbr-70", "--format", "nastran"],
+        vec!["materials", "export", "nbr-70"],
+        vec!["materials", "show"],
+        vec!["materials", "show", "nbr-70", "--file", "x.toml"],
+        vec!["materials", "show", "--file", "/nowhere/x.toml"],
+    ] {
+        rejected(&args);
+    }
+}
+
+#[test]
+fn user_material_files_work_by_path() {
+    // what `sealsim fit-prony` writes: no status, provenance only where known
+    let dir = Dir::new();
+    let file = dir.write(
+        "fitted.toml",
+        "[material]\npoisson_ratio = 0.4995\nlong_term_modulus = \"1.5 MPa\"\n\
+         prony = [ { modulus = 2e6, tau = 0.1 }, { modulus = 1e6, tau = 1e3 } ]\n\
+         [material.provenance]\nprony = \"NNLS fit to relaxation.csv\"\n",
+    );
+    let (out, _) = ok(&["materials", "show", "--file", s(&file)]);
+    assert!(out.starts_with("fitted: fitted\nstatus: user"), "{out}");
+    assert!(
+        out.contains("source: NNLS fit to relaxation.csv") && out.contains("source: (none given)")
+    );
+    let (out, _) = ok(&[
+        "materials",
+        "export",
+        "--file",
+        s(&file),
+        "--format",
+        "abaqus",
+    ]);
+    let Abaqus {
+        elastic,
+        terms,
+        trs,
+    } = parse_abaqus(&out);
+    assert_eq!(elastic, (4.5e6, 0.4995));
+    assert_eq!(
+        terms,
+        vec![[2e6 / 4.5e6, 0.0, 0.1], [1e6 / 4.5e6, 0.0, 1e3]]
+    );
+    assert!(trs.is_none() && out.contains("no time-temperature shift"));
+    let (out, err) = ok(&[
+        "materials",
+        "curve",
+        "--file",
+        s(&file),
+        "--temperature",
+        "80C",
+    ]);
+    assert!(err.contains("no time–temperature shift"), "{err}");
+    // τ from 0.1 s to 1e3 s, widened to 1e-3 s .. 1e5 s: 8 decades, 10 points each
+    assert_eq!(parse_curve(&out).len(), 81);
+}
+
+/// The paper scenario with its `[material]` table replaced.
+fn paper_with_material(material: &str) -> String {
+    PAPER.replace(
+        "[material]\nyoungs_modulus = \"10 MPa\"\npoisson_ratio = 0.5\n",
+        material,
+    )
+}
+
+#[test]
+fn leak_takes_the_relaxed_modulus_of_a_viscoelastic_material() {
+    let dir = Dir::new();
+    let elastic = dir.write(
+        "elastic.toml",
+        &paper_with_material("[material]\nyoungs_modulus = \"4 MPa\"\npoisson_ratio = 0.5\n"),
+    );
+    let viscoelastic = dir.write(
+        "viscoelastic.toml",
+        &paper_with_material(
+            "[material]\nname = \"inline test rubber\"\npoisson_ratio = 0.5\n\
+             long_term_modulus = \"4 MPa\"\nprony = [ { modulus = \"6 MPa\", tau = \"1000 h\" } ]\n\
+             [material.shift]\nkind = \"wlf\"\nreference_temperature = \"23 C\"\nc1 = 8.86\n\
+             c2 = \"101.6 K\"\n",
+        ),
+    );
+    let sweep = ["--sweep", "0.05MPa..1MPa", "--points", "7"];
+    let run = |path: &Path| {
+        let mut args = vec!["leak", s(path)];
+        args.extend(sweep);
+        ok(&args).0
+    };
+    let (a, b) = (run(&elastic), run(&viscoelastic));
+    assert_eq!(a, b);
+    assert_eq!(a.lines().count(), 8);
+    // a library compound: the same as an elastic rubber with its E∞ and ν
+    let nbr = library::get("nbr-70").unwrap().load().unwrap();
+    let by_id = dir.write(
+        "nbr.toml",
+        &paper_with_material("[material]\nlibrary = \"nbr-70\"\n"),
+    );
+    let by_value = dir.write(
+        "nbr-elastic.toml",
+        &paper_with_material(&format!(
+            "[material]\nyoungs_modulus = {:e}\npoisson_ratio = {:e}\n",
+            nbr.prony.long_term(),
+            nbr.poisson_ratio
+        )),
+    );
+    assert_eq!(run(&by_id), run(&by_value));
+    // E∞ = 0 cannot give a static leak problem
+    let fluid = dir.write(
+        "fluid.toml",
+        &paper_with_material(
+            "[material]\npoisson_ratio = 0.5\nlong_term_modulus = 0\n\
+             prony = [ { modulus = \"6 MPa\", tau = \"1000 h\" } ]\n",
+        ),
+    );
+    let out = dir.path("leak.csv");
+    let err = rejected(&["leak", s(&fluid), "-o", s(&out)]);
+    assert!(
+        err.contains("fluid.toml:4: material.long_term_modulus: no relaxed modulus"),
+        "{err}"
+    );
+    assert!(!out.exists());
+    let unknown = dir.write(
+        "unknown.toml",
+        &paper_with_material("[material]\nlibrary = \"nope\"\n"),
+    );
+    let err = rejected(&["leak", s(&unknown)]);
+    assert!(
+        err.contains("unknown.toml:3: material.library: unknown library material \"nope\""),
+        "{err}"
+    );
+}
