@@ -206,9 +206,9 @@ impl TemperatureHistory {
 /// Reduced time accumulated over `[a, b]`: `ξ(b) − ξ(a) = ∫_a^b dt / a_T(T(t))` [s].
 ///
 /// Exact for a constant temperature; otherwise the interval is split at the history's kinks
-/// and into eighths of each cycle, and each piece is integrated by adaptive Gauss–Legendre
-/// (8 against 16 nodes, bisecting until they agree to 1e-12 relative), so a_T may change by
-/// decades within a step. Frozen stretches contribute nothing.
+/// and into eighths of each cycle, and each piece is integrated by globally adaptive
+/// Gauss–Legendre to 1e-12 relative, so a_T may change by decades within a step. Frozen
+/// stretches contribute nothing.
 pub fn reduced_time(history: &TemperatureHistory, shift: &Shift, a: f64, b: f64) -> f64 {
     if b <= a {
         return 0.0;
@@ -220,7 +220,7 @@ pub fn reduced_time(history: &TemperatureHistory, shift: &Shift, a: f64, b: f64)
     history
         .breakpoints(a, b)
         .windows(2)
-        .map(|w| adaptive(&rate, w[0], w[1], 0))
+        .map(|w| adaptive(&rate, w[0], w[1]))
         .sum()
 }
 
@@ -239,14 +239,34 @@ fn gl(f: &impl Fn(f64) -> f64, rule: &(Vec<f64>, Vec<f64>), a: f64, b: f64) -> f
         * half
 }
 
-fn adaptive(f: &impl Fn(f64) -> f64, a: f64, b: f64, depth: u32) -> f64 {
+/// Globally adaptive Gauss–Legendre: 16-node estimates, error from the 8-node rule; the
+/// sub-interval with the largest error is bisected until the summed error is below 1e-12 of the
+/// summed integral, or 256 sub-intervals are in use (a bounded cost: near the WLF frozen limit
+/// the integrand falls by hundreds of decades within a step, where local tests can recurse
+/// without end).
+fn adaptive(f: &impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {
     let [coarse, fine] = rules();
-    let (lo, hi) = (gl(f, coarse, a, b), gl(f, fine, a, b));
-    if (hi - lo).abs() <= 1e-12 * hi.abs() || depth >= 40 {
-        return hi;
+    let piece = |a: f64, b: f64| {
+        let hi = gl(f, fine, a, b);
+        (a, b, hi, (hi - gl(f, coarse, a, b)).abs())
+    };
+    let mut parts = vec![piece(a, b)];
+    loop {
+        let total: f64 = parts.iter().map(|p| p.2).sum();
+        let error: f64 = parts.iter().map(|p| p.3).sum();
+        if error <= 1e-12 * total.abs() || parts.len() >= 256 {
+            return total;
+        }
+        let worst = parts
+            .iter()
+            .enumerate()
+            .max_by(|x, y| x.1.3.total_cmp(&y.1.3))
+            .map_or(0, |(i, _)| i);
+        let (pa, pb, _, _) = parts.swap_remove(worst);
+        let m = 0.5 * (pa + pb);
+        parts.push(piece(pa, m));
+        parts.push(piece(m, pb));
     }
-    let m = 0.5 * (a + b);
-    adaptive(f, a, m, depth + 1) + adaptive(f, m, b, depth + 1)
 }
 
 #[cfg(test)]
