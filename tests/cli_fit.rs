@@ -131,7 +131,7 @@ fn pyvisco_relaxation_file_gives_a_user_material() {
     );
     let fitted = provenance["prony"].as_str().unwrap();
     let expected = format!(
-        "fitted by sealsim fit-prony (NNLS, 1 term per decade) to {}: 60 points, rms relative residual",
+        "fitted by sealsim fit-prony (NNLS, 3 terms per decade) to {}: 60 points, rms relative residual",
         data.display()
     );
     assert!(fitted.starts_with(&expected), "{fitted}");
@@ -276,11 +276,11 @@ fn too_few_points_are_located() {
 
 #[test]
 fn too_few_points_for_the_unknowns_name_both_numbers() {
-    // 4 points over 6 decades: 9 grid terms + E∞ = 10 unknowns
+    // 4 points over 6 decades: 25 grid terms (3 per decade over 8 decades, plus one) + E∞ = 26 unknowns
     rejected(
         "t,E\n1,5e6\n1e2,4e6\n1e4,3e6\n1e6,2e6\n",
         "relaxation",
-        ": too few points: 4 data points give 4 values for 10 unknowns",
+        ": too few points: 4 data points give 4 values for 26 unknowns",
     );
 }
 

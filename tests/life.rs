@@ -280,3 +280,32 @@ fn extremes_stay_finite() {
     p.time.duration = 30.0 * 86400.0;
     assert!(all_finite(&simulate(&p)));
 }
+
+#[test]
+fn a_cold_snap_inside_one_step_is_resolved() {
+    // The squeeze follows the temperature (thermal strain): a 65 K drop within one output step,
+    // a_T changing by 11 decades, must give the sealing force of a fine output grid.
+    let mut p = oring_problem(nbr_like());
+    p.environment =
+        TemperatureHistory::table(vec![(0.0, TREF), (1e5, TREF), (1e5 + 3600.0, TREF - 65.0)]);
+    p.thermal_strain = Some(sealsim::simulate::ThermalStrain {
+        rubber_expansion: 1.65e-4,
+        housing_expansion: 1.2e-5,
+        installation_temperature: TREF,
+    });
+    p.time = TimeGrid {
+        start: 1.0,
+        duration: 2e5,
+        points_per_decade: 2.0,
+    };
+    let coarse = simulate(&p);
+    p.time.points_per_decade = 400.0;
+    let fine = simulate(&p);
+    let (c, f) = (
+        coarse.rows.last().unwrap().sealing_force,
+        fine.rows.last().unwrap().sealing_force,
+    );
+    assert!((c / f - 1.0).abs() < 2e-3, "{c} vs {f}");
+    // and the cold unloading is stiff: more force lost than the relaxed modulus would give
+    assert!(c < 0.9 * coarse.rows[coarse.rows.len() - 3].sealing_force);
+}

@@ -39,8 +39,9 @@ pub struct FitPronyArgs {
     #[arg(long, value_enum)]
     pub kind: KindArg,
 
-    /// Relaxation times per decade of the fit grid (1–4).
-    #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=4))]
+    /// Relaxation times per decade of the fit grid (1–4; 3 keeps the ripple of an off-grid
+    /// spectrum below 0.04 %).
+    #[arg(long, value_name = "N", default_value_t = crate::material::fit::DEFAULT_TERMS_PER_DECADE, value_parser = clap::value_parser!(u32).range(1..=4))]
     pub terms_per_decade: u32,
 
     /// Write the material TOML to FILE (atomically) instead of standard output.
@@ -201,7 +202,14 @@ mod tests {
             .iter()
             .map(|x| 2e6 * (1.0 + 3.0 / (1.0 + x.sqrt())))
             .collect();
-        let fit = fit_relaxation(&t, &e, &FitSettings::default()).unwrap();
+        let fit = fit_relaxation(
+            &t,
+            &e,
+            &FitSettings {
+                terms_per_decade: 1,
+            },
+        )
+        .unwrap();
         let m = fitted_material("x".into(), &fit, "data.csv", 1);
         assert_eq!(
             m.provenance_of("poisson_ratio"),

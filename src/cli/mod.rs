@@ -5,10 +5,12 @@
 //! [`run`]. Exit status: 0 success, 2 bad input (usage, flag values, scenario files), 1 failure
 //! to write the output or an internal error.
 
+pub mod compare;
 pub mod figures;
 pub mod fit_prony;
 pub mod leak;
 pub mod materials;
+pub mod run;
 
 use crate::report::{self, ReportError};
 use crate::scenario::ScenarioError;
@@ -33,7 +35,12 @@ pub struct Cli {
 /// The subcommands.
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Leak rate of a flat seal at one or more nominal pressures, as CSV.
+    /// Seal-life simulation: leak rate, sealing force and failure over the seal's life.
+    Run(run::RunArgs),
+    /// The same life scenario with several compounds, side by side.
+    Compare(compare::CompareArgs),
+    /// Leak rate at one or more nominal pressures, as CSV (an O-ring: its central strip right
+    /// after installation).
     Leak(leak::LeakArgs),
     /// Data and SVG charts of groups of scenarios over a pressure sweep (PY08 §3 figures).
     Figures(figures::FiguresArgs),
@@ -112,6 +119,8 @@ pub fn main() -> i32 {
 /// Dispatches to the subcommand.
 pub fn run(command: Command) -> Result<(), CliError> {
     match command {
+        Command::Run(args) => run::run(args),
+        Command::Compare(args) => compare::run(args),
         Command::Leak(args) => leak::run(args),
         Command::Figures(args) => figures::run(args),
         Command::FitProny(args) => fit_prony::run(args),

@@ -49,14 +49,19 @@ pub const TERMS_PER_DECADE: std::ops::RangeInclusive<u32> = 1..=4;
 /// Settings of a Prony fit.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct FitSettings {
-    /// Relaxation times per decade of the grid, 1–4 (default 1).
+    /// Relaxation times per decade of the grid, 1–4 (default 3: with one per decade a
+    /// spectrum whose τ fall between grid points leaves a ≈4 % ripple in E(t); three bring it
+    /// below 0.04 %, measured in tests/fit.rs).
     pub terms_per_decade: u32,
 }
+
+/// Default of [`FitSettings::terms_per_decade`].
+pub const DEFAULT_TERMS_PER_DECADE: u32 = 3;
 
 impl Default for FitSettings {
     fn default() -> Self {
         FitSettings {
-            terms_per_decade: 1,
+            terms_per_decade: DEFAULT_TERMS_PER_DECADE,
         }
     }
 }
@@ -385,7 +390,9 @@ mod tests {
 
     #[test]
     fn input_errors() {
-        let s = FitSettings::default();
+        let s = FitSettings {
+            terms_per_decade: 1,
+        };
         let t = [1.0, 2.0, 3.0, 4.0, 5.0];
         let e = [5.0, 4.0, 3.0, 2.0, 1.0];
         assert!(matches!(

@@ -78,7 +78,7 @@ fn table<'a>(
 }
 
 /// A finite value in shortest round-trip scientific notation.
-fn number(row: usize, column: &'static str, value: f64) -> Result<String, ReportError> {
+pub(crate) fn number(row: usize, column: &'static str, value: f64) -> Result<String, ReportError> {
     if value.is_finite() {
         Ok(format!("{value:e}"))
     } else {

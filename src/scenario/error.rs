@@ -43,6 +43,18 @@ pub enum ScenarioError {
         line: usize,
         message: String,
     },
+    /// The temperature history named by `environment.history` was read but its contents are
+    /// invalid.
+    HistoryFormat {
+        /// The history file, as resolved against the scenario's directory.
+        history: PathBuf,
+        /// 1-based line in the history file, when the problem is on one line.
+        history_line: Option<usize>,
+        /// The scenario file and the line of its `history` key.
+        scenario: PathBuf,
+        line: usize,
+        message: String,
+    },
 }
 
 impl ScenarioError {
@@ -52,6 +64,7 @@ impl ScenarioError {
             ScenarioError::Read { path, .. } | ScenarioError::Invalid { path, .. } => path,
             ScenarioError::PsdRead { scenario, .. } => scenario,
             ScenarioError::PsdFormat { psd, .. } => psd,
+            ScenarioError::HistoryFormat { history, .. } => history,
         }
     }
 }
@@ -102,6 +115,23 @@ impl fmt::Display for ScenarioError {
                 write!(
                     f,
                     ": {message} (PSD file named by surface.psd_file at {}:{line})",
+                    scenario.display()
+                )
+            }
+            ScenarioError::HistoryFormat {
+                history,
+                history_line,
+                scenario,
+                line,
+                message,
+            } => {
+                write!(f, "{}", history.display())?;
+                if let Some(l) = history_line {
+                    write!(f, ":{l}")?;
+                }
+                write!(
+                    f,
+                    ": {message} (temperature history named by environment.history at {}:{line})",
                     scenario.display()
                 )
             }

@@ -11,7 +11,8 @@
 //!   to the file stem;
 //! * an **inline scenario material**: the same keys without `status` (it is
 //!   [`Status::User`]); `name` defaults to the scenario's name, provenance is optional;
-//! * a **scenario reference** `library = "ID"` (no other keys): the library compound.
+//! * a **scenario reference** `library = "ID"` (no other keys except the scenario option
+//!   `asperity_modulus`): the library compound.
 //!
 //! Whenever provenance is given it is checked: every key names a parameter the material gives,
 //! every value is a non-empty string.
@@ -27,6 +28,7 @@ use super::validate::{Bound, Field, field};
 use super::{library, show};
 use crate::contact::Elastic;
 use crate::material::{Ageing, Material, Prony, PronyTerm, Shift, Status};
+use crate::simulate::AsperityModulus;
 use crate::units::{self, Dimension};
 use std::ops::Range;
 use std::path::Path;
@@ -109,6 +111,13 @@ const AGEING_RATE: Field = field(
     "1/s",
     Bound::Positive,
 );
+/// A fixed asperity modulus (`asperity_modulus = "3 MPa"`).
+const ASPERITY_MODULUS: Field = field(
+    "material.asperity_modulus",
+    Dimension::PRESSURE,
+    "Pa",
+    Bound::Positive,
+);
 
 /// Where a `[material]` table is read; decides which keys are required.
 #[derive(Debug, Clone, Copy)]
@@ -178,41 +187,51 @@ impl Source<'_> {
         self.material(&raw.material, origin)
     }
 
-    /// A scenario's `[material]`: the material, and the elastic constants of the static leak
-    /// problem (the relaxed modulus E∞ with the material's ν).
+    /// A scenario's `[material]`: the material, the elastic constants of the static leak
+    /// problem (the relaxed modulus E∞ with the material's ν) and the asperity-modulus option.
+    ///
+    /// With `replacement` (`sealsim compare`), that compound is used instead of the one the
+    /// table names; the table's scenario options (`asperity_modulus`) still apply.
     pub(super) fn scenario_material(
         &self,
         table: &Spanned<RawMaterial>,
         default_name: &str,
-    ) -> Result<(Material, Elastic), ScenarioError> {
+        replacement: Option<&Material>,
+    ) -> Result<(Material, Elastic, AsperityModulus), ScenarioError> {
         let raw = table.get_ref();
-        let (material, span, key) = match &raw.library {
-            Some(id) => {
+        let asperity = self.asperity_modulus(raw)?;
+        let (material, span, key) = match (&raw.library, replacement) {
+            (Some(id), _) => {
                 if let Some((other, span)) = present_keys(raw)
                     .into_iter()
-                    .find(|(key, _)| *key != "library")
+                    .find(|(key, _)| !matches!(*key, "library" | "asperity_modulus"))
                 {
                     return Err(self.error(
                         span,
                         &format!("material.{other}"),
                         format!(
-                            "a library material takes no other keys: remove `{other}`, or remove \
-                             `library` and give the whole material inline"
+                            "a library material takes no other keys (except the scenario option \
+                             `asperity_modulus`): remove `{other}`, or remove `library` and give \
+                             the whole material inline"
                         ),
                     ));
                 }
-                let entry = library::get(id.get_ref())
-                    .map_err(|e| self.error(id.span(), "material.library", e.to_string()))?;
-                (entry.load()?, id.span(), "material.library")
+                let material = match replacement {
+                    Some(m) => m.clone(),
+                    None => library::get(id.get_ref())
+                        .map_err(|e| self.error(id.span(), "material.library", e.to_string()))?
+                        .load()?,
+                };
+                (material, id.span(), "material.library")
             }
-            None => {
-                let material = self.material(table, Origin::Inline { default_name })?;
+            (None, replacement) => {
+                let inline = self.material(table, Origin::Inline { default_name })?;
                 let (span, key) = match (&raw.long_term_modulus, &raw.youngs_modulus) {
                     (Some(q), _) => (q.span(), LONG_TERM_MODULUS.key),
                     (None, Some(q)) => (q.span(), YOUNGS_MODULUS.key),
                     (None, None) => (table.span(), "material"),
                 };
-                (material, span, key)
+                (replacement.cloned().unwrap_or(inline), span, key)
             }
         };
         let relaxed = material.prony.long_term();
@@ -220,16 +239,46 @@ impl Source<'_> {
             return Err(self.error(
                 span,
                 key,
-                "no relaxed modulus: the material has E∞ = 0 (no equilibrium modulus), but the \
-                 static leak problem takes the relaxed modulus E∞ (DESIGN §6); give a \
-                 long_term_modulus > 0",
+                format!(
+                    "no relaxed modulus: the material ({}) has E∞ = 0 (no equilibrium modulus), \
+                     but the static leak problem takes the relaxed modulus E∞ (DESIGN §6); give \
+                     a long_term_modulus > 0",
+                    material.name
+                ),
             ));
         }
         let elastic = Elastic {
             youngs_modulus: relaxed,
             poisson_ratio: material.poisson_ratio,
         };
-        Ok((material, elastic))
+        Ok((material, elastic, asperity))
+    }
+
+    /// `material.asperity_modulus`: `"relaxed"` (default), `"instantaneous"`, `"follow"`, or a
+    /// fixed modulus (`"3 MPa"`, or a bare number in Pa).
+    fn asperity_modulus(&self, raw: &RawMaterial) -> Result<AsperityModulus, ScenarioError> {
+        let Some(q) = &raw.asperity_modulus else {
+            return Ok(AsperityModulus::Relaxed);
+        };
+        if let RawQuantity::Text(text) = q.get_ref() {
+            match text.trim() {
+                "relaxed" => return Ok(AsperityModulus::Relaxed),
+                "instantaneous" => return Ok(AsperityModulus::Instantaneous),
+                "follow" => return Ok(AsperityModulus::Follow),
+                word if word.chars().next().is_some_and(char::is_alphabetic) => {
+                    return Err(self.error(
+                        q.span(),
+                        ASPERITY_MODULUS.key,
+                        format!(
+                            "must be \"relaxed\", \"instantaneous\", \"follow\" or a modulus \
+                             such as \"3 MPa\", got {word:?}"
+                        ),
+                    ));
+                }
+                _ => {}
+            }
+        }
+        Ok(AsperityModulus::Fixed(self.quantity(q, &ASPERITY_MODULUS)?))
     }
 
     /// A `[material]` table (not a `library` reference) → a checked [`Material`].
@@ -244,6 +293,14 @@ impl Source<'_> {
                 id.span(),
                 "material.library",
                 "a material file cannot refer to a library material; `library` is for scenarios",
+            ));
+        }
+        if let (Some(q), Origin::Library | Origin::File { .. }) = (&raw.asperity_modulus, origin) {
+            return Err(self.error(
+                q.span(),
+                ASPERITY_MODULUS.key,
+                "asperity_modulus is a scenario option, not a property of the compound; set it \
+                 in the scenario's [material] table",
             ));
         }
         let name = self.material_name(table, origin)?;
@@ -489,7 +546,11 @@ impl Source<'_> {
 
     /// An absolute temperature [K]: a bare number in kelvin, or a string with a unit
     /// (`"23 C"`, `"296.15 K"`, `"73.4 F"`); must be above absolute zero.
-    fn absolute_temperature(&self, raw: &Quantity, key: &str) -> Result<f64, ScenarioError> {
+    pub(super) fn absolute_temperature(
+        &self,
+        raw: &Quantity,
+        key: &str,
+    ) -> Result<f64, ScenarioError> {
         let kelvin = match raw.get_ref() {
             RawQuantity::Number(v) => *v,
             RawQuantity::Text(text) => units::parse_temperature(text)
@@ -589,6 +650,7 @@ fn present_keys(raw: &RawMaterial) -> Vec<(&'static str, Range<usize>)> {
         ("thermal_expansion", quantity(&raw.thermal_expansion)),
         ("ageing", raw.ageing.as_ref().map(Spanned::span)),
         ("provenance", raw.provenance.as_ref().map(Spanned::span)),
+        ("asperity_modulus", quantity(&raw.asperity_modulus)),
     ]
     .into_iter()
     .filter_map(|(key, span)| Some((key, span?)))

@@ -4,18 +4,23 @@
 //! 1. `raw`: serde reads the TOML into one struct per table, every value wrapped in
 //!    [`toml::Spanned`] and unknown keys rejected;
 //! 2. `validate`: every quantity is converted to SI ("10 MPa" → 1e7; a bare number is
-//!    already SI) and checked against its range once, giving a [`leak::StaticProblem`].
+//!    already SI) and checked against its range once, giving a [`leak::StaticProblem`] and
+//!    a [`simulate::LifeProblem`] (`life`: the O-ring/flat seal, `[environment]`,
+//!    `[failure]`, `[ageing]`, `[simulation]`).
 //!
 //! Every error is a [`ScenarioError`] naming the file, the line and the key, e.g.
 //! `scenarios/x.toml:7: surface.hurst_exponent: must lie strictly between 0 and 1, got 1.2`.
 //! The keys are documented in README.md, "Scenario file reference".
 //!
 //! [`leak::StaticProblem`]: crate::leak::StaticProblem
+//! [`simulate::LifeProblem`]: crate::simulate::LifeProblem
 
 mod error;
 pub mod figure_set;
 pub mod fit_data;
+mod history;
 pub mod library;
+pub mod life;
 mod material;
 mod psd;
 mod raw;
@@ -26,6 +31,7 @@ pub use material::{PARAMETERS, load_material_file, material_from_str};
 
 use crate::leak::StaticProblem;
 use crate::material::Material;
+use crate::simulate::LifeProblem;
 use error::Source;
 use raw::RawScenario;
 use std::path::{Path, PathBuf};
@@ -40,8 +46,13 @@ pub struct Scenario {
     /// The rubber (`[material]`: inline, or a library compound).
     pub material: Material,
     /// The static leak problem of the seal; its elastic constants are the material's relaxed
-    /// modulus E∞ and ν.
+    /// modulus E∞ and ν. For an O-ring its flat seal is the central strip right after
+    /// installation (Hertz peak pressure of Lindley's force with E0, Lindley's contact width,
+    /// sealing length π D).
     pub problem: StaticProblem,
+    /// The seal-life problem (`sealsim run`): O-ring or flat seal, loading, environment,
+    /// ageing, failure criteria and time grid; 16 strips across an O-ring's profile.
+    pub life: LifeProblem,
 }
 
 impl Scenario {
@@ -54,14 +65,40 @@ impl Scenario {
     /// Validates scenario `text` as if it had been read from `path` (used for the messages,
     /// the default name and to resolve a relative `psd_file`; `path` itself is not read).
     pub fn from_str(text: &str, path: &Path) -> Result<Scenario, ScenarioError> {
+        Scenario::validate(text, path, None)
+    }
+
+    /// Reads the scenario file at `path` with `material` in place of the compound its
+    /// `[material]` table gives (the table's `asperity_modulus` still applies); used by
+    /// `sealsim compare`. Everything that depends on the material (the environment's default
+    /// temperature, the thermal strain, the ageing defaults) is validated against `material`.
+    pub fn load_with_material(path: &Path, material: &Material) -> Result<Scenario, ScenarioError> {
+        Scenario::validate(&read(path)?, path, Some(material))
+    }
+
+    /// [`Scenario::from_str`] with an optional replacement material.
+    pub fn from_str_with_material(
+        text: &str,
+        path: &Path,
+        material: &Material,
+    ) -> Result<Scenario, ScenarioError> {
+        Scenario::validate(text, path, Some(material))
+    }
+
+    fn validate(
+        text: &str,
+        path: &Path,
+        replacement: Option<&Material>,
+    ) -> Result<Scenario, ScenarioError> {
         let source = Source { path, text };
         let raw: RawScenario = source.deserialize()?;
-        let validated = source.scenario(&raw)?;
+        let validated = source.scenario(&raw, replacement)?;
         Ok(Scenario {
             name: validated.name,
             path: path.to_path_buf(),
             material: validated.material,
             problem: validated.problem,
+            life: validated.life,
         })
     }
 }

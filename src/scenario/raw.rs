@@ -61,11 +61,25 @@ pub(super) struct RawScenario {
     pub fluid: Spanned<RawFluid>,
     pub seal: Spanned<RawSeal>,
     pub model: Option<Spanned<RawModel>>,
+    pub environment: Option<Spanned<RawEnvironment>>,
+    pub failure: Option<Spanned<RawFailure>>,
+    pub ageing: Option<Spanned<RawScenarioAgeing>>,
+    pub simulation: Option<Spanned<RawSimulation>>,
 }
 
 impl RawScenario {
     /// Top-level keys that are tables (a missing one is reported as a missing table).
-    pub const TABLES: &[&str] = &["material", "surface", "fluid", "seal", "model"];
+    pub const TABLES: &[&str] = &[
+        "material",
+        "surface",
+        "fluid",
+        "seal",
+        "model",
+        "environment",
+        "failure",
+        "ageing",
+        "simulation",
+    ];
 }
 
 /// `[material]`: the rubber compound (schema in [`crate::material::compound`]): a library
@@ -89,6 +103,10 @@ pub(super) struct RawMaterial {
     pub ageing: Option<Spanned<RawAgeing>>,
     /// Parameter key → where its value came from.
     pub provenance: Option<Spanned<BTreeMap<String, Spanned<String>>>>,
+    /// Scenario option (not a property of the compound): which modulus the asperity contact
+    /// sees — `"relaxed"`, `"instantaneous"`, `"follow"` or a modulus such as `"3 MPa"`.
+    /// Refused in material files.
+    pub asperity_modulus: Option<Quantity>,
 }
 
 /// One `prony` entry: `{ modulus = "6 MPa", tau = "1000 h" }`.
@@ -148,13 +166,61 @@ pub(super) struct RawFluid {
     pub pressure_difference: Quantity,
 }
 
-/// `[seal]`: a flat seal.
+/// `[seal]`: a flat seal (`nominal_pressure`, `width`, `length`) or an O-ring
+/// (`cross_section`, `mean_diameter`, `squeeze`, optional thermal strain); which keys belong
+/// to which `kind` is checked in validation.
 #[derive(Debug, serde::Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct RawSeal {
-    pub nominal_pressure: Quantity,
-    pub width: Quantity,
-    pub length: Quantity,
+    pub kind: Option<Spanned<String>>,
+    pub nominal_pressure: Option<Quantity>,
+    pub width: Option<Quantity>,
+    pub length: Option<Quantity>,
+    pub cross_section: Option<Quantity>,
+    pub mean_diameter: Option<Quantity>,
+    pub squeeze: Option<Quantity>,
+    pub loading: Option<Spanned<String>>,
+    pub housing_expansion: Option<Quantity>,
+    pub installation_temperature: Option<Quantity>,
+}
+
+/// `[environment]`: the temperature history (constant, a CSV table, plus cycles).
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawEnvironment {
+    pub temperature: Option<Quantity>,
+    pub history: Option<Spanned<String>>,
+    pub daily_amplitude: Option<Quantity>,
+    pub yearly_amplitude: Option<Quantity>,
+}
+
+/// `[failure]`: any subset of the criteria.
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawFailure {
+    pub max_leak_rate: Option<Quantity>,
+    pub max_leaked_volume: Option<Quantity>,
+    pub min_retained_force: Option<Quantity>,
+    pub lift_off: Option<Spanned<bool>>,
+}
+
+/// A scenario's `[ageing]`: each constant defaults to the material's `[material.ageing]`.
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawScenarioAgeing {
+    pub activation_energy: Option<Quantity>,
+    pub rate: Option<Quantity>,
+    pub reference_temperature: Option<Quantity>,
+}
+
+/// `[simulation]`: the time grid and the fidelity of the life run.
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawSimulation {
+    pub duration: Option<Quantity>,
+    pub start: Option<Quantity>,
+    pub points_per_decade: Option<Quantity>,
+    pub fidelity: Option<Spanned<String>>,
 }
 
 /// `[model]`: optional settings of the critical-junction theory.

@@ -5,15 +5,19 @@
 //! number.
 
 use super::error::{ScenarioError, Source};
-use super::raw::{Quantity, RawFluid, RawModel, RawQuantity, RawScenario, RawSeal, RawSurface};
+use super::raw::{Quantity, RawFluid, RawModel, RawQuantity, RawScenario, RawSurface};
 use super::{psd, show};
 use crate::contact::ContactSettings;
 use crate::leak::{FlatSeal, Fluid, StaticProblem};
 use crate::material::Material;
+use crate::seal::{Profile, SealGeometry};
+use crate::simulate::LifeProblem;
 use crate::surface::Spectrum;
 use crate::units::{self, Dimension};
-use std::path::PathBuf;
 use toml::Spanned;
+
+/// Gauss–Legendre points across an O-ring's Hertz profile (strips in series) in a life run.
+pub const STRIPS: usize = 16;
 
 /// The values a key accepts (all of them also finite).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -119,14 +123,6 @@ const PRESSURE_DIFFERENCE: Field = field(
     "Pa",
     Bound::NonNegative,
 );
-const NOMINAL_PRESSURE: Field = field(
-    "seal.nominal_pressure",
-    Dimension::PRESSURE,
-    "Pa",
-    Bound::Positive,
-);
-const WIDTH: Field = field("seal.width", Dimension::LENGTH, "m", Bound::Positive);
-const LENGTH: Field = field("seal.length", Dimension::LENGTH, "m", Bound::Positive);
 const PERCOLATION_THRESHOLD: Field = field(
     "model.percolation_threshold",
     Dimension::DIMENSIONLESS,
@@ -155,24 +151,54 @@ pub(super) struct Validated {
     pub name: String,
     pub material: Material,
     pub problem: StaticProblem,
+    pub life: LifeProblem,
 }
 
 impl Source<'_> {
-    /// Checks the whole file.
-    pub fn scenario(&self, raw: &RawScenario) -> Result<Validated, ScenarioError> {
+    /// Checks the whole file; with `replacement`, that compound stands in for the one the
+    /// `[material]` table gives (`sealsim compare`).
+    pub fn scenario(
+        &self,
+        raw: &RawScenario,
+        replacement: Option<&Material>,
+    ) -> Result<Validated, ScenarioError> {
         let name = raw
             .name
             .as_ref()
             .map_or_else(|| self.file_stem(), |n| n.get_ref().clone());
         // An inline material without a name is called after the scenario.
-        let (material, elastic) = self.scenario_material(&raw.material, &name)?;
+        let (material, elastic, asperity_modulus) =
+            self.scenario_material(&raw.material, &name, replacement)?;
         let spectrum = self.surface(&raw.surface)?;
         let fluid = self.fluid(raw.fluid.get_ref())?;
-        let seal = self.seal(raw.seal.get_ref())?;
+        let seal = self.seal(&raw.seal)?;
         let (contact, shape_factor) = match &raw.model {
             Some(model) => self.model(model.get_ref())?,
             None => (ContactSettings::default(), DEFAULT_SHAPE_FACTOR),
         };
+        let environment = self.environment(raw.environment.as_ref(), &material)?;
+        let thermal_strain = self.thermal_strain(&seal, &material, &environment)?;
+        let ageing = self.scenario_ageing(raw.ageing.as_ref(), &material)?;
+        let failure = self.failure(raw.failure.as_ref())?;
+        let (time, fidelity) = self.simulation(raw.simulation.as_ref())?;
+        let life = LifeProblem {
+            material: material.clone(),
+            asperity_modulus,
+            spectrum: spectrum.clone(),
+            contact,
+            shape_factor,
+            fluid,
+            geometry: seal.geometry,
+            loading: seal.loading,
+            environment,
+            thermal_strain,
+            ageing,
+            failure,
+            time,
+            fidelity,
+            strips: STRIPS,
+        };
+        let seal = static_seal(&life);
         Ok(Validated {
             name,
             material,
@@ -184,6 +210,7 @@ impl Source<'_> {
                 contact,
                 shape_factor,
             },
+            life,
         })
     }
 
@@ -202,7 +229,7 @@ impl Source<'_> {
     }
 
     /// [`Source::quantity`] for a key that may be absent.
-    fn optional(
+    pub(super) fn optional(
         &self,
         raw: Option<&Quantity>,
         field: &Field,
@@ -214,14 +241,6 @@ impl Source<'_> {
         Ok(Fluid {
             viscosity: self.quantity(&raw.viscosity, &VISCOSITY)?,
             pressure_difference: self.quantity(&raw.pressure_difference, &PRESSURE_DIFFERENCE)?,
-        })
-    }
-
-    fn seal(&self, raw: &RawSeal) -> Result<FlatSeal, ScenarioError> {
-        Ok(FlatSeal {
-            nominal_pressure: self.quantity(&raw.nominal_pressure, &NOMINAL_PRESSURE)?,
-            width: self.quantity(&raw.width, &WIDTH)?,
-            length: self.quantity(&raw.length, &LENGTH)?,
         })
     }
 
@@ -323,7 +342,7 @@ impl Source<'_> {
             }
         }
         let line = self.line(file.span().start);
-        let psd_path = self.psd_path(file.get_ref());
+        let psd_path = self.relative_path(file.get_ref());
         let text = std::fs::read_to_string(&psd_path).map_err(|source| ScenarioError::PsdRead {
             psd: psd_path.clone(),
             scenario: self.path.to_path_buf(),
@@ -354,12 +373,31 @@ impl Source<'_> {
             .restricted(lo, hi)
             .map_err(|e| self.error(span, key, e.to_string()))
     }
+}
 
-    /// `psd_file` resolved against the scenario file's directory.
-    fn psd_path(&self, file: &str) -> PathBuf {
-        match self.path.parent() {
-            Some(dir) => dir.join(file),
-            None => PathBuf::from(file),
+/// The flat seal of the static leak problem (`sealsim leak`, `figures`). A flat scenario's
+/// own seal; for an O-ring, the uniform equivalent of its central strip right after
+/// installation: the Hertz peak pressure of Lindley's force with the instantaneous modulus E0
+/// as P0, Lindley's contact width as L_x and the circumference π D as L_y (`sealsim run`
+/// integrates the whole profile as strips in series).
+fn static_seal(life: &LifeProblem) -> FlatSeal {
+    match life.geometry {
+        SealGeometry::Flat {
+            nominal_pressure,
+            width,
+            length,
+        } => FlatSeal {
+            nominal_pressure,
+            width,
+            length,
+        },
+        SealGeometry::ORing { .. } => {
+            let profile: Profile = life.initial_profile();
+            FlatSeal {
+                nominal_pressure: profile.peak(),
+                width: profile.width(),
+                length: life.geometry.sealing_length(),
+            }
         }
     }
 }

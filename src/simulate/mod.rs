@@ -10,8 +10,10 @@
 //! in time.
 //!
 //! Steps are log-uniform in time from `start` (with an installation row at t = 0);
-//! temperature cycles add internal sub-steps (eight per shortest period) so that the strain is
-//! piecewise linear in reduced time within each step, as the exact update requires.
+//! temperature cycles add internal sub-steps (eight per shortest period), and with a thermal
+//! strain each sub-step is split further until a_T changes by at most half a decade within it,
+//! so that the strain is close to piecewise linear in reduced time, as the exact update
+//! requires.
 
 pub mod events;
 
@@ -23,6 +25,18 @@ use crate::numerics::quadrature::gauss_legendre;
 use crate::seal::{Profile, SealGeometry, oring_contact_width, squeeze_function};
 use crate::surface::Spectrum;
 pub use events::{FailureCriteria, FailureEvent, FailureMode};
+
+/// Largest temperature change within one internal step when the squeeze depends on the
+/// temperature [K].
+const MAX_STEP_TEMPERATURE: f64 = 10.0;
+/// Largest change of log10 a_T within one internal step when the squeeze depends on the
+/// temperature.
+const MAX_STEP_LOG_SHIFT: f64 = 0.5;
+/// Largest temperature change within one internal step that crosses the WLF frozen limit
+/// (where a_T is infinite at one end) [K].
+const MAX_STEP_TEMPERATURE_FROZEN_EDGE: f64 = 1.0;
+/// Upper bound of the pieces one internal step is split into for the thermal strain.
+const MAX_THERMAL_PIECES: f64 = 10_000.0;
 
 /// Which modulus the asperity contact sees (DESIGN §6).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -103,6 +117,20 @@ pub struct LifeProblem {
     pub fidelity: Fidelity,
     /// Gauss–Legendre points across the Hertz profile (strips in series).
     pub strips: usize,
+}
+
+impl LifeProblem {
+    /// The nominal pressure profile right after installation (t = 0): the instantaneous
+    /// modulus E0 on the load at the temperature T(0) (Lindley force and Hertz profile for an
+    /// O-ring, including the thermal strain at T(0); the given nominal pressure for a flat seal).
+    pub fn initial_profile(&self) -> Profile {
+        let t0 = self.environment.at(0.0);
+        profile_for(
+            self,
+            self.material.prony.instantaneous() * load_variable(self, t0),
+            t0,
+        )
+    }
 }
 
 /// State of the interface at one time.
@@ -282,10 +310,8 @@ impl<'a> Simulator<'a> {
     /// Prepares the run (builds the contact table when the fidelity asks for it).
     pub fn new(problem: &'a LifeProblem) -> Self {
         let path = ContactPath::new(&problem.spectrum, problem.contact, problem.fidelity);
-        let t0 = problem.environment.at(0.0);
-        let load0 = load_variable(problem, t0);
-        let initial_profile =
-            profile_for(problem, problem.material.prony.instantaneous() * load0, t0);
+        let load0 = load_variable(problem, problem.environment.at(0.0));
+        let initial_profile = problem.initial_profile();
         Simulator {
             problem,
             path,
@@ -361,7 +387,55 @@ impl<'a> Simulator<'a> {
         v.push(to);
         v.sort_by(f64::total_cmp);
         v.dedup();
-        v
+        self.thermal_substeps(from, v)
+    }
+
+    /// With a temperature-dependent squeeze (thermal strain under displacement loading), the
+    /// strain is linear in *time* within a piece, while the exact Prony update wants it linear
+    /// in *reduced* time: each piece is split so that within it log10 a_T changes by at most
+    /// [`MAX_STEP_LOG_SHIFT`] (a_T nearly constant, so ξ nearly linear in t) and the
+    /// temperature by at most [`MAX_STEP_TEMPERATURE`]. Without thermal strain nothing is
+    /// added. (Without this split a 65 K cold snap within one step, a_T changing by 11 decades,
+    /// was treated as if the unloading happened at the warm end and relaxed away.)
+    fn thermal_substeps(&self, from: f64, ends: Vec<f64>) -> Vec<f64> {
+        let p = self.problem;
+        if p.thermal_strain.is_none()
+            || p.loading != Loading::Displacement
+            || p.environment.is_constant()
+        {
+            return ends;
+        }
+        let temperature = |t: f64| p.environment.at(t);
+        let log_shift = |t: f64| p.material.shift.log10_factor(temperature(t));
+        let mut out = Vec::with_capacity(ends.len());
+        let mut a = from;
+        for b in ends {
+            let m = 0.5 * (a + b);
+            let (ta, tm, tb) = (temperature(a), temperature(m), temperature(b));
+            let d_temperature = (tb - ta)
+                .abs()
+                .max(2.0 * (tm - ta).abs())
+                .max(2.0 * (tb - tm).abs());
+            let (la, lb) = (log_shift(a), log_shift(b));
+            let by_shift = match (la.is_finite(), lb.is_finite()) {
+                (true, true) => (lb - la).abs() / MAX_STEP_LOG_SHIFT,
+                // frozen at one end: a_T diverges inside, follow the temperature closely
+                (true, false) | (false, true) => d_temperature / MAX_STEP_TEMPERATURE_FROZEN_EDGE,
+                // frozen throughout: nothing relaxes, the update is exact
+                (false, false) => 0.0,
+            };
+            let pieces = (d_temperature / MAX_STEP_TEMPERATURE)
+                .max(by_shift)
+                .ceil()
+                .clamp(1.0, MAX_THERMAL_PIECES);
+            let n = pieces as usize;
+            for k in 1..n {
+                out.push(a + (b - a) * k as f64 / pieces);
+            }
+            out.push(b);
+            a = b;
+        }
+        out
     }
 
     /// Advances the mechanical state to time `t` (exact for strain linear in ξ over the step).

@@ -1,0 +1,117 @@
+//! `sealsim run`: the seal-life simulation of one scenario — the history of sealing force,
+//! contact and leak rate over the seal's life, and when (and how) it fails.
+//!
+//! A readable summary always goes to standard output and the run's validity warnings to
+//! standard error (`warning: …`); the history CSV (`-o`), the summary JSON (`--summary`) and
+//! the leak-rate chart (`--plot`) are written only when asked for, each atomically, and only
+//! after the whole run has succeeded (on bad input nothing is written).
+
+use super::{CliError, write_output};
+use crate::leak::Fidelity;
+use crate::report::life::{
+    Summary, has_positive_leak_rate, history_table, human_summary, leak_rate_chart,
+};
+use crate::scenario::Scenario;
+use crate::scenario::life::parse_fidelity;
+use crate::simulate::{LifeResult, simulate};
+use clap::Args;
+use std::path::PathBuf;
+
+/// Arguments of `sealsim run`.
+#[derive(Debug, Clone, Args)]
+#[command(
+    after_help = "History columns (CSV, SI units): time_s, temperature_K, reduced_time_s, \
+    shift_factor (blank when frozen), sealing_force_N_per_m, peak_pressure_Pa, mean_pressure_Pa, \
+    contact_width_m, u_c_m (blank when sealed at the peak), leak_rate_m3_per_s, \
+    leaked_volume_m3, state (leaking|sealed|lift_off). The first row is the installation, t = 0.\n\
+    An O-ring's leak rate is integrated over its Hertz profile as strips in series; `sealsim \
+    leak` on the same scenario evaluates only the central strip right after installation."
+)]
+pub struct RunArgs {
+    /// Scenario file (TOML).
+    #[arg(value_name = "SCENARIO")]
+    pub scenario: PathBuf,
+
+    /// Write the history CSV to FILE (atomically); without it no history is written.
+    #[arg(short, long, value_name = "FILE.csv")]
+    pub output: Option<PathBuf>,
+
+    /// Write the summary as JSON to FILE (atomically).
+    #[arg(long, value_name = "FILE.json")]
+    pub summary: Option<PathBuf>,
+
+    /// Write a log–log chart of the leak rate against time to FILE (SVG).
+    #[arg(long, value_name = "FILE.svg")]
+    pub plot: Option<PathBuf>,
+
+    /// Override the scenario's simulation.fidelity: critical-junction (= table) or exact.
+    #[arg(long, value_name = "LEVEL", value_parser = parse_fidelity)]
+    pub fidelity: Option<Fidelity>,
+}
+
+/// Runs `sealsim run`.
+pub fn run(args: RunArgs) -> Result<(), CliError> {
+    let mut scenario = Scenario::load(&args.scenario)?;
+    if let Some(fidelity) = args.fidelity {
+        scenario.life.fidelity = fidelity;
+    }
+    let result = simulate(&scenario.life);
+    let file = args.scenario.display().to_string();
+
+    // Everything is rendered before anything is written.
+    let csv = args
+        .output
+        .as_ref()
+        .map(|_| history_table(&result))
+        .transpose()?;
+    let json = args
+        .summary
+        .as_ref()
+        .map(|_| Summary::new(&scenario.name, &file, &scenario.life, &result).to_json())
+        .transpose()?;
+    let svg = match &args.plot {
+        Some(path) => plot(&scenario.name, &result, path)?,
+        None => None,
+    };
+
+    print_warnings(None, &result);
+    for (path, bytes) in [
+        (&args.output, csv.as_deref()),
+        (&args.summary, json.as_deref()),
+        (&args.plot, svg.as_deref()),
+    ] {
+        if let (Some(path), Some(bytes)) = (path, bytes) {
+            write_output(Some(path), bytes.as_bytes())?;
+        }
+    }
+    let text = human_summary(&scenario.name, &file, &scenario.life, &result);
+    write_output(None, text.as_bytes())
+}
+
+/// The SVG of the leak-rate history, or `None` (with a warning) when the leak rate is zero
+/// throughout: there is nothing to draw on a log axis.
+fn plot(
+    title: &str,
+    result: &LifeResult,
+    path: &std::path::Path,
+) -> Result<Option<String>, CliError> {
+    if !has_positive_leak_rate([result]) {
+        eprintln!(
+            "warning: the leak rate is zero throughout (sealed): no chart written to {}",
+            path.display()
+        );
+        return Ok(None);
+    }
+    leak_rate_chart(title, [("leak rate", result)])
+        .to_svg()
+        .map(Some)
+        .map_err(|e| CliError::Internal(e.to_string()))
+}
+
+/// Prints the run's warnings to stderr, `context` (e.g. a compound's id) leading each line.
+pub(super) fn print_warnings(context: Option<&str>, result: &LifeResult) {
+    let lead = context.map(|c| format!("{c}: ")).unwrap_or_default();
+    for w in &result.warnings {
+        eprintln!("warning: {lead}{w}");
+    }
+}

@@ -1,0 +1,636 @@
+//! Reports of seal-life runs (`sealsim run`, `sealsim compare`): the history CSV, the summary
+//! JSON, the readable terminal summary, and the comparison table.
+//!
+//! As everywhere in [`crate::report`], numbers go out in SI units (the column and field names
+//! carry them) in shortest round-trip scientific notation, every one checked to be finite
+//! first: a non-finite value is a bug, reported as [`ReportError::NonFinite`], and nothing is
+//! written.
+
+use super::ReportError;
+use super::csv::number;
+use super::materials::human;
+use super::plot::{LogLogChart, Series};
+use crate::leak::Fidelity;
+use crate::material::shift::{DAY, YEAR};
+use crate::material::{Material, Status};
+use crate::seal::SealGeometry;
+use crate::simulate::{AsperityModulus, LifeProblem, LifeResult, Loading};
+use serde::Serialize;
+
+/// Columns of the history CSV, in order (units in the names).
+///
+/// * `shift_factor` a_T is blank where the rubber is frozen (WLF at or below T_ref − C2,
+///   a_T = ∞) or a_T overflows a double;
+/// * `u_c_m`, the critical constriction at the peak pressure, is blank where that strip is
+///   sealed (no percolating channel);
+/// * `state` is `leaking`, `sealed` or `lift_off` (the peak contact pressure is below ΔP:
+///   the seal opens and the leak rate shown is the model's, which no longer applies).
+pub const HISTORY_COLUMNS: [&str; 12] = [
+    "time_s",
+    "temperature_K",
+    "reduced_time_s",
+    "shift_factor",
+    "sealing_force_N_per_m",
+    "peak_pressure_Pa",
+    "mean_pressure_Pa",
+    "contact_width_m",
+    "u_c_m",
+    "leak_rate_m3_per_s",
+    "leaked_volume_m3",
+    "state",
+];
+
+/// The history of a life run as CSV: the header and one row per output time (t = 0, the
+/// installation, first).
+pub fn history_table(result: &LifeResult) -> Result<String, ReportError> {
+    let mut writer = ::csv::Writer::from_writer(Vec::new());
+    writer.write_record(HISTORY_COLUMNS).map_err(csv_error)?;
+    for (i, r) in result.rows.iter().enumerate() {
+        let row = i + 1;
+        let cell = |column: usize, value: f64| number(row, HISTORY_COLUMNS[column], value);
+        let optional = |column: usize, value: Option<f64>| {
+            value.map_or(Ok(String::new()), |v| cell(column, v))
+        };
+        let shift = (r.shift_factor.is_finite()).then_some(r.shift_factor);
+        let record = [
+            cell(0, r.time)?,
+            cell(1, r.temperature)?,
+            cell(2, r.reduced_time)?,
+            optional(3, shift)?,
+            cell(4, r.sealing_force)?,
+            cell(5, r.peak_pressure)?,
+            cell(6, r.mean_pressure)?,
+            cell(7, r.contact_width)?,
+            optional(8, r.u_c)?,
+            cell(9, r.leak_rate)?,
+            cell(10, r.leaked_volume)?,
+            r.state.as_str().to_owned(),
+        ];
+        writer.write_record(record).map_err(csv_error)?;
+    }
+    finish(writer)
+}
+
+/// The machine-readable summary of a run (`--summary`), serialised as JSON.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Summary {
+    /// The scenario's name.
+    pub scenario: String,
+    /// The scenario file, as given.
+    pub scenario_file: String,
+    /// The material's name.
+    pub material: String,
+    /// `published`, `illustrative` or `user`.
+    pub material_status: String,
+    /// `flat` or `o-ring`.
+    pub seal: String,
+    /// `displacement` or `force`.
+    pub loading: String,
+    /// `critical-junction` (contact table) or `exact`.
+    pub fidelity: String,
+    /// Time to failure [s]; `null` when the seal survives the whole run.
+    pub time_to_failure_s: Option<f64>,
+    /// `leak_rate`, `leaked_volume`, `retained_force`, `lift_off` or `none`.
+    pub failure_mode: String,
+    /// Leak rate right after installation (t = 0) [m³/s].
+    pub initial_leak_rate_m3_per_s: f64,
+    /// Leak rate at the end of the run [m³/s].
+    pub final_leak_rate_m3_per_s: f64,
+    /// Volume leaked over the whole run [m³].
+    pub leaked_volume_m3: f64,
+    /// Sealing force per unit length right after installation [N/m].
+    #[serde(rename = "initial_sealing_force_N_per_m")]
+    pub initial_sealing_force_n_per_m: f64,
+    /// Sealing force per unit length at the end of the run [N/m].
+    #[serde(rename = "final_sealing_force_N_per_m")]
+    pub final_sealing_force_n_per_m: f64,
+    /// Length of the run [s].
+    pub duration_s: f64,
+    /// The validity warnings of the run, as printed on stderr (without `warning: `).
+    pub warnings: Vec<String>,
+}
+
+impl Summary {
+    /// The summary of `result`, a run of `problem` from scenario `scenario` (file `file`).
+    pub fn new(scenario: &str, file: &str, problem: &LifeProblem, result: &LifeResult) -> Self {
+        let first = result.rows.first();
+        let last = result.rows.last();
+        Summary {
+            scenario: scenario.to_owned(),
+            scenario_file: file.to_owned(),
+            material: problem.material.name.clone(),
+            material_status: problem.material.status.as_str().to_owned(),
+            seal: seal_kind(&problem.geometry).to_owned(),
+            loading: loading_name(problem.loading).to_owned(),
+            fidelity: fidelity_name(problem.fidelity).to_owned(),
+            time_to_failure_s: result.failure.map(|f| f.time),
+            failure_mode: failure_mode(result).to_owned(),
+            initial_leak_rate_m3_per_s: result.initial_leak_rate(),
+            final_leak_rate_m3_per_s: result.final_leak_rate(),
+            leaked_volume_m3: result.leaked_volume(),
+            initial_sealing_force_n_per_m: first.map_or(0.0, |r| r.sealing_force),
+            final_sealing_force_n_per_m: last.map_or(0.0, |r| r.sealing_force),
+            duration_s: problem.time.duration,
+            warnings: result.warnings.iter().map(ToString::to_string).collect(),
+        }
+    }
+
+    /// The summary as pretty-printed JSON (with a final newline); every number checked to be
+    /// finite.
+    pub fn to_json(&self) -> Result<String, ReportError> {
+        let values = [
+            ("time_to_failure_s", self.time_to_failure_s.unwrap_or(0.0)),
+            (
+                "initial_leak_rate_m3_per_s",
+                self.initial_leak_rate_m3_per_s,
+            ),
+            ("final_leak_rate_m3_per_s", self.final_leak_rate_m3_per_s),
+            ("leaked_volume_m3", self.leaked_volume_m3),
+            (
+                "initial_sealing_force_n_per_m",
+                self.initial_sealing_force_n_per_m,
+            ),
+            (
+                "final_sealing_force_n_per_m",
+                self.final_sealing_force_n_per_m,
+            ),
+            ("duration_s", self.duration_s),
+        ];
+        for (column, value) in values {
+            if !value.is_finite() {
+                return Err(ReportError::NonFinite {
+                    row: 1,
+                    column,
+                    value,
+                });
+            }
+        }
+        let mut text =
+            serde_json::to_string_pretty(self).map_err(|e| ReportError::Csv(e.to_string()))?;
+        text.push('\n');
+        Ok(text)
+    }
+}
+
+/// `leak_rate`, `leaked_volume`, `retained_force`, `lift_off`, or `none` when the seal
+/// survives.
+pub fn failure_mode(result: &LifeResult) -> &'static str {
+    result.failure.map_or("none", |f| f.mode.as_str())
+}
+
+fn seal_kind(geometry: &SealGeometry) -> &'static str {
+    match geometry {
+        SealGeometry::Flat { .. } => "flat",
+        SealGeometry::ORing { .. } => "o-ring",
+    }
+}
+
+fn loading_name(loading: Loading) -> &'static str {
+    match loading {
+        Loading::Displacement => "displacement",
+        Loading::Force => "force",
+    }
+}
+
+/// The scenario name of a fidelity (`critical-junction` is the contact table).
+pub fn fidelity_name(fidelity: Fidelity) -> &'static str {
+    match fidelity {
+        Fidelity::Table => "critical-junction",
+        Fidelity::Exact => "exact",
+    }
+}
+
+/// A duration in the unit a reader would use: s, min, h, days or years, 3 significant digits
+/// (`"45 s"`, `"12.5 min"`, `"3.2 days"`, `"17.4 years"`).
+pub fn human_time(seconds: f64) -> String {
+    let (value, unit) = if seconds < 120.0 {
+        (seconds, "s")
+    } else if seconds < 2.0 * 3600.0 {
+        (seconds / 60.0, "min")
+    } else if seconds < 2.0 * DAY {
+        (seconds / 3600.0, "h")
+    } else if seconds < 2.0 * YEAR {
+        (seconds / DAY, "days")
+    } else {
+        (seconds / YEAR, "years")
+    };
+    format!("{} {unit}", human(value, 3))
+}
+
+/// A volume flow with a more tangible second unit: `"1.2e-12 m³/s (0.0043 mL/h)"`.
+fn flow(q: f64) -> String {
+    if q == 0.0 {
+        return "0 m³/s".to_owned();
+    }
+    format!("{} m³/s ({} mL/h)", human(q, 3), human(q * 1e6 * 3600.0, 3))
+}
+
+/// `"80 °C (353.15 K)"`.
+fn celsius(kelvin: f64) -> String {
+    format!("{} °C", human(kelvin - 273.15, 4))
+}
+
+/// The readable summary of a run, for the terminal.
+pub fn human_summary(
+    scenario: &str,
+    file: &str,
+    problem: &LifeProblem,
+    result: &LifeResult,
+) -> String {
+    let mut out = String::new();
+    let mut line = |label: &str, text: String| {
+        out += &format!("{label:<15}{text}\n");
+    };
+    line("scenario", format!("{scenario} ({file})"));
+    let m: &Material = &problem.material;
+    line("material", format!("{} [{}]", m.name, m.status.as_str()));
+    if m.status == Status::Illustrative {
+        line(
+            "",
+            "!!! ILLUSTRATIVE material data: at least one number is estimated, not measured; \
+             the results show trends, they are NOT for design decisions !!!"
+                .to_owned(),
+        );
+    }
+    line("seal", seal_description(problem));
+    line(
+        "fluid",
+        format!(
+            "η = {} Pa·s, ΔP = {} MPa",
+            human(problem.fluid.viscosity, 3),
+            human(problem.fluid.pressure_difference / 1e6, 4)
+        ),
+    );
+    let env = &problem.environment;
+    line(
+        "temperature",
+        if env.is_constant() {
+            format!("{} (constant)", celsius(env.at(0.0)))
+        } else {
+            let (lo, hi) = env.range();
+            format!(
+                "varies between {} and {} (bounds); {} at t = 0",
+                celsius(lo),
+                celsius(hi),
+                celsius(env.at(0.0))
+            )
+        },
+    );
+    if let Some(ag) = problem.ageing {
+        line(
+            "ageing",
+            format!(
+                "Arrhenius chemical relaxation, k = {} 1/s at {}, Ea = {} kJ/mol",
+                human(ag.rate, 3),
+                celsius(ag.reference_temperature),
+                human(ag.activation_energy / 1e3, 3)
+            ),
+        );
+    }
+    let duration = human_time(problem.time.duration);
+    if let (Some(first), Some(last)) = (result.rows.first(), result.rows.last()) {
+        let retained = if first.sealing_force > 0.0 {
+            format!(
+                " ({} % retained)",
+                human(100.0 * last.sealing_force / first.sealing_force, 3)
+            )
+        } else {
+            String::new()
+        };
+        line(
+            "sealing force",
+            format!(
+                "{} N/mm at installation, {} N/mm after {duration}{retained}",
+                human(first.sealing_force / 1e3, 3),
+                human(last.sealing_force / 1e3, 3)
+            ),
+        );
+    }
+    line(
+        "leak rate",
+        format!(
+            "{} at installation, {} after {duration}",
+            flow(result.initial_leak_rate()),
+            flow(result.final_leak_rate())
+        ),
+    );
+    line(
+        "leaked volume",
+        format!(
+            "{} m³ ({} mL) in {duration}",
+            human(result.leaked_volume(), 3),
+            human(result.leaked_volume() * 1e6, 3)
+        ),
+    );
+    let verdict = match result.failure {
+        Some(f) if f.time == 0.0 => format!("FAILS at installation ({})", f.mode.as_str()),
+        Some(f) => format!(
+            "FAILS after {} (t = {} s) by {}",
+            human_time(f.time),
+            human(f.time, 6),
+            f.mode.as_str()
+        ),
+        None if problem.failure.is_empty() => {
+            format!("survives {duration} (no failure criterion set)")
+        }
+        None => format!("survives {duration}"),
+    };
+    line("result", verdict);
+    out
+}
+
+/// `"O-ring d = 3.53 mm, D = 50 mm, squeeze 20 %, displacement loading, asperity modulus relaxed"`.
+fn seal_description(problem: &LifeProblem) -> String {
+    let geometry = match problem.geometry {
+        SealGeometry::Flat {
+            nominal_pressure,
+            width,
+            length,
+        } => format!(
+            "flat, P0 = {} MPa over {} mm × {} mm",
+            human(nominal_pressure / 1e6, 4),
+            human(width * 1e3, 4),
+            human(length * 1e3, 4)
+        ),
+        SealGeometry::ORing {
+            cross_section,
+            mean_diameter,
+            squeeze,
+        } => format!(
+            "O-ring d = {} mm, D = {} mm, squeeze {} %",
+            human(cross_section * 1e3, 4),
+            human(mean_diameter * 1e3, 4),
+            human(squeeze * 100.0, 3)
+        ),
+    };
+    let asperity = match problem.asperity_modulus {
+        AsperityModulus::Relaxed => "relaxed (E∞)".to_owned(),
+        AsperityModulus::Instantaneous => "instantaneous (E0)".to_owned(),
+        AsperityModulus::Follow => "follow (the bulk's relaxation)".to_owned(),
+        AsperityModulus::Fixed(e) => format!("{} MPa", human(e / 1e6, 4)),
+    };
+    let thermal = match problem.thermal_strain {
+        Some(th) => format!(
+            ", housing expansion {} 1/K from {}",
+            human(th.housing_expansion, 3),
+            celsius(th.installation_temperature)
+        ),
+        None => String::new(),
+    };
+    format!(
+        "{geometry}, {} loading, asperity modulus {asperity}{thermal}",
+        loading_name(problem.loading)
+    )
+}
+
+/// Log–log chart of leak rate against time for one or more runs (zero rates and t = 0 are
+/// not drawn).
+pub fn leak_rate_chart<'a>(
+    title: &str,
+    runs: impl IntoIterator<Item = (&'a str, &'a LifeResult)>,
+) -> LogLogChart {
+    LogLogChart {
+        title: title.to_owned(),
+        x_label: "time [s]".into(),
+        y_label: "leak rate [m³/s]".into(),
+        series: runs
+            .into_iter()
+            .map(|(label, r)| Series {
+                label: label.to_owned(),
+                points: r.rows.iter().map(|row| (row.time, row.leak_rate)).collect(),
+            })
+            .collect(),
+    }
+}
+
+/// Whether a chart of `results` would have anything to draw (a positive leak rate after t = 0).
+pub fn has_positive_leak_rate<'a>(results: impl IntoIterator<Item = &'a LifeResult>) -> bool {
+    results.into_iter().any(|r| {
+        r.rows
+            .iter()
+            .any(|row| row.time > 0.0 && row.leak_rate > 0.0)
+    })
+}
+
+/// Columns of the comparison CSV.
+pub const COMPARE_COLUMNS: [&str; 8] = [
+    "material",
+    "name",
+    "status",
+    "time_to_failure_s",
+    "failure_mode",
+    "leak_rate_1day_m3_per_s",
+    "leak_rate_1year_m3_per_s",
+    "leak_rate_10years_m3_per_s",
+];
+
+/// The times of the comparison's leak-rate columns [s] with their labels.
+pub const COMPARE_TIMES: [(f64, &str); 3] =
+    [(DAY, "1 day"), (YEAR, "1 year"), (10.0 * YEAR, "10 years")];
+
+/// One compound of a comparison.
+#[derive(Debug, Clone)]
+pub struct CompareRow<'a> {
+    /// As given on the command line (library id or file path).
+    pub label: &'a str,
+    pub material: &'a Material,
+    pub result: &'a LifeResult,
+    /// Length of the run [s] (leak rates beyond it are blank).
+    pub duration: f64,
+}
+
+impl CompareRow<'_> {
+    /// Leak rates at [`COMPARE_TIMES`], `None` beyond the run.
+    fn leak_rates(&self) -> [Option<f64>; 3] {
+        COMPARE_TIMES.map(|(t, _)| {
+            (t <= self.duration)
+                .then(|| self.result.leak_rate_at(t))
+                .flatten()
+        })
+    }
+}
+
+/// The comparison as CSV, one row per compound.
+pub fn compare_table(rows: &[CompareRow<'_>]) -> Result<String, ReportError> {
+    let mut writer = ::csv::Writer::from_writer(Vec::new());
+    writer.write_record(COMPARE_COLUMNS).map_err(csv_error)?;
+    for (i, r) in rows.iter().enumerate() {
+        let row = i + 1;
+        let optional = |column: usize, value: Option<f64>| {
+            value.map_or(Ok(String::new()), |v| {
+                number(row, COMPARE_COLUMNS[column], v)
+            })
+        };
+        let [day, year, decade] = r.leak_rates();
+        let record = [
+            r.label.to_owned(),
+            r.material.name.clone(),
+            r.material.status.as_str().to_owned(),
+            optional(3, r.result.failure.map(|f| f.time))?,
+            failure_mode(r.result).to_owned(),
+            optional(5, day)?,
+            optional(6, year)?,
+            optional(7, decade)?,
+        ];
+        writer.write_record(record).map_err(csv_error)?;
+    }
+    finish(writer)
+}
+
+/// The comparison as an aligned text table for the terminal.
+pub fn compare_text(rows: &[CompareRow<'_>]) -> String {
+    let mut cells: Vec<Vec<String>> = vec![
+        [
+            "material",
+            "status",
+            "time to failure",
+            "mode",
+            "Q 1 day [m³/s]",
+            "Q 1 year [m³/s]",
+            "Q 10 years [m³/s]",
+        ]
+        .map(str::to_owned)
+        .to_vec(),
+    ];
+    for r in rows {
+        let rate = |q: Option<f64>| q.map_or_else(|| "-".to_owned(), |q| human(q, 3));
+        let [day, year, decade] = r.leak_rates();
+        cells.push(vec![
+            r.label.to_owned(),
+            r.material.status.as_str().to_owned(),
+            r.result
+                .failure
+                .map_or_else(|| "survives".to_owned(), |f| human_time(f.time)),
+            failure_mode(r.result).to_owned(),
+            rate(day),
+            rate(year),
+            rate(decade),
+        ]);
+    }
+    let columns = cells[0].len();
+    let width: Vec<usize> = (0..columns)
+        .map(|c| {
+            cells
+                .iter()
+                .map(|r| r[c].chars().count())
+                .max()
+                .unwrap_or(0)
+        })
+        .collect();
+    let mut out = String::new();
+    for row in &cells {
+        let line: Vec<String> = row
+            .iter()
+            .zip(&width)
+            .map(|(cell, w)| format!("{cell}{}", " ".repeat(w - cell.chars().count())))
+            .collect();
+        out += line.join("  ").trim_end();
+        out.push('\n');
+    }
+    out
+}
+
+fn finish(writer: ::csv::Writer<Vec<u8>>) -> Result<String, ReportError> {
+    let bytes = writer
+        .into_inner()
+        .map_err(|e| ReportError::Csv(e.to_string()))?;
+    String::from_utf8(bytes).map_err(|e| ReportError::Csv(e.to_string()))
+}
+
+fn csv_error(e: ::csv::Error) -> ReportError {
+    ReportError::Csv(e.to_string())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::simulate::{FailureEvent, FailureMode, HistoryRow, SealState};
+
+    fn row(time: f64, leak_rate: f64, shift_factor: f64, u_c: Option<f64>) -> HistoryRow {
+        HistoryRow {
+            time,
+            temperature: 353.15,
+            reduced_time: time * 10.0,
+            shift_factor,
+            sealing_force: 1000.0,
+            peak_pressure: 2e6,
+            mean_pressure: 1.5e6,
+            contact_width: 1e-3,
+            u_c,
+            leak_rate,
+            leaked_volume: leak_rate * time,
+            state: if u_c.is_some() {
+                SealState::Leaking
+            } else {
+                SealState::Sealed
+            },
+        }
+    }
+
+    fn result(rows: Vec<HistoryRow>) -> LifeResult {
+        LifeResult {
+            rows,
+            failure: Some(FailureEvent {
+                time: 2.5 * YEAR,
+                mode: FailureMode::LeakRate,
+            }),
+            warnings: Vec::new(),
+        }
+    }
+
+    #[test]
+    fn history_cells_are_round_trip_and_blank_when_undefined() {
+        let r = result(vec![
+            row(0.0, 1e-12, 0.1, Some(2e-7)),
+            row(10.0, 0.0, f64::INFINITY, None),
+        ]);
+        let text = history_table(&r).unwrap();
+        let lines: Vec<&str> = text.lines().collect();
+        assert_eq!(lines[0], HISTORY_COLUMNS.join(","));
+        assert_eq!(
+            lines[1],
+            "0e0,3.5315e2,0e0,1e-1,1e3,2e6,1.5e6,1e-3,2e-7,1e-12,0e0,leaking"
+        );
+        assert_eq!(
+            lines[2],
+            "1e1,3.5315e2,1e2,,1e3,2e6,1.5e6,1e-3,,0e0,0e0,sealed"
+        );
+        let bad = result(vec![row(0.0, f64::NAN, 1.0, None)]);
+        assert!(matches!(
+            history_table(&bad),
+            Err(ReportError::NonFinite {
+                column: "leak_rate_m3_per_s",
+                ..
+            })
+        ));
+    }
+
+    #[test]
+    fn human_times_pick_the_reader_unit() {
+        assert_eq!(human_time(45.0), "45 s");
+        assert_eq!(human_time(750.0), "12.5 min");
+        assert_eq!(human_time(5.0 * 3600.0), "5 h");
+        assert_eq!(human_time(3.2 * DAY), "3.2 days");
+        assert_eq!(human_time(17.4 * YEAR), "17.4 years");
+        assert_eq!(human_time(0.0), "0 s");
+    }
+
+    #[test]
+    fn compare_leaves_times_beyond_the_run_blank() {
+        let r = result(vec![
+            row(0.0, 1e-12, 1.0, Some(1e-7)),
+            row(2.0 * DAY, 1e-12, 1.0, Some(1e-7)),
+        ]);
+        let m = Material::elastic("rubber", 1e7, 0.5).unwrap();
+        let rows = [CompareRow {
+            label: "x",
+            material: &m,
+            result: &r,
+            duration: 2.0 * DAY,
+        }];
+        let text = compare_table(&rows).unwrap();
+        let line = text.lines().nth(1).unwrap();
+        assert_eq!(line, "x,rubber,user,7.8894e7,leak_rate,1e-12,,");
+        assert!(compare_text(&rows).contains("2.5 years"));
+    }
+}

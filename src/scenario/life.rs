@@ -1,0 +1,1052 @@
+//! The seal-life tables of a scenario → the pieces of a [`LifeProblem`]:
+//! `[seal]` (flat or O-ring, loading, thermal strain), `[environment]` (temperature history),
+//! `[failure]`, `[ageing]` and `[simulation]`, each error located like the rest of the file.
+//!
+//! [`LifeProblem`]: crate::simulate::LifeProblem
+
+use super::error::{ScenarioError, Source};
+use super::history;
+use super::raw::{Quantity, RawEnvironment, RawFailure, RawScenarioAgeing, RawSeal, RawSimulation};
+use super::show;
+use super::validate::{Bound, Field, field};
+use crate::leak::Fidelity;
+use crate::material::shift::{Cycle, DAY, YEAR};
+use crate::material::{Ageing, Material, Shift, TemperatureHistory};
+use crate::seal::SealGeometry;
+use crate::simulate::{FailureCriteria, Loading, ThermalStrain, TimeGrid};
+use crate::units::Dimension;
+use std::path::PathBuf;
+use toml::Spanned;
+
+const NOMINAL_PRESSURE: Field = field(
+    "seal.nominal_pressure",
+    Dimension::PRESSURE,
+    "Pa",
+    Bound::Positive,
+);
+const WIDTH: Field = field("seal.width", Dimension::LENGTH, "m", Bound::Positive);
+const LENGTH: Field = field("seal.length", Dimension::LENGTH, "m", Bound::Positive);
+const CROSS_SECTION: Field = field(
+    "seal.cross_section",
+    Dimension::LENGTH,
+    "m",
+    Bound::Positive,
+);
+const MEAN_DIAMETER: Field = field(
+    "seal.mean_diameter",
+    Dimension::LENGTH,
+    "m",
+    Bound::Positive,
+);
+const SQUEEZE: Field = field(
+    "seal.squeeze",
+    Dimension::DIMENSIONLESS,
+    "",
+    Bound::Open(0.0, 1.0),
+);
+const HOUSING_EXPANSION: Field = field(
+    "seal.housing_expansion",
+    Dimension::THERMAL_EXPANSION,
+    "1/K",
+    Bound::NonNegative,
+);
+const DAILY_AMPLITUDE: Field = field(
+    "environment.daily_amplitude",
+    Dimension::TEMPERATURE,
+    "K",
+    Bound::NonNegative,
+);
+const YEARLY_AMPLITUDE: Field = field(
+    "environment.yearly_amplitude",
+    Dimension::TEMPERATURE,
+    "K",
+    Bound::NonNegative,
+);
+const MAX_LEAK_RATE: Field = field(
+    "failure.max_leak_rate",
+    Dimension::VOLUME_FLOW,
+    "m^3/s",
+    Bound::Positive,
+);
+const MAX_LEAKED_VOLUME: Field = field(
+    "failure.max_leaked_volume",
+    Dimension::VOLUME,
+    "m^3",
+    Bound::Positive,
+);
+const MIN_RETAINED_FORCE: Field = field(
+    "failure.min_retained_force",
+    Dimension::DIMENSIONLESS,
+    "",
+    Bound::Open(0.0, 1.0),
+);
+const AGEING_ACTIVATION_ENERGY: Field = field(
+    "ageing.activation_energy",
+    Dimension::MOLAR_ENERGY,
+    "J/mol",
+    Bound::Positive,
+);
+const AGEING_RATE: Field = field("ageing.rate", Dimension::FREQUENCY, "1/s", Bound::Positive);
+const DURATION: Field = field("simulation.duration", Dimension::TIME, "s", Bound::Positive);
+const START: Field = field("simulation.start", Dimension::TIME, "s", Bound::Positive);
+const POINTS_PER_DECADE: Field = field(
+    "simulation.points_per_decade",
+    Dimension::DIMENSIONLESS,
+    "",
+    Bound::Positive,
+);
+
+/// Default `simulation.duration` [s]: 30 years.
+pub const DEFAULT_DURATION: f64 = 30.0 * YEAR;
+/// Default `simulation.start` [s].
+pub const DEFAULT_START: f64 = 1.0;
+/// Default `simulation.points_per_decade`.
+pub const DEFAULT_POINTS_PER_DECADE: f64 = 20.0;
+/// Upper limit of `simulation.points_per_decade` (a guard against typos that would make a
+/// run take minutes).
+pub const MAX_POINTS_PER_DECADE: f64 = 1000.0;
+/// Temperature when neither `[environment]` nor the material's shift gives one: 23 °C [K].
+pub const DEFAULT_TEMPERATURE: f64 = 296.15;
+
+/// Phase (upward zero crossing) of the daily cycle [s after midnight]: the maximum falls a
+/// quarter period later, at 15:00.
+pub const DAILY_PHASE: f64 = 9.0 * 3600.0;
+/// Time of the yearly maximum [s after t = 0, midnight of 1 January]: noon on 21 July, day
+/// 201.5 of a non-leap year.
+pub const YEARLY_MAXIMUM: f64 = 201.5 * DAY;
+
+/// `[seal]` validated, before the thermal strain (which needs the material and the
+/// environment).
+pub(super) struct SealSpec {
+    pub geometry: SealGeometry,
+    pub loading: Loading,
+    /// `housing_expansion` [1/K] and its span.
+    pub housing_expansion: Option<(f64, std::ops::Range<usize>)>,
+    /// `installation_temperature` [K].
+    pub installation_temperature: Option<f64>,
+}
+
+/// The keys of each seal kind (for the messages).
+const FLAT_KEYS: &str = "nominal_pressure, width, length and loading";
+const ORING_KEYS: &str = "cross_section, mean_diameter, squeeze, loading, housing_expansion and \
+                          installation_temperature";
+
+impl Source<'_> {
+    /// `[seal]`: `kind = "flat"` (default) or `"o-ring"`.
+    pub(super) fn seal(&self, table: &Spanned<RawSeal>) -> Result<SealSpec, ScenarioError> {
+        let raw = table.get_ref();
+        let kind = raw.kind.as_ref().map_or("flat", |k| k.get_ref().as_str());
+        let loading = match &raw.loading {
+            None => Loading::Displacement,
+            Some(l) => match l.get_ref().as_str() {
+                "displacement" => Loading::Displacement,
+                "force" => Loading::Force,
+                other => {
+                    return Err(self.error(
+                        l.span(),
+                        "seal.loading",
+                        format!(
+                            "must be \"displacement\" (fixed squeeze, e.g. an O-ring in a groove) \
+                             or \"force\" (fixed load, e.g. spring-loaded), got {other:?}"
+                        ),
+                    ));
+                }
+            },
+        };
+        let required = |q: &Option<Quantity>, f: &Field, keys: &str| match q {
+            Some(q) => self.quantity(q, f),
+            None => Err(self.error(
+                table.span(),
+                f.key,
+                format!(
+                    "missing key `{}` in [seal] (a {kind} seal needs {keys})",
+                    f.key.trim_start_matches("seal.")
+                ),
+            )),
+        };
+        let foreign = |keys: &[(&Option<Quantity>, &str)], takes: &str| {
+            for (present, key) in keys {
+                if let Some(q) = present {
+                    return Err(self.error(
+                        q.span(),
+                        &format!("seal.{key}"),
+                        format!("not a key of a {kind} seal, which takes {takes}"),
+                    ));
+                }
+            }
+            Ok(())
+        };
+        match kind {
+            "flat" => {
+                foreign(
+                    &[
+                        (&raw.cross_section, "cross_section"),
+                        (&raw.mean_diameter, "mean_diameter"),
+                        (&raw.squeeze, "squeeze"),
+                        (&raw.housing_expansion, "housing_expansion"),
+                        (&raw.installation_temperature, "installation_temperature"),
+                    ],
+                    FLAT_KEYS,
+                )?;
+                Ok(SealSpec {
+                    geometry: SealGeometry::Flat {
+                        nominal_pressure: required(
+                            &raw.nominal_pressure,
+                            &NOMINAL_PRESSURE,
+                            FLAT_KEYS,
+                        )?,
+                        width: required(&raw.width, &WIDTH, FLAT_KEYS)?,
+                        length: required(&raw.length, &LENGTH, FLAT_KEYS)?,
+                    },
+                    loading,
+                    housing_expansion: None,
+                    installation_temperature: None,
+                })
+            }
+            "o-ring" => {
+                foreign(
+                    &[
+                        (&raw.nominal_pressure, "nominal_pressure"),
+                        (&raw.width, "width"),
+                        (&raw.length, "length"),
+                    ],
+                    ORING_KEYS,
+                )?;
+                let cross_section = required(&raw.cross_section, &CROSS_SECTION, ORING_KEYS)?;
+                let mean_diameter = required(&raw.mean_diameter, &MEAN_DIAMETER, ORING_KEYS)?;
+                let squeeze = required(&raw.squeeze, &SQUEEZE, ORING_KEYS)?;
+                if mean_diameter <= cross_section {
+                    let span = raw
+                        .mean_diameter
+                        .as_ref()
+                        .map_or(table.span(), Spanned::span);
+                    return Err(self.error(
+                        span,
+                        MEAN_DIAMETER.key,
+                        format!(
+                            "must exceed the cross_section ({} m), got {} m",
+                            show(cross_section),
+                            show(mean_diameter)
+                        ),
+                    ));
+                }
+                let housing_expansion = match &raw.housing_expansion {
+                    Some(q) => Some((self.quantity(q, &HOUSING_EXPANSION)?, q.span())),
+                    None => None,
+                };
+                let installation_temperature = match &raw.installation_temperature {
+                    Some(q) if housing_expansion.is_none() => {
+                        return Err(self.error(
+                            q.span(),
+                            "seal.installation_temperature",
+                            "the thermal strain it is the reference of is modelled only with \
+                             housing_expansion; set housing_expansion (0 for a housing that does \
+                             not expand) or remove installation_temperature",
+                        ));
+                    }
+                    Some(q) => Some(self.absolute_temperature(q, "seal.installation_temperature")?),
+                    None => None,
+                };
+                Ok(SealSpec {
+                    geometry: SealGeometry::ORing {
+                        cross_section,
+                        mean_diameter,
+                        squeeze,
+                    },
+                    loading,
+                    housing_expansion,
+                    installation_temperature,
+                })
+            }
+            other => {
+                let span = raw.kind.as_ref().map_or(table.span(), Spanned::span);
+                Err(self.error(
+                    span,
+                    "seal.kind",
+                    format!("must be \"flat\" or \"o-ring\", got {other:?}"),
+                ))
+            }
+        }
+    }
+
+    /// The thermal strain of an O-ring with `housing_expansion`: the rubber's CTE is the
+    /// material's `thermal_expansion` (required), the installation temperature defaults to
+    /// the environment at t = 0.
+    pub(super) fn thermal_strain(
+        &self,
+        seal: &SealSpec,
+        material: &Material,
+        environment: &TemperatureHistory,
+    ) -> Result<Option<ThermalStrain>, ScenarioError> {
+        let Some((housing_expansion, span)) = &seal.housing_expansion else {
+            return Ok(None);
+        };
+        let Some(rubber_expansion) = material.thermal_expansion else {
+            return Err(self.error(
+                span.clone(),
+                HOUSING_EXPANSION.key,
+                format!(
+                    "the thermal strain needs the rubber's expansion too, but the material ({}) \
+                     gives no thermal_expansion; add it to [material] or remove \
+                     housing_expansion",
+                    material.name
+                ),
+            ));
+        };
+        Ok(Some(ThermalStrain {
+            rubber_expansion,
+            housing_expansion: *housing_expansion,
+            installation_temperature: seal
+                .installation_temperature
+                .unwrap_or_else(|| environment.at(0.0)),
+        }))
+    }
+
+    /// `[environment]` (absent: constant at the shift's reference temperature, or 23 °C).
+    ///
+    /// Cycles: t = 0 is midnight of 1 January; the daily cycle peaks at 15:00
+    /// (phase [`DAILY_PHASE`]), the yearly one at noon on 21 July ([`YEARLY_MAXIMUM`]).
+    pub(super) fn environment(
+        &self,
+        table: Option<&Spanned<RawEnvironment>>,
+        material: &Material,
+    ) -> Result<TemperatureHistory, ScenarioError> {
+        let default = match material.shift {
+            Shift::Wlf { reference, .. } | Shift::Arrhenius { reference, .. } => reference,
+            Shift::None => DEFAULT_TEMPERATURE,
+        };
+        let Some(table) = table else {
+            return Ok(TemperatureHistory::constant(default));
+        };
+        let raw = table.get_ref();
+        let mut history = match (&raw.temperature, &raw.history) {
+            (Some(_), Some(file)) => {
+                return Err(self.error(
+                    file.span(),
+                    "environment.history",
+                    "temperature and history are mutually exclusive: give a constant \
+                     temperature or a history file, not both",
+                ));
+            }
+            (Some(t), None) => TemperatureHistory::constant(
+                self.absolute_temperature(t, "environment.temperature")?,
+            ),
+            (None, Some(file)) => TemperatureHistory::table(self.history_file(file)?),
+            (None, None) => TemperatureHistory::constant(default),
+        };
+        let daily = self.optional(raw.daily_amplitude.as_ref(), &DAILY_AMPLITUDE)?;
+        let yearly = self.optional(raw.yearly_amplitude.as_ref(), &YEARLY_AMPLITUDE)?;
+        if let Some(amplitude) = daily {
+            history = history.with_cycle(Cycle {
+                amplitude,
+                period: DAY,
+                phase: DAILY_PHASE,
+            });
+        }
+        if let Some(amplitude) = yearly {
+            history = history.with_cycle(Cycle {
+                amplitude,
+                period: YEAR,
+                phase: YEARLY_MAXIMUM - YEAR / 4.0,
+            });
+        }
+        let (lowest, _) = history.range();
+        if lowest <= 0.0 {
+            let span = raw
+                .daily_amplitude
+                .as_ref()
+                .or(raw.yearly_amplitude.as_ref())
+                .map_or(table.span(), Spanned::span);
+            let key = if raw.daily_amplitude.is_some() {
+                DAILY_AMPLITUDE.key
+            } else {
+                YEARLY_AMPLITUDE.key
+            };
+            return Err(self.error(
+                span,
+                key,
+                format!(
+                    "the cycles take the temperature down to {} K, below absolute zero",
+                    show(lowest)
+                ),
+            ));
+        }
+        Ok(history)
+    }
+
+    /// Reads `environment.history` (relative to the scenario's directory).
+    fn history_file(&self, file: &Spanned<String>) -> Result<Vec<(f64, f64)>, ScenarioError> {
+        let path = self.relative_path(file.get_ref());
+        let text = std::fs::read_to_string(&path).map_err(|e| {
+            self.error(
+                file.span(),
+                "environment.history",
+                format!("cannot read temperature history {}: {e}", path.display()),
+            )
+        })?;
+        history::parse(&text).map_err(|e| ScenarioError::HistoryFormat {
+            history: path,
+            history_line: e.line,
+            scenario: self.path.to_path_buf(),
+            line: self.line(file.span().start),
+            message: e.message,
+        })
+    }
+
+    /// `[failure]`: any subset of the criteria (none: the run warns that the seal can only
+    /// survive).
+    pub(super) fn failure(
+        &self,
+        table: Option<&Spanned<RawFailure>>,
+    ) -> Result<FailureCriteria, ScenarioError> {
+        let Some(table) = table else {
+            return Ok(FailureCriteria::default());
+        };
+        let raw = table.get_ref();
+        Ok(FailureCriteria {
+            max_leak_rate: self.optional(raw.max_leak_rate.as_ref(), &MAX_LEAK_RATE)?,
+            max_leaked_volume: self.optional(raw.max_leaked_volume.as_ref(), &MAX_LEAKED_VOLUME)?,
+            min_retained_force: self
+                .optional(raw.min_retained_force.as_ref(), &MIN_RETAINED_FORCE)?,
+            lift_off: raw.lift_off.as_ref().is_some_and(|b| *b.get_ref()),
+        })
+    }
+
+    /// `[ageing]` (absent: no chemical relaxation): each constant defaults to the material's.
+    pub(super) fn scenario_ageing(
+        &self,
+        table: Option<&Spanned<RawScenarioAgeing>>,
+        material: &Material,
+    ) -> Result<Option<Ageing>, ScenarioError> {
+        let Some(table) = table else {
+            return Ok(None);
+        };
+        let raw = table.get_ref();
+        let missing = |key: &str| {
+            self.error(
+                table.span(),
+                &format!("ageing.{key}"),
+                format!(
+                    "missing key `{key}` in [ageing], and the material ({}) gives no ageing \
+                     constants ([material.ageing]) to default to; give activation_energy, rate \
+                     and reference_temperature",
+                    material.name
+                ),
+            )
+        };
+        let own = material.ageing;
+        let activation_energy = match &raw.activation_energy {
+            Some(q) => self.quantity(q, &AGEING_ACTIVATION_ENERGY)?,
+            None => own
+                .map(|a| a.activation_energy)
+                .ok_or_else(|| missing("activation_energy"))?,
+        };
+        let rate = match &raw.rate {
+            Some(q) => self.quantity(q, &AGEING_RATE)?,
+            None => own.map(|a| a.rate).ok_or_else(|| missing("rate"))?,
+        };
+        let reference_temperature = match &raw.reference_temperature {
+            Some(q) => self.absolute_temperature(q, "ageing.reference_temperature")?,
+            None => own
+                .map(|a| a.reference_temperature)
+                .ok_or_else(|| missing("reference_temperature"))?,
+        };
+        Ok(Some(Ageing {
+            activation_energy,
+            rate,
+            reference_temperature,
+        }))
+    }
+
+    /// `[simulation]`: the time grid and the fidelity.
+    pub(super) fn simulation(
+        &self,
+        table: Option<&Spanned<RawSimulation>>,
+    ) -> Result<(TimeGrid, Fidelity), ScenarioError> {
+        let Some(table) = table else {
+            return Ok((
+                TimeGrid {
+                    start: DEFAULT_START,
+                    duration: DEFAULT_DURATION,
+                    points_per_decade: DEFAULT_POINTS_PER_DECADE,
+                },
+                Fidelity::Table,
+            ));
+        };
+        let raw = table.get_ref();
+        let duration = self
+            .optional(raw.duration.as_ref(), &DURATION)?
+            .unwrap_or(DEFAULT_DURATION);
+        let start = self
+            .optional(raw.start.as_ref(), &START)?
+            .unwrap_or(DEFAULT_START);
+        if duration <= start {
+            let (span, key) = match (&raw.duration, &raw.start) {
+                (Some(q), _) => (q.span(), DURATION.key),
+                (None, Some(q)) => (q.span(), START.key),
+                (None, None) => (table.span(), DURATION.key),
+            };
+            return Err(self.error(
+                span,
+                key,
+                format!(
+                    "duration ({} s) must exceed start ({} s), the first time after installation",
+                    show(duration),
+                    show(start)
+                ),
+            ));
+        }
+        let points_per_decade = self
+            .optional(raw.points_per_decade.as_ref(), &POINTS_PER_DECADE)?
+            .unwrap_or(DEFAULT_POINTS_PER_DECADE);
+        if points_per_decade > MAX_POINTS_PER_DECADE
+            && let Some(q) = &raw.points_per_decade
+        {
+            return Err(self.error(
+                q.span(),
+                POINTS_PER_DECADE.key,
+                format!(
+                    "must be at most {}, got {}",
+                    show(MAX_POINTS_PER_DECADE),
+                    show(points_per_decade)
+                ),
+            ));
+        }
+        let fidelity = match &raw.fidelity {
+            None => Fidelity::Table,
+            Some(f) => parse_fidelity(f.get_ref())
+                .map_err(|message| self.error(f.span(), "simulation.fidelity", message))?,
+        };
+        Ok((
+            TimeGrid {
+                start,
+                duration,
+                points_per_decade,
+            },
+            fidelity,
+        ))
+    }
+
+    /// A file named in the scenario, resolved against the scenario file's directory.
+    pub(super) fn relative_path(&self, file: &str) -> PathBuf {
+        match self.path.parent() {
+            Some(dir) => dir.join(file),
+            None => PathBuf::from(file),
+        }
+    }
+}
+
+/// A fidelity name of the ladder (DESIGN §4): `critical-junction` (= `table`, the contact
+/// table) or `exact` are available; the other levels are refused with a clear message.
+pub fn parse_fidelity(name: &str) -> Result<Fidelity, String> {
+    match name {
+        "critical-junction" | "table" => Ok(Fidelity::Table),
+        "exact" => Ok(Fidelity::Exact),
+        "rule-of-thumb" | "effective-medium" | "numerical" => Err(format!(
+            "the fidelity level {name:?} is not available yet (DESIGN §4 fidelity ladder); use \
+             \"critical-junction\" (the default, contact table) or \"exact\""
+        )),
+        other => Err(format!(
+            "must be \"critical-junction\" (= \"table\"), or \"exact\", got {other:?}"
+        )),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scenario::{Scenario, ScenarioError, library};
+    use crate::simulate::AsperityModulus;
+    use std::f64::consts::PI;
+    use std::path::Path;
+
+    /// An O-ring scenario; line numbers in the tests refer to this text.
+    const ORING: &str = r#"name = "o-ring"
+[material]
+library = "nbr-70"
+[surface]
+rms_roughness = "0.8 um"
+hurst_exponent = 0.7
+q0 = "3e5 1/m"
+q1 = "1e10 1/m"
+[fluid]
+viscosity = "1 mPa*s"
+pressure_difference = "2 bar"
+[seal]
+kind = "o-ring"
+cross_section = "3.53 mm"
+mean_diameter = "50 mm"
+squeeze = 0.2
+"#;
+
+    fn load(text: &str) -> Result<Scenario, ScenarioError> {
+        Scenario::from_str(text, Path::new("dir/s.toml"))
+    }
+
+    fn error(text: &str) -> String {
+        load(text).expect_err("should be rejected").to_string()
+    }
+
+    fn with(extra: &str) -> String {
+        format!("{ORING}{extra}")
+    }
+
+    #[test]
+    fn oring_defaults_and_static_problem() {
+        let s = load(ORING).unwrap();
+        let life = &s.life;
+        let SealGeometry::ORing {
+            cross_section,
+            mean_diameter,
+            squeeze,
+        } = life.geometry
+        else {
+            panic!("an O-ring: {:?}", life.geometry)
+        };
+        assert!((cross_section / 3.53e-3 - 1.0).abs() < 1e-15);
+        assert_eq!((mean_diameter, squeeze), (0.05, 0.2));
+        assert_eq!(life.loading, Loading::Displacement);
+        assert_eq!(life.asperity_modulus, AsperityModulus::Relaxed);
+        // no [environment]: constant at the WLF reference temperature (23 °C)
+        assert!(life.environment.is_constant());
+        assert!((life.environment.at(1e6) - 296.15).abs() < 1e-9);
+        assert!(life.failure.is_empty() && life.ageing.is_none() && life.thermal_strain.is_none());
+        assert_eq!(
+            life.time,
+            TimeGrid {
+                start: 1.0,
+                duration: 30.0 * YEAR,
+                points_per_decade: 20.0
+            }
+        );
+        assert_eq!((life.fidelity, life.strips), (Fidelity::Table, 16));
+        // `leak`: Hertz peak of Lindley's force with E0, Lindley's width, π D
+        let e0 = s.material.prony.instantaneous();
+        let g = 1.25 * 0.2f64.powf(1.5) + 50.0 * 0.2f64.powi(6);
+        let b = 3.53e-3 * (1.2 / PI).sqrt();
+        let peak = 4.0 * e0 * cross_section * g / (PI * b);
+        let seal = s.problem.seal;
+        assert!((seal.nominal_pressure / peak - 1.0).abs() < 1e-12);
+        assert!((seal.width / b - 1.0).abs() < 1e-12);
+        assert!((seal.length / (PI * 0.05) - 1.0).abs() < 1e-12);
+        assert_eq!(
+            s.problem.material.youngs_modulus,
+            s.material.prony.long_term()
+        );
+    }
+
+    #[test]
+    fn flat_seals_keep_their_keys_and_may_be_force_loaded() {
+        let flat = ORING.replace(
+            "kind = \"o-ring\"\ncross_section = \"3.53 mm\"\nmean_diameter = \"50 mm\"\nsqueeze = 0.2\n",
+            "nominal_pressure = \"1 MPa\"\nwidth = \"2 mm\"\nlength = \"0.1 m\"\nloading = \"force\"\n",
+        );
+        let s = load(&flat).unwrap();
+        assert_eq!(
+            s.life.geometry,
+            SealGeometry::Flat {
+                nominal_pressure: 1e6,
+                width: 2e-3,
+                length: 0.1
+            }
+        );
+        assert_eq!(s.life.loading, Loading::Force);
+        assert_eq!(s.problem.seal.nominal_pressure, 1e6);
+        let e = error(&flat.replace("loading = \"force\"", "loading = \"spring\""));
+        assert!(
+            e.contains(":16: seal.loading: must be \"displacement\""),
+            "{e}"
+        );
+        let e = error(&format!("{flat}squeeze = 0.2\n"));
+        assert!(
+            e.contains(":17: seal.squeeze: not a key of a flat seal"),
+            "{e}"
+        );
+        let e = error(&flat.replace("width = \"2 mm\"\n", ""));
+        assert!(
+            e.contains(":12: seal.width: missing key `width` in [seal]"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn oring_errors_are_located() {
+        let cases = [
+            (
+                "squeeze = 0.2",
+                "squeeze = 1",
+                ":16: seal.squeeze: must lie strictly between 0 and 1",
+            ),
+            (
+                "squeeze = 0.2",
+                "squeeze = 0",
+                ":16: seal.squeeze: must lie strictly between 0 and 1",
+            ),
+            (
+                "\"50 mm\"",
+                "\"3 mm\"",
+                ":15: seal.mean_diameter: must exceed the cross_section",
+            ),
+            (
+                "\"o-ring\"",
+                "\"x-ring\"",
+                ":13: seal.kind: must be \"flat\" or \"o-ring\"",
+            ),
+            (
+                "squeeze = 0.2\n",
+                "",
+                ":12: seal.squeeze: missing key `squeeze` in [seal]",
+            ),
+            (
+                "squeeze = 0.2",
+                "squeeze = 0.2\nwidth = 1",
+                ":17: seal.width: not a key of a o-ring seal",
+            ),
+            (
+                "squeeze = 0.2",
+                "squeeze = 0.2\ninstallation_temperature = \"20 C\"",
+                ":17: seal.installation_temperature: the thermal strain",
+            ),
+        ];
+        for (from, to, expected) in cases {
+            let e = error(&ORING.replace(from, to));
+            assert!(
+                e.starts_with("dir/s.toml:") && e.contains(expected),
+                "{to}: {e}"
+            );
+        }
+    }
+
+    #[test]
+    fn thermal_strain_needs_the_rubbers_expansion() {
+        let s = load(&ORING.replace(
+            "squeeze = 0.2",
+            "squeeze = 0.2\nhousing_expansion = \"12e-6 1/K\"",
+        ))
+        .unwrap();
+        let th = s.life.thermal_strain.unwrap();
+        assert_eq!(th.housing_expansion, 12e-6);
+        assert_eq!(Some(th.rubber_expansion), s.material.thermal_expansion);
+        assert_eq!(th.installation_temperature, 296.15, "T(0) by default");
+        let s = load(&ORING.replace(
+            "squeeze = 0.2",
+            "squeeze = 0.2\nhousing_expansion = 0\ninstallation_temperature = \"-10 C\"",
+        ))
+        .unwrap();
+        assert_eq!(
+            s.life.thermal_strain.unwrap().installation_temperature,
+            263.15
+        );
+        // an inline material without thermal_expansion
+        let inline = ORING
+            .replace(
+                "library = \"nbr-70\"",
+                "youngs_modulus = \"10 MPa\"\npoisson_ratio = 0.5",
+            )
+            .replace(
+                "squeeze = 0.2",
+                "squeeze = 0.2\nhousing_expansion = \"12e-6 1/K\"",
+            );
+        let e = error(&inline);
+        assert!(
+            e.contains(":18: seal.housing_expansion: the thermal strain needs the rubber's expansion too, but the material (o-ring) gives no thermal_expansion"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn asperity_modulus_option() {
+        let m = |value: &str| {
+            load(&ORING.replace(
+                "library = \"nbr-70\"",
+                &format!("library = \"nbr-70\"\nasperity_modulus = {value}"),
+            ))
+            .map(|s| s.life.asperity_modulus)
+        };
+        assert_eq!(m("\"relaxed\"").unwrap(), AsperityModulus::Relaxed);
+        assert_eq!(
+            m("\"instantaneous\"").unwrap(),
+            AsperityModulus::Instantaneous
+        );
+        assert_eq!(m("\"follow\"").unwrap(), AsperityModulus::Follow);
+        assert_eq!(m("\"3 MPa\"").unwrap(), AsperityModulus::Fixed(3e6));
+        assert_eq!(m("2e6").unwrap(), AsperityModulus::Fixed(2e6));
+        let e = m("\"relaxd\"").unwrap_err().to_string();
+        assert!(
+            e.contains(":4: material.asperity_modulus: must be \"relaxed\""),
+            "{e}"
+        );
+        let e = m("\"3 mm\"").unwrap_err().to_string();
+        assert!(
+            e.contains(":4: material.asperity_modulus: expected a pressure"),
+            "{e}"
+        );
+        let e = m("\"-3 MPa\"").unwrap_err().to_string();
+        assert!(e.contains("must be positive"), "{e}");
+        // a library reference still takes no other key
+        let e = error(&ORING.replace("library = \"nbr-70\"", "library = \"nbr-70\"\nname = \"x\""));
+        assert!(
+            e.contains(":4: material.name: a library material takes no other keys"),
+            "{e}"
+        );
+        // inline materials take it too; material files do not
+        let inline = ORING.replace(
+            "library = \"nbr-70\"",
+            "youngs_modulus = \"10 MPa\"\npoisson_ratio = 0.5\nasperity_modulus = \"instantaneous\"",
+        );
+        assert_eq!(
+            load(&inline).unwrap().life.asperity_modulus,
+            AsperityModulus::Instantaneous
+        );
+        let file = "[material]\npoisson_ratio = 0.5\nyoungs_modulus = 1e7\nasperity_modulus = \"follow\"\n";
+        let e = crate::scenario::material_from_str(file, Path::new("m.toml"))
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains(
+                "m.toml:4: material.asperity_modulus: asperity_modulus is a scenario option"
+            ),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn environment_constant_cycles_and_exclusivity() {
+        let s = load(&with("[environment]\ntemperature = \"80 C\"\n")).unwrap();
+        assert_eq!(s.life.environment.at(0.0), 353.15);
+        let s = load(&with(
+            "[environment]\ntemperature = \"10 C\"\ndaily_amplitude = \"8 K\"\nyearly_amplitude = \"12 K\"\n",
+        ))
+        .unwrap();
+        let env = &s.life.environment;
+        // daily maximum at 15:00 (the yearly term varies little within a day)
+        let day = |h: f64| env.at(200.0 * DAY + h * 3600.0);
+        assert!(day(15.0) > day(14.5) && day(15.0) > day(15.5));
+        assert!(day(3.0) < day(2.5) && day(3.0) < day(3.5));
+        // yearly maximum at noon on 21 July (day 201.5): compare whole days at 15:00
+        let at_day = |d: f64| env.at(d * DAY + 15.0 * 3600.0);
+        assert!(at_day(201.0) > at_day(171.0) && at_day(201.0) > at_day(231.0));
+        let (lo, hi) = env.range();
+        assert!((lo - 263.15).abs() < 1e-9 && (hi - 303.15).abs() < 1e-9);
+        // mutually exclusive, and no temperature below 0 K
+        let e = error(&with(
+            "[environment]\ntemperature = \"10 C\"\nhistory = \"t.csv\"\n",
+        ));
+        assert!(
+            e.contains(":19: environment.history: temperature and history are mutually exclusive"),
+            "{e}"
+        );
+        let e = error(&with(
+            "[environment]\ntemperature = \"10 K\"\ndaily_amplitude = \"20 K\"\n",
+        ));
+        assert!(
+            e.contains(":19: environment.daily_amplitude: the cycles take the temperature down to"),
+            "{e}"
+        );
+        let e = error(&with(
+            "[environment]\ntemperature = \"10 C\"\nhumidity = 0.5\n",
+        ));
+        assert!(
+            e.contains(":19: environment.humidity: unknown key `humidity`"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn environment_history_is_read_relative_to_the_scenario() {
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(
+            dir.path().join("t.csv"),
+            "time,temperature\nh,C\n0,25\n2,-40\n",
+        )
+        .unwrap();
+        let path = dir.path().join("s.toml");
+        let text = with("[environment]\nhistory = \"t.csv\"\ndaily_amplitude = \"1 K\"\n");
+        let s = Scenario::from_str(&text, &path).unwrap();
+        let env = &s.life.environment;
+        assert!(!env.is_constant());
+        assert!(
+            (env.at(3600.0)
+                - (273.15 - 7.5)
+                - 1.0 * (std::f64::consts::TAU * (3600.0 - DAILY_PHASE) / DAY).sin())
+            .abs()
+                < 1e-9
+        );
+        // a malformed file names its own line and the scenario's key
+        std::fs::write(
+            dir.path().join("t.csv"),
+            "time,temperature\n0,300\n10,warm\n",
+        )
+        .unwrap();
+        let e = Scenario::from_str(&text, &path).unwrap_err();
+        assert!(
+            matches!(
+                e,
+                ScenarioError::HistoryFormat {
+                    history_line: Some(3),
+                    line: 18,
+                    ..
+                }
+            ),
+            "{e}"
+        );
+        let e = e.to_string();
+        assert!(e.contains("t.csv:3: temperature is not a number: \"warm\" (temperature history named by environment.history at "), "{e}");
+        assert!(e.ends_with("s.toml:18)"), "{e}");
+        // a missing file is an error at the key
+        let e = Scenario::from_str(&text.replace("t.csv", "none.csv"), &path)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("s.toml:18: environment.history: cannot read temperature history"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn failure_criteria() {
+        let s = load(&with(
+            "[failure]\nmax_leak_rate = \"1e-9 m^3/s\"\nmax_leaked_volume = \"1 L\"\nmin_retained_force = 0.5\nlift_off = true\n",
+        ))
+        .unwrap();
+        assert_eq!(
+            s.life.failure,
+            FailureCriteria {
+                max_leak_rate: Some(1e-9),
+                max_leaked_volume: Some(1e-3),
+                min_retained_force: Some(0.5),
+                lift_off: true
+            }
+        );
+        assert!(load(&with("[failure]\n")).unwrap().life.failure.is_empty());
+        let e = error(&with("[failure]\nmin_retained_force = 1.5\n"));
+        assert!(
+            e.contains(":18: failure.min_retained_force: must lie strictly between 0 and 1"),
+            "{e}"
+        );
+        let e = error(&with("[failure]\nmax_leak_rate = \"1 m^3\"\n"));
+        assert!(
+            e.contains(":18: failure.max_leak_rate: expected a volume flow"),
+            "{e}"
+        );
+        let e = error(&with("[failure]\nlift_off = \"yes\"\n"));
+        assert!(e.contains(":18: failure.lift_off: invalid type"), "{e}");
+    }
+
+    #[test]
+    fn ageing_defaults_to_the_materials_constants() {
+        let fkm = ORING.replace("nbr-70", "fkm-75");
+        let own = library::get("fkm-75")
+            .unwrap()
+            .load()
+            .unwrap()
+            .ageing
+            .unwrap();
+        let s = load(&format!("{fkm}[ageing]\n")).unwrap();
+        assert_eq!(s.life.ageing, Some(own));
+        let s = load(&format!("{fkm}[ageing]\nrate = \"1e-8 1/s\"\n")).unwrap();
+        assert_eq!(s.life.ageing.unwrap().rate, 1e-8);
+        assert_eq!(
+            s.life.ageing.unwrap().activation_energy,
+            own.activation_energy
+        );
+        assert!(
+            load(&fkm).unwrap().life.ageing.is_none(),
+            "modelled only when present"
+        );
+        // NBR has no ageing constants
+        let e = error(&with("[ageing]\n"));
+        assert!(
+            e.contains(":17: ageing.activation_energy: missing key `activation_energy` in [ageing], and the material (NBR"),
+            "{e}"
+        );
+        let e = error(&with(
+            "[ageing]\nactivation_energy = \"80 kJ/mol\"\nrate = \"1e-9 1/s\"\n",
+        ));
+        assert!(
+            e.contains("ageing.reference_temperature: missing key"),
+            "{e}"
+        );
+        let s = load(&with(
+            "[ageing]\nactivation_energy = \"80 kJ/mol\"\nrate = \"1e-9 1/s\"\nreference_temperature = \"100 C\"\n",
+        ))
+        .unwrap();
+        assert_eq!(
+            s.life.ageing,
+            Some(Ageing {
+                activation_energy: 8e4,
+                rate: 1e-9,
+                reference_temperature: 373.15
+            })
+        );
+    }
+
+    #[test]
+    fn simulation_grid_and_fidelity() {
+        let s = load(&with(
+            "[simulation]\nduration = \"1 year\"\nstart = \"1 ms\"\npoints_per_decade = 5\nfidelity = \"exact\"\n",
+        ))
+        .unwrap();
+        assert_eq!(
+            s.life.time,
+            TimeGrid {
+                start: 1e-3,
+                duration: YEAR,
+                points_per_decade: 5.0
+            }
+        );
+        assert_eq!(s.life.fidelity, Fidelity::Exact);
+        for name in ["critical-junction", "table"] {
+            let s = load(&with(&format!("[simulation]\nfidelity = \"{name}\"\n"))).unwrap();
+            assert_eq!(s.life.fidelity, Fidelity::Table);
+        }
+        let cases = [
+            (
+                "duration = \"1 s\"",
+                ":18: simulation.duration: duration (1 s) must exceed start (1 s)",
+            ),
+            (
+                "start = \"40 year\"",
+                ":18: simulation.start: duration (9.46728e8 s) must exceed start",
+            ),
+            (
+                "duration = \"1 m\"",
+                ":18: simulation.duration: expected a time",
+            ),
+            (
+                "points_per_decade = 0",
+                ":18: simulation.points_per_decade: must be positive",
+            ),
+            (
+                "points_per_decade = 5000",
+                ":18: simulation.points_per_decade: must be at most 1000",
+            ),
+            (
+                "fidelity = \"effective-medium\"",
+                ":18: simulation.fidelity: the fidelity level \"effective-medium\" is not available yet",
+            ),
+            ("fidelity = \"numerical\"", "is not available yet"),
+            ("fidelity = \"rule-of-thumb\"", "is not available yet"),
+            (
+                "fidelity = \"fast\"",
+                ":18: simulation.fidelity: must be \"critical-junction\"",
+            ),
+        ];
+        for (line, expected) in cases {
+            let e = error(&with(&format!("[simulation]\n{line}\n")));
+            assert!(e.contains(expected), "{line}: {e}");
+        }
+    }
+
+    #[test]
+    fn a_replacement_material_is_validated_in_place() {
+        let fkm = library::get("fkm-75").unwrap().load().unwrap();
+        let text = with("[ageing]\n");
+        // NBR alone fails ([ageing] without constants); with FKM in its place it loads
+        assert!(load(&text).is_err());
+        let s = Scenario::from_str_with_material(&text, Path::new("s.toml"), &fkm).unwrap();
+        assert_eq!(s.material, fkm);
+        assert_eq!(s.life.ageing, fkm.ageing);
+        assert_eq!(s.problem.material.youngs_modulus, fkm.prony.long_term());
+    }
+}

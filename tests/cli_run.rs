@@ -1,0 +1,628 @@
+//! End-to-end tests of `sealsim run` and `sealsim compare`: every shipped scenario runs, the
+//! CSV and JSON contracts, a closed-form failure time through the whole CLI, and that bad input
+//! exits with status 2, names the file, line and key, and writes nothing.
+
+use assert_cmd::cargo::cargo_bin_cmd;
+use predicates::prelude::*;
+use serde_json::Value;
+use std::fs;
+use std::path::{Path, PathBuf};
+use tempfile::TempDir;
+
+const HISTORY_HEADER: &str = "time_s,temperature_K,reduced_time_s,shift_factor,\
+sealing_force_N_per_m,peak_pressure_Pa,mean_pressure_Pa,contact_width_m,u_c_m,\
+leak_rate_m3_per_s,leaked_volume_m3,state";
+
+const COMPARE_HEADER: &str = "material,name,status,time_to_failure_s,failure_mode,\
+leak_rate_1day_m3_per_s,leak_rate_1year_m3_per_s,leak_rate_10years_m3_per_s";
+
+const SUMMARY_KEYS: [&str; 10] = [
+    "scenario",
+    "material",
+    "time_to_failure_s",
+    "failure_mode",
+    "initial_leak_rate_m3_per_s",
+    "final_leak_rate_m3_per_s",
+    "leaked_volume_m3",
+    "duration_s",
+    "warnings",
+    "material_status",
+];
+
+const YEAR: f64 = 365.25 * 86400.0;
+
+fn scenarios_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios")
+}
+
+/// Every scenario file shipped in `scenarios/` (recursively), not the figure sets.
+fn shipped_scenarios() -> Vec<PathBuf> {
+    fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
+        for entry in fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                walk(&path, out);
+            } else if path.extension().is_some_and(|e| e == "toml")
+                && !path.to_string_lossy().ends_with("-figures.toml")
+            {
+                out.push(path);
+            }
+        }
+    }
+    let mut out = Vec::new();
+    walk(&scenarios_dir(), &mut out);
+    out.sort();
+    out
+}
+
+/// The data rows of a CSV text (quoted cells unquoted).
+fn csv_rows(text: &str) -> Vec<Vec<String>> {
+    csv::Reader::from_reader(text.as_bytes())
+        .records()
+        .map(|r| r.unwrap().iter().map(str::to_owned).collect())
+        .collect()
+}
+
+fn no_nan(text: &str, what: &str) {
+    for bad in ["NaN", "nan", "inf"] {
+        assert!(!text.contains(bad), "{what} contains {bad}:\n{text}");
+    }
+}
+
+/// The outputs of one `run` in a temporary directory.
+struct Outputs {
+    dir: TempDir,
+}
+
+impl Outputs {
+    fn new() -> Self {
+        Outputs {
+            dir: tempfile::tempdir().unwrap(),
+        }
+    }
+    fn path(&self, name: &str) -> PathBuf {
+        self.dir.path().join(name)
+    }
+    fn write(&self, name: &str, text: &str) -> PathBuf {
+        let p = self.path(name);
+        fs::write(&p, text).unwrap();
+        p
+    }
+    /// `run SCENARIO -o h.csv --summary s.json --plot p.svg <extra>` → (stdout, stderr),
+    /// expecting success.
+    fn run_ok(&self, scenario: &Path, extra: &[&str]) -> (String, String) {
+        let out = cargo_bin_cmd!("sealsim")
+            .arg("run")
+            .arg(scenario)
+            .arg("-o")
+            .arg(self.path("h.csv"))
+            .arg("--summary")
+            .arg(self.path("s.json"))
+            .arg("--plot")
+            .arg(self.path("p.svg"))
+            .args(extra)
+            .assert()
+            .success();
+        let o = out.get_output();
+        (
+            String::from_utf8(o.stdout.clone()).unwrap(),
+            String::from_utf8(o.stderr.clone()).unwrap(),
+        )
+    }
+    fn summary(&self) -> Value {
+        let text = fs::read_to_string(self.path("s.json")).unwrap();
+        no_nan(&text, "summary JSON");
+        serde_json::from_str(&text).unwrap()
+    }
+    /// `run` expecting exit 2 with every needle in stderr, and no output file.
+    fn run_rejects(&self, scenario: &Path, extra: &[&str], needles: &[&str]) {
+        let out = cargo_bin_cmd!("sealsim")
+            .arg("run")
+            .arg(scenario)
+            .arg("-o")
+            .arg(self.path("h.csv"))
+            .arg("--summary")
+            .arg(self.path("s.json"))
+            .arg("--plot")
+            .arg(self.path("p.svg"))
+            .args(extra)
+            .assert()
+            .code(2)
+            .stdout(predicate::str::is_empty())
+            .stderr(predicate::str::contains("panicked").not());
+        let stderr = String::from_utf8(out.get_output().stderr.clone()).unwrap();
+        assert!(stderr.starts_with("error: "), "{stderr}");
+        for needle in needles {
+            assert!(
+                stderr.contains(needle),
+                "stderr lacks {needle:?}:\n{stderr}"
+            );
+        }
+        for f in ["h.csv", "s.json", "p.svg"] {
+            assert!(!self.path(f).exists(), "{f} was written");
+        }
+    }
+}
+
+#[test]
+fn every_shipped_scenario_runs_without_nan() {
+    let scenarios = shipped_scenarios();
+    assert!(scenarios.len() >= 15, "{scenarios:?}");
+    for scenario in scenarios {
+        let out = Outputs::new();
+        let (stdout, stderr) = out.run_ok(&scenario, &[]);
+        let name = scenario.display().to_string();
+        no_nan(&stdout, &name);
+        assert!(stdout.contains("result"), "{name}: {stdout}");
+        assert!(
+            stderr.lines().all(|l| l.starts_with("warning: ")),
+            "{name}: {stderr}"
+        );
+        let csv = fs::read_to_string(out.path("h.csv")).unwrap();
+        no_nan(&csv, &name);
+        let mut lines = csv.lines();
+        assert_eq!(lines.next(), Some(HISTORY_HEADER), "{name}");
+        let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+        assert!(rows.len() > 100, "{name}: {} rows", rows.len());
+        assert_eq!(
+            rows[0][0], "0e0",
+            "{name}: the installation row comes first"
+        );
+        for row in &rows {
+            assert_eq!(row.len(), 12, "{name}: {row:?}");
+            for (i, cell) in row[..11].iter().enumerate() {
+                if cell.is_empty() {
+                    assert!(i == 3 || i == 8, "{name}: empty column {i}");
+                } else {
+                    assert!(cell.parse::<f64>().unwrap().is_finite(), "{name}: {cell}");
+                }
+            }
+            assert!(
+                ["leaking", "sealed", "lift_off"].contains(&row[11]),
+                "{name}: {row:?}"
+            );
+        }
+        let json = out.summary();
+        for key in SUMMARY_KEYS {
+            assert!(json.get(key).is_some(), "{name}: no {key} in {json}");
+        }
+        assert!(json["warnings"].is_array());
+        let mode = json["failure_mode"].as_str().unwrap();
+        assert!(
+            [
+                "leak_rate",
+                "leaked_volume",
+                "retained_force",
+                "lift_off",
+                "none"
+            ]
+            .contains(&mode),
+            "{name}: {mode}"
+        );
+        assert_eq!(
+            json["time_to_failure_s"].is_null(),
+            mode == "none",
+            "{name}"
+        );
+        // the chart is written unless the seal is sealed throughout
+        let leaks = rows
+            .iter()
+            .skip(1)
+            .any(|r| r[9].parse::<f64>().unwrap() > 0.0);
+        assert_eq!(out.path("p.svg").exists(), leaks, "{name}");
+    }
+}
+
+#[test]
+fn shipped_life_scenarios_show_their_point() {
+    let run = |name: &str| {
+        let out = Outputs::new();
+        let (stdout, _) = out.run_ok(&scenarios_dir().join(name), &[]);
+        (stdout, out.summary())
+    };
+    // the README's first command: an O-ring that leaks and fails within 30 years
+    let (stdout, nbr) = run("oring-nbr-water-80c.toml");
+    assert!(stdout.contains("ILLUSTRATIVE"), "{stdout}");
+    assert!(nbr["final_leak_rate_m3_per_s"].as_f64().unwrap() > 1e-13);
+    assert!(nbr["time_to_failure_s"].as_f64().unwrap() < 30.0 * YEAR);
+    // ageing ends the FKM's life
+    let (_, fkm) = run("oring-fkm-hot-oil-ageing.toml");
+    assert_eq!(fkm["failure_mode"], "retained_force");
+    // cold night: NBR fails at night, silicone survives
+    let (_, nbr) = run("cold-night-nbr.toml");
+    let (_, vmq) = run("cold-night-vmq.toml");
+    assert_eq!(nbr["failure_mode"], "leak_rate");
+    let t = nbr["time_to_failure_s"].as_f64().unwrap();
+    assert!((30.0 * 3600.0..46.0 * 3600.0).contains(&t), "{t}");
+    assert_eq!(vmq["failure_mode"], "none");
+    // the spring-loaded seal: the leak rate falls
+    let (_, spring) = run("spring-loaded-face-seal.toml");
+    let (q0, q1) = (
+        spring["initial_leak_rate_m3_per_s"].as_f64().unwrap(),
+        spring["final_leak_rate_m3_per_s"].as_f64().unwrap(),
+    );
+    assert!(q1 < q0 / 10.0, "{q0} → {q1}");
+}
+
+/// A flat seal of a one-term Prony rubber: E(t) = E∞ + E1 e^(−t/τ), WLF at T_ref = 23 °C.
+fn one_term(temperature: &str) -> String {
+    format!(
+        r#"name = "one-term Prony"
+[material]
+poisson_ratio = 0.5
+long_term_modulus = "2 MPa"
+prony = [ {{ modulus = "6 MPa", tau = "1e5 s" }} ]
+[material.shift]
+kind = "wlf"
+reference_temperature = "23 C"
+c1 = 8.86
+c2 = "101.6 K"
+[surface]
+rms_roughness = "1 um"
+hurst_exponent = 0.8
+q0 = "1e4 1/m"
+q1 = "1e9 1/m"
+[fluid]
+viscosity = "1 mPa*s"
+pressure_difference = "0.1 bar"
+[seal]
+nominal_pressure = "1 MPa"
+width = "1 mm"
+length = "0.1 m"
+[environment]
+temperature = "{temperature}"
+[failure]
+min_retained_force = 0.5
+"#
+    )
+}
+
+#[test]
+fn one_term_prony_fails_at_the_closed_form_time() {
+    // E(t) = 0.5 E0 ⇔ t = τ ln(E1 / (0.5 E0 − E∞)) = 1e5 ln 3
+    let closed = 1e5 * 3f64.ln();
+    let out = Outputs::new();
+    let scenario = out.write("one.toml", &one_term("23 C"));
+    out.run_ok(&scenario, &[]);
+    let json = out.summary();
+    assert_eq!(json["failure_mode"], "retained_force");
+    let t = json["time_to_failure_s"].as_f64().unwrap();
+    assert!((t / closed - 1.0).abs() < 1e-6, "{t} vs {closed}");
+    // 20 K hotter: a_T times sooner
+    let hot = out.write("hot.toml", &one_term("43 C"));
+    out.run_ok(&hot, &[]);
+    let a_t = 10f64.powf(-8.86 * 20.0 / (101.6 + 20.0));
+    let t = out.summary()["time_to_failure_s"].as_f64().unwrap();
+    assert!(
+        (t / (a_t * closed) - 1.0).abs() < 1e-6,
+        "{t} vs {}",
+        a_t * closed
+    );
+}
+
+#[test]
+fn summary_on_stdout_is_readable() {
+    let out = Outputs::new();
+    let scenario = out.write("one.toml", &one_term("23 C"));
+    let (stdout, _) = out.run_ok(&scenario, &[]);
+    for needle in [
+        "scenario       one-term Prony",
+        "material       one-term Prony [user]",
+        "flat, P0 = 1 MPa",
+        "23 °C (constant)",
+        "leak rate",
+        "FAILS after 30.5 h (t = 109861 s)",
+        "by retained_force",
+    ] {
+        assert!(stdout.contains(needle), "{needle:?} not in\n{stdout}");
+    }
+    assert!(!stdout.contains("ILLUSTRATIVE"));
+    // without -o, only the summary is produced
+    let bare = Outputs::new();
+    let scenario = bare.write("one.toml", &one_term("23 C"));
+    cargo_bin_cmd!("sealsim")
+        .arg("run")
+        .arg(&scenario)
+        .current_dir(bare.dir.path())
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("result"));
+    let mut names: Vec<_> = fs::read_dir(bare.dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    names.sort();
+    assert_eq!(names, ["one.toml"]);
+}
+
+#[test]
+fn fidelity_flag_overrides_the_scenario() {
+    let scenario = scenarios_dir().join("oring-nbr-water-80c.toml");
+    let table = Outputs::new();
+    table.run_ok(&scenario, &["--fidelity", "critical-junction"]);
+    let exact = Outputs::new();
+    exact.run_ok(&scenario, &["--fidelity", "exact"]);
+    let (a, b) = (table.summary(), exact.summary());
+    assert_eq!(b["fidelity"], "exact");
+    let (ta, tb) = (
+        a["time_to_failure_s"].as_f64().unwrap(),
+        b["time_to_failure_s"].as_f64().unwrap(),
+    );
+    assert!((ta / tb - 1.0).abs() < 1e-2, "{ta} vs {tb}");
+}
+
+#[test]
+fn failure_block_without_criterion_warns_and_survives() {
+    let out = Outputs::new();
+    let text = one_term("23 C").replace("min_retained_force = 0.5\n", "");
+    let scenario = out.write("none.toml", &text);
+    let (stdout, stderr) = out.run_ok(&scenario, &[]);
+    assert!(
+        stderr
+            .contains("warning: the [failure] block sets no criterion: the seal can only survive"),
+        "{stderr}"
+    );
+    assert!(
+        stdout.contains("survives 30 years (no failure criterion set)"),
+        "{stdout}"
+    );
+    let json = out.summary();
+    assert!(json["time_to_failure_s"].is_null());
+    assert_eq!(json["failure_mode"], "none");
+    assert!(
+        json["warnings"][0]
+            .as_str()
+            .unwrap()
+            .contains("no criterion")
+    );
+}
+
+/// The NBR O-ring scenario with `from` replaced by `to`, written to a temporary directory.
+fn nbr_with(out: &Outputs, from: &str, to: &str) -> PathBuf {
+    let text = fs::read_to_string(scenarios_dir().join("oring-nbr-water-80c.toml")).unwrap();
+    assert!(text.contains(from), "{from}");
+    out.write("s.toml", &text.replacen(from, to, 1))
+}
+
+#[test]
+fn bad_scenarios_exit_2_and_write_nothing() {
+    let cases: [(&str, &str, &[&str]); 7] = [
+        (
+            "library = \"nbr-70\"",
+            "library = \"nbr-99\"",
+            &[
+                "s.toml:15: material.library: unknown library material \"nbr-99\"; the library has: cr-70, epdm-70",
+            ],
+        ),
+        (
+            "duration = \"30 year\"",
+            "duration = \"1 s\"",
+            &["s.toml:44: simulation.duration: duration (1 s) must exceed start (1 s)"],
+        ),
+        (
+            "squeeze = 0.25 ",
+            "squeeze = 1.0 ",
+            &["s.toml:31: seal.squeeze: must lie strictly between 0 and 1, got 1"],
+        ),
+        (
+            "fidelity = \"critical-junction\"",
+            "fidelity = \"effective-medium\"",
+            &[
+                "s.toml:46: simulation.fidelity: the fidelity level \"effective-medium\" is not available yet",
+            ],
+        ),
+        (
+            "[failure]",
+            "[ageing]\n[failure]",
+            &[
+                "s.toml:37: ageing.activation_energy: missing key `activation_energy` in [ageing], and the material",
+            ],
+        ),
+        (
+            "library = \"nbr-70\"",
+            "youngs_modulus = \"10 MPa\"\npoisson_ratio = 0.5",
+            // fine: an elastic rubber; the next case adds the housing
+            &[],
+        ),
+        (
+            "loading = \"displacement\"",
+            "loading = \"displacement\"\nhousing_expansion = \"12e-6 1/K\"",
+            &[],
+        ),
+    ];
+    for (from, to, needles) in &cases[..5] {
+        let out = Outputs::new();
+        let scenario = nbr_with(&out, from, to);
+        out.run_rejects(&scenario, &[], needles);
+    }
+    // housing_expansion with a material that has no thermal_expansion
+    let out = Outputs::new();
+    let text = fs::read_to_string(scenarios_dir().join("oring-nbr-water-80c.toml"))
+        .unwrap()
+        .replacen(cases[5].0, cases[5].1, 1)
+        .replacen(cases[6].0, cases[6].1, 1);
+    let scenario = out.write("s.toml", &text);
+    out.run_rejects(
+        &scenario,
+        &[],
+        &["s.toml:34: seal.housing_expansion: the thermal strain needs the rubber's expansion too, but the material (NBR O-ring face seal, water at 80 °C) gives no thermal_expansion"],
+    );
+    // an unknown --fidelity
+    let out = Outputs::new();
+    let scenario = nbr_with(&out, "squeeze", "squeeze");
+    out.run_rejects(
+        &scenario,
+        &["--fidelity", "numerical"],
+        &["not available yet"],
+    );
+    out.run_rejects(
+        &scenario,
+        &["--fidelity", "fast"],
+        &["invalid value 'fast'"],
+    );
+}
+
+#[test]
+fn malformed_temperature_histories_are_located() {
+    let cases = [
+        (
+            "time,temperature\nh,C\n0,25\n10,warm\n",
+            "T.csv:4: temperature is not a number: \"warm\" (temperature history named by environment.history at ",
+        ),
+        (
+            "time,temperature\n0,300\n100,290\n50,280\n",
+            "T.csv:4: time must increase strictly from row to row, got 50 s after 100 s",
+        ),
+        ("time,temperature\nh,C\n", "T.csv: no data rows"),
+        (
+            "t,T\n0,300\n",
+            "T.csv:1: expected the header row `time,temperature`",
+        ),
+    ];
+    for (csv, needle) in cases {
+        let out = Outputs::new();
+        out.write("T.csv", csv);
+        let scenario = nbr_with(&out, "temperature = \"80 C\"", "history = \"T.csv\"");
+        out.run_rejects(&scenario, &[], &[needle, "s.toml:35)"]);
+    }
+    // a good one runs
+    let out = Outputs::new();
+    out.write("T.csv", "# ramp\ntime,temperature\nday,C\n0,20\n1,80\n");
+    let scenario = nbr_with(&out, "temperature = \"80 C\"", "history = \"T.csv\"");
+    out.run_ok(&scenario, &[]);
+    let csv = fs::read_to_string(out.path("h.csv")).unwrap();
+    let first: f64 = csv
+        .lines()
+        .nth(1)
+        .unwrap()
+        .split(',')
+        .nth(1)
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!((first - 293.15).abs() < 1e-9);
+}
+
+#[test]
+fn compare_runs_each_compound() {
+    let out = Outputs::new();
+    // a material file by path works alongside library ids
+    let file = out.write(
+        "soft.toml",
+        "[material]\nname = \"soft test rubber\"\npoisson_ratio = 0.5\nlong_term_modulus = \"2 MPa\"\n\
+         prony = [ { modulus = \"2 MPa\", tau = \"1 h\" } ]\nthermal_expansion = \"2e-4 1/K\"\n",
+    );
+    let scenario = scenarios_dir().join("oring-nbr-water-80c.toml");
+    let materials = format!("nbr-70,fkm-75,{}", file.display());
+    let assert = cargo_bin_cmd!("sealsim")
+        .arg("compare")
+        .arg(&scenario)
+        .args(["--materials", &materials, "-o"])
+        .arg(out.path("c.csv"))
+        .arg("--plot")
+        .arg(out.path("c.svg"))
+        .assert()
+        .success();
+    let stdout = String::from_utf8(assert.get_output().stdout.clone()).unwrap();
+    no_nan(&stdout, "compare stdout");
+    for id in ["nbr-70", "fkm-75", "soft.toml"] {
+        assert!(stdout.contains(id), "{stdout}");
+    }
+    let csv = fs::read_to_string(out.path("c.csv")).unwrap();
+    no_nan(&csv, "compare CSV");
+    assert_eq!(csv.lines().next(), Some(COMPARE_HEADER));
+    let rows = csv_rows(&csv);
+    assert_eq!(rows.len(), 3);
+    assert_eq!(
+        (rows[0][0].as_str(), rows[1][0].as_str()),
+        ("nbr-70", "fkm-75")
+    );
+    assert_eq!(rows[2][1], "soft test rubber");
+    assert_eq!(rows[2][2], "user");
+    for row in &rows {
+        assert_eq!(row.len(), 8);
+        for cell in &row[5..] {
+            assert!(cell.parse::<f64>().unwrap() > 0.0, "{row:?}");
+        }
+    }
+    // NBR as in `run`
+    let run = Outputs::new();
+    run.run_ok(&scenario, &[]);
+    let t: f64 = rows[0][3].parse().unwrap();
+    assert_eq!(t, run.summary()["time_to_failure_s"].as_f64().unwrap());
+    let svg = fs::read_to_string(out.path("c.svg")).unwrap();
+    assert!(svg.starts_with("<svg") && svg.contains("fkm-75"));
+}
+
+#[test]
+fn compare_leaves_leak_rates_beyond_the_duration_blank() {
+    let out = Outputs::new();
+    let scenario = nbr_with(&out, "duration = \"30 year\"", "duration = \"2 year\"");
+    let assert = cargo_bin_cmd!("sealsim")
+        .arg("compare")
+        .arg(&scenario)
+        .args(["--materials", "epdm-70", "-o"])
+        .arg(out.path("c.csv"))
+        .assert()
+        .success();
+    assert!(!assert.get_output().stdout.is_empty());
+    let csv = fs::read_to_string(out.path("c.csv")).unwrap();
+    let row = &csv_rows(&csv)[0];
+    assert!(
+        !row[5].is_empty() && !row[6].is_empty() && row[7].is_empty(),
+        "{row:?}"
+    );
+}
+
+#[test]
+fn compare_rejects_unknown_ids() {
+    let out = Outputs::new();
+    let assert = cargo_bin_cmd!("sealsim")
+        .arg("compare")
+        .arg(scenarios_dir().join("oring-nbr-water-80c.toml"))
+        .args(["--materials", "nbr-70,nbr-99", "-o"])
+        .arg(out.path("c.csv"))
+        .arg("--plot")
+        .arg(out.path("c.svg"))
+        .assert()
+        .code(2)
+        .stdout(predicate::str::is_empty());
+    let stderr = String::from_utf8(assert.get_output().stderr.clone()).unwrap();
+    assert!(
+        stderr.starts_with("error: --materials: unknown library material \"nbr-99\"; the library has: cr-70, epdm-70, fkm-75, hnbr-75, nbr-70, vmq-70"),
+        "{stderr}"
+    );
+    assert!(!out.path("c.csv").exists() && !out.path("c.svg").exists());
+    // a compound the scenario cannot take is a located scenario error
+    let scenario = nbr_with(&out, "[failure]", "[ageing]\n[failure]");
+    cargo_bin_cmd!("sealsim")
+        .arg("compare")
+        .arg(&scenario)
+        .args(["--materials", "fkm-75,nbr-70"])
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains(
+            "s.toml:37: ageing.activation_energy",
+        ));
+}
+
+#[test]
+fn leak_takes_the_central_strip_of_an_oring() {
+    let assert = cargo_bin_cmd!("sealsim")
+        .arg("leak")
+        .arg(scenarios_dir().join("oring-nbr-water-80c.toml"))
+        .assert()
+        .success();
+    let stdout = String::from_utf8(assert.get_output().stdout.clone()).unwrap();
+    let p0: f64 = stdout
+        .lines()
+        .nth(1)
+        .unwrap()
+        .split(',')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    // Hertz peak of Lindley's force with E0 (≈ 12.7 MPa for nbr-70) at 25 % squeeze
+    assert!((3.5e6..4.5e6).contains(&p0), "{p0}");
+}
