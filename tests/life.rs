@@ -147,6 +147,7 @@ fn time_to_failure_is_converged_in_the_grid() {
     p.time.points_per_decade *= 4.0;
     let fine = simulate(&p).failure.expect("fails");
     assert_eq!(coarse.mode, FailureMode::LeakRate);
+    eprintln!("refinement: {:e}", coarse.time / fine.time - 1.0);
     assert!(
         (coarse.time / fine.time - 1.0).abs() < 1e-3,
         "{} vs {}",

@@ -8,6 +8,7 @@
 //! τ_max (when E∞ > 0), and `B_j = 1/(λ_j Σ_i E_i τ_i/(λ_j − τ_i)²)` (Tschoegl, *The
 //! Phenomenological Theory of Linear Viscoelastic Behavior*, Springer 1989, ch. 4).
 
+use crate::numerics::special::exp_neg;
 use std::fmt;
 
 /// One Maxwell branch: modulus E_i [Pa], relaxation time τ_i [s, reduced time].
@@ -108,7 +109,8 @@ impl Prony {
         &self.terms
     }
 
-    /// Relaxation modulus E(ξ) [Pa] at reduced time ξ ≥ 0 [s].
+    /// Relaxation modulus E(ξ) [Pa] at reduced time ξ ≥ 0 [s] (with the table-driven
+    /// [`exp_neg`]: E(ξ) sits in every time step and fit residual).
     pub fn relaxation(&self, xi: f64) -> f64 {
         // 1/τ stored (a multiply, not a divide, per term) and four independent partial sums
         let mut acc = [0.0; 4];
@@ -116,7 +118,7 @@ impl Prony {
         let (r4, r_rest) = self.rates.as_chunks::<4>();
         for (m, r) in m4.iter().zip(r4) {
             for k in 0..4 {
-                acc[k] += m[k] * (-xi * r[k]).exp();
+                acc[k] += m[k] * exp_neg(xi * r[k]);
             }
         }
         let rest: f64 = m_rest
@@ -301,7 +303,7 @@ impl RelaxationState {
     pub fn step(&mut self, prony: &Prony, d_xi: f64, d_strain: f64) {
         for (h, t) in self.branches.iter_mut().zip(prony.terms()) {
             let x = d_xi / t.tau;
-            *h = (-x).exp() * *h + t.modulus * phi(x) * d_strain;
+            *h = exp_neg(x) * *h + t.modulus * phi(x) * d_strain;
         }
         self.strain += d_strain;
     }

@@ -153,3 +153,67 @@ mod tests {
         }
     }
 }
+
+/// `2^{j/64}`, j = 0…63, for [`exp_neg`] (from libm's exp2, each within 1 ulp).
+fn exp2_table() -> &'static [f64; 64] {
+    static TABLE: std::sync::OnceLock<[f64; 64]> = std::sync::OnceLock::new();
+    TABLE.get_or_init(|| std::array::from_fn(|j| libm::exp2(j as f64 / 64.0)))
+}
+
+/// `e^{−x}` for x ≥ 0, within a few ulp of libm's `exp` and about twice as fast: Tang's
+/// table method (P.T.P. Tang, ACM TOMS 15 (1989) 144) — `−x = (64 n + j) ln2/64 + r`,
+/// `|r| ≤ ln2/128`, `e^{−x} = 2^n · 2^{j/64} · e^r` with a degree-5 Taylor polynomial for e^r
+/// (truncation < 4e-17). Returns 0 for x > 708 (libm would return subnormals there, which no
+/// sum of moduli can notice).
+#[inline]
+pub fn exp_neg(x: f64) -> f64 {
+    const INV_L: f64 = 64.0 / std::f64::consts::LN_2;
+    const L_HI: f64 = 0.010_830_424_695_996_044; // ln2/64 with 18 trailing zero bits: k·L_HI is exact
+    const L_LO: f64 = 2.531_017_216_665_087_7e-13; // ln2/64 − L_HI
+    const MAGIC: f64 = 6_755_399_441_055_744.0; // 1.5 · 2^52: rounds to the nearest integer
+    if !(x <= 708.0) {
+        return 0.0;
+    }
+    let y = -x;
+    let t = y * INV_L + MAGIC;
+    let kf = t - MAGIC;
+    let k = (t.to_bits() as i64).wrapping_sub(MAGIC.to_bits() as i64);
+    let r = (y - kf * L_HI) - kf * L_LO;
+    let p = 1.0 + r * (1.0 + r * (0.5 + r * (1.0 / 6.0 + r * (1.0 / 24.0 + r * (1.0 / 120.0)))));
+    let j = (k & 63) as usize;
+    let n = k >> 6; // floor division: k = 64 n + j with 0 ≤ j < 64
+    let scale = f64::from_bits(((n + 1023) as u64) << 52);
+    scale * exp2_table()[j] * p
+}
+
+#[cfg(test)]
+mod exp_tests {
+    use super::exp_neg;
+
+    #[test]
+    fn exp_neg_matches_libm() {
+        let mut worst: f64 = 0.0;
+        let mut x = 0.0;
+        while x < 708.0 {
+            worst = worst.max((exp_neg(x) / (-x).exp() - 1.0).abs());
+            x += 0.000_731;
+        }
+        for x in [
+            0.0,
+            1e-300,
+            1e-20,
+            1e-8,
+            std::f64::consts::LN_2 / 128.0,
+            1.0,
+            700.0,
+            707.9,
+        ] {
+            assert!((exp_neg(x) / (-x).exp() - 1.0).abs() < 1e-15, "x={x}");
+        }
+        assert!(worst < 1e-15, "worst relative error {worst:e}");
+        assert_eq!(exp_neg(0.0), 1.0);
+        assert_eq!(exp_neg(709.0), 0.0);
+        assert_eq!(exp_neg(f64::INFINITY), 0.0);
+        assert_eq!(exp_neg(f64::NAN), 0.0);
+    }
+}
