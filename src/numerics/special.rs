@@ -171,7 +171,7 @@ pub fn exp_neg(x: f64) -> f64 {
     const L_HI: f64 = 0.010_830_424_695_996_044; // ln2/64 with 18 trailing zero bits: k·L_HI is exact
     const L_LO: f64 = 2.531_017_216_665_087_7e-13; // ln2/64 − L_HI
     const MAGIC: f64 = 6_755_399_441_055_744.0; // 1.5 · 2^52: rounds to the nearest integer
-    if !(x <= 708.0) {
+    if x.is_nan() || x > 708.0 {
         return 0.0;
     }
     let y = -x;
