@@ -1,8 +1,11 @@
 //! Speed of the seal-life simulation: a 30-year O-ring run (the shipped NBR scenario,
 //! 20 points per decade, critical-junction fidelity, 16 strips across the Hertz profile),
 //! contact table build included. Target ≤ 20 ms; the figure goes in the README.
+//! With particle clogging (issue 5, DESIGN §7): the same run in dirty water (log-normal dirt,
+//! median 1.5 µm, 1e10 /m³), without and with re-routing; target ≤ 3× the clean run.
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use sealsim::clogging::{Contamination, DEFAULT_TOLERANCE, SizeDistribution};
 use sealsim::leak::Fidelity;
 use sealsim::scenario::Scenario;
 use sealsim::simulate::simulate;
@@ -22,6 +25,22 @@ fn life(c: &mut Criterion) {
         &format!("30-year O-ring life run (nbr-70, 80 °C, {rows} rows, critical-junction)"),
         |b| b.iter(|| simulate(black_box(&problem))),
     );
+    for reroute in [false, true] {
+        let mut dirty = problem.clone();
+        dirty.contamination = Some(Contamination {
+            number_concentration: 1e10,
+            size_distribution: SizeDistribution::LogNormal {
+                median: 1.5e-6,
+                geometric_std: 1.8,
+            },
+            reroute,
+            tolerance: DEFAULT_TOLERANCE,
+        });
+        c.bench_function(
+            &format!("30-year O-ring life run with clogging, reroute = {reroute}"),
+            |b| b.iter(|| simulate(black_box(&dirty))),
+        );
+    }
     // the same without the failure criteria (no bisection for the failure time)
     problem.failure = Default::default();
     c.bench_function("30-year O-ring life run, no failure criteria", |b| {

@@ -37,6 +37,7 @@
 //! ```
 
 pub mod cli;
+pub mod clogging;
 pub mod contact;
 pub mod leak;
 pub mod material;

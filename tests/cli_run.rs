@@ -11,7 +11,7 @@ use tempfile::TempDir;
 
 const HISTORY_HEADER: &str = "time_s,temperature_K,reduced_time_s,shift_factor,\
 sealing_force_N_per_m,peak_pressure_Pa,mean_pressure_Pa,contact_width_m,u_c_m,\
-leak_rate_m3_per_s,leaked_volume_m3,state";
+leak_rate_m3_per_s,leaked_volume_m3,state,open_fraction";
 
 const COMPARE_HEADER: &str = "material,name,status,time_to_failure_s,failure_mode,\
 leak_rate_1day_m3_per_s,leak_rate_1year_m3_per_s,leak_rate_10years_m3_per_s";
@@ -169,7 +169,9 @@ fn every_shipped_scenario_runs_without_nan() {
             "{name}: the installation row comes first"
         );
         for row in &rows {
-            assert_eq!(row.len(), 12, "{name}: {row:?}");
+            assert_eq!(row.len(), 13, "{name}: {row:?}");
+            let f: f64 = row[12].parse().unwrap();
+            assert!((0.0..=1.0).contains(&f), "{name}: open fraction {f}");
             for (i, cell) in row[..11].iter().enumerate() {
                 if cell.is_empty() {
                     assert!(i == 3 || i == 8, "{name}: empty column {i}");
@@ -625,4 +627,90 @@ fn leak_takes_the_central_strip_of_an_oring() {
         .unwrap();
     // Hertz peak of Lindley's force with E0 (≈ 12.7 MPa for nbr-70) at 25 % squeeze
     assert!((3.5e6..4.5e6).contains(&p0), "{p0}");
+}
+
+/// `[contamination]` errors (issue 5): located, exit 2, nothing written.
+#[test]
+fn bad_contamination_exits_2() {
+    let good =
+        fs::read_to_string(scenarios_dir().join("oring-nbr-hydraulic-oil-clogging.toml")).unwrap();
+    let line = |needle: &str| good.lines().position(|l| l.contains(needle)).unwrap() + 1;
+    let conc = line("number_concentration =");
+    let sizes = line("size_distribution =");
+    let lognormal = "{ kind = \"lognormal\", median = \"1.5 um\", geometric_std = 1.8 }";
+    let cases: Vec<(String, String, String)> = vec![
+        (
+            "\"1e12 1/m^3\"".into(),
+            "\"-1e12 1/m^3\"".into(),
+            format!("s.toml:{conc}: contamination.number_concentration: must not be negative"),
+        ),
+        (
+            "geometric_std = 1.8".into(),
+            "geometric_std = 1.0".into(),
+            format!("s.toml:{sizes}: contamination.size_distribution.geometric_std: must exceed 1"),
+        ),
+        (
+            lognormal.into(),
+            "{ kind = \"weibull\", scale = \"1 um\", shape = 0 }".into(),
+            format!("s.toml:{sizes}: contamination.size_distribution.shape: must be positive"),
+        ),
+        (
+            lognormal.into(),
+            "{ kind = \"table\", file = \"sizes.csv\" }".into(),
+            format!("s.toml:{sizes}: contamination.size_distribution.file: "),
+        ),
+        (
+            "number_concentration = \"1e12 1/m^3\"".into(),
+            "number_concentration = \"1e12 1/m^3\"\nvolume_fraction = 1e-6".into(),
+            "contamination.volume_fraction: number_concentration and volume_fraction are mutually exclusive".into(),
+        ),
+        (
+            "number_concentration = \"1e12 1/m^3\"\n".into(),
+            "".into(),
+            "contamination.number_concentration: missing key".into(),
+        ),
+        (
+            "capture = \"sieving\"".into(),
+            "capture = \"depth\"".into(),
+            "contamination.capture: must be \"sieving\"".into(),
+        ),
+    ];
+    for (from, to, needle) in cases {
+        let out = Outputs::new();
+        // a size table that is not a CDF (F decreases)
+        out.write("sizes.csv", "d,F\num,\n0.5,0.2\n1,0.1\n2,1\n");
+        assert!(good.contains(&from), "{from}");
+        let scenario = out.write("s.toml", &good.replacen(&from, &to, 1));
+        out.run_rejects(&scenario, &[], &[&needle]);
+        if to.contains("table") {
+            let stderr_needle = "sizes.csv:4: not a CDF";
+            out.run_rejects(&scenario, &[], &[stderr_needle]);
+        }
+    }
+}
+
+/// The clogging scenario's leak rate falls over the first weeks while its clean twin's rises;
+/// the open fraction is in the history and the summary.
+#[test]
+fn clogging_scenario_against_its_clean_twin() {
+    let out = Outputs::new();
+    out.run_ok(
+        &scenarios_dir().join("oring-nbr-hydraulic-oil-clean.toml"),
+        &[],
+    );
+    let clean = out.summary();
+    assert_eq!(clean["final_open_fraction"].as_f64(), Some(1.0));
+    out.run_ok(
+        &scenarios_dir().join("oring-nbr-hydraulic-oil-clogging.toml"),
+        &[],
+    );
+    let dirty = out.summary();
+    let f = dirty["final_open_fraction"].as_f64().unwrap();
+    assert!(f > 0.0 && f < 0.9, "{f}");
+    assert!(
+        dirty["final_leak_rate_m3_per_s"].as_f64().unwrap()
+            < 0.01 * clean["final_leak_rate_m3_per_s"].as_f64().unwrap()
+    );
+    let history = fs::read_to_string(out.path("h.csv")).unwrap();
+    assert!(history.starts_with(HISTORY_HEADER));
 }

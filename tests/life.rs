@@ -65,6 +65,7 @@ fn oring_problem(material: Material) -> LifeProblem {
         },
         fidelity: Fidelity::Table,
         strips: 16,
+        contamination: None,
     }
 }
 

@@ -23,7 +23,7 @@ use std::path::PathBuf;
     after_help = "History columns (CSV, SI units): time_s, temperature_K, reduced_time_s, \
     shift_factor (blank when frozen), sealing_force_N_per_m, peak_pressure_Pa, mean_pressure_Pa, \
     contact_width_m, u_c_m (blank when sealed at the peak), leak_rate_m3_per_s, \
-    leaked_volume_m3, state (leaking|sealed|lift_off). The first row is the installation, t = 0.\n\
+    leaked_volume_m3, state (leaking|sealed|lift_off), open_fraction (open fraction of the critical channels under particle clogging; 1 without [contamination]). The first row is the installation, t = 0.\n\
     An O-ring's leak rate is integrated over its Hertz profile as strips in series; `sealsim \
     leak` on the same scenario evaluates only the central strip right after installation."
 )]

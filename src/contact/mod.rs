@@ -334,6 +334,32 @@ impl PerssonContact {
         Junction::Leaking(self.junction_from(ln_a, u_c, ubar_c))
     }
 
+    /// The critical junction at reduced pressure `s` for an arbitrary percolation threshold
+    /// `threshold` ∈ (0, 1) instead of the settings' a_c (used by clogging with re-routing,
+    /// DESIGN §7: blocked channels count as contact, so the flow percolates at the smaller
+    /// threshold `a_eff`). Same quadrature as [`Self::critical_junction`], with
+    /// `M3(ζc) = s²/(π erfinv²(threshold))`; erfinv² is computed per call. Sealed for a
+    /// threshold outside (0, 1).
+    pub fn critical_junction_at_threshold(&self, s: f64, threshold: f64) -> Junction {
+        if !(threshold > 0.0 && threshold < 1.0) {
+            return Junction::Sealed;
+        }
+        let e = erf_inv(threshold);
+        let m3 = s * s / (PI * e * e);
+        if !m3.is_finite() {
+            return Junction::Sealed;
+        }
+        let Some(ln_a) = self.spectrum.invert_m3(m3) else {
+            return Junction::Sealed;
+        };
+        let sep = self.separation_at(ln_a, m3, s);
+        let (u_c, ubar_c) = (sep.u1(), sep.mean);
+        if !(ubar_c > 0.0 && u_c > ubar_c) {
+            return Junction::Sealed;
+        }
+        Junction::Leaking(self.junction_from(ln_a, u_c, ubar_c))
+    }
+
     /// Assembles the junction at `ln(ζc q0) = ln_a` from u_c and ū_c (used by the table).
     pub(crate) fn junction_from(&self, ln_a: f64, u_c: f64, ubar_c: f64) -> CriticalJunction {
         let zeta_c = (ln_a - self.spectrum.ln_q0()).exp().max(1.0);
@@ -379,5 +405,25 @@ mod tests {
             );
             assert!((fd_a / m.area_dlnzeta - 1.0).abs() < 1e-6);
         }
+    }
+
+    #[test]
+    fn junction_at_the_own_threshold_is_the_junction() {
+        let c = paper_contact();
+        let s = 0.2e6 / (10e6 / 0.75);
+        assert_eq!(
+            c.critical_junction_at_threshold(s, 0.4),
+            c.critical_junction(s)
+        );
+        // a smaller threshold: a narrower constriction at a higher magnification
+        let (a, b) = (
+            c.critical_junction(s).leaking().copied().unwrap(),
+            c.critical_junction_at_threshold(s, 0.3)
+                .leaking()
+                .copied()
+                .unwrap(),
+        );
+        assert!(b.u_c < a.u_c && b.zeta_c > a.zeta_c);
+        assert_eq!(c.critical_junction_at_threshold(s, 0.0), Junction::Sealed);
     }
 }

@@ -24,8 +24,11 @@ use serde::Serialize;
 /// * `u_c_m`, the critical constriction at the peak pressure, is blank where that strip is
 ///   sealed (no percolating channel);
 /// * `state` is `leaking`, `sealed` or `lift_off` (the peak contact pressure is below ΔP:
-///   the seal opens and the leak rate shown is the model's, which no longer applies).
-pub const HISTORY_COLUMNS: [&str; 12] = [
+///   the seal opens and the leak rate shown is the model's, which no longer applies);
+/// * `open_fraction` is the open fraction f of the critical channels under particle
+///   clogging (DESIGN §7), always written (1 without `[contamination]`) so that the schema is
+///   one.
+pub const HISTORY_COLUMNS: [&str; 13] = [
     "time_s",
     "temperature_K",
     "reduced_time_s",
@@ -38,6 +41,7 @@ pub const HISTORY_COLUMNS: [&str; 12] = [
     "leak_rate_m3_per_s",
     "leaked_volume_m3",
     "state",
+    "open_fraction",
 ];
 
 /// The history of a life run as CSV: the header and one row per output time (t = 0, the
@@ -65,6 +69,7 @@ pub fn history_table(result: &LifeResult) -> Result<String, ReportError> {
             cell(9, r.leak_rate)?,
             cell(10, r.leaked_volume)?,
             r.state.as_str().to_owned(),
+            cell(12, r.open_fraction)?,
         ];
         writer.write_record(record).map_err(csv_error)?;
     }
@@ -106,6 +111,9 @@ pub struct Summary {
     pub final_sealing_force_n_per_m: f64,
     /// Length of the run [s].
     pub duration_s: f64,
+    /// Open fraction of the critical channels at the end of the run (1 without
+    /// `[contamination]`).
+    pub final_open_fraction: f64,
     /// The validity warnings of the run, as printed on stderr (without `warning: `).
     pub warnings: Vec<String>,
 }
@@ -131,6 +139,7 @@ impl Summary {
             initial_sealing_force_n_per_m: first.map_or(0.0, |r| r.sealing_force),
             final_sealing_force_n_per_m: last.map_or(0.0, |r| r.sealing_force),
             duration_s: problem.time.duration,
+            final_open_fraction: result.final_open_fraction(),
             warnings: result.warnings.iter().map(ToString::to_string).collect(),
         }
     }
@@ -155,6 +164,7 @@ impl Summary {
                 self.final_sealing_force_n_per_m,
             ),
             ("duration_s", self.duration_s),
+            ("final_open_fraction", self.final_open_fraction),
         ];
         for (column, value) in values {
             if !value.is_finite() {
@@ -559,6 +569,7 @@ mod tests {
             u_c,
             leak_rate,
             leaked_volume: leak_rate * time,
+            open_fraction: 1.0,
             state: if u_c.is_some() {
                 SealState::Leaking
             } else {
@@ -589,11 +600,11 @@ mod tests {
         assert_eq!(lines[0], HISTORY_COLUMNS.join(","));
         assert_eq!(
             lines[1],
-            "0e0,3.5315e2,0e0,1e-1,1e3,2e6,1.5e6,1e-3,2e-7,1e-12,0e0,leaking"
+            "0e0,3.5315e2,0e0,1e-1,1e3,2e6,1.5e6,1e-3,2e-7,1e-12,0e0,leaking,1e0"
         );
         assert_eq!(
             lines[2],
-            "1e1,3.5315e2,1e2,,1e3,2e6,1.5e6,1e-3,,0e0,0e0,sealed"
+            "1e1,3.5315e2,1e2,,1e3,2e6,1.5e6,1e-3,,0e0,0e0,sealed,1e0"
         );
         let bad = result(vec![row(0.0, f64::NAN, 1.0, None)]);
         assert!(matches!(

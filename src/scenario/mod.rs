@@ -15,6 +15,7 @@
 //! [`leak::StaticProblem`]: crate::leak::StaticProblem
 //! [`simulate::LifeProblem`]: crate::simulate::LifeProblem
 
+mod contamination;
 mod error;
 pub mod figure_set;
 pub mod fit_data;

@@ -65,6 +65,7 @@ pub(super) struct RawScenario {
     pub failure: Option<Spanned<RawFailure>>,
     pub ageing: Option<Spanned<RawScenarioAgeing>>,
     pub simulation: Option<Spanned<RawSimulation>>,
+    pub contamination: Option<Spanned<RawContamination>>,
 }
 
 impl RawScenario {
@@ -79,6 +80,7 @@ impl RawScenario {
         "failure",
         "ageing",
         "simulation",
+        "contamination",
     ];
 }
 
@@ -221,6 +223,33 @@ pub(super) struct RawSimulation {
     pub start: Option<Quantity>,
     pub points_per_decade: Option<Quantity>,
     pub fidelity: Option<Spanned<String>>,
+    pub clogging_tolerance: Option<Quantity>,
+}
+
+/// `[contamination]`: particles in the fluid that clog the critical constrictions
+/// (DESIGN §7); which keys go together is checked in validation.
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawContamination {
+    pub number_concentration: Option<Quantity>,
+    pub volume_fraction: Option<Quantity>,
+    pub size_distribution: Option<Spanned<RawSizeDistribution>>,
+    pub capture: Option<Spanned<String>>,
+    pub reroute: Option<Spanned<bool>>,
+}
+
+/// `size_distribution = { kind = "...", ... }`: the keys of each kind are checked in
+/// validation.
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawSizeDistribution {
+    pub kind: Spanned<String>,
+    pub diameter: Option<Quantity>,
+    pub median: Option<Quantity>,
+    pub geometric_std: Option<Quantity>,
+    pub scale: Option<Quantity>,
+    pub shape: Option<Quantity>,
+    pub file: Option<Spanned<String>>,
 }
 
 /// `[model]`: optional settings of the critical-junction theory.

@@ -181,6 +181,8 @@ impl Source<'_> {
         let ageing = self.scenario_ageing(raw.ageing.as_ref(), &material)?;
         let failure = self.failure(raw.failure.as_ref())?;
         let (time, fidelity) = self.simulation(raw.simulation.as_ref())?;
+        let clogging_tolerance = self.clogging_tolerance(raw.simulation.as_ref())?;
+        let contamination = self.contamination(raw.contamination.as_ref(), clogging_tolerance)?;
         let life = LifeProblem {
             material: material.clone(),
             asperity_modulus,
@@ -197,6 +199,7 @@ impl Source<'_> {
             time,
             fidelity,
             strips: STRIPS,
+            contamination,
         };
         let seal = static_seal(&life);
         Ok(Validated {

@@ -9,6 +9,10 @@
 //! criteria, located between steps by bisection on the exact state update to ≤ 1e-12 relative
 //! in time.
 //!
+//! With a `[contamination]` block (DESIGN §7, [`crate::clogging`]) the open fraction f of the
+//! critical channels is integrated alongside, segment by segment between the internal time
+//! points (see [`Simulator::integrate_clogging`]); without it nothing of that runs.
+//!
 //! Steps are log-uniform in time from `start` (with an installation row at t = 0);
 //! temperature cycles add internal sub-steps (eight per shortest period), and with a thermal
 //! strain each sub-step is split further until a_T changes by at most half a decade within it,
@@ -17,7 +21,8 @@
 
 pub mod events;
 
-use crate::contact::{ContactSettings, Junction};
+use crate::clogging::{Contamination, effective_threshold};
+use crate::contact::{ContactSettings, Junction, PerssonContact};
 use crate::leak::{ContactPath, Fidelity, Fluid};
 use crate::material::shift::reduced_time;
 use crate::material::{Ageing, Material, RelaxationState, Shift, TemperatureHistory};
@@ -117,6 +122,8 @@ pub struct LifeProblem {
     pub fidelity: Fidelity,
     /// Gauss–Legendre points across the Hertz profile (strips in series).
     pub strips: usize,
+    /// Particle clogging of the critical constrictions (`None`: clean fluid, zero cost).
+    pub contamination: Option<Contamination>,
 }
 
 impl LifeProblem {
@@ -171,6 +178,8 @@ pub struct HistoryRow {
     pub leak_rate: f64,
     pub leaked_volume: f64,
     pub state: SealState,
+    /// Open fraction f of the critical channels (1 without contamination).
+    pub open_fraction: f64,
 }
 
 /// A validity caveat of a life run.
@@ -255,6 +264,11 @@ impl LifeResult {
         self.rows.last().map_or(0.0, |r| r.leaked_volume)
     }
 
+    /// Open fraction of the critical channels at the end of the run (1 when clean).
+    pub fn final_open_fraction(&self) -> f64 {
+        self.rows.last().map_or(1.0, |r| r.open_fraction)
+    }
+
     /// Leak rate at time `t` [s], interpolated as a power law between rows (0 outside).
     pub fn leak_rate_at(&self, t: f64) -> Option<f64> {
         let k = self.rows.partition_point(|r| r.time < t);
@@ -282,6 +296,16 @@ struct Snapshot {
     leak_rate: f64,
     state: SealState,
     retained: f64,
+    /// Leak rate with all critical channels open [m³/s] (= `leak_rate` when clean).
+    open_leak_rate: f64,
+    /// u_c at the peak strip with all channels open [m] (0 when sealed there).
+    open_u_c: f64,
+    /// λ_c at the peak strip with all channels open [m] (0 when sealed there).
+    lambda_c: f64,
+    /// Peak reduced pressure P_peak/E*.
+    peak_reduced_pressure: f64,
+    /// Open fraction f the leak rate was evaluated with.
+    open_fraction: f64,
 }
 
 /// The mechanical state carried along the time loop.
@@ -293,6 +317,12 @@ struct Mechanics {
     /// ∫ k(T)/k_ref dt, for the ageing factor.
     ageing_time: f64,
     leaked_volume: f64,
+    /// ln f, the log of the open fraction of the critical channels (0 when clean; −∞ when
+    /// every channel is blocked).
+    log_open_fraction: f64,
+    /// The clogging ODE could not follow a stiff closure within a step: the seal is taken
+    /// as closed from then on.
+    clogged_shut: bool,
 }
 
 /// A prepared life simulation: the contact path (table) is built once here.
@@ -304,6 +334,8 @@ pub struct Simulator<'a> {
     load0: f64,
     initial_profile: Profile,
     creep: crate::material::Creep,
+    /// The exact contact path for re-routed clogging (junctions at other thresholds).
+    rerouting: Option<PerssonContact>,
 }
 
 impl<'a> Simulator<'a> {
@@ -312,6 +344,11 @@ impl<'a> Simulator<'a> {
         let path = ContactPath::new(&problem.spectrum, problem.contact, problem.fidelity);
         let load0 = load_variable(problem, problem.environment.at(0.0));
         let initial_profile = problem.initial_profile();
+        let rerouting = problem
+            .contamination
+            .as_ref()
+            .filter(|c| c.reroute)
+            .map(|_| PerssonContact::new(problem.spectrum.clone(), problem.contact));
         Simulator {
             problem,
             path,
@@ -319,6 +356,7 @@ impl<'a> Simulator<'a> {
             load0,
             initial_profile,
             creep: problem.material.prony.creep(),
+            rerouting,
         }
     }
 
@@ -335,6 +373,8 @@ impl<'a> Simulator<'a> {
             relaxation: RelaxationState::new(&p.material.prony),
             ageing_time: 0.0,
             leaked_volume: 0.0,
+            log_open_fraction: 0.0,
+            clogged_shut: false,
         };
         // installation: an instantaneous jump of the load variable
         state.relaxation.step(&p.material.prony, 0.0, self.load0);
@@ -458,7 +498,14 @@ impl<'a> Simulator<'a> {
             };
             state.ageing_time += reduced_time(&p.environment, &arrhenius, a, b);
         }
-        let after = self.snapshot_at(state, b);
+        let after = match &p.contamination {
+            None => self.snapshot_at(state, b),
+            Some(c) => {
+                let open = self.open_snapshot_at(state, b);
+                self.integrate_clogging(c, state, b, before, &open);
+                self.clogged(open, state)
+            }
+        };
         state.leaked_volume += events::integrate_power_law(a, before.leak_rate, b, after.leak_rate);
         state.time = b;
     }
@@ -467,8 +514,154 @@ impl<'a> Simulator<'a> {
         self.snapshot_at(state, state.time)
     }
 
-    /// Profile, asperity modulus, junctions and leak rate at the state's time `t`.
+    /// The snapshot at `t` with the state's open fraction applied.
     fn snapshot_at(&self, state: &Mechanics, t: f64) -> Snapshot {
+        let open = self.open_snapshot_at(state, t);
+        if self.problem.contamination.is_none() {
+            return open;
+        }
+        self.clogged(open, state)
+    }
+
+    /// The leak rate of `open` (all channels open) with the state's open fraction f:
+    /// * without re-routing the blocked channels carry nothing, the rest are unchanged:
+    ///   `Q̇ = f Q̇_open`;
+    /// * with re-routing the blocked channels count as contact, the effective threshold is
+    ///   `a_eff = 1 − (1 − a_c)/f` and the next, narrower constriction takes over. The
+    ///   strips-in-series open leak rate is scaled by the *peak strip's* ratio
+    ///   `(u_c(s_peak, a_eff)/u_c(s_peak, a_c))³` (an approximation: the peak strip dominates
+    ///   the series resistance), both junctions by the exact path; 0 when a_eff ≤ 0 or the
+    ///   peak strip seals at a_eff.
+    fn clogged(&self, mut snap: Snapshot, state: &Mechanics) -> Snapshot {
+        let f = if state.clogged_shut {
+            0.0
+        } else {
+            state.log_open_fraction.exp().clamp(0.0, 1.0)
+        };
+        snap.open_fraction = f;
+        if f >= 1.0 {
+            return snap;
+        }
+        let (scale, u_c) = match &self.rerouting {
+            None => (f, snap.u_c),
+            Some(_) if state.clogged_shut => (0.0, None),
+            Some(_) => {
+                let (ratio, u_eff) = self.reroute_ratio(snap.peak_reduced_pressure, f);
+                (ratio, u_eff)
+            }
+        };
+        snap.u_c = u_c;
+        snap.leak_rate = (snap.open_leak_rate * scale).max(0.0);
+        if !snap.leak_rate.is_finite() {
+            snap.leak_rate = 0.0;
+        }
+        if snap.state == SealState::Leaking && snap.leak_rate <= 0.0 {
+            snap.state = SealState::Sealed;
+        }
+        snap
+    }
+
+    /// `((u_c(s, a_eff)/u_c(s, a_c))³, u_c(s, a_eff))` at the peak reduced pressure `s` and
+    /// open fraction `f` (re-routing only; `(0, None)` when the junction seals).
+    fn reroute_ratio(&self, s: f64, f: f64) -> (f64, Option<f64>) {
+        let Some(exact) = &self.rerouting else {
+            return (f, None);
+        };
+        let a_c = self.problem.contact.percolation_threshold;
+        let a_eff = effective_threshold(a_c, f);
+        if a_eff.is_nan() || a_eff <= 0.0 {
+            return (0.0, None);
+        }
+        let reference = exact.critical_junction_at_threshold(s, a_c);
+        let narrower = exact.critical_junction_at_threshold(s, a_eff);
+        match (reference, narrower) {
+            (Junction::Leaking(r), Junction::Leaking(n)) if r.u_c > 0.0 => {
+                ((n.u_c / r.u_c).powi(3).min(1.0), Some(n.u_c))
+            }
+            _ => (0.0, None),
+        }
+    }
+
+    /// Integrates the open fraction over one internal step `[before, open]` (DESIGN §7).
+    ///
+    /// The state is `y = ln f` (so f = e^y can never overshoot below 0, and a huge
+    /// concentration drives y to −∞, f to 0, within the step), with
+    /// `dy/dt = −n_p [1 − F(u)] Q̇ / (N_ch f)`, N_ch = L_y/λ_c (λ_c of the critical junction
+    /// at the peak strip with all channels open: the channels that carry the flow), and
+    /// * without re-routing `Q̇ = f Q̇_open`, u = u_c: `dy/dt = −n_p [1 − F(u_c)] Q̇_open/N_ch`;
+    /// * with re-routing `Q̇ = Q̇_open (u_c(a_eff)/u_c(a_c))³` and u = u_c(a_eff) (see
+    ///   [`Self::clogged`]); the right side vanishes where the seal closes.
+    ///
+    /// Inside the step u_c, Q̇_open, λ_c and the peak reduced pressure are interpolated as
+    /// power laws in time between the step's ends ([`events::interpolate_power_law`]).
+    /// Dopri5 (ode_solvers) with sparse output (only the end state is used; its dense output
+    /// extrapolates the last point), rtol = atol = the clogging tolerance on ln f (an
+    /// absolute error in ln f is a relative error in f). If the integration fails (a stiff
+    /// closure under re-routing, which the explicit method cannot follow) the seal is taken
+    /// as clogged shut from there on.
+    fn integrate_clogging(
+        &self,
+        c: &Contamination,
+        state: &mut Mechanics,
+        b: f64,
+        before: &Snapshot,
+        after: &Snapshot,
+    ) {
+        let a = state.time;
+        if state.clogged_shut || state.log_open_fraction == f64::NEG_INFINITY || b <= a {
+            return;
+        }
+        let length = self.problem.geometry.sealing_length();
+        let system = CloggingOde {
+            simulator: self,
+            contamination: c,
+            a,
+            b,
+            before,
+            after,
+            length,
+        };
+        // Nothing captured at the ends: nothing in between either (u_c(t) is a power law,
+        // hence monotone, and so is F(u_c(t))), the clean case costs no integration; the
+        // midpoint is probed as well for safety.
+        let probes = [a, 0.5 * (a + b), b];
+        if probes
+            .iter()
+            .all(|&t| system.rate(t, state.log_open_fraction) == 0.0)
+        {
+            return;
+        }
+        let y0 = ode_solvers::Vector1::new(state.log_open_fraction);
+        let tol = c.tolerance;
+        let mut stepper = ode_solvers::Dopri5::new(system, a, b, b - a, y0, tol, tol);
+        stepper.set_output(ode_solvers::OutputType::Sparse);
+        let y = match stepper.integrate() {
+            Ok(_) => stepper.y_out().last().map(|v| v[0]),
+            Err(_) => None,
+        };
+        match y {
+            Some(y) if y.is_finite() => {
+                // below e^-745 f underflows: every channel is blocked
+                state.log_open_fraction = if y < f64::MIN_POSITIVE.ln() {
+                    f64::NEG_INFINITY
+                } else {
+                    y.min(0.0)
+                };
+            }
+            Some(y) if y == f64::NEG_INFINITY => state.log_open_fraction = y,
+            _ => {
+                if c.reroute {
+                    state.clogged_shut = true;
+                } else {
+                    state.log_open_fraction = f64::NEG_INFINITY;
+                }
+            }
+        }
+    }
+
+    /// Profile, asperity modulus, junctions and leak rate at the state's time `t`, with all
+    /// critical channels open.
+    fn open_snapshot_at(&self, state: &Mechanics, t: f64) -> Snapshot {
         let p = self.problem;
         let temperature = p.environment.at(t);
         let ageing = p
@@ -495,11 +688,9 @@ impl<'a> Simulator<'a> {
             &self.rule,
             conductance,
         );
-        let u_c = self
-            .path
-            .critical_junction(profile.peak() / e_star)
-            .leaking()
-            .map(|j| j.u_c);
+        let peak_junction = self.path.critical_junction(profile.peak() / e_star);
+        let u_c = peak_junction.leaking().map(|j| j.u_c);
+        let lambda_c = peak_junction.leaking().map_or(0.0, |j| j.lambda_c);
         let state = if profile.peak() < p.fluid.pressure_difference {
             SealState::LiftOff
         } else if leak_rate > 0.0 {
@@ -507,17 +698,23 @@ impl<'a> Simulator<'a> {
         } else {
             SealState::Sealed
         };
+        let leak_rate = if leak_rate.is_finite() {
+            leak_rate
+        } else {
+            0.0
+        };
         Snapshot {
             temperature,
             profile,
             u_c,
-            leak_rate: if leak_rate.is_finite() {
-                leak_rate
-            } else {
-                0.0
-            },
+            leak_rate,
             state,
             retained,
+            open_leak_rate: leak_rate,
+            open_u_c: u_c.unwrap_or(0.0),
+            lambda_c,
+            peak_reduced_pressure: profile.peak() / e_star,
+            open_fraction: 1.0,
         }
     }
 
@@ -549,6 +746,7 @@ impl<'a> Simulator<'a> {
             leak_rate: snap.leak_rate,
             leaked_volume: state.leaked_volume,
             state: snap.state,
+            open_fraction: snap.open_fraction,
         }
     }
 
@@ -653,6 +851,71 @@ impl Snapshot {
             retained_force: self.retained,
             lifted: self.state == SealState::LiftOff,
         }
+    }
+}
+
+/// The clogging ODE of one internal step, `d(ln f)/dt` (see
+/// [`Simulator::integrate_clogging`]).
+struct CloggingOde<'s, 'a> {
+    simulator: &'s Simulator<'a>,
+    contamination: &'s Contamination,
+    a: f64,
+    b: f64,
+    before: &'s Snapshot,
+    after: &'s Snapshot,
+    /// L_y [m].
+    length: f64,
+}
+
+impl CloggingOde<'_, '_> {
+    /// `−d(ln f)/dt` [1/s] at time `t` and `y = ln f` (≥ 0, finite).
+    fn rate(&self, t: f64, y: f64) -> f64 {
+        let (a, b) = (self.a, self.b);
+        let t = t.clamp(a, b);
+        let at = |qa: f64, qb: f64| events::interpolate_power_law(a, qa, b, qb, t).max(0.0);
+        let q_open = at(self.before.open_leak_rate, self.after.open_leak_rate);
+        let lambda_c = at(self.before.lambda_c, self.after.lambda_c);
+        if !(q_open > 0.0 && lambda_c > 0.0) {
+            return 0.0;
+        }
+        let channels = self.length / lambda_c;
+        let n_p = self.contamination.number_concentration;
+        let rate = match &self.simulator.rerouting {
+            None => {
+                let u_c = at(self.before.open_u_c, self.after.open_u_c);
+                n_p * self.contamination.captured_fraction(u_c) * q_open / channels
+            }
+            Some(_) => {
+                let f = y.exp().min(1.0);
+                if f <= 0.0 {
+                    return 0.0;
+                }
+                let s = at(
+                    self.before.peak_reduced_pressure,
+                    self.after.peak_reduced_pressure,
+                );
+                let (ratio, u_eff) = if f >= 1.0 {
+                    (1.0, Some(at(self.before.open_u_c, self.after.open_u_c)))
+                } else {
+                    self.simulator.reroute_ratio(s, f)
+                };
+                let Some(u_eff) = u_eff else {
+                    return 0.0;
+                };
+                n_p * self.contamination.captured_fraction(u_eff) * q_open * ratio / (channels * f)
+            }
+        };
+        if rate.is_nan() {
+            0.0
+        } else {
+            rate.min(f64::MAX)
+        }
+    }
+}
+
+impl ode_solvers::System<f64, ode_solvers::Vector1<f64>> for CloggingOde<'_, '_> {
+    fn system(&self, t: f64, y: &ode_solvers::Vector1<f64>, dy: &mut ode_solvers::Vector1<f64>) {
+        dy[0] = -self.rate(t, y[0]);
     }
 }
 

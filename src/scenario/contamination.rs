@@ -1,0 +1,387 @@
+//! `[contamination]` → [`Contamination`] (DESIGN §7), and `[simulation] clogging_tolerance`.
+//!
+//! Keys: `number_concentration` (1/m³) XOR `volume_fraction` (dimensionless; then
+//! n_p = φ / E[π d³/6] from the size distribution), `size_distribution` (an inline table with
+//! `kind` = `monodisperse` (`diameter`), `lognormal` (`median`, `geometric_std` > 1),
+//! `weibull` (`scale`, `shape` > 0) or `table` (`file`, a CSV of d and cumulative F)),
+//! `capture = "sieving"` (the only model) and `reroute` (default true).
+
+use super::error::{ScenarioError, Source};
+use super::raw::{Quantity, RawContamination, RawSimulation, RawSizeDistribution};
+use super::show;
+use super::validate::{Bound, Field, field};
+use crate::clogging::{Contamination, DEFAULT_TOLERANCE, SizeDistribution};
+use crate::units::{self, Dimension};
+use toml::Spanned;
+
+const NUMBER_CONCENTRATION: Field = field(
+    "contamination.number_concentration",
+    Dimension::NUMBER_DENSITY,
+    "1/m^3",
+    Bound::NonNegative,
+);
+const VOLUME_FRACTION: Field = field(
+    "contamination.volume_fraction",
+    Dimension::DIMENSIONLESS,
+    "",
+    Bound::Closed(0.0, 1.0),
+);
+const DIAMETER: Field = field(
+    "contamination.size_distribution.diameter",
+    Dimension::LENGTH,
+    "m",
+    Bound::Positive,
+);
+const MEDIAN: Field = field(
+    "contamination.size_distribution.median",
+    Dimension::LENGTH,
+    "m",
+    Bound::Positive,
+);
+const GEOMETRIC_STD: Field = field(
+    "contamination.size_distribution.geometric_std",
+    Dimension::DIMENSIONLESS,
+    "",
+    Bound::Positive,
+);
+const SCALE: Field = field(
+    "contamination.size_distribution.scale",
+    Dimension::LENGTH,
+    "m",
+    Bound::Positive,
+);
+const SHAPE: Field = field(
+    "contamination.size_distribution.shape",
+    Dimension::DIMENSIONLESS,
+    "",
+    Bound::Positive,
+);
+const CLOGGING_TOLERANCE: Field = field(
+    "simulation.clogging_tolerance",
+    Dimension::DIMENSIONLESS,
+    "",
+    Bound::Open(0.0, 0.1),
+);
+const SIZE_KEY: &str = "contamination.size_distribution";
+
+impl Source<'_> {
+    /// `[simulation] clogging_tolerance` (default [`DEFAULT_TOLERANCE`]).
+    pub(super) fn clogging_tolerance(
+        &self,
+        table: Option<&Spanned<RawSimulation>>,
+    ) -> Result<f64, ScenarioError> {
+        let raw = table.and_then(|t| t.get_ref().clogging_tolerance.as_ref());
+        Ok(self
+            .optional(raw, &CLOGGING_TOLERANCE)?
+            .unwrap_or(DEFAULT_TOLERANCE))
+    }
+
+    /// `[contamination]` (absent: clean fluid, no clogging).
+    pub(super) fn contamination(
+        &self,
+        table: Option<&Spanned<RawContamination>>,
+        tolerance: f64,
+    ) -> Result<Option<Contamination>, ScenarioError> {
+        let Some(table) = table else {
+            return Ok(None);
+        };
+        let raw = table.get_ref();
+        if let Some(capture) = &raw.capture
+            && capture.get_ref() != "sieving"
+        {
+            return Err(self.error(
+                capture.span(),
+                "contamination.capture",
+                format!(
+                    "must be \"sieving\" (particles larger than the constriction height block \
+                     it; the only capture model), got {:?}",
+                    capture.get_ref()
+                ),
+            ));
+        }
+        let Some(sizes) = &raw.size_distribution else {
+            return Err(self.error(
+                table.span(),
+                SIZE_KEY,
+                "missing key `size_distribution` in [contamination], e.g. { kind = \
+                 \"lognormal\", median = \"1 um\", geometric_std = 1.8 }",
+            ));
+        };
+        let size_distribution = self.size_distribution(sizes)?;
+        let number_concentration = match (&raw.number_concentration, &raw.volume_fraction) {
+            (Some(n), None) => self.quantity(n, &NUMBER_CONCENTRATION)?,
+            (None, Some(phi)) => {
+                let phi = self.quantity(phi, &VOLUME_FRACTION)?;
+                phi / size_distribution.mean_volume()
+            }
+            (Some(_), Some(phi)) => {
+                return Err(self.error(
+                    phi.span(),
+                    VOLUME_FRACTION.key,
+                    "number_concentration and volume_fraction are mutually exclusive; give one",
+                ));
+            }
+            (None, None) => {
+                return Err(self.error(
+                    table.span(),
+                    NUMBER_CONCENTRATION.key,
+                    "missing key: [contamination] needs number_concentration (e.g. \"1e12 \
+                     1/m^3\") or volume_fraction (e.g. 1e-6)",
+                ));
+            }
+        };
+        if !number_concentration.is_finite() {
+            return Err(self.error(
+                table.span(),
+                NUMBER_CONCENTRATION.key,
+                format!(
+                    "the number concentration is not finite ({})",
+                    show(number_concentration)
+                ),
+            ));
+        }
+        Ok(Some(Contamination {
+            number_concentration,
+            size_distribution,
+            reroute: raw.reroute.as_ref().is_none_or(|r| *r.get_ref()),
+            tolerance,
+        }))
+    }
+
+    fn size_distribution(
+        &self,
+        table: &Spanned<RawSizeDistribution>,
+    ) -> Result<SizeDistribution, ScenarioError> {
+        let raw = table.get_ref();
+        let kind = raw.kind.get_ref().as_str();
+        let keys: [(&Option<Quantity>, &str); 5] = [
+            (&raw.diameter, "diameter"),
+            (&raw.median, "median"),
+            (&raw.geometric_std, "geometric_std"),
+            (&raw.scale, "scale"),
+            (&raw.shape, "shape"),
+        ];
+        let takes = |allowed: &[&str], description: &str| {
+            for (present, key) in &keys {
+                if let Some(q) = present
+                    && !allowed.contains(key)
+                {
+                    return Err(self.error(
+                        q.span(),
+                        &format!("{SIZE_KEY}.{key}"),
+                        format!("not a key of a {kind} distribution, which takes {description}"),
+                    ));
+                }
+            }
+            if let Some(file) = &raw.file
+                && !allowed.contains(&"file")
+            {
+                return Err(self.error(
+                    file.span(),
+                    &format!("{SIZE_KEY}.file"),
+                    format!("not a key of a {kind} distribution, which takes {description}"),
+                ));
+            }
+            Ok(())
+        };
+        let required = |q: &Option<Quantity>, f: &Field| match q {
+            Some(q) => self.quantity(q, f),
+            None => Err(self.error(
+                table.span(),
+                f.key,
+                format!(
+                    "missing key `{}` of a {kind} size distribution",
+                    f.key.trim_start_matches("contamination.size_distribution.")
+                ),
+            )),
+        };
+        match kind {
+            "monodisperse" => {
+                takes(&["diameter"], "diameter")?;
+                Ok(SizeDistribution::Monodisperse {
+                    diameter: required(&raw.diameter, &DIAMETER)?,
+                })
+            }
+            "lognormal" => {
+                takes(&["median", "geometric_std"], "median and geometric_std")?;
+                let median = required(&raw.median, &MEDIAN)?;
+                let geometric_std = required(&raw.geometric_std, &GEOMETRIC_STD)?;
+                if geometric_std <= 1.0 {
+                    let span = raw.geometric_std.as_ref().map_or(table.span(), |q| q.span());
+                    return Err(self.error(
+                        span,
+                        GEOMETRIC_STD.key,
+                        format!(
+                            "must exceed 1 (σg = 1 is one size: use kind = \"monodisperse\"), got {}",
+                            show(geometric_std)
+                        ),
+                    ));
+                }
+                Ok(SizeDistribution::LogNormal {
+                    median,
+                    geometric_std,
+                })
+            }
+            "weibull" => {
+                takes(&["scale", "shape"], "scale and shape")?;
+                Ok(SizeDistribution::Weibull {
+                    scale: required(&raw.scale, &SCALE)?,
+                    shape: required(&raw.shape, &SHAPE)?,
+                })
+            }
+            "table" => {
+                takes(&["file"], "file")?;
+                let Some(file) = &raw.file else {
+                    return Err(self.error(
+                        table.span(),
+                        &format!("{SIZE_KEY}.file"),
+                        "missing key `file` of a table size distribution (a CSV of d, F)",
+                    ));
+                };
+                let path = self.relative_path(file.get_ref());
+                let key = format!("{SIZE_KEY}.file");
+                let text = std::fs::read_to_string(&path).map_err(|e| {
+                    self.error(
+                        file.span(),
+                        &key,
+                        format!("cannot read size table {}: {e}", path.display()),
+                    )
+                })?;
+                let (diameter, cdf) = parse_size_table(&text).map_err(|(line, message)| {
+                    let at = line.map_or(String::new(), |l| format!(":{l}"));
+                    self.error(file.span(), &key, format!("{}{at}: {message}", path.display()))
+                })?;
+                Ok(SizeDistribution::Table { diameter, cdf })
+            }
+            other => Err(self.error(
+                raw.kind.span(),
+                &format!("{SIZE_KEY}.kind"),
+                format!(
+                    "must be \"monodisperse\", \"lognormal\", \"weibull\" or \"table\", got {other:?}"
+                ),
+            )),
+        }
+    }
+}
+
+/// A malformed size table: the 1-based line (when the problem is on one row) and what is
+/// wrong.
+type TableError = (Option<usize>, String);
+
+/// A size table: rows `d, F` (comma-separated; `#` comments and blank lines ignored), an
+/// optional header row (no number in it) and an optional units row after it whose first cell
+/// is a length unit (`um`; default m). d strictly increasing and positive, F non-decreasing
+/// within [0, 1] and reaching 1 at the last row ("not a CDF" otherwise).
+fn parse_size_table(text: &str) -> Result<(Vec<f64>, Vec<f64>), TableError> {
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let mut d: Vec<f64> = Vec::new();
+    let mut f: Vec<f64> = Vec::new();
+    let mut scale = 1.0;
+    let mut text_rows = 0;
+    for (index, raw_line) in text.lines().enumerate() {
+        let line = index + 1;
+        let row = raw_line.trim();
+        if row.is_empty() || row.starts_with('#') {
+            continue;
+        }
+        let cells: Vec<&str> = row.split(',').map(str::trim).collect();
+        if d.is_empty() && cells.iter().all(|c| c.parse::<f64>().is_err()) {
+            text_rows += 1;
+            if text_rows == 2 {
+                // units row: the first cell is the diameter's length unit
+                let unit = cells.first().copied().unwrap_or("");
+                if !unit.is_empty() {
+                    scale = units::parse_quantity(&format!("1 {unit}"), Dimension::LENGTH)
+                        .map_err(|e| (Some(line), format!("diameter unit {unit:?}: {e}")))?;
+                }
+            } else if text_rows > 2 {
+                return Err((Some(line), "expected a data row (d, F)".into()));
+            }
+            continue;
+        }
+        let [dc, fc] = cells[..] else {
+            return Err((
+                Some(line),
+                format!(
+                    "expected 2 comma-separated columns (d, cumulative F), found {}",
+                    cells.len()
+                ),
+            ));
+        };
+        let number = |cell: &str, name: &str| {
+            cell.parse::<f64>()
+                .ok()
+                .filter(|v| v.is_finite())
+                .ok_or_else(|| (Some(line), format!("{name} is not a number: {cell:?}")))
+        };
+        let di = number(dc, "d")? * scale;
+        let fi = number(fc, "F")?;
+        if di <= 0.0 {
+            return Err((Some(line), format!("d must be positive, got {}", show(di))));
+        }
+        if let Some(&prev) = d.last()
+            && di <= prev
+        {
+            return Err((
+                Some(line),
+                format!(
+                    "d must increase strictly from row to row, got {} after {}",
+                    show(di),
+                    show(prev)
+                ),
+            ));
+        }
+        if !(0.0..=1.0).contains(&fi) {
+            return Err((
+                Some(line),
+                format!("not a CDF: F must lie between 0 and 1, got {}", show(fi)),
+            ));
+        }
+        if let Some(&prev) = f.last()
+            && fi < prev
+        {
+            return Err((
+                Some(line),
+                format!(
+                    "not a CDF: F must not decrease, got {} after {}",
+                    show(fi),
+                    show(prev)
+                ),
+            ));
+        }
+        d.push(di);
+        f.push(fi);
+    }
+    match f.last() {
+        None => Err((None, "no data rows".into())),
+        Some(&last) if last != 1.0 => Err((
+            None,
+            format!(
+                "not a CDF: F must reach 1 at the last row, got {}",
+                show(last)
+            ),
+        )),
+        Some(_) => Ok((d, f)),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::parse_size_table;
+
+    #[test]
+    fn size_tables() {
+        let (d, f) = parse_size_table("d,F\num,\n0.5,0\n1,0.5\n2,1\n").unwrap();
+        assert_eq!(f, vec![0.0, 0.5, 1.0]);
+        assert!((d[1] - 1e-6).abs() < 1e-18);
+        let (d, _) = parse_size_table("# sizes\n1e-6,0.2\n2e-6,1\n").unwrap();
+        assert_eq!(d, vec![1e-6, 2e-6]);
+        let e = parse_size_table("1e-6,0.5\n2e-6,0.4\n3e-6,1\n").unwrap_err();
+        assert_eq!(e.0, Some(2));
+        assert!(e.1.contains("not a CDF"), "{}", e.1);
+        let e = parse_size_table("1e-6,0.5\n2e-6,0.9\n").unwrap_err();
+        assert!(e.1.contains("must reach 1"), "{}", e.1);
+        let e = parse_size_table("1e-6,1.5\n").unwrap_err();
+        assert!(e.1.contains("not a CDF"), "{}", e.1);
+    }
+}

@@ -1,0 +1,269 @@
+//! Particle clogging of the critical constrictions (issue 5, DESIGN §7): the closed form,
+//! limits, convergence of the ODE and extremes.
+
+use sealsim::clogging::{Contamination, SizeDistribution};
+use sealsim::contact::PerssonContact;
+use sealsim::leak::Fidelity;
+use sealsim::scenario::Scenario;
+use sealsim::simulate::{LifeProblem, LifeResult, SealState, simulate};
+use std::path::Path;
+
+const PAPER: &str = include_str!("../scenarios/persson-yang-2008.toml");
+const NBR: &str = include_str!("../scenarios/oring-nbr-water-80c.toml");
+const DAY: f64 = 86400.0;
+
+/// The paper's flat seal with an elastic rubber: constant Q̇0 and u_c over the whole run.
+fn paper_problem() -> LifeProblem {
+    let text = format!("{PAPER}[simulation]\nduration = \"30 day\"\npoints_per_decade = 10\n");
+    let mut p = Scenario::from_str(&text, Path::new("paper.toml"))
+        .unwrap()
+        .life;
+    p.fidelity = Fidelity::Exact;
+    p
+}
+
+fn contaminated(
+    mut p: LifeProblem,
+    n_p: f64,
+    sizes: SizeDistribution,
+    reroute: bool,
+) -> LifeProblem {
+    p.contamination = Some(Contamination {
+        number_concentration: n_p,
+        size_distribution: sizes,
+        reroute,
+        tolerance: 1e-8,
+    });
+    p
+}
+
+/// u_c, λ_c at the (uniform) pressure of the paper's seal, by the exact path.
+fn paper_junction(p: &LifeProblem) -> (f64, f64) {
+    let e_star = p.material.prony.long_term() / (1.0 - p.material.poisson_ratio.powi(2));
+    let s = p.initial_profile().peak() / e_star;
+    let j = PerssonContact::new(p.spectrum.clone(), p.contact)
+        .critical_junction(s)
+        .leaking()
+        .copied()
+        .unwrap();
+    (j.u_c, j.lambda_c)
+}
+
+fn assert_clean(r: &LifeResult) {
+    for row in &r.rows {
+        assert!(row.leak_rate.is_finite() && row.leak_rate >= 0.0, "{row:?}");
+        assert!(
+            (0.0..=1.0).contains(&row.open_fraction),
+            "f = {}",
+            row.open_fraction
+        );
+        assert!(row.leaked_volume.is_finite());
+    }
+}
+
+/// τ_b of an exponential decay fitted at time t.
+fn decay_time(r: &LifeResult, t: f64) -> f64 {
+    let q0 = r.initial_leak_rate();
+    let row = r.rows.iter().find(|row| row.time >= t).unwrap();
+    -row.time / (row.leak_rate / q0).ln()
+}
+
+#[test]
+fn constant_leak_rate_decays_exponentially_without_rerouting() {
+    let p = paper_problem();
+    let clean = simulate(&p);
+    let q0 = clean.initial_leak_rate();
+    assert!(clean.rows.iter().all(|r| r.leak_rate == q0), "constant Q̇0");
+    let (u_c, lambda_c) = paper_junction(&p);
+    let channels = p.geometry.sealing_length() / lambda_c;
+    // particles all larger than u_c (1 − F = 1); τ_b = 2 days
+    let tau = 2.0 * DAY;
+    let n_p = channels / (tau * q0);
+    let sizes = SizeDistribution::Monodisperse {
+        diameter: 10.0 * u_c,
+    };
+    let r = simulate(&contaminated(p, n_p, sizes, false));
+    assert_clean(&r);
+    let mut checked = 0;
+    for row in &r.rows {
+        if row.time < 0.01 * DAY || row.time > 20.0 * DAY {
+            continue;
+        }
+        let expected = q0 * (-row.time / tau).exp();
+        assert!(
+            (row.leak_rate / expected - 1.0).abs() < 1e-6,
+            "t = {}: {} vs {expected}",
+            row.time,
+            row.leak_rate
+        );
+        assert!((row.open_fraction / (-row.time / tau).exp() - 1.0).abs() < 1e-6);
+        checked += 1;
+    }
+    assert!(checked >= 10, "{checked}");
+}
+
+#[test]
+fn small_particles_pass_large_ones_clog_fastest_and_concentration_scales_tau() {
+    let p = paper_problem();
+    let clean = simulate(&p);
+    let q0 = clean.initial_leak_rate();
+    let (u_c, lambda_c) = paper_junction(&p);
+    let n_p = p.geometry.sealing_length() / lambda_c / (2.0 * DAY * q0);
+    // all particles smaller than u_c: identical history, bit for bit
+    for reroute in [false, true] {
+        let small = SizeDistribution::Monodisperse {
+            diameter: 0.1 * u_c,
+        };
+        let r = simulate(&contaminated(p.clone(), n_p, small, reroute));
+        assert_eq!(r.rows.len(), clean.rows.len());
+        for (a, b) in r.rows.iter().zip(&clean.rows) {
+            assert_eq!(a.leak_rate.to_bits(), b.leak_rate.to_bits());
+            assert_eq!(a.open_fraction, 1.0);
+        }
+    }
+    // monodisperse at the median, larger than u_c: everything is captured, the fastest decay
+    let median = 3.0 * u_c;
+    let mono = simulate(&contaminated(
+        p.clone(),
+        n_p,
+        SizeDistribution::Monodisperse { diameter: median },
+        false,
+    ));
+    let lognormal = simulate(&contaminated(
+        p.clone(),
+        n_p,
+        SizeDistribution::LogNormal {
+            median,
+            geometric_std: 3.0,
+        },
+        false,
+    ));
+    let t = 3.0 * DAY;
+    assert!(mono.leak_rate_at(t).unwrap() < lognormal.leak_rate_at(t).unwrap());
+    // halving the concentration doubles τ_b
+    let half = simulate(&contaminated(
+        p.clone(),
+        0.5 * n_p,
+        SizeDistribution::Monodisperse { diameter: median },
+        false,
+    ));
+    let ratio = decay_time(&half, t) / decay_time(&mono, t);
+    assert!((ratio - 2.0).abs() < 2e-6, "{ratio}");
+}
+
+/// The NBR O-ring (time-varying u_c and Q̇) in dirty water: the time at which the leaked
+/// volume reaches a limit moves by < 1e-4 relative when the ODE tolerance is tightened 100×.
+#[test]
+fn ode_result_is_converged() {
+    let base = Scenario::from_str(NBR, Path::new("nbr.toml")).unwrap().life;
+    for reroute in [false, true] {
+        let sizes = SizeDistribution::LogNormal {
+            median: 0.3e-6,
+            geometric_std: 1.8,
+        };
+        let mut p = contaminated(base.clone(), 1e12, sizes, reroute);
+        p.time.duration = 3.0e7;
+        p.failure = Default::default();
+        let reference = simulate(&p);
+        assert_clean(&reference);
+        assert!(reference.final_open_fraction() < 0.99, "clogging acts");
+        p.failure.max_leaked_volume = Some(0.5 * reference.leaked_volume());
+        let time = |tol: f64| {
+            let mut q = p.clone();
+            if let Some(c) = q.contamination.as_mut() {
+                c.tolerance = tol;
+            }
+            simulate(&q).failure.unwrap().time
+        };
+        let (coarse, fine) = (time(1e-6), time(1e-8));
+        assert!(
+            (coarse / fine - 1.0).abs() < 1e-4,
+            "reroute {reroute}: {coarse} vs {fine}"
+        );
+    }
+}
+
+#[test]
+fn extremes_do_not_overshoot() {
+    let p = paper_problem();
+    let clean = simulate(&p);
+    let (u_c, _) = paper_junction(&p);
+    let large = SizeDistribution::Monodisperse {
+        diameter: 10.0 * u_c,
+    };
+    for reroute in [false, true] {
+        // zero concentration: the clean run
+        let r = simulate(&contaminated(p.clone(), 0.0, large.clone(), reroute));
+        assert_eq!(r.rows, clean.rows);
+        // huge concentration: closed within the first step, f never below 0, no NaN
+        let r = simulate(&contaminated(p.clone(), 1e40, large.clone(), reroute));
+        assert_clean(&r);
+        let first = &r.rows[1];
+        if reroute {
+            // blocked channels re-route: f approaches the closure from above (f ≥ 1 − a_c)
+            // and the leak rate falls by > 20 decades within the first step (u_c of the
+            // last open constriction far below a molecule)
+            let q0 = clean.initial_leak_rate();
+            assert!(r.rows[1..].iter().all(|row| row.leak_rate < 1e-20 * q0));
+            assert!(
+                r.final_open_fraction() >= 0.6 - 1e-9,
+                "{}",
+                r.final_open_fraction()
+            );
+        } else {
+            assert_eq!(first.leak_rate, 0.0, "{first:?}");
+            assert_eq!(first.state, SealState::Sealed);
+            assert!(r.rows[1..].iter().all(|row| row.leak_rate == 0.0));
+            assert_eq!(r.final_open_fraction(), 0.0);
+        }
+    }
+    // all mass at one diameter as a table equals the monodisperse distribution there
+    let d = 3.0 * u_c;
+    let n_p = 1e15;
+    let step = SizeDistribution::Table {
+        diameter: vec![d * (1.0 - 1e-12), d],
+        cdf: vec![0.0, 1.0],
+    };
+    let a = simulate(&contaminated(p.clone(), n_p, step, false));
+    let b = simulate(&contaminated(
+        p.clone(),
+        n_p,
+        SizeDistribution::Monodisperse { diameter: d },
+        false,
+    ));
+    assert_clean(&a);
+    for (x, y) in a.rows.iter().zip(&b.rows) {
+        assert!((x.leak_rate - y.leak_rate).abs() <= 1e-12 * y.leak_rate.max(1e-300));
+    }
+}
+
+/// u_c → 0: a flat seal pressed almost to its sealing pressure; every particle is captured,
+/// the decay stays finite and f in [0, 1].
+#[test]
+fn near_sealing_surface() {
+    let mut p = paper_problem();
+    let contact = PerssonContact::new(p.spectrum.clone(), p.contact);
+    let e_star = p.material.prony.long_term() / (1.0 - p.material.poisson_ratio.powi(2));
+    let s_seal = contact.sealing_reduced_pressure();
+    if let sealsim::seal::SealGeometry::Flat {
+        nominal_pressure, ..
+    } = &mut p.geometry
+    {
+        *nominal_pressure = 0.97 * s_seal * e_star;
+    }
+    let clean = simulate(&p);
+    let (u_c, lambda_c) = paper_junction(&p);
+    assert!(u_c < 1e-9, "u_c = {u_c}");
+    let q0 = clean.initial_leak_rate();
+    assert!(q0 > 0.0);
+    let n_p = p.geometry.sealing_length() / lambda_c / (DAY * q0);
+    let sizes = SizeDistribution::LogNormal {
+        median: 0.5e-6,
+        geometric_std: 1.8,
+    };
+    for reroute in [false, true] {
+        let r = simulate(&contaminated(p.clone(), n_p, sizes.clone(), reroute));
+        assert_clean(&r);
+        assert!(r.final_leak_rate() < q0);
+    }
+}
