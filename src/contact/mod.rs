@@ -320,7 +320,11 @@ impl PerssonContact {
 
     /// The critical junction at reduced pressure `s = P0/E*` by quadrature (the exact path).
     pub fn critical_junction(&self, s: f64) -> Junction {
-        let m3 = self.critical_m3(s);
+        self.junction_at_m3(s, self.critical_m3(s))
+    }
+
+    /// The junction at reduced pressure `s` whose critical magnification has `M3(ζc) = m3`.
+    fn junction_at_m3(&self, s: f64, m3: f64) -> Junction {
         let Some(ln_a) = self.spectrum.invert_m3(m3) else {
             return Junction::Sealed;
         };
@@ -349,15 +353,7 @@ impl PerssonContact {
         if !m3.is_finite() {
             return Junction::Sealed;
         }
-        let Some(ln_a) = self.spectrum.invert_m3(m3) else {
-            return Junction::Sealed;
-        };
-        let sep = self.separation_at(ln_a, m3, s);
-        let (u_c, ubar_c) = (sep.u1(), sep.mean);
-        if !(ubar_c > 0.0 && u_c > ubar_c) {
-            return Junction::Sealed;
-        }
-        Junction::Leaking(self.junction_from(ln_a, u_c, ubar_c))
+        self.junction_at_m3(s, m3)
     }
 
     /// Assembles the junction at `ln(ζc q0) = ln_a` from u_c and ū_c (used by the table).

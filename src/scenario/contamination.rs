@@ -273,17 +273,11 @@ type TableError = (Option<usize>, String);
 /// is a length unit (`um`; default m). d strictly increasing and positive, F non-decreasing
 /// within [0, 1] and reaching 1 at the last row ("not a CDF" otherwise).
 fn parse_size_table(text: &str) -> Result<(Vec<f64>, Vec<f64>), TableError> {
-    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut d: Vec<f64> = Vec::new();
     let mut f: Vec<f64> = Vec::new();
     let mut scale = 1.0;
     let mut text_rows = 0;
-    for (index, raw_line) in text.lines().enumerate() {
-        let line = index + 1;
-        let row = raw_line.trim();
-        if row.is_empty() || row.starts_with('#') {
-            continue;
-        }
+    for (line, row) in super::data_lines(text) {
         let cells: Vec<&str> = row.split(',').map(str::trim).collect();
         if d.is_empty() && cells.iter().all(|c| c.parse::<f64>().is_err()) {
             text_rows += 1;

@@ -201,13 +201,7 @@ fn is_number(cell: &str) -> bool {
 }
 
 fn parse(text: &str, kind: FitKind) -> Result<FitData, Located> {
-    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    let mut rows = text
-        .lines()
-        .enumerate()
-        .map(|(i, l)| (i + 1, l.trim()))
-        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'))
-        .peekable();
+    let mut rows = super::data_lines(text).peekable();
     let Some((header_line, header)) = rows.next() else {
         return Err((
             None,

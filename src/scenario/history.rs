@@ -40,13 +40,7 @@ struct Units {
 
 /// The `(time [s], temperature [K])` points of a history file's text.
 pub(super) fn parse(text: &str) -> Result<Vec<(f64, f64)>, HistoryError> {
-    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    let mut rows = text
-        .lines()
-        .enumerate()
-        .map(|(i, l)| (i + 1, l.trim()))
-        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'))
-        .peekable();
+    let mut rows = super::data_lines(text).peekable();
     let Some((line, header)) = rows.next() else {
         return Err(HistoryError {
             line: None,

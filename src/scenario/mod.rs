@@ -104,6 +104,16 @@ impl Scenario {
     }
 }
 
+/// The data rows of a CSV-like text file with their 1-based line numbers: a leading byte-order
+/// mark (spreadsheet exports) is dropped, rows are trimmed, blank and `#` lines skipped.
+pub(crate) fn data_lines(text: &str) -> impl Iterator<Item = (usize, &str)> {
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    text.lines()
+        .enumerate()
+        .map(|(i, l)| (i + 1, l.trim()))
+        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'))
+}
+
 /// The text of a scenario-like file, or a located read error.
 fn read(path: &Path) -> Result<String, ScenarioError> {
     std::fs::read_to_string(path).map_err(|source| ScenarioError::Read {

@@ -28,14 +28,7 @@ pub(super) fn parse(text: &str) -> Result<(Vec<f64>, Vec<f64>), PsdError> {
     let mut q: Vec<f64> = Vec::new();
     let mut c: Vec<f64> = Vec::new();
     let mut first_row = true;
-    // Spreadsheet exports often start with a byte-order mark.
-    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    for (index, raw_line) in text.lines().enumerate() {
-        let line = index + 1;
-        let row = raw_line.trim();
-        if row.is_empty() || row.starts_with('#') {
-            continue;
-        }
+    for (line, row) in super::data_lines(text) {
         let cells: Vec<&str> = row.split(',').map(str::trim).collect();
         let is_header = first_row && cells.iter().all(|cell| cell.parse::<f64>().is_err());
         first_row = false;
