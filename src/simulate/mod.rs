@@ -351,6 +351,9 @@ pub struct Simulator<'a> {
     /// The exact contact path for re-routed clogging (junctions at other thresholds), on a
     /// coarser quadrature ([`REROUTE_QUADRATURE`]).
     rerouting: Option<PerssonContact>,
+    /// The last `(s, u_c(s, a_c))` of the re-routing reference junction: a step's ratio nodes
+    /// and its end snapshot share one pressure, hence one reference evaluation.
+    reference_memo: std::cell::Cell<Option<(f64, Option<f64>)>>,
 }
 
 impl<'a> Simulator<'a> {
@@ -378,6 +381,7 @@ impl<'a> Simulator<'a> {
             initial_profile,
             creep: problem.material.prony.creep(),
             rerouting,
+            reference_memo: std::cell::Cell::new(None),
         }
     }
 
@@ -410,8 +414,7 @@ impl<'a> Simulator<'a> {
             for t in self.substeps(state.time, target) {
                 let before = state.clone();
                 let before_snap = last;
-                self.advance(&mut state, t, &before_snap);
-                let snap = self.snapshot(&state);
+                let snap = self.advance(&mut state, t, &before_snap);
                 self.check_warnings(&state, &snap, &mut warnings);
                 if failure.is_none() {
                     failure = self.locate_failure(&before, &before_snap, &state, &snap);
@@ -500,7 +503,8 @@ impl<'a> Simulator<'a> {
     }
 
     /// Advances the mechanical state to time `t` (exact for strain linear in ξ over the step).
-    fn advance(&self, state: &mut Mechanics, t: f64, before: &Snapshot) {
+    /// Returns the snapshot at the new time (computed once: the leaked volume needs it).
+    fn advance(&self, state: &mut Mechanics, t: f64, before: &Snapshot) -> Snapshot {
         let p = self.problem;
         let (a, b) = (state.time, t);
         let d_xi = reduced_time(&p.environment, &p.material.shift, a, b);
@@ -529,6 +533,7 @@ impl<'a> Simulator<'a> {
         };
         state.leaked_volume += events::integrate_power_law(a, before.leak_rate, b, after.leak_rate);
         state.time = b;
+        after
     }
 
     fn snapshot(&self, state: &Mechanics) -> Snapshot {
@@ -593,11 +598,24 @@ impl<'a> Simulator<'a> {
         if a_eff.is_nan() || a_eff <= 0.0 {
             return (0.0, None);
         }
-        let reference = exact
+        let reference = self.reference_junction(exact, s);
+        Self::ratio_against(exact, s, a_eff, reference)
+    }
+
+    /// `u_c(s, a_c)` on the re-routing quadrature, remembered for the last `s`.
+    fn reference_junction(&self, exact: &PerssonContact, s: f64) -> Option<f64> {
+        if let Some((last, u)) = self.reference_memo.get()
+            && last == s
+        {
+            return u;
+        }
+        let a_c = self.problem.contact.percolation_threshold;
+        let u = exact
             .critical_junction_at_threshold(s, a_c)
             .leaking()
             .map(|j| j.u_c);
-        Self::ratio_against(exact, s, a_eff, reference)
+        self.reference_memo.set(Some((s, u)));
+        u
     }
 
     /// `((u_c(s, a_eff)/u_ref)³, u_c(s, a_eff))` for a given reference `u_ref = u_c(s, a_c)`.
@@ -654,7 +672,6 @@ impl<'a> Simulator<'a> {
             after,
             length,
             ratios: RefCell::new(Vec::new()),
-            reference: RefCell::new(None),
         };
         // Nothing captured at the ends: nothing in between either (u_c(t) is a power law,
         // hence monotone, and so is F(u_c(t))), the clean case costs no integration; the
@@ -818,8 +835,7 @@ impl<'a> Simulator<'a> {
                         0.5 * (lo + hi)
                     };
                     let mut trial = before.clone();
-                    self.advance(&mut trial, mid, before_snap);
-                    let snap = self.snapshot(&trial);
+                    let snap = self.advance(&mut trial, mid, before_snap);
                     if criteria.crossed(mode, &snap.as_event_input(trial.leaked_volume)) {
                         hi = mid;
                     } else {
@@ -901,13 +917,11 @@ struct CloggingOde<'s, 'a> {
     /// L_y [m].
     length: f64,
     /// Re-routing ratios `(k, ratio, u_eff)` at `ln f = k h` ([`REROUTE_NODE_SPACING`]) and the
-    /// step's geometric-mean peak pressure, computed on demand and interpolated linearly in
+    /// step's end peak pressure, computed on demand and interpolated linearly in
     /// ln f: the right side is then a fixed, smooth function of f within the step (independent
     /// of where the solver samples it), at a few exact junctions per step instead of two per
     /// evaluation.
     ratios: RefCell<Vec<(i64, f64, Option<f64>)>>,
-    /// `u_c(s, a_c)` at the step's pressure, once per step (`None` inside: not yet computed).
-    reference: RefCell<Option<Option<f64>>>,
 }
 
 impl CloggingOde<'_, '_> {
@@ -953,9 +967,10 @@ impl CloggingOde<'_, '_> {
 }
 
 impl CloggingOde<'_, '_> {
-    /// The step's peak reduced pressure for the re-routing ratio (geometric mean of the ends).
+    /// The step's peak reduced pressure for the re-routing ratio: the end's, the pressure its
+    /// end snapshot uses, so the ratio integrated and the ratio reported agree at the end.
     fn step_pressure(&self) -> f64 {
-        (self.before.peak_reduced_pressure * self.after.peak_reduced_pressure).sqrt()
+        self.after.peak_reduced_pressure
     }
 
     /// The re-routing ratio at node `k` (`ln f = k h`), cached.
@@ -968,12 +983,7 @@ impl CloggingOde<'_, '_> {
             Some(exact) => {
                 let s = self.step_pressure();
                 let a_c = self.simulator.problem.contact.percolation_threshold;
-                let reference = *self.reference.borrow_mut().get_or_insert_with(|| {
-                    exact
-                        .critical_junction_at_threshold(s, a_c)
-                        .leaking()
-                        .map(|j| j.u_c)
-                });
+                let reference = self.simulator.reference_junction(exact, s);
                 let a_eff = effective_threshold(a_c, f);
                 if f >= 1.0 {
                     (1.0, reference)
