@@ -9,6 +9,7 @@
 
 use super::run::print_warnings;
 use super::{CliError, write_output};
+use crate::leak::ContactPath;
 use crate::leak::Fidelity;
 use crate::material::Material;
 use crate::report::life::{
@@ -16,7 +17,7 @@ use crate::report::life::{
 };
 use crate::scenario::life::parse_fidelity;
 use crate::scenario::{Scenario, library, load_material_file};
-use crate::simulate::{LifeResult, simulate};
+use crate::simulate::{LifeResult, Simulator};
 use clap::Args;
 use std::path::{Path, PathBuf};
 
@@ -68,7 +69,28 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
             Ok(s)
         })
         .collect::<Result<_, CliError>>()?;
-    let results: Vec<LifeResult> = scenarios.iter().map(|s| simulate(&s.life)).collect();
+    // One contact table for all compounds: it depends only on the surface and the contact
+    // settings, which the variants share (checked, in case a material file changed them).
+    let mut shared: Option<(&Scenario, ContactPath)> = None;
+    let results: Vec<LifeResult> = scenarios
+        .iter()
+        .map(|s| {
+            let same = |first: &Scenario| {
+                first.life.spectrum == s.life.spectrum
+                    && first.life.contact == s.life.contact
+                    && first.life.fidelity == s.life.fidelity
+            };
+            let path = match &shared {
+                Some((first, path)) if same(first) => path.clone(),
+                _ => {
+                    let path = Simulator::contact_path(&s.life);
+                    shared = Some((s, path.clone()));
+                    path
+                }
+            };
+            Simulator::with_path(&s.life, path).run()
+        })
+        .collect();
 
     let rows: Vec<CompareRow<'_>> = materials
         .iter()

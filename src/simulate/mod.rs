@@ -359,7 +359,19 @@ pub struct Simulator<'a> {
 impl<'a> Simulator<'a> {
     /// Prepares the run (builds the contact table when the fidelity asks for it).
     pub fn new(problem: &'a LifeProblem) -> Self {
-        let path = ContactPath::new(&problem.spectrum, problem.contact, problem.fidelity);
+        Self::with_path(problem, Self::contact_path(problem))
+    }
+
+    /// The contact path a problem needs: it depends only on the surface, the contact settings
+    /// and the fidelity, so runs that share those (e.g. `sealsim compare` across materials)
+    /// can build it once.
+    pub fn contact_path(problem: &LifeProblem) -> ContactPath {
+        ContactPath::new(&problem.spectrum, problem.contact, problem.fidelity)
+    }
+
+    /// Prepares the run with a contact path built beforehand by [`Self::contact_path`] for a
+    /// problem with the same surface, contact settings and fidelity.
+    pub fn with_path(problem: &'a LifeProblem, path: ContactPath) -> Self {
         let load0 = load_variable(problem, problem.environment.at(0.0));
         let initial_profile = problem.initial_profile();
         let rerouting = problem
