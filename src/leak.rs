@@ -1,7 +1,8 @@
 //! Leak rate of a static seal through its critical constriction (PY08 §2, eqs. 1–3).
 
 use crate::contact::{
-    ContactSettings, ContactTable, Elastic, Junction, PerssonContact, TableSettings,
+    ContactSettings, ContactTable, CriticalJunction, EffectiveMedium, EffectiveMediumSettings,
+    Elastic, Junction, PerssonContact, TableSettings,
 };
 use crate::surface::Spectrum;
 use std::fmt;
@@ -26,7 +27,7 @@ pub struct FlatSeal {
     pub length: f64,
 }
 
-/// Which path evaluates the critical junction.
+/// Which level of the fidelity ladder (DESIGN §4) evaluates the static leak.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Fidelity {
     /// Quadrature at every pressure.
@@ -35,6 +36,10 @@ pub enum Fidelity {
     /// path outside the table's range).
     #[default]
     Table,
+    /// Bruggeman's 2-D effective medium over the separation distribution P(u) (DESIGN §3.3,
+    /// [`crate::contact::effective_medium`]). Static leak ([`StaticSolver`]) only: wherever a
+    /// critical junction is needed ([`ContactPath`], the life simulation) it uses the table.
+    EffectiveMedium,
 }
 
 /// Everything the static leak calculation needs, in SI units.
@@ -50,6 +55,11 @@ pub struct StaticProblem {
 }
 
 /// One evaluated pressure point.
+///
+/// With [`Fidelity::EffectiveMedium`], `junction.u_c` is the effective gap
+/// `u_eff = (12 η σ_eff)^{1/3}` and the other junction fields are those of the critical
+/// junction at the same pressure (at the 2-D threshold 1/2 instead of a_c when the critical
+/// junction is already sealed); `Sealed` exactly when the contact fraction `A(q1/q0)/A0` ≥ 1/2.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LeakPoint {
     /// Nominal squeezing pressure P0 [Pa].
@@ -129,6 +139,7 @@ pub fn leak_rate(u_c: f64, fluid: &Fluid, width: f64, length: f64, shape_factor:
 pub struct StaticSolver {
     problem: StaticProblem,
     path: ContactPath,
+    fidelity: Fidelity,
 }
 
 /// The critical junction of one surface by the chosen [`Fidelity`]: the exact path, or a
@@ -145,9 +156,18 @@ impl ContactPath {
         let exact = PerssonContact::new(spectrum.clone(), settings);
         match fidelity {
             Fidelity::Exact => ContactPath::Exact(exact),
-            Fidelity::Table => {
+            // the effective medium has no critical junction of its own: use the table
+            Fidelity::Table | Fidelity::EffectiveMedium => {
                 ContactPath::Table(ContactTable::build(exact, TableSettings::default()))
             }
+        }
+    }
+
+    /// The exact contact theory behind the path.
+    pub fn exact(&self) -> &PerssonContact {
+        match self {
+            ContactPath::Exact(c) => c,
+            ContactPath::Table(t) => t.exact(),
         }
     }
 
@@ -164,7 +184,11 @@ impl StaticSolver {
     /// Prepares the solver; with [`Fidelity::Table`] this builds the contact table.
     pub fn new(problem: StaticProblem, fidelity: Fidelity) -> Self {
         let path = ContactPath::new(&problem.spectrum, problem.contact, fidelity);
-        StaticSolver { problem, path }
+        StaticSolver {
+            problem,
+            path,
+            fidelity,
+        }
     }
 
     pub fn problem(&self) -> &StaticProblem {
@@ -174,6 +198,9 @@ impl StaticSolver {
     /// The junction and leak rate at nominal pressure `p0` [Pa] (> 0).
     pub fn evaluate(&self, p0: f64) -> LeakPoint {
         let s = p0 / self.problem.material.effective_modulus();
+        if self.fidelity == Fidelity::EffectiveMedium {
+            return self.evaluate_effective_medium(p0, s);
+        }
         let junction = self.path.critical_junction(s);
         let pb = &self.problem;
         let leak_rate = match junction {
@@ -189,6 +216,44 @@ impl StaticSolver {
         LeakPoint {
             nominal_pressure: p0,
             junction,
+            leak_rate,
+        }
+    }
+
+    /// The effective-medium point (DESIGN §3.3): `Q̇ = (L_y/L_x) σ_eff ΔP`, σ_eff by Bruggeman
+    /// over P(u) (the shape factor α of the critical junction does not enter).
+    fn evaluate_effective_medium(&self, p0: f64, s: f64) -> LeakPoint {
+        let pb = &self.problem;
+        let em = EffectiveMedium::persson(self.path.exact(), s, EffectiveMediumSettings::default());
+        let sealed = LeakPoint {
+            nominal_pressure: p0,
+            junction: Junction::Sealed,
+            leak_rate: 0.0,
+        };
+        if em.sealed() {
+            return sealed;
+        }
+        let u_eff = em.effective_gap();
+        let reference = match self.path.critical_junction(s) {
+            Junction::Leaking(j) => Some(j),
+            Junction::Sealed => self
+                .path
+                .exact()
+                .critical_junction_at_threshold(s, 0.5)
+                .leaking()
+                .copied(),
+        };
+        let junction = match reference {
+            Some(j) => CriticalJunction { u_c: u_eff, ..j },
+            // within rounding of the threshold: the channel has no height in double precision
+            None => return sealed,
+        };
+        let leak_rate = (pb.seal.length / pb.seal.width)
+            * em.conductance(pb.fluid.viscosity)
+            * pb.fluid.pressure_difference;
+        LeakPoint {
+            nominal_pressure: p0,
+            junction: Junction::Leaking(junction),
             leak_rate,
         }
     }

@@ -20,7 +20,9 @@ const MAX_SWEEP_POINTS: i64 = 1_000_000;
 #[command(
     after_help = "Pressures take units (\"0.2 MPa\", \"2bar\", \"30psi\"); bare numbers are Pa.\n\
     Output columns: nominal_pressure_Pa, zeta_c, lambda_c_m, u_c_m, ubar_c_m, hrms_c_m, \
-    leak_rate_m3_per_s, state (leaking|sealed); lambda_c = 2π/(zeta_c q0)."
+    leak_rate_m3_per_s, state (leaking|sealed); lambda_c = 2π/(zeta_c q0).\n\
+    With --fidelity effective-medium, u_c_m is the effective gap (12 η σ_eff)^(1/3) and the other \
+    junction columns are the critical junction's at the same pressure."
 )]
 pub struct LeakArgs {
     /// Scenario file (TOML).
@@ -39,7 +41,8 @@ pub struct LeakArgs {
     #[arg(long, value_name = "N", requires = "sweep", value_parser = clap::value_parser!(u32).range(2..=MAX_SWEEP_POINTS))]
     pub points: Option<u32>,
 
-    /// Exact quadrature at every pressure, or interpolation in a contact table built once.
+    /// Exact quadrature at every pressure, interpolation in a contact table built once, or
+    /// the Bruggeman effective medium.
     #[arg(long, value_enum, default_value_t = FidelityArg::Table)]
     pub fidelity: FidelityArg,
 
@@ -55,6 +58,9 @@ pub enum FidelityArg {
     Exact,
     /// Contact-table interpolation.
     Table,
+    /// Bruggeman effective medium over the separation distribution P(u) (DESIGN §3.3); u_c_m
+    /// is then the effective gap (12 η σ_eff)^{1/3}.
+    EffectiveMedium,
 }
 
 impl From<FidelityArg> for Fidelity {
@@ -62,6 +68,7 @@ impl From<FidelityArg> for Fidelity {
         match f {
             FidelityArg::Exact => Fidelity::Exact,
             FidelityArg::Table => Fidelity::Table,
+            FidelityArg::EffectiveMedium => Fidelity::EffectiveMedium,
         }
     }
 }

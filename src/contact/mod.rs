@@ -14,9 +14,11 @@
 //! because F(∞) = 0), with the same quadrature nodes as ū, so u1 carries no finite-difference
 //! error.
 
+pub mod effective_medium;
 pub mod separation;
 pub mod table;
 
+pub use effective_medium::{EffectiveMedium, EffectiveMediumSettings, SeparationDistribution};
 pub use table::{ContactTable, TableSettings};
 
 use crate::numerics::quadrature::gauss_legendre;

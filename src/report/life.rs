@@ -207,6 +207,7 @@ pub fn fidelity_name(fidelity: Fidelity) -> &'static str {
     match fidelity {
         Fidelity::Table => "critical-junction",
         Fidelity::Exact => "exact",
+        Fidelity::EffectiveMedium => "effective-medium",
     }
 }
 

@@ -1,0 +1,398 @@
+//! The effective-medium level (DESIGN §3.3): Bruggeman's 2-D effective conductance over the
+//! distribution of interfacial separations.
+//!
+//! **Separation distribution** [recalled: Lorenz & Persson, Eur. Phys. J. E 31 (2010) 159;
+//! Persson, J. Phys.: Condens. Matter 22 (2010) 265004], for u ≥ 0:
+//!
+//! `P(u) = (A(ζ1)/A0) δ(u) + ∫_1^{ζ1} dζ [−A′(ζ)/A0] (2π h²(ζ))^{−1/2}
+//!         { e^{−(u−u1(ζ))²/2h²(ζ)} + e^{−(u+u1(ζ))²/2h²(ζ)} }`,
+//!
+//! with ζ1 = q1/q0, h(ζ) = h_rms(ζ) the roughness left above ζq0 (PY08 eq. 4) and u1(ζ) the
+//! separation of the surfaces that come into contact at ζ (DESIGN §2). It is kept as a contact
+//! fraction `c = A(ζ1)/A0` plus a set of weighted *folded* Gaussians — one per Gauss–Legendre
+//! node in ln M3(ζ), weight `w_i = ω_i [−dA/d ln M3]/A0` — so that the mass, the mean and the CDF
+//! are closed forms. The weights integrate −A′ from 1 to ζ1, so `c + Σ w_i = A(1)/A0 = 1` up to
+//! the quadrature error (a test).
+//!
+//! **Effective conductance**: the local conductance per unit width of a gap u is
+//! `σ(u) = u³/(12η)` [m³/(Pa·s)]; the 2-D Bruggeman condition is
+//! `∫ P(u) (σ_eff − σ(u))/(σ_eff + σ(u)) du = 0`. η cancels, so it is solved for
+//! `g = 12 η σ_eff = u_eff³` [m³] by bisection in ln g. The left-hand side increases
+//! monotonically from `2c − 1` (g → 0⁺) to 1 (g → ∞): a root exists only below the 2-D
+//! threshold c < 1/2; at and above it the interface is sealed, g = 0 exactly.
+//! The leak rate of a flat seal is `Q̇ = (L_y/L_x) σ_eff ΔP` (DESIGN §3.3).
+
+use super::PerssonContact;
+use crate::numerics::quadrature::gauss_legendre;
+use crate::numerics::special::erf;
+use std::f64::consts::{FRAC_1_SQRT_2, PI, SQRT_2};
+
+/// Half-width, in standard deviations, of the u-range integrated for each Gaussian (mass
+/// outside ±8σ is 1.2e-15).
+const SIGMAS: f64 = 8.0;
+
+/// Quadrature settings of the effective-medium level.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EffectiveMediumSettings {
+    /// Largest Gauss–Legendre panel width in `ln M3(ζ)` for the ζ-integral of P(u).
+    pub panel_width: f64,
+    /// Gauss–Legendre points per ln ζ panel.
+    pub order: usize,
+    /// Uniform panels per sub-interval of the u-integral of each Gaussian (sub-intervals are
+    /// cut at u = 0 and at ±u_eff·{½, 1, 2, 4}, where the Bruggeman kernel turns over).
+    pub u_panels: usize,
+    /// Gauss–Legendre points per u panel.
+    pub u_order: usize,
+}
+
+impl Default for EffectiveMediumSettings {
+    fn default() -> Self {
+        EffectiveMediumSettings {
+            panel_width: 0.5,
+            order: 8,
+            u_panels: 4,
+            u_order: 10,
+        }
+    }
+}
+
+impl EffectiveMediumSettings {
+    /// The same rules with `factor`× as many nodes in ln ζ and in u: for convergence checks.
+    pub fn refined(self, factor: usize) -> Self {
+        EffectiveMediumSettings {
+            panel_width: self.panel_width / factor as f64,
+            order: self.order,
+            u_panels: self.u_panels * factor,
+            u_order: self.u_order,
+        }
+    }
+}
+
+/// One folded normal component of P(u): density
+/// `weight · [N(u; center, width) + N(u; −center, width)]` on u ≥ 0, of total mass `weight`.
+/// `width = 0` is a point mass at `center`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FoldedGaussian {
+    /// Probability carried by this component (≥ 0).
+    pub weight: f64,
+    /// Centre u1(ζ) [m] (≥ 0).
+    pub center: f64,
+    /// Standard deviation h_rms(ζ) [m] (≥ 0).
+    pub width: f64,
+}
+
+impl FoldedGaussian {
+    /// `P(U ≤ u)` of the folded normal (without the weight):
+    /// `½[erf((u+μ)/(σ√2)) + erf((u−μ)/(σ√2))]` for u ≥ 0.
+    pub fn cdf(&self, u: f64) -> f64 {
+        if u < 0.0 {
+            return 0.0;
+        }
+        if self.width <= 0.0 {
+            return if u >= self.center { 1.0 } else { 0.0 };
+        }
+        let k = FRAC_1_SQRT_2 / self.width;
+        0.5 * (erf((u + self.center) * k) + erf((u - self.center) * k))
+    }
+
+    /// Mean of the folded normal (without the weight):
+    /// `σ√(2/π) e^{−μ²/2σ²} + μ erf(μ/(σ√2))` [m].
+    pub fn mean(&self) -> f64 {
+        if self.width <= 0.0 {
+            return self.center;
+        }
+        let (m, s) = (self.center, self.width);
+        s * (2.0 / PI).sqrt() * (-0.5 * (m / s).powi(2)).exp() + m * erf(m / (s * SQRT_2))
+    }
+}
+
+/// The distribution of interfacial separations: a contact fraction (u = 0) plus folded
+/// Gaussians (see the module docs).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SeparationDistribution {
+    contact: f64,
+    components: Vec<FoldedGaussian>,
+}
+
+impl SeparationDistribution {
+    /// A distribution from its parts (e.g. synthetic ones for tests). Negative or non-finite
+    /// weights, centres and widths are clamped to 0.
+    pub fn new(contact: f64, components: Vec<FoldedGaussian>) -> Self {
+        let clean = |x: f64| if x.is_finite() { x.max(0.0) } else { 0.0 };
+        SeparationDistribution {
+            contact: clean(contact),
+            components: components
+                .into_iter()
+                .map(|g| FoldedGaussian {
+                    weight: clean(g.weight),
+                    center: clean(g.center),
+                    width: clean(g.width),
+                })
+                .collect(),
+        }
+    }
+
+    /// P(u) of Persson's theory at reduced pressure `s = P0/E*` (module docs).
+    ///
+    /// The ζ-integral is done in `x = ln M3(ζ)`, `M3(ζ) = ∫_{q0}^{ζq0} q³C dq`, where
+    /// `A/A0 = erf(y)`, `y = s/√(π M3)`, is smooth (`−dA/dx = y e^{−y²}/√π`) however sharply
+    /// it drops in ζ at low pressure: Gauss–Legendre panels of `panel_width` in x, broken at
+    /// the kinks of C(q), from `y = 6` (A/A0 = 1 − 2e-17) to ζ1.
+    pub fn persson(contact: &PerssonContact, s: f64, settings: EffectiveMediumSettings) -> Self {
+        let sp = contact.spectrum();
+        let (q0, q1) = (sp.q0(), sp.q1());
+        let zeta1 = q1 / q0;
+        let c = contact.area_fraction(zeta1, s);
+        let x_hi = sp.total_m3().ln();
+        let x_lo = (s * s / (36.0 * PI)).ln();
+        if !(s > 0.0 && x_lo < x_hi) {
+            return SeparationDistribution::new(c, Vec::new());
+        }
+        let mut breaks = vec![x_lo];
+        breaks.extend(
+            sp.interior_knots()
+                .map(|k| sp.m3_to(k.exp()).ln())
+                .filter(|&x| x > x_lo && x < x_hi),
+        );
+        breaks.push(x_hi);
+        let (nodes, weights) = gauss_legendre(settings.order.max(1));
+        let width = if settings.panel_width > 0.0 {
+            settings.panel_width
+        } else {
+            0.5
+        };
+        let mut components = Vec::new();
+        for pair in breaks.windows(2) {
+            let (lo, hi) = (pair[0], pair[1]);
+            let panels = ((hi - lo) / width).ceil().max(1.0) as usize;
+            let h = (hi - lo) / panels as f64;
+            for p in 0..panels {
+                let mid = lo + (p as f64 + 0.5) * h;
+                for (node, w) in nodes.iter().zip(&weights) {
+                    let x = mid + 0.5 * h * node;
+                    let Some(ln_q) = sp.invert_m3(x.exp()) else {
+                        continue;
+                    };
+                    let y = s / (PI * x.exp()).sqrt();
+                    let zeta = (ln_q - q0.ln()).exp().max(1.0);
+                    let sep = contact.separation(zeta, s);
+                    components.push(FoldedGaussian {
+                        weight: 0.5 * h * w * y * (-y * y).exp() / PI.sqrt(),
+                        center: sep.u1(),
+                        width: sp.rms_roughness_above(ln_q.exp()),
+                    });
+                }
+            }
+        }
+        SeparationDistribution::new(c, components)
+    }
+
+    /// The contact fraction `A(ζ1)/A0` (the weight of δ(u)).
+    pub fn contact_fraction(&self) -> f64 {
+        self.contact
+    }
+
+    /// The folded Gaussian components.
+    pub fn components(&self) -> &[FoldedGaussian] {
+        &self.components
+    }
+
+    /// `∫ P(u) du` over u ≥ 0 (1 in theory).
+    pub fn total_probability(&self) -> f64 {
+        self.contact + self.components.iter().map(|g| g.weight).sum::<f64>()
+    }
+
+    /// `P(U ≤ u)`, including the contact fraction for u ≥ 0.
+    pub fn cdf(&self, u: f64) -> f64 {
+        if u < 0.0 {
+            return 0.0;
+        }
+        self.contact
+            + self
+                .components
+                .iter()
+                .map(|g| g.weight * g.cdf(u))
+                .sum::<f64>()
+    }
+
+    /// The continuous part of P(u) [1/m] at u ≥ 0 (point-mass components are left out).
+    pub fn density(&self, u: f64) -> f64 {
+        if u < 0.0 {
+            return 0.0;
+        }
+        let norm = 1.0 / (2.0 * PI).sqrt();
+        self.components
+            .iter()
+            .filter(|g| g.width > 0.0)
+            .map(|g| {
+                let (a, b) = ((u - g.center) / g.width, (u + g.center) / g.width);
+                g.weight * norm / g.width * ((-0.5 * a * a).exp() + (-0.5 * b * b).exp())
+            })
+            .sum()
+    }
+
+    /// The mean separation `∫ u P(u) du` [m].
+    pub fn mean(&self) -> f64 {
+        self.components.iter().map(|g| g.weight * g.mean()).sum()
+    }
+
+    /// `12 η σ_eff` [m³] of the 2-D Bruggeman medium with local conductance `u³/(12η)`
+    /// (module docs); exactly 0 at and above the threshold `contact_fraction ≥ 1/2`, or when
+    /// no component has a positive gap.
+    pub fn bruggeman_cubed_gap(&self, settings: EffectiveMediumSettings) -> f64 {
+        if self.contact >= 0.5 {
+            return 0.0;
+        }
+        // Wiener's upper bound: the arithmetic mean of u³ (where the residual is ≥ 0).
+        let upper = self.mean_cubed();
+        if !(upper > 0.0 && upper.is_finite()) {
+            return 0.0;
+        }
+        let (nodes, weights) = gauss_legendre(settings.u_order.max(1));
+        let residual =
+            |g: f64| self.bruggeman_residual(g, settings.u_panels.max(1), &nodes, &weights);
+        let mut hi = upper.ln();
+        if residual(hi.exp()) < 0.0 {
+            // rounding only: the bound holds exactly
+            return upper;
+        }
+        let mut lo = hi - 10.0_f64.ln();
+        loop {
+            let g = lo.exp();
+            if g <= 0.0 || !g.is_finite() {
+                return 0.0;
+            }
+            if residual(g) < 0.0 {
+                break;
+            }
+            hi = lo;
+            lo -= 10.0_f64.ln();
+        }
+        while hi - lo > 1e-12 {
+            let mid = 0.5 * (lo + hi);
+            if residual(mid.exp()) < 0.0 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        (0.5 * (lo + hi)).exp()
+    }
+
+    /// `∫ u³ P(u) du` [m³], in closed form per component
+    /// (`E|X|³` of a folded normal: `(μ³ + 3μσ²) erf(μ/σ√2) + √(2/π) σ (μ² + 2σ²) e^{−μ²/2σ²}`).
+    pub fn mean_cubed(&self) -> f64 {
+        self.components
+            .iter()
+            .map(|g| {
+                let (m, s) = (g.center, g.width);
+                let m3 = if s <= 0.0 {
+                    m * m * m
+                } else {
+                    (m * m * m + 3.0 * m * s * s) * erf(m / (s * SQRT_2))
+                        + (2.0 / PI).sqrt()
+                            * s
+                            * (m * m + 2.0 * s * s)
+                            * (-0.5 * (m / s).powi(2)).exp()
+                };
+                g.weight * m3
+            })
+            .sum()
+    }
+
+    /// `∫ P(u) (g − u³)/(g + u³) du` (monotonically increasing in g > 0).
+    fn bruggeman_residual(&self, g: f64, panels: usize, nodes: &[f64], weights: &[f64]) -> f64 {
+        let kernel = |u: f64| {
+            let u3 = (u * u * u).abs();
+            (g - u3) / (g + u3)
+        };
+        let u_eff = g.cbrt();
+        let mut total = self.contact;
+        let norm = 1.0 / (2.0 * PI).sqrt();
+        let mut cuts: Vec<f64> = Vec::with_capacity(12);
+        for comp in &self.components {
+            if comp.weight == 0.0 {
+                continue;
+            }
+            if comp.width <= 0.0 {
+                total += comp.weight * kernel(comp.center);
+                continue;
+            }
+            // ∫_0^∞ [N(u;μ,σ) + N(u;−μ,σ)] φ(u) du = ∫_{−∞}^{∞} N(u;μ,σ) φ(|u|) du
+            let (a, b) = (
+                comp.center - SIGMAS * comp.width,
+                comp.center + SIGMAS * comp.width,
+            );
+            cuts.clear();
+            cuts.push(a);
+            for x in [0.0, 0.5, 1.0, 2.0, 4.0] {
+                for v in [x * u_eff, -x * u_eff] {
+                    if v > a && v < b {
+                        cuts.push(v);
+                    }
+                }
+            }
+            cuts.push(b);
+            cuts.sort_by(f64::total_cmp);
+            cuts.dedup();
+            let inv = 1.0 / comp.width;
+            let mut sum = 0.0;
+            for pair in cuts.windows(2) {
+                let h = (pair[1] - pair[0]) / panels as f64;
+                for p in 0..panels {
+                    let mid = pair[0] + (p as f64 + 0.5) * h;
+                    for (x, w) in nodes.iter().zip(weights) {
+                        let u = mid + 0.5 * h * x;
+                        let z = (u - comp.center) * inv;
+                        sum += 0.5 * h * w * (-0.5 * z * z).exp() * kernel(u);
+                    }
+                }
+            }
+            total += comp.weight * norm * inv * sum;
+        }
+        total
+    }
+}
+
+/// The effective-medium result at one pressure.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EffectiveMedium {
+    /// Contact fraction `A(ζ1)/A0` (sealed at ≥ 1/2).
+    pub contact_fraction: f64,
+    /// `12 η σ_eff` [m³]; 0 when sealed.
+    pub cubed_gap: f64,
+}
+
+impl EffectiveMedium {
+    /// Bruggeman over Persson's P(u) at reduced pressure `s = P0/E*`.
+    pub fn persson(contact: &PerssonContact, s: f64, settings: EffectiveMediumSettings) -> Self {
+        let zeta1 = contact.spectrum().q1() / contact.spectrum().q0();
+        let c = contact.area_fraction(zeta1, s);
+        if c >= 0.5 {
+            return EffectiveMedium {
+                contact_fraction: c,
+                cubed_gap: 0.0,
+            };
+        }
+        let p = SeparationDistribution::persson(contact, s, settings);
+        EffectiveMedium {
+            contact_fraction: p.contact_fraction(),
+            cubed_gap: p.bruggeman_cubed_gap(settings),
+        }
+    }
+
+    /// Whether the interface is sealed (no percolating conductance).
+    pub fn sealed(&self) -> bool {
+        self.cubed_gap <= 0.0
+    }
+
+    /// The effective gap `u_eff = (12 η σ_eff)^{1/3}` [m].
+    pub fn effective_gap(&self) -> f64 {
+        self.cubed_gap.cbrt()
+    }
+
+    /// Effective conductance per unit width `σ_eff` [m³/(Pa·s)] for viscosity η [Pa·s].
+    pub fn conductance(&self, viscosity: f64) -> f64 {
+        self.cubed_gap / (12.0 * viscosity)
+    }
+}

@@ -1,0 +1,227 @@
+//! The effective-medium level (DESIGN §3.3): the separation distribution P(u) and the 2-D
+//! Bruggeman conductance, tested by their properties and closed forms.
+
+use sealsim::contact::effective_medium::FoldedGaussian;
+use sealsim::contact::{
+    ContactSettings, EffectiveMedium, EffectiveMediumSettings, Elastic, PerssonContact,
+    SeparationDistribution,
+};
+use sealsim::surface::Spectrum;
+
+fn paper_contact() -> PerssonContact {
+    let sp = Spectrum::self_affine(2e-6, 0.8, 1e4, 7.8e9, None).unwrap();
+    PerssonContact::new(sp, ContactSettings::default())
+}
+
+fn reduced(p0: f64) -> f64 {
+    let e = Elastic {
+        youngs_modulus: 10e6,
+        poisson_ratio: 0.5,
+    };
+    p0 / e.effective_modulus()
+}
+
+fn point(weight: f64, center: f64) -> FoldedGaussian {
+    FoldedGaussian {
+        weight,
+        center,
+        width: 0.0,
+    }
+}
+
+#[test]
+fn persson_distribution_is_normalised_and_non_negative() {
+    let c = paper_contact();
+    let settings = EffectiveMediumSettings::default();
+    for p0 in [0.05e6, 0.2e6, 1e6, 3e6] {
+        let p = SeparationDistribution::persson(&c, reduced(p0), settings);
+        let total = p.total_probability();
+        assert!((total - 1.0).abs() <= 1e-6, "P0 = {p0}: ∫P du = {total}");
+        assert!(p.contact_fraction() >= 0.0);
+        assert!(
+            p.components()
+                .iter()
+                .all(|g| g.weight >= 0.0 && g.width >= 0.0)
+        );
+        // density and CDF: non-negative, CDF non-decreasing up to the total
+        let mut last = 0.0;
+        for k in 0..200 {
+            let u = 1e-9 * 1.1_f64.powi(k);
+            assert!(p.density(u) >= 0.0 && p.density(u).is_finite());
+            let f = p.cdf(u);
+            assert!(f >= last - 1e-15 && f <= total + 1e-12);
+            last = f;
+        }
+        assert!(p.mean() > 0.0 && p.mean().is_finite());
+    }
+}
+
+#[test]
+fn persson_distribution_converges_in_the_zeta_nodes() {
+    let c = paper_contact();
+    let s = reduced(0.2e6);
+    let base = EffectiveMediumSettings::default();
+    let a = SeparationDistribution::persson(&c, s, base);
+    let b = SeparationDistribution::persson(&c, s, base.refined(4));
+    assert!((a.mean() / b.mean() - 1.0).abs() < 1e-6);
+    for u in [1e-8, 1e-7, 1e-6, 5e-6] {
+        assert!((a.cdf(u) - b.cdf(u)).abs() < 1e-6, "u = {u}");
+    }
+    let (ga, gb) = (
+        a.bruggeman_cubed_gap(base),
+        b.bruggeman_cubed_gap(base.refined(4)),
+    );
+    assert!((ga / gb - 1.0).abs() < 1e-4, "{ga} vs {gb}");
+}
+
+#[test]
+fn bruggeman_u_integral_is_converged() {
+    // a wide Gaussian that straddles u = 0, with contact: the kernel is resolved
+    let p = SeparationDistribution::new(
+        0.3,
+        vec![
+            FoldedGaussian {
+                weight: 0.4,
+                center: 1e-6,
+                width: 2e-6,
+            },
+            FoldedGaussian {
+                weight: 0.3,
+                center: 3e-7,
+                width: 5e-8,
+            },
+        ],
+    );
+    let s = EffectiveMediumSettings::default();
+    let (a, b) = (
+        p.bruggeman_cubed_gap(s),
+        p.bruggeman_cubed_gap(s.refined(8)),
+    );
+    assert!(a > 0.0 && (a / b - 1.0).abs() < 1e-5, "{a} vs {b}");
+}
+
+#[test]
+fn single_separation_gives_its_own_conductance() {
+    let s = EffectiveMediumSettings::default();
+    let u0: f64 = 0.37e-6;
+    let g = SeparationDistribution::new(0.0, vec![point(1.0, u0)]).bruggeman_cubed_gap(s);
+    assert!((g / u0.powi(3) - 1.0).abs() < 1e-10);
+    // a very narrow Gaussian is the same to its variance
+    let narrow = SeparationDistribution::new(
+        0.0,
+        vec![FoldedGaussian {
+            weight: 1.0,
+            center: u0,
+            width: 1e-6 * u0,
+        }],
+    );
+    assert!((narrow.bruggeman_cubed_gap(s) / u0.powi(3) - 1.0).abs() < 1e-9);
+}
+
+#[test]
+fn symmetric_binary_medium_gives_the_geometric_mean() {
+    let s = EffectiveMediumSettings::default();
+    let (u1, u2): (f64, f64) = (0.1e-6, 2e-6);
+    let g = SeparationDistribution::new(0.0, vec![point(0.5, u1), point(0.5, u2)])
+        .bruggeman_cubed_gap(s);
+    let expected = (u1.powi(3) * u2.powi(3)).sqrt();
+    assert!((g / expected - 1.0).abs() < 1e-10, "{g} vs {expected}");
+}
+
+#[test]
+fn conductance_vanishes_linearly_at_the_2d_threshold() {
+    let s = EffectiveMediumSettings::default();
+    let u0: f64 = 1e-6;
+    // closed form with one open separation: g = g0 (1 − 2c)
+    for c in [0.1, 0.3, 0.45, 0.49, 0.499] {
+        let g = SeparationDistribution::new(c, vec![point(1.0 - c, u0)]).bruggeman_cubed_gap(s);
+        let expected = u0.powi(3) * (1.0 - 2.0 * c);
+        assert!((g / expected - 1.0).abs() < 1e-9, "c = {c}");
+    }
+    // a Gaussian instead: positive, decreasing to 0 at c → 1/2. (Not linear: a density
+    // ρ(0) > 0 at u = 0 adds ∝ g^{1/3} to the residual, so g ∝ (1/2 − c)³ very close.)
+    let gauss = |c: f64| {
+        SeparationDistribution::new(
+            c,
+            vec![FoldedGaussian {
+                weight: 1.0 - c,
+                center: u0,
+                width: 0.3 * u0,
+            }],
+        )
+        .bruggeman_cubed_gap(s)
+    };
+    let g: Vec<f64> = [0.3, 0.45, 0.49, 0.499, 0.4999].map(gauss).to_vec();
+    assert!(g.iter().all(|&x| x > 0.0 && x.is_finite()));
+    assert!(g.windows(2).all(|w| w[1] < w[0]));
+    assert!(g[4] < 1e-3 * g[0]);
+    // exactly zero at and beyond the threshold
+    for c in [0.5, 0.6, 1.0] {
+        assert_eq!(
+            SeparationDistribution::new(c, vec![point(1.0 - c, u0)]).bruggeman_cubed_gap(s),
+            0.0
+        );
+        assert_eq!(gauss(c), 0.0);
+    }
+}
+
+#[test]
+fn persson_effective_medium_seals_exactly_at_half_contact() {
+    let c = paper_contact();
+    let settings = EffectiveMediumSettings::default();
+    let zeta1 = 7.8e9 / 1e4;
+    // s at which A(ζ1)/A0 = 1/2: A = erf(s/√(π M3)) is linear in s
+    let probe = 1e-3;
+    let s_half = probe * sealsim::numerics::special::erf_inv(0.5)
+        / sealsim::numerics::special::erf_inv(c.area_fraction(zeta1, probe));
+    let below = EffectiveMedium::persson(&c, s_half * 0.98, settings);
+    assert!(below.contact_fraction < 0.5 && !below.sealed());
+    assert!(below.cubed_gap > 0.0 && below.cubed_gap.is_finite());
+    let above = EffectiveMedium::persson(&c, s_half * 1.0001, settings);
+    assert!(above.contact_fraction >= 0.5);
+    assert_eq!(above.cubed_gap, 0.0);
+    // monotone in pressure, and positive/finite over the paper's pressures
+    let mut last = f64::INFINITY;
+    for p0 in [0.05e6, 0.1e6, 0.2e6, 0.5e6, 1e6] {
+        let em = EffectiveMedium::persson(&c, reduced(p0), settings);
+        assert!(em.cubed_gap > 0.0 && em.cubed_gap.is_finite());
+        assert!(em.cubed_gap < last);
+        last = em.cubed_gap;
+    }
+}
+
+#[test]
+fn leak_rates_of_both_levels_are_positive_and_finite_on_the_paper_case() {
+    use sealsim::leak::Fidelity;
+    use sealsim::leak::{FlatSeal, Fluid, StaticProblem, StaticSolver};
+    let problem = StaticProblem {
+        material: Elastic {
+            youngs_modulus: 10e6,
+            poisson_ratio: 0.5,
+        },
+        spectrum: Spectrum::self_affine(2e-6, 0.8, 1e4, 7.8e9, None).unwrap(),
+        fluid: Fluid {
+            viscosity: 1e-3,
+            pressure_difference: 0.01e6,
+        },
+        seal: FlatSeal {
+            nominal_pressure: 0.2e6,
+            width: 1e-3,
+            length: 1e-2,
+        },
+        contact: ContactSettings::default(),
+        shape_factor: 1.0,
+    };
+    let em = StaticSolver::new(problem.clone(), Fidelity::EffectiveMedium);
+    let cj = StaticSolver::new(problem, Fidelity::Exact);
+    for p0 in [0.05e6, 0.1e6, 0.2e6, 0.5e6, 1e6] {
+        let (a, b) = (em.evaluate(p0), cj.evaluate(p0));
+        assert!(a.leak_rate > 0.0 && a.leak_rate.is_finite());
+        assert!(b.leak_rate > 0.0 && b.leak_rate.is_finite());
+        // measured ratio, reported in the README (not asserted: a result, not a target)
+        eprintln!(
+            "P0 = {p0:e} Pa: Q_EM/Q_CJ = {:.4}",
+            a.leak_rate / b.leak_rate
+        );
+    }
+}
