@@ -39,6 +39,22 @@ pub struct CurvePoint {
     pub tan_delta: f64,
 }
 
+impl CurvePoint {
+    /// All eight values, in the order of the fields (and of the curve CSV's columns).
+    pub fn values(&self) -> [f64; 8] {
+        [
+            self.time,
+            self.reduced_time,
+            self.relaxation,
+            self.compliance,
+            self.angular_frequency,
+            self.storage,
+            self.loss,
+            self.tan_delta,
+        ]
+    }
+}
+
 /// The response of a material at one temperature.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Curve {
@@ -175,19 +191,10 @@ fn dynamic_moduli(prony: &Prony, xi: f64) -> (f64, f64) {
 }
 
 fn check_finite(curve: &Curve) -> Result<(), CurveError> {
-    let bad = curve.points.iter().find(|p| {
-        let values = [
-            p.time,
-            p.reduced_time,
-            p.relaxation,
-            p.compliance,
-            p.angular_frequency,
-            p.storage,
-            p.loss,
-            p.tan_delta,
-        ];
-        values.iter().any(|v| !v.is_finite()) || p.time <= 0.0
-    });
+    let bad = curve
+        .points
+        .iter()
+        .find(|p| p.values().iter().any(|v| !v.is_finite()) || p.time <= 0.0);
     match bad {
         None => Ok(()),
         Some(_) => Err(CurveError(format!(

@@ -4,7 +4,7 @@
 //! Units are printed only here; the model hands over SI values (Pa, s, K).
 
 use super::ReportError;
-use crate::material::curve::{Curve, CurvePoint};
+use crate::material::curve::Curve;
 use crate::material::{Material, Shift, Status};
 
 /// Columns of the curve CSV, in order: one row per grid point, the dynamic moduli at the
@@ -29,7 +29,7 @@ pub fn curve_table(curve: &Curve) -> Result<String, ReportError> {
     let mut writer = ::csv::Writer::from_writer(Vec::new());
     writer.write_record(CURVE_COLUMNS).map_err(csv_error)?;
     for (index, p) in curve.points.iter().enumerate() {
-        let values = row(p);
+        let values = p.values();
         let mut record = Vec::with_capacity(values.len());
         for (column, value) in CURVE_COLUMNS.into_iter().zip(values) {
             if !value.is_finite() {
@@ -47,19 +47,6 @@ pub fn curve_table(curve: &Curve) -> Result<String, ReportError> {
         .into_inner()
         .map_err(|e| ReportError::Csv(e.to_string()))?;
     String::from_utf8(bytes).map_err(|e| ReportError::Csv(e.to_string()))
-}
-
-fn row(p: &CurvePoint) -> [f64; 8] {
-    [
-        p.time,
-        p.reduced_time,
-        p.relaxation,
-        p.compliance,
-        p.angular_frequency,
-        p.storage,
-        p.loss,
-        p.tan_delta,
-    ]
 }
 
 fn csv_error(e: ::csv::Error) -> ReportError {
