@@ -54,6 +54,16 @@ pub struct StaticProblem {
     pub shape_factor: f64,
 }
 
+/// ΔP/P0 above which the fluid pressure is no longer small against the contact pressure
+/// (PY08 §2 assumes P0 ≫ ΔP): a validity warning, for the static leak and the life run alike.
+pub const MAX_PRESSURE_RATIO: f64 = 0.1;
+
+/// Constriction height below which continuum flow is not a valid picture [m] (1 nm).
+pub const MIN_CONTINUUM_GAP: f64 = 1e-9;
+
+/// u_c/λ_c above which the thin-gap (lubrication) flow of PY08 eq. 1 fails.
+pub const MAX_ASPECT_RATIO: f64 = 0.1;
+
 /// One evaluated pressure point.
 ///
 /// With [`Fidelity::EffectiveMedium`], `junction.u_c` is the effective gap
@@ -263,7 +273,7 @@ impl StaticSolver {
         let p0 = point.nominal_pressure;
         let mut w = Vec::new();
         let ratio = self.problem.fluid.pressure_difference / p0;
-        if ratio > 0.1 {
+        if ratio > MAX_PRESSURE_RATIO {
             w.push(Warning::PressureRatio {
                 nominal_pressure: p0,
                 ratio,
@@ -271,13 +281,13 @@ impl StaticSolver {
         }
         if let Junction::Leaking(j) = point.junction {
             let aspect = j.u_c / j.lambda_c;
-            if aspect > 0.1 {
+            if aspect > MAX_ASPECT_RATIO {
                 w.push(Warning::AspectRatio {
                     nominal_pressure: p0,
                     ratio: aspect,
                 });
             }
-            if j.u_c < 1e-9 {
+            if j.u_c < MIN_CONTINUUM_GAP {
                 w.push(Warning::MolecularGap {
                     nominal_pressure: p0,
                     u_c: j.u_c,

@@ -88,11 +88,10 @@ impl Outputs {
         fs::write(&p, text).unwrap();
         p
     }
-    /// `run SCENARIO -o h.csv --summary s.json --plot p.svg <extra>` → (stdout, stderr),
-    /// expecting success.
-    fn run_ok(&self, scenario: &Path, extra: &[&str]) -> (String, String) {
-        let out = cargo_bin_cmd!("sealsim")
-            .arg("run")
+    /// The command `run SCENARIO -o h.csv --summary s.json --plot p.svg <extra>`.
+    fn run_cmd(&self, scenario: &Path, extra: &[&str]) -> assert_cmd::Command {
+        let mut cmd = cargo_bin_cmd!("sealsim");
+        cmd.arg("run")
             .arg(scenario)
             .arg("-o")
             .arg(self.path("h.csv"))
@@ -100,9 +99,14 @@ impl Outputs {
             .arg(self.path("s.json"))
             .arg("--plot")
             .arg(self.path("p.svg"))
-            .args(extra)
-            .assert()
-            .success();
+            .args(extra);
+        cmd
+    }
+
+    /// `run SCENARIO -o h.csv --summary s.json --plot p.svg <extra>` → (stdout, stderr),
+    /// expecting success.
+    fn run_ok(&self, scenario: &Path, extra: &[&str]) -> (String, String) {
+        let out = self.run_cmd(scenario, extra).assert().success();
         let o = out.get_output();
         (
             String::from_utf8(o.stdout.clone()).unwrap(),
@@ -116,16 +120,8 @@ impl Outputs {
     }
     /// `run` expecting exit 2 with every needle in stderr, and no output file.
     fn run_rejects(&self, scenario: &Path, extra: &[&str], needles: &[&str]) {
-        let out = cargo_bin_cmd!("sealsim")
-            .arg("run")
-            .arg(scenario)
-            .arg("-o")
-            .arg(self.path("h.csv"))
-            .arg("--summary")
-            .arg(self.path("s.json"))
-            .arg("--plot")
-            .arg(self.path("p.svg"))
-            .args(extra)
+        let out = self
+            .run_cmd(scenario, extra)
             .assert()
             .code(2)
             .stdout(predicate::str::is_empty())

@@ -71,10 +71,7 @@ fn table<'a>(
             .write_record(label.into_iter().chain(record))
             .map_err(csv_error)?;
     }
-    let bytes = writer
-        .into_inner()
-        .map_err(|e| ReportError::Csv(e.to_string()))?;
-    String::from_utf8(bytes).map_err(|e| ReportError::Csv(e.to_string()))
+    finish(writer)
 }
 
 /// A finite value in shortest round-trip scientific notation.
@@ -86,8 +83,17 @@ pub(crate) fn number(row: usize, column: &'static str, value: f64) -> Result<Str
     }
 }
 
-fn csv_error(e: ::csv::Error) -> ReportError {
+/// A CSV writer error as a report error.
+pub(crate) fn csv_error(e: ::csv::Error) -> ReportError {
     ReportError::Csv(e.to_string())
+}
+
+/// The text a CSV writer over a byte buffer has produced.
+pub(crate) fn finish(writer: ::csv::Writer<Vec<u8>>) -> Result<String, ReportError> {
+    let bytes = writer
+        .into_inner()
+        .map_err(|e| ReportError::Csv(e.to_string()))?;
+    String::from_utf8(bytes).map_err(|e| ReportError::Csv(e.to_string()))
 }
 
 #[cfg(test)]

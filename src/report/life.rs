@@ -7,7 +7,7 @@
 //! written.
 
 use super::ReportError;
-use super::csv::number;
+use super::csv::{csv_error, finish, number};
 use super::materials::human;
 use super::plot::{LogLogChart, Series};
 use crate::leak::Fidelity;
@@ -539,17 +539,6 @@ pub fn compare_text(rows: &[CompareRow<'_>]) -> String {
         out.push('\n');
     }
     out
-}
-
-fn finish(writer: ::csv::Writer<Vec<u8>>) -> Result<String, ReportError> {
-    let bytes = writer
-        .into_inner()
-        .map_err(|e| ReportError::Csv(e.to_string()))?;
-    String::from_utf8(bytes).map_err(|e| ReportError::Csv(e.to_string()))
-}
-
-fn csv_error(e: ::csv::Error) -> ReportError {
-    ReportError::Csv(e.to_string())
 }
 
 #[cfg(test)]

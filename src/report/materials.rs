@@ -4,6 +4,7 @@
 //! Units are printed only here; the model hands over SI values (Pa, s, K).
 
 use super::ReportError;
+use super::csv::{csv_error, finish};
 use crate::material::curve::Curve;
 use crate::material::{Material, Shift, Status};
 
@@ -43,14 +44,7 @@ pub fn curve_table(curve: &Curve) -> Result<String, ReportError> {
         }
         writer.write_record(&record).map_err(csv_error)?;
     }
-    let bytes = writer
-        .into_inner()
-        .map_err(|e| ReportError::Csv(e.to_string()))?;
-    String::from_utf8(bytes).map_err(|e| ReportError::Csv(e.to_string()))
-}
-
-fn csv_error(e: ::csv::Error) -> ReportError {
-    ReportError::Csv(e.to_string())
+    finish(writer)
 }
 
 /// A number for people: `sig` significant digits, trailing zeros dropped; scientific outside
@@ -367,6 +361,10 @@ fn export_header(id: &str, m: &Material, solver: &str, format: &str) -> Vec<Stri
 }
 
 /// Abaqus input: `*MATERIAL`, `*ELASTIC, MODULI=INSTANTANEOUS` (E0, ν),
+/// The comment line that explains the WLF data of both exports.
+const WLF_NOTE: &str =
+    "WLF shift: log10 a_T = -C1 (T - T_ref)/(C2 + T - T_ref); data: T_ref [K], C1, C2 [K]";
+
 /// `*VISCOELASTIC, TIME=PRONY` (g_i, k_i = 0, τ_i) and, for WLF, `*TRS, DEFINITION=WLF`.
 pub fn abaqus(id: &str, m: &Material) -> String {
     let prony = &m.prony;
@@ -396,7 +394,7 @@ pub fn abaqus(id: &str, m: &Material) -> String {
     match m.shift {
         Shift::None => {}
         Shift::Wlf { reference, c1, c2 } => {
-            out += "** WLF shift: log10 a_T = -C1 (T - T_ref)/(C2 + T - T_ref); data: T_ref [K], C1, C2 [K]\n";
+            out += &format!("** {WLF_NOTE}\n");
             out += "*TRS, DEFINITION=WLF\n";
             out += &format!(
                 "{}, {}, {}\n",
@@ -444,7 +442,7 @@ pub fn ansys(id: &str, m: &Material) -> String {
     match m.shift {
         Shift::None => {}
         Shift::Wlf { reference, c1, c2 } => {
-            out += "! WLF shift: log10 a_T = -C1 (T - T_ref)/(C2 + T - T_ref); data: T_ref [K], C1, C2 [K]\n";
+            out += &format!("! {WLF_NOTE}\n");
             out += "TB,SHIFT,1,,3\n";
             out += &format!(
                 "TBDATA,1,{},{},{}\n",

@@ -895,11 +895,11 @@ impl<'a> Simulator<'a> {
             });
         }
         let ratio = p.fluid.pressure_difference / snap.profile.peak();
-        if ratio > 0.1 {
+        if ratio > crate::leak::MAX_PRESSURE_RATIO {
             push(LifeWarning::PressureRatio { time: t, ratio });
         }
         if let Some(u) = snap.u_c
-            && u < 1e-9
+            && u < crate::leak::MIN_CONTINUUM_GAP
         {
             push(LifeWarning::MolecularGap { time: t, u_c: u });
         }
