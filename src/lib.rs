@@ -41,6 +41,7 @@ pub mod clogging;
 pub mod contact;
 pub mod leak;
 pub mod material;
+pub mod numerical;
 pub mod numerics;
 pub mod report;
 pub mod scenario;
