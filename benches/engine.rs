@@ -1,8 +1,12 @@
 //! Speed of the static engine: exact evaluation per pressure point, contact-table build per
-//! surface, and table lookup (targets: ≤ 1 ms, ≤ 5 ms, ≤ 1 µs). Figures go in the README.
+//! surface, and table lookup (targets: ≤ 1 ms, ≤ 5 ms, ≤ 1 µs); the effective-medium level per
+//! state (target ≤ 1 ms with its table). Figures go in the README.
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use sealsim::contact::{ContactSettings, ContactTable, PerssonContact, TableSettings};
+use sealsim::contact::{
+    ContactSettings, ContactTable, EffectiveMediumSettings, EffectiveMediumTable, PerssonContact,
+    SeparationDistribution, TableSettings,
+};
 use sealsim::surface::Spectrum;
 use std::hint::black_box;
 
@@ -21,6 +25,33 @@ fn engine(c: &mut Criterion) {
     c.bench_function("contact table build (paper surface)", |b| {
         b.iter(|| ContactTable::build(black_box(exact.clone()), TableSettings::default()))
     });
+    let em = EffectiveMediumSettings::default();
+    c.bench_function("effective medium: P(u) (paper case, 0.2 MPa)", |b| {
+        b.iter(|| SeparationDistribution::persson(&exact, black_box(s), em))
+    });
+    let dist = SeparationDistribution::persson(&exact, s, em);
+    c.bench_function(
+        "effective medium: Bruggeman solve (paper case, 0.2 MPa)",
+        |b| b.iter(|| black_box(&dist).bruggeman_cubed_gap(em)),
+    );
+    let em_table =
+        EffectiveMediumTable::build(exact.clone(), TableSettings::effective_medium(), em);
+    c.bench_function(
+        "effective medium: table lookup (paper case, 0.2 MPa)",
+        |b| b.iter(|| em_table.effective_gap(black_box(s))),
+    );
+    let mut slow = c.benchmark_group("slow");
+    slow.sample_size(10);
+    slow.bench_function("effective medium: table build (paper surface)", |b| {
+        b.iter(|| {
+            EffectiveMediumTable::build(
+                black_box(exact.clone()),
+                TableSettings::effective_medium(),
+                em,
+            )
+        })
+    });
+    slow.finish();
     let table = ContactTable::build(exact.clone(), TableSettings::default());
     let pressures: Vec<f64> = (0..64)
         .map(|i| s * 10f64.powf(-1.0 + i as f64 / 64.0))

@@ -1,7 +1,7 @@
 //! Leak rate of a static seal through its critical constriction (PY08 §2, eqs. 1–3).
 
 use crate::contact::{
-    ContactSettings, ContactTable, CriticalJunction, EffectiveMedium, EffectiveMediumSettings,
+    ContactSettings, ContactTable, CriticalJunction, EffectiveMediumSettings, EffectiveMediumTable,
     Elastic, Junction, PerssonContact, TableSettings,
 };
 use crate::surface::Spectrum;
@@ -27,19 +27,41 @@ pub struct FlatSeal {
     pub length: f64,
 }
 
-/// Which level of the fidelity ladder (DESIGN §4) evaluates the static leak.
+/// Which level of the fidelity ladder (DESIGN §4) evaluates the contact and the leak.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Fidelity {
-    /// Quadrature at every pressure.
+    /// `u_c ≈ h_rms(ζc)` (PY08 §5): closed forms only, no separation quadrature.
+    RuleOfThumb,
+    /// Critical junction `u_c = u1(ζc)` by quadrature at every pressure.
     Exact,
-    /// Interpolation in a [`ContactTable`] built once per surface (falls back to the exact
-    /// path outside the table's range).
+    /// Critical junction by interpolation in a [`ContactTable`] built once per surface (falls
+    /// back to the exact path outside the table's range).
     #[default]
     Table,
     /// Bruggeman's 2-D effective medium over the separation distribution P(u) (DESIGN §3.3,
-    /// [`crate::contact::effective_medium`]). Static leak ([`StaticSolver`]) only: wherever a
-    /// critical junction is needed ([`ContactPath`], the life simulation) it uses the table.
+    /// [`crate::contact::effective_medium`]), tabulated once per surface
+    /// ([`EffectiveMediumTable`]).
     EffectiveMedium,
+}
+
+impl Fidelity {
+    /// Every level, cheapest first.
+    pub const ALL: [Fidelity; 4] = [
+        Fidelity::RuleOfThumb,
+        Fidelity::Table,
+        Fidelity::Exact,
+        Fidelity::EffectiveMedium,
+    ];
+
+    /// The level's name in scenario files and on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Fidelity::RuleOfThumb => "rule-of-thumb",
+            Fidelity::Exact => "exact",
+            Fidelity::Table => "critical-junction",
+            Fidelity::EffectiveMedium => "effective-medium",
+        }
+    }
 }
 
 /// Everything the static leak calculation needs, in SI units.
@@ -66,10 +88,7 @@ pub const MAX_ASPECT_RATIO: f64 = 0.1;
 
 /// One evaluated pressure point.
 ///
-/// With [`Fidelity::EffectiveMedium`], `junction.u_c` is the effective gap
-/// `u_eff = (12 η σ_eff)^{1/3}` and the other junction fields are those of the critical
-/// junction at the same pressure (at the 2-D threshold 1/2 instead of a_c when the critical
-/// junction is already sealed); `Sealed` exactly when the contact fraction `A(q1/q0)/A0` ≥ 1/2.
+/// `junction` is the conducting channel of the level ([`ContactPath::critical_junction`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LeakPoint {
     /// Nominal squeezing pressure P0 [Pa].
@@ -143,127 +162,165 @@ pub fn leak_rate(u_c: f64, fluid: &Fluid, width: f64, length: f64, shape_factor:
         / (12.0 * fluid.viscosity)
 }
 
-/// Evaluates the critical junction of one surface at many pressures, by the exact path or a
-/// contact table built once (and re-used for every pressure).
+/// Evaluates the leak of one surface at many pressures through one [`ContactPath`].
 #[derive(Debug, Clone)]
 pub struct StaticSolver {
     problem: StaticProblem,
     path: ContactPath,
-    fidelity: Fidelity,
 }
 
-/// The critical junction of one surface by the chosen [`Fidelity`]: the exact path, or a
-/// contact table built once and re-used for every pressure and time step.
+/// The contact-and-gap model of one surface at the chosen [`Fidelity`], prepared once (a table
+/// where the level has one) and re-used for every pressure and time step.
 #[derive(Debug, Clone)]
 pub enum ContactPath {
+    RuleOfThumb(PerssonContact),
     Exact(PerssonContact),
     Table(ContactTable),
+    EffectiveMedium(Box<EffectiveMediumTable>),
 }
 
 impl ContactPath {
-    /// Builds the path for `spectrum` (with the table: ≈ 3 ms).
+    /// Builds the path for `spectrum` (critical-junction table ≈ 3 ms; effective-medium table
+    /// ≈ 0.3 s).
     pub fn new(spectrum: &Spectrum, settings: ContactSettings, fidelity: Fidelity) -> Self {
+        Self::with_tables(spectrum, settings, fidelity, TableSettings::default())
+    }
+
+    /// As [`Self::new`] with a given table spacing (for the speed/accuracy trade).
+    pub fn with_tables(
+        spectrum: &Spectrum,
+        settings: ContactSettings,
+        fidelity: Fidelity,
+        table: TableSettings,
+    ) -> Self {
         let exact = PerssonContact::new(spectrum.clone(), settings);
         match fidelity {
+            Fidelity::RuleOfThumb => ContactPath::RuleOfThumb(exact),
             Fidelity::Exact => ContactPath::Exact(exact),
-            // the effective medium has no critical junction of its own: use the table
-            Fidelity::Table | Fidelity::EffectiveMedium => {
-                ContactPath::Table(ContactTable::build(exact, TableSettings::default()))
+            Fidelity::Table => ContactPath::Table(ContactTable::build(exact, table)),
+            Fidelity::EffectiveMedium => {
+                let em_table = TableSettings {
+                    points_per_decade: table.points_per_decade * (2.0 / 3.0),
+                    ..TableSettings::effective_medium()
+                };
+                ContactPath::EffectiveMedium(Box::new(EffectiveMediumTable::build(
+                    exact,
+                    em_table,
+                    EffectiveMediumSettings::default(),
+                )))
             }
+        }
+    }
+
+    /// The level this path evaluates.
+    pub fn fidelity(&self) -> Fidelity {
+        match self {
+            ContactPath::RuleOfThumb(_) => Fidelity::RuleOfThumb,
+            ContactPath::Exact(_) => Fidelity::Exact,
+            ContactPath::Table(_) => Fidelity::Table,
+            ContactPath::EffectiveMedium(_) => Fidelity::EffectiveMedium,
         }
     }
 
     /// The exact contact theory behind the path.
     pub fn exact(&self) -> &PerssonContact {
         match self {
-            ContactPath::Exact(c) => c,
+            ContactPath::RuleOfThumb(c) | ContactPath::Exact(c) => c,
             ContactPath::Table(t) => t.exact(),
+            ContactPath::EffectiveMedium(t) => t.junctions().exact(),
         }
     }
 
-    /// The critical junction at reduced pressure `s = P0/E*`.
+    /// The conducting channel at reduced pressure `s = P0/E*`:
+    /// * critical junction (exact or table): u_c = u1(ζc) (PY08 §2);
+    /// * rule of thumb: the same ζc, λc with u_c = ū_c = h_rms(ζc);
+    /// * effective medium: `u_c` is the effective gap `u_eff = (12 η σ_eff)^{1/3}` and the other
+    ///   fields are the critical junction's at the same pressure (at the 2-D threshold ½ when
+    ///   the critical junction is already sealed); `Sealed` exactly when the contact fraction
+    ///   `A(q1/q0)/A0` ≥ ½.
     pub fn critical_junction(&self, s: f64) -> Junction {
         match self {
+            ContactPath::RuleOfThumb(c) => c.rule_of_thumb_junction(s),
             ContactPath::Exact(c) => c.critical_junction(s),
             ContactPath::Table(t) => t.critical_junction(s),
+            ContactPath::EffectiveMedium(t) => {
+                let u_eff = t.effective_gap(s);
+                if u_eff.is_nan() || u_eff <= 0.0 {
+                    return Junction::Sealed;
+                }
+                let reference = match t.junctions().critical_junction(s) {
+                    Junction::Leaking(j) => Some(j),
+                    Junction::Sealed => t
+                        .junctions()
+                        .exact()
+                        .critical_junction_at_threshold(s, 0.5)
+                        .leaking()
+                        .copied(),
+                };
+                match reference {
+                    Some(j) => Junction::Leaking(CriticalJunction { u_c: u_eff, ..j }),
+                    // within rounding of the threshold: no height in double precision
+                    None => Junction::Sealed,
+                }
+            }
+        }
+    }
+
+    /// Conductance per unit width of the interface at `s` [m³/(Pa·s)]: `α u_c³/(12η)` for the
+    /// critical-junction levels (PY08 eq. 1), `σ_eff = u_eff³/(12η)` for the effective medium
+    /// (α does not enter); 0 when sealed.
+    pub fn conductance(&self, s: f64, shape_factor: f64, viscosity: f64) -> f64 {
+        self.channel_conductance(&self.critical_junction(s), shape_factor, viscosity)
+    }
+
+    /// [`Self::conductance`] of a channel this path has already evaluated.
+    pub fn channel_conductance(
+        &self,
+        junction: &Junction,
+        shape_factor: f64,
+        viscosity: f64,
+    ) -> f64 {
+        let alpha = match self {
+            ContactPath::EffectiveMedium(_) => 1.0,
+            _ => shape_factor,
+        };
+        match junction {
+            Junction::Leaking(j) => alpha * j.u_c.powi(3) / (12.0 * viscosity),
+            Junction::Sealed => 0.0,
         }
     }
 }
 
 impl StaticSolver {
-    /// Prepares the solver; with [`Fidelity::Table`] this builds the contact table.
+    /// Prepares the solver (builds the level's table, if it has one).
     pub fn new(problem: StaticProblem, fidelity: Fidelity) -> Self {
         let path = ContactPath::new(&problem.spectrum, problem.contact, fidelity);
-        StaticSolver {
-            problem,
-            path,
-            fidelity,
-        }
+        StaticSolver { problem, path }
+    }
+
+    /// A solver on an already prepared path (built for the same spectrum and contact settings).
+    pub fn with_path(problem: StaticProblem, path: ContactPath) -> Self {
+        StaticSolver { problem, path }
     }
 
     pub fn problem(&self) -> &StaticProblem {
         &self.problem
     }
 
-    /// The junction and leak rate at nominal pressure `p0` [Pa] (> 0).
+    /// The junction and leak rate at nominal pressure `p0` [Pa] (> 0):
+    /// `Q̇ = (L_y/L_x) σ ΔP` with σ the path's [`ContactPath::conductance`].
     pub fn evaluate(&self, p0: f64) -> LeakPoint {
-        let s = p0 / self.problem.material.effective_modulus();
-        if self.fidelity == Fidelity::EffectiveMedium {
-            return self.evaluate_effective_medium(p0, s);
-        }
+        let pb = &self.problem;
+        let s = p0 / pb.material.effective_modulus();
         let junction = self.path.critical_junction(s);
-        let pb = &self.problem;
-        let leak_rate = match junction {
-            Junction::Leaking(j) => leak_rate(
-                j.u_c,
-                &pb.fluid,
-                pb.seal.width,
-                pb.seal.length,
-                pb.shape_factor,
-            ),
-            Junction::Sealed => 0.0,
-        };
-        LeakPoint {
-            nominal_pressure: p0,
-            junction,
-            leak_rate,
-        }
-    }
-
-    /// The effective-medium point (DESIGN §3.3): `Q̇ = (L_y/L_x) σ_eff ΔP`, σ_eff by Bruggeman
-    /// over P(u) (the shape factor α of the critical junction does not enter).
-    fn evaluate_effective_medium(&self, p0: f64, s: f64) -> LeakPoint {
-        let pb = &self.problem;
-        let em = EffectiveMedium::persson(self.path.exact(), s, EffectiveMediumSettings::default());
-        let sealed = LeakPoint {
-            nominal_pressure: p0,
-            junction: Junction::Sealed,
-            leak_rate: 0.0,
-        };
-        if em.sealed() {
-            return sealed;
-        }
-        let u_eff = em.effective_gap();
-        let reference = match self.path.critical_junction(s) {
-            Junction::Leaking(j) => Some(j),
-            Junction::Sealed => self
-                .path
-                .exact()
-                .critical_junction_at_threshold(s, 0.5)
-                .leaking()
-                .copied(),
-        };
-        let junction = match reference {
-            Some(j) => CriticalJunction { u_c: u_eff, ..j },
-            // within rounding of the threshold: the channel has no height in double precision
-            None => return sealed,
-        };
         let leak_rate = (pb.seal.length / pb.seal.width)
-            * em.conductance(pb.fluid.viscosity)
+            * self
+                .path
+                .channel_conductance(&junction, pb.shape_factor, pb.fluid.viscosity)
             * pb.fluid.pressure_difference;
         LeakPoint {
             nominal_pressure: p0,
-            junction: Junction::Leaking(junction),
+            junction,
             leak_rate,
         }
     }

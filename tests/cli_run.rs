@@ -404,9 +404,9 @@ fn bad_scenarios_exit_2_and_write_nothing() {
         ),
         (
             "fidelity = \"critical-junction\"",
-            "fidelity = \"effective-medium\"",
+            "fidelity = \"fast\"",
             &[
-                "s.toml:46: simulation.fidelity: the fidelity level \"effective-medium\" is not available yet",
+                "s.toml:46: simulation.fidelity: must be one of \"rule-of-thumb\", \"critical-junction\"",
             ],
         ),
         (
@@ -451,7 +451,7 @@ fn bad_scenarios_exit_2_and_write_nothing() {
     out.run_rejects(
         &scenario,
         &["--fidelity", "numerical"],
-        &["not available yet"],
+        &["the numerical level is a reference for `sealsim tradeoff`"],
     );
     out.run_rejects(
         &scenario,

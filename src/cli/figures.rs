@@ -1,13 +1,14 @@
 //! `sealsim figures`: the critical constriction and leak rate of groups of scenarios over a
 //! pressure sweep, as one CSV and a set of log–log SVG charts per group (PY08 §3 figures).
 
-use super::leak::{FidelityArg, print_warnings};
+use super::leak::print_warnings;
 use super::{CliError, write_output};
 use crate::contact::Junction;
-use crate::leak::{LeakPoint, StaticSolver};
+use crate::leak::{Fidelity, LeakPoint, StaticSolver};
 use crate::report::csv::scenario_leak_table;
 use crate::report::plot::{LogLogChart, Series};
 use crate::scenario::figure_set::{FigureGroup, FigureSet, PlotKind, output_paths};
+use crate::scenario::life::parse_fidelity;
 use clap::Args;
 use std::path::PathBuf;
 
@@ -22,9 +23,9 @@ pub struct FiguresArgs {
     #[arg(long, value_name = "DIR")]
     pub out_dir: PathBuf,
 
-    /// Exact quadrature at every pressure, or interpolation in a contact table built once.
-    #[arg(long, value_enum, default_value_t = FidelityArg::Table)]
-    pub fidelity: FidelityArg,
+    /// Fidelity level: rule-of-thumb, critical-junction (= table), exact, effective-medium.
+    #[arg(long, value_name = "LEVEL", value_parser = parse_fidelity, default_value = "critical-junction")]
+    pub fidelity: Fidelity,
 }
 
 /// The results of one scenario of a group.
@@ -42,7 +43,7 @@ pub fn run(args: FiguresArgs) -> Result<(), CliError> {
             .scenarios
             .iter()
             .map(|sc| {
-                let solver = StaticSolver::new(sc.problem.clone(), args.fidelity.into());
+                let solver = StaticSolver::new(sc.problem.clone(), args.fidelity);
                 let points: Vec<LeakPoint> =
                     set.pressures.iter().map(|&p| solver.evaluate(p)).collect();
                 print_warnings(

@@ -5,8 +5,9 @@ use crate::leak::{Fidelity, LeakPoint, StaticSolver, Warning};
 use crate::numerics::log_spaced;
 use crate::report::csv::leak_table;
 use crate::scenario::Scenario;
+use crate::scenario::life::parse_fidelity;
 use crate::units::{self, Dimension};
-use clap::{Args, ValueEnum};
+use clap::Args;
 use std::mem::discriminant;
 use std::path::PathBuf;
 
@@ -22,7 +23,8 @@ const MAX_SWEEP_POINTS: i64 = 1_000_000;
     Output columns: nominal_pressure_Pa, zeta_c, lambda_c_m, u_c_m, ubar_c_m, hrms_c_m, \
     leak_rate_m3_per_s, state (leaking|sealed); lambda_c = 2π/(zeta_c q0).\n\
     With --fidelity effective-medium, u_c_m is the effective gap (12 η σ_eff)^(1/3) and the other \
-    junction columns are the critical junction's at the same pressure."
+    junction columns are the critical junction's at the same pressure; with rule-of-thumb, \
+    u_c_m = ubar_c_m = hrms_c_m (the level computes no separation)."
 )]
 pub struct LeakArgs {
     /// Scenario file (TOML).
@@ -41,36 +43,14 @@ pub struct LeakArgs {
     #[arg(long, value_name = "N", requires = "sweep", value_parser = clap::value_parser!(u32).range(2..=MAX_SWEEP_POINTS))]
     pub points: Option<u32>,
 
-    /// Exact quadrature at every pressure, interpolation in a contact table built once, or
-    /// the Bruggeman effective medium.
-    #[arg(long, value_enum, default_value_t = FidelityArg::Table)]
-    pub fidelity: FidelityArg,
+    /// Fidelity level: rule-of-thumb, critical-junction (= table), exact, effective-medium
+    /// [default: the scenario's simulation.fidelity, else critical-junction].
+    #[arg(long, value_name = "LEVEL", value_parser = parse_fidelity)]
+    pub fidelity: Option<Fidelity>,
 
     /// Write the CSV to FILE (atomically) instead of standard output.
     #[arg(short, long, value_name = "FILE")]
     pub output: Option<PathBuf>,
-}
-
-/// `--fidelity` values.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum FidelityArg {
-    /// Quadrature at every pressure.
-    Exact,
-    /// Contact-table interpolation.
-    Table,
-    /// Bruggeman effective medium over the separation distribution P(u) (DESIGN §3.3); u_c_m
-    /// is then the effective gap (12 η σ_eff)^{1/3}.
-    EffectiveMedium,
-}
-
-impl From<FidelityArg> for Fidelity {
-    fn from(f: FidelityArg) -> Self {
-        match f {
-            FidelityArg::Exact => Fidelity::Exact,
-            FidelityArg::Table => Fidelity::Table,
-            FidelityArg::EffectiveMedium => Fidelity::EffectiveMedium,
-        }
-    }
 }
 
 /// `--sweep A..B`: pressures in Pa with `0 < from < to`.
@@ -126,7 +106,10 @@ pub fn run(args: LeakArgs) -> Result<(), CliError> {
         (None, Some(sweep)) => sweep.pressures(args.points.unwrap_or(DEFAULT_SWEEP_POINTS)),
         (None, None) => vec![scenario.problem.seal.nominal_pressure],
     };
-    let solver = StaticSolver::new(scenario.problem, args.fidelity.into());
+    let solver = StaticSolver::new(
+        scenario.problem,
+        args.fidelity.unwrap_or(scenario.life.fidelity),
+    );
     let points: Vec<LeakPoint> = pressures.iter().map(|&p0| solver.evaluate(p0)).collect();
     let csv = leak_table(&points)?;
     print_warnings(None, points.iter().flat_map(|p| solver.warnings(p)));

@@ -268,12 +268,38 @@ impl SeparationDistribution {
             hi = lo;
             lo -= 10.0_f64.ln();
         }
-        while hi - lo > 1e-12 {
-            let mid = 0.5 * (lo + hi);
-            if residual(mid.exp()) < 0.0 {
-                lo = mid;
+        // Illinois (modified regula falsi) in ln g: the residual is smooth and monotone, so it
+        // converges superlinearly — ≈ 10 evaluations instead of bisection's 40.
+        let (mut f_lo, mut f_hi) = (residual(lo.exp()), residual(hi.exp()));
+        let mut side = 0i8;
+        let mut last = f64::NAN;
+        for _ in 0..200 {
+            let mut x = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+            if !(x > lo && x < hi) {
+                x = 0.5 * (lo + hi);
+            }
+            // successive estimates agree to 1e-12 in ln g (relative in g), or the bracket is
+            // that narrow
+            if (x - last).abs() <= 1e-12 || hi - lo <= 1e-12 {
+                return x.exp();
+            }
+            last = x;
+            let fx = residual(x.exp());
+            if fx == 0.0 {
+                return x.exp();
+            }
+            if fx < 0.0 {
+                (lo, f_lo) = (x, fx);
+                if side == -1 {
+                    f_hi *= 0.5;
+                }
+                side = -1;
             } else {
-                hi = mid;
+                (hi, f_hi) = (x, fx);
+                if side == 1 {
+                    f_lo *= 0.5;
+                }
+                side = 1;
             }
         }
         (0.5 * (lo + hi)).exp()

@@ -19,7 +19,7 @@ pub mod separation;
 pub mod table;
 
 pub use effective_medium::{EffectiveMedium, EffectiveMediumSettings, SeparationDistribution};
-pub use table::{ContactTable, TableSettings};
+pub use table::{ContactTable, EffectiveMediumTable, TableSettings};
 
 use crate::numerics::quadrature::gauss_legendre;
 use crate::numerics::special::{erf, erf_inv};
@@ -338,6 +338,21 @@ impl PerssonContact {
             return Junction::Sealed;
         }
         Junction::Leaking(self.junction_from(ln_a, u_c, ubar_c))
+    }
+
+    /// The rule-of-thumb junction (DESIGN §4, PY08 §5 notes that u1(ζc) and h_rms(ζc) are
+    /// close): ζc and λc as in [`Self::critical_junction`], and `u_c ≈ h_rms(ζc)` (PY08 eq. 4),
+    /// all closed forms — no separation quadrature. This level does not compute ū(ζc) either:
+    /// `ubar_c` carries the same h_rms(ζc).
+    pub fn rule_of_thumb_junction(&self, s: f64) -> Junction {
+        let Some(ln_a) = self.critical_ln_q(s) else {
+            return Junction::Sealed;
+        };
+        let h = self.spectrum.rms_roughness_above(ln_a.exp());
+        if h.is_nan() || h <= 0.0 {
+            return Junction::Sealed;
+        }
+        Junction::Leaking(self.junction_from(ln_a, h, h))
     }
 
     /// The critical junction at reduced pressure `s` for an arbitrary percolation threshold

@@ -15,7 +15,11 @@ use rustfft::{Fft, FftPlanner};
 /// Signed frequency index of position `i` on an `n`-point periodic axis: `i` for `i ≤ n/2`,
 /// else `i − n`.
 pub fn signed_index(i: usize, n: usize) -> i64 {
-    if i <= n / 2 { i as i64 } else { i as i64 - n as i64 }
+    if i <= n / 2 {
+        i as i64
+    } else {
+        i as i64 - n as i64
+    }
 }
 
 /// Plans and scratch space for 2-D real transforms of one grid size.
@@ -33,7 +37,7 @@ pub struct Fft2 {
 impl Fft2 {
     /// Plans for an `n × n` grid (`n ≥ 2`, even; powers of two are fastest).
     pub fn new(n: usize) -> Self {
-        assert!(n >= 2 && n % 2 == 0, "grid size must be even and ≥ 2");
+        assert!(n >= 2 && n.is_multiple_of(2), "grid size must be even and ≥ 2");
         let mut real = RealFftPlanner::<f64>::new();
         let mut complex = FftPlanner::<f64>::new();
         let h = n / 2 + 1;

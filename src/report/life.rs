@@ -10,7 +10,6 @@ use super::ReportError;
 use super::csv::{csv_error, finish, number};
 use super::materials::human;
 use super::plot::{LogLogChart, Series};
-use crate::leak::Fidelity;
 use crate::material::shift::{DAY, YEAR};
 use crate::material::{Material, Status};
 use crate::seal::SealGeometry;
@@ -130,7 +129,7 @@ impl Summary {
             material_status: problem.material.status.as_str().to_owned(),
             seal: seal_kind(&problem.geometry).to_owned(),
             loading: loading_name(problem.loading).to_owned(),
-            fidelity: fidelity_name(problem.fidelity).to_owned(),
+            fidelity: problem.fidelity.name().to_owned(),
             time_to_failure_s: result.failure.map(|f| f.time),
             failure_mode: failure_mode(result).to_owned(),
             initial_leak_rate_m3_per_s: result.initial_leak_rate(),
@@ -199,15 +198,6 @@ fn loading_name(loading: Loading) -> &'static str {
     match loading {
         Loading::Displacement => "displacement",
         Loading::Force => "force",
-    }
-}
-
-/// The scenario name of a fidelity (`critical-junction` is the contact table).
-pub fn fidelity_name(fidelity: Fidelity) -> &'static str {
-    match fidelity {
-        Fidelity::Table => "critical-junction",
-        Fidelity::Exact => "exact",
-        Fidelity::EffectiveMedium => "effective-medium",
     }
 }
 

@@ -536,19 +536,25 @@ impl Source<'_> {
     }
 }
 
-/// A fidelity name of the ladder (DESIGN §4): `critical-junction` (= `table`, the contact
-/// table) or `exact` are available; the other levels are refused with a clear message.
+/// A fidelity name of the ladder (DESIGN §4): `rule-of-thumb`, `critical-junction` (= `table`,
+/// the contact table), `exact` (critical junction by quadrature), `effective-medium`.
 pub fn parse_fidelity(name: &str) -> Result<Fidelity, String> {
     match name {
-        "critical-junction" | "table" => Ok(Fidelity::Table),
-        "exact" => Ok(Fidelity::Exact),
-        "rule-of-thumb" | "effective-medium" | "numerical" => Err(format!(
-            "the fidelity level {name:?} is not available yet (DESIGN §4 fidelity ladder); use \
-             \"critical-junction\" (the default, contact table) or \"exact\""
-        )),
-        other => Err(format!(
-            "must be \"critical-junction\" (= \"table\"), or \"exact\", got {other:?}"
-        )),
+        "table" => Ok(Fidelity::Table),
+        "numerical" => Err(
+            "the numerical level is a reference for `sealsim tradeoff`, too slow for a life run \
+             or a pressure sweep; use rule-of-thumb, critical-junction, exact or effective-medium"
+                .to_string(),
+        ),
+        other => Fidelity::ALL
+            .into_iter()
+            .find(|f| f.name() == other)
+            .ok_or_else(|| {
+                format!(
+                    "must be one of \"rule-of-thumb\", \"critical-junction\" (= \"table\"), \
+                     \"exact\", \"effective-medium\", got {other:?}"
+                )
+            }),
     }
 }
 
@@ -996,6 +1002,10 @@ squeeze = 0.2
             }
         );
         assert_eq!(s.life.fidelity, Fidelity::Exact);
+        for level in Fidelity::ALL {
+            let text = with(&format!("[simulation]\nfidelity = \"{}\"\n", level.name()));
+            assert_eq!(load(&text).unwrap().life.fidelity, level);
+        }
         for name in ["critical-junction", "table"] {
             let s = load(&with(&format!("[simulation]\nfidelity = \"{name}\"\n"))).unwrap();
             assert_eq!(s.life.fidelity, Fidelity::Table);
@@ -1022,14 +1032,8 @@ squeeze = 0.2
                 ":18: simulation.points_per_decade: must be at most 1000",
             ),
             (
-                "fidelity = \"effective-medium\"",
-                ":18: simulation.fidelity: the fidelity level \"effective-medium\" is not available yet",
-            ),
-            ("fidelity = \"numerical\"", "is not available yet"),
-            ("fidelity = \"rule-of-thumb\"", "is not available yet"),
-            (
                 "fidelity = \"fast\"",
-                ":18: simulation.fidelity: must be \"critical-junction\"",
+                ":18: simulation.fidelity: must be one of \"rule-of-thumb\", \"critical-junction\"",
             ),
         ];
         for (line, expected) in cases {

@@ -741,10 +741,9 @@ impl<'a> Simulator<'a> {
         };
         let retained = profile.force_per_length() / self.initial_profile.force_per_length();
         let e_star = self.asperity_modulus(state) / (1.0 - p.material.poisson_ratio.powi(2));
-        let alpha_over_12eta = p.shape_factor / (12.0 * p.fluid.viscosity);
-        let conductance = |pressure: f64| match self.path.critical_junction(pressure / e_star) {
-            Junction::Leaking(j) => alpha_over_12eta * j.u_c.powi(3),
-            Junction::Sealed => 0.0,
+        let conductance = |pressure: f64| {
+            self.path
+                .conductance(pressure / e_star, p.shape_factor, p.fluid.viscosity)
         };
         let leak_rate = profile.series_leak_rate(
             p.geometry.sealing_length(),
