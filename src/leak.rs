@@ -4,6 +4,9 @@ use crate::contact::{
     ContactSettings, ContactTable, CriticalJunction, EffectiveMediumSettings, EffectiveMediumTable,
     Elastic, Junction, PerssonContact, TableSettings,
 };
+use crate::numerical::HeightMap;
+use crate::numerical::reference::NumericalSettings;
+use crate::numerical::table::NumericalTable;
 use crate::surface::Spectrum;
 use std::fmt;
 
@@ -42,15 +45,20 @@ pub enum Fidelity {
     /// [`crate::contact::effective_medium`]), tabulated once per surface
     /// ([`EffectiveMediumTable`]).
     EffectiveMedium,
+    /// The numerical reference (DESIGN §3.5, [`crate::numerical`]): BEM contact, percolation
+    /// and Reynolds flow on realisations of the surface (or on a measured height map),
+    /// tabulated against P0/E* at a few nodes ([`NumericalTable`]); seconds to minutes to build.
+    Numerical,
 }
 
 impl Fidelity {
     /// Every level, cheapest first.
-    pub const ALL: [Fidelity; 4] = [
+    pub const ALL: [Fidelity; 5] = [
         Fidelity::RuleOfThumb,
         Fidelity::Table,
         Fidelity::Exact,
         Fidelity::EffectiveMedium,
+        Fidelity::Numerical,
     ];
 
     /// The level's name in scenario files and on the command line.
@@ -60,6 +68,7 @@ impl Fidelity {
             Fidelity::Exact => "exact",
             Fidelity::Table => "critical-junction",
             Fidelity::EffectiveMedium => "effective-medium",
+            Fidelity::Numerical => "numerical",
         }
     }
 }
@@ -113,11 +122,19 @@ pub enum Warning {
         zeta_c: f64,
         zeta_1: f64,
     },
+    /// The numerical level resolved only `[q0, band·q0]` of a spectrum spanning
+    /// `spectrum_band = q1/q0`: its answer is for the band-limited surface.
+    BandLimited { band: f64, spectrum_band: f64 },
+    /// A node of the numerical level's table failed and was left out.
+    NumericalFailure {
+        reduced_pressure: f64,
+        message: String,
+    },
 }
 
 impl fmt::Display for Warning {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match *self {
+        match self {
             Warning::PressureRatio {
                 nominal_pressure,
                 ratio,
@@ -151,6 +168,23 @@ impl fmt::Display for Warning {
                 "at P0 = {nominal_pressure:.4e} Pa, ζc = {zeta_c:.4e} is within a factor 2 of q1/q0 = \
                  {zeta_1:.4e}: the result depends on the short-wavelength cut-off q1"
             ),
+            Warning::BandLimited {
+                band,
+                spectrum_band,
+            } => write!(
+                f,
+                "the numerical level resolves q1/q0 = {band} of a spectrum spanning {spectrum_band:.3e}: \
+                 its leak rate is that of the band-limited surface (compare levels on the same band \
+                 with `sealsim tradeoff`, or give a measured height_map)"
+            ),
+            Warning::NumericalFailure {
+                reduced_pressure,
+                message,
+            } => write!(
+                f,
+                "the numerical level failed at P0/E* = {reduced_pressure:.4e} and left that node out: \
+                 {message}"
+            ),
         }
     }
 }
@@ -177,23 +211,59 @@ pub enum ContactPath {
     Exact(PerssonContact),
     Table(ContactTable),
     EffectiveMedium(Box<EffectiveMediumTable>),
+    Numerical {
+        table: NumericalTable,
+        /// The critical-junction table of the same spectrum (ζc, λc of the channels).
+        junctions: Box<ContactTable>,
+    },
+}
+
+/// How the levels that have one build their table, and where the numerical level gets its
+/// surfaces.
+#[derive(Debug, Clone, Default)]
+pub struct PathOptions<'a> {
+    /// Spacing of the critical-junction table (the effective-medium table uses ⅔ of its
+    /// points per decade, over [`TableSettings::effective_medium`]'s range).
+    pub table: TableSettings,
+    /// Grid, band, realisations and seed of the numerical level.
+    pub numerical: NumericalSettings,
+    /// A measured surface: the numerical level's single realisation (the analytic levels use
+    /// its estimated spectrum).
+    pub height_map: Option<&'a HeightMap>,
+    /// Reduced pressures P0/E* at which the numerical level solves (a pressure sweep: exactly
+    /// the pressures asked for); `None`: its default nodes, for a life run.
+    pub numerical_nodes: Option<Vec<f64>>,
 }
 
 impl ContactPath {
-    /// Builds the path for `spectrum` (critical-junction table ≈ 3 ms; effective-medium table
-    /// ≈ 0.3 s).
+    /// Builds the path for `spectrum` with the default options (critical-junction table ≈ 3 ms;
+    /// effective-medium table ≈ 0.5 s; the numerical level: an ensemble at 10 pressures,
+    /// ≈ 10–30 s). See [`Self::build`].
     pub fn new(spectrum: &Spectrum, settings: ContactSettings, fidelity: Fidelity) -> Self {
-        Self::with_tables(spectrum, settings, fidelity, TableSettings::default())
+        Self::build(
+            spectrum,
+            settings,
+            fidelity,
+            &PathOptions::default(),
+            &mut |_, _| {},
+        )
     }
 
-    /// As [`Self::new`] with a given table spacing (for the speed/accuracy trade).
-    pub fn with_tables(
+    /// Builds the path; `progress(done, total)` reports the numerical level's realisations.
+    ///
+    /// The numerical level cannot fail on validated input except by a solver not converging
+    /// within its (generous) iteration limit; should a node fail, it is left out of the table
+    /// and counted in [`Self::failed_nodes`] (a warning for the caller to print), never
+    /// silently.
+    pub fn build(
         spectrum: &Spectrum,
         settings: ContactSettings,
         fidelity: Fidelity,
-        table: TableSettings,
+        options: &PathOptions<'_>,
+        progress: &mut dyn FnMut(usize, usize),
     ) -> Self {
         let exact = PerssonContact::new(spectrum.clone(), settings);
+        let table = options.table;
         match fidelity {
             Fidelity::RuleOfThumb => ContactPath::RuleOfThumb(exact),
             Fidelity::Exact => ContactPath::Exact(exact),
@@ -209,7 +279,46 @@ impl ContactPath {
                     EffectiveMediumSettings::default(),
                 )))
             }
+            Fidelity::Numerical => {
+                let s_seal = exact.sealing_reduced_pressure();
+                let numerical = NumericalTable::for_surface(
+                    spectrum,
+                    options.height_map,
+                    options.numerical_nodes.as_deref(),
+                    s_seal,
+                    &options.numerical,
+                    progress,
+                );
+                ContactPath::Numerical {
+                    table: numerical,
+                    junctions: Box::new(ContactTable::build(exact, table)),
+                }
+            }
         }
+    }
+
+    /// Caveats of the path itself (not of one pressure): the numerical level resolves only a
+    /// band of a synthetic spectrum, or a node of its table failed.
+    pub fn warnings(&self, options: &PathOptions<'_>) -> Vec<Warning> {
+        let ContactPath::Numerical { table, junctions } = self else {
+            return Vec::new();
+        };
+        let mut w = Vec::new();
+        let sp = junctions.exact().spectrum();
+        let spectrum_band = sp.q1() / sp.q0();
+        if options.height_map.is_none() && spectrum_band > options.numerical.band * (1.0 + 1e-9) {
+            w.push(Warning::BandLimited {
+                band: options.numerical.band,
+                spectrum_band,
+            });
+        }
+        for (s, e) in table.failures() {
+            w.push(Warning::NumericalFailure {
+                reduced_pressure: *s,
+                message: e.to_string(),
+            });
+        }
+        w
     }
 
     /// The level this path evaluates.
@@ -219,6 +328,7 @@ impl ContactPath {
             ContactPath::Exact(_) => Fidelity::Exact,
             ContactPath::Table(_) => Fidelity::Table,
             ContactPath::EffectiveMedium(_) => Fidelity::EffectiveMedium,
+            ContactPath::Numerical { .. } => Fidelity::Numerical,
         }
     }
 
@@ -228,6 +338,7 @@ impl ContactPath {
             ContactPath::RuleOfThumb(c) | ContactPath::Exact(c) => c,
             ContactPath::Table(t) => t.exact(),
             ContactPath::EffectiveMedium(t) => t.junctions().exact(),
+            ContactPath::Numerical { junctions, .. } => junctions.exact(),
         }
     }
 
@@ -244,25 +355,50 @@ impl ContactPath {
             ContactPath::Exact(c) => c.critical_junction(s),
             ContactPath::Table(t) => t.critical_junction(s),
             ContactPath::EffectiveMedium(t) => {
-                let u_eff = t.effective_gap(s);
-                if u_eff.is_nan() || u_eff <= 0.0 {
-                    return Junction::Sealed;
-                }
-                let reference = match t.junctions().critical_junction(s) {
-                    Junction::Leaking(j) => Some(j),
-                    Junction::Sealed => t
-                        .junctions()
-                        .exact()
-                        .critical_junction_at_threshold(s, 0.5)
-                        .leaking()
-                        .copied(),
-                };
-                match reference {
-                    Some(j) => Junction::Leaking(CriticalJunction { u_c: u_eff, ..j }),
-                    // within rounding of the threshold: no height in double precision
-                    None => Junction::Sealed,
-                }
+                Self::gap_channel(t.effective_gap(s), t.junctions(), s, 0.5)
             }
+            ContactPath::Numerical { table, junctions } => {
+                let a_c = junctions.exact().settings().percolation_threshold;
+                Self::gap_channel(table.effective_gap(s), junctions, s, a_c.max(0.5))
+            }
+        }
+    }
+
+    /// A channel of effective gap `u_eff` with the critical junction's ζc and λc at `s` (at the
+    /// percolation `threshold` when the critical junction is already sealed there).
+    fn gap_channel(u_eff: f64, junctions: &ContactTable, s: f64, threshold: f64) -> Junction {
+        if u_eff.is_nan() || u_eff <= 0.0 {
+            return Junction::Sealed;
+        }
+        let reference = match junctions.critical_junction(s) {
+            Junction::Leaking(j) => Some(j),
+            Junction::Sealed => junctions
+                .exact()
+                .critical_junction_at_threshold(s, threshold)
+                .leaking()
+                .copied(),
+        };
+        match reference {
+            Some(j) => Junction::Leaking(CriticalJunction { u_c: u_eff, ..j }),
+            // within rounding of the threshold (or beyond every threshold): ζc and λc are
+            // not defined; the gap itself is reported through the conductance only
+            None => Junction::Leaking(CriticalJunction {
+                u_c: u_eff,
+                ..Self::last_channel(junctions)
+            }),
+        }
+    }
+
+    /// The channel at the shortest wavelength of the spectrum (ζc = q1/q0), for an effective
+    /// gap that outlives every critical junction.
+    fn last_channel(junctions: &ContactTable) -> CriticalJunction {
+        let sp = junctions.exact().spectrum();
+        CriticalJunction {
+            zeta_c: sp.q1() / sp.q0(),
+            lambda_c: 2.0 * std::f64::consts::PI / sp.q1(),
+            u_c: 0.0,
+            ubar_c: 0.0,
+            hrms_c: 0.0,
         }
     }
 
@@ -281,7 +417,7 @@ impl ContactPath {
         viscosity: f64,
     ) -> f64 {
         let alpha = match self {
-            ContactPath::EffectiveMedium(_) => 1.0,
+            ContactPath::EffectiveMedium(_) | ContactPath::Numerical { .. } => 1.0,
             _ => shape_factor,
         };
         match junction {
@@ -296,6 +432,11 @@ impl StaticSolver {
     pub fn new(problem: StaticProblem, fidelity: Fidelity) -> Self {
         let path = ContactPath::new(&problem.spectrum, problem.contact, fidelity);
         StaticSolver { problem, path }
+    }
+
+    /// The path the solver evaluates.
+    pub fn path(&self) -> &ContactPath {
+        &self.path
     }
 
     /// A solver on an already prepared path (built for the same spectrum and contact settings).

@@ -39,6 +39,7 @@
 pub mod cli;
 pub mod clogging;
 pub mod contact;
+pub mod dynamic;
 pub mod leak;
 pub mod material;
 pub mod numerical;
@@ -48,4 +49,5 @@ pub mod scenario;
 pub mod seal;
 pub mod simulate;
 pub mod surface;
+pub mod tradeoff;
 pub mod units;

@@ -450,11 +450,6 @@ fn bad_scenarios_exit_2_and_write_nothing() {
     let scenario = nbr_with(&out, "squeeze", "squeeze");
     out.run_rejects(
         &scenario,
-        &["--fidelity", "numerical"],
-        &["the numerical level is a reference for `sealsim tradeoff`"],
-    );
-    out.run_rejects(
-        &scenario,
         &["--fidelity", "fast"],
         &["invalid value 'fast'"],
     );

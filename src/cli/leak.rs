@@ -1,7 +1,7 @@
 //! `sealsim leak`: leak rate of a flat seal at one or more nominal pressures, as CSV.
 
 use super::{CliError, write_output};
-use crate::leak::{Fidelity, LeakPoint, StaticSolver, Warning};
+use crate::leak::{ContactPath, Fidelity, LeakPoint, PathOptions, StaticSolver, Warning};
 use crate::numerics::log_spaced;
 use crate::report::csv::leak_table;
 use crate::scenario::Scenario;
@@ -106,13 +106,33 @@ pub fn run(args: LeakArgs) -> Result<(), CliError> {
         (None, Some(sweep)) => sweep.pressures(args.points.unwrap_or(DEFAULT_SWEEP_POINTS)),
         (None, None) => vec![scenario.problem.seal.nominal_pressure],
     };
-    let solver = StaticSolver::new(
-        scenario.problem,
-        args.fidelity.unwrap_or(scenario.life.fidelity),
+    let fidelity = args.fidelity.unwrap_or(scenario.life.fidelity);
+    let pb = &scenario.problem;
+    let e_star = pb.material.effective_modulus();
+    let options = PathOptions {
+        height_map: scenario.height_map.as_ref(),
+        numerical: scenario.numerical.clone(),
+        // the numerical level solves exactly at the pressures asked for
+        numerical_nodes: Some(pressures.iter().map(|p| p / e_star).collect()),
+        ..PathOptions::default()
+    };
+    let path = ContactPath::build(
+        &pb.spectrum,
+        pb.contact,
+        fidelity,
+        &options,
+        &mut super::progress_bar("numerical level"),
     );
+    let path_warnings = path.warnings(&options);
+    let solver = StaticSolver::with_path(scenario.problem.clone(), path);
     let points: Vec<LeakPoint> = pressures.iter().map(|&p0| solver.evaluate(p0)).collect();
     let csv = leak_table(&points)?;
-    print_warnings(None, points.iter().flat_map(|p| solver.warnings(p)));
+    print_warnings(
+        None,
+        path_warnings
+            .into_iter()
+            .chain(points.iter().flat_map(|p| solver.warnings(p))),
+    );
     write_output(args.output.as_deref(), csv.as_bytes())
 }
 

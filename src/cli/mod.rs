@@ -11,6 +11,7 @@ pub mod fit_prony;
 pub mod leak;
 pub mod materials;
 pub mod run;
+pub mod tradeoff;
 
 use crate::report::{self, ReportError};
 use crate::scenario::ScenarioError;
@@ -18,6 +19,27 @@ use clap::{Parser, Subcommand};
 use std::fmt;
 use std::io::{self, Write};
 use std::path::Path;
+
+/// A progress reporter for long work (the numerical level): an indicatif bar on stderr, which
+/// indicatif hides when stderr is not a terminal. `report(done, total)` as the physics calls it.
+pub(crate) fn progress_bar(what: &str) -> impl FnMut(usize, usize) {
+    let bar = indicatif::ProgressBar::new(0);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template(
+            "{msg} [{bar:30}] {pos}/{len} ({elapsed}, ~{eta} left)",
+        )
+        .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar())
+        .progress_chars("=> "),
+    );
+    bar.set_message(what.to_owned());
+    move |done: usize, total: usize| {
+        bar.set_length(total as u64);
+        bar.set_position(done as u64);
+        if done >= total {
+            bar.finish_and_clear();
+        }
+    }
+}
 
 /// Exit status for bad input, the same as clap's for usage errors.
 pub const EXIT_BAD_INPUT: i32 = 2;
@@ -42,6 +64,9 @@ pub enum Command {
     /// Leak rate at one or more nominal pressures, as CSV (an O-ring: its central strip right
     /// after installation).
     Leak(leak::LeakArgs),
+    /// Speed against accuracy: the scenario at every fidelity level and a ladder of numerical
+    /// settings, with wall time and error against the most accurate setting.
+    Tradeoff(tradeoff::TradeoffArgs),
     /// Data and SVG charts of groups of scenarios over a pressure sweep (PY08 §3 figures).
     Figures(figures::FiguresArgs),
     /// Prony series fitted to relaxation or DMA data, written as a material TOML file.
@@ -122,6 +147,7 @@ pub fn run(command: Command) -> Result<(), CliError> {
         Command::Run(args) => run::run(args),
         Command::Compare(args) => compare::run(args),
         Command::Leak(args) => leak::run(args),
+        Command::Tradeoff(args) => tradeoff::run(args),
         Command::Figures(args) => figures::run(args),
         Command::FitProny(args) => fit_prony::run(args),
         Command::Materials(args) => materials::run(args),

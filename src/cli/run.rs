@@ -8,12 +8,13 @@
 
 use super::{CliError, write_output};
 use crate::leak::Fidelity;
+use crate::leak::{ContactPath, PathOptions};
 use crate::report::life::{
     Summary, has_positive_leak_rate, history_table, human_summary, leak_rate_chart,
 };
 use crate::scenario::Scenario;
 use crate::scenario::life::parse_fidelity;
-use crate::simulate::{LifeResult, simulate};
+use crate::simulate::{LifeResult, Simulator};
 use clap::Args;
 use std::path::PathBuf;
 
@@ -44,7 +45,8 @@ pub struct RunArgs {
     #[arg(long, value_name = "FILE.svg")]
     pub plot: Option<PathBuf>,
 
-    /// Override the scenario's simulation.fidelity: critical-junction (= table) or exact.
+    /// Override the scenario's simulation.fidelity: rule-of-thumb, critical-junction (= table),
+    /// exact or effective-medium.
     #[arg(long, value_name = "LEVEL", value_parser = parse_fidelity)]
     pub fidelity: Option<Fidelity>,
 }
@@ -55,7 +57,23 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
     if let Some(fidelity) = args.fidelity {
         scenario.life.fidelity = fidelity;
     }
-    let result = simulate(&scenario.life);
+    let options = PathOptions {
+        height_map: scenario.height_map.as_ref(),
+        numerical: scenario.numerical.clone(),
+        ..PathOptions::default()
+    };
+    let life = &scenario.life;
+    let path = ContactPath::build(
+        &life.spectrum,
+        life.contact,
+        life.fidelity,
+        &options,
+        &mut super::progress_bar("numerical level"),
+    );
+    for w in path.warnings(&options) {
+        eprintln!("warning: {w}");
+    }
+    let result = Simulator::with_path(life, path).run();
     let file = args.scenario.display().to_string();
 
     // Everything is rendered before anything is written.

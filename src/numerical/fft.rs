@@ -37,7 +37,10 @@ pub struct Fft2 {
 impl Fft2 {
     /// Plans for an `n × n` grid (`n ≥ 2`, even; powers of two are fastest).
     pub fn new(n: usize) -> Self {
-        assert!(n >= 2 && n.is_multiple_of(2), "grid size must be even and ≥ 2");
+        assert!(
+            n >= 2 && n.is_multiple_of(2),
+            "grid size must be even and ≥ 2"
+        );
         let mut real = RealFftPlanner::<f64>::new();
         let mut complex = FftPlanner::<f64>::new();
         let h = n / 2 + 1;

@@ -5,7 +5,14 @@
 //! It resolves only a band q1/q0 of a few hundred, so the analytic levels are compared with it on
 //! the same band-limited spectrum.
 
+pub mod bem;
 pub mod fft;
+pub mod flow;
+pub mod percolation;
+pub mod psd;
+pub mod reference;
+pub mod surface;
+pub mod table;
 
 /// A square periodic grid of heights: `n × n` samples `pixel` apart (m), row-major
 /// (`heights[iy * n + ix]`, x along the flow). Heights in m.

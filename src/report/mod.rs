@@ -7,6 +7,7 @@ pub mod life;
 pub mod material_toml;
 pub mod materials;
 pub mod plot;
+pub mod tradeoff;
 
 use std::fmt;
 use std::fs::{self, File, OpenOptions};

@@ -43,6 +43,18 @@ pub enum ScenarioError {
         line: usize,
         message: String,
     },
+    /// The height map named by `surface.height_map` was read but its contents are not a valid
+    /// grid of heights (or give no power spectrum).
+    HeightMapFormat {
+        /// The height map file, as resolved against the scenario's directory.
+        map: PathBuf,
+        /// 1-based line in the height map file, when the problem is on one line.
+        map_line: Option<usize>,
+        /// The scenario file and the line of its `height_map` key.
+        scenario: PathBuf,
+        line: usize,
+        message: String,
+    },
     /// The temperature history named by `environment.history` was read but its contents are
     /// invalid.
     HistoryFormat {
@@ -65,6 +77,7 @@ impl ScenarioError {
             ScenarioError::PsdRead { scenario, .. } => scenario,
             ScenarioError::PsdFormat { psd, .. } => psd,
             ScenarioError::HistoryFormat { history, .. } => history,
+            ScenarioError::HeightMapFormat { map, .. } => map,
         }
     }
 }
@@ -115,6 +128,23 @@ impl fmt::Display for ScenarioError {
                 write!(
                     f,
                     ": {message} (PSD file named by surface.psd_file at {}:{line})",
+                    scenario.display()
+                )
+            }
+            ScenarioError::HeightMapFormat {
+                map,
+                map_line,
+                scenario,
+                line,
+                message,
+            } => {
+                write!(f, "{}", map.display())?;
+                if let Some(l) = map_line {
+                    write!(f, ":{l}")?;
+                }
+                write!(
+                    f,
+                    ": surface.height_map: {message} (height map named at {}:{line})",
                     scenario.display()
                 )
             }

@@ -537,22 +537,18 @@ impl Source<'_> {
 }
 
 /// A fidelity name of the ladder (DESIGN §4): `rule-of-thumb`, `critical-junction` (= `table`,
-/// the contact table), `exact` (critical junction by quadrature), `effective-medium`.
+/// the contact table), `exact` (critical junction by quadrature), `effective-medium`,
+/// `numerical`.
 pub fn parse_fidelity(name: &str) -> Result<Fidelity, String> {
     match name {
         "table" => Ok(Fidelity::Table),
-        "numerical" => Err(
-            "the numerical level is a reference for `sealsim tradeoff`, too slow for a life run \
-             or a pressure sweep; use rule-of-thumb, critical-junction, exact or effective-medium"
-                .to_string(),
-        ),
         other => Fidelity::ALL
             .into_iter()
             .find(|f| f.name() == other)
             .ok_or_else(|| {
                 format!(
                     "must be one of \"rule-of-thumb\", \"critical-junction\" (= \"table\"), \
-                     \"exact\", \"effective-medium\", got {other:?}"
+                     \"exact\", \"effective-medium\", \"numerical\", got {other:?}"
                 )
             }),
     }

@@ -19,6 +19,7 @@ mod contamination;
 mod error;
 pub mod figure_set;
 pub mod fit_data;
+mod height_map;
 mod history;
 pub mod library;
 pub mod life;
@@ -32,6 +33,8 @@ pub use material::{PARAMETERS, load_material_file, material_from_str};
 
 use crate::leak::StaticProblem;
 use crate::material::Material;
+use crate::numerical::HeightMap;
+use crate::numerical::reference::NumericalSettings;
 use crate::simulate::LifeProblem;
 use error::Source;
 use raw::RawScenario;
@@ -54,11 +57,19 @@ pub struct Scenario {
     /// The seal-life problem (`sealsim run`): O-ring or flat seal, loading, environment,
     /// ageing, failure criteria and time grid; 16 strips across an O-ring's profile.
     pub life: LifeProblem,
+    /// The measured surface of `surface.height_map` (heights and pixel in m), for the numerical
+    /// level; `None` for a spectrum given by parameters or `psd_file`. When present,
+    /// `problem.spectrum` and `life.spectrum` are its PSD estimate
+    /// ([`crate::numerical::psd::estimate`], restricted to `q0`, `q1` if given).
+    pub height_map: Option<HeightMap>,
+    /// `[numerical]`: grid, band, realisations and seed of the numerical level (defaults:
+    /// [`NumericalSettings::default`]).
+    pub numerical: NumericalSettings,
 }
 
 impl Scenario {
-    /// Reads and validates the scenario file at `path` (a `psd_file` is resolved against its
-    /// directory).
+    /// Reads and validates the scenario file at `path` (a `psd_file` or `height_map` is
+    /// resolved against its directory).
     pub fn load(path: &Path) -> Result<Scenario, ScenarioError> {
         Scenario::from_str(&read(path)?, path)
     }
@@ -100,6 +111,8 @@ impl Scenario {
             material: validated.material,
             problem: validated.problem,
             life: validated.life,
+            height_map: validated.height_map,
+            numerical: validated.numerical,
         })
     }
 }

@@ -66,6 +66,7 @@ pub(super) struct RawScenario {
     pub ageing: Option<Spanned<RawScenarioAgeing>>,
     pub simulation: Option<Spanned<RawSimulation>>,
     pub contamination: Option<Spanned<RawContamination>>,
+    pub numerical: Option<Spanned<RawNumerical>>,
 }
 
 impl RawScenario {
@@ -81,6 +82,7 @@ impl RawScenario {
         "ageing",
         "simulation",
         "contamination",
+        "numerical",
     ];
 }
 
@@ -147,8 +149,9 @@ pub(super) struct RawMaterialFile {
     pub material: Spanned<RawMaterial>,
 }
 
-/// `[surface]`: either the self-affine parameters or `psd_file` (checked in validation, so
-/// that the message can explain the two options).
+/// `[surface]`: the self-affine parameters, `psd_file`, or `height_map` with its
+/// `pixel_size` and optional `height_unit` (which go together is checked in validation, so
+/// that the message can explain the options).
 #[derive(Debug, serde::Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct RawSurface {
@@ -158,6 +161,9 @@ pub(super) struct RawSurface {
     pub q1: Option<Quantity>,
     pub rolloff: Option<Quantity>,
     pub psd_file: Option<Spanned<String>>,
+    pub height_map: Option<Spanned<String>>,
+    pub pixel_size: Option<Quantity>,
+    pub height_unit: Option<Spanned<String>>,
 }
 
 /// `[fluid]`: Newtonian fluid and the pressure across the seal.
@@ -213,6 +219,16 @@ pub(super) struct RawScenarioAgeing {
     pub activation_energy: Option<Quantity>,
     pub rate: Option<Quantity>,
     pub reference_temperature: Option<Quantity>,
+}
+
+/// `[numerical]`: grid, band, realisations and seed of the numerical level (DESIGN §3.5).
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawNumerical {
+    pub band: Option<Quantity>,
+    pub pixels_per_wavelength: Option<Quantity>,
+    pub realisations: Option<Quantity>,
+    pub seed: Option<Quantity>,
 }
 
 /// `[simulation]`: the time grid and the fidelity of the life run.

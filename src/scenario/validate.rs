@@ -5,11 +5,15 @@
 //! number.
 
 use super::error::{ScenarioError, Source};
-use super::raw::{Quantity, RawFluid, RawModel, RawQuantity, RawScenario, RawSurface};
-use super::{psd, show};
+use super::raw::{
+    Quantity, RawFluid, RawModel, RawNumerical, RawQuantity, RawScenario, RawSurface,
+};
+use super::{height_map, psd, show};
 use crate::contact::ContactSettings;
 use crate::leak::{FlatSeal, Fluid, StaticProblem};
 use crate::material::Material;
+use crate::numerical::reference::NumericalSettings;
+use crate::numerical::{HeightMap, psd as map_psd};
 use crate::seal::{Profile, SealGeometry};
 use crate::simulate::LifeProblem;
 use crate::surface::Spectrum;
@@ -111,6 +115,16 @@ const ROLLOFF: Field = field(
     "1/m",
     Bound::Positive,
 );
+const PIXEL_SIZE: Field = field(
+    "surface.pixel_size",
+    Dimension::LENGTH,
+    "m",
+    Bound::Positive,
+);
+/// Key of the height map file, in messages.
+const HEIGHT_MAP: &str = "surface.height_map";
+/// Key of the height map's unit, in messages.
+const HEIGHT_UNIT: &str = "surface.height_unit";
 const VISCOSITY: Field = field(
     "fluid.viscosity",
     Dimension::VISCOSITY,
@@ -142,6 +156,31 @@ const GAMMA: Field = field(
     Bound::Closed(0.0, 1.0),
 );
 
+const NUMERICAL_BAND: Field = field(
+    "numerical.band",
+    Dimension::DIMENSIONLESS,
+    "",
+    Bound::Closed(4.0, 512.0),
+);
+const NUMERICAL_PIXELS: Field = field(
+    "numerical.pixels_per_wavelength",
+    Dimension::DIMENSIONLESS,
+    "",
+    Bound::Closed(2.0, 64.0),
+);
+const NUMERICAL_REALISATIONS: Field = field(
+    "numerical.realisations",
+    Dimension::DIMENSIONLESS,
+    "",
+    Bound::Closed(1.0, 1000.0),
+);
+const NUMERICAL_SEED: Field = field(
+    "numerical.seed",
+    Dimension::DIMENSIONLESS,
+    "",
+    Bound::Closed(0.0, 9_007_199_254_740_992.0),
+);
+
 /// Default of `model.shape_factor` (α ≈ 1, PY08 eq. 2).
 const DEFAULT_SHAPE_FACTOR: f64 = 1.0;
 
@@ -152,6 +191,10 @@ pub(super) struct Validated {
     pub material: Material,
     pub problem: StaticProblem,
     pub life: LifeProblem,
+    /// `surface.height_map`, in SI units, for the numerical level.
+    pub height_map: Option<HeightMap>,
+    /// `[numerical]`: the numerical level's settings.
+    pub numerical: NumericalSettings,
 }
 
 impl Source<'_> {
@@ -169,7 +212,7 @@ impl Source<'_> {
         // An inline material without a name is called after the scenario.
         let (material, elastic, asperity_modulus) =
             self.scenario_material(&raw.material, &name, replacement)?;
-        let spectrum = self.surface(&raw.surface)?;
+        let (spectrum, height_map) = self.surface(&raw.surface)?;
         let fluid = self.fluid(raw.fluid.get_ref())?;
         let seal = self.seal(&raw.seal)?;
         let (contact, shape_factor) = match &raw.model {
@@ -183,6 +226,7 @@ impl Source<'_> {
         let (time, fidelity) = self.simulation(raw.simulation.as_ref())?;
         let clogging_tolerance = self.clogging_tolerance(raw.simulation.as_ref())?;
         let contamination = self.contamination(raw.contamination.as_ref(), clogging_tolerance)?;
+        let numerical = self.numerical(raw.numerical.as_ref())?;
         let life = LifeProblem {
             material: material.clone(),
             asperity_modulus,
@@ -214,7 +258,47 @@ impl Source<'_> {
                 shape_factor,
             },
             life,
+            height_map,
+            numerical,
         })
+    }
+
+    /// `[numerical]`: band (4–512), pixels per shortest wavelength (integer 2–64),
+    /// realisations (integer 1–1000), seed (integer 0–2⁵³); each optional.
+    fn numerical(
+        &self,
+        table: Option<&Spanned<RawNumerical>>,
+    ) -> Result<NumericalSettings, ScenarioError> {
+        let mut settings = NumericalSettings::default();
+        let Some(table) = table else {
+            return Ok(settings);
+        };
+        let raw = table.get_ref();
+        if let Some(band) = self.optional(raw.band.as_ref(), &NUMERICAL_BAND)? {
+            settings.band = band;
+        }
+        let integer = |q: Option<&Quantity>, f: &Field| -> Result<Option<u64>, ScenarioError> {
+            let Some(q) = q else { return Ok(None) };
+            let v = self.quantity(q, f)?;
+            if v.fract() != 0.0 {
+                return Err(self.error(
+                    q.span(),
+                    f.key,
+                    format!("must be a whole number, got {}", show(v)),
+                ));
+            }
+            Ok(Some(v as u64))
+        };
+        if let Some(p) = integer(raw.pixels_per_wavelength.as_ref(), &NUMERICAL_PIXELS)? {
+            settings.pixels_per_wavelength = p as usize;
+        }
+        if let Some(r) = integer(raw.realisations.as_ref(), &NUMERICAL_REALISATIONS)? {
+            settings.realisations = r as usize;
+        }
+        if let Some(seed) = integer(raw.seed.as_ref(), &NUMERICAL_SEED)? {
+            settings.seed = seed;
+        }
+        Ok(settings)
     }
 
     /// A written quantity → a checked SI value: the unit must have the field's dimension and
@@ -264,19 +348,146 @@ impl Source<'_> {
         Ok((contact, shape_factor))
     }
 
-    /// `[surface]`: a self-affine spectrum or a tabulated one from `psd_file`.
-    fn surface(&self, table: &Spanned<RawSurface>) -> Result<Spectrum, ScenarioError> {
+    /// `[surface]`: a self-affine spectrum, a tabulated one from `psd_file`, or the spectrum
+    /// estimated from `height_map` (which is also returned, for the numerical level).
+    fn surface(
+        &self,
+        table: &Spanned<RawSurface>,
+    ) -> Result<(Spectrum, Option<HeightMap>), ScenarioError> {
         let raw = table.get_ref();
-        match &raw.psd_file {
-            Some(file) => self.tabulated_surface(raw, file),
-            None if raw.rms_roughness.is_none() && raw.hurst_exponent.is_none() => Err(self.error(
-                table.span(),
-                "surface",
-                "no spectrum given: set either the self-affine parameters (rms_roughness, \
-                 hurst_exponent, q0, q1, optional rolloff) or psd_file (a CSV of q, C)",
-            )),
-            None => self.self_affine_surface(table),
+        if let Some(file) = &raw.height_map {
+            let (spectrum, map) = self.height_map_surface(raw, file)?;
+            return Ok((spectrum, Some(map)));
         }
+        for (present, key) in [
+            (raw.pixel_size.as_ref().map(Spanned::span), PIXEL_SIZE.key),
+            (raw.height_unit.as_ref().map(Spanned::span), HEIGHT_UNIT),
+        ] {
+            if let Some(span) = present {
+                return Err(self.error(
+                    span,
+                    key,
+                    "only applies to a height map: set height_map (a CSV grid of heights) or \
+                     remove this key",
+                ));
+            }
+        }
+        let spectrum = match &raw.psd_file {
+            Some(file) => self.tabulated_surface(raw, file)?,
+            None if raw.rms_roughness.is_none() && raw.hurst_exponent.is_none() => {
+                return Err(self.error(
+                    table.span(),
+                    "surface",
+                    "no spectrum given: set either the self-affine parameters (rms_roughness, \
+                     hurst_exponent, q0, q1, optional rolloff), psd_file (a CSV of q, C) or \
+                     height_map (a CSV grid of heights, with pixel_size)",
+                ));
+            }
+            None => self.self_affine_surface(table)?,
+        };
+        Ok((spectrum, None))
+    }
+
+    /// `height_map` (relative to the scenario's directory) with `pixel_size` and the optional
+    /// `height_unit`: the grid in SI units and its PSD estimate (default options: Hann window
+    /// unless the map is periodic, 10 bins per decade, h_rms equal to the detrended map's rms,
+    /// band `2π/(L√π)` … `π/pixel_size`; [`crate::numerical::psd`]), restricted to the optional
+    /// `q0`, `q1`.
+    fn height_map_surface(
+        &self,
+        raw: &RawSurface,
+        file: &Spanned<String>,
+    ) -> Result<(Spectrum, HeightMap), ScenarioError> {
+        for (present, key) in [
+            (
+                raw.rms_roughness.as_ref().map(Spanned::span),
+                RMS_ROUGHNESS.key,
+            ),
+            (
+                raw.hurst_exponent.as_ref().map(Spanned::span),
+                HURST_EXPONENT.key,
+            ),
+            (raw.rolloff.as_ref().map(Spanned::span), ROLLOFF.key),
+            (raw.psd_file.as_ref().map(Spanned::span), "surface.psd_file"),
+        ] {
+            if let Some(span) = present {
+                return Err(self.error(
+                    span,
+                    key,
+                    format!(
+                        "height_map gives the whole surface; remove {key} (or remove height_map)"
+                    ),
+                ));
+            }
+        }
+        let Some(pixel_size) = &raw.pixel_size else {
+            return Err(self.error(
+                file.span(),
+                HEIGHT_MAP,
+                "needs pixel_size, the spacing of the grid's samples (e.g. pixel_size = \"0.5 um\")",
+            ));
+        };
+        let pixel = self.quantity(pixel_size, &PIXEL_SIZE)?;
+        let unit = match &raw.height_unit {
+            None => 1.0,
+            Some(text) => match units::parse_unit(text.get_ref().trim()) {
+                Ok((factor, dimension)) if dimension == Dimension::LENGTH => factor,
+                Ok(_) | Err(_) => {
+                    return Err(self.error(
+                        text.span(),
+                        HEIGHT_UNIT,
+                        format!(
+                            "expected a length unit for the heights, such as \"m\", \"um\" or \
+                             \"nm\", got {:?}",
+                            text.get_ref()
+                        ),
+                    ));
+                }
+            },
+        };
+        let line = self.line(file.span().start);
+        let path = self.relative_path(file.get_ref());
+        let text = std::fs::read_to_string(&path).map_err(|e| {
+            self.error(
+                file.span(),
+                HEIGHT_MAP,
+                format!("cannot read height map {}: {e}", path.display()),
+            )
+        })?;
+        let format_error =
+            |map_line: Option<usize>, message: String| ScenarioError::HeightMapFormat {
+                map: path.clone(),
+                map_line,
+                scenario: self.path.to_path_buf(),
+                line,
+                message,
+            };
+        let (n, heights) =
+            height_map::parse(&text, unit).map_err(|e| format_error(e.line, e.message))?;
+        let map = HeightMap { n, pixel, heights };
+        let spectrum = map_psd::estimate(&map, &map_psd::PsdOptions::default())
+            .map_err(|e| format_error(None, e.to_string()))?;
+
+        let q0 = self.optional(raw.q0.as_ref(), &Q0)?;
+        let q1 = self.optional(raw.q1.as_ref(), &Q1)?;
+        let (span, key) = match (&raw.q0, &raw.q1) {
+            (Some(q), _) => (q.span(), Q0.key),
+            (None, Some(q)) => (q.span(), Q1.key),
+            (None, None) => return Ok((spectrum, map)),
+        };
+        let (lo, hi) = (q0.unwrap_or(spectrum.q0()), q1.unwrap_or(spectrum.q1()));
+        let spectrum = spectrum.restricted(lo, hi).map_err(|e| {
+            self.error(
+                span,
+                key,
+                format!(
+                    "{e} (the height map's spectrum covers 2π/(L√π) … π/pixel_size, \
+                     L = {} m its side)",
+                    show(map.side())
+                ),
+            )
+        })?;
+        Ok((spectrum, map))
     }
 
     fn self_affine_surface(&self, table: &Spanned<RawSurface>) -> Result<Spectrum, ScenarioError> {

@@ -1,0 +1,92 @@
+//! `sealsim tradeoff`: the scenario's static state and life run at every fidelity level and at
+//! a ladder of numerical settings, with wall time and error against the most accurate setting
+//! ([`crate::tradeoff`]).
+
+use super::{CliError, progress_bar, write_output};
+use crate::report::tradeoff::{tradeoff_chart, tradeoff_markdown, tradeoff_table};
+use crate::scenario::Scenario;
+use crate::tradeoff::{self, TradeoffOptions};
+use clap::Args;
+use std::path::PathBuf;
+
+/// Arguments of `sealsim tradeoff`.
+#[derive(Debug, Clone, Args)]
+#[command(
+    after_help = "Two sections: 'full-spectrum' compares the analytic levels (static state and \
+    life run) with the critical junction by quadrature at 4x nodes and 4x time grid; \
+    'band-limited' compares them with the numerical reference on the band q1/q0 = --band of the \
+    spectrum (static, at the pressure where Persson's contact fraction is 0.2), the finest \
+    numerical setting being the reference. CSV columns: section, level, setting, \
+    nominal_pressure_Pa, static_seconds_s, leak_rate_m3_per_s, leak_rate_std_m3_per_s, \
+    static_error, life_seconds_s, time_to_failure_s, leaked_volume_m3, life_error."
+)]
+pub struct TradeoffArgs {
+    /// Scenario file (TOML).
+    #[arg(value_name = "SCENARIO")]
+    pub scenario: PathBuf,
+
+    /// Write the table as CSV to FILE (atomically).
+    #[arg(short, long, value_name = "FILE.csv")]
+    pub output: Option<PathBuf>,
+
+    /// Write the error-against-time chart (log–log SVG) to FILE.
+    #[arg(long, value_name = "FILE.svg")]
+    pub plot: Option<PathBuf>,
+
+    /// Band q1/q0 resolved by the numerical level [default: the scenario's numerical.band, 32].
+    #[arg(long, value_parser = parse_band)]
+    pub band: Option<f64>,
+
+    /// Seed of the synthetic surfaces [default: the scenario's numerical.seed, 1].
+    #[arg(long)]
+    pub seed: Option<u64>,
+
+    /// Leave out the numerical level (the band-limited section; seconds to minutes).
+    #[arg(long)]
+    pub skip_numerical: bool,
+}
+
+fn parse_band(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(b) if b.is_finite() && (4.0..=512.0).contains(&b) => Ok(b),
+        _ => Err(format!(
+            "the band must be a number from 4 to 512, got {text:?}"
+        )),
+    }
+}
+
+/// Runs `sealsim tradeoff`.
+pub fn run(args: TradeoffArgs) -> Result<(), CliError> {
+    let scenario = Scenario::load(&args.scenario)?;
+    let options = TradeoffOptions {
+        band: args.band.unwrap_or(scenario.numerical.band),
+        seed: args.seed.unwrap_or(scenario.numerical.seed),
+        skip_numerical: args.skip_numerical,
+        ..TradeoffOptions::default()
+    };
+    let rows = tradeoff::run(
+        &scenario.problem,
+        &scenario.life,
+        &options,
+        &mut progress_bar("trade-off"),
+    );
+    let csv = args
+        .output
+        .as_ref()
+        .map(|_| tradeoff_table(&rows))
+        .transpose()?;
+    let svg = match &args.plot {
+        Some(_) => Some(
+            tradeoff_chart(&format!("{}: error against time", scenario.name), &rows)
+                .to_svg()
+                .map_err(|e| CliError::Internal(e.to_string()))?,
+        ),
+        None => None,
+    };
+    for (path, bytes) in [(&args.output, csv.as_deref()), (&args.plot, svg.as_deref())] {
+        if let (Some(path), Some(bytes)) = (path, bytes) {
+            write_output(Some(path), bytes.as_bytes())?;
+        }
+    }
+    write_output(None, tradeoff_markdown(&rows).as_bytes())
+}

@@ -1,0 +1,268 @@
+//! The numerical level (DESIGN §3.5, §4): an ensemble of contact-and-flow solutions at one
+//! nominal pressure.
+//!
+//! Per realisation: a periodic random-phase surface from the spectrum ([`super::surface`], or a
+//! measured height map as the single realisation), frictionless elastic contact by FFT boundary
+//! elements at the mean pressure P0 ([`super::bem`], Polonsky & Keer 1999), non-contact
+//! percolation along the flow ([`super::percolation`]) and thin-film Reynolds flow through the
+//! gap field ([`super::flow`]) → effective conductance σ_eff. The ensemble gives the mean and
+//! the spread of σ_eff, of the contact fraction and of the mean gap; the leak rate of a flat
+//! seal is `Q̇ = (L_y/L_x) σ_eff ΔP` (DESIGN §3.3, as for the effective medium).
+//!
+//! The grid resolves only a band of wavevectors: the synthetic surfaces keep the spectrum on
+//! `[q0, band · q0]` ([`band_limited`]); comparisons with the analytic levels are made on that
+//! same band-limited spectrum.
+
+use super::HeightMap;
+use super::bem::{self, BemError, BemSettings, Boundary};
+use super::flow::{self, FlowError, FlowSettings};
+use super::surface::synthesize;
+use crate::surface::{Spectrum, SpectrumError};
+use std::fmt;
+
+/// Settings of the numerical level.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NumericalSettings {
+    /// Wavevector band `q1/q0` the synthetic surfaces resolve (default 32).
+    pub band: f64,
+    /// Pixels per shortest wavelength `2π/(q1 a)` (default 8); the grid has
+    /// `n = band · pixels_per_wavelength` points per side.
+    pub pixels_per_wavelength: usize,
+    /// Number of surface realisations (default 8).
+    pub realisations: usize,
+    /// Seed of the first realisation; realisation `k` uses `seed + k`.
+    pub seed: u64,
+    pub bem: BemSettings,
+    pub flow: FlowSettings,
+}
+
+impl Default for NumericalSettings {
+    fn default() -> Self {
+        NumericalSettings {
+            band: 32.0,
+            pixels_per_wavelength: 8,
+            realisations: 8,
+            seed: 1,
+            bem: BemSettings::default(),
+            flow: FlowSettings::default(),
+        }
+    }
+}
+
+impl NumericalSettings {
+    /// Points per side of the synthetic surfaces, `band · pixels_per_wavelength` rounded up to
+    /// an even number (at least 8).
+    pub fn grid_size(&self) -> usize {
+        let n = (self.band * self.pixels_per_wavelength as f64)
+            .ceil()
+            .max(8.0) as usize;
+        n + n % 2
+    }
+}
+
+/// The part of `spectrum` the numerical level resolves: `[q0, min(q1, band · q0)]`.
+pub fn band_limited(spectrum: &Spectrum, band: f64) -> Result<Spectrum, SpectrumError> {
+    let q0 = spectrum.q0();
+    spectrum.restricted(q0, spectrum.q1().min(band * q0))
+}
+
+/// Mean, sample standard deviation, minimum and maximum of one quantity over the ensemble.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Spread {
+    pub mean: f64,
+    /// Sample standard deviation (0 for a single realisation).
+    pub std_dev: f64,
+    pub min: f64,
+    pub max: f64,
+}
+
+impl Spread {
+    /// The statistics of `values` (not empty).
+    pub fn of(values: &[f64]) -> Spread {
+        let n = values.len() as f64;
+        let mean = values.iter().sum::<f64>() / n;
+        let var = if values.len() > 1 {
+            values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0)
+        } else {
+            0.0
+        };
+        Spread {
+            mean,
+            std_dev: var.sqrt(),
+            min: values.iter().copied().fold(f64::INFINITY, f64::min),
+            max: values.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+        }
+    }
+
+    /// Standard error of the mean, `std_dev/√count`.
+    pub fn standard_error(&self, count: usize) -> f64 {
+        self.std_dev / (count.max(1) as f64).sqrt()
+    }
+}
+
+/// One realisation's contact and flow.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Realisation {
+    /// Seed of the synthetic surface (`None` for a measured map).
+    pub seed: Option<u64>,
+    /// A/A0 of the BEM solution.
+    pub contact_fraction: f64,
+    /// Mean interfacial separation ū (m).
+    pub mean_gap: f64,
+    /// Effective conductance σ_eff (m³/(Pa·s)); 0 when nothing percolates.
+    pub conductance: f64,
+    pub percolates: bool,
+    /// Iterations of the contact and of the flow solve.
+    pub bem_iterations: usize,
+    pub flow_iterations: usize,
+}
+
+/// The ensemble at one nominal pressure.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NumericalState {
+    /// Nominal pressure P0 (Pa).
+    pub nominal_pressure: f64,
+    pub realisations: Vec<Realisation>,
+    pub contact_fraction: Spread,
+    pub mean_gap: Spread,
+    /// σ_eff (m³/(Pa·s)) over the realisations (the ensemble estimate is the mean).
+    pub conductance: Spread,
+    /// Fraction of realisations whose non-contact region percolates along the flow.
+    pub percolating_fraction: f64,
+}
+
+impl NumericalState {
+    /// The effective gap of the mean conductance, `(12 η σ̄_eff)^{1/3}` (m).
+    pub fn effective_gap(&self, viscosity: f64) -> f64 {
+        (12.0 * viscosity * self.conductance.mean).cbrt()
+    }
+}
+
+/// Where the surfaces come from.
+#[derive(Debug, Clone, Copy)]
+pub enum Surfaces<'a> {
+    /// Random-phase realisations of the spectrum's band `[q0, band·q0]` (see
+    /// [`NumericalSettings`]).
+    Synthetic(&'a Spectrum),
+    /// A measured map: the single realisation.
+    Map(&'a HeightMap),
+}
+
+/// Why the numerical level failed.
+#[derive(Debug, Clone, PartialEq)]
+pub enum NumericalError {
+    Spectrum(SpectrumError),
+    Contact(BemError),
+    Flow(FlowError),
+    /// No realisation was asked for.
+    NoRealisations,
+}
+
+impl fmt::Display for NumericalError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            NumericalError::Spectrum(e) => write!(f, "band-limited spectrum: {e}"),
+            NumericalError::Contact(e) => write!(f, "contact solve: {e}"),
+            NumericalError::Flow(e) => write!(f, "flow solve: {e}"),
+            NumericalError::NoRealisations => write!(f, "at least one realisation is needed"),
+        }
+    }
+}
+
+impl std::error::Error for NumericalError {}
+
+/// The numerical level at nominal pressure `p0` (Pa) for a half-space of effective modulus
+/// `e_star` (Pa) and a fluid of `viscosity` (Pa·s). `progress(done, total)` is called after each
+/// realisation (for a progress bar; the physics does not print).
+pub fn evaluate(
+    surfaces: Surfaces<'_>,
+    e_star: f64,
+    p0: f64,
+    viscosity: f64,
+    settings: &NumericalSettings,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<NumericalState, NumericalError> {
+    let realisations = match surfaces {
+        Surfaces::Map(map) => {
+            let r = realise(map, None, e_star, p0, viscosity, settings)?;
+            progress(1, 1);
+            vec![r]
+        }
+        Surfaces::Synthetic(spectrum) => {
+            if settings.realisations == 0 {
+                return Err(NumericalError::NoRealisations);
+            }
+            let band = band_limited(spectrum, settings.band).map_err(NumericalError::Spectrum)?;
+            let n = settings.grid_size();
+            let total = settings.realisations;
+            let mut out = Vec::with_capacity(total);
+            for k in 0..total {
+                let seed = settings.seed.wrapping_add(k as u64);
+                let map = synthesize(&band, n, seed);
+                out.push(realise(&map, Some(seed), e_star, p0, viscosity, settings)?);
+                progress(k + 1, total);
+            }
+            out
+        }
+    };
+    Ok(summarise(p0, realisations))
+}
+
+fn realise(
+    map: &HeightMap,
+    seed: Option<u64>,
+    e_star: f64,
+    p0: f64,
+    viscosity: f64,
+    settings: &NumericalSettings,
+) -> Result<Realisation, NumericalError> {
+    let contact = bem::solve(map, e_star, p0, Boundary::Periodic, &settings.bem)
+        .map_err(NumericalError::Contact)?;
+    let flow = flow::solve(&contact.gap, map.n, map.pixel, viscosity, &settings.flow)
+        .map_err(NumericalError::Flow)?;
+    Ok(Realisation {
+        seed,
+        contact_fraction: contact.contact_fraction,
+        mean_gap: contact.mean_gap,
+        conductance: flow.conductance,
+        percolates: flow.percolates,
+        bem_iterations: contact.iterations,
+        flow_iterations: flow.iterations,
+    })
+}
+
+fn summarise(p0: f64, realisations: Vec<Realisation>) -> NumericalState {
+    let of =
+        |f: fn(&Realisation) -> f64| Spread::of(&realisations.iter().map(f).collect::<Vec<_>>());
+    let percolating = realisations.iter().filter(|r| r.percolates).count();
+    NumericalState {
+        nominal_pressure: p0,
+        contact_fraction: of(|r| r.contact_fraction),
+        mean_gap: of(|r| r.mean_gap),
+        conductance: of(|r| r.conductance),
+        percolating_fraction: percolating as f64 / realisations.len() as f64,
+        realisations,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn spread_of_known_values() {
+        let s = Spread::of(&[1.0, 2.0, 3.0, 4.0]);
+        assert_eq!((s.mean, s.min, s.max), (2.5, 1.0, 4.0));
+        assert!((s.std_dev - (5.0f64 / 3.0).sqrt()).abs() < 1e-15);
+        assert_eq!(Spread::of(&[7.0]).std_dev, 0.0);
+    }
+
+    #[test]
+    fn grid_size_follows_band_and_resolution() {
+        let mut s = NumericalSettings::default();
+        assert_eq!(s.grid_size(), 256);
+        s.pixels_per_wavelength = 4;
+        s.band = 31.0;
+        assert_eq!(s.grid_size(), 124);
+    }
+}

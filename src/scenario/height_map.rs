@@ -1,0 +1,178 @@
+//! Height maps: a CSV file of a square grid of heights (`surface.height_map`).
+//!
+//! Format: one grid row per line (row `iy`, increasing y), comma-separated heights (column `ix`,
+//! increasing x, the flow direction), in metres unless the scenario's `height_unit` says
+//! otherwise. Blank lines and lines starting with `#` are ignored; no header row. The grid must
+//! be square, `n × n` with `n` even (the FFT of the PSD estimate and the numerical level need an
+//! even size) and at least [`MIN_SIZE`]; every cell a finite number. Parsed by hand so that
+//! every error names the real line of the file.
+
+use super::show;
+
+/// Smallest accepted grid side.
+pub(super) const MIN_SIZE: usize = 8;
+
+/// A malformed height map: what is wrong and, when it is on one row, the 1-based line.
+#[derive(Debug, Clone, PartialEq)]
+pub(super) struct HeightMapError {
+    pub line: Option<usize>,
+    pub message: String,
+}
+
+fn at(line: usize, message: String) -> HeightMapError {
+    HeightMapError {
+        line: Some(line),
+        message,
+    }
+}
+
+/// The grid of a height map file's text: `(n, heights)` with `heights[iy * n + ix]` in metres
+/// (each cell multiplied by `unit`, the SI factor of the file's height unit).
+pub(super) fn parse(text: &str, unit: f64) -> Result<(usize, Vec<f64>), HeightMapError> {
+    let mut heights = Vec::new();
+    // (line, column count) of the first row, and the line of every row.
+    let mut first: Option<(usize, usize)> = None;
+    let mut lines = Vec::new();
+    for (line, row) in super::data_lines(text) {
+        let cells: Vec<&str> = row.split(',').map(str::trim).collect();
+        match first {
+            None => first = Some((line, cells.len())),
+            Some((first_line, columns)) if cells.len() != columns => {
+                return Err(at(
+                    line,
+                    format!(
+                        "ragged row: {} values, but the first row (line {first_line}) has \
+                         {columns}; the grid must be square",
+                        cells.len()
+                    ),
+                ));
+            }
+            Some(_) => {}
+        }
+        for (column, cell) in cells.iter().enumerate() {
+            heights.push(height(cell, column + 1, line, unit)?);
+        }
+        lines.push(line);
+    }
+    let Some((first_line, columns)) = first else {
+        return Err(HeightMapError {
+            line: None,
+            message: "no data rows: expected a square grid of comma-separated heights".into(),
+        });
+    };
+    let rows = lines.len();
+    if columns < MIN_SIZE {
+        return Err(at(
+            first_line,
+            format!(
+                "{columns} value(s) per row: a height map needs at least {MIN_SIZE} × {MIN_SIZE}"
+            ),
+        ));
+    }
+    if rows > columns {
+        return Err(at(
+            lines[columns],
+            format!(
+                "not square: {rows} rows of {columns} values (this is row {}); the grid must \
+                 be n × n",
+                columns + 1
+            ),
+        ));
+    }
+    if rows < columns {
+        return Err(at(
+            lines[rows - 1],
+            format!(
+                "not square: the grid ends after {rows} rows of {columns} values; it must be \
+                 n × n"
+            ),
+        ));
+    }
+    if !columns.is_multiple_of(2) {
+        return Err(at(
+            first_line,
+            format!(
+                "the grid is {columns} × {columns}: its side must be even (the FFT needs it); \
+                 drop one row and one column"
+            ),
+        ));
+    }
+    Ok((columns, heights))
+}
+
+/// A finite height (m) from one cell.
+fn height(cell: &str, column: usize, line: usize, unit: f64) -> Result<f64, HeightMapError> {
+    match cell.parse::<f64>() {
+        Ok(v) if v.is_finite() && (v * unit).is_finite() => Ok(v * unit),
+        Ok(v) => Err(at(
+            line,
+            format!(
+                "column {column}: the height must be finite, got {}",
+                show(v)
+            ),
+        )),
+        Err(_) => Err(at(line, format!("column {column}: not a number: {cell:?}"))),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn grid(n: usize) -> String {
+        (0..n)
+            .map(|iy| {
+                (0..n)
+                    .map(|ix| format!("{}e-7", ix + 2 * iy))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+                    + "\n"
+            })
+            .collect()
+    }
+
+    #[test]
+    fn rows_are_read_in_order_with_comments_and_units() {
+        let text = format!("# a map\n\n{}", grid(8));
+        let (n, h) = parse(&text, 1.0).unwrap();
+        assert_eq!(n, 8);
+        assert_eq!(h[8 + 3], 5e-7);
+        let (_, um) = parse(&text, 1e-6).unwrap();
+        assert!((um[8 + 3] - 5e-13).abs() < 1e-25);
+    }
+
+    #[test]
+    fn errors_name_the_real_line() {
+        let err = |text: &str| parse(text, 1.0).unwrap_err();
+        let good = grid(8);
+        let mut rows: Vec<String> = good.lines().map(str::to_owned).collect();
+        rows[2] = rows[2].replacen("5e-7", "abc", 1);
+        let e = err(&format!("# header\n{}", rows.join("\n")));
+        assert_eq!(e.line, Some(4), "{e:?}");
+        assert!(e.message.contains("not a number: \"abc\""), "{e:?}");
+
+        let mut rows: Vec<String> = good.lines().map(str::to_owned).collect();
+        rows[5].push_str(", 1");
+        let e = err(&rows.join("\n"));
+        assert_eq!(e.line, Some(6));
+        assert!(e.message.contains("ragged row: 9 values"), "{e:?}");
+
+        let e = err(&format!("{good}{}", good.lines().next().unwrap()));
+        assert_eq!(e.line, Some(9));
+        assert!(e.message.contains("not square"), "{e:?}");
+        let e = err(&good.lines().take(7).collect::<Vec<_>>().join("\n"));
+        assert_eq!(e.line, Some(7));
+        assert!(e.message.contains("not square"), "{e:?}");
+
+        let e = err(&grid(6));
+        assert_eq!(e.line, Some(1));
+        assert!(e.message.contains("at least 8 × 8"), "{e:?}");
+        let e = err(&grid(9));
+        assert!(e.message.contains("must be even"), "{e:?}");
+
+        let e = err(&good.replacen("0e-7,", "inf,", 1));
+        assert_eq!(e.line, Some(1));
+        assert!(e.message.contains("must be finite"), "{e:?}");
+        assert_eq!(err("# only a comment\n").line, None);
+    }
+}

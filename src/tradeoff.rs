@@ -1,0 +1,420 @@
+//! The measured speed/accuracy trade of the fidelity ladder (DESIGN §4): one scenario's static
+//! state and life run at every level and at a ladder of numerical settings, each with its wall
+//! time and its error against the most accurate setting run.
+//!
+//! Two sections:
+//! * **full spectrum** — the analytic levels (rule of thumb, critical junction by table and by
+//!   quadrature, effective medium) on the scenario's own spectrum, static and life. Reference:
+//!   the critical junction by quadrature with 4× the quadrature nodes and 4× the time grid
+//!   (the paper's model, converged). The errors of the table and of the quadrature settings
+//!   are numerical; those of the rule of thumb and of the effective medium are model
+//!   differences.
+//! * **band-limited** — the numerical reference resolves only a band q1/q0 of a few tens, so
+//!   it is compared with the analytic levels on the same band: the spectrum of the synthetic
+//!   surfaces as the lattice carries it (re-estimated from one realisation, which is the same
+//!   for every seed because the amplitudes are deterministic, [`crate::numerical::surface`]),
+//!   at the nominal pressure where Persson's contact fraction is 0.2 (the scenario's own
+//!   pressure usually seals the band-limited surface). Static only. Reference: the finest
+//!   numerical setting.
+//!
+//! Timing is wall-clock on the calling thread (repeated until ≥ 50 ms for fast settings, the
+//! mean reported); the numerical level's contact solver uses two threads for its FFTs.
+
+use crate::contact::{Junction, QuadratureSettings, TableSettings};
+use crate::leak::{ContactPath, Fidelity, PathOptions, StaticProblem, StaticSolver};
+use crate::numerical::psd::{self, PsdOptions, Window};
+use crate::numerical::reference::{NumericalSettings, Surfaces, band_limited, evaluate};
+use crate::numerical::surface::synthesize;
+use crate::numerics::special::erf_inv;
+use crate::simulate::{LifeProblem, Simulator};
+use std::f64::consts::PI;
+use std::time::Instant;
+
+/// Which comparison a row belongs to (module docs).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Section {
+    FullSpectrum,
+    BandLimited,
+}
+
+impl Section {
+    pub fn name(self) -> &'static str {
+        match self {
+            Section::FullSpectrum => "full-spectrum",
+            Section::BandLimited => "band-limited",
+        }
+    }
+}
+
+/// What a life run is judged by: the time to failure when the reference fails, else the
+/// volume leaked over the whole run.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LifeOutcome {
+    /// Wall time of the run, path (table) build included (s).
+    pub seconds: f64,
+    pub time_to_failure: Option<f64>,
+    pub leaked_volume: f64,
+    /// Relative error of the judged quantity against the reference; `None` when undefined
+    /// (one fails and the other does not).
+    pub error: Option<f64>,
+}
+
+/// One setting of one level.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TradeoffRow {
+    pub section: Section,
+    pub level: Fidelity,
+    /// The setting, e.g. `table 12 pts/decade`, `quadrature ×2, time grid ×1`.
+    pub setting: String,
+    /// Nominal pressure of the static state (Pa).
+    pub nominal_pressure: f64,
+    /// Wall time of the static state: path (table) build plus one evaluation (s).
+    pub static_seconds: f64,
+    /// Static leak rate (m³/s).
+    pub leak_rate: f64,
+    /// |Q̇/Q̇_ref − 1|; `None` when the reference is sealed and this is not (or vice versa).
+    pub static_error: Option<f64>,
+    /// The life run (full-spectrum section only).
+    pub life: Option<LifeOutcome>,
+    /// For the numerical level: the standard deviation of the leak rate over realisations.
+    pub leak_rate_spread: Option<f64>,
+}
+
+/// Options of a trade-off study.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TradeoffOptions {
+    /// Band q1/q0 of the numerical comparison (default 32).
+    pub band: f64,
+    /// (pixels per shortest wavelength, realisations) of the numerical ladder; the last is the
+    /// band-limited reference.
+    pub numerical_ladder: Vec<(usize, usize)>,
+    /// Seed of the synthetic surfaces.
+    pub seed: u64,
+    /// Skip the band-limited section (no numerical level).
+    pub skip_numerical: bool,
+}
+
+impl Default for TradeoffOptions {
+    fn default() -> Self {
+        TradeoffOptions {
+            band: 32.0,
+            numerical_ladder: vec![(4, 4), (8, 4), (8, 8), (16, 8)],
+            seed: 1,
+            skip_numerical: false,
+        }
+    }
+}
+
+/// Mean wall time of `f` in seconds, repeated until 50 ms have passed (at most 1000 times);
+/// returns the last result.
+fn timed<T>(mut f: impl FnMut() -> T) -> (f64, T) {
+    let start = Instant::now();
+    let mut runs = 0u32;
+    loop {
+        let value = f();
+        runs += 1;
+        let elapsed = start.elapsed().as_secs_f64();
+        if elapsed >= 0.05 || runs >= 1000 {
+            return (elapsed / f64::from(runs), value);
+        }
+    }
+}
+
+fn relative_error(value: f64, reference: f64) -> Option<f64> {
+    if reference == 0.0 {
+        (value == 0.0).then_some(0.0)
+    } else if value == 0.0 {
+        None
+    } else {
+        Some((value / reference - 1.0).abs())
+    }
+}
+
+/// One analytic setting of the full-spectrum section.
+struct Setting {
+    level: Fidelity,
+    label: String,
+    table: TableSettings,
+    quadrature: f64,
+    time_grid: f64,
+}
+
+fn full_spectrum_ladder() -> Vec<Setting> {
+    let base = |level, label: &str| Setting {
+        level,
+        label: label.to_owned(),
+        table: TableSettings::default(),
+        quadrature: 1.0,
+        time_grid: 1.0,
+    };
+    let mut ladder = vec![base(Fidelity::RuleOfThumb, "closed form")];
+    for ppd in [3.0, 6.0, 12.0, 24.0] {
+        ladder.push(Setting {
+            table: TableSettings {
+                points_per_decade: ppd,
+                ..TableSettings::default()
+            },
+            ..base(Fidelity::Table, &format!("table {ppd} pts/decade"))
+        });
+    }
+    for q in [0.5, 1.0, 2.0] {
+        ladder.push(Setting {
+            quadrature: q,
+            ..base(Fidelity::Exact, &format!("quadrature ×{q}"))
+        });
+    }
+    for g in [0.25, 0.5, 2.0] {
+        ladder.push(Setting {
+            time_grid: g,
+            ..base(Fidelity::Table, &format!("table, time grid ×{g}"))
+        });
+    }
+    ladder.push(base(Fidelity::EffectiveMedium, "table 8 pts/decade"));
+    ladder.push(Setting {
+        table: TableSettings {
+            points_per_decade: 24.0,
+            ..TableSettings::default()
+        },
+        ..base(Fidelity::EffectiveMedium, "table 16 pts/decade")
+    });
+    ladder
+}
+
+fn with_settings(problem: &LifeProblem, setting: &Setting) -> LifeProblem {
+    let mut p = problem.clone();
+    p.contact.quadrature = QuadratureSettings::default().refined(setting.quadrature);
+    p.time.points_per_decade *= setting.time_grid;
+    p.fidelity = setting.level;
+    p
+}
+
+fn static_state(problem: &StaticProblem, life: &LifeProblem, setting: &Setting) -> (f64, f64) {
+    let mut pb = problem.clone();
+    pb.contact = life.contact;
+    let options = PathOptions {
+        table: setting.table,
+        ..PathOptions::default()
+    };
+    timed(|| {
+        let path = ContactPath::build(
+            &pb.spectrum,
+            pb.contact,
+            setting.level,
+            &options,
+            &mut |_, _| {},
+        );
+        StaticSolver::with_path(pb.clone(), path)
+            .evaluate(pb.seal.nominal_pressure)
+            .leak_rate
+    })
+}
+
+fn life_run(problem: &LifeProblem, setting: &Setting) -> (f64, Option<f64>, f64) {
+    let options = PathOptions {
+        table: setting.table,
+        ..PathOptions::default()
+    };
+    let (seconds, result) = timed(|| {
+        let path = ContactPath::build(
+            &problem.spectrum,
+            problem.contact,
+            problem.fidelity,
+            &options,
+            &mut |_, _| {},
+        );
+        Simulator::with_path(problem, path).run()
+    });
+    (
+        seconds,
+        result.failure.map(|f| f.time),
+        result.leaked_volume(),
+    )
+}
+
+/// Runs the study; `progress(done, total)` after every setting.
+pub fn run(
+    problem: &StaticProblem,
+    life: &LifeProblem,
+    options: &TradeoffOptions,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Vec<TradeoffRow> {
+    let ladder = full_spectrum_ladder();
+    let numerical = if options.skip_numerical {
+        0
+    } else {
+        options.numerical_ladder.len() + 3
+    };
+    let total = ladder.len() + 1 + numerical;
+    let mut done = 0;
+    let mut step = |progress: &mut dyn FnMut(usize, usize)| {
+        done += 1;
+        progress(done, total);
+    };
+
+    // the full-spectrum reference: quadrature ×4, time grid ×4
+    let reference = Setting {
+        level: Fidelity::Exact,
+        label: "quadrature ×4, time grid ×4 (reference)".to_owned(),
+        table: TableSettings::default(),
+        quadrature: 4.0,
+        time_grid: 4.0,
+    };
+    let ref_life = with_settings(life, &reference);
+    let (ref_static_s, ref_q) = static_state(problem, &ref_life, &reference);
+    let (ref_life_s, ref_ttf, ref_volume) = life_run(&ref_life, &reference);
+    step(progress);
+    let judge = |ttf: Option<f64>, volume: f64| match ref_ttf {
+        Some(r) => ttf.and_then(|t| relative_error(t, r)),
+        None => match ttf {
+            Some(_) => None,
+            None => relative_error(volume, ref_volume),
+        },
+    };
+    let mut rows = vec![TradeoffRow {
+        section: Section::FullSpectrum,
+        level: Fidelity::Exact,
+        setting: reference.label.clone(),
+        nominal_pressure: problem.seal.nominal_pressure,
+        static_seconds: ref_static_s,
+        leak_rate: ref_q,
+        static_error: Some(0.0),
+        life: Some(LifeOutcome {
+            seconds: ref_life_s,
+            time_to_failure: ref_ttf,
+            leaked_volume: ref_volume,
+            error: Some(0.0),
+        }),
+        leak_rate_spread: None,
+    }];
+    for setting in &ladder {
+        let lp = with_settings(life, setting);
+        let (static_seconds, q) = static_state(problem, &lp, setting);
+        let (life_seconds, ttf, volume) = life_run(&lp, setting);
+        rows.push(TradeoffRow {
+            section: Section::FullSpectrum,
+            level: setting.level,
+            setting: setting.label.clone(),
+            nominal_pressure: problem.seal.nominal_pressure,
+            static_seconds,
+            leak_rate: q,
+            static_error: relative_error(q, ref_q),
+            life: Some(LifeOutcome {
+                seconds: life_seconds,
+                time_to_failure: ttf,
+                leaked_volume: volume,
+                error: judge(ttf, volume),
+            }),
+            leak_rate_spread: None,
+        });
+        step(progress);
+    }
+    if !options.skip_numerical {
+        rows.extend(band_limited_section(problem, options, &mut || {
+            step(progress)
+        }));
+    }
+    rows
+}
+
+/// The band-limited section (module docs).
+fn band_limited_section(
+    problem: &StaticProblem,
+    options: &TradeoffOptions,
+    step: &mut dyn FnMut(),
+) -> Vec<TradeoffRow> {
+    let Ok(band) = band_limited(&problem.spectrum, options.band) else {
+        return Vec::new();
+    };
+    // the spectrum the lattice carries: the periodic map's own estimate (no window)
+    let finest = options
+        .numerical_ladder
+        .iter()
+        .map(|&(ppw, _)| ppw)
+        .max()
+        .unwrap_or(8);
+    let settings_for = |ppw: usize, realisations: usize| NumericalSettings {
+        band: options.band,
+        pixels_per_wavelength: ppw,
+        realisations,
+        seed: options.seed,
+        ..NumericalSettings::default()
+    };
+    let map = synthesize(&band, settings_for(finest, 1).grid_size(), options.seed);
+    let estimate = psd::estimate(
+        &map,
+        &PsdOptions {
+            window: Window::Rectangular,
+            ..PsdOptions::default()
+        },
+    )
+    .unwrap_or_else(|_| band.clone());
+    let mut pb = problem.clone();
+    pb.spectrum = estimate;
+    let e_star = pb.material.effective_modulus();
+    // Persson's contact fraction A(ζ1)/A0 = erf(s/√(π M3(q1))) = 0.2
+    let s = erf_inv(0.2) * (PI * pb.spectrum.total_m3()).sqrt();
+    let p0 = s * e_star;
+    pb.seal.nominal_pressure = p0;
+    let scale = pb.seal.length / pb.seal.width * pb.fluid.pressure_difference;
+
+    let mut rows = Vec::new();
+    let mut numerical = Vec::new();
+    for &(ppw, realisations) in &options.numerical_ladder {
+        let settings = settings_for(ppw, realisations);
+        let start = Instant::now();
+        let state = evaluate(
+            Surfaces::Synthetic(&band),
+            e_star,
+            p0,
+            pb.fluid.viscosity,
+            &settings,
+            &mut |_, _| {},
+        );
+        let seconds = start.elapsed().as_secs_f64();
+        step();
+        let Ok(state) = state else { continue };
+        numerical.push(TradeoffRow {
+            section: Section::BandLimited,
+            level: Fidelity::Numerical,
+            setting: format!(
+                "{n}², {ppw} px/wavelength, {realisations} realisations",
+                n = settings.grid_size()
+            ),
+            nominal_pressure: p0,
+            static_seconds: seconds,
+            leak_rate: scale * state.conductance.mean,
+            static_error: None,
+            life: None,
+            leak_rate_spread: Some(scale * state.conductance.std_dev),
+        });
+    }
+    let reference = numerical.last().map_or(0.0, |r| r.leak_rate);
+    for level in [
+        Fidelity::RuleOfThumb,
+        Fidelity::Exact,
+        Fidelity::EffectiveMedium,
+    ] {
+        let (seconds, q) = timed(|| StaticSolver::new(pb.clone(), level).evaluate(p0));
+        let leak_rate = match q.junction {
+            Junction::Leaking(_) => q.leak_rate,
+            Junction::Sealed => 0.0,
+        };
+        rows.push(TradeoffRow {
+            section: Section::BandLimited,
+            level,
+            setting: "band-limited spectrum".to_owned(),
+            nominal_pressure: p0,
+            static_seconds: seconds,
+            leak_rate,
+            static_error: relative_error(leak_rate, reference),
+            life: None,
+            leak_rate_spread: None,
+        });
+        step();
+    }
+    for row in &mut numerical {
+        row.static_error = relative_error(row.leak_rate, reference);
+    }
+    rows.extend(numerical);
+    rows
+}

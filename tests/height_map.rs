@@ -1,0 +1,282 @@
+//! `[surface] height_map`: a measured (here: synthesized) grid of heights as the surface of a
+//! scenario. The analytic levels get its PSD estimate, the numerical level the map itself;
+//! every malformed map exits with status 2 and names the map file and its line.
+
+use assert_cmd::cargo::cargo_bin_cmd;
+use predicates::prelude::*;
+use sealsim::numerical::HeightMap;
+use sealsim::numerical::surface::synthesize;
+use sealsim::scenario::Scenario;
+use sealsim::surface::Spectrum;
+use std::fs;
+use std::path::PathBuf;
+use tempfile::TempDir;
+
+/// Grid side of the test maps (64 µm at 0.5 µm pixels).
+const N: usize = 128;
+
+/// A periodic surface of H = 0.8, h_rms = 1 µm on q0 … π/pixel with 0.5 µm pixels.
+fn synthetic_map(seed: u64) -> HeightMap {
+    let pixel = 0.5e-6;
+    let q0 = 2.0 * std::f64::consts::PI / (N as f64 * pixel);
+    let q1 = std::f64::consts::PI / pixel;
+    let spectrum = Spectrum::self_affine(1e-6, 0.8, q0, q1, None).unwrap();
+    let map = synthesize(&spectrum, N, seed);
+    assert!((map.pixel / pixel - 1.0).abs() < 1e-12);
+    map
+}
+
+/// The map as CSV, heights divided by `unit` (1 for metres, 1e-6 for µm), a comment line
+/// first.
+fn csv(map: &HeightMap, unit: f64) -> String {
+    let mut text = String::from("# synthesized height map\n");
+    for row in map.heights.chunks(map.n) {
+        let cells: Vec<String> = row.iter().map(|h| format!("{:e}", h / unit)).collect();
+        text.push_str(&cells.join(","));
+        text.push('\n');
+    }
+    text
+}
+
+/// A scenario with `surface` as its `[surface]` table (line 6 on) next to the map file.
+fn scenario_text(surface: &str) -> String {
+    format!(
+        "name = \"height map\"\n\
+         [material]\n\
+         youngs_modulus = \"10 MPa\"\n\
+         poisson_ratio = 0.5\n\
+         [surface]\n\
+         {surface}\n\
+         [fluid]\n\
+         viscosity = \"1e-3 Pa*s\"\n\
+         pressure_difference = \"0.01 MPa\"\n\
+         [seal]\n\
+         nominal_pressure = \"0.2 MPa\"\n\
+         width = \"1 mm\"\n\
+         length = \"1 mm\"\n"
+    )
+}
+
+/// A tempdir with `scenario.toml` and `map.csv`.
+struct Case {
+    dir: TempDir,
+}
+
+impl Case {
+    fn new(surface: &str, map: &str) -> Case {
+        let dir = TempDir::new().unwrap();
+        fs::write(dir.path().join("scenario.toml"), scenario_text(surface)).unwrap();
+        fs::write(dir.path().join("map.csv"), map).unwrap();
+        Case { dir }
+    }
+
+    /// The standard surface table with the given map text.
+    fn with_map(map: &str) -> Case {
+        Case::new("height_map = \"map.csv\"\npixel_size = \"0.5 um\"", map)
+    }
+
+    fn scenario(&self) -> PathBuf {
+        self.dir.path().join("scenario.toml")
+    }
+
+    fn output(&self) -> PathBuf {
+        self.dir.path().join("out.csv")
+    }
+
+    /// `sealsim leak scenario.toml -o out.csv` must exit 2 with every needle in stderr, no
+    /// panic and no output file.
+    fn rejects(&self, needles: &[&str]) {
+        let assert = cargo_bin_cmd!("sealsim")
+            .arg("leak")
+            .arg(self.scenario())
+            .arg("-o")
+            .arg(self.output())
+            .assert()
+            .code(2)
+            .stdout(predicate::str::is_empty())
+            .stderr(predicate::str::contains("panicked").not());
+        let stderr = String::from_utf8(assert.get_output().stderr.clone()).unwrap();
+        for needle in needles {
+            assert!(
+                stderr.contains(needle),
+                "stderr lacks {needle:?}:\n{stderr}"
+            );
+        }
+        assert!(!self.output().exists(), "the -o file was created");
+    }
+}
+
+#[test]
+fn scenario_spectrum_carries_the_maps_roughness_and_leak_runs() {
+    let map = synthetic_map(3);
+    let case = Case::with_map(&csv(&map, 1.0));
+    let scenario = Scenario::load(&case.scenario()).unwrap();
+    let spectrum = &scenario.problem.spectrum;
+    let h_rms = spectrum.rms_roughness();
+    assert!(
+        (h_rms / map.rms() - 1.0).abs() < 0.02,
+        "spectrum h_rms {h_rms} vs map {}",
+        map.rms()
+    );
+    assert_eq!(scenario.life.spectrum, *spectrum);
+    // The band: from q0/√π (the lattice cells of the map) to the Nyquist wavevector π/pixel.
+    let q0 = 2.0 * std::f64::consts::PI / map.side();
+    assert!((spectrum.q0() * std::f64::consts::PI.sqrt() / q0 - 1.0).abs() < 1e-9);
+    assert!((spectrum.q1() * 0.5e-6 / std::f64::consts::PI - 1.0).abs() < 1e-9);
+    // The map itself is kept, in SI units.
+    let kept = scenario.height_map.as_ref().expect("the map is kept");
+    assert_eq!((kept.n, kept.pixel), (N, 0.5e-6));
+    for (a, b) in kept.heights.iter().zip(&map.heights) {
+        assert!((a - b).abs() <= 1e-15 * map.rms());
+    }
+
+    let out = cargo_bin_cmd!("sealsim")
+        .arg("leak")
+        .arg(case.scenario())
+        .args(["--pressures", "0.1MPa,0.5MPa"])
+        .assert()
+        .success();
+    let stdout = String::from_utf8(out.get_output().stdout.clone()).unwrap();
+    let rows: Vec<&str> = stdout.lines().collect();
+    assert!(rows[0].starts_with("nominal_pressure_Pa,"), "{stdout}");
+    assert_eq!(rows.len(), 3, "{stdout}");
+    for row in &rows[1..] {
+        assert!(!row.contains("NaN") && !row.contains("inf"), "{row}");
+    }
+}
+
+#[test]
+fn heights_in_micrometres_and_a_band_restriction() {
+    let map = synthetic_map(5);
+    let q0 = 2.0 * std::f64::consts::PI / map.side();
+    let surface = format!(
+        "height_map = \"data/map.csv\"\npixel_size = \"0.5 um\"\nheight_unit = \"um\"\n\
+         q0 = \"{:e} 1/m\"\nq1 = \"{:e} 1/m\"",
+        q0,
+        16.0 * q0
+    );
+    let case = Case::new(&surface, "");
+    fs::create_dir(case.dir.path().join("data")).unwrap();
+    fs::write(case.dir.path().join("data/map.csv"), csv(&map, 1e-6)).unwrap();
+    let scenario = Scenario::load(&case.scenario()).unwrap();
+    let kept = scenario.height_map.unwrap();
+    assert!((kept.rms() / map.rms() - 1.0).abs() < 1e-12);
+    let spectrum = &scenario.problem.spectrum;
+    assert!((spectrum.q0() / q0 - 1.0).abs() < 1e-9);
+    assert!((spectrum.q1() / (16.0 * q0) - 1.0).abs() < 1e-9);
+    // The restricted band lacks the map's power below q0 and above 16 q0.
+    assert!(spectrum.rms_roughness() < kept.rms());
+}
+
+/// Replaces the `index`-th data row of the map (line `index + 2` of the file).
+fn with_row(map: &HeightMap, index: usize, row: &str) -> String {
+    let text = csv(map, 1.0);
+    let mut lines: Vec<String> = text.lines().map(str::to_owned).collect();
+    lines[index + 1] = row.to_owned();
+    lines.join("\n") + "\n"
+}
+
+#[test]
+fn a_text_cell_is_located() {
+    let map = synthetic_map(1);
+    let text = csv(&map, 1.0);
+    let row = format!(
+        "abc,{}",
+        text.lines().nth(5).unwrap().split_once(',').unwrap().1
+    );
+    let case = Case::with_map(&with_row(&map, 4, &row));
+    case.rejects(&[
+        "map.csv:6: surface.height_map: column 1: not a number: \"abc\"",
+        "scenario.toml:6",
+    ]);
+}
+
+#[test]
+fn a_ragged_row_is_located() {
+    let map = synthetic_map(1);
+    let row = csv(&map, 1.0).lines().nth(10).unwrap().to_owned() + ",1e-6";
+    let case = Case::with_map(&with_row(&map, 9, &row));
+    case.rejects(&[
+        "map.csv:11: surface.height_map: ragged row: 129 values",
+        "scenario.toml:6",
+    ]);
+}
+
+#[test]
+fn a_non_square_grid_is_located() {
+    let map = synthetic_map(1);
+    let text: String = csv(&map, 1.0)
+        .lines()
+        .take(100)
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let case = Case::with_map(&text);
+    case.rejects(&[
+        "map.csv:100: surface.height_map: not square: the grid ends after 99 rows of 128 values",
+    ]);
+}
+
+#[test]
+fn a_non_finite_or_tiny_grid_is_refused() {
+    let map = synthetic_map(1);
+    let row = csv(&map, 1.0)
+        .lines()
+        .nth(3)
+        .unwrap()
+        .replacen(',', ",NaN,", 1);
+    let row = row.rsplit_once(',').unwrap().0.to_owned();
+    Case::with_map(&with_row(&map, 2, &row))
+        .rejects(&["map.csv:4: surface.height_map: column 2: the height must be finite"]);
+    let tiny = "0,1,2,3\n1,2,3,4\n2,3,4,5\n3,4,5,6\n";
+    Case::with_map(tiny).rejects(&["map.csv:1: surface.height_map: 4 value(s) per row"]);
+}
+
+#[test]
+fn missing_pixel_size_is_named() {
+    let map = synthetic_map(1);
+    let case = Case::new("height_map = \"map.csv\"", &csv(&map, 1.0));
+    case.rejects(&["scenario.toml:6: surface.height_map: needs pixel_size"]);
+}
+
+#[test]
+fn height_map_excludes_the_other_spectra() {
+    let map = synthetic_map(1);
+    let case = Case::new(
+        "height_map = \"map.csv\"\npixel_size = \"0.5 um\"\nhurst_exponent = 0.8",
+        &csv(&map, 1.0),
+    );
+    case.rejects(&[
+        "scenario.toml:8: surface.hurst_exponent: height_map gives the whole surface; remove",
+    ]);
+    let case = Case::new(
+        "psd_file = \"p.csv\"\nheight_map = \"map.csv\"\npixel_size = \"0.5 um\"",
+        &csv(&map, 1.0),
+    );
+    case.rejects(&["scenario.toml:6: surface.psd_file: height_map gives the whole surface"]);
+    let case = Case::new(
+        "rms_roughness = \"1 um\"\nhurst_exponent = 0.8\nq0 = \"1e5 1/m\"\nq1 = \"1e7 1/m\"\n\
+         pixel_size = \"0.5 um\"",
+        "",
+    );
+    case.rejects(&["scenario.toml:10: surface.pixel_size: only applies to a height map"]);
+}
+
+#[test]
+fn unreadable_map_and_bad_unit_are_named() {
+    let case = Case::new("height_map = \"nothere.csv\"\npixel_size = \"0.5 um\"", "");
+    case.rejects(&[
+        "scenario.toml:6: surface.height_map: cannot read height map",
+        "nothere.csv",
+    ]);
+    let map = synthetic_map(1);
+    let case = Case::new(
+        "height_map = \"map.csv\"\npixel_size = \"0.5 um\"\nheight_unit = \"MPa\"",
+        &csv(&map, 1.0),
+    );
+    case.rejects(&["scenario.toml:8: surface.height_unit: expected a length unit"]);
+    let case = Case::new(
+        "height_map = \"map.csv\"\npixel_size = \"0.5 MPa\"",
+        &csv(&map, 1.0),
+    );
+    case.rejects(&["scenario.toml:7: surface.pixel_size: expected a length"]);
+}
