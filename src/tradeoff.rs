@@ -6,7 +6,8 @@
 //! * **full spectrum** — the analytic levels (rule of thumb, critical junction by table and by
 //!   quadrature, effective medium) on the scenario's own spectrum, static and life. Reference:
 //!   the critical junction by quadrature with 4× the quadrature nodes and 4× the time grid
-//!   (the paper's model, converged). The errors of the table and of the quadrature settings
+//!   (and the clogging tolerance ×0.01, with `[contamination]`) — the paper's model,
+//!   converged. The errors of the table and of the quadrature settings
 //!   are numerical; those of the rule of thumb and of the effective medium are model
 //!   differences.
 //! * **band-limited** — the numerical reference resolves only a band q1/q0 of a few tens, so
@@ -137,15 +138,18 @@ struct Setting {
     table: TableSettings,
     quadrature: f64,
     time_grid: f64,
+    /// Factor on the clogging ODE tolerance (only with `[contamination]`).
+    clogging_tolerance: f64,
 }
 
-fn full_spectrum_ladder() -> Vec<Setting> {
+fn full_spectrum_ladder(clogging: bool) -> Vec<Setting> {
     let base = |level, label: &str| Setting {
         level,
         label: label.to_owned(),
         table: TableSettings::default(),
         quadrature: 1.0,
         time_grid: 1.0,
+        clogging_tolerance: 1.0,
     };
     let mut ladder = vec![base(Fidelity::RuleOfThumb, "closed form")];
     for ppd in [3.0, 6.0, 12.0, 24.0] {
@@ -169,6 +173,14 @@ fn full_spectrum_ladder() -> Vec<Setting> {
             ..base(Fidelity::Table, &format!("table, time grid ×{g}"))
         });
     }
+    if clogging {
+        for f in [100.0, 0.01] {
+            ladder.push(Setting {
+                clogging_tolerance: f,
+                ..base(Fidelity::Table, &format!("table, clogging tolerance ×{f}"))
+            });
+        }
+    }
     ladder.push(base(Fidelity::EffectiveMedium, "table 8 pts/decade"));
     ladder.push(Setting {
         table: TableSettings {
@@ -184,6 +196,9 @@ fn with_settings(problem: &LifeProblem, setting: &Setting) -> LifeProblem {
     let mut p = problem.clone();
     p.contact.quadrature = QuadratureSettings::default().refined(setting.quadrature);
     p.time.points_per_decade *= setting.time_grid;
+    if let Some(c) = &mut p.contamination {
+        c.tolerance *= setting.clogging_tolerance;
+    }
     p.fidelity = setting.level;
     p
 }
@@ -238,7 +253,7 @@ pub fn run(
     options: &TradeoffOptions,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Vec<TradeoffRow> {
-    let ladder = full_spectrum_ladder();
+    let ladder = full_spectrum_ladder(life.contamination.is_some());
     let numerical = if options.skip_numerical {
         0
     } else {
@@ -258,6 +273,7 @@ pub fn run(
         table: TableSettings::default(),
         quadrature: 4.0,
         time_grid: 4.0,
+        clogging_tolerance: 0.01,
     };
     let ref_life = with_settings(life, &reference);
     let (ref_static_s, ref_q) = static_state(problem, &ref_life, &reference);
