@@ -99,7 +99,7 @@ impl Default for TradeoffOptions {
     fn default() -> Self {
         TradeoffOptions {
             band: 32.0,
-            numerical_ladder: vec![(4, 4), (8, 4), (8, 8), (16, 8)],
+            numerical_ladder: vec![(4, 8), (8, 8), (16, 8), (16, 32)],
             seed: 1,
             skip_numerical: false,
         }
