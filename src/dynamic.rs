@@ -75,12 +75,24 @@
 //! **Not modelled** (also absent from PY08 §8): hydrodynamic lift above the speed bound,
 //! speed-dependent or viscoelastic contact, starvation (a dry low-pressure side that cannot
 //! supply the in-stroke), the `C` terms of eq. 13.
+//!
+//! **In scenarios** (`[motion]`, [`MotionSpec`]): constant sliding ([`Motion::Steady`], the
+//! out-stroke direction) or a stroke cycle ([`Motion::Stroke`]). [`MotionSpec::evaluate`]
+//! turns a state's coefficients and static leak rate into the reported [`MotionPoint`]: the
+//! drag at the sliding speed (a cycle: at the out-stroke speed), the film, the speed bound and
+//! whether the fastest speed exceeds it, and a cycle's volumes ([`stroke_cycle_from`], on the
+//! static leak rate of the caller: the fidelity level's for `sealsim leak`, the O-ring's
+//! strips in series for `sealsim run`). Constant sliding adds its drag to the leak rate; a
+//! stroke cycle does not (its drag volumes cancel). `sealsim leak` evaluates
+//! [`DragCoefficients::compute`] at every pressure; the life run looks I up in a
+//! [`DragTable`] built once per run.
 
 use crate::contact::{
     CriticalJunction, EffectiveMediumSettings, Elastic, Junction, PerssonContact,
     SeparationDistribution,
 };
 use crate::leak::FlatSeal;
+use crate::numerics::interp::UniformCubic;
 use crate::numerics::quadrature::gauss_legendre;
 use crate::numerics::special::erfc;
 use std::f64::consts::{FRAC_1_SQRT_2, PI};
@@ -404,6 +416,7 @@ pub fn separation_integral(
         return 0.0;
     }
     let mut point_part = 0.0;
+    // (component, lowest and highest x = ln(u/u_c) where it is above e^{−32} of its peak)
     let mut active = Vec::new();
     let mut u_max = u_c;
     for g in distribution.components() {
@@ -419,7 +432,8 @@ pub fn separation_integral(
         let top = g.center + SIGMAS * g.width;
         if top > u_c {
             u_max = u_max.max(top);
-            active.push(*g);
+            let bottom = (g.center - SIGMAS * g.width).max(u_c);
+            active.push((*g, (bottom / u_c).ln(), (top / u_c).ln()));
         }
     }
     let mut continuous = 0.0;
@@ -434,17 +448,34 @@ pub fn separation_integral(
         let panels = (x_max / width).ceil().max(1.0) as usize;
         let h = x_max / panels as f64;
         let inv_sqrt_2pi = 1.0 / (2.0 * PI).sqrt();
+        let mut window = Vec::with_capacity(active.len());
         for p in 0..panels {
             let mid = (p as f64 + 0.5) * h;
+            // Only the components within 8 widths of the panel contribute (the others are
+            // below e^{−32} of their peak there, and so is their folded image: u + center ≥
+            // |u − center|).
+            let (x_a, x_b) = (mid - 0.5 * h, mid + 0.5 * h);
+            window.clear();
+            window.extend(
+                active
+                    .iter()
+                    .filter(|(_, lo, hi)| *lo <= x_b && *hi >= x_a)
+                    .map(|(g, _, _)| {
+                        let inv = 1.0 / g.width;
+                        (g.weight * inv, inv, g.center)
+                    }),
+            );
+            if window.is_empty() {
+                continue;
+            }
             for (node, w) in nodes.iter().zip(&weights) {
                 let x = mid + 0.5 * h * node;
                 let u = u_c * x.exp();
-                let rho: f64 = active
+                let rho: f64 = window
                     .iter()
-                    .map(|g| {
-                        let inv = 1.0 / g.width;
-                        let (a, b) = ((u - g.center) * inv, (u + g.center) * inv);
-                        g.weight * inv * ((-0.5 * a * a).exp() + (-0.5 * b * b).exp())
+                    .map(|&(weight_over_width, inv, center)| {
+                        let (a, b) = ((u - center) * inv, (u + center) * inv);
+                        weight_over_width * ((-0.5 * a * a).exp() + (-0.5 * b * b).exp())
                     })
                     .sum::<f64>()
                     * inv_sqrt_2pi;
@@ -454,4 +485,343 @@ pub fn separation_integral(
         }
     }
     (continuous + point_part) / norm
+}
+
+/// The motion of the countersurface in a scenario (`[motion]`): constant sliding or a stroke
+/// cycle. Speeds are magnitudes [m/s], lengths in m.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Motion {
+    /// Constant sliding at `speed` ≥ 0 in the out-stroke direction (`v0 = +speed`: the
+    /// countersurface drags fluid from the high-pressure side to the low-pressure side).
+    Steady { speed: f64 },
+    /// A reciprocating cycle: the out-stroke over `stroke` at `v0 = +out_speed`, then the
+    /// in-stroke back at `v0 = −in_speed` (all > 0).
+    Stroke {
+        stroke: f64,
+        out_speed: f64,
+        in_speed: f64,
+    },
+}
+
+/// A scenario's `[motion]`: the motion and where along the width the critical junction sits
+/// ([`ReciprocatingSeal::junction_position`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MotionSpec {
+    pub motion: Motion,
+    /// `L_a/L_x` ∈ (0, 1) (½ for a symmetric seal); changes only the split `B_a`/`B_b`.
+    pub junction_position: f64,
+}
+
+/// The motion quantities of one seal state (one pressure of `sealsim leak`, one time of
+/// `sealsim run`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MotionPoint {
+    /// The drag term `L_y d v` [m³/s] at [`MotionSpec::drag_speed`] (the sliding speed, or the
+    /// out-stroke speed of a cycle). 0 when sealed.
+    pub drag_leak_rate: f64,
+    /// The film `d = β u_c` \[m\] the countersurface carries out (PY08 eq. 16). 0 when sealed.
+    pub film_thickness: f64,
+    /// The speed bound of PY08's second eq. 17 [m/s] (+∞ when sealed).
+    pub speed_bound: f64,
+    /// [`MotionSpec::fastest_speed`] exceeds [`Self::speed_bound`]: the drag pressure would open
+    /// the critical constriction (hydrodynamic lift-off), which is not modelled.
+    pub above_bound: bool,
+    /// A stroke cycle's volumes; `None` for constant sliding.
+    pub cycle: Option<StrokeCycle>,
+}
+
+impl MotionSpec {
+    /// Constant sliding at `speed` with the junction at the centre.
+    pub fn steady(speed: f64) -> Self {
+        MotionSpec {
+            motion: Motion::Steady { speed },
+            junction_position: 0.5,
+        }
+    }
+
+    /// The speed the drag term is evaluated at [m/s]: the sliding speed, or a cycle's
+    /// out-stroke speed (the direction that carries fluid out).
+    pub fn drag_speed(&self) -> f64 {
+        match self.motion {
+            Motion::Steady { speed } => speed,
+            Motion::Stroke { out_speed, .. } => out_speed,
+        }
+    }
+
+    /// The largest speed of the motion [m/s], the one checked against the speed bound.
+    pub fn fastest_speed(&self) -> f64 {
+        match self.motion {
+            Motion::Steady { speed } => speed,
+            Motion::Stroke {
+                out_speed,
+                in_speed,
+                ..
+            } => out_speed.max(in_speed),
+        }
+    }
+
+    /// The cycle time `S/v_out + S/v_in` \[s\] of a stroke cycle; `None` for constant sliding.
+    pub fn period(&self) -> Option<f64> {
+        match self.motion {
+            Motion::Steady { .. } => None,
+            Motion::Stroke {
+                stroke,
+                out_speed,
+                in_speed,
+            } => Some(stroke / out_speed + stroke / in_speed),
+        }
+    }
+
+    /// Whether the motion is a stroke cycle.
+    pub fn is_stroke(&self) -> bool {
+        matches!(self.motion, Motion::Stroke { .. })
+    }
+
+    /// The drag speed that adds to the time-averaged leak rate: the sliding speed for
+    /// constant sliding; 0 for a stroke cycle, whose drag volumes cancel over a cycle in the
+    /// linear theory ([`stroke_cycle`]).
+    pub fn mean_drag_speed(&self) -> f64 {
+        match self.motion {
+            Motion::Steady { speed } => speed,
+            Motion::Stroke { .. } => 0.0,
+        }
+    }
+
+    /// The [`ReciprocatingSeal`] of a flat contact under this motion.
+    pub fn seal(
+        &self,
+        material: Elastic,
+        seal: FlatSeal,
+        viscosity: f64,
+        shape_factor: f64,
+    ) -> ReciprocatingSeal {
+        ReciprocatingSeal {
+            material,
+            seal,
+            viscosity,
+            shape_factor,
+            junction_position: self.junction_position,
+        }
+    }
+
+    /// The motion quantities of a state with drag coefficients `coeffs` and static
+    /// (pressure-driven) leak rate `static_leak_rate` [m³/s]. The stroke volumes take the
+    /// given static leak rate (the level's, or an O-ring's strips in series) and the drag of
+    /// `coeffs` ([`stroke_cycle_from`]).
+    pub fn evaluate(&self, coeffs: &DragCoefficients, static_leak_rate: f64) -> MotionPoint {
+        let cycle = match self.motion {
+            Motion::Steady { .. } => None,
+            Motion::Stroke {
+                stroke,
+                out_speed,
+                in_speed,
+            } => stroke_cycle_from(static_leak_rate, coeffs, out_speed, in_speed, stroke),
+        };
+        MotionPoint {
+            drag_leak_rate: drag_leak_rate(coeffs, self.drag_speed()),
+            film_thickness: coeffs.film_thickness,
+            speed_bound: coeffs.speed_bound,
+            above_bound: self.fastest_speed() > coeffs.speed_bound,
+            cycle,
+        }
+    }
+
+    /// `point` with only a fraction of its channels carrying flow: the drag (rate, film,
+    /// stroke volume) scaled by `drag_scale` and the stroke volumes rebuilt on the static leak
+    /// rate `static_leak_rate` (used under particle clogging, [`crate::simulate`]). The speed
+    /// bound is unchanged.
+    pub fn rescale(
+        &self,
+        point: MotionPoint,
+        static_leak_rate: f64,
+        drag_scale: f64,
+    ) -> MotionPoint {
+        let cycle = match (self.motion, point.cycle) {
+            (
+                Motion::Stroke {
+                    stroke,
+                    out_speed,
+                    in_speed,
+                },
+                Some(c),
+            ) => Some(assemble_cycle(
+                static_leak_rate,
+                c.drag_volume * drag_scale,
+                stroke / out_speed,
+                stroke / in_speed,
+                c.within_speed_bound,
+            )),
+            _ => None,
+        };
+        MotionPoint {
+            drag_leak_rate: point.drag_leak_rate * drag_scale,
+            film_thickness: point.film_thickness * drag_scale,
+            cycle,
+            ..point
+        }
+    }
+}
+
+/// [`stroke_cycle`] with the static part given as a leak rate `static_leak_rate` [m³/s]
+/// instead of `conductance · ΔP` (for a static leak computed elsewhere: another fidelity level,
+/// or an O-ring's strips in series), the drag from `coeffs`:
+/// `out = Q̇_s S/v_out + L_y d S`, `in = Q̇_s S/v_in − L_y d S`, `net = Q̇_s · period`.
+/// For a flat seal at the critical-junction level, `Q̇_s = (L_y/L_x) M ΔP` and this is
+/// [`stroke_cycle`]. `None` on the same invalid input.
+pub fn stroke_cycle_from(
+    static_leak_rate: f64,
+    coeffs: &DragCoefficients,
+    out_speed: f64,
+    in_speed: f64,
+    stroke: f64,
+) -> Option<StrokeCycle> {
+    let ok = |v: f64| v > 0.0 && v.is_finite();
+    if !(ok(out_speed) && ok(in_speed) && stroke >= 0.0 && stroke.is_finite()) {
+        return None;
+    }
+    Some(assemble_cycle(
+        static_leak_rate,
+        drag_leak_rate(coeffs, 1.0) * stroke,
+        stroke / out_speed,
+        stroke / in_speed,
+        out_speed < coeffs.speed_bound && in_speed < coeffs.speed_bound,
+    ))
+}
+
+/// The cycle of a static leak rate [m³/s] and a drag volume per stroke [m³], with the
+/// durations of the two strokes [s].
+fn assemble_cycle(
+    static_leak_rate: f64,
+    drag_volume: f64,
+    t_out: f64,
+    t_in: f64,
+    within_speed_bound: bool,
+) -> StrokeCycle {
+    let out_volume = static_leak_rate * t_out + drag_volume;
+    let in_volume = static_leak_rate * t_in - drag_volume;
+    let period = t_out + t_in;
+    StrokeCycle {
+        period,
+        out_volume,
+        in_volume,
+        net_volume: out_volume + in_volume,
+        static_volume: static_leak_rate * period,
+        drag_volume,
+        within_speed_bound,
+    }
+}
+
+/// Nodes of [`DragTable`].
+const DRAG_TABLE_NODES: usize = 40;
+/// [`DragTable`] starts at `s = 1e-4 s_seal`.
+const DRAG_TABLE_LOW: f64 = 1e-4;
+/// [`DragTable`] ends at `s = (1 − 0.03) s_seal`, like the contact table.
+const DRAG_TABLE_UPPER_GAP: f64 = 0.03;
+
+/// The integral I of a surface against the reduced pressure, tabulated once (for the life
+/// run, which needs it at every time step; P(u) costs ≈ 3–4 ms per pressure).
+///
+/// Near the sealing pressure I is not smooth in ln s: it falls from ≈ 0.06 at 0.7 s_seal to
+/// 5e-6 at 0.96 s_seal, like u_c itself (for u_c much below the widths of P(u),
+/// `I ≈ u_c ρ(0)/∫_{u_c}^∞ P`). What is smooth is `ln(I/u_c)`, so that is tabulated, on the
+/// contact table's grid variable `logit(s/s_seal)` ([`crate::contact::ContactTable`]), with
+/// 40 nodes from `1e-4 s_seal` to `0.97 s_seal` and 4-point cubic
+/// interpolation; a lookup multiplies by the u_c of the junction it is given. Below the table
+/// the direct evaluation answers; above it (within 3 % of sealing, where the film
+/// `d = (α/2) I u_c` is below 1e-20 m) `I/u_c` is held at its last value. The interpolation
+/// error against the direct evaluation is measured in tests/motion.rs.
+#[derive(Debug, Clone)]
+pub struct DragTable {
+    contact: PerssonContact,
+    settings: DragSettings,
+    s_seal: f64,
+    /// `ln(I/u_c [1/m])` against `logit(s/s_seal)`; `None` when fewer than 4 nodes leak.
+    grid: Option<UniformCubic>,
+}
+
+impl DragTable {
+    /// Tabulates I for the surface of `contact` (two threads take alternate nodes; each node
+    /// is one exact junction, one P(u) and one I).
+    pub fn build(contact: &PerssonContact, settings: DragSettings) -> Self {
+        let s_seal = contact.sealing_reduced_pressure();
+        let lo = logit(DRAG_TABLE_LOW);
+        let hi = logit(1.0 - DRAG_TABLE_UPPER_GAP);
+        let n = DRAG_TABLE_NODES;
+        let h = (hi - lo) / (n - 1) as f64;
+        let node = |i: usize| -> Option<f64> {
+            let s = s_seal * logistic(lo + h * i as f64);
+            let j = *contact.critical_junction(s).leaking()?;
+            let p = SeparationDistribution::persson(contact, s, settings.distribution);
+            let i = separation_integral(&p, j.u_c, &settings);
+            let v = (i / j.u_c).ln();
+            v.is_finite().then_some(v)
+        };
+        let mut nodes: Vec<Option<f64>> = vec![None; n];
+        std::thread::scope(|scope| {
+            let odd = scope.spawn(|| (1..n).step_by(2).map(node).collect::<Vec<_>>());
+            for i in (0..n).step_by(2) {
+                nodes[i] = node(i);
+            }
+            // a panic in the worker is a bug, not an input error: propagate it
+            let odd = odd.join().unwrap_or_else(|e| std::panic::resume_unwind(e));
+            for (k, v) in odd.into_iter().enumerate() {
+                nodes[2 * k + 1] = v;
+            }
+        });
+        let values: Vec<f64> = nodes.into_iter().map_while(|v| v).collect();
+        let grid = (values.len() >= 4).then(|| UniformCubic::new(lo, h, values));
+        DragTable {
+            contact: contact.clone(),
+            settings,
+            s_seal,
+            grid,
+        }
+    }
+
+    /// The range of `s = P0/E*` the table covers (`None`: no table, every lookup is direct).
+    pub fn range(&self) -> Option<(f64, f64)> {
+        let (a, b) = self.grid.as_ref()?.range();
+        Some((self.s_seal * logistic(a), self.s_seal * logistic(b)))
+    }
+
+    /// I at reduced pressure `s`, for the critical junction `junction` there (module docs of
+    /// [`DragTable`]); in [0, 1].
+    pub fn integral(&self, s: f64, junction: &CriticalJunction) -> f64 {
+        let v = logit(s / self.s_seal);
+        let ln_ratio = match &self.grid {
+            Some(g) if v >= g.range().0 => g.eval(v.min(g.range().1)),
+            _ => {
+                let p =
+                    SeparationDistribution::persson(&self.contact, s, self.settings.distribution);
+                return separation_integral(&p, junction.u_c, &self.settings);
+            }
+        };
+        let i = junction.u_c * ln_ratio.exp();
+        if i.is_nan() { 0.0 } else { i.clamp(0.0, 1.0) }
+    }
+
+    /// The drag coefficients of `seal` at reduced pressure `s` with the critical junction
+    /// `junction` there (e.g. from a contact table): [`DragCoefficients::from_integral`] with
+    /// the tabulated I.
+    pub fn coefficients(
+        &self,
+        s: f64,
+        junction: &Junction,
+        seal: &ReciprocatingSeal,
+    ) -> DragCoefficients {
+        match junction {
+            Junction::Leaking(j) => DragCoefficients::from_integral(j, self.integral(s, j), seal),
+            Junction::Sealed => DragCoefficients::sealed(seal),
+        }
+    }
+}
+
+/// `ln(r/(1−r))` (the contact table's grid variable).
+fn logit(r: f64) -> f64 {
+    r.ln() - (-r).ln_1p()
+}
+
+/// Inverse of [`logit`].
+fn logistic(v: f64) -> f64 {
+    1.0 / (1.0 + (-v).exp())
 }

@@ -130,6 +130,15 @@ pub enum Warning {
         reduced_pressure: f64,
         message: String,
     },
+    /// `[motion]`: the sliding speed exceeds the validity bound of PY08's second eq. 17: the
+    /// drag pressure opens the critical constriction (hydrodynamic lift-off, not modelled).
+    SpeedAboveBound {
+        nominal_pressure: f64,
+        /// The fastest speed of the motion [m/s].
+        speed: f64,
+        /// `E u_c³/(6 L η λ_c I)` [m/s].
+        bound: f64,
+    },
 }
 
 impl fmt::Display for Warning {
@@ -184,6 +193,17 @@ impl fmt::Display for Warning {
                 f,
                 "the numerical level failed at P0/E* = {reduced_pressure:.4e} and left that node out: \
                  {message}"
+            ),
+            Warning::SpeedAboveBound {
+                nominal_pressure,
+                speed,
+                bound,
+            } => write!(
+                f,
+                "at P0 = {nominal_pressure:.4e} Pa, the sliding speed {speed:.4e} m/s exceeds the \
+                 validity bound {bound:.4e} m/s of PY08 eq. 17 (E u_c³/(6 L η λ_c I)): the drag \
+                 pressure opens the critical constriction; hydrodynamic lift-off is not modelled \
+                 (the drag leak rate is likely underestimated)"
             ),
         }
     }
@@ -361,6 +381,20 @@ impl ContactPath {
                 let a_c = junctions.exact().settings().percolation_threshold;
                 Self::gap_channel(table.effective_gap(s), junctions, s, a_c.max(0.5))
             }
+        }
+    }
+
+    /// The critical junction of Persson's theory (`u_c = u1(ζc)`, PY08 §2) at `s`, whatever
+    /// the level: the level's own for the critical-junction levels (table or exact), the
+    /// critical-junction table the effective-medium and numerical levels carry, the exact path
+    /// for the rule of thumb (whose own u_c is h_rms(ζc)). The reciprocating-seal theory
+    /// (PY08 §8, [`crate::dynamic`]) is built on this junction.
+    pub fn persson_junction(&self, s: f64) -> Junction {
+        match self {
+            ContactPath::RuleOfThumb(c) | ContactPath::Exact(c) => c.critical_junction(s),
+            ContactPath::Table(t) => t.critical_junction(s),
+            ContactPath::EffectiveMedium(t) => t.junctions().critical_junction(s),
+            ContactPath::Numerical { junctions, .. } => junctions.critical_junction(s),
         }
     }
 

@@ -66,6 +66,7 @@ fn oring_problem(material: Material) -> LifeProblem {
         fidelity: Fidelity::Table,
         strips: 16,
         contamination: None,
+        motion: None,
     }
 }
 

@@ -1,9 +1,10 @@
 //! `sealsim leak`: leak rate of a flat seal at one or more nominal pressures, as CSV.
 
 use super::{CliError, write_output};
-use crate::leak::{ContactPath, Fidelity, LeakPoint, PathOptions, StaticSolver, Warning};
+use crate::dynamic::{DragCoefficients, DragSettings, MotionPoint, MotionSpec};
+use crate::leak::{ContactPath, Fidelity, FlatSeal, LeakPoint, PathOptions, StaticSolver, Warning};
 use crate::numerics::log_spaced;
-use crate::report::csv::leak_table;
+use crate::report::csv::{leak_table, motion_leak_table};
 use crate::scenario::Scenario;
 use crate::scenario::life::parse_fidelity;
 use crate::units::{self, Dimension};
@@ -24,7 +25,18 @@ const MAX_SWEEP_POINTS: i64 = 1_000_000;
     leak_rate_m3_per_s, state (leaking|sealed); lambda_c = 2π/(zeta_c q0).\n\
     With --fidelity effective-medium, u_c_m is the effective gap (12 η σ_eff)^(1/3) and the other \
     junction columns are the critical junction's at the same pressure; with rule-of-thumb, \
-    u_c_m = ubar_c_m = hrms_c_m (the level computes no separation)."
+    u_c_m = ubar_c_m = hrms_c_m (the level computes no separation).\n\
+    With [motion] (a reciprocating seal, PY08 §8) the columns drag_leak_rate_m3_per_s (the drag \
+    L_y d v at the sliding speed, or at the out-stroke speed of a stroke cycle), film_thickness_m \
+    (the film d = β u_c the countersurface carries out, PY08 eq. 16) and speed_bound_m_per_s (the \
+    validity bound of PY08's second eq. 17; blank when sealed) follow state, and for a stroke \
+    cycle out_stroke_volume_m3, in_stroke_volume_m3 and net_volume_per_cycle_m3 (one cycle's \
+    volumes, positive from the pressurised side to the outside). With constant sliding \
+    leak_rate_m3_per_s is static + drag; with a stroke cycle it stays the static rate (the drag \
+    volumes cancel over a cycle in the linear theory). The drag always uses the exact critical \
+    junction and Persson's P(u) (the theory of PY08 §8 is built on the critical junction), \
+    whatever --fidelity; a warning reports a speed above the bound (hydrodynamic lift-off is not \
+    modelled)."
 )]
 pub struct LeakArgs {
     /// Scenario file (TOML).
@@ -125,15 +137,54 @@ pub fn run(args: LeakArgs) -> Result<(), CliError> {
     );
     let path_warnings = path.warnings(&options);
     let solver = StaticSolver::with_path(scenario.problem.clone(), path);
-    let points: Vec<LeakPoint> = pressures.iter().map(|&p0| solver.evaluate(p0)).collect();
-    let csv = leak_table(&points)?;
-    print_warnings(
-        None,
-        path_warnings
-            .into_iter()
-            .chain(points.iter().flat_map(|p| solver.warnings(p))),
-    );
+    let mut points: Vec<LeakPoint> = pressures.iter().map(|&p0| solver.evaluate(p0)).collect();
+    let mut warnings: Vec<Warning> = points.iter().flat_map(|p| solver.warnings(p)).collect();
+    let csv = match &scenario.motion {
+        None => leak_table(&points)?,
+        Some(spec) => {
+            let motion: Vec<MotionPoint> = points
+                .iter_mut()
+                .map(|point| motion_point(&solver, spec, point, &mut warnings))
+                .collect();
+            motion_leak_table(&points, &motion, spec.is_stroke())?
+        }
+    };
+    print_warnings(None, path_warnings.into_iter().chain(warnings));
     write_output(args.output.as_deref(), csv.as_bytes())
+}
+
+/// The motion quantities at `point` (exact critical junction and P(u) at its pressure); with
+/// constant sliding the drag is added to the point's leak rate. A speed above the bound adds a
+/// warning.
+fn motion_point(
+    solver: &StaticSolver,
+    spec: &MotionSpec,
+    point: &mut LeakPoint,
+    warnings: &mut Vec<Warning>,
+) -> MotionPoint {
+    let pb = solver.problem();
+    let seal = spec.seal(
+        pb.material,
+        FlatSeal {
+            nominal_pressure: point.nominal_pressure,
+            ..pb.seal
+        },
+        pb.fluid.viscosity,
+        pb.shape_factor,
+    );
+    let coeffs = DragCoefficients::compute(solver.path().exact(), &seal, &DragSettings::default());
+    let m = spec.evaluate(&coeffs, point.leak_rate);
+    if !spec.is_stroke() {
+        point.leak_rate += m.drag_leak_rate;
+    }
+    if m.above_bound {
+        warnings.push(Warning::SpeedAboveBound {
+            nominal_pressure: point.nominal_pressure,
+            speed: spec.fastest_speed(),
+            bound: m.speed_bound,
+        });
+    }
+    m
 }
 
 /// Prints warnings to stderr, one line per kind: the first message, and how many more

@@ -7,6 +7,7 @@
 
 use super::ReportError;
 use crate::contact::Junction;
+use crate::dynamic::MotionPoint;
 use crate::leak::LeakPoint;
 
 /// Columns of the leak table, in order. Units are in the names; `state` is `leaking` or
@@ -22,9 +23,79 @@ pub const LEAK_COLUMNS: [&str; 8] = [
     "state",
 ];
 
+/// Columns the leak table gets after `state` for a scenario with `[motion]` (PY08 §8): the
+/// first three always, the last three for a stroke cycle.
+///
+/// * `drag_leak_rate_m3_per_s`: the drag term `L_y d v` at the sliding speed (or the
+///   out-stroke speed of a cycle); with constant sliding `leak_rate_m3_per_s` includes it;
+/// * `film_thickness_m`: the film `d = β u_c` dragged out (PY08 eq. 16);
+/// * `speed_bound_m_per_s`: the validity bound of PY08's second eq. 17 (blank when sealed:
+///   no constriction to open);
+/// * `out_stroke_volume_m3`, `in_stroke_volume_m3`, `net_volume_per_cycle_m3`: the volumes
+///   of one cycle, positive from the pressurised side a to the outside b.
+pub const MOTION_COLUMNS: [&str; 6] = [
+    "drag_leak_rate_m3_per_s",
+    "film_thickness_m",
+    "speed_bound_m_per_s",
+    "out_stroke_volume_m3",
+    "in_stroke_volume_m3",
+    "net_volume_per_cycle_m3",
+];
+
 /// The leak table of `points` (header plus one row per point), as CSV text.
 pub fn leak_table(points: &[LeakPoint]) -> Result<String, ReportError> {
-    table(None, points.iter().map(|p| ("", p)))
+    table(None, &[], points.iter().map(|p| ("", p, Ok(Vec::new()))))
+}
+
+/// The leak table with the [`MOTION_COLUMNS`] of each point's motion (`motion[i]` belongs to
+/// `points[i]`); the stroke columns only when `stroke`.
+pub fn motion_leak_table(
+    points: &[LeakPoint],
+    motion: &[MotionPoint],
+    stroke: bool,
+) -> Result<String, ReportError> {
+    if points.len() != motion.len() {
+        return Err(ReportError::Csv(format!(
+            "{} leak points but {} motion points",
+            points.len(),
+            motion.len()
+        )));
+    }
+    let columns = if stroke { 6 } else { 3 };
+    table(
+        None,
+        &MOTION_COLUMNS[..columns],
+        points
+            .iter()
+            .zip(motion)
+            .enumerate()
+            .map(|(i, (p, m))| ("", p, motion_cells(i + 1, m, columns))),
+    )
+}
+
+/// The motion cells of data row `row` (1-based).
+fn motion_cells(row: usize, m: &MotionPoint, columns: usize) -> Result<Vec<String>, ReportError> {
+    let cell = |column: usize, value: f64| number(row, MOTION_COLUMNS[column], value);
+    let mut cells = vec![
+        cell(0, m.drag_leak_rate)?,
+        cell(1, m.film_thickness)?,
+        if m.speed_bound.is_finite() {
+            cell(2, m.speed_bound)?
+        } else {
+            String::new()
+        },
+    ];
+    if columns == 6 {
+        match &m.cycle {
+            Some(c) => {
+                cells.push(cell(3, c.out_volume)?);
+                cells.push(cell(4, c.in_volume)?);
+                cells.push(cell(5, c.net_volume)?);
+            }
+            None => cells.extend([String::new(), String::new(), String::new()]),
+        }
+    }
+    Ok(cells)
 }
 
 /// The leak table with a leading `scenario` column naming the scenario of each row (for
@@ -32,17 +103,27 @@ pub fn leak_table(points: &[LeakPoint]) -> Result<String, ReportError> {
 pub fn scenario_leak_table<'a>(
     rows: impl IntoIterator<Item = (&'a str, &'a LeakPoint)>,
 ) -> Result<String, ReportError> {
-    table(Some("scenario"), rows)
+    table(
+        Some("scenario"),
+        &[],
+        rows.into_iter().map(|(l, p)| (l, p, Ok(Vec::new()))),
+    )
 }
 
+/// The table: an optional label column, [`LEAK_COLUMNS`], then `extra_columns` whose cells
+/// each row brings along (or the error that stops the table).
 fn table<'a>(
     label_column: Option<&str>,
-    rows: impl IntoIterator<Item = (&'a str, &'a LeakPoint)>,
+    extra_columns: &[&str],
+    rows: impl IntoIterator<Item = (&'a str, &'a LeakPoint, Result<Vec<String>, ReportError>)>,
 ) -> Result<String, ReportError> {
     let mut writer = ::csv::Writer::from_writer(Vec::new());
-    let header = label_column.into_iter().chain(LEAK_COLUMNS);
+    let header = label_column
+        .into_iter()
+        .chain(LEAK_COLUMNS)
+        .chain(extra_columns.iter().copied());
     writer.write_record(header).map_err(csv_error)?;
-    for (index, (label, point)) in rows.into_iter().enumerate() {
+    for (index, (label, point, extra)) in rows.into_iter().enumerate() {
         let cell = |column: usize, value: f64| number(index + 1, LEAK_COLUMNS[column], value);
         let record = match point.junction {
             Junction::Leaking(j) => [
@@ -68,7 +149,7 @@ fn table<'a>(
         };
         let label = label_column.map(|_| label.to_owned());
         writer
-            .write_record(label.into_iter().chain(record))
+            .write_record(label.into_iter().chain(record).chain(extra?))
             .map_err(csv_error)?;
     }
     finish(writer)
@@ -144,6 +225,85 @@ mod tests {
             .parse()
             .unwrap();
         assert_eq!(cell, x);
+    }
+
+    #[test]
+    fn motion_columns_follow_state_and_blank_an_infinite_bound() {
+        use crate::dynamic::StrokeCycle;
+        let sealed = LeakPoint {
+            nominal_pressure: 3e6,
+            junction: Junction::Sealed,
+            leak_rate: 0.0,
+        };
+        let moving = MotionPoint {
+            drag_leak_rate: 4e-11,
+            film_thickness: 8e-9,
+            speed_bound: 6e-3,
+            above_bound: true,
+            cycle: None,
+        };
+        let still = MotionPoint {
+            drag_leak_rate: 0.0,
+            film_thickness: 0.0,
+            speed_bound: f64::INFINITY,
+            above_bound: false,
+            cycle: None,
+        };
+        let points = [leaking(2e5, 0.1), sealed];
+        let text = motion_leak_table(&points, &[moving, still], false).unwrap();
+        let lines: Vec<&str> = text.lines().collect();
+        assert_eq!(
+            lines[0],
+            format!(
+                "{},{}",
+                LEAK_COLUMNS.join(","),
+                MOTION_COLUMNS[..3].join(",")
+            )
+        );
+        assert_eq!(
+            lines[1],
+            "2e5,1.65e1,3.8e-5,1e-1,2e-7,1e-7,1.25e-12,leaking,4e-11,8e-9,6e-3"
+        );
+        assert_eq!(lines[2], "3e6,,,,,,0e0,sealed,0e0,0e0,");
+        // a stroke cycle: three more columns
+        let cycle = StrokeCycle {
+            period: 2.0,
+            out_volume: 1e-12,
+            in_volume: -0.5e-12,
+            net_volume: 0.5e-12,
+            static_volume: 0.5e-12,
+            drag_volume: 0.75e-12,
+            within_speed_bound: true,
+        };
+        let stroke = MotionPoint {
+            cycle: Some(cycle),
+            ..moving
+        };
+        let text = motion_leak_table(&points[..1], &[stroke], true).unwrap();
+        let lines: Vec<&str> = text.lines().collect();
+        assert_eq!(
+            lines[0],
+            format!("{},{}", LEAK_COLUMNS.join(","), MOTION_COLUMNS.join(","))
+        );
+        assert!(
+            lines[1].ends_with(",4e-11,8e-9,6e-3,1e-12,-5e-13,5e-13"),
+            "{}",
+            lines[1]
+        );
+        // a non-finite motion value is refused like any other
+        let bad = MotionPoint {
+            film_thickness: f64::NAN,
+            ..moving
+        };
+        assert!(matches!(
+            motion_leak_table(&points[..1], &[bad], false),
+            Err(ReportError::NonFinite {
+                row: 1,
+                column: "film_thickness_m",
+                ..
+            })
+        ));
+        assert!(motion_leak_table(&points, &[moving], false).is_err());
     }
 
     #[test]

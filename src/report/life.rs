@@ -10,10 +10,11 @@ use super::ReportError;
 use super::csv::{csv_error, finish, number};
 use super::materials::human;
 use super::plot::{LogLogChart, Series};
+use crate::dynamic::{Motion, MotionPoint, MotionSpec, StrokeCycle};
 use crate::material::shift::{DAY, YEAR};
 use crate::material::{Material, Status};
 use crate::seal::SealGeometry;
-use crate::simulate::{AsperityModulus, LifeProblem, LifeResult, Loading};
+use crate::simulate::{AsperityModulus, LifeProblem, LifeResult, LifeWarning, Loading};
 use serde::Serialize;
 
 /// Columns of the history CSV, in order (units in the names).
@@ -43,14 +44,56 @@ pub const HISTORY_COLUMNS: [&str; 13] = [
     "open_fraction",
 ];
 
+/// Columns the history gets after [`HISTORY_COLUMNS`] with `[motion]` (PY08 §8): the first
+/// always, the second for a stroke cycle.
+///
+/// * `drag_leak_rate_m3_per_s`: the drag term `L_y d v` at the peak strip — constant
+///   sliding: at the sliding speed, *included* in `leak_rate_m3_per_s`; stroke cycle: at the
+///   out-stroke speed (the instantaneous drag while the rod moves out), *not* included (the
+///   drag volumes cancel over a cycle in the linear theory, the leak rate is the static one);
+/// * `net_volume_per_cycle_m3`: out-stroke volume + in-stroke volume of one cycle
+///   (= the static leak rate × the cycle time in the linear theory).
+pub const MOTION_HISTORY_COLUMNS: [&str; 2] =
+    ["drag_leak_rate_m3_per_s", "net_volume_per_cycle_m3"];
+
 /// The history of a life run as CSV: the header and one row per output time (t = 0, the
-/// installation, first).
+/// installation, first). With `[motion]` the rows carry [`MOTION_HISTORY_COLUMNS`] too.
 pub fn history_table(result: &LifeResult) -> Result<String, ReportError> {
+    let motion = result.rows.iter().any(|r| r.motion.is_some());
+    let stroke = result
+        .rows
+        .iter()
+        .any(|r| r.motion.is_some_and(|m| m.cycle.is_some()));
+    let extra = match (motion, stroke) {
+        (false, _) => 0,
+        (true, false) => 1,
+        (true, true) => 2,
+    };
     let mut writer = ::csv::Writer::from_writer(Vec::new());
-    writer.write_record(HISTORY_COLUMNS).map_err(csv_error)?;
+    writer
+        .write_record(
+            HISTORY_COLUMNS
+                .iter()
+                .chain(&MOTION_HISTORY_COLUMNS[..extra]),
+        )
+        .map_err(csv_error)?;
     for (i, r) in result.rows.iter().enumerate() {
         let row = i + 1;
         let cell = |column: usize, value: f64| number(row, HISTORY_COLUMNS[column], value);
+        let motion_cells = match r.motion {
+            _ if extra == 0 => Vec::new(),
+            None => vec![String::new(); extra],
+            Some(m) => {
+                let mut cells = vec![number(row, MOTION_HISTORY_COLUMNS[0], m.drag_leak_rate)?];
+                if extra == 2 {
+                    cells.push(match m.cycle {
+                        Some(c) => number(row, MOTION_HISTORY_COLUMNS[1], c.net_volume)?,
+                        None => String::new(),
+                    });
+                }
+                cells
+            }
+        };
         let optional = |column: usize, value: Option<f64>| {
             value.map_or(Ok(String::new()), |v| cell(column, v))
         };
@@ -70,7 +113,9 @@ pub fn history_table(result: &LifeResult) -> Result<String, ReportError> {
             r.state.as_str().to_owned(),
             cell(12, r.open_fraction)?,
         ];
-        writer.write_record(record).map_err(csv_error)?;
+        writer
+            .write_record(record.into_iter().chain(motion_cells))
+            .map_err(csv_error)?;
     }
     finish(writer)
 }
@@ -92,7 +137,7 @@ pub struct Summary {
     pub loading: String,
     /// `critical-junction` (contact table) or `exact`.
     pub fidelity: String,
-    /// Time to failure [s]; `null` when the seal survives the whole run.
+    /// Time to failure \[s\]; `null` when the seal survives the whole run.
     pub time_to_failure_s: Option<f64>,
     /// `leak_rate`, `leaked_volume`, `retained_force`, `lift_off` or `none`.
     pub failure_mode: String,
@@ -108,13 +153,178 @@ pub struct Summary {
     /// Sealing force per unit length at the end of the run [N/m].
     #[serde(rename = "final_sealing_force_N_per_m")]
     pub final_sealing_force_n_per_m: f64,
-    /// Length of the run [s].
+    /// Length of the run \[s\].
     pub duration_s: f64,
     /// Open fraction of the critical channels at the end of the run (1 without
     /// `[contamination]`).
     pub final_open_fraction: f64,
     /// The validity warnings of the run, as printed on stderr (without `warning: `).
     pub warnings: Vec<String>,
+    /// `[motion]` (absent from the JSON for a static seal).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub motion: Option<MotionSummary>,
+}
+
+/// The `motion` object of the summary: the drag of the sliding countersurface at the peak
+/// strip (PY08 §8).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct MotionSummary {
+    /// `steady` (constant sliding: the drag is included in the leak rate) or `stroke` (a stroke
+    /// cycle: the leak rate is the static one, the drag volumes are in the cycles below).
+    pub kind: String,
+    /// Constant sliding: the speed [m/s].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sliding_speed_m_per_s: Option<f64>,
+    /// Stroke cycle: the stroke length \[m\].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stroke_m: Option<f64>,
+    /// Stroke cycle: the out-stroke speed [m/s].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub out_speed_m_per_s: Option<f64>,
+    /// Stroke cycle: the in-stroke speed [m/s].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub in_speed_m_per_s: Option<f64>,
+    /// Stroke cycle: `S/v_out + S/v_in` \[s\].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cycle_period_s: Option<f64>,
+    /// `L_a/L_x` of the critical junction.
+    pub junction_position: f64,
+    /// The drag term `L_y d v` at installation [m³/s] (sliding speed, or out-stroke speed).
+    pub initial_drag_leak_rate_m3_per_s: f64,
+    /// The drag term at the end of the run [m³/s].
+    pub final_drag_leak_rate_m3_per_s: f64,
+    /// The film `d = β u_c` at the peak strip at installation \[m\].
+    pub initial_film_thickness_m: f64,
+    /// The film at the end of the run \[m\].
+    pub final_film_thickness_m: f64,
+    /// The smallest speed bound of PY08 eq. 17 over the history rows [m/s]; `null` when the
+    /// peak strip is sealed throughout (no bound).
+    pub speed_bound_m_per_s: Option<f64>,
+    /// Whether the fastest speed exceeded the bound at some time of the run (a warning).
+    pub speed_above_bound: bool,
+    /// Stroke cycle: the volumes of one cycle at installation.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub initial_cycle: Option<CycleSummary>,
+    /// Stroke cycle: the volumes of one cycle at the end of the run.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub final_cycle: Option<CycleSummary>,
+}
+
+/// One stroke cycle's volumes \[m³\], counted positive from the pressurised side to the outside.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct CycleSummary {
+    /// Passed out during the out-stroke: static leak over its duration + the dragged film
+    /// `L_y d S`.
+    pub out_stroke_volume_m3: f64,
+    /// Passed out during the in-stroke: static leak over its duration − the film carried
+    /// back (negative when the drag dominates).
+    pub in_stroke_volume_m3: f64,
+    /// `out + in`: the net leak of one cycle (the static leak over the cycle time in the
+    /// linear theory).
+    pub net_volume_per_cycle_m3: f64,
+    /// The film volume `L_y d S` carried out on the out-stroke and back on the in-stroke.
+    pub drag_volume_per_stroke_m3: f64,
+}
+
+impl CycleSummary {
+    fn new(c: &StrokeCycle) -> Self {
+        CycleSummary {
+            out_stroke_volume_m3: c.out_volume,
+            in_stroke_volume_m3: c.in_volume,
+            net_volume_per_cycle_m3: c.net_volume,
+            drag_volume_per_stroke_m3: c.drag_volume,
+        }
+    }
+
+    fn values(&self) -> [(&'static str, f64); 4] {
+        [
+            ("out_stroke_volume_m3", self.out_stroke_volume_m3),
+            ("in_stroke_volume_m3", self.in_stroke_volume_m3),
+            ("net_volume_per_cycle_m3", self.net_volume_per_cycle_m3),
+            ("drag_volume_per_stroke_m3", self.drag_volume_per_stroke_m3),
+        ]
+    }
+}
+
+impl MotionSummary {
+    /// The summary of the motion `spec` over `result`'s rows; `None` when the rows carry no
+    /// motion.
+    pub fn new(spec: &MotionSpec, result: &LifeResult) -> Option<Self> {
+        let first: MotionPoint = result.rows.first()?.motion?;
+        let last: MotionPoint = result.rows.last()?.motion?;
+        let bound = result
+            .rows
+            .iter()
+            .filter_map(|r| r.motion.map(|m| m.speed_bound))
+            .fold(f64::INFINITY, f64::min);
+        let warned = result
+            .warnings
+            .iter()
+            .any(|w| matches!(w, LifeWarning::SpeedAboveBound { .. }));
+        let (kind, sliding, stroke) = match spec.motion {
+            Motion::Steady { speed } => ("steady", Some(speed), None),
+            Motion::Stroke {
+                stroke,
+                out_speed,
+                in_speed,
+            } => ("stroke", None, Some((stroke, out_speed, in_speed))),
+        };
+        Some(MotionSummary {
+            kind: kind.to_owned(),
+            sliding_speed_m_per_s: sliding,
+            stroke_m: stroke.map(|s| s.0),
+            out_speed_m_per_s: stroke.map(|s| s.1),
+            in_speed_m_per_s: stroke.map(|s| s.2),
+            cycle_period_s: spec.period(),
+            junction_position: spec.junction_position,
+            initial_drag_leak_rate_m3_per_s: first.drag_leak_rate,
+            final_drag_leak_rate_m3_per_s: last.drag_leak_rate,
+            initial_film_thickness_m: first.film_thickness,
+            final_film_thickness_m: last.film_thickness,
+            speed_bound_m_per_s: bound.is_finite().then_some(bound),
+            speed_above_bound: warned
+                || result
+                    .rows
+                    .iter()
+                    .any(|r| r.motion.is_some_and(|m| m.above_bound)),
+            initial_cycle: first.cycle.as_ref().map(CycleSummary::new),
+            final_cycle: last.cycle.as_ref().map(CycleSummary::new),
+        })
+    }
+
+    /// Every number of the object, named, for the finiteness check.
+    fn values(&self) -> Vec<(&'static str, f64)> {
+        let mut v = vec![
+            ("junction_position", self.junction_position),
+            (
+                "initial_drag_leak_rate_m3_per_s",
+                self.initial_drag_leak_rate_m3_per_s,
+            ),
+            (
+                "final_drag_leak_rate_m3_per_s",
+                self.final_drag_leak_rate_m3_per_s,
+            ),
+            ("initial_film_thickness_m", self.initial_film_thickness_m),
+            ("final_film_thickness_m", self.final_film_thickness_m),
+        ];
+        for (name, value) in [
+            ("sliding_speed_m_per_s", self.sliding_speed_m_per_s),
+            ("stroke_m", self.stroke_m),
+            ("out_speed_m_per_s", self.out_speed_m_per_s),
+            ("in_speed_m_per_s", self.in_speed_m_per_s),
+            ("cycle_period_s", self.cycle_period_s),
+            ("speed_bound_m_per_s", self.speed_bound_m_per_s),
+        ] {
+            v.extend(value.map(|x| (name, x)));
+        }
+        for cycle in [&self.initial_cycle, &self.final_cycle]
+            .into_iter()
+            .flatten()
+        {
+            v.extend(cycle.values());
+        }
+        v
+    }
 }
 
 impl Summary {
@@ -140,6 +350,10 @@ impl Summary {
             duration_s: problem.time.duration,
             final_open_fraction: result.final_open_fraction(),
             warnings: result.warnings.iter().map(ToString::to_string).collect(),
+            motion: problem
+                .motion
+                .as_ref()
+                .and_then(|spec| MotionSummary::new(spec, result)),
         }
     }
 
@@ -165,7 +379,8 @@ impl Summary {
             ("duration_s", self.duration_s),
             ("final_open_fraction", self.final_open_fraction),
         ];
-        for (column, value) in values {
+        let motion = self.motion.as_ref().map(MotionSummary::values);
+        for (column, value) in values.into_iter().chain(motion.into_iter().flatten()) {
             if !value.is_finite() {
                 return Err(ReportError::NonFinite {
                     row: 1,
@@ -323,6 +538,11 @@ pub fn human_summary(
             human(result.leaked_volume() * 1e6, 3)
         ),
     );
+    if let Some(spec) = &problem.motion
+        && let Some(m) = MotionSummary::new(spec, result)
+    {
+        line("motion", motion_description(spec, &m, &duration));
+    }
     let verdict = match result.failure {
         Some(f) if f.time == 0.0 => format!("FAILS at installation ({})", f.mode.as_str()),
         Some(f) => format!(
@@ -338,6 +558,69 @@ pub fn human_summary(
     };
     line("result", verdict);
     out
+}
+
+/// A speed for a reader: `"1 cm/s"`, `"0.1 m/s"`, `"6.1 mm/s"`.
+fn speed(v: f64) -> String {
+    if v == 0.0 {
+        "0 m/s".to_owned()
+    } else if v.abs() < 1e-3 {
+        format!("{} µm/s", human(v * 1e6, 3))
+    } else if v.abs() < 1e-2 {
+        format!("{} mm/s", human(v * 1e3, 3))
+    } else if v.abs() < 1.0 {
+        format!("{} cm/s", human(v * 1e2, 3))
+    } else {
+        format!("{} m/s", human(v, 3))
+    }
+}
+
+/// The motion line of the terminal summary.
+fn motion_description(spec: &MotionSpec, m: &MotionSummary, duration: &str) -> String {
+    let bound = match m.speed_bound_m_per_s {
+        Some(b) if m.speed_above_bound => format!(
+            "; EXCEEDS the speed bound of PY08 eq. 17 ({}, lowest over the run): lift-off not \
+             modelled",
+            speed(b)
+        ),
+        Some(b) => format!("; speed bound (PY08 eq. 17) {} or more", speed(b)),
+        None => String::new(),
+    };
+    let film = format!(
+        "film {} nm at installation, {} nm after {duration}",
+        human(m.initial_film_thickness_m * 1e9, 3),
+        human(m.final_film_thickness_m * 1e9, 3)
+    );
+    match (spec.motion, &m.initial_cycle, &m.final_cycle) {
+        (
+            Motion::Stroke {
+                stroke,
+                out_speed,
+                in_speed,
+            },
+            Some(first),
+            Some(last),
+        ) => format!(
+            "stroke {} mm, out at {}, in at {} (cycle {}): a film of {} m³ carried out and \
+             back per cycle at installation, {} m³ after {duration}; net leak per cycle {} m³ at \
+             installation, {} m³ after {duration}; {film}{bound}",
+            human(stroke * 1e3, 4),
+            speed(out_speed),
+            speed(in_speed),
+            human_time(spec.period().unwrap_or(0.0)),
+            human(first.drag_volume_per_stroke_m3, 3),
+            human(last.drag_volume_per_stroke_m3, 3),
+            human(first.net_volume_per_cycle_m3, 3),
+            human(last.net_volume_per_cycle_m3, 3),
+        ),
+        _ => format!(
+            "sliding at {}: drag {} at installation, {} after {duration} (included in the leak \
+             rate); {film}{bound}",
+            speed(spec.drag_speed()),
+            flow(m.initial_drag_leak_rate_m3_per_s),
+            flow(m.final_drag_leak_rate_m3_per_s),
+        ),
+    }
 }
 
 /// `"O-ring d = 3.53 mm, D = 50 mm, squeeze 20 %, displacement loading, asperity modulus relaxed"`.
@@ -550,6 +833,7 @@ mod tests {
             leak_rate,
             leaked_volume: leak_rate * time,
             open_fraction: 1.0,
+            motion: None,
             state: if u_c.is_some() {
                 SealState::Leaking
             } else {
@@ -594,6 +878,62 @@ mod tests {
                 ..
             })
         ));
+    }
+
+    #[test]
+    fn motion_adds_its_history_columns_only_when_present() {
+        use crate::dynamic::{MotionPoint, StrokeCycle};
+        let steady = MotionPoint {
+            drag_leak_rate: 4e-11,
+            film_thickness: 8e-9,
+            speed_bound: 6e-3,
+            above_bound: false,
+            cycle: None,
+        };
+        let mut rows = vec![
+            row(0.0, 1e-12, 0.1, Some(2e-7)),
+            row(10.0, 2e-12, 0.1, Some(2e-7)),
+        ];
+        for r in &mut rows {
+            r.motion = Some(steady);
+        }
+        let text = history_table(&result(rows.clone())).unwrap();
+        let lines: Vec<&str> = text.lines().collect();
+        assert_eq!(
+            lines[0],
+            format!("{},drag_leak_rate_m3_per_s", HISTORY_COLUMNS.join(","))
+        );
+        assert!(lines[1].ends_with(",leaking,1e0,4e-11"), "{}", lines[1]);
+        let cycle = StrokeCycle {
+            period: 2.0,
+            out_volume: 1e-12,
+            in_volume: -0.5e-12,
+            net_volume: 0.5e-12,
+            static_volume: 0.5e-12,
+            drag_volume: 0.75e-12,
+            within_speed_bound: true,
+        };
+        for r in &mut rows {
+            r.motion = Some(MotionPoint {
+                cycle: Some(cycle),
+                ..steady
+            });
+        }
+        let text = history_table(&result(rows)).unwrap();
+        let lines: Vec<&str> = text.lines().collect();
+        assert_eq!(
+            lines[0],
+            format!(
+                "{},{}",
+                HISTORY_COLUMNS.join(","),
+                MOTION_HISTORY_COLUMNS.join(",")
+            )
+        );
+        assert!(
+            lines[2].ends_with(",leaking,1e0,4e-11,5e-13"),
+            "{}",
+            lines[2]
+        );
     }
 
     #[test]

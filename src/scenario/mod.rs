@@ -6,7 +6,8 @@
 //! 2. `validate`: every quantity is converted to SI ("10 MPa" → 1e7; a bare number is
 //!    already SI) and checked against its range once, giving a [`leak::StaticProblem`] and
 //!    a [`simulate::LifeProblem`] (`life`: the O-ring/flat seal, `[environment]`,
-//!    `[failure]`, `[ageing]`, `[simulation]`).
+//!    `[failure]`, `[ageing]`, `[simulation]`), and the optional `[motion]` of a reciprocating
+//!    seal ([`crate::dynamic::MotionSpec`]).
 //!
 //! Every error is a [`ScenarioError`] naming the file, the line and the key, e.g.
 //! `scenarios/x.toml:7: surface.hurst_exponent: must lie strictly between 0 and 1, got 1.2`.
@@ -24,6 +25,7 @@ mod history;
 pub mod library;
 pub mod life;
 mod material;
+mod motion;
 mod psd;
 mod raw;
 mod validate;
@@ -31,6 +33,7 @@ mod validate;
 pub use error::ScenarioError;
 pub use material::{PARAMETERS, load_material_file, material_from_str};
 
+use crate::dynamic::MotionSpec;
 use crate::leak::StaticProblem;
 use crate::material::Material;
 use crate::numerical::HeightMap;
@@ -65,6 +68,10 @@ pub struct Scenario {
     /// `[numerical]`: grid, band, realisations and seed of the numerical level (defaults:
     /// [`NumericalSettings::default`]).
     pub numerical: NumericalSettings,
+    /// `[motion]`: the countersurface slides past the seal (PY08 §8, [`crate::dynamic`]):
+    /// constant sliding or a stroke cycle; `None` for a static seal. The same value is
+    /// `life.motion`.
+    pub motion: Option<MotionSpec>,
 }
 
 impl Scenario {
@@ -113,6 +120,7 @@ impl Scenario {
             life: validated.life,
             height_map: validated.height_map,
             numerical: validated.numerical,
+            motion: validated.motion,
         })
     }
 }

@@ -67,6 +67,7 @@ pub(super) struct RawScenario {
     pub simulation: Option<Spanned<RawSimulation>>,
     pub contamination: Option<Spanned<RawContamination>>,
     pub numerical: Option<Spanned<RawNumerical>>,
+    pub motion: Option<Spanned<RawMotion>>,
 }
 
 impl RawScenario {
@@ -83,6 +84,7 @@ impl RawScenario {
         "simulation",
         "contamination",
         "numerical",
+        "motion",
     ];
 }
 
@@ -266,6 +268,20 @@ pub(super) struct RawSizeDistribution {
     pub scale: Option<Quantity>,
     pub shape: Option<Quantity>,
     pub file: Option<Spanned<String>>,
+}
+
+/// `[motion]`: the countersurface slides (a reciprocating seal, PY08 §8): `sliding_speed`
+/// (constant) or a stroke cycle (`stroke` with `frequency`, or with `out_speed` and
+/// `in_speed`); which keys go together is checked in validation.
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawMotion {
+    pub sliding_speed: Option<Quantity>,
+    pub stroke: Option<Quantity>,
+    pub frequency: Option<Quantity>,
+    pub out_speed: Option<Quantity>,
+    pub in_speed: Option<Quantity>,
+    pub junction_position: Option<Quantity>,
 }
 
 /// `[model]`: optional settings of the critical-junction theory.

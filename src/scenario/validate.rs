@@ -10,6 +10,7 @@ use super::raw::{
 };
 use super::{height_map, psd, show};
 use crate::contact::ContactSettings;
+use crate::dynamic::MotionSpec;
 use crate::leak::{FlatSeal, Fluid, StaticProblem};
 use crate::material::Material;
 use crate::numerical::reference::NumericalSettings;
@@ -195,6 +196,8 @@ pub(super) struct Validated {
     pub height_map: Option<HeightMap>,
     /// `[numerical]`: the numerical level's settings.
     pub numerical: NumericalSettings,
+    /// `[motion]`: the countersurface's motion (`None`: a static seal).
+    pub motion: Option<MotionSpec>,
 }
 
 impl Source<'_> {
@@ -227,6 +230,7 @@ impl Source<'_> {
         let clogging_tolerance = self.clogging_tolerance(raw.simulation.as_ref())?;
         let contamination = self.contamination(raw.contamination.as_ref(), clogging_tolerance)?;
         let numerical = self.numerical(raw.numerical.as_ref())?;
+        let motion = self.motion(raw.motion.as_ref())?;
         let life = LifeProblem {
             material: material.clone(),
             asperity_modulus,
@@ -244,6 +248,7 @@ impl Source<'_> {
             fidelity,
             strips: STRIPS,
             contamination,
+            motion,
         };
         let seal = static_seal(&life);
         Ok(Validated {
@@ -260,6 +265,7 @@ impl Source<'_> {
             life,
             height_map,
             numerical,
+            motion,
         })
     }
 

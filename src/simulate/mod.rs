@@ -13,6 +13,17 @@
 //! critical channels is integrated alongside, segment by segment between the internal time
 //! points (see [`Simulator::integrate_clogging`]); without it nothing of that runs.
 //!
+//! With a `[motion]` block (PY08 §8, [`crate::dynamic`]) each state also gets the drag of
+//! the sliding countersurface, evaluated at the *peak strip* (an approximation: the most
+//! compressed strip holds the critical junction of the series, and its film
+//! `d = β u_c` is what the countersurface carries through): its critical junction (the
+//! level's critical-junction table, [`ContactPath::persson_junction`]), the integral I from a
+//! table built once per run ([`DragTable`]), the contact width as the seal width L and the
+//! asperity contact's modulus as E of the speed bound. Constant sliding adds `L_y d v` to the
+//! leak rate (so to the leaked volume and the failure criteria); a stroke cycle leaves the
+//! leak rate static (its drag volumes cancel over a cycle in the linear theory) and reports
+//! the volumes per stroke. Without `[motion]` nothing of that runs.
+//!
 //! Steps are log-uniform in time from `start` (with an installation row at t = 0);
 //! temperature cycles add internal sub-steps (eight per shortest period), and with a thermal
 //! strain each sub-step is split further until a_T changes by at most half a decade within it,
@@ -24,8 +35,9 @@ pub mod events;
 use std::cell::RefCell;
 
 use crate::clogging::{Contamination, effective_threshold};
-use crate::contact::{ContactSettings, Junction, PerssonContact};
-use crate::leak::{ContactPath, Fidelity, Fluid};
+use crate::contact::{ContactSettings, Elastic, Junction, PerssonContact};
+use crate::dynamic::{DragSettings, DragTable, MotionPoint, MotionSpec};
+use crate::leak::{ContactPath, Fidelity, FlatSeal, Fluid};
 use crate::material::shift::reduced_time;
 use crate::material::{Ageing, Material, RelaxationState, Shift, TemperatureHistory};
 use crate::numerics::quadrature::gauss_legendre;
@@ -138,6 +150,8 @@ pub struct LifeProblem {
     pub strips: usize,
     /// Particle clogging of the critical constrictions (`None`: clean fluid, zero cost).
     pub contamination: Option<Contamination>,
+    /// The countersurface's motion (`[motion]`, PY08 §8; `None`: a static seal, zero cost).
+    pub motion: Option<MotionSpec>,
 }
 
 impl LifeProblem {
@@ -194,6 +208,11 @@ pub struct HistoryRow {
     pub state: SealState,
     /// Open fraction f of the critical channels (1 without contamination).
     pub open_fraction: f64,
+    /// `[motion]`: drag, film, speed bound and stroke volumes at the peak strip (`None` for a
+    /// static seal). Constant sliding: `drag_leak_rate` is included in `leak_rate`; a stroke
+    /// cycle: it is the out-stroke's instantaneous drag, not included (`leak_rate` is the
+    /// static, cycle-averaged one).
+    pub motion: Option<MotionPoint>,
 }
 
 /// A validity caveat of a life run.
@@ -215,6 +234,9 @@ pub enum LifeWarning {
     MolecularGap { time: f64, u_c: f64 },
     /// No failure criterion is set: the seal can only survive.
     NoCriterion,
+    /// `[motion]`: the sliding speed exceeds the validity bound of PY08's second eq. 17 at the
+    /// peak strip (hydrodynamic lift-off is not modelled).
+    SpeedAboveBound { time: f64, speed: f64, bound: f64 },
 }
 
 impl std::fmt::Display for LifeWarning {
@@ -253,6 +275,13 @@ impl std::fmt::Display for LifeWarning {
             LifeWarning::NoCriterion => {
                 f.write_str("the [failure] block sets no criterion: the seal can only survive")
             }
+            LifeWarning::SpeedAboveBound { time, speed, bound } => write!(
+                f,
+                "at t = {time:.4e} s the sliding speed {speed:.4e} m/s exceeds the validity bound \
+                 {bound:.4e} m/s of PY08 eq. 17 at the peak strip: the drag pressure opens the \
+                 critical constriction; hydrodynamic lift-off is not modelled (the drag leak rate \
+                 is likely underestimated)"
+            ),
         }
     }
 }
@@ -320,6 +349,12 @@ struct Snapshot {
     peak_reduced_pressure: f64,
     /// Open fraction f the leak rate was evaluated with.
     open_fraction: f64,
+    /// `[motion]`: the motion quantities at the peak strip (all channels open until
+    /// [`Simulator::clogged`] scales them).
+    motion: Option<MotionPoint>,
+    /// `[motion]`, constant sliding: the pressure-driven part of `open_leak_rate` [m³/s]
+    /// (`open_leak_rate` = this + the drag); `None` otherwise.
+    open_static_leak_rate: Option<f64>,
 }
 
 /// The mechanical state carried along the time loop.
@@ -354,6 +389,8 @@ pub struct Simulator<'a> {
     /// The last `(s, u_c(s, a_c))` of the re-routing reference junction: a step's ratio nodes
     /// and its end snapshot share one pressure, hence one reference evaluation.
     reference_memo: std::cell::Cell<Option<(f64, Option<f64>)>>,
+    /// `[motion]`: the motion and the table of I (built once; `None` for a static seal).
+    drag: Option<(MotionSpec, DragTable)>,
 }
 
 impl<'a> Simulator<'a> {
@@ -385,6 +422,12 @@ impl<'a> Simulator<'a> {
                 };
                 PerssonContact::new(problem.spectrum.clone(), settings)
             });
+        let drag = problem.motion.map(|spec| {
+            (
+                spec,
+                DragTable::build(path.exact(), DragSettings::default()),
+            )
+        });
         Simulator {
             problem,
             path,
@@ -394,6 +437,7 @@ impl<'a> Simulator<'a> {
             creep: problem.material.prony.creep(),
             rerouting,
             reference_memo: std::cell::Cell::new(None),
+            drag,
         }
     }
 
@@ -589,9 +633,29 @@ impl<'a> Simulator<'a> {
             }
         };
         snap.u_c = u_c;
-        snap.leak_rate = (snap.open_leak_rate * scale).max(0.0);
+        // The drag flows through the same channels: without re-routing the blocked ones carry
+        // none of it (× f); with re-routing the film is taken to scale with the constriction
+        // height, d = β u_c at fixed β (× the cube root of the u_c³ ratio).
+        let drag_scale = if self.rerouting.is_some() {
+            scale.cbrt()
+        } else {
+            scale
+        };
+        snap.leak_rate = match (snap.open_static_leak_rate, snap.motion) {
+            (Some(static_rate), Some(m)) => {
+                (static_rate * scale + m.drag_leak_rate * drag_scale).max(0.0)
+            }
+            _ => (snap.open_leak_rate * scale).max(0.0),
+        };
         if !snap.leak_rate.is_finite() {
             snap.leak_rate = 0.0;
+        }
+        if let (Some((spec, _)), Some(m)) = (&self.drag, snap.motion) {
+            let static_rate = match snap.open_static_leak_rate {
+                Some(static_rate) => (static_rate * scale).max(0.0),
+                None => snap.leak_rate,
+            };
+            snap.motion = Some(spec.rescale(m, static_rate, drag_scale));
         }
         if snap.state == SealState::Leaking && snap.leak_rate <= 0.0 {
             snap.state = SealState::Sealed;
@@ -740,7 +804,8 @@ impl<'a> Simulator<'a> {
             Loading::Force => self.initial_profile,
         };
         let retained = profile.force_per_length() / self.initial_profile.force_per_length();
-        let e_star = self.asperity_modulus(state) / (1.0 - p.material.poisson_ratio.powi(2));
+        let e_asperity = self.asperity_modulus(state);
+        let e_star = e_asperity / (1.0 - p.material.poisson_ratio.powi(2));
         let conductance = |pressure: f64| {
             self.path
                 .conductance(pressure / e_star, p.shape_factor, p.fluid.viscosity)
@@ -754,6 +819,44 @@ impl<'a> Simulator<'a> {
         let peak_junction = self.path.critical_junction(profile.peak() / e_star);
         let u_c = peak_junction.leaking().map(|j| j.u_c);
         let lambda_c = peak_junction.leaking().map_or(0.0, |j| j.lambda_c);
+        let (motion, open_static_leak_rate, leak_rate) = match &self.drag {
+            None => (None, None, leak_rate),
+            Some((spec, table)) => {
+                let static_rate = if leak_rate.is_finite() {
+                    leak_rate
+                } else {
+                    0.0
+                };
+                let s = profile.peak() / e_star;
+                let junction = match self.path {
+                    ContactPath::Table(_) | ContactPath::Exact(_) => peak_junction,
+                    _ => self.path.persson_junction(s),
+                };
+                let seal = spec.seal(
+                    Elastic {
+                        youngs_modulus: e_asperity,
+                        poisson_ratio: p.material.poisson_ratio,
+                    },
+                    FlatSeal {
+                        nominal_pressure: profile.peak(),
+                        width: profile.width(),
+                        length: p.geometry.sealing_length(),
+                    },
+                    p.fluid.viscosity,
+                    p.shape_factor,
+                );
+                let point = spec.evaluate(&table.coefficients(s, &junction, &seal), static_rate);
+                if spec.is_stroke() {
+                    (Some(point), None, leak_rate)
+                } else {
+                    (
+                        Some(point),
+                        Some(static_rate),
+                        static_rate + point.drag_leak_rate,
+                    )
+                }
+            }
+        };
         let state = if profile.peak() < p.fluid.pressure_difference {
             SealState::LiftOff
         } else if leak_rate > 0.0 {
@@ -778,6 +881,8 @@ impl<'a> Simulator<'a> {
             lambda_c,
             peak_reduced_pressure: profile.peak() / e_star,
             open_fraction: 1.0,
+            motion,
+            open_static_leak_rate,
         }
     }
 
@@ -810,6 +915,7 @@ impl<'a> Simulator<'a> {
             leaked_volume: state.leaked_volume,
             state: snap.state,
             open_fraction: snap.open_fraction,
+            motion: snap.motion,
         }
     }
 
@@ -901,6 +1007,15 @@ impl<'a> Simulator<'a> {
             && u < crate::leak::MIN_CONTINUUM_GAP
         {
             push(LifeWarning::MolecularGap { time: t, u_c: u });
+        }
+        if let (Some((spec, _)), Some(m)) = (&self.drag, snap.motion)
+            && m.above_bound
+        {
+            push(LifeWarning::SpeedAboveBound {
+                time: t,
+                speed: spec.fastest_speed(),
+                bound: m.speed_bound,
+            });
         }
     }
 }

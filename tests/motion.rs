@@ -1,0 +1,296 @@
+//! Reciprocating seals in scenarios and life runs (`[motion]`, PY08 §8): the tabulated I
+//! against the direct evaluation, v0 = 0 is the static run bit for bit, the drag is linear in
+//! the speed, a stroke cycle leaves the leak rate static and carries the film out and back.
+
+use sealsim::contact::{Junction, PerssonContact};
+use sealsim::dynamic::{
+    DragCoefficients, DragSettings, DragTable, Motion, MotionSpec, separation_integral,
+};
+use sealsim::leak::FlatSeal;
+use sealsim::scenario::Scenario;
+use sealsim::simulate::{HistoryRow, LifeProblem, LifeResult, LifeWarning, simulate};
+use std::path::{Path, PathBuf};
+
+fn shipped(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenarios")
+        .join(name)
+}
+
+fn load(name: &str) -> Scenario {
+    Scenario::load(&shipped(name)).unwrap()
+}
+
+fn rel(a: f64, b: f64) -> f64 {
+    (a - b).abs() / b.abs().max(f64::MIN_POSITIVE)
+}
+
+/// Everything of a row except the motion.
+fn static_part(r: &HistoryRow) -> HistoryRow {
+    HistoryRow { motion: None, ..*r }
+}
+
+fn assert_same_static_run(a: &LifeResult, b: &LifeResult) {
+    assert_eq!(a.rows.len(), b.rows.len());
+    for (x, y) in a.rows.iter().zip(&b.rows) {
+        // bit for bit (PartialEq on f64 fields; no NaN in a life history)
+        assert_eq!(static_part(x), static_part(y));
+    }
+    assert_eq!(a.failure, b.failure);
+    // the motion may add its own warning (speed above the bound), nothing else
+    let static_warnings = |r: &LifeResult| -> Vec<LifeWarning> {
+        r.warnings
+            .iter()
+            .filter(|w| !matches!(w, LifeWarning::SpeedAboveBound { .. }))
+            .cloned()
+            .collect()
+    };
+    assert_eq!(static_warnings(a), static_warnings(b));
+}
+
+fn with_motion(p: &LifeProblem, motion: Motion) -> LifeProblem {
+    LifeProblem {
+        motion: Some(MotionSpec {
+            motion,
+            junction_position: 0.5,
+        }),
+        ..p.clone()
+    }
+}
+
+#[test]
+fn tabulated_integral_matches_the_direct_evaluation() {
+    let settings = DragSettings::default();
+    for name in ["wiper-blade-water.toml", "hydraulic-rod-seal.toml"] {
+        let s = load(name);
+        let contact = PerssonContact::new(s.problem.spectrum.clone(), s.problem.contact);
+        let start = std::time::Instant::now();
+        let table = DragTable::build(&contact, settings);
+        let built = start.elapsed();
+        let (lo, hi) = table.range().expect("a table");
+        let s_seal = contact.sealing_reduced_pressure();
+        assert!(rel(lo, 1e-4 * s_seal) < 1e-9 && rel(hi, 0.97 * s_seal) < 1e-9);
+        // between the nodes (the worst place) and across the whole range, and beyond its
+        // upper end (held I/u_c)
+        let (mut worst, mut worst_at) = (0.0f64, 0.0);
+        let n = 157;
+        for k in 0..n {
+            let r = 1e-4f64 * (0.985f64 / 1e-4).powf((k as f64 + 0.37) / n as f64);
+            let sr = r * s_seal;
+            let Junction::Leaking(j) = contact.critical_junction(sr) else {
+                continue;
+            };
+            let p = sealsim::contact::SeparationDistribution::persson(
+                &contact,
+                sr,
+                settings.distribution,
+            );
+            let direct = separation_integral(&p, j.u_c, &settings);
+            let tabulated = table.integral(sr, &j);
+            let e = rel(tabulated, direct);
+            // within the table: interpolation error; above 0.97 s_seal: the held ratio
+            let tolerance = if r <= 0.97 { 2e-3 } else { 0.5 };
+            assert!(
+                e < tolerance,
+                "{name}: s/s_seal = {r}: {tabulated} vs {direct} ({e:.2e})"
+            );
+            if r <= 0.97 && e > worst {
+                (worst, worst_at) = (e, r);
+            }
+        }
+        eprintln!(
+            "{name}: table of I built in {built:.2?}; worst relative error {worst:.2e} at \
+             s/s_seal = {worst_at:.3e}"
+        );
+        // below the table the direct evaluation answers
+        let sr = 1e-5 * s_seal;
+        let j = *contact.critical_junction(sr).leaking().unwrap();
+        let p =
+            sealsim::contact::SeparationDistribution::persson(&contact, sr, settings.distribution);
+        assert_eq!(
+            table.integral(sr, &j),
+            separation_integral(&p, j.u_c, &settings)
+        );
+    }
+}
+
+#[test]
+fn zero_speed_is_the_static_run_bit_for_bit() {
+    for name in [
+        "hydraulic-rod-seal.toml",
+        "wiper-blade-water.toml",
+        "oring-nbr-water-80c.toml",
+        "oring-nbr-hydraulic-oil-clogging.toml",
+    ] {
+        let p = load(name).life;
+        let bare = LifeProblem {
+            motion: None,
+            ..p.clone()
+        };
+        let still = with_motion(&p, Motion::Steady { speed: 0.0 });
+        let (a, b) = (simulate(&bare), simulate(&still));
+        assert_same_static_run(&a, &b);
+        assert_eq!(a.warnings, b.warnings, "{name}: v0 = 0 is within any bound");
+        assert!(a.rows.iter().all(|r| r.motion.is_none()));
+        for r in &b.rows {
+            let m = r.motion.expect("motion rows");
+            assert_eq!(m.drag_leak_rate, 0.0, "{name}");
+            assert!(m.cycle.is_none());
+            assert!(!m.above_bound);
+        }
+    }
+}
+
+#[test]
+fn steady_drag_is_linear_in_speed_and_included_in_the_leak() {
+    let p = load("hydraulic-rod-seal.toml").life;
+    let bare = simulate(&LifeProblem {
+        motion: None,
+        ..p.clone()
+    });
+    let v = 1e-7; // within the speed bound (≈ 2e-7 m/s at installation)
+    let slow = simulate(&with_motion(&p, Motion::Steady { speed: v }));
+    let fast = simulate(&with_motion(&p, Motion::Steady { speed: 2.0 * v }));
+    assert_eq!(slow.rows.len(), bare.rows.len());
+    for ((s, f), b) in slow.rows.iter().zip(&fast.rows).zip(&bare.rows) {
+        let (ms, mf) = (s.motion.unwrap(), f.motion.unwrap());
+        // the contact does not depend on the speed: same junction, film and bound
+        assert_eq!(s.u_c, b.u_c);
+        assert_eq!(ms.film_thickness, mf.film_thickness);
+        assert_eq!(ms.speed_bound, mf.speed_bound);
+        assert!(ms.drag_leak_rate > 0.0);
+        assert_eq!(mf.drag_leak_rate, 2.0 * ms.drag_leak_rate, "exactly linear");
+        // leak = static + drag
+        assert_eq!(s.leak_rate, b.leak_rate + ms.drag_leak_rate);
+        assert_eq!(f.leak_rate, b.leak_rate + mf.drag_leak_rate);
+        // the drag is L_y d v of the peak strip's film
+        let l_y = p.geometry.sealing_length();
+        assert!(rel(ms.drag_leak_rate, l_y * ms.film_thickness * v) < 1e-12);
+    }
+    // the drag enters the leaked volume
+    let extra = slow.leaked_volume() - bare.leaked_volume();
+    assert!(extra > 0.0);
+    assert!(fast.leaked_volume() - bare.leaked_volume() > 1.99 * extra);
+    assert!(
+        !slow
+            .warnings
+            .iter()
+            .any(|w| w.to_string().contains("lift-off"))
+    );
+    // B_a, B_b > 0 at the peak strip of the installed O-ring
+    let s = Scenario::load(&shipped("hydraulic-rod-seal.toml")).unwrap();
+    let seal = MotionSpec::steady(v).seal(
+        s.problem.material,
+        s.problem.seal,
+        s.problem.fluid.viscosity,
+        s.problem.shape_factor,
+    );
+    let contact = PerssonContact::new(s.problem.spectrum.clone(), s.problem.contact);
+    let k = DragCoefficients::compute(&contact, &seal, &DragSettings::default());
+    assert!(k.b_a > 0.0 && k.b_b > 0.0, "{k:?}");
+}
+
+#[test]
+fn a_stroke_cycle_leaves_the_leak_static_and_carries_the_film_out_and_back() {
+    let s = load("hydraulic-rod-seal.toml");
+    let p = &s.life;
+    let Some(MotionSpec {
+        motion:
+            Motion::Stroke {
+                stroke,
+                out_speed,
+                in_speed,
+            },
+        ..
+    }) = p.motion
+    else {
+        panic!("the rod scenario is a stroke cycle: {:?}", p.motion)
+    };
+    let bare = simulate(&LifeProblem {
+        motion: None,
+        ..p.clone()
+    });
+    let r = simulate(p);
+    assert_same_static_run(&bare, &r);
+    let l_y = p.geometry.sealing_length();
+    for row in &r.rows {
+        let m = row.motion.unwrap();
+        let c = m.cycle.expect("cycle volumes");
+        assert_eq!(c.period, stroke / out_speed + stroke / in_speed);
+        assert!(rel(c.drag_volume, l_y * m.film_thickness * stroke) < 1e-12);
+        assert!(rel(c.net_volume, row.leak_rate * c.period) < 1e-9 || c.net_volume == 0.0);
+        assert!(
+            rel(
+                c.out_volume,
+                row.leak_rate * stroke / out_speed + c.drag_volume
+            ) < 1e-12
+        );
+        // out ≈ back: the film dominates the static leak of one stroke by orders of magnitude
+        assert!(c.out_volume > 0.0 && c.in_volume < 0.0);
+        assert!(rel(-c.in_volume, c.out_volume) < 1e-3, "{c:?}");
+        // the out-stroke's drag
+        assert!(rel(m.drag_leak_rate, l_y * m.film_thickness * out_speed) < 1e-12);
+    }
+    // 0.1 m/s is far above the bound of an O-ring in oil: warned once
+    let above: Vec<_> = r
+        .warnings
+        .iter()
+        .filter(|w| w.to_string().contains("lift-off"))
+        .collect();
+    assert_eq!(above.len(), 1, "{:?}", r.warnings);
+}
+
+#[test]
+fn motion_under_clogging_stays_finite_and_scales_with_the_open_channels() {
+    let p = load("oring-nbr-hydraulic-oil-clogging.toml").life;
+    for reroute in [false, true] {
+        let mut q = with_motion(&p, Motion::Steady { speed: 1e-7 });
+        q.contamination.as_mut().unwrap().reroute = reroute;
+        let r = simulate(&q);
+        let mut clean = q.clone();
+        clean.contamination = None;
+        let c = simulate(&clean);
+        for (row, open) in r.rows.iter().zip(&c.rows) {
+            let (m, mo) = (row.motion.unwrap(), open.motion.unwrap());
+            assert!(m.drag_leak_rate.is_finite() && m.drag_leak_rate >= 0.0);
+            assert!(row.leak_rate.is_finite() && row.leak_rate >= 0.0);
+            assert!(m.drag_leak_rate <= mo.drag_leak_rate * (1.0 + 1e-12));
+            if !reroute {
+                let f = row.open_fraction;
+                assert!(rel(m.drag_leak_rate, f * mo.drag_leak_rate) < 1e-9 || f == 0.0);
+            }
+        }
+        assert!(r.final_open_fraction() < 1.0);
+    }
+}
+
+#[test]
+fn steady_film_of_the_flat_wiper_matches_the_direct_coefficients() {
+    // the life run of a flat elastic seal: the peak strip is the seal; the tabulated I and the
+    // table's junction against DragCoefficients::compute (exact junction, direct I)
+    let s = load("wiper-blade-water.toml");
+    let r = simulate(&s.life);
+    let spec = s.motion.unwrap();
+    let seal = spec.seal(
+        s.problem.material,
+        FlatSeal { ..s.problem.seal },
+        s.problem.fluid.viscosity,
+        s.problem.shape_factor,
+    );
+    let contact = PerssonContact::new(s.problem.spectrum.clone(), s.problem.contact);
+    let k = DragCoefficients::compute(&contact, &seal, &DragSettings::default());
+    let m = r.rows[0].motion.unwrap();
+    eprintln!(
+        "wiper: life run d = {:.6e} m vs direct {:.6e} m; bound {:.6e} vs {:.6e} m/s",
+        m.film_thickness, k.film_thickness, m.speed_bound, k.speed_bound
+    );
+    assert!(rel(m.film_thickness, k.film_thickness) < 2e-3);
+    assert!(rel(m.speed_bound, k.speed_bound) < 5e-3);
+    // ΔP = 0: the whole leak is the drag, constant for an elastic rubber
+    for row in &r.rows {
+        assert_eq!(row.leak_rate, row.motion.unwrap().drag_leak_rate);
+        assert_eq!(row.leak_rate, r.rows[0].leak_rate);
+        assert_eq!(row.state.as_str(), "leaking");
+    }
+    assert!(m.above_bound, "1 cm/s is above the ≈ 6 mm/s bound");
+}
