@@ -87,6 +87,7 @@
 //! [`DragCoefficients::compute`] at every pressure; the life run looks I up in a
 //! [`DragTable`] built once per run.
 
+use crate::contact::table::{logistic, logit};
 use crate::contact::{
     CriticalJunction, EffectiveMediumSettings, Elastic, Junction, PerssonContact,
     SeparationDistribution,
@@ -756,19 +757,10 @@ impl DragTable {
             let v = (i / j.u_c).ln();
             v.is_finite().then_some(v)
         };
-        let mut nodes: Vec<Option<f64>> = vec![None; n];
-        std::thread::scope(|scope| {
-            let odd = scope.spawn(|| (1..n).step_by(2).map(node).collect::<Vec<_>>());
-            for i in (0..n).step_by(2) {
-                nodes[i] = node(i);
-            }
-            // a panic in the worker is a bug, not an input error: propagate it
-            let odd = odd.join().unwrap_or_else(|e| std::panic::resume_unwind(e));
-            for (k, v) in odd.into_iter().enumerate() {
-                nodes[2 * k + 1] = v;
-            }
-        });
-        let values: Vec<f64> = nodes.into_iter().map_while(|v| v).collect();
+        let values: Vec<f64> = crate::numerics::map_on_two_threads(n, node)
+            .into_iter()
+            .map_while(|v| v)
+            .collect();
         let grid = (values.len() >= 4).then(|| UniformCubic::new(lo, h, values));
         DragTable {
             contact: contact.clone(),
@@ -814,14 +806,4 @@ impl DragTable {
             Junction::Sealed => DragCoefficients::sealed(seal),
         }
     }
-}
-
-/// `ln(r/(1−r))` (the contact table's grid variable).
-fn logit(r: f64) -> f64 {
-    r.ln() - (-r).ln_1p()
-}
-
-/// Inverse of [`logit`].
-fn logistic(v: f64) -> f64 {
-    1.0 / (1.0 + (-v).exp())
 }

@@ -26,6 +26,17 @@ pub struct TableSettings {
 }
 
 impl TableSettings {
+    /// The uniform grid in `logit(s/s_seal)` these settings describe: `(first node, spacing,
+    /// number of nodes ≥ 4)`.
+    fn logit_grid(&self) -> (f64, f64, usize) {
+        let hi = logit(1.0 - self.upper_gap);
+        let lo = logit(10f64.powf(-self.decades));
+        let n = ((hi - lo) / std::f64::consts::LN_10 * self.points_per_decade)
+            .ceil()
+            .max(4.0) as usize;
+        (lo, (hi - lo) / (n - 1) as f64, n)
+    }
+
     /// The effective-medium table's default: 8 points per decade over 6 decades below the
     /// threshold (each node costs a Bruggeman solve; measured worst error vs the direct solve in
     /// tests/effective_medium.rs).
@@ -70,13 +81,7 @@ impl ContactTable {
     /// Builds the table by evaluating the exact path at every node.
     pub fn build(exact: PerssonContact, settings: TableSettings) -> Self {
         let s_seal = exact.sealing_reduced_pressure();
-        let r_hi = 1.0 - settings.upper_gap;
-        let hi = logit(r_hi);
-        let lo = logit(10f64.powf(-settings.decades));
-        let n = ((hi - lo) / std::f64::consts::LN_10 * settings.points_per_decade)
-            .ceil()
-            .max(4.0) as usize;
-        let h = (hi - lo) / (n - 1) as f64;
+        let (lo, h, n) = settings.logit_grid();
         let ln_h = exact.spectrum().rms_roughness().ln();
         let mut u = Vec::with_capacity(n);
         let mut ub = Vec::with_capacity(n);
@@ -158,12 +163,7 @@ impl EffectiveMediumTable {
         let e = erf_inv(0.5);
         let s_half = e * (std::f64::consts::PI * exact.spectrum().total_m3()).sqrt();
         let ln_h = exact.spectrum().rms_roughness().ln();
-        let hi = logit(1.0 - table.upper_gap);
-        let lo = logit(10f64.powf(-table.decades));
-        let n = ((hi - lo) / std::f64::consts::LN_10 * table.points_per_decade)
-            .ceil()
-            .max(4.0) as usize;
-        let h = (hi - lo) / (n - 1) as f64;
+        let (lo, h, n) = table.logit_grid();
         // Each node is an independent Bruggeman solve of a few ms: two threads take alternate
         // nodes (the result does not depend on the split).
         let node = |i: usize| {
@@ -171,19 +171,10 @@ impl EffectiveMediumTable {
                 EffectiveMedium::persson(&exact, s_half * logistic(lo + h * i as f64), settings);
             (!em.sealed()).then(|| em.effective_gap().ln() - ln_h)
         };
-        let mut nodes: Vec<Option<f64>> = vec![None; n];
-        std::thread::scope(|scope| {
-            let odd = scope.spawn(|| (1..n).step_by(2).map(node).collect::<Vec<_>>());
-            for i in (0..n).step_by(2) {
-                nodes[i] = node(i);
-            }
-            // a panic in the worker is a bug, not an input error: propagate it
-            let odd = odd.join().unwrap_or_else(|e| std::panic::resume_unwind(e));
-            for (k, v) in odd.into_iter().enumerate() {
-                nodes[2 * k + 1] = v;
-            }
-        });
-        let values: Vec<f64> = nodes.into_iter().map_while(|v| v).collect();
+        let values: Vec<f64> = crate::numerics::map_on_two_threads(n, node)
+            .into_iter()
+            .map_while(|v| v)
+            .collect();
         let grid = (values.len() >= 4).then(|| UniformCubic::new(lo, h, values));
         EffectiveMediumTable {
             junctions: ContactTable::build(exact, TableSettings::default()),
@@ -215,12 +206,13 @@ impl EffectiveMediumTable {
     }
 }
 
-/// `ln(r/(1−r))`: log-uniform for r → 0, stretched towards the sealing end r → 1.
-fn logit(r: f64) -> f64 {
+/// `ln(r/(1−r))`: log-uniform for r → 0, stretched towards the sealing end r → 1 (the grid
+/// variable of every table against P0/E*).
+pub(crate) fn logit(r: f64) -> f64 {
     r.ln() - (-r).ln_1p()
 }
 
 /// Inverse of [`logit`].
-fn logistic(v: f64) -> f64 {
+pub(crate) fn logistic(v: f64) -> f64 {
     1.0 / (1.0 + (-v).exp())
 }
