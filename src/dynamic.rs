@@ -354,23 +354,14 @@ pub fn stroke_cycle(
     in_speed: f64,
     stroke: f64,
 ) -> Option<StrokeCycle> {
-    let ok = |v: f64| v > 0.0 && v.is_finite();
-    if !(ok(out_speed) && ok(in_speed) && stroke >= 0.0 && stroke.is_finite()) {
-        return None;
-    }
-    let (t_out, t_in) = (stroke / out_speed, stroke / in_speed);
-    let out_volume = leak_rate(coeffs, pressure_difference, out_speed) * t_out;
-    let in_volume = leak_rate(coeffs, pressure_difference, -in_speed) * t_in;
-    let period = t_out + t_in;
-    Some(StrokeCycle {
-        period,
-        out_volume,
-        in_volume,
-        net_volume: out_volume + in_volume,
-        static_volume: coeffs.conductance() * pressure_difference * period,
-        drag_volume: drag_leak_rate(coeffs, 1.0) * stroke,
-        within_speed_bound: out_speed < coeffs.speed_bound && in_speed < coeffs.speed_bound,
-    })
+    // the static part of Q̇ = (L_y/L_x) M [ΔP + B v0] over the cycle, plus the drag film
+    stroke_cycle_from(
+        coeffs.conductance() * pressure_difference,
+        coeffs,
+        out_speed,
+        in_speed,
+        stroke,
+    )
 }
 
 /// `∫_{u_c}^∞ P(u) du`: the probability of a separation above `u_c` (closed form per folded
