@@ -83,7 +83,10 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
             let path = match &shared {
                 Some((first, path)) if same(first) => path.clone(),
                 _ => {
-                    let path = Simulator::contact_path(&s.life);
+                    let (path, warnings) = super::scenario_path(s, s.life.fidelity, None);
+                    for w in warnings {
+                        eprintln!("warning: {w}");
+                    }
                     shared = Some((s, path.clone()));
                     path
                 }

@@ -2,7 +2,7 @@
 
 use super::{CliError, write_output};
 use crate::dynamic::{DragCoefficients, DragSettings, MotionPoint, MotionSpec};
-use crate::leak::{ContactPath, Fidelity, FlatSeal, LeakPoint, PathOptions, StaticSolver, Warning};
+use crate::leak::{Fidelity, FlatSeal, LeakPoint, StaticSolver, Warning};
 use crate::numerics::log_spaced;
 use crate::report::csv::{leak_table, motion_leak_table};
 use crate::scenario::Scenario;
@@ -121,21 +121,9 @@ pub fn run(args: LeakArgs) -> Result<(), CliError> {
     let fidelity = args.fidelity.unwrap_or(scenario.life.fidelity);
     let pb = &scenario.problem;
     let e_star = pb.material.effective_modulus();
-    let options = PathOptions {
-        height_map: scenario.height_map.as_ref(),
-        numerical: scenario.numerical.clone(),
-        // the numerical level solves exactly at the pressures asked for
-        numerical_nodes: Some(pressures.iter().map(|p| p / e_star).collect()),
-        ..PathOptions::default()
-    };
-    let path = ContactPath::build(
-        &pb.spectrum,
-        pb.contact,
-        fidelity,
-        &options,
-        &mut super::progress_bar("numerical level"),
-    );
-    let path_warnings = path.warnings(&options);
+    // the numerical level solves exactly at the pressures asked for
+    let nodes = pressures.iter().map(|p| p / e_star).collect();
+    let (path, path_warnings) = super::scenario_path(&scenario, fidelity, Some(nodes));
     let solver = StaticSolver::with_path(scenario.problem.clone(), path);
     let mut points: Vec<LeakPoint> = pressures.iter().map(|&p0| solver.evaluate(p0)).collect();
     let mut warnings: Vec<Warning> = points.iter().flat_map(|p| solver.warnings(p)).collect();

@@ -8,7 +8,6 @@
 
 use super::{CliError, write_output};
 use crate::leak::Fidelity;
-use crate::leak::{ContactPath, PathOptions};
 use crate::report::life::{
     Summary, has_positive_leak_rate, history_table, human_summary, leak_rate_chart,
 };
@@ -66,20 +65,9 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
     if let Some(fidelity) = args.fidelity {
         scenario.life.fidelity = fidelity;
     }
-    let options = PathOptions {
-        height_map: scenario.height_map.as_ref(),
-        numerical: scenario.numerical.clone(),
-        ..PathOptions::default()
-    };
+    let (path, path_warnings) = super::scenario_path(&scenario, scenario.life.fidelity, None);
     let life = &scenario.life;
-    let path = ContactPath::build(
-        &life.spectrum,
-        life.contact,
-        life.fidelity,
-        &options,
-        &mut super::progress_bar("numerical level"),
-    );
-    for w in path.warnings(&options) {
+    for w in path_warnings {
         eprintln!("warning: {w}");
     }
     let result = Simulator::with_path(life, path).run();
