@@ -56,6 +56,36 @@ fn bounds(values: impl Iterator<Item = f64>, whole_decades: bool) -> Option<(f64
     Some((10f64.powf(a), 10f64.powf(b)))
 }
 
+/// Series with at most this many points get a marker at each point.
+const MARKED_POINTS: usize = 30;
+
+/// The corner of the plot (a third of each axis, in log coordinates) holding the fewest points:
+/// where the legend hides the least.
+fn emptiest_corner(points: &[(f64, f64)], x: (f64, f64), y: (f64, f64)) -> SeriesLabelPosition {
+    let (x0, x1) = (x.0.log10(), x.1.log10());
+    let fraction = |v: f64, lo: f64, hi: f64| if hi > lo { (v - lo) / (hi - lo) } else { 0.5 };
+    let count = |left: bool, upper: bool| {
+        points
+            .iter()
+            .filter(|(px, py)| {
+                let fx = fraction(px.log10(), x0, x1);
+                let fy = fraction(py.log10(), y.0, y.1);
+                (if left { fx < 0.4 } else { fx > 0.6 })
+                    && (if upper { fy > 0.6 } else { fy < 0.4 })
+            })
+            .count()
+    };
+    [
+        (SeriesLabelPosition::UpperLeft, count(true, true)),
+        (SeriesLabelPosition::UpperRight, count(false, true)),
+        (SeriesLabelPosition::LowerRight, count(false, false)),
+        (SeriesLabelPosition::LowerLeft, count(true, false)),
+    ]
+    .into_iter()
+    .min_by_key(|(_, n)| *n)
+    .map_or(SeriesLabelPosition::UpperLeft, |(p, _)| p)
+}
+
 impl LogLogChart {
     /// Renders the chart as an SVG document.
     pub fn to_svg(&self) -> Result<String, PlotError> {
@@ -107,11 +137,19 @@ impl LogLogChart {
                 .map_err(err)?;
             for (i, s) in self.series.iter().enumerate() {
                 let colour = Palette99::pick(i).to_rgba();
+                let points: Vec<(f64, f64)> = drawable(s)
+                    .into_iter()
+                    .map(|(x, y)| (x, y.log10()))
+                    .collect();
+                // short series are data points (a sweep, a ladder of settings): mark them, so
+                // that a single point is visible too
+                if points.len() <= MARKED_POINTS {
+                    chart
+                        .draw_series(points.iter().map(|&p| Circle::new(p, 3, colour.filled())))
+                        .map_err(err)?;
+                }
                 chart
-                    .draw_series(LineSeries::new(
-                        drawable(s).into_iter().map(|(x, y)| (x, y.log10())),
-                        colour.stroke_width(2),
-                    ))
+                    .draw_series(LineSeries::new(points, colour.stroke_width(2)))
                     .map_err(err)?
                     .label(s.label.clone())
                     .legend(move |(x, y)| {
@@ -120,6 +158,7 @@ impl LogLogChart {
             }
             chart
                 .configure_series_labels()
+                .position(emptiest_corner(&all, x, (y_lo, y_hi)))
                 .background_style(WHITE.mix(0.8))
                 .border_style(BLACK)
                 .draw()
