@@ -28,21 +28,6 @@ fn surface(n: usize) -> HeightMap {
     synthesize(&spectrum, n, 1)
 }
 
-/// rms slope of the map by forward differences (periodic).
-fn rms_slope(map: &HeightMap) -> f64 {
-    let n = map.n;
-    let mut sum = 0.0;
-    for iy in 0..n {
-        for ix in 0..n {
-            let h = map.heights[iy * n + ix];
-            let dx = map.heights[iy * n + (ix + 1) % n] - h;
-            let dy = map.heights[((iy + 1) % n) * n + ix] - h;
-            sum += dx * dx + dy * dy;
-        }
-    }
-    (sum / (n * n) as f64).sqrt() / map.pixel
-}
-
 /// (preconditioned, coarse-to-fine, FFT threads).
 type Combo = (bool, bool, usize);
 
@@ -74,7 +59,7 @@ fn label((preconditioned, coarse_to_fine, threads): Combo) -> String {
 
 fn group(c: &mut Criterion, n: usize, combos: &[Combo], measurement: Duration) {
     let map = surface(n);
-    let pressure = 0.1 * rms_slope(&map);
+    let pressure = 0.1 * map.rms_slope();
     for &combo in combos {
         let start = Instant::now();
         let sol = solve(&map, 1.0, pressure, Boundary::Periodic, &settings(combo))

@@ -239,7 +239,7 @@ impl DragCoefficients {
         let alpha = seal.shape_factor;
         let u_c = j.u_c;
         let (l_a, l_b) = seal.side_widths();
-        let m = alpha * u_c.powi(3) / (12.0 * eta);
+        let m = crate::leak::junction_conductance(u_c, alpha, eta);
         // J = I/u_c². For u_c ≲ 1e-154 m (a junction within rounding of sealing) J overflows
         // while M underflows to 0; B saturates at f64::MAX so that M·B stays 0, not NaN.
         let j_int = integral_i / (u_c * u_c);

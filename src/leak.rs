@@ -209,11 +209,19 @@ impl fmt::Display for Warning {
     }
 }
 
+/// Conductance of one critical constriction of height `u_c` [m] (PY08 eqs. 1–2):
+/// `M = α u_c³/(12 η)` [m³/(Pa·s)], α the shape factor, η the viscosity [Pa·s].
+pub fn junction_conductance(u_c: f64, shape_factor: f64, viscosity: f64) -> f64 {
+    shape_factor * u_c.powi(3) / (12.0 * viscosity)
+}
+
 /// Leak rate through the critical constrictions of a flat seal (PY08 eqs. 1–3):
-/// `Q̇ = (L_y/L_x) α u_c³ ΔP / (12 η)` [m³/s].
+/// `Q̇ = (L_y/L_x) α u_c³ ΔP / (12 η)` [m³/s] — `L_y/L_x` constrictions side by side, each of
+/// [`junction_conductance`].
 pub fn leak_rate(u_c: f64, fluid: &Fluid, width: f64, length: f64, shape_factor: f64) -> f64 {
-    (length / width) * shape_factor * u_c.powi(3) * fluid.pressure_difference
-        / (12.0 * fluid.viscosity)
+    (length / width)
+        * junction_conductance(u_c, shape_factor, fluid.viscosity)
+        * fluid.pressure_difference
 }
 
 /// Evaluates the leak of one surface at many pressures through one [`ContactPath`].
@@ -455,7 +463,7 @@ impl ContactPath {
             _ => shape_factor,
         };
         match junction {
-            Junction::Leaking(j) => alpha * j.u_c.powi(3) / (12.0 * viscosity),
+            Junction::Leaking(j) => junction_conductance(j.u_c, alpha, viscosity),
             Junction::Sealed => 0.0,
         }
     }

@@ -203,42 +203,35 @@ fn with_settings(problem: &LifeProblem, setting: &Setting) -> LifeProblem {
     p
 }
 
-fn static_state(problem: &StaticProblem, life: &LifeProblem, setting: &Setting) -> (f64, f64) {
-    let mut pb = problem.clone();
-    pb.contact = life.contact;
+/// The analytic path of `life` (its spectrum, contact settings and fidelity) with the setting's
+/// table spacing — built inside the timed region, since a user pays for it on every new surface.
+fn analytic_path(life: &LifeProblem, setting: &Setting) -> ContactPath {
     let options = PathOptions {
         table: setting.table,
         ..PathOptions::default()
     };
+    ContactPath::build(
+        &life.spectrum,
+        life.contact,
+        life.fidelity,
+        &options,
+        &mut |_, _| {},
+    )
+}
+
+fn static_state(problem: &StaticProblem, life: &LifeProblem, setting: &Setting) -> (f64, f64) {
+    let mut pb = problem.clone();
+    pb.contact = life.contact;
     timed(|| {
-        let path = ContactPath::build(
-            &pb.spectrum,
-            pb.contact,
-            setting.level,
-            &options,
-            &mut |_, _| {},
-        );
-        StaticSolver::with_path(pb.clone(), path)
+        StaticSolver::with_path(pb.clone(), analytic_path(life, setting))
             .evaluate(pb.seal.nominal_pressure)
             .leak_rate
     })
 }
 
 fn life_run(problem: &LifeProblem, setting: &Setting) -> (f64, Option<f64>, f64) {
-    let options = PathOptions {
-        table: setting.table,
-        ..PathOptions::default()
-    };
-    let (seconds, result) = timed(|| {
-        let path = ContactPath::build(
-            &problem.spectrum,
-            problem.contact,
-            problem.fidelity,
-            &options,
-            &mut |_, _| {},
-        );
-        Simulator::with_path(problem, path).run()
-    });
+    let (seconds, result) =
+        timed(|| Simulator::with_path(problem, analytic_path(problem, setting)).run());
     (
         seconds,
         result.failure.map(|f| f.time),

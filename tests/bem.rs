@@ -21,20 +21,6 @@ fn surface(n: usize, seed: u64) -> HeightMap {
     synthesize(&spectrum, n, seed)
 }
 
-fn rms_slope(map: &HeightMap) -> f64 {
-    let n = map.n;
-    let mut sum = 0.0;
-    for iy in 0..n {
-        for ix in 0..n {
-            let h = map.heights[iy * n + ix];
-            let dx = map.heights[iy * n + (ix + 1) % n] - h;
-            let dy = map.heights[((iy + 1) % n) * n + ix] - h;
-            sum += dx * dx + dy * dy;
-        }
-    }
-    (sum / (n * n) as f64).sqrt() / map.pixel
-}
-
 fn env_settings() -> BemSettings {
     let mut settings = BemSettings::default();
     if let Some(t) = std::env::var("BEM_THREADS")
@@ -60,7 +46,7 @@ fn timings_of_the_accelerations() {
     for n in sizes {
         let map = surface(n, 1);
         // p̄ / (E* h'_rms) = 0.1: A/A0 ≈ 0.2.
-        let pressure = 0.1 * rms_slope(&map);
+        let pressure = 0.1 * map.rms_slope();
         let mut reference: Option<Vec<f64>> = None;
         for &(preconditioned, coarse_to_fine) in &combos {
             let settings = BemSettings {
@@ -104,7 +90,7 @@ fn one_solve_for_peak_memory() {
         .and_then(|v| v.parse().ok())
         .unwrap_or(2048);
     let map = surface(n, 1);
-    let pressure = 0.1 * rms_slope(&map);
+    let pressure = 0.1 * map.rms_slope();
     let start = Instant::now();
     let sol = solve(&map, 1.0, pressure, Boundary::Periodic, &env_settings()).unwrap();
     println!(

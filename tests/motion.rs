@@ -270,7 +270,7 @@ fn steady_film_of_the_flat_wiper_matches_the_direct_coefficients() {
     // table's junction against DragCoefficients::compute (exact junction, direct I)
     let s = load("wiper-blade-water.toml");
     let r = simulate(&s.life);
-    let spec = s.motion.unwrap();
+    let spec = s.life.motion.unwrap();
     let seal = spec.seal(
         s.problem.material,
         FlatSeal { ..s.problem.seal },

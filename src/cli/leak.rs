@@ -127,7 +127,7 @@ pub fn run(args: LeakArgs) -> Result<(), CliError> {
     let solver = StaticSolver::with_path(scenario.problem.clone(), path);
     let mut points: Vec<LeakPoint> = pressures.iter().map(|&p0| solver.evaluate(p0)).collect();
     let mut warnings: Vec<Warning> = points.iter().flat_map(|p| solver.warnings(p)).collect();
-    let csv = match &scenario.motion {
+    let csv = match &scenario.life.motion {
         None => leak_table(&points)?,
         Some(spec) => {
             let motion: Vec<MotionPoint> = points

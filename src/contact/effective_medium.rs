@@ -23,7 +23,7 @@
 //! The leak rate of a flat seal is `Q̇ = (L_y/L_x) σ_eff ΔP` (DESIGN §3.3).
 
 use super::PerssonContact;
-use crate::numerics::quadrature::gauss_legendre;
+use crate::numerics::quadrature::{composite, gauss_legendre};
 use crate::numerics::special::erf;
 use std::f64::consts::{FRAC_1_SQRT_2, PI, SQRT_2};
 
@@ -162,27 +162,18 @@ impl SeparationDistribution {
             0.5
         };
         let mut components = Vec::new();
-        for pair in breaks.windows(2) {
-            let (lo, hi) = (pair[0], pair[1]);
-            let panels = ((hi - lo) / width).ceil().max(1.0) as usize;
-            let h = (hi - lo) / panels as f64;
-            for p in 0..panels {
-                let mid = lo + (p as f64 + 0.5) * h;
-                for (node, w) in nodes.iter().zip(&weights) {
-                    let x = mid + 0.5 * h * node;
-                    let Some(ln_q) = sp.invert_m3(x.exp()) else {
-                        continue;
-                    };
-                    let y = s / (PI * x.exp()).sqrt();
-                    let zeta = (ln_q - q0.ln()).exp().max(1.0);
-                    let sep = contact.separation(zeta, s);
-                    components.push(FoldedGaussian {
-                        weight: 0.5 * h * w * y * (-y * y).exp() / PI.sqrt(),
-                        center: sep.u1(),
-                        width: sp.rms_roughness_above(ln_q.exp()),
-                    });
-                }
-            }
+        for (x, weight) in composite(&breaks, width, &nodes, &weights) {
+            let Some(ln_q) = sp.invert_m3(x.exp()) else {
+                continue;
+            };
+            let y = s / (PI * x.exp()).sqrt();
+            let zeta = (ln_q - q0.ln()).exp().max(1.0);
+            let sep = contact.separation(zeta, s);
+            components.push(FoldedGaussian {
+                weight: weight * y * (-y * y).exp() / PI.sqrt(),
+                center: sep.u1(),
+                width: sp.rms_roughness_above(ln_q.exp()),
+            });
         }
         SeparationDistribution::new(c, components)
     }

@@ -21,7 +21,7 @@ pub mod table;
 pub use effective_medium::{EffectiveMedium, EffectiveMediumSettings, SeparationDistribution};
 pub use table::{ContactTable, EffectiveMediumTable, TableSettings};
 
-use crate::numerics::quadrature::gauss_legendre;
+use crate::numerics::quadrature::{composite, gauss_legendre};
 use crate::numerics::special::{erf, erf_inv};
 use crate::surface::Spectrum;
 use std::f64::consts::PI;
@@ -280,36 +280,27 @@ impl PerssonContact {
         let mut mean = 0.0;
         let mut mean_d = 0.0;
         let width = self.settings.quadrature.panel_width;
-        for pair in breaks.windows(2) {
-            let (lo, hi) = (pair[0], pair[1]);
-            let panels = ((hi - lo) / width).ceil().max(1.0) as usize;
-            let h = (hi - lo) / panels as f64;
-            for p in 0..panels {
-                let mid = lo + (p as f64 + 0.5) * h;
-                for (xi, wi) in self.nodes.iter().zip(&self.weights) {
-                    let v = mid + 0.5 * h * xi;
-                    let t = v.exp();
-                    let big_l = t.ln_1p();
-                    let ln_q = ln_a + big_l;
-                    // q² C(q) · dq/dv, dq/dv = a t
-                    let jac = (2.0 * ln_q + sp.ln_c(ln_q) + ln_a).exp() * t;
-                    let m = sp.moment_span(3.0, ln_a, big_l);
-                    let w = 1.0 / (PI * m).sqrt();
-                    let x = w * pr;
-                    let f = separation::f(x, gamma);
-                    // F′(x)·x = −g e^{−x²}
-                    let ex = (-x * x).exp();
-                    let erfx = erf(x);
-                    let g = gamma + 3.0 * (1.0 - gamma) * erfx * erfx;
-                    let xfp = -g * ex;
-                    let dw = 0.5 * PI * w * w * w * dm3;
-                    // d[w F(w p/E*)]/d ln ζ = w′ (F + x F′) + w² (p/E*)′ F′, and w² F′ = w (x F′)/pr
-                    let d = dw * (f + xfp) + w * pr_d * xfp / pr;
-                    let scale = 0.5 * h * wi * jac;
-                    mean += scale * w * f;
-                    mean_d += scale * d;
-                }
-            }
+        for (v, weight) in composite(&breaks, width, &self.nodes, &self.weights) {
+            let t = v.exp();
+            let big_l = t.ln_1p();
+            let ln_q = ln_a + big_l;
+            // q² C(q) · dq/dv, dq/dv = a t
+            let jac = (2.0 * ln_q + sp.ln_c(ln_q) + ln_a).exp() * t;
+            let m = sp.moment_span(3.0, ln_a, big_l);
+            let w = 1.0 / (PI * m).sqrt();
+            let x = w * pr;
+            let f = separation::f(x, gamma);
+            // F′(x)·x = −g e^{−x²}
+            let ex = (-x * x).exp();
+            let erfx = erf(x);
+            let g = gamma + 3.0 * (1.0 - gamma) * erfx * erfx;
+            let xfp = -g * ex;
+            let dw = 0.5 * PI * w * w * w * dm3;
+            // d[w F(w p/E*)]/d ln ζ = w′ (F + x F′) + w² (p/E*)′ F′, and w² F′ = w (x F′)/pr
+            let d = dw * (f + xfp) + w * pr_d * xfp / pr;
+            let scale = weight * jac;
+            mean += scale * w * f;
+            mean_d += scale * d;
         }
         let sqrt_pi = PI.sqrt();
         Separation {

@@ -1100,20 +1100,6 @@ mod tests {
         synthesize(&spectrum, n, seed)
     }
 
-    fn rms_slope(map: &HeightMap) -> f64 {
-        let n = map.n;
-        let mut sum = 0.0;
-        for iy in 0..n {
-            for ix in 0..n {
-                let h = map.heights[iy * n + ix];
-                let dx = map.heights[iy * n + (ix + 1) % n] - h;
-                let dy = map.heights[((iy + 1) % n) * n + ix] - h;
-                sum += dx * dx + dy * dy;
-            }
-        }
-        (sum / (n * n) as f64).sqrt() / map.pixel
-    }
-
     fn settings(preconditioned: bool, coarse_to_fine: bool) -> BemSettings {
         BemSettings {
             preconditioned,
@@ -1237,7 +1223,7 @@ mod tests {
     fn load_signs_and_complementarity() {
         let map = rough(128, 7);
         let e_star = 1.0;
-        let mean_pressure = 0.05 * rms_slope(&map) * e_star;
+        let mean_pressure = 0.05 * map.rms_slope() * e_star;
         for boundary in [Boundary::Periodic, Boundary::Free] {
             let sol = solve(
                 &map,
@@ -1298,7 +1284,7 @@ mod tests {
     #[test]
     fn preconditioned_and_plain_agree() {
         let map = rough(128, 3);
-        let mean_pressure = 0.01 * rms_slope(&map);
+        let mean_pressure = 0.01 * map.rms_slope();
         let plain = solve(
             &map,
             1.0,
@@ -1339,7 +1325,7 @@ mod tests {
     #[test]
     fn more_load_more_contact_less_gap() {
         let map = rough(64, 11);
-        let slope = rms_slope(&map);
+        let slope = map.rms_slope();
         let mut last: Option<ContactSolution> = None;
         for k in 0..8 {
             let p = slope * 0.002 * 1.6f64.powi(k);
@@ -1357,7 +1343,7 @@ mod tests {
     fn deterministic_for_any_thread_count() {
         // Free boundary: the FFT grid is 2n = 512 ≥ PARALLEL_MIN, so the threads are used.
         let map = rough(256, 5);
-        let p = 0.1 * rms_slope(&map);
+        let p = 0.1 * map.rms_slope();
         let run = |threads| {
             let s = BemSettings {
                 threads,
@@ -1466,7 +1452,7 @@ mod tests {
             coarse_to_fine: false,
             ..s.clone()
         };
-        let p = 0.01 * rms_slope(&map);
+        let p = 0.01 * map.rms_slope();
         assert!(matches!(
             solve(&map, 1.0, p, per, &few),
             Err(BemError::NotConverged { .. })

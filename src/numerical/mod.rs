@@ -32,6 +32,22 @@ impl HeightMap {
         self.n as f64 * self.pixel
     }
 
+    /// Root-mean-square slope by periodic forward differences,
+    /// `(⟨(∂h/∂x)² + (∂h/∂y)²⟩)^{1/2}` (dimensionless).
+    pub fn rms_slope(&self) -> f64 {
+        let n = self.n;
+        let mut sum = 0.0;
+        for iy in 0..n {
+            for ix in 0..n {
+                let h = self.heights[iy * n + ix];
+                let dx = self.heights[iy * n + (ix + 1) % n] - h;
+                let dy = self.heights[((iy + 1) % n) * n + ix] - h;
+                sum += dx * dx + dy * dy;
+            }
+        }
+        (sum / (n * n) as f64).sqrt() / self.pixel
+    }
+
     /// Root-mean-square height about the mean (m).
     pub fn rms(&self) -> f64 {
         let count = self.heights.len() as f64;

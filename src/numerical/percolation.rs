@@ -144,23 +144,7 @@ pub fn analyse(open: &[bool], n: usize) -> Percolation {
     check_size(open.len(), n);
     let cells = n * n;
     let mut uf = WindingUnionFind::new(cells);
-    for iy in 0..n {
-        let north_row = ((iy + 1) % n) * n;
-        for ix in 0..n {
-            let i = iy * n + ix;
-            if !open[i] {
-                continue;
-            }
-            let east = iy * n + (ix + 1) % n;
-            if open[east] {
-                uf.union(i, east, 1);
-            }
-            let north = north_row + ix;
-            if open[north] {
-                uf.union(i, north, 0);
-            }
-        }
-    }
+    unite_open_neighbours(open, n, &mut uf, false);
     let mut root_label: Vec<u32> = vec![u32::MAX; cells];
     let mut labels = vec![None; cells];
     let mut clusters = 0u32;
@@ -202,7 +186,19 @@ pub fn spanning_cluster(open: &[bool], n: usize) -> Option<Vec<bool>> {
 /// winding loop).
 pub fn percolates(open: &[bool], n: usize) -> bool {
     check_size(open.len(), n);
-    let mut uf = WindingUnionFind::new(n * n);
+    unite_open_neighbours(open, n, &mut WindingUnionFind::new(n * n), true)
+}
+
+/// Unites every open cell with its open east and north neighbours (periodic, 4-connectivity;
+/// each bond once). Returns whether some union closed a loop winding around x; with
+/// `stop_at_first_wrap` it returns at that union, leaving the rest un-united.
+fn unite_open_neighbours(
+    open: &[bool],
+    n: usize,
+    uf: &mut WindingUnionFind,
+    stop_at_first_wrap: bool,
+) -> bool {
+    let mut wrapped = false;
     for iy in 0..n {
         let north_row = ((iy + 1) % n) * n;
         for ix in 0..n {
@@ -210,17 +206,17 @@ pub fn percolates(open: &[bool], n: usize) -> bool {
             if !open[i] {
                 continue;
             }
-            let east = iy * n + (ix + 1) % n;
-            if open[east] && uf.union(i, east, 1) {
-                return true;
-            }
-            let north = north_row + ix;
-            if open[north] && uf.union(i, north, 0) {
-                return true;
+            for (other, dx) in [(iy * n + (ix + 1) % n, 1), (north_row + ix, 0)] {
+                if open[other] && uf.union(i, other, dx) {
+                    wrapped = true;
+                    if stop_at_first_wrap {
+                        return true;
+                    }
+                }
             }
         }
     }
-    false
+    wrapped
 }
 
 /// Exact percolation threshold of a scalar field: see [`critical_level`].

@@ -41,6 +41,30 @@ pub fn gauss_legendre(n: usize) -> (Vec<f64>, Vec<f64>) {
     (x, w)
 }
 
+/// The composite rule built from the n-point rule (`nodes`, `weights` of [`gauss_legendre`]) on
+/// the intervals between consecutive `breaks` (increasing), each cut into equal panels no wider
+/// than `max_width`: `(abscissa, weight)` pairs in increasing abscissa, weight `½ h w_i` for a
+/// panel of width h.
+pub fn composite<'a>(
+    breaks: &'a [f64],
+    max_width: f64,
+    nodes: &'a [f64],
+    weights: &'a [f64],
+) -> impl Iterator<Item = (f64, f64)> + 'a {
+    breaks.windows(2).flat_map(move |pair| {
+        let (lo, hi) = (pair[0], pair[1]);
+        let panels = ((hi - lo) / max_width).ceil().max(1.0) as usize;
+        let h = (hi - lo) / panels as f64;
+        (0..panels).flat_map(move |p| {
+            let mid = lo + (p as f64 + 0.5) * h;
+            nodes
+                .iter()
+                .zip(weights)
+                .map(move |(x, w)| (mid + 0.5 * h * x, 0.5 * h * w))
+        })
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -33,7 +33,6 @@ mod validate;
 pub use error::ScenarioError;
 pub use material::{PARAMETERS, load_material_file, material_from_str};
 
-use crate::dynamic::MotionSpec;
 use crate::leak::StaticProblem;
 use crate::material::Material;
 use crate::numerical::HeightMap;
@@ -68,10 +67,6 @@ pub struct Scenario {
     /// `[numerical]`: grid, band, realisations and seed of the numerical level (defaults:
     /// [`NumericalSettings::default`]).
     pub numerical: NumericalSettings,
-    /// `[motion]`: the countersurface slides past the seal (PY08 §8, [`crate::dynamic`]):
-    /// constant sliding or a stroke cycle; `None` for a static seal. The same value is
-    /// `life.motion`.
-    pub motion: Option<MotionSpec>,
 }
 
 impl Scenario {
@@ -111,17 +106,7 @@ impl Scenario {
     ) -> Result<Scenario, ScenarioError> {
         let source = Source { path, text };
         let raw: RawScenario = source.deserialize()?;
-        let validated = source.scenario(&raw, replacement)?;
-        Ok(Scenario {
-            name: validated.name,
-            path: path.to_path_buf(),
-            material: validated.material,
-            problem: validated.problem,
-            life: validated.life,
-            height_map: validated.height_map,
-            numerical: validated.numerical,
-            motion: validated.motion,
-        })
+        source.scenario(&raw, replacement)
     }
 }
 

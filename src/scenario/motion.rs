@@ -201,7 +201,7 @@ mod tests {
 
     fn motion(table: &str) -> Result<Option<MotionSpec>, String> {
         Scenario::from_str(&format!("{PAPER}[motion]\n{table}"), Path::new("x.toml"))
-            .map(|s| s.motion)
+            .map(|s| s.life.motion)
             .map_err(|e| e.to_string())
     }
 
@@ -247,7 +247,7 @@ mod tests {
         assert_eq!(m.fastest_speed(), 0.2);
         assert!(motion("sliding_speed = 0\n").unwrap().is_some());
         let none = Scenario::from_str(PAPER, Path::new("x.toml")).unwrap();
-        assert_eq!(none.motion, None);
+        assert_eq!(none.life.motion, None);
         assert_eq!(none.life.motion, None);
     }
 

@@ -4,13 +4,13 @@
 //! range); [`Source::quantity`] is the one place where a written quantity becomes a checked SI
 //! number.
 
+use super::Scenario;
 use super::error::{ScenarioError, Source};
 use super::raw::{
     Quantity, RawFluid, RawModel, RawNumerical, RawQuantity, RawScenario, RawSurface,
 };
 use super::{height_map, psd, show};
 use crate::contact::ContactSettings;
-use crate::dynamic::MotionSpec;
 use crate::leak::{FlatSeal, Fluid, StaticProblem};
 use crate::material::Material;
 use crate::numerical::reference::NumericalSettings;
@@ -185,21 +185,6 @@ const NUMERICAL_SEED: Field = field(
 /// Default of `model.shape_factor` (α ≈ 1, PY08 eq. 2).
 const DEFAULT_SHAPE_FACTOR: f64 = 1.0;
 
-/// The validated contents of a scenario file (before it is wrapped with its name and path).
-pub(super) struct Validated {
-    /// The `name` key, or the file stem.
-    pub name: String,
-    pub material: Material,
-    pub problem: StaticProblem,
-    pub life: LifeProblem,
-    /// `surface.height_map`, in SI units, for the numerical level.
-    pub height_map: Option<HeightMap>,
-    /// `[numerical]`: the numerical level's settings.
-    pub numerical: NumericalSettings,
-    /// `[motion]`: the countersurface's motion (`None`: a static seal).
-    pub motion: Option<MotionSpec>,
-}
-
 impl Source<'_> {
     /// Checks the whole file; with `replacement`, that compound stands in for the one the
     /// `[material]` table gives (`sealsim compare`).
@@ -207,7 +192,7 @@ impl Source<'_> {
         &self,
         raw: &RawScenario,
         replacement: Option<&Material>,
-    ) -> Result<Validated, ScenarioError> {
+    ) -> Result<Scenario, ScenarioError> {
         let name = raw
             .name
             .as_ref()
@@ -251,8 +236,9 @@ impl Source<'_> {
             motion,
         };
         let seal = static_seal(&life);
-        Ok(Validated {
+        Ok(Scenario {
             name,
+            path: self.path.to_path_buf(),
             material,
             problem: StaticProblem {
                 material: elastic,
@@ -265,7 +251,6 @@ impl Source<'_> {
             life,
             height_map,
             numerical,
-            motion,
         })
     }
 
