@@ -5,7 +5,7 @@
 use criterion::{Criterion, criterion_group, criterion_main};
 use sealsim::material::fit::{FitSettings, fit_relaxation};
 use sealsim::material::{Prony, PronyTerm, RelaxationState};
-use sealsim::numerics::log_spaced;
+use sealsim::math::log_spaced;
 use std::hint::black_box;
 
 /// 30 terms, τ = 1e-6 … 1e23 s (one per decade), moduli varied, E∞ = 2 MPa.

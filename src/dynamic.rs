@@ -93,9 +93,9 @@ use crate::contact::{
     SeparationDistribution,
 };
 use crate::leak::FlatSeal;
-use crate::numerics::interp::UniformCubic;
-use crate::numerics::quadrature::gauss_legendre;
-use crate::numerics::special::erfc;
+use crate::math::interp::UniformCubic;
+use crate::math::quadrature::gauss_legendre;
+use crate::math::special::erfc;
 use std::f64::consts::{FRAC_1_SQRT_2, PI};
 
 /// Half-width, in standard deviations, of the u-range kept for each Gaussian component of
@@ -748,7 +748,7 @@ impl DragTable {
             let v = (i / j.u_c).ln();
             v.is_finite().then_some(v)
         };
-        let values: Vec<f64> = crate::numerics::map_on_two_threads(n, node)
+        let values: Vec<f64> = crate::math::map_on_two_threads(n, node)
             .into_iter()
             .map_while(|v| v)
             .collect();

@@ -5,7 +5,7 @@
 //!
 //! Architecture: dependencies point inwards.
 //! * input boundary: [`units`] (unit strings → SI), [`scenario`] (TOML → validated model types);
-//! * physics: [`numerics`], [`surface`] (roughness spectra), [`contact`] (Persson contact
+//! * physics: [`math`], [`surface`] (roughness spectra), [`contact`] (Persson contact
 //!   mechanics, critical junction, contact table), [`leak`] (leak rate of a flat seal);
 //! * output boundary: [`report`] (CSV, plots, atomic files), [`cli`].
 //!
@@ -42,8 +42,8 @@ pub mod contact;
 pub mod dynamic;
 pub mod leak;
 pub mod material;
+pub mod math;
 pub mod numerical;
-pub mod numerics;
 pub mod report;
 pub mod scenario;
 pub mod seal;

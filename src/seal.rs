@@ -174,7 +174,7 @@ impl Profile {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::numerics::quadrature::gauss_legendre;
+    use crate::math::quadrature::gauss_legendre;
 
     #[test]
     fn hertz_profile_carries_its_force() {

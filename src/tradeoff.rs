@@ -23,10 +23,10 @@
 
 use crate::contact::{Junction, QuadratureSettings, TableSettings};
 use crate::leak::{ContactPath, Fidelity, PathOptions, StaticProblem, StaticSolver};
+use crate::math::special::erf_inv;
 use crate::numerical::psd::{self, PsdOptions, Window};
 use crate::numerical::reference::{NumericalSettings, Surfaces, band_limited, evaluate};
 use crate::numerical::surface::synthesize;
-use crate::numerics::special::erf_inv;
 use crate::simulate::{LifeProblem, Simulator};
 use std::f64::consts::PI;
 use std::time::Instant;

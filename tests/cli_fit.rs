@@ -5,7 +5,7 @@
 use assert_cmd::cargo::cargo_bin_cmd;
 use predicates::prelude::*;
 use sealsim::material::{Prony, PronyTerm};
-use sealsim::numerics::log_spaced;
+use sealsim::math::log_spaced;
 use sealsim::units::{Dimension, parse_quantity};
 use std::fmt::Write;
 use std::fs;

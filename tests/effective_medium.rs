@@ -172,8 +172,8 @@ fn persson_effective_medium_seals_exactly_at_half_contact() {
     let zeta1 = 7.8e9 / 1e4;
     // s at which A(ζ1)/A0 = 1/2: A = erf(s/√(π M3)) is linear in s
     let probe = 1e-3;
-    let s_half = probe * sealsim::numerics::special::erf_inv(0.5)
-        / sealsim::numerics::special::erf_inv(c.area_fraction(zeta1, probe));
+    let s_half = probe * sealsim::math::special::erf_inv(0.5)
+        / sealsim::math::special::erf_inv(c.area_fraction(zeta1, probe));
     let below = EffectiveMedium::persson(&c, s_half * 0.98, settings);
     assert!(below.contact_fraction < 0.5 && !below.sealed());
     assert!(below.cubed_gap > 0.0 && below.cubed_gap.is_finite());

@@ -5,8 +5,8 @@
 use nalgebra::{DMatrix, DVector};
 use sealsim::material::fit::{FitError, FitSettings, fit_dma, fit_relaxation};
 use sealsim::material::{Prony, PronyTerm};
-use sealsim::numerics::log_spaced;
-use sealsim::numerics::nnls::{NnlsSolution, nnls};
+use sealsim::math::log_spaced;
+use sealsim::math::nnls::{NnlsSolution, nnls};
 
 /// SplitMix64 (Steele, Lea & Flood, OOPSLA 2014): a tiny, well-mixed, seedable generator.
 struct SplitMix64(u64);

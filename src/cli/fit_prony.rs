@@ -197,7 +197,7 @@ mod tests {
 
     #[test]
     fn provenance_names_the_method_and_the_residuals() {
-        let t = crate::numerics::log_spaced(1.0, 1e6, 13);
+        let t = crate::math::log_spaced(1.0, 1e6, 13);
         let e: Vec<f64> = t
             .iter()
             .map(|x| 2e6 * (1.0 + 3.0 / (1.0 + x.sqrt())))

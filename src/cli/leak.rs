@@ -3,7 +3,7 @@
 use super::{CliError, write_output};
 use crate::dynamic::{DragCoefficients, DragSettings, MotionPoint, MotionSpec};
 use crate::leak::{Fidelity, FlatSeal, LeakPoint, StaticSolver, Warning};
-use crate::numerics::log_spaced;
+use crate::math::log_spaced;
 use crate::report::csv::{leak_table, motion_leak_table};
 use crate::scenario::Scenario;
 use crate::scenario::life::parse_fidelity;

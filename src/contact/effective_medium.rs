@@ -23,8 +23,8 @@
 //! The leak rate of a flat seal is `Q̇ = (L_y/L_x) σ_eff ΔP` (DESIGN §3.3).
 
 use super::PerssonContact;
-use crate::numerics::quadrature::{composite, gauss_legendre};
-use crate::numerics::special::erf;
+use crate::math::quadrature::{composite, gauss_legendre};
+use crate::math::special::erf;
 use std::f64::consts::{FRAC_1_SQRT_2, PI, SQRT_2};
 
 /// Half-width, in standard deviations, of the u-range integrated for each Gaussian (mass

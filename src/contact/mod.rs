@@ -21,8 +21,8 @@ pub mod table;
 pub use effective_medium::{EffectiveMedium, EffectiveMediumSettings, SeparationDistribution};
 pub use table::{ContactTable, EffectiveMediumTable, TableSettings};
 
-use crate::numerics::quadrature::{composite, gauss_legendre};
-use crate::numerics::special::{erf, erf_inv};
+use crate::math::quadrature::{composite, gauss_legendre};
+use crate::math::special::{erf, erf_inv};
 use crate::surface::Spectrum;
 use std::f64::consts::PI;
 

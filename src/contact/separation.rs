@@ -7,8 +7,8 @@
 //! form and only the smooth, γ-independent K is tabulated (once per process, cubic Hermite
 //! with exact derivatives, ≈1e-12 absolute).
 
-use crate::numerics::quadrature::gauss_legendre;
-use crate::numerics::special::{erf, exp_int_e1};
+use crate::math::quadrature::gauss_legendre;
+use crate::math::special::{erf, exp_int_e1};
 use std::sync::OnceLock;
 
 /// Upper end of the K table; above it `K(x) = E1(x²)/2` to better than 1e-30 relative

@@ -11,8 +11,8 @@
 //! is never less accurate than the table's stated tolerance.
 
 use super::{EffectiveMedium, EffectiveMediumSettings, Junction, PerssonContact};
-use crate::numerics::interp::UniformCubic;
-use crate::numerics::special::erf_inv;
+use crate::math::interp::UniformCubic;
+use crate::math::special::erf_inv;
 
 /// How the table is laid out.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -171,7 +171,7 @@ impl EffectiveMediumTable {
                 EffectiveMedium::persson(&exact, s_half * logistic(lo + h * i as f64), settings);
             (!em.sealed()).then(|| em.effective_gap().ln() - ln_h)
         };
-        let values: Vec<f64> = crate::numerics::map_on_two_threads(n, node)
+        let values: Vec<f64> = crate::math::map_on_two_threads(n, node)
             .into_iter()
             .map_while(|v| v)
             .collect();

@@ -2,7 +2,7 @@
 //!
 //! The relaxation times are fixed on a log-spaced grid, so the model is linear in its
 //! unknowns, E∞ ≥ 0 and E_i ≥ 0, and the fit is a non-negative least-squares problem
-//! ([`crate::numerics::nnls`], Lawson & Hanson 1974): no starting guess, a global optimum,
+//! ([`crate::math::nnls`], Lawson & Hanson 1974): no starting guess, a global optimum,
 //! and no negative moduli (which would make the material store energy it never received).
 //!
 //! * Grid: `terms_per_decade` = N (1–4) τ per decade, log-spaced (rounded to 4 significant
@@ -32,8 +32,8 @@
 //! Phenomenological Theory of Linear Viscoelastic Behavior*, Springer 1989, ch. 4).
 
 use super::{Prony, PronyError, PronyTerm};
-use crate::numerics::log_spaced;
-use crate::numerics::nnls::{NnlsError, nnls};
+use crate::math::log_spaced;
+use crate::math::nnls::{NnlsError, nnls};
 use nalgebra::{DMatrix, DVector};
 use std::fmt;
 

@@ -8,7 +8,7 @@
 //! τ_max (when E∞ > 0), and `B_j = 1/(λ_j Σ_i E_i τ_i/(λ_j − τ_i)²)` (Tschoegl, *The
 //! Phenomenological Theory of Linear Viscoelastic Behavior*, Springer 1989, ch. 4).
 
-use crate::numerics::special::exp_neg;
+use crate::math::special::exp_neg;
 use std::fmt;
 
 /// One Maxwell branch: modulus E_i [Pa], relaxation time τ_i [s, reduced time].

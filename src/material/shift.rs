@@ -11,7 +11,7 @@
 //! Everything is carried as the *rate* `r(T) = 1/a_T`, through its natural log, so that shift
 //! factors of hundreds of decades neither overflow nor lose precision.
 
-use crate::numerics::quadrature::gauss_legendre;
+use crate::math::quadrature::gauss_legendre;
 use std::sync::OnceLock;
 
 /// Molar gas constant R [J/(mol·K)] (CODATA 2018, exact).

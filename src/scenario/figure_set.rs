@@ -15,7 +15,7 @@ use super::error::{ScenarioError, Source};
 use super::raw::Quantity;
 use super::validate::{Bound, Field, field};
 use super::{Scenario, read, show};
-use crate::numerics::log_spaced;
+use crate::math::log_spaced;
 use crate::units::Dimension;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};

@@ -40,7 +40,7 @@ use crate::dynamic::{DragSettings, DragTable, MotionPoint, MotionSpec};
 use crate::leak::{ContactPath, Fidelity, FlatSeal, Fluid};
 use crate::material::shift::reduced_time;
 use crate::material::{Ageing, Material, RelaxationState, Shift, TemperatureHistory};
-use crate::numerics::quadrature::gauss_legendre;
+use crate::math::quadrature::gauss_legendre;
 use crate::seal::{Profile, SealGeometry, oring_contact_width, squeeze_function};
 use crate::surface::Spectrum;
 pub use events::{FailureCriteria, FailureEvent, FailureMode};

@@ -1,4 +1,5 @@
-//! Numerical building blocks, each documented with its method and reference.
+//! Mathematical building blocks that are not physics (quadrature, interpolation, least squares,
+//! special functions, linear solvers), each documented with its method and reference.
 
 pub mod interp;
 pub mod nnls;
