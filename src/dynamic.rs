@@ -92,6 +92,7 @@ use crate::contact::{
     CriticalJunction, EffectiveMediumSettings, Elastic, Junction, PerssonContact,
     SeparationDistribution,
 };
+use crate::fluid::{Conduction, FlowGeometry, Fluid};
 use crate::leak::FlatSeal;
 use crate::math::interp::UniformCubic;
 use crate::math::quadrature::gauss_legendre;
@@ -174,13 +175,16 @@ impl DragSettings {
 
 /// The speed-independent coefficients of PY08 §8 for one seal state.
 ///
-/// With them `Q̇(ΔP, v0) = length_ratio · m · [ΔP + (b_a + b_b) v0]` ([`leak_rate`]).
+/// With them `Q̇(ΔP, v0) = (L_y/L_x) · m · [ΔP + (b_a + b_b) v0]` ([`leak_rate`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DragCoefficients {
     /// The critical junction the coefficients belong to.
     pub junction: Junction,
-    /// `L_y/L_x`: the number of square cells (constrictions) side by side (PY08 eq. 3).
-    pub length_ratio: f64,
+    /// The seal's extent along (L_x) and across (L_y) the flow; `L_y/L_x` square cells
+    /// (constrictions) side by side (PY08 eq. 3).
+    pub geometry: FlowGeometry,
+    /// Viscosity η of the fluid [Pa·s].
+    pub viscosity: f64,
     /// `M = α u_c³/(12η)` [m³/(Pa·s)]: conductance of one constriction (PY08 eq. 2).
     pub m: f64,
     /// `B_a = 6 L_a η J` [Pa·s/m] (PY08 eq. 10), `J = ∫_{u_c}^∞ P̃(u)/u² du`.
@@ -239,7 +243,7 @@ impl DragCoefficients {
         let alpha = seal.shape_factor;
         let u_c = j.u_c;
         let (l_a, l_b) = seal.side_widths();
-        let m = crate::leak::junction_conductance(u_c, alpha, eta);
+        let m = crate::fluid::junction_conductance(u_c, alpha, eta);
         // J = I/u_c². For u_c ≲ 1e-154 m (a junction within rounding of sealing) J overflows
         // while M underflows to 0; B saturates at f64::MAX so that M·B stays 0, not NaN.
         let j_int = integral_i / (u_c * u_c);
@@ -258,7 +262,8 @@ impl DragCoefficients {
         };
         DragCoefficients {
             junction: Junction::Leaking(*j),
-            length_ratio: seal.seal.length / seal.seal.width,
+            geometry: seal.seal.geometry(),
+            viscosity: eta,
             m,
             b_a,
             b_b,
@@ -273,7 +278,8 @@ impl DragCoefficients {
     pub fn sealed(seal: &ReciprocatingSeal) -> Self {
         DragCoefficients {
             junction: Junction::Sealed,
-            length_ratio: seal.seal.length / seal.seal.width,
+            geometry: seal.seal.geometry(),
+            viscosity: seal.viscosity,
             m: 0.0,
             b_a: 0.0,
             b_b: 0.0,
@@ -291,7 +297,22 @@ impl DragCoefficients {
 
     /// `(L_y/L_x) M` [m³/(Pa·s)]: the static conductance of the whole seal.
     pub fn conductance(&self) -> f64 {
-        self.length_ratio * self.m
+        self.geometry.cells() * self.m
+    }
+
+    /// The pressure-driven part `(L_y/L_x) M ΔP` [m³/s] at `pressure_difference` ΔP \[Pa\]:
+    /// the static leak law ([`Fluid::leak_rate`]) through the junction's conductance M.
+    pub fn static_leak_rate(&self, pressure_difference: f64) -> f64 {
+        let fluid = Fluid {
+            viscosity: self.viscosity,
+            pressure_difference,
+        };
+        fluid.leak_rate(
+            self.geometry,
+            Conduction::Uniform {
+                conductance: self.m,
+            },
+        )
     }
 }
 
@@ -300,7 +321,7 @@ impl DragCoefficients {
 /// `speed = v0` [m/s], positive when the countersurface moves from the high-pressure side
 /// towards the low-pressure side (out-stroke). Positive Q̇ flows from a to b.
 pub fn leak_rate(coeffs: &DragCoefficients, pressure_difference: f64, speed: f64) -> f64 {
-    coeffs.conductance() * pressure_difference + drag_leak_rate(coeffs, speed)
+    coeffs.static_leak_rate(pressure_difference) + drag_leak_rate(coeffs, speed)
 }
 
 /// The drag term alone, `(L_y/L_x) M (B_a + B_b) v0 = L_y d v0` [m³/s] (PY08 eqs. 14–15):
@@ -356,7 +377,7 @@ pub fn stroke_cycle(
 ) -> Option<StrokeCycle> {
     // the static part of Q̇ = (L_y/L_x) M [ΔP + B v0] over the cycle, plus the drag film
     stroke_cycle_from(
-        coeffs.conductance() * pressure_difference,
+        coeffs.static_leak_rate(pressure_difference),
         coeffs,
         out_speed,
         in_speed,

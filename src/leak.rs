@@ -4,20 +4,12 @@ use crate::contact::{
     ContactSettings, ContactTable, CriticalJunction, EffectiveMediumSettings, EffectiveMediumTable,
     Elastic, Junction, PerssonContact, TableSettings,
 };
+use crate::fluid::{Conduction, FlowGeometry, Fluid, junction_conductance};
 use crate::numerical::HeightMap;
 use crate::numerical::reference::NumericalSettings;
 use crate::numerical::table::NumericalTable;
 use crate::surface::Spectrum;
-use std::fmt;
-
-/// A Newtonian, incompressible fluid and the pressure it pushes across the seal.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Fluid {
-    /// Dynamic viscosity η [Pa·s].
-    pub viscosity: f64,
-    /// ΔP = P_a − P_b across the seal [Pa] (≥ 0).
-    pub pressure_difference: f64,
-}
+use crate::validity::{self, At, ContactState, Findings};
 
 /// A flat seal: uniform nominal pressure over a rectangle `width × length` (PY08 Fig. 2).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -28,6 +20,16 @@ pub struct FlatSeal {
     pub width: f64,
     /// L_y, the length across the flow [m].
     pub length: f64,
+}
+
+impl FlatSeal {
+    /// The seal's extent along (L_x = `width`) and across (L_y = `length`) the flow.
+    pub fn geometry(&self) -> FlowGeometry {
+        FlowGeometry {
+            along_flow: self.width,
+            across_flow: self.length,
+        }
+    }
 }
 
 /// Which level of the fidelity ladder (DESIGN §4) evaluates the contact and the leak.
@@ -85,16 +87,6 @@ pub struct StaticProblem {
     pub shape_factor: f64,
 }
 
-/// ΔP/P0 above which the fluid pressure is no longer small against the contact pressure
-/// (PY08 §2 assumes P0 ≫ ΔP): a validity warning, for the static leak and the life run alike.
-pub const MAX_PRESSURE_RATIO: f64 = 0.1;
-
-/// Constriction height below which continuum flow is not a valid picture [m] (1 nm).
-pub const MIN_CONTINUUM_GAP: f64 = 1e-9;
-
-/// u_c/λ_c above which the thin-gap (lubrication) flow of PY08 eq. 1 fails.
-pub const MAX_ASPECT_RATIO: f64 = 0.1;
-
 /// One evaluated pressure point.
 ///
 /// `junction` is the conducting channel of the level ([`ContactPath::critical_junction`]).
@@ -105,123 +97,6 @@ pub struct LeakPoint {
     pub junction: Junction,
     /// Volume leak rate Q̇ [m³/s]; exactly 0 when sealed.
     pub leak_rate: f64,
-}
-
-/// A physics caveat about a result: the model was used outside the range where it holds.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Warning {
-    /// ΔP/P0 is not small: the fluid pressure deforms the contact (PY08 §2 assumes P0 ≫ ΔP).
-    PressureRatio { nominal_pressure: f64, ratio: f64 },
-    /// u_c/λ_c is not small: the lubrication (thin-gap) approximation behind eq. 1 fails.
-    AspectRatio { nominal_pressure: f64, ratio: f64 },
-    /// u_c is below a molecular size (1 nm): continuum flow is not a valid picture.
-    MolecularGap { nominal_pressure: f64, u_c: f64 },
-    /// ζc is within a factor 2 of q1/q0: the result depends on the (often uncertain) cut-off.
-    NearCutoff {
-        nominal_pressure: f64,
-        zeta_c: f64,
-        zeta_1: f64,
-    },
-    /// The numerical level resolved only `[q0, band·q0]` of a spectrum spanning
-    /// `spectrum_band = q1/q0`: its answer is for the band-limited surface.
-    BandLimited { band: f64, spectrum_band: f64 },
-    /// A node of the numerical level's table failed and was left out.
-    NumericalFailure {
-        reduced_pressure: f64,
-        message: String,
-    },
-    /// `[motion]`: the sliding speed exceeds the validity bound of PY08's second eq. 17: the
-    /// drag pressure opens the critical constriction (hydrodynamic lift-off, not modelled).
-    SpeedAboveBound {
-        nominal_pressure: f64,
-        /// The fastest speed of the motion [m/s].
-        speed: f64,
-        /// `E u_c³/(6 L η λ_c I)` [m/s].
-        bound: f64,
-    },
-}
-
-impl fmt::Display for Warning {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Warning::PressureRatio {
-                nominal_pressure,
-                ratio,
-            } => write!(
-                f,
-                "at P0 = {nominal_pressure:.4e} Pa, ΔP/P0 = {ratio:.3}: the theory assumes P0 ≫ ΔP \
-                 (the fluid pressure opens the interface; the leak rate is underestimated)"
-            ),
-            Warning::AspectRatio {
-                nominal_pressure,
-                ratio,
-            } => write!(
-                f,
-                "at P0 = {nominal_pressure:.4e} Pa, u_c/λ_c = {ratio:.3}: the thin-gap flow assumption \
-                 u_c ≪ λ_c does not hold"
-            ),
-            Warning::MolecularGap {
-                nominal_pressure,
-                u_c,
-            } => write!(
-                f,
-                "at P0 = {nominal_pressure:.4e} Pa, u_c = {u_c:.3e} m is below 1 nm: continuum flow is \
-                 not valid there; read the leak rate as 'effectively zero'"
-            ),
-            Warning::NearCutoff {
-                nominal_pressure,
-                zeta_c,
-                zeta_1,
-            } => write!(
-                f,
-                "at P0 = {nominal_pressure:.4e} Pa, ζc = {zeta_c:.4e} is within a factor 2 of q1/q0 = \
-                 {zeta_1:.4e}: the result depends on the short-wavelength cut-off q1"
-            ),
-            Warning::BandLimited {
-                band,
-                spectrum_band,
-            } => write!(
-                f,
-                "the numerical level resolves q1/q0 = {band} of a spectrum spanning {spectrum_band:.3e}: \
-                 its leak rate is that of the band-limited surface (compare levels on the same band \
-                 with `sealsim tradeoff`, or give a measured height_map)"
-            ),
-            Warning::NumericalFailure {
-                reduced_pressure,
-                message,
-            } => write!(
-                f,
-                "the numerical level failed at P0/E* = {reduced_pressure:.4e} and left that node out: \
-                 {message}"
-            ),
-            Warning::SpeedAboveBound {
-                nominal_pressure,
-                speed,
-                bound,
-            } => write!(
-                f,
-                "at P0 = {nominal_pressure:.4e} Pa, the sliding speed {speed:.4e} m/s exceeds the \
-                 validity bound {bound:.4e} m/s of PY08 eq. 17 (E u_c³/(6 L η λ_c I)): the drag \
-                 pressure opens the critical constriction; hydrodynamic lift-off is not modelled \
-                 (the drag leak rate is likely underestimated)"
-            ),
-        }
-    }
-}
-
-/// Conductance of one critical constriction of height `u_c` [m] (PY08 eqs. 1–2):
-/// `M = α u_c³/(12 η)` [m³/(Pa·s)], α the shape factor, η the viscosity [Pa·s].
-pub fn junction_conductance(u_c: f64, shape_factor: f64, viscosity: f64) -> f64 {
-    shape_factor * u_c.powi(3) / (12.0 * viscosity)
-}
-
-/// Leak rate through the critical constrictions of a flat seal (PY08 eqs. 1–3):
-/// `Q̇ = (L_y/L_x) α u_c³ ΔP / (12 η)` [m³/s] — `L_y/L_x` constrictions side by side, each of
-/// [`junction_conductance`].
-pub fn leak_rate(u_c: f64, fluid: &Fluid, width: f64, length: f64, shape_factor: f64) -> f64 {
-    (length / width)
-        * junction_conductance(u_c, shape_factor, fluid.viscosity)
-        * fluid.pressure_difference
 }
 
 /// Evaluates the leak of one surface at many pressures through one [`ContactPath`].
@@ -325,28 +200,20 @@ impl ContactPath {
         }
     }
 
-    /// Caveats of the path itself (not of one pressure): the numerical level resolves only a
-    /// band of a synthetic spectrum, or a node of its table failed.
-    pub fn warnings(&self, options: &PathOptions<'_>) -> Vec<Warning> {
+    /// Caveats of the path itself (not of one pressure), recorded into `out`: the numerical
+    /// level resolves only a band of a synthetic spectrum, or a node of its table failed
+    /// (docs/model.md §9.10).
+    pub fn assess(&self, options: &PathOptions<'_>, out: &mut Findings) {
         let ContactPath::Numerical { table, junctions } = self else {
-            return Vec::new();
+            return;
         };
-        let mut w = Vec::new();
         let sp = junctions.exact().spectrum();
-        let spectrum_band = sp.q1() / sp.q0();
-        if options.height_map.is_none() && spectrum_band > options.numerical.band * (1.0 + 1e-9) {
-            w.push(Warning::BandLimited {
-                band: options.numerical.band,
-                spectrum_band,
-            });
+        if options.height_map.is_none() {
+            validity::band_limited(options.numerical.band, sp.q1() / sp.q0(), out);
         }
         for (s, e) in table.failures() {
-            w.push(Warning::NumericalFailure {
-                reduced_pressure: *s,
-                message: e.to_string(),
-            });
+            validity::numerical_failure(*s, e.to_string(), out);
         }
-        w
     }
 
     /// The level this path evaluates.
@@ -491,16 +358,17 @@ impl StaticSolver {
     }
 
     /// The junction and leak rate at nominal pressure `p0` [Pa] (> 0):
-    /// `Q̇ = (L_y/L_x) σ ΔP` with σ the path's [`ContactPath::conductance`].
+    /// `Q̇ = (L_y/L_x) σ ΔP` ([`Fluid::leak_rate`]) with σ the path's [`ContactPath::conductance`].
     pub fn evaluate(&self, p0: f64) -> LeakPoint {
         let pb = &self.problem;
         let s = p0 / pb.material.effective_modulus();
         let junction = self.path.critical_junction(s);
-        let leak_rate = (pb.seal.length / pb.seal.width)
-            * self
-                .path
-                .channel_conductance(&junction, pb.shape_factor, pb.fluid.viscosity)
-            * pb.fluid.pressure_difference;
+        let conductance =
+            self.path
+                .channel_conductance(&junction, pb.shape_factor, pb.fluid.viscosity);
+        let leak_rate = pb
+            .fluid
+            .leak_rate(pb.seal.geometry(), Conduction::Uniform { conductance });
         LeakPoint {
             nominal_pressure: p0,
             junction,
@@ -508,40 +376,18 @@ impl StaticSolver {
         }
     }
 
-    /// The validity caveats of one result (empty when the model holds).
-    pub fn warnings(&self, point: &LeakPoint) -> Vec<Warning> {
-        let p0 = point.nominal_pressure;
-        let mut w = Vec::new();
-        let ratio = self.problem.fluid.pressure_difference / p0;
-        if ratio > MAX_PRESSURE_RATIO {
-            w.push(Warning::PressureRatio {
-                nominal_pressure: p0,
-                ratio,
-            });
-        }
-        if let Junction::Leaking(j) = point.junction {
-            let aspect = j.u_c / j.lambda_c;
-            if aspect > MAX_ASPECT_RATIO {
-                w.push(Warning::AspectRatio {
-                    nominal_pressure: p0,
-                    ratio: aspect,
-                });
-            }
-            if j.u_c < MIN_CONTINUUM_GAP {
-                w.push(Warning::MolecularGap {
-                    nominal_pressure: p0,
-                    u_c: j.u_c,
-                });
-            }
-            let zeta_1 = self.problem.spectrum.q1() / self.problem.spectrum.q0();
-            if j.zeta_c > 0.5 * zeta_1 {
-                w.push(Warning::NearCutoff {
-                    nominal_pressure: p0,
-                    zeta_c: j.zeta_c,
-                    zeta_1,
-                });
-            }
-        }
-        w
+    /// Records the validity findings of one result into `out` (docs/model.md §9.1–§9.4).
+    pub fn assess(&self, point: &LeakPoint, out: &mut Findings) {
+        let sp = &self.problem.spectrum;
+        validity::contact(
+            &ContactState {
+                nominal_pressure: point.nominal_pressure,
+                pressure_difference: self.problem.fluid.pressure_difference,
+                junction: &point.junction,
+                cutoff: sp.q1() / sp.q0(),
+            },
+            At::Pressure(point.nominal_pressure),
+            out,
+        );
     }
 }

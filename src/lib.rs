@@ -15,7 +15,8 @@
 //!
 //! ```
 //! use sealsim::contact::{ContactSettings, Elastic};
-//! use sealsim::leak::{Fidelity, FlatSeal, Fluid, StaticProblem, StaticSolver};
+//! use sealsim::fluid::Fluid;
+//! use sealsim::leak::{Fidelity, FlatSeal, StaticProblem, StaticSolver};
 //! use sealsim::surface::Spectrum;
 //!
 //! let problem = StaticProblem {
@@ -40,6 +41,7 @@ pub mod cli;
 pub mod clogging;
 pub mod contact;
 pub mod dynamic;
+pub mod fluid;
 pub mod leak;
 pub mod material;
 pub mod math;
@@ -49,5 +51,6 @@ pub mod scenario;
 pub mod seal;
 pub mod simulate;
 pub mod surface;
-pub mod tradeoff;
 pub mod units;
+pub mod validity;
+pub mod workflow;

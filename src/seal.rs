@@ -17,6 +17,7 @@
 //! sealing force is `f(t) = d ∫ E(ξ(t) − ξ(s)) dg(ε(s))` (quasi-linear viscoelasticity), so
 //! the Prony recursion runs on g rather than on ε.
 
+use crate::fluid::FlowGeometry;
 use std::f64::consts::PI;
 
 /// Lower and upper squeeze of the range in which Lindley's relations are used without warning.
@@ -127,25 +128,34 @@ impl Profile {
         }
     }
 
-    /// Leak rate through the profile as strips in series (DESIGN §3.2):
-    /// `Q̇ = L_y ΔP / ∫ dx / σ(p(x))` with the local conductance per unit width `σ(p)` [m³/(Pa·s)]
-    /// supplied by the caller (`σ = α u_c(p)³/(12η)`; `0` where sealed).
+    /// The profile's extent along the flow (its width L_x) with `sealing_length` L_y across it.
+    pub fn geometry(&self, sealing_length: f64) -> FlowGeometry {
+        FlowGeometry {
+            along_flow: self.width(),
+            across_flow: sealing_length,
+        }
+    }
+
+    /// Resistance per unit width of the profile's strips in series (DESIGN §3.2),
+    /// `R = ∫ dx / σ(p(x))` [Pa·s/m²], with the local conductance per unit width `σ(p)`
+    /// [m³/(Pa·s)] supplied by the caller (`σ = α u_c(p)³/(12η)`; `0` where sealed); the leak
+    /// rate is then `Q̇ = L_y ΔP / R` ([`crate::fluid::Fluid::leak_rate`] with
+    /// [`crate::fluid::Conduction::Series`]).
     ///
     /// For the Hertz profile `x = (b/2) sin θ` gives `∫ dx/σ = (b/2) ∫ cos θ / σ(p_max cos θ) dθ`,
     /// a smooth integrand, integrated with `nodes` Gauss–Legendre points over (−π/2, π/2)
-    /// (symmetric, so half the points are evaluated). A sealed strip anywhere seals the seal.
-    pub fn series_leak_rate(
+    /// (symmetric, so half the points are evaluated). A sealed strip anywhere seals the seal:
+    /// `R = ∞`.
+    pub fn series_resistance(
         &self,
-        sealing_length: f64,
-        pressure_difference: f64,
         rule: &(Vec<f64>, Vec<f64>),
         conductance: impl Fn(f64) -> f64,
     ) -> f64 {
-        let resistance = match *self {
+        match *self {
             Profile::Uniform { pressure, width } => {
                 let c = conductance(pressure);
                 if c <= 0.0 {
-                    return 0.0;
+                    return f64::INFINITY;
                 }
                 width / c
             }
@@ -160,21 +170,40 @@ impl Profile {
                     let theta = 0.5 * PI * xi;
                     let c = conductance(peak * theta.cos());
                     if c <= 0.0 {
-                        return 0.0;
+                        return f64::INFINITY;
                     }
                     total += factor * wi * theta.cos() / c;
                 }
                 0.5 * width * 0.5 * PI * total
             }
-        };
-        sealing_length * pressure_difference / resistance
+        }
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::fluid::{Conduction, Fluid};
     use crate::math::quadrature::gauss_legendre;
+
+    /// `Q̇` of `profile` by the leak law, strips in series.
+    fn series_leak_rate(
+        profile: &Profile,
+        sealing_length: f64,
+        pressure_difference: f64,
+        rule: &(Vec<f64>, Vec<f64>),
+        conductance: impl Fn(f64) -> f64,
+    ) -> f64 {
+        let fluid = Fluid {
+            viscosity: 1e-3,
+            pressure_difference,
+        };
+        let resistance = profile.series_resistance(rule, conductance);
+        fluid.leak_rate(
+            profile.geometry(sealing_length),
+            Conduction::Series { resistance },
+        )
+    }
 
     #[test]
     fn hertz_profile_carries_its_force() {
@@ -192,10 +221,10 @@ mod tests {
             pressure: 1e5,
             width: 1e-3,
         };
-        let q = flat.series_leak_rate(0.1, 1e4, &rule, |_| 2e-12);
+        let q = series_leak_rate(&flat, 0.1, 1e4, &rule, |_| 2e-12);
         assert!((q / (0.1 * 1e4 * 2e-12 / 1e-3) - 1.0).abs() < 1e-14);
         let hertz = Profile::hertz(100.0, 1e-3);
-        let qh = hertz.series_leak_rate(0.1, 1e4, &rule, |_| 2e-12);
+        let qh = series_leak_rate(&hertz, 0.1, 1e4, &rule, |_| 2e-12);
         assert!(
             (qh / q - 1.0).abs() < 1e-12,
             "∫cos θ dθ over (−π/2, π/2) = 2"
@@ -208,7 +237,7 @@ mod tests {
         let rule = gauss_legendre(32);
         let hertz = Profile::hertz(250.0, 1.5e-3);
         let c = 3e-7;
-        let q = hertz.series_leak_rate(1.0, 1.0, &rule, |p| c / p);
+        let q = series_leak_rate(&hertz, 1.0, 1.0, &rule, |p| c / p);
         assert!((q / (c / 250.0) - 1.0).abs() < 1e-12, "{q}");
     }
 
@@ -216,7 +245,7 @@ mod tests {
     fn a_sealed_strip_seals_the_seal() {
         let rule = gauss_legendre(16);
         let hertz = Profile::hertz(250.0, 1.5e-3);
-        let q = hertz.series_leak_rate(1.0, 1.0, &rule, |p| {
+        let q = series_leak_rate(&hertz, 1.0, 1.0, &rule, |p| {
             if p > 0.9 * hertz.peak() { 0.0 } else { 1e-12 }
         });
         assert_eq!(q, 0.0);

@@ -69,6 +69,9 @@ pub struct Spectrum {
     cum_m3: Vec<f64>,
     /// `∫_{q0}^{q_k} q C dq` at the start of each segment (and one more at q1).
     cum_m1: Vec<f64>,
+    /// The Hurst exponent of a spectrum given as a self-affine fractal (`None` for a tabulated
+    /// one): only for the validity check of docs/model.md §9.5.
+    hurst: Option<f64>,
 }
 
 impl Spectrum {
@@ -135,6 +138,7 @@ impl Spectrum {
         // Built with C = 1 at every segment start, then shifted: normalise in log space.
         let mut s = Spectrum::from_segments(segments);
         s.rescale_to(h_rms);
+        s.hurst = Some(hurst);
         Ok(s)
     }
 
@@ -193,6 +197,7 @@ impl Spectrum {
             segments,
             cum_m3: Vec::new(),
             cum_m1: Vec::new(),
+            hurst: None,
         };
         s.recompute_cumulative();
         s
@@ -251,7 +256,10 @@ impl Spectrum {
                 }
             })
             .collect();
-        Ok(Spectrum::from_segments(segments))
+        Ok(Spectrum {
+            hurst: self.hurst,
+            ..Spectrum::from_segments(segments)
+        })
     }
 
     /// Lower cut-off q0 [1/m]; magnification ζ = q/q0.
@@ -354,6 +362,12 @@ impl Spectrum {
     /// rms roughness `h_rms = (2π ∫ q C dq)^{1/2}` [m].
     pub fn rms_roughness(&self) -> f64 {
         (2.0 * std::f64::consts::PI * self.total_m1()).sqrt()
+    }
+
+    /// The Hurst exponent H of a self-affine spectrum (`C ∝ q^{−2(1+H)}`); `None` for a
+    /// tabulated spectrum.
+    pub fn hurst_exponent(&self) -> Option<f64> {
+        self.hurst
     }
 
     /// rms slope `h'_rms = (2π ∫ q³ C dq)^{1/2}` (dimensionless).

@@ -120,7 +120,7 @@ fn wiper_leak_has_the_drag_columns_and_warns_above_the_speed_bound() {
     assert_eq!(warnings.len(), 1, "{stderr}");
     assert!(warnings[0].starts_with("warning: "), "{stderr}");
     assert!(
-        warnings[0].contains("exceeds the validity bound"),
+        warnings[0].contains("sliding speed = 0.01 m/s is above 0.006095 m/s"),
         "{stderr}"
     );
     // within the bound: no warning

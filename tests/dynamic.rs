@@ -10,7 +10,8 @@ use sealsim::dynamic::{
     DragCoefficients, DragSettings, ReciprocatingSeal, drag_leak_rate, leak_rate,
     probability_above, separation_integral, stroke_cycle,
 };
-use sealsim::leak::{FlatSeal, Fluid};
+use sealsim::fluid::Fluid;
+use sealsim::leak::FlatSeal;
 use sealsim::surface::Spectrum;
 
 const RUBBER: Elastic = Elastic {
@@ -134,7 +135,9 @@ fn zero_speed_is_the_static_leak() {
                 viscosity: seal.viscosity,
                 pressure_difference: 0.01e6,
             };
-            let stat = sealsim::leak::leak_rate(u_c, &fluid, width, length, alpha);
+            // PY08 eqs. 1–3 written out: (L_y/L_x) α u_c³ ΔP/(12η)
+            let stat = length / width * alpha * u_c.powi(3) * fluid.pressure_difference
+                / (12.0 * fluid.viscosity);
             let dynamic = leak_rate(&k, fluid.pressure_difference, 0.0);
             assert!(stat > 0.0);
             assert!(rel(dynamic, stat) < 1e-12, "P0 = {p0}: {dynamic} vs {stat}");

@@ -192,8 +192,9 @@ fn persson_effective_medium_seals_exactly_at_half_contact() {
 
 #[test]
 fn leak_rates_of_both_levels_are_positive_and_finite_on_the_paper_case() {
+    use sealsim::fluid::Fluid;
     use sealsim::leak::Fidelity;
-    use sealsim::leak::{FlatSeal, Fluid, StaticProblem, StaticSolver};
+    use sealsim::leak::{FlatSeal, StaticProblem, StaticSolver};
     let problem = StaticProblem {
         material: Elastic {
             youngs_modulus: 10e6,

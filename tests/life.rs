@@ -1,15 +1,17 @@
 //! The seal-life time loop against closed forms, invariances and refinement (issue 4).
 
 use sealsim::contact::ContactSettings;
-use sealsim::leak::{Fidelity, Fluid};
+use sealsim::fluid::Fluid;
+use sealsim::leak::Fidelity;
 use sealsim::material::shift::Cycle;
 use sealsim::material::{Material, Prony, PronyTerm, Shift, Status, TemperatureHistory};
 use sealsim::seal::SealGeometry;
 use sealsim::simulate::{
-    AsperityModulus, FailureCriteria, FailureMode, LifeProblem, LifeWarning, Loading, SealState,
-    TimeGrid, simulate,
+    AsperityModulus, FailureCriteria, FailureMode, LifeProblem, Loading, SealState, TimeGrid,
+    simulate,
 };
 use sealsim::surface::Spectrum;
+use sealsim::validity::Limit;
 
 const TREF: f64 = 296.15;
 const WLF: Shift = Shift::Wlf {
@@ -250,11 +252,7 @@ fn extremes_stay_finite() {
         p.environment = TemperatureHistory::constant(t);
         let r = simulate(&p);
         assert!(all_finite(&r));
-        assert!(
-            r.warnings
-                .iter()
-                .any(|w| matches!(w, LifeWarning::Frozen { .. }))
-        );
+        assert!(r.findings.get(Limit::Frozen).is_some());
         assert!(r.rows.iter().all(|row| row.reduced_time == 0.0));
     }
     // squeeze outside Lindley's range warns
@@ -267,11 +265,7 @@ fn extremes_stay_finite() {
         };
         let r = simulate(&p);
         assert!(all_finite(&r));
-        assert!(
-            r.warnings
-                .iter()
-                .any(|w| matches!(w, LifeWarning::SqueezeOutOfRange { .. }))
-        );
+        assert!(r.findings.get(Limit::Squeeze).is_some());
     }
     // a cold night crossing the singularity every day
     let mut p = oring_problem(nbr_like());

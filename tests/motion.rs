@@ -8,7 +8,8 @@ use sealsim::dynamic::{
 };
 use sealsim::leak::FlatSeal;
 use sealsim::scenario::Scenario;
-use sealsim::simulate::{HistoryRow, LifeProblem, LifeResult, LifeWarning, simulate};
+use sealsim::simulate::{HistoryRow, LifeProblem, LifeResult, simulate};
+use sealsim::validity::{Finding, Limit};
 use std::path::{Path, PathBuf};
 
 fn shipped(name: &str) -> PathBuf {
@@ -38,10 +39,10 @@ fn assert_same_static_run(a: &LifeResult, b: &LifeResult) {
     }
     assert_eq!(a.failure, b.failure);
     // the motion may add its own warning (speed above the bound), nothing else
-    let static_warnings = |r: &LifeResult| -> Vec<LifeWarning> {
-        r.warnings
+    let static_warnings = |r: &LifeResult| -> Vec<Finding> {
+        r.findings
             .iter()
-            .filter(|w| !matches!(w, LifeWarning::SpeedAboveBound { .. }))
+            .filter(|w| w.limit != Limit::SpeedBound)
             .cloned()
             .collect()
     };
@@ -130,7 +131,7 @@ fn zero_speed_is_the_static_run_bit_for_bit() {
         let still = with_motion(&p, Motion::Steady { speed: 0.0 });
         let (a, b) = (simulate(&bare), simulate(&still));
         assert_same_static_run(&a, &b);
-        assert_eq!(a.warnings, b.warnings, "{name}: v0 = 0 is within any bound");
+        assert_eq!(a.findings, b.findings, "{name}: v0 = 0 is within any bound");
         assert!(a.rows.iter().all(|r| r.motion.is_none()));
         for r in &b.rows {
             let m = r.motion.expect("motion rows");
@@ -171,12 +172,7 @@ fn steady_drag_is_linear_in_speed_and_included_in_the_leak() {
     let extra = slow.leaked_volume() - bare.leaked_volume();
     assert!(extra > 0.0);
     assert!(fast.leaked_volume() - bare.leaked_volume() > 1.99 * extra);
-    assert!(
-        !slow
-            .warnings
-            .iter()
-            .any(|w| w.to_string().contains("lift-off"))
-    );
+    assert!(slow.findings.get(Limit::SpeedBound).is_none());
     // B_a, B_b > 0 at the peak strip of the installed O-ring
     let s = Scenario::load(&shipped("hydraulic-rod-seal.toml")).unwrap();
     let seal = MotionSpec::steady(v).seal(
@@ -233,11 +229,11 @@ fn a_stroke_cycle_leaves_the_leak_static_and_carries_the_film_out_and_back() {
     }
     // 0.1 m/s is far above the bound of an O-ring in oil: warned once
     let above: Vec<_> = r
-        .warnings
+        .findings
         .iter()
         .filter(|w| w.to_string().contains("lift-off"))
         .collect();
-    assert_eq!(above.len(), 1, "{:?}", r.warnings);
+    assert_eq!(above.len(), 1, "{:?}", r.findings);
 }
 
 #[test]

@@ -5,7 +5,8 @@
 //! Run the studies with `cargo test --release --test numerical -- --ignored --nocapture`.
 
 use sealsim::contact::{ContactSettings, Elastic, PerssonContact};
-use sealsim::leak::{Fidelity, FlatSeal, Fluid, StaticProblem, StaticSolver};
+use sealsim::fluid::Fluid;
+use sealsim::leak::{Fidelity, FlatSeal, StaticProblem, StaticSolver};
 use sealsim::numerical::bem::{self, BemSettings, Boundary};
 use sealsim::numerical::percolation::{open_mask, percolation_threshold};
 use sealsim::numerical::reference::{NumericalSettings, Spread, Surfaces, evaluate};

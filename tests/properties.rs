@@ -4,7 +4,8 @@
 
 use proptest::prelude::*;
 use sealsim::contact::{ContactSettings, Elastic, Junction};
-use sealsim::leak::{Fidelity, FlatSeal, Fluid, LeakPoint, StaticProblem, StaticSolver};
+use sealsim::fluid::Fluid;
+use sealsim::leak::{Fidelity, FlatSeal, LeakPoint, StaticProblem, StaticSolver};
 use sealsim::surface::Spectrum;
 
 #[derive(Debug, Clone, Copy)]

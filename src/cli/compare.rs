@@ -7,17 +7,15 @@
 //! scenario's `asperity_modulus` still applies, and whatever depends on the compound (default
 //! temperature, thermal strain, ageing defaults) is validated against it.
 
-use super::run::print_warnings;
-use super::{CliError, write_output};
-use crate::leak::ContactPath;
+use super::{CliError, print_findings, progress_bar, write_output};
 use crate::leak::Fidelity;
 use crate::material::Material;
 use crate::report::life::{
     CompareRow, compare_table, compare_text, has_positive_leak_rate, leak_rate_chart,
 };
 use crate::scenario::life::parse_fidelity;
-use crate::scenario::{Scenario, library, load_material_file};
-use crate::simulate::{LifeResult, Simulator};
+use crate::scenario::{library, load_material_file};
+use crate::workflow;
 use clap::Args;
 use std::path::{Path, PathBuf};
 
@@ -59,51 +57,19 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
         .iter()
         .map(|spec| Ok((spec.trim().to_owned(), resolve(spec.trim())?)))
         .collect::<Result<_, CliError>>()?;
-    let scenarios: Vec<Scenario> = materials
+    let runs = workflow::compare::compare(
+        &args.scenario,
+        materials,
+        args.fidelity,
+        &mut progress_bar("numerical level"),
+    )?;
+    let rows: Vec<CompareRow<'_>> = runs
         .iter()
-        .map(|(_, m)| {
-            let mut s = Scenario::load_with_material(&args.scenario, m)?;
-            if let Some(f) = args.fidelity {
-                s.life.fidelity = f;
-            }
-            Ok(s)
-        })
-        .collect::<Result<_, CliError>>()?;
-    // One contact table for all compounds: it depends only on the surface and the contact
-    // settings, which the variants share (checked, in case a material file changed them).
-    let mut shared: Option<(&Scenario, ContactPath)> = None;
-    let results: Vec<LifeResult> = scenarios
-        .iter()
-        .map(|s| {
-            let same = |first: &Scenario| {
-                first.life.spectrum == s.life.spectrum
-                    && first.life.contact == s.life.contact
-                    && first.life.fidelity == s.life.fidelity
-            };
-            let path = match &shared {
-                Some((first, path)) if same(first) => path.clone(),
-                _ => {
-                    let (path, warnings) = super::scenario_path(s, s.life.fidelity, None);
-                    for w in warnings {
-                        eprintln!("warning: {w}");
-                    }
-                    shared = Some((s, path.clone()));
-                    path
-                }
-            };
-            Simulator::with_path(&s.life, path).run()
-        })
-        .collect();
-
-    let rows: Vec<CompareRow<'_>> = materials
-        .iter()
-        .zip(&scenarios)
-        .zip(&results)
-        .map(|(((label, material), scenario), result)| CompareRow {
-            label,
-            material,
-            result,
-            duration: scenario.life.time.duration,
+        .map(|run| CompareRow {
+            label: &run.label,
+            material: &run.material,
+            result: &run.result,
+            duration: run.scenario.life.time.duration,
         })
         .collect();
     let csv = args
@@ -111,9 +77,9 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
         .as_ref()
         .map(|_| compare_table(&rows))
         .transpose()?;
-    let name = scenarios.first().map_or("", |s| s.name.as_str());
+    let name = runs.first().map_or("", |r| r.scenario.name.as_str());
     let svg = match &args.plot {
-        Some(path) if !has_positive_leak_rate(&results) => {
+        Some(path) if !has_positive_leak_rate(runs.iter().map(|r| &r.result)) => {
             eprintln!(
                 "warning: every leak rate is zero throughout (sealed): no chart written to {}",
                 path.display()
@@ -131,8 +97,8 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
         None => None,
     };
 
-    for row in &rows {
-        print_warnings(Some(row.label), row.result);
+    for run in &runs {
+        print_findings(Some(&run.label), &run.result.findings);
     }
     if let (Some(path), Some(csv)) = (&args.output, &csv) {
         write_output(Some(path), csv.as_bytes())?;

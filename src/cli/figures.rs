@@ -1,14 +1,15 @@
 //! `sealsim figures`: the critical constriction and leak rate of groups of scenarios over a
 //! pressure sweep, as one CSV and a set of log–log SVG charts per group (PY08 §3 figures).
 
-use super::leak::print_warnings;
-use super::{CliError, write_output};
+use super::{CliError, print_findings, progress_bar, write_output};
 use crate::contact::Junction;
-use crate::leak::{Fidelity, LeakPoint, StaticSolver};
+use crate::leak::{Fidelity, LeakPoint};
 use crate::report::csv::scenario_leak_table;
 use crate::report::plot::{LogLogChart, Series};
 use crate::scenario::figure_set::{FigureGroup, FigureSet, PlotKind, output_paths};
 use crate::scenario::life::parse_fidelity;
+use crate::workflow;
+use crate::workflow::figures::{Curve, GroupCurves};
 use clap::Args;
 use std::path::PathBuf;
 
@@ -28,41 +29,23 @@ pub struct FiguresArgs {
     pub fidelity: Fidelity,
 }
 
-/// The results of one scenario of a group.
-struct Curve {
-    name: String,
-    points: Vec<LeakPoint>,
-}
-
 /// Runs `sealsim figures`: everything is computed before the first file is written.
 pub fn run(args: FiguresArgs) -> Result<(), CliError> {
     let set = FigureSet::load(&args.figure_set)?;
+    let groups =
+        workflow::figures::evaluate(&set, args.fidelity, &mut progress_bar("numerical level"));
     let mut files: Vec<(PathBuf, String)> = Vec::new();
-    for group in &set.groups {
-        let curves: Vec<Curve> = group
-            .scenarios
-            .iter()
-            .map(|sc| {
-                let solver = StaticSolver::new(sc.problem.clone(), args.fidelity);
-                let points: Vec<LeakPoint> =
-                    set.pressures.iter().map(|&p| solver.evaluate(p)).collect();
-                print_warnings(
-                    Some(&sc.name),
-                    points.iter().flat_map(|p| solver.warnings(p)),
-                );
-                Curve {
-                    name: sc.name.clone(),
-                    points,
-                }
-            })
-            .collect();
+    for GroupCurves { group, curves } in &groups {
+        for c in curves {
+            print_findings(Some(&c.name), &c.findings);
+        }
         let (csv_path, svg_paths) = output_paths(&args.out_dir, group);
         let rows = curves
             .iter()
             .flat_map(|c| c.points.iter().map(|p| (c.name.as_str(), p)));
         files.push((csv_path, scenario_leak_table(rows)?));
         for (kind, path) in svg_paths {
-            let svg = chart(kind, group, &curves)
+            let svg = chart(kind, group, curves)
                 .to_svg()
                 .map_err(|e| CliError::Internal(e.to_string()))?;
             files.push((path, svg));

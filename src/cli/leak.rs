@@ -1,15 +1,14 @@
 //! `sealsim leak`: leak rate of a flat seal at one or more nominal pressures, as CSV.
 
-use super::{CliError, write_output};
-use crate::dynamic::{DragCoefficients, DragSettings, MotionPoint, MotionSpec};
-use crate::leak::{Fidelity, FlatSeal, LeakPoint, StaticSolver, Warning};
+use super::{CliError, print_findings, progress_bar, write_output};
+use crate::leak::Fidelity;
 use crate::math::log_spaced;
 use crate::report::csv::{leak_table, motion_leak_table};
 use crate::scenario::Scenario;
 use crate::scenario::life::parse_fidelity;
 use crate::units::{self, Dimension};
+use crate::workflow;
 use clap::Args;
-use std::mem::discriminant;
 use std::path::PathBuf;
 
 /// Default number of points of `--sweep`.
@@ -119,84 +118,18 @@ pub fn run(args: LeakArgs) -> Result<(), CliError> {
         (None, None) => vec![scenario.problem.seal.nominal_pressure],
     };
     let fidelity = args.fidelity.unwrap_or(scenario.life.fidelity);
-    let pb = &scenario.problem;
-    let e_star = pb.material.effective_modulus();
-    // the numerical level solves exactly at the pressures asked for
-    let nodes = pressures.iter().map(|p| p / e_star).collect();
-    let (path, path_warnings) = super::scenario_path(&scenario, fidelity, Some(nodes));
-    let solver = StaticSolver::with_path(scenario.problem.clone(), path);
-    let mut points: Vec<LeakPoint> = pressures.iter().map(|&p0| solver.evaluate(p0)).collect();
-    let mut warnings: Vec<Warning> = points.iter().flat_map(|p| solver.warnings(p)).collect();
-    let csv = match &scenario.life.motion {
-        None => leak_table(&points)?,
-        Some(spec) => {
-            let motion: Vec<MotionPoint> = points
-                .iter_mut()
-                .map(|point| motion_point(&solver, spec, point, &mut warnings))
-                .collect();
-            motion_leak_table(&points, &motion, spec.is_stroke())?
-        }
-    };
-    print_warnings(None, path_warnings.into_iter().chain(warnings));
-    write_output(args.output.as_deref(), csv.as_bytes())
-}
-
-/// The motion quantities at `point` (exact critical junction and P(u) at its pressure); with
-/// constant sliding the drag is added to the point's leak rate. A speed above the bound adds a
-/// warning.
-fn motion_point(
-    solver: &StaticSolver,
-    spec: &MotionSpec,
-    point: &mut LeakPoint,
-    warnings: &mut Vec<Warning>,
-) -> MotionPoint {
-    let pb = solver.problem();
-    let seal = spec.seal(
-        pb.material,
-        FlatSeal {
-            nominal_pressure: point.nominal_pressure,
-            ..pb.seal
-        },
-        pb.fluid.viscosity,
-        pb.shape_factor,
+    let outcome = workflow::leak::evaluate(
+        &scenario,
+        &pressures,
+        fidelity,
+        &mut progress_bar("numerical level"),
     );
-    let coeffs = DragCoefficients::compute(solver.path().exact(), &seal, &DragSettings::default());
-    let m = spec.evaluate(&coeffs, point.leak_rate);
-    if !spec.is_stroke() {
-        point.leak_rate += m.drag_leak_rate;
-    }
-    if m.above_bound {
-        warnings.push(Warning::SpeedAboveBound {
-            nominal_pressure: point.nominal_pressure,
-            speed: spec.fastest_speed(),
-            bound: m.speed_bound,
-        });
-    }
-    m
-}
-
-/// Prints warnings to stderr, one line per kind: the first message, and how many more
-/// pressures raised the same kind; `context` (e.g. the scenario's name) leads each line.
-pub(super) fn print_warnings(context: Option<&str>, warnings: impl IntoIterator<Item = Warning>) {
-    let lead = context.map(|c| format!("{c}: ")).unwrap_or_default();
-    // (first warning of a kind, occurrences), in order of first occurrence
-    let mut kinds: Vec<(Warning, usize)> = Vec::new();
-    for w in warnings {
-        match kinds
-            .iter_mut()
-            .find(|(first, _)| discriminant(first) == discriminant(&w))
-        {
-            Some((_, n)) => *n += 1,
-            None => kinds.push((w, 1)),
-        }
-    }
-    for (first, n) in kinds {
-        match n - 1 {
-            0 => eprintln!("warning: {lead}{first}"),
-            1 => eprintln!("warning: {lead}{first} (and 1 more pressure)"),
-            more => eprintln!("warning: {lead}{first} (and {more} more pressures)"),
-        }
-    }
+    let csv = match &outcome.motion {
+        None => leak_table(&outcome.points)?,
+        Some(motion) => motion_leak_table(&outcome.points, motion, outcome.stroke)?,
+    };
+    print_findings(None, &outcome.findings);
+    write_output(args.output.as_deref(), csv.as_bytes())
 }
 
 #[cfg(test)]

@@ -41,31 +41,10 @@ pub(crate) fn progress_bar(what: &str) -> impl FnMut(usize, usize) {
     }
 }
 
-/// The scenario's contact path at `fidelity`, built with its height map and `[numerical]`
-/// settings (a progress bar for the numerical level), and the path's own warnings.
-/// `numerical_nodes`: reduced pressures at which the numerical level solves (`None`: its
-/// default table nodes).
-pub(crate) fn scenario_path(
-    scenario: &crate::scenario::Scenario,
-    fidelity: crate::leak::Fidelity,
-    numerical_nodes: Option<Vec<f64>>,
-) -> (crate::leak::ContactPath, Vec<crate::leak::Warning>) {
-    let options = crate::leak::PathOptions {
-        height_map: scenario.height_map.as_ref(),
-        numerical: scenario.numerical.clone(),
-        numerical_nodes,
-        ..crate::leak::PathOptions::default()
-    };
-    let pb = &scenario.problem;
-    let path = crate::leak::ContactPath::build(
-        &pb.spectrum,
-        pb.contact,
-        fidelity,
-        &options,
-        &mut progress_bar("numerical level"),
-    );
-    let warnings = path.warnings(&options);
-    (path, warnings)
+/// Prints validity findings to stderr, one `warning:` line each, `context` (e.g. a compound's
+/// id) leading each line.
+pub(crate) fn print_findings(context: Option<&str>, findings: &crate::validity::Findings) {
+    eprint!("{}", report::findings::warning_lines(context, findings));
 }
 
 /// Exit status for bad input, the same as clap's for usage errors.

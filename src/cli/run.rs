@@ -6,14 +6,15 @@
 //! the leak-rate chart (`--plot`) are written only when asked for, each atomically, and only
 //! after the whole run has succeeded (on bad input nothing is written).
 
-use super::{CliError, write_output};
+use super::{CliError, print_findings, progress_bar, write_output};
 use crate::leak::Fidelity;
 use crate::report::life::{
     Summary, has_positive_leak_rate, history_table, human_summary, leak_rate_chart,
 };
 use crate::scenario::Scenario;
 use crate::scenario::life::parse_fidelity;
-use crate::simulate::{LifeResult, Simulator};
+use crate::simulate::LifeResult;
+use crate::workflow;
 use clap::Args;
 use std::path::PathBuf;
 
@@ -65,12 +66,7 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
     if let Some(fidelity) = args.fidelity {
         scenario.life.fidelity = fidelity;
     }
-    let (path, path_warnings) = super::scenario_path(&scenario, scenario.life.fidelity, None);
-    let life = &scenario.life;
-    for w in path_warnings {
-        eprintln!("warning: {w}");
-    }
-    let result = Simulator::with_path(life, path).run();
+    let result = workflow::life::run(&scenario, &mut progress_bar("numerical level"));
     let file = args.scenario.display().to_string();
 
     // Everything is rendered before anything is written.
@@ -89,7 +85,7 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
         None => None,
     };
 
-    print_warnings(None, &result);
+    print_findings(None, &result.findings);
     for (path, bytes) in [
         (&args.output, csv.as_deref()),
         (&args.summary, json.as_deref()),
@@ -121,12 +117,4 @@ fn plot(
         .to_svg()
         .map(Some)
         .map_err(|e| CliError::Internal(e.to_string()))
-}
-
-/// Prints the run's warnings to stderr, `context` (e.g. a compound's id) leading each line.
-pub(super) fn print_warnings(context: Option<&str>, result: &LifeResult) {
-    let lead = context.map(|c| format!("{c}: ")).unwrap_or_default();
-    for w in &result.warnings {
-        eprintln!("warning: {lead}{w}");
-    }
 }

@@ -2,10 +2,10 @@
 //! a ladder of numerical settings, with wall time and error against the most accurate setting
 //! ([`crate::tradeoff`]).
 
-use super::{CliError, progress_bar, write_output};
+use super::{CliError, print_findings, progress_bar, write_output};
 use crate::report::tradeoff::{tradeoff_chart, tradeoff_markdown, tradeoff_table};
 use crate::scenario::Scenario;
-use crate::tradeoff::{self, TradeoffOptions};
+use crate::workflow::tradeoff::{self, ScenarioTradeoff, TradeoffOptions};
 use clap::Args;
 use std::path::PathBuf;
 
@@ -64,12 +64,8 @@ pub fn run(args: TradeoffArgs) -> Result<(), CliError> {
         skip_numerical: args.skip_numerical,
         ..TradeoffOptions::default()
     };
-    let rows = tradeoff::run(
-        &scenario.problem,
-        &scenario.life,
-        &options,
-        &mut progress_bar("trade-off"),
-    );
+    let ScenarioTradeoff { rows, findings } =
+        tradeoff::for_scenario(&scenario, &options, &mut progress_bar("trade-off"));
     let csv = args
         .output
         .as_ref()
@@ -88,5 +84,6 @@ pub fn run(args: TradeoffArgs) -> Result<(), CliError> {
             write_output(Some(path), bytes.as_bytes())?;
         }
     }
+    print_findings(None, &findings);
     write_output(None, tradeoff_markdown(&rows).as_bytes())
 }

@@ -13,8 +13,10 @@ use super::plot::{LogLogChart, Series};
 use crate::dynamic::{Motion, MotionPoint, MotionSpec, StrokeCycle};
 use crate::material::shift::{DAY, YEAR};
 use crate::material::{Material, Status};
+use crate::report::findings::{FindingRecord, records};
 use crate::seal::SealGeometry;
-use crate::simulate::{AsperityModulus, LifeProblem, LifeResult, LifeWarning, Loading};
+use crate::simulate::{AsperityModulus, LifeProblem, LifeResult, Loading};
+use crate::validity::Limit;
 use serde::Serialize;
 
 /// Columns of the history CSV, in order (units in the names).
@@ -158,8 +160,9 @@ pub struct Summary {
     /// Open fraction of the critical channels at the end of the run (1 without
     /// `[contamination]`).
     pub final_open_fraction: f64,
-    /// The validity warnings of the run, as printed on stderr (without `warning: `).
-    pub warnings: Vec<String>,
+    /// The validity limits the run crossed, each with its worst value and when (docs/model.md
+    /// §9), as records; their `message` is what stderr shows.
+    pub warnings: Vec<FindingRecord>,
     /// `[motion]` (absent from the JSON for a static seal).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub motion: Option<MotionSummary>,
@@ -257,10 +260,7 @@ impl MotionSummary {
             .iter()
             .filter_map(|r| r.motion.map(|m| m.speed_bound))
             .fold(f64::INFINITY, f64::min);
-        let warned = result
-            .warnings
-            .iter()
-            .any(|w| matches!(w, LifeWarning::SpeedAboveBound { .. }));
+        let warned = result.findings.get(Limit::SpeedBound).is_some();
         let (kind, sliding, stroke) = match spec.motion {
             Motion::Steady { speed } => ("steady", Some(speed), None),
             Motion::Stroke {
@@ -349,7 +349,7 @@ impl Summary {
             final_sealing_force_n_per_m: last.map_or(0.0, |r| r.sealing_force),
             duration_s: problem.time.duration,
             final_open_fraction: result.final_open_fraction(),
-            warnings: result.warnings.iter().map(ToString::to_string).collect(),
+            warnings: records(&result.findings),
             motion: problem
                 .motion
                 .as_ref()
@@ -849,7 +849,7 @@ mod tests {
                 time: 2.5 * YEAR,
                 mode: FailureMode::LeakRate,
             }),
-            warnings: Vec::new(),
+            findings: Default::default(),
         }
     }
 

@@ -3,6 +3,7 @@
 //! Units are printed only here (column names carry them); the physics hands over SI values.
 
 pub mod csv;
+pub mod findings;
 pub mod life;
 pub mod material_toml;
 pub mod materials;

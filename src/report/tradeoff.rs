@@ -4,7 +4,7 @@
 use super::ReportError;
 use super::csv::{csv_error, finish, number};
 use super::plot::{LogLogChart, Series};
-use crate::tradeoff::TradeoffRow;
+use crate::workflow::tradeoff::TradeoffRow;
 
 /// Columns of the trade-off CSV. Empty cells: no value (a sealed reference, a level without a
 /// life run). `static_error` and `life_error` are relative to the most accurate setting of the

@@ -11,7 +11,8 @@ use super::raw::{
 };
 use super::{height_map, psd, show};
 use crate::contact::ContactSettings;
-use crate::leak::{FlatSeal, Fluid, StaticProblem};
+use crate::fluid::Fluid;
+use crate::leak::{FlatSeal, StaticProblem};
 use crate::material::Material;
 use crate::numerical::reference::NumericalSettings;
 use crate::numerical::{HeightMap, psd as map_psd};

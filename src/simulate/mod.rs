@@ -35,14 +35,16 @@ pub mod events;
 use std::cell::RefCell;
 
 use crate::clogging::{Contamination, effective_threshold};
-use crate::contact::{ContactSettings, Elastic, Junction, PerssonContact};
+use crate::contact::{ContactSettings, CriticalJunction, Elastic, Junction, PerssonContact};
 use crate::dynamic::{DragSettings, DragTable, MotionPoint, MotionSpec};
-use crate::leak::{ContactPath, Fidelity, FlatSeal, Fluid};
+use crate::fluid::{Conduction, Fluid};
+use crate::leak::{ContactPath, Fidelity, FlatSeal};
 use crate::material::shift::reduced_time;
 use crate::material::{Ageing, Material, RelaxationState, Shift, TemperatureHistory};
 use crate::math::quadrature::gauss_legendre;
 use crate::seal::{Profile, SealGeometry, oring_contact_width, squeeze_function};
 use crate::surface::Spectrum;
+use crate::validity::{self, At, ContactState, Findings};
 pub use events::{FailureCriteria, FailureEvent, FailureMode};
 
 /// Quadrature of the re-routing junctions: both u_c(a_eff) and u_c(a_c) of the ratio
@@ -166,6 +168,27 @@ impl LifeProblem {
             t0,
         )
     }
+
+    /// Records the findings of the installation state (t = 0) into `out`: the temperature
+    /// against the glass transition and the WLF frozen limit, an O-ring's squeeze against
+    /// Lindley's range (docs/model.md §9.6–§9.7). A life run evaluates the same at every step.
+    pub fn assess_installation(&self, out: &mut Findings) {
+        self.assess_rubber(self.environment.at(0.0), At::Installation, out);
+    }
+
+    /// The rubber's temperature `t` [K] and, for an O-ring, its squeeze at `t`.
+    fn assess_rubber(&self, t: f64, at: At, out: &mut Findings) {
+        if let SealGeometry::ORing { .. } = self.geometry {
+            validity::squeeze(squeeze_at(self, t), at, out);
+        }
+        validity::temperature(
+            t,
+            self.material.glass_transition,
+            self.material.shift.frozen_below(),
+            at,
+            out,
+        );
+    }
 }
 
 /// State of the interface at one time.
@@ -215,83 +238,14 @@ pub struct HistoryRow {
     pub motion: Option<MotionPoint>,
 }
 
-/// A validity caveat of a life run.
-#[derive(Debug, Clone, PartialEq)]
-pub enum LifeWarning {
-    /// The squeeze leaves Lindley's range.
-    SqueezeOutOfRange { time: f64, squeeze: f64 },
-    /// The temperature reached the WLF singularity: the rubber is frozen (no relaxation).
-    Frozen { time: f64, temperature: f64 },
-    /// The temperature is below the glass transition.
-    BelowGlassTransition {
-        time: f64,
-        temperature: f64,
-        glass_transition: f64,
-    },
-    /// ΔP is not small against the peak pressure.
-    PressureRatio { time: f64, ratio: f64 },
-    /// The critical constriction is below 1 nm.
-    MolecularGap { time: f64, u_c: f64 },
-    /// No failure criterion is set: the seal can only survive.
-    NoCriterion,
-    /// `[motion]`: the sliding speed exceeds the validity bound of PY08's second eq. 17 at the
-    /// peak strip (hydrodynamic lift-off is not modelled).
-    SpeedAboveBound { time: f64, speed: f64, bound: f64 },
-}
-
-impl std::fmt::Display for LifeWarning {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match *self {
-            LifeWarning::SqueezeOutOfRange { time, squeeze } => write!(
-                f,
-                "at t = {time:.4e} s the squeeze is {:.1} %, outside the 5–30 % for which Lindley's \
-                 O-ring relations are used",
-                100.0 * squeeze
-            ),
-            LifeWarning::Frozen { time, temperature } => write!(
-                f,
-                "at t = {time:.4e} s, T = {temperature:.2} K is at or below the WLF singularity: the \
-                 rubber is treated as frozen (no relaxation)"
-            ),
-            LifeWarning::BelowGlassTransition {
-                time,
-                temperature,
-                glass_transition,
-            } => write!(
-                f,
-                "at t = {time:.4e} s, T = {temperature:.2} K is below the glass transition \
-                 ({glass_transition:.2} K): the rubbery Prony series does not describe glassy rubber"
-            ),
-            LifeWarning::PressureRatio { time, ratio } => write!(
-                f,
-                "at t = {time:.4e} s, ΔP/p_peak = {ratio:.3}: the theory assumes the contact pressure \
-                 far above the fluid pressure"
-            ),
-            LifeWarning::MolecularGap { time, u_c } => write!(
-                f,
-                "at t = {time:.4e} s, u_c = {u_c:.3e} m is below 1 nm: continuum flow is not valid; \
-                 read the leak rate as effectively zero"
-            ),
-            LifeWarning::NoCriterion => {
-                f.write_str("the [failure] block sets no criterion: the seal can only survive")
-            }
-            LifeWarning::SpeedAboveBound { time, speed, bound } => write!(
-                f,
-                "at t = {time:.4e} s the sliding speed {speed:.4e} m/s exceeds the validity bound \
-                 {bound:.4e} m/s of PY08 eq. 17 at the peak strip: the drag pressure opens the \
-                 critical constriction; hydrodynamic lift-off is not modelled (the drag leak rate \
-                 is likely underestimated)"
-            ),
-        }
-    }
-}
-
 /// The result of a life run.
 #[derive(Debug, Clone, PartialEq)]
 pub struct LifeResult {
     pub rows: Vec<HistoryRow>,
     pub failure: Option<FailureEvent>,
-    pub warnings: Vec<LifeWarning>,
+    /// The validity limits crossed during the run, each once with its worst value and when
+    /// (docs/model.md §9.11).
+    pub findings: Findings,
 }
 
 impl LifeResult {
@@ -336,6 +290,8 @@ struct Snapshot {
     temperature: f64,
     profile: Profile,
     u_c: Option<f64>,
+    /// The critical junction at the peak strip (with the re-routed u_c under clogging).
+    peak_junction: Junction,
     leak_rate: f64,
     state: SealState,
     retained: f64,
@@ -444,10 +400,11 @@ impl<'a> Simulator<'a> {
     /// Runs the whole life.
     pub fn run(&self) -> LifeResult {
         let p = self.problem;
-        let mut warnings = Vec::new();
+        let mut findings = Findings::default();
         if p.failure.is_empty() {
-            warnings.push(LifeWarning::NoCriterion);
+            validity::no_failure_criterion(&mut findings);
         }
+        validity::surface(&p.spectrum, &mut findings);
         let mut state = Mechanics {
             time: 0.0,
             reduced_time: 0.0,
@@ -460,7 +417,7 @@ impl<'a> Simulator<'a> {
         // installation: an instantaneous jump of the load variable
         state.relaxation.step(&p.material.prony, 0.0, self.load0);
         let first = self.snapshot(&state);
-        self.check_warnings(&state, &first, &mut warnings);
+        self.assess(&state, &first, &mut findings);
         let mut rows = vec![self.row(&state, &first)];
         let mut failure = p.failure.at_start(&first.as_event_input(0.0));
         let mut last = first;
@@ -471,7 +428,7 @@ impl<'a> Simulator<'a> {
                 let before = state.clone();
                 let before_snap = last;
                 let snap = self.advance(&mut state, t, &before_snap);
-                self.check_warnings(&state, &snap, &mut warnings);
+                self.assess(&state, &snap, &mut findings);
                 if failure.is_none() {
                     failure = self.locate_failure(&before, &before_snap, &state, &snap);
                 }
@@ -482,7 +439,7 @@ impl<'a> Simulator<'a> {
         LifeResult {
             rows,
             failure,
-            warnings,
+            findings,
         }
     }
 
@@ -633,6 +590,10 @@ impl<'a> Simulator<'a> {
             }
         };
         snap.u_c = u_c;
+        snap.peak_junction = match (snap.peak_junction, u_c) {
+            (Junction::Leaking(j), Some(u_c)) => Junction::Leaking(CriticalJunction { u_c, ..j }),
+            _ => Junction::Sealed,
+        };
         // The drag flows through the same channels: without re-routing the blocked ones carry
         // none of it (× f); with re-routing the film is taken to scale with the constriction
         // height, d = β u_c at fixed β (× the cube root of the u_c³ ratio).
@@ -810,11 +771,10 @@ impl<'a> Simulator<'a> {
             self.path
                 .conductance(pressure / e_star, p.shape_factor, p.fluid.viscosity)
         };
-        let leak_rate = profile.series_leak_rate(
-            p.geometry.sealing_length(),
-            p.fluid.pressure_difference,
-            &self.rule,
-            conductance,
+        let resistance = profile.series_resistance(&self.rule, conductance);
+        let leak_rate = p.fluid.leak_rate(
+            profile.geometry(p.geometry.sealing_length()),
+            Conduction::Series { resistance },
         );
         let peak_junction = self.path.critical_junction(profile.peak() / e_star);
         let u_c = peak_junction.leaking().map(|j| j.u_c);
@@ -873,6 +833,7 @@ impl<'a> Simulator<'a> {
             temperature,
             profile,
             u_c,
+            peak_junction,
             leak_rate,
             state,
             retained,
@@ -964,58 +925,24 @@ impl<'a> Simulator<'a> {
             .min_by(|a, b| a.time.total_cmp(&b.time))
     }
 
-    fn check_warnings(&self, state: &Mechanics, snap: &Snapshot, warnings: &mut Vec<LifeWarning>) {
+    /// Records the validity findings of one step (docs/model.md §9): the rubber's
+    /// temperature and squeeze, the contact state of the peak strip, the sliding speed.
+    fn assess(&self, state: &Mechanics, snap: &Snapshot, findings: &mut Findings) {
         let p = self.problem;
-        let t = state.time;
-        let mut push = |w: LifeWarning| {
-            if !warnings
-                .iter()
-                .any(|x| std::mem::discriminant(x) == std::mem::discriminant(&w))
-            {
-                warnings.push(w);
-            }
-        };
-        if let SealGeometry::ORing { .. } = p.geometry {
-            let eps = squeeze_at(p, snap.temperature);
-            if p.geometry.squeeze_out_of_range(eps) {
-                push(LifeWarning::SqueezeOutOfRange {
-                    time: t,
-                    squeeze: eps,
-                });
-            }
-        }
-        if p.material.shift.is_frozen(snap.temperature) {
-            push(LifeWarning::Frozen {
-                time: t,
-                temperature: snap.temperature,
-            });
-        }
-        if let Some(tg) = p.material.glass_transition
-            && snap.temperature < tg
-        {
-            push(LifeWarning::BelowGlassTransition {
-                time: t,
-                temperature: snap.temperature,
-                glass_transition: tg,
-            });
-        }
-        let ratio = p.fluid.pressure_difference / snap.profile.peak();
-        if ratio > crate::leak::MAX_PRESSURE_RATIO {
-            push(LifeWarning::PressureRatio { time: t, ratio });
-        }
-        if let Some(u) = snap.u_c
-            && u < crate::leak::MIN_CONTINUUM_GAP
-        {
-            push(LifeWarning::MolecularGap { time: t, u_c: u });
-        }
-        if let (Some((spec, _)), Some(m)) = (&self.drag, snap.motion)
-            && m.above_bound
-        {
-            push(LifeWarning::SpeedAboveBound {
-                time: t,
-                speed: spec.fastest_speed(),
-                bound: m.speed_bound,
-            });
+        let at = At::Time(state.time);
+        p.assess_rubber(snap.temperature, at, findings);
+        validity::contact(
+            &ContactState {
+                nominal_pressure: snap.profile.peak(),
+                pressure_difference: p.fluid.pressure_difference,
+                junction: &snap.peak_junction,
+                cutoff: p.spectrum.q1() / p.spectrum.q0(),
+            },
+            at,
+            findings,
+        );
+        if let (Some((spec, _)), Some(m)) = (&self.drag, snap.motion) {
+            validity::speed(spec.fastest_speed(), m.speed_bound, at, findings);
         }
     }
 }

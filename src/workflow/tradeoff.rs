@@ -22,6 +22,7 @@
 //! mean reported); the numerical level's contact solver uses two threads for its FFTs.
 
 use crate::contact::{Junction, QuadratureSettings, TableSettings};
+use crate::fluid::Conduction;
 use crate::leak::{ContactPath, Fidelity, PathOptions, StaticProblem, StaticSolver};
 use crate::math::special::erf_inv;
 use crate::numerical::psd::{self, PsdOptions, Window};
@@ -364,7 +365,11 @@ fn band_limited_section(
     let s = erf_inv(0.2) * (PI * pb.spectrum.total_m3()).sqrt();
     let p0 = s * e_star;
     pb.seal.nominal_pressure = p0;
-    let scale = pb.seal.length / pb.seal.width * pb.fluid.pressure_difference;
+    // the leak law is linear in σ: the mean and the spread of σ map to leak rates alike
+    let leak_rate_of = |conductance: f64| {
+        pb.fluid
+            .leak_rate(pb.seal.geometry(), Conduction::Uniform { conductance })
+    };
 
     let mut rows = Vec::new();
     let mut numerical = Vec::new();
@@ -391,10 +396,10 @@ fn band_limited_section(
             ),
             nominal_pressure: p0,
             static_seconds: seconds,
-            leak_rate: scale * state.conductance.mean,
+            leak_rate: leak_rate_of(state.conductance.mean),
             static_error: None,
             life: None,
-            leak_rate_spread: Some(scale * state.conductance.std_dev),
+            leak_rate_spread: Some(leak_rate_of(state.conductance.std_dev)),
         });
     }
     let reference = numerical.last().map_or(0.0, |r| r.leak_rate);
@@ -426,4 +431,30 @@ fn band_limited_section(
     }
     rows.extend(numerical);
     rows
+}
+
+/// The trade-off of a scenario with the validity findings of the scenario itself (its static
+/// state and its life at the critical-junction table level, docs/model.md §9): the levels'
+/// rows say how fast and how far from the reference each level is; the findings say how far
+/// the model holds for this seal at all.
+#[derive(Debug, Clone)]
+pub struct ScenarioTradeoff {
+    pub rows: Vec<TradeoffRow>,
+    pub findings: crate::validity::Findings,
+}
+
+/// [`run`] on a validated scenario, with its findings.
+pub fn for_scenario(
+    scenario: &crate::scenario::Scenario,
+    options: &TradeoffOptions,
+    progress: &mut dyn FnMut(usize, usize),
+) -> ScenarioTradeoff {
+    let rows = run(&scenario.problem, &scenario.life, options, progress);
+    let mut table_level = scenario.clone();
+    table_level.life.fidelity = Fidelity::Table;
+    let p0 = [scenario.problem.seal.nominal_pressure];
+    let mut findings =
+        super::leak::evaluate(&table_level, &p0, Fidelity::Table, &mut |_, _| {}).findings;
+    findings.extend(super::life::run(&table_level, &mut |_, _| {}).findings);
+    ScenarioTradeoff { rows, findings }
 }

@@ -1,0 +1,616 @@
+//! The validity limits of the model, each defined once (docs/model.md §9).
+//!
+//! Every command evaluates them through the same functions: [`contact`] for a contact state
+//! (a static leak point, or the peak strip of a life step), [`surface`] for the roughness,
+//! [`temperature`] and [`squeeze`] for the rubber's state, [`speed`] for a sliding seal, and
+//! [`Findings::record`] to collect them. A [`Finding`] keeps, per limit, the worst value seen
+//! (how far outside the range) and where it occurred — the nominal pressure of a static point or
+//! the time of a life step — and where it first occurred. The result is still computed; the
+//! finding says how far to trust it.
+
+use crate::contact::Junction;
+use crate::seal::LINDLEY_RANGE;
+use crate::surface::Spectrum;
+use std::fmt;
+
+/// ΔP/P0 above which the fluid pressure is no longer small against the contact pressure
+/// (docs/model.md §9.1).
+pub const MAX_PRESSURE_RATIO: f64 = 0.1;
+
+/// u_c/λ_c above which the thin-gap (lubrication) flow of the critical constriction fails
+/// (docs/model.md §9.2).
+pub const MAX_ASPECT_RATIO: f64 = 0.1;
+
+/// Constriction height below which continuum flow is not a valid picture [m] (1 nm;
+/// docs/model.md §9.3).
+pub const MIN_CONTINUUM_GAP: f64 = 1e-9;
+
+/// ζc above this fraction of q1/q0 puts the critical junction near the cut-off (docs/model.md
+/// §9.4).
+pub const NEAR_CUTOFF_FRACTION: f64 = 0.5;
+
+/// Hurst exponents of a self-affine spectrum within which sealsim's analytic contact levels have
+/// been checked (docs/model.md §9.5).
+pub const HURST_RANGE: (f64, f64) = (0.6, 0.9);
+
+/// rms slope above which the small-slope contact theory is stretched (docs/model.md §9.8).
+pub const MAX_RMS_SLOPE: f64 = 0.5;
+
+/// One limit of the model's validity.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Limit {
+    /// ΔP/P0 not small (docs/model.md §9.1).
+    PressureRatio,
+    /// u_c/λ_c not small (§9.2).
+    AspectRatio,
+    /// u_c below 1 nm (§9.3).
+    MolecularGap,
+    /// ζc within a factor 2 of the cut-off q1/q0 (§9.4).
+    NearCutoff,
+    /// Hurst exponent outside [`HURST_RANGE`] (§9.5).
+    HurstExponent,
+    /// O-ring squeeze outside Lindley's range (§9.6).
+    Squeeze,
+    /// Temperature below the glass transition (§9.7).
+    GlassTransition,
+    /// Temperature at or below the WLF singularity: the rubber is frozen (§9.7).
+    Frozen,
+    /// rms slope of the surface above [`MAX_RMS_SLOPE`] (§9.8).
+    RmsSlope,
+    /// Sliding speed above the PY08 §8 bound (§9.9).
+    SpeedBound,
+    /// The numerical level resolves only a band of the spectrum (§9.10).
+    BandLimited,
+    /// A node of the numerical level's table failed and was left out (§9.10).
+    NumericalFailure,
+    /// No failure criterion: a life run can only survive (§8).
+    NoFailureCriterion,
+}
+
+impl Limit {
+    /// Every limit, in the order of docs/model.md.
+    pub const ALL: [Limit; 13] = [
+        Limit::PressureRatio,
+        Limit::AspectRatio,
+        Limit::MolecularGap,
+        Limit::NearCutoff,
+        Limit::HurstExponent,
+        Limit::Squeeze,
+        Limit::GlassTransition,
+        Limit::Frozen,
+        Limit::RmsSlope,
+        Limit::SpeedBound,
+        Limit::BandLimited,
+        Limit::NumericalFailure,
+        Limit::NoFailureCriterion,
+    ];
+
+    /// The limit's identifier in JSON summaries.
+    pub fn id(self) -> &'static str {
+        match self {
+            Limit::PressureRatio => "pressure_ratio",
+            Limit::AspectRatio => "aspect_ratio",
+            Limit::MolecularGap => "molecular_gap",
+            Limit::NearCutoff => "near_cutoff",
+            Limit::HurstExponent => "hurst_exponent",
+            Limit::Squeeze => "squeeze",
+            Limit::GlassTransition => "below_glass_transition",
+            Limit::Frozen => "frozen",
+            Limit::RmsSlope => "rms_slope",
+            Limit::SpeedBound => "speed_above_bound",
+            Limit::BandLimited => "band_limited",
+            Limit::NumericalFailure => "numerical_failure",
+            Limit::NoFailureCriterion => "no_failure_criterion",
+        }
+    }
+
+    /// The section of docs/model.md that explains the limit.
+    pub fn section(self) -> &'static str {
+        match self {
+            Limit::PressureRatio => "§9.1",
+            Limit::AspectRatio => "§9.2",
+            Limit::MolecularGap => "§9.3",
+            Limit::NearCutoff => "§9.4",
+            Limit::HurstExponent => "§9.5",
+            Limit::Squeeze => "§9.6",
+            Limit::GlassTransition | Limit::Frozen => "§9.7",
+            Limit::RmsSlope => "§9.8",
+            Limit::SpeedBound => "§9.9",
+            Limit::BandLimited | Limit::NumericalFailure => "§9.10",
+            Limit::NoFailureCriterion => "§8",
+        }
+    }
+
+    /// The quantity the limit bounds and its SI unit (`None` for a limit without a value).
+    pub fn quantity(self) -> Option<(&'static str, &'static str)> {
+        match self {
+            Limit::PressureRatio => Some(("ΔP/P0", "")),
+            Limit::AspectRatio => Some(("u_c/λ_c", "")),
+            Limit::MolecularGap => Some(("u_c", "m")),
+            Limit::NearCutoff => Some(("ζc", "")),
+            Limit::HurstExponent => Some(("H", "")),
+            Limit::Squeeze => Some(("squeeze", "")),
+            Limit::GlassTransition | Limit::Frozen => Some(("T", "K")),
+            Limit::RmsSlope => Some(("rms slope", "")),
+            Limit::SpeedBound => Some(("sliding speed", "m/s")),
+            Limit::BandLimited => Some(("q1/q0", "")),
+            Limit::NumericalFailure => Some(("P0/E*", "")),
+            Limit::NoFailureCriterion => None,
+        }
+    }
+
+    /// What the limit means for the result.
+    fn consequence(self) -> &'static str {
+        match self {
+            Limit::PressureRatio => {
+                "the theory assumes the contact pressure far above the fluid pressure; the fluid \
+                 pressure in the interface (not modelled) opens the contact"
+            }
+            Limit::AspectRatio => {
+                "the critical constriction is not a thin gap: the lubrication flow u³/12η \
+                 overstates its conductance"
+            }
+            Limit::MolecularGap => {
+                "continuum flow is not valid below a molecular size; read the leak rate as \
+                 effectively zero"
+            }
+            Limit::NearCutoff => {
+                "the critical junction lies near the short-wavelength cut-off q1: the result \
+                 depends on the (often uncertain) cut-off"
+            }
+            Limit::HurstExponent => {
+                "outside the Hurst exponents for which sealsim's contact levels were checked \
+                 against independent references"
+            }
+            Limit::Squeeze => "outside the squeeze for which Lindley's O-ring relations are used",
+            Limit::GlassTransition => {
+                "below the glass transition: the rubbery Prony series does not describe glassy \
+                 rubber"
+            }
+            Limit::Frozen => {
+                "at or below the WLF singularity: the rubber is treated as frozen (no relaxation)"
+            }
+            Limit::RmsSlope => {
+                "the surface is steep: the small-slope contact theory is stretched (contact area \
+                 and separation less reliable)"
+            }
+            Limit::SpeedBound => {
+                "the drag pressure opens the critical constriction; hydrodynamic lift-off is not \
+                 modelled (the drag leak rate is likely underestimated)"
+            }
+            Limit::BandLimited => {
+                "the numerical level resolved only part of the spectrum; its answer is for the \
+                 band-limited surface"
+            }
+            Limit::NumericalFailure => {
+                "a node of the numerical level's table failed and was left out"
+            }
+            Limit::NoFailureCriterion => {
+                "the [failure] block sets no criterion: the seal can only survive"
+            }
+        }
+    }
+}
+
+/// Where a finding was evaluated.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum At {
+    /// Of the set-up as a whole (the surface, the numerical level's band).
+    Setup,
+    /// The installation state of a seal evaluated statically (`sealsim leak`).
+    Installation,
+    /// A static leak point at nominal pressure P0 [Pa].
+    Pressure(f64),
+    /// A life step at time t [s] since installation.
+    Time(f64),
+}
+
+impl fmt::Display for At {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            At::Setup => Ok(()),
+            At::Installation => f.write_str("at installation"),
+            At::Pressure(p0) => write!(f, "at P0 = {}", with_unit(p0, "Pa")),
+            At::Time(t) => write!(f, "at t = {}", duration(t)),
+        }
+    }
+}
+
+/// One limit crossed: its worst value and where.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Finding {
+    pub limit: Limit,
+    /// The quantity of [`Limit::quantity`] at its worst (0 for a limit without a value).
+    pub value: f64,
+    /// The bound it crossed there (the threshold, or the case's own bound: q1/q0 / 2, T_g, the
+    /// speed bound …).
+    pub bound: f64,
+    /// Where the worst value occurred.
+    pub at: At,
+    /// Where the limit was first crossed.
+    pub first: At,
+    /// How many evaluations crossed it.
+    pub count: usize,
+    /// Extra text (the solver's message of a numerical failure).
+    pub detail: Option<String>,
+}
+
+impl Finding {
+    fn new(limit: Limit, value: f64, bound: f64, at: At) -> Self {
+        Finding {
+            limit,
+            value,
+            bound,
+            at,
+            first: at,
+            count: 1,
+            detail: None,
+        }
+    }
+
+    /// How far outside the range: `max(value/bound, bound/value)` (≥ 1 for a crossed limit;
+    /// 1 for a limit without a value).
+    pub fn severity(&self) -> f64 {
+        if self.limit.quantity().is_none() || self.value <= 0.0 || self.bound <= 0.0 {
+            return 1.0;
+        }
+        (self.value / self.bound).max(self.bound / self.value)
+    }
+}
+
+impl fmt::Display for Finding {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if let Some((name, unit)) = self.limit.quantity() {
+            let relation = if self.value > self.bound {
+                "above"
+            } else {
+                "below"
+            };
+            write!(
+                f,
+                "{name} = {} is {relation} {}",
+                with_unit(self.value, unit),
+                with_unit(self.bound, unit)
+            )?;
+            match (self.at, self.count) {
+                (At::Setup, _) => {}
+                (at, 1) => write!(f, " {at}")?,
+                (at, n) if self.first == at => write!(f, ", worst {at} ({n} evaluations)")?,
+                (at, n) => write!(f, ", worst {at}; first {}, {n} evaluations", self.first)?,
+            }
+            f.write_str(": ")?;
+        }
+        f.write_str(self.limit.consequence())?;
+        if let Some(detail) = &self.detail {
+            write!(f, " ({detail})")?;
+        }
+        write!(f, " [docs/model.md {}]", self.limit.section())
+    }
+}
+
+/// `value unit` with four significant digits.
+fn with_unit(value: f64, unit: &str) -> String {
+    let number = if value != 0.0 && (value.abs() >= 1e4 || value.abs() < 1e-3) {
+        format!("{value:.3e}")
+    } else {
+        trimmed(value)
+    };
+    if unit.is_empty() {
+        number
+    } else {
+        format!("{number} {unit}")
+    }
+}
+
+/// `value` with four significant digits, trailing zeros dropped.
+fn trimmed(value: f64) -> String {
+    let magnitude = if value == 0.0 {
+        0
+    } else {
+        value.abs().log10().floor() as i32
+    };
+    let decimals = (3 - magnitude).max(0) as usize;
+    let text = format!("{value:.decimals$}");
+    if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_owned()
+    } else {
+        text
+    }
+}
+
+/// `3.156e7 s (1 years)`: seconds, with days or years for long times.
+fn duration(t: f64) -> String {
+    const DAY: f64 = 86_400.0;
+    const YEAR: f64 = 365.25 * DAY;
+    let seconds = with_unit(t, "s");
+    if t >= YEAR {
+        format!("{seconds} ({} years)", trimmed(t / YEAR))
+    } else if t >= DAY {
+        format!("{seconds} ({} days)", trimmed(t / DAY))
+    } else {
+        seconds
+    }
+}
+
+/// The findings of one evaluation (a sweep, a life run): one per limit, the worst.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Findings {
+    items: Vec<Finding>,
+}
+
+impl Findings {
+    /// Records `finding`: the first of its limit is kept as is; a later one replaces the worst
+    /// value and its place when it is further outside the range ([`Finding::severity`]), and is
+    /// counted.
+    pub fn record(&mut self, finding: Finding) {
+        match self.items.iter_mut().find(|f| f.limit == finding.limit) {
+            None => self.items.push(finding),
+            Some(kept) => {
+                kept.count += finding.count;
+                if finding.severity() > kept.severity() {
+                    kept.value = finding.value;
+                    kept.bound = finding.bound;
+                    kept.at = finding.at;
+                    kept.detail = finding.detail;
+                }
+            }
+        }
+    }
+
+    /// Records every finding of `other`.
+    pub fn extend(&mut self, other: Findings) {
+        for f in other.items {
+            self.record(f);
+        }
+    }
+
+    /// The findings, in the order their limits were first crossed.
+    pub fn iter(&self) -> impl Iterator<Item = &Finding> {
+        self.items.iter()
+    }
+
+    /// The finding of `limit`, if it was crossed.
+    pub fn get(&self, limit: Limit) -> Option<&Finding> {
+        self.items.iter().find(|f| f.limit == limit)
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.items.is_empty()
+    }
+
+    pub fn len(&self) -> usize {
+        self.items.len()
+    }
+
+    fn check(&mut self, limit: Limit, crossed: bool, value: f64, bound: f64, at: At) {
+        if crossed {
+            self.record(Finding::new(limit, value, bound, at));
+        }
+    }
+}
+
+/// The contact state behind one leak evaluation: the nominal pressure that holds the critical
+/// junction (P0 of a flat seal, the peak of a profile), the fluid's ΔP, the junction, and the
+/// spectrum's q1/q0.
+#[derive(Debug, Clone, Copy)]
+pub struct ContactState<'a> {
+    /// Nominal contact pressure [Pa].
+    pub nominal_pressure: f64,
+    /// ΔP across the seal [Pa].
+    pub pressure_difference: f64,
+    pub junction: &'a Junction,
+    /// q1/q0 of the spectrum.
+    pub cutoff: f64,
+}
+
+/// Pressure ratio, aspect ratio, molecular gap and nearness of the cut-off of one contact state
+/// (docs/model.md §9.1–§9.4).
+pub fn contact(state: &ContactState<'_>, at: At, out: &mut Findings) {
+    let ratio = state.pressure_difference / state.nominal_pressure;
+    out.check(
+        Limit::PressureRatio,
+        ratio > MAX_PRESSURE_RATIO,
+        ratio,
+        MAX_PRESSURE_RATIO,
+        at,
+    );
+    if let Junction::Leaking(j) = state.junction {
+        let aspect = j.u_c / j.lambda_c;
+        out.check(
+            Limit::AspectRatio,
+            aspect > MAX_ASPECT_RATIO,
+            aspect,
+            MAX_ASPECT_RATIO,
+            at,
+        );
+        out.check(
+            Limit::MolecularGap,
+            j.u_c < MIN_CONTINUUM_GAP,
+            j.u_c,
+            MIN_CONTINUUM_GAP,
+            at,
+        );
+        let near = NEAR_CUTOFF_FRACTION * state.cutoff;
+        out.check(Limit::NearCutoff, j.zeta_c > near, j.zeta_c, near, at);
+    }
+}
+
+/// Hurst exponent (self-affine spectra) and rms slope of the surface (docs/model.md §9.5,
+/// §9.8).
+pub fn surface(spectrum: &Spectrum, out: &mut Findings) {
+    if let Some(h) = spectrum.hurst_exponent() {
+        let (lo, hi) = HURST_RANGE;
+        let bound = if h < lo { lo } else { hi };
+        out.check(
+            Limit::HurstExponent,
+            !(lo..=hi).contains(&h),
+            h,
+            bound,
+            At::Setup,
+        );
+    }
+    let slope = spectrum.rms_slope();
+    out.check(
+        Limit::RmsSlope,
+        slope > MAX_RMS_SLOPE,
+        slope,
+        MAX_RMS_SLOPE,
+        At::Setup,
+    );
+}
+
+/// Temperature `t` [K] against the glass transition `glass_transition` [K] and the WLF frozen
+/// limit `frozen_below` [K] (docs/model.md §9.7).
+pub fn temperature(
+    t: f64,
+    glass_transition: Option<f64>,
+    frozen_below: Option<f64>,
+    at: At,
+    out: &mut Findings,
+) {
+    if let Some(limit) = frozen_below {
+        out.check(Limit::Frozen, t <= limit, t, limit, at);
+    }
+    if let Some(tg) = glass_transition {
+        out.check(Limit::GlassTransition, t < tg, t, tg, at);
+    }
+}
+
+/// An O-ring's squeeze `eps` against Lindley's range (docs/model.md §9.6).
+pub fn squeeze(eps: f64, at: At, out: &mut Findings) {
+    let (lo, hi) = LINDLEY_RANGE;
+    let bound = if eps < lo { lo } else { hi };
+    out.check(Limit::Squeeze, !(lo..=hi).contains(&eps), eps, bound, at);
+}
+
+/// A sliding `speed` [m/s] against the PY08 §8 bound `bound` [m/s] (docs/model.md §9.9).
+pub fn speed(speed: f64, bound: f64, at: At, out: &mut Findings) {
+    out.check(Limit::SpeedBound, speed > bound, speed, bound, at);
+}
+
+/// The numerical level resolved the band `band` of a spectrum spanning `spectrum_band` = q1/q0
+/// (docs/model.md §9.10).
+pub fn band_limited(band: f64, spectrum_band: f64, out: &mut Findings) {
+    out.check(
+        Limit::BandLimited,
+        spectrum_band > band * (1.0 + 1e-9),
+        spectrum_band,
+        band,
+        At::Setup,
+    );
+}
+
+/// A node of the numerical level's table at reduced pressure `reduced_pressure` failed with
+/// `message` (docs/model.md §9.10).
+pub fn numerical_failure(reduced_pressure: f64, message: String, out: &mut Findings) {
+    let mut f = Finding::new(
+        Limit::NumericalFailure,
+        reduced_pressure,
+        reduced_pressure,
+        At::Setup,
+    );
+    f.detail = Some(message);
+    out.record(f);
+}
+
+/// A life run without failure criteria (docs/model.md §8).
+pub fn no_failure_criterion(out: &mut Findings) {
+    out.record(Finding::new(Limit::NoFailureCriterion, 0.0, 0.0, At::Setup));
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::contact::CriticalJunction;
+
+    fn junction(u_c: f64, lambda_c: f64, zeta_c: f64) -> Junction {
+        Junction::Leaking(CriticalJunction {
+            zeta_c,
+            lambda_c,
+            u_c,
+            ubar_c: 0.5 * u_c,
+            hrms_c: u_c,
+        })
+    }
+
+    #[test]
+    fn each_contact_limit_fires_exactly_past_its_threshold() {
+        let j = junction(1e-7, 1e-5, 10.0);
+        let state = |p0: f64, j: &Junction| {
+            let mut out = Findings::default();
+            contact(
+                &ContactState {
+                    nominal_pressure: p0,
+                    pressure_difference: 1e4,
+                    junction: j,
+                    cutoff: 100.0,
+                },
+                At::Pressure(p0),
+                &mut out,
+            );
+            out
+        };
+        assert!(state(1e5, &j).is_empty(), "ΔP/P0 = 0.1 exactly is inside");
+        assert!(state(0.99e5, &j).get(Limit::PressureRatio).is_some());
+        let steep = junction(2e-6, 1e-5, 10.0);
+        assert!(state(1e6, &steep).get(Limit::AspectRatio).is_some());
+        let thin = junction(0.5e-9, 1e-5, 10.0);
+        let f = state(1e6, &thin);
+        let m = f.get(Limit::MolecularGap).map(|f| (f.value, f.bound));
+        assert_eq!(m, Some((0.5e-9, 1e-9)));
+        let late = junction(1e-7, 1e-5, 51.0);
+        assert!(state(1e6, &late).get(Limit::NearCutoff).is_some());
+        assert!(state(1e6, &Junction::Sealed).is_empty());
+    }
+
+    #[test]
+    fn findings_keep_the_worst_and_the_first() {
+        let mut out = Findings::default();
+        for (t, ratio) in [(1.0, 0.12), (10.0, 0.16), (100.0, 0.14)] {
+            out.check(Limit::PressureRatio, true, ratio, 0.1, At::Time(t));
+        }
+        let f = out.get(Limit::PressureRatio).cloned();
+        let f = f.as_ref();
+        assert_eq!(f.map(|f| f.value), Some(0.16));
+        assert_eq!(f.map(|f| f.at), Some(At::Time(10.0)));
+        assert_eq!(f.map(|f| f.first), Some(At::Time(1.0)));
+        assert_eq!(f.map(|f| f.count), Some(3));
+        assert_eq!(out.len(), 1);
+    }
+
+    #[test]
+    fn severity_measures_both_sides_of_a_range() {
+        let mut out = Findings::default();
+        squeeze(0.04, At::Time(0.0), &mut out); // 1.25× below 5 %
+        squeeze(0.45, At::Time(1.0), &mut out); // 1.5× above 30 %
+        squeeze(0.2, At::Time(2.0), &mut out); // inside
+        let f = out.get(Limit::Squeeze).cloned();
+        assert_eq!(f.as_ref().map(|f| (f.value, f.bound)), Some((0.45, 0.3)));
+        assert_eq!(f.map(|f| f.count), Some(2));
+    }
+
+    #[test]
+    fn messages_name_value_bound_place_and_section() {
+        let mut out = Findings::default();
+        for (t, ratio) in [(0.0, 0.13), (3.156e8, 0.16)] {
+            out.check(Limit::PressureRatio, true, ratio, 0.1, At::Time(t));
+        }
+        let text = out.iter().map(ToString::to_string).collect::<String>();
+        assert!(text.contains("ΔP/P0 = 0.16 is above 0.1"), "{text}");
+        assert!(
+            text.contains("worst at t = 3.156e8 s (10 years)"),
+            "{text}"
+        );
+        assert!(text.contains("first at t = 0 s, 2 evaluations"), "{text}");
+        assert!(text.contains("docs/model.md §9.1"), "{text}");
+    }
+
+    #[test]
+    fn every_limit_has_a_unique_id_and_a_section() {
+        let mut ids: Vec<&str> = Limit::ALL.iter().map(|l| l.id()).collect();
+        ids.sort_unstable();
+        ids.dedup();
+        assert_eq!(ids.len(), Limit::ALL.len());
+        assert!(Limit::ALL.iter().all(|l| l.section().starts_with('§')));
+    }
+}

@@ -1,0 +1,74 @@
+//! `sealsim compare` as a library call: one life scenario with each of several compounds.
+
+use super::{Progress, scenario_path};
+use crate::contact::ContactSettings;
+use crate::leak::{ContactPath, Fidelity};
+use crate::material::Material;
+use crate::scenario::{Scenario, ScenarioError};
+use crate::simulate::{LifeResult, Simulator};
+use crate::surface::Spectrum;
+use crate::validity::Findings;
+use std::path::Path;
+
+/// What a contact path depends on.
+type PathKey = (Spectrum, ContactSettings, Fidelity);
+
+/// One compound's run.
+#[derive(Debug, Clone)]
+pub struct CompoundRun {
+    /// The compound as the caller named it (a library id or a file path).
+    pub label: String,
+    pub material: Material,
+    /// The scenario validated with this compound.
+    pub scenario: Scenario,
+    /// Its life, with its findings (the shared contact path's included in the first run's).
+    pub result: LifeResult,
+}
+
+/// The scenario at `scenario_path` run with each of `compounds` (label, material) in place of
+/// its `[material]` compound, at `fidelity` (the scenario's when `None`). The contact table is
+/// built once for every compound that shares the surface, the contact settings and the level.
+pub fn compare(
+    scenario_path_on_disk: &Path,
+    compounds: Vec<(String, Material)>,
+    fidelity: Option<Fidelity>,
+    progress: Progress<'_>,
+) -> Result<Vec<CompoundRun>, ScenarioError> {
+    let scenarios: Vec<Scenario> = compounds
+        .iter()
+        .map(|(_, m)| {
+            let mut s = Scenario::load_with_material(scenario_path_on_disk, m)?;
+            if let Some(f) = fidelity {
+                s.life.fidelity = f;
+            }
+            Ok(s)
+        })
+        .collect::<Result<_, ScenarioError>>()?;
+    // One contact table for all compounds: it depends only on the surface, the contact
+    // settings and the level, which the variants share (checked, in case a material file
+    // changed them).
+    let mut shared: Option<(PathKey, ContactPath)> = None;
+    let mut runs = Vec::with_capacity(scenarios.len());
+    for ((label, material), scenario) in compounds.into_iter().zip(scenarios) {
+        let life = &scenario.life;
+        let key = (life.spectrum.clone(), life.contact, life.fidelity);
+        let (path, mut findings) = match &shared {
+            Some((first, path)) if *first == key => (path.clone(), Findings::default()),
+            _ => {
+                let (path, findings) = scenario_path(&scenario, life.fidelity, None, progress);
+                shared = Some((key, path.clone()));
+                (path, findings)
+            }
+        };
+        let mut result = Simulator::with_path(life, path).run();
+        findings.extend(std::mem::take(&mut result.findings));
+        result.findings = findings;
+        runs.push(CompoundRun {
+            label,
+            material,
+            scenario,
+            result,
+        });
+    }
+    Ok(runs)
+}

@@ -1,0 +1,103 @@
+//! `sealsim leak` as a library call: the leak of a scenario's seal at a list of nominal
+//! pressures, with the drag of a sliding countersurface when the scenario has `[motion]`.
+
+use super::{Progress, scenario_path};
+use crate::dynamic::{DragCoefficients, DragSettings, MotionPoint, MotionSpec};
+use crate::leak::{ContactPath, Fidelity, FlatSeal, LeakPoint, StaticSolver};
+use crate::scenario::Scenario;
+use crate::validity::{self, At, Findings};
+
+/// The leak of a scenario at several pressures.
+#[derive(Debug, Clone)]
+pub struct LeakOutcome {
+    /// One point per pressure asked for. With constant sliding the drag is included in each
+    /// point's leak rate; with a stroke cycle the leak rate is the static one.
+    pub points: Vec<LeakPoint>,
+    /// `[motion]`: the motion quantities at each point (`None` for a static seal).
+    pub motion: Option<Vec<MotionPoint>>,
+    /// Whether the motion is a stroke cycle (its per-stroke volumes are reported).
+    pub stroke: bool,
+    /// The validity findings: the contact path's, the surface's, the seal's installation
+    /// state (temperature, squeeze), every point's contact state and sliding speed.
+    pub findings: Findings,
+}
+
+/// The leak of `scenario`'s seal at each of `pressures` [Pa] at `fidelity`. The numerical
+/// level solves exactly at these pressures; `progress` reports its realisations.
+pub fn evaluate(
+    scenario: &Scenario,
+    pressures: &[f64],
+    fidelity: Fidelity,
+    progress: Progress<'_>,
+) -> LeakOutcome {
+    let e_star = scenario.problem.material.effective_modulus();
+    let nodes = pressures.iter().map(|p| p / e_star).collect();
+    let (path, findings) = scenario_path(scenario, fidelity, Some(nodes), progress);
+    evaluate_on(scenario, path, findings, pressures)
+}
+
+/// [`evaluate`] on a contact path built beforehand for the scenario ([`scenario_path`]),
+/// adding to the path's `findings`.
+pub fn evaluate_on(
+    scenario: &Scenario,
+    path: ContactPath,
+    mut findings: Findings,
+    pressures: &[f64],
+) -> LeakOutcome {
+    let pb = &scenario.problem;
+    validity::surface(&pb.spectrum, &mut findings);
+    scenario.life.assess_installation(&mut findings);
+    let solver = StaticSolver::with_path(pb.clone(), path);
+    let mut points: Vec<LeakPoint> = pressures.iter().map(|&p0| solver.evaluate(p0)).collect();
+    for point in &points {
+        solver.assess(point, &mut findings);
+    }
+    let motion = scenario.life.motion.as_ref().map(|spec| {
+        points
+            .iter_mut()
+            .map(|point| motion_point(&solver, spec, point, &mut findings))
+            .collect()
+    });
+    LeakOutcome {
+        points,
+        motion,
+        stroke: scenario
+            .life
+            .motion
+            .as_ref()
+            .is_some_and(MotionSpec::is_stroke),
+        findings,
+    }
+}
+
+/// The motion quantities at `point` (exact critical junction and P(u) at its pressure,
+/// docs/model.md §3.4); with constant sliding the drag is added to the point's leak rate.
+fn motion_point(
+    solver: &StaticSolver,
+    spec: &MotionSpec,
+    point: &mut LeakPoint,
+    findings: &mut Findings,
+) -> MotionPoint {
+    let pb = solver.problem();
+    let seal = spec.seal(
+        pb.material,
+        FlatSeal {
+            nominal_pressure: point.nominal_pressure,
+            ..pb.seal
+        },
+        pb.fluid.viscosity,
+        pb.shape_factor,
+    );
+    let coeffs = DragCoefficients::compute(solver.path().exact(), &seal, &DragSettings::default());
+    let m = spec.evaluate(&coeffs, point.leak_rate);
+    if !spec.is_stroke() {
+        point.leak_rate += m.drag_leak_rate;
+    }
+    validity::speed(
+        spec.fastest_speed(),
+        m.speed_bound,
+        At::Pressure(point.nominal_pressure),
+        findings,
+    );
+    m
+}

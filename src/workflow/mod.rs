@@ -1,0 +1,43 @@
+//! What each command does, as library calls: the static leak of a scenario ([`leak`]), its life
+//! ([`life`]), the same life with other compounds ([`compare`]), figure sets ([`figures`]) and
+//! the fidelity trade-off ([`tradeoff`]). The command line only parses arguments, calls these,
+//! renders and writes; a library user (or a binding) reaches the same results.
+//!
+//! Every workflow returns its validity [`Findings`] (docs/model.md §9) with its results, so
+//! that every command reports them the same way.
+
+pub mod compare;
+pub mod figures;
+pub mod leak;
+pub mod life;
+pub mod tradeoff;
+
+use crate::leak::{ContactPath, Fidelity, PathOptions};
+use crate::scenario::Scenario;
+use crate::validity::Findings;
+
+/// A progress report `(done, total)` for long work (the numerical level's realisations, the
+/// trade-off's settings); `&mut |_, _| {}` for none.
+pub type Progress<'a> = &'a mut dyn FnMut(usize, usize);
+
+/// The scenario's contact path at `fidelity`, built with its height map and `[numerical]`
+/// settings, and the path's own findings (docs/model.md §9.10). `numerical_nodes`: reduced
+/// pressures P0/E* at which the numerical level solves (`None`: its default table nodes).
+pub fn scenario_path(
+    scenario: &Scenario,
+    fidelity: Fidelity,
+    numerical_nodes: Option<Vec<f64>>,
+    progress: Progress<'_>,
+) -> (ContactPath, Findings) {
+    let options = PathOptions {
+        height_map: scenario.height_map.as_ref(),
+        numerical: scenario.numerical.clone(),
+        numerical_nodes,
+        ..PathOptions::default()
+    };
+    let pb = &scenario.problem;
+    let path = ContactPath::build(&pb.spectrum, pb.contact, fidelity, &options, progress);
+    let mut findings = Findings::default();
+    path.assess(&options, &mut findings);
+    (path, findings)
+}
