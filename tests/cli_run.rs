@@ -380,8 +380,10 @@ fn failure_block_without_criterion_warns_and_survives() {
     let json = out.summary();
     assert!(json["time_to_failure_s"].is_null());
     assert_eq!(json["failure_mode"], "none");
+    assert_eq!(json["warnings"][0]["id"], "no_failure_criterion");
+    assert!(json["warnings"][0]["value"].is_null());
     assert!(
-        json["warnings"][0]
+        json["warnings"][0]["message"]
             .as_str()
             .unwrap()
             .contains("no criterion")
