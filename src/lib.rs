@@ -37,6 +37,7 @@
 //! # Ok::<(), sealsim::surface::SpectrumError>(())
 //! ```
 
+#[cfg(feature = "cli")]
 pub mod cli;
 pub mod clogging;
 pub mod contact;

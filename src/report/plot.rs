@@ -1,6 +1,6 @@
-//! SVG plots (plotters), log–log line charts of one quantity against another.
+//! Log–log line charts of one quantity against another, rendered as SVG (plotters) with the
+//! `cli` feature.
 
-use plotters::prelude::*;
 use std::fmt;
 
 /// One labelled curve; points with non-positive or non-finite coordinates are not drawn
@@ -32,144 +32,152 @@ impl fmt::Display for PlotError {
 
 impl std::error::Error for PlotError {}
 
-fn err<E: fmt::Display>(e: E) -> PlotError {
-    PlotError(e.to_string())
-}
+/// Rendering (plotters): only with the `cli` feature, which brings the plotting dependency.
+#[cfg(feature = "cli")]
+mod svg {
+    use super::{LogLogChart, PlotError, Series};
+    use plotters::prelude::*;
+    use std::fmt;
 
-/// Bounds of the drawable points; with `whole_decades`, widened to powers of ten.
-fn bounds(values: impl Iterator<Item = f64>, whole_decades: bool) -> Option<(f64, f64)> {
-    let (lo, hi) = values
-        .filter(|v| v.is_finite() && *v > 0.0)
-        .fold((f64::INFINITY, 0.0f64), |(lo, hi), v| {
-            (lo.min(v), hi.max(v))
-        });
-    if hi <= 0.0 {
-        return None;
+    fn err<E: fmt::Display>(e: E) -> PlotError {
+        PlotError(e.to_string())
     }
-    if !whole_decades && hi > lo {
-        return Some((lo, hi));
+
+    /// Bounds of the drawable points; with `whole_decades`, widened to powers of ten.
+    fn bounds(values: impl Iterator<Item = f64>, whole_decades: bool) -> Option<(f64, f64)> {
+        let (lo, hi) = values
+            .filter(|v| v.is_finite() && *v > 0.0)
+            .fold((f64::INFINITY, 0.0f64), |(lo, hi), v| {
+                (lo.min(v), hi.max(v))
+            });
+        if hi <= 0.0 {
+            return None;
+        }
+        if !whole_decades && hi > lo {
+            return Some((lo, hi));
+        }
+        let (a, mut b) = (lo.log10().floor(), hi.log10().ceil());
+        if b <= a {
+            b = a + 1.0;
+        }
+        Some((10f64.powf(a), 10f64.powf(b)))
     }
-    let (a, mut b) = (lo.log10().floor(), hi.log10().ceil());
-    if b <= a {
-        b = a + 1.0;
-    }
-    Some((10f64.powf(a), 10f64.powf(b)))
-}
 
-/// Series with at most this many points get a marker at each point.
-const MARKED_POINTS: usize = 30;
+    /// Series with at most this many points get a marker at each point.
+    const MARKED_POINTS: usize = 30;
 
-/// The corner of the plot (a third of each axis, in log coordinates) holding the fewest points:
-/// where the legend hides the least.
-fn emptiest_corner(points: &[(f64, f64)], x: (f64, f64), y: (f64, f64)) -> SeriesLabelPosition {
-    let (x0, x1) = (x.0.log10(), x.1.log10());
-    let fraction = |v: f64, lo: f64, hi: f64| if hi > lo { (v - lo) / (hi - lo) } else { 0.5 };
-    let count = |left: bool, upper: bool| {
-        points
-            .iter()
-            .filter(|(px, py)| {
-                let fx = fraction(px.log10(), x0, x1);
-                let fy = fraction(py.log10(), y.0, y.1);
-                (if left { fx < 0.4 } else { fx > 0.6 })
-                    && (if upper { fy > 0.6 } else { fy < 0.4 })
-            })
-            .count()
-    };
-    [
-        (SeriesLabelPosition::UpperLeft, count(true, true)),
-        (SeriesLabelPosition::UpperRight, count(false, true)),
-        (SeriesLabelPosition::LowerRight, count(false, false)),
-        (SeriesLabelPosition::LowerLeft, count(true, false)),
-    ]
-    .into_iter()
-    .min_by_key(|(_, n)| *n)
-    .map_or(SeriesLabelPosition::UpperLeft, |(p, _)| p)
-}
-
-impl LogLogChart {
-    /// Renders the chart as an SVG document.
-    pub fn to_svg(&self) -> Result<String, PlotError> {
-        let drawable = |s: &Series| -> Vec<(f64, f64)> {
-            s.points
+    /// The corner of the plot (a third of each axis, in log coordinates) holding the fewest points:
+    /// where the legend hides the least.
+    fn emptiest_corner(points: &[(f64, f64)], x: (f64, f64), y: (f64, f64)) -> SeriesLabelPosition {
+        let (x0, x1) = (x.0.log10(), x.1.log10());
+        let fraction = |v: f64, lo: f64, hi: f64| if hi > lo { (v - lo) / (hi - lo) } else { 0.5 };
+        let count = |left: bool, upper: bool| {
+            points
                 .iter()
-                .copied()
-                .filter(|(x, y)| x.is_finite() && y.is_finite() && *x > 0.0 && *y > 0.0)
-                .collect()
-        };
-        let all: Vec<(f64, f64)> = self.series.iter().flat_map(drawable).collect();
-        let x = bounds(all.iter().map(|p| p.0), false)
-            .ok_or_else(|| PlotError("no positive x values".into()))?;
-        let y = bounds(all.iter().map(|p| p.1), true)
-            .ok_or_else(|| PlotError("no positive y values".into()))?;
-        let (y_lo, y_hi) = (y.0.log10().round(), y.1.log10().round());
-        // one label per decade, or every other/third... when there are many
-        let decades = (y_hi - y_lo) as usize;
-        let step = decades.div_ceil(12).max(1);
-        let y_ticks = decades / step + 1;
-        let mut svg = String::new();
-        {
-            let root = SVGBackend::with_string(&mut svg, (800, 560)).into_drawing_area();
-            root.fill(&WHITE).map_err(err)?;
-            let mut chart = ChartBuilder::on(&root)
-                .caption(&self.title, ("sans-serif", 20))
-                .margin(16)
-                .x_label_area_size(48)
-                .y_label_area_size(80)
-                // y is drawn as log10(y) on a linear axis: plotters' log-axis labels thin out
-                // over the 20+ decades a leak rate spans.
-                .build_cartesian_2d((x.0..x.1).log_scale(), y_lo..y_hi)
-                .map_err(err)?;
-            chart
-                .configure_mesh()
-                .x_desc(&self.x_label)
-                .y_desc(&self.y_label)
-                .x_labels(8)
-                .y_labels(y_ticks)
-                .x_label_formatter(&|v| format!("{v:.1e}"))
-                .y_label_formatter(&|v| {
-                    if (v - v.round()).abs() < 1e-9 {
-                        format!("1e{}", v.round())
-                    } else {
-                        String::new()
-                    }
+                .filter(|(px, py)| {
+                    let fx = fraction(px.log10(), x0, x1);
+                    let fy = fraction(py.log10(), y.0, y.1);
+                    (if left { fx < 0.4 } else { fx > 0.6 })
+                        && (if upper { fy > 0.6 } else { fy < 0.4 })
                 })
-                .draw()
-                .map_err(err)?;
-            for (i, s) in self.series.iter().enumerate() {
-                let colour = Palette99::pick(i).to_rgba();
-                let points: Vec<(f64, f64)> = drawable(s)
-                    .into_iter()
-                    .map(|(x, y)| (x, y.log10()))
-                    .collect();
-                // short series are data points (a sweep, a ladder of settings): mark them, so
-                // that a single point is visible too
-                if points.len() <= MARKED_POINTS {
+                .count()
+        };
+        [
+            (SeriesLabelPosition::UpperLeft, count(true, true)),
+            (SeriesLabelPosition::UpperRight, count(false, true)),
+            (SeriesLabelPosition::LowerRight, count(false, false)),
+            (SeriesLabelPosition::LowerLeft, count(true, false)),
+        ]
+        .into_iter()
+        .min_by_key(|(_, n)| *n)
+        .map_or(SeriesLabelPosition::UpperLeft, |(p, _)| p)
+    }
+
+    impl LogLogChart {
+        /// Renders the chart as an SVG document.
+        pub fn to_svg(&self) -> Result<String, PlotError> {
+            let drawable = |s: &Series| -> Vec<(f64, f64)> {
+                s.points
+                    .iter()
+                    .copied()
+                    .filter(|(x, y)| x.is_finite() && y.is_finite() && *x > 0.0 && *y > 0.0)
+                    .collect()
+            };
+            let all: Vec<(f64, f64)> = self.series.iter().flat_map(drawable).collect();
+            let x = bounds(all.iter().map(|p| p.0), false)
+                .ok_or_else(|| PlotError("no positive x values".into()))?;
+            let y = bounds(all.iter().map(|p| p.1), true)
+                .ok_or_else(|| PlotError("no positive y values".into()))?;
+            let (y_lo, y_hi) = (y.0.log10().round(), y.1.log10().round());
+            // one label per decade, or every other/third... when there are many
+            let decades = (y_hi - y_lo) as usize;
+            let step = decades.div_ceil(12).max(1);
+            let y_ticks = decades / step + 1;
+            let mut svg = String::new();
+            {
+                let root = SVGBackend::with_string(&mut svg, (800, 560)).into_drawing_area();
+                root.fill(&WHITE).map_err(err)?;
+                let mut chart = ChartBuilder::on(&root)
+                    .caption(&self.title, ("sans-serif", 20))
+                    .margin(16)
+                    .x_label_area_size(48)
+                    .y_label_area_size(80)
+                    // y is drawn as log10(y) on a linear axis: plotters' log-axis labels thin out
+                    // over the 20+ decades a leak rate spans.
+                    .build_cartesian_2d((x.0..x.1).log_scale(), y_lo..y_hi)
+                    .map_err(err)?;
+                chart
+                    .configure_mesh()
+                    .x_desc(&self.x_label)
+                    .y_desc(&self.y_label)
+                    .x_labels(8)
+                    .y_labels(y_ticks)
+                    .x_label_formatter(&|v| format!("{v:.1e}"))
+                    .y_label_formatter(&|v| {
+                        if (v - v.round()).abs() < 1e-9 {
+                            format!("1e{}", v.round())
+                        } else {
+                            String::new()
+                        }
+                    })
+                    .draw()
+                    .map_err(err)?;
+                for (i, s) in self.series.iter().enumerate() {
+                    let colour = Palette99::pick(i).to_rgba();
+                    let points: Vec<(f64, f64)> = drawable(s)
+                        .into_iter()
+                        .map(|(x, y)| (x, y.log10()))
+                        .collect();
+                    // short series are data points (a sweep, a ladder of settings): mark them, so
+                    // that a single point is visible too
+                    if points.len() <= MARKED_POINTS {
+                        chart
+                            .draw_series(points.iter().map(|&p| Circle::new(p, 3, colour.filled())))
+                            .map_err(err)?;
+                    }
                     chart
-                        .draw_series(points.iter().map(|&p| Circle::new(p, 3, colour.filled())))
-                        .map_err(err)?;
+                        .draw_series(LineSeries::new(points, colour.stroke_width(2)))
+                        .map_err(err)?
+                        .label(s.label.clone())
+                        .legend(move |(x, y)| {
+                            PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2))
+                        });
                 }
                 chart
-                    .draw_series(LineSeries::new(points, colour.stroke_width(2)))
-                    .map_err(err)?
-                    .label(s.label.clone())
-                    .legend(move |(x, y)| {
-                        PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2))
-                    });
+                    .configure_series_labels()
+                    .position(emptiest_corner(&all, x, (y_lo, y_hi)))
+                    .background_style(WHITE.mix(0.8))
+                    .border_style(BLACK)
+                    .draw()
+                    .map_err(err)?;
+                root.present().map_err(err)?;
             }
-            chart
-                .configure_series_labels()
-                .position(emptiest_corner(&all, x, (y_lo, y_hi)))
-                .background_style(WHITE.mix(0.8))
-                .border_style(BLACK)
-                .draw()
-                .map_err(err)?;
-            root.present().map_err(err)?;
+            Ok(svg)
         }
-        Ok(svg)
     }
 }
 
-#[cfg(test)]
+#[cfg(all(test, feature = "cli"))]
 mod tests {
     use super::*;
 
