@@ -1,17 +1,74 @@
 //! sealsim — leak rate and life of rubber seals from rough-surface contact mechanics.
 //!
 //! The physics follows B.N.J. Persson and C. Yang, *Theory of the leak-rate of seals*,
-//! J. Phys.: Condens. Matter 20 (2008) 315011 (cited below as "PY08 §n").
+//! J. Phys.: Condens. Matter 20 (2008) 315011 (cited below as "PY08 §n"); every formula, its
+//! source and its validity limits are written out in the model reference, `docs/model.md`
+//! (cited as "docs/model.md §n").
 //!
 //! Architecture: dependencies point inwards.
 //! * input boundary: [`units`] (unit strings → SI), [`scenario`] (TOML → validated model types);
-//! * physics: [`math`], [`surface`] (roughness spectra), [`contact`] (Persson contact
-//!   mechanics, critical junction, contact table), [`leak`] (leak rate of a flat seal);
-//! * output boundary: [`report`] (CSV, plots, atomic files), [`cli`].
+//! * physics: [`surface`] (roughness spectra), [`contact`] (Persson contact mechanics, critical
+//!   junction, effective medium, contact tables), [`fluid`] (the leak law), [`leak`] (the
+//!   fidelity ladder of a flat seal), [`material`] (Prony series, shift, fits), [`seal`]
+//!   (pressure profiles), [`dynamic`] (reciprocating seals), [`clogging`], [`numerical`] (the
+//!   numerical reference), [`validity`] (the model's limits), on [`math`] (quadrature, solvers);
+//! * [`simulate`] (the life loop) and [`workflow`] (what each command does: leak, life,
+//!   compare, figures, trade-off);
+//! * output boundary: [`report`] (CSV, JSON, charts, atomic files) and, with the default `cli`
+//!   feature, the command line (`cli`), which only parses, calls, renders and writes.
 //!
 //! The physics modules know nothing of files, units, TOML or the command line.
 //!
-//! # Example: the paper's §3 case
+//! # Example: a seal's life from a scenario
+//!
+//! ```
+//! use sealsim::scenario::Scenario;
+//! use sealsim::workflow;
+//! use std::path::Path;
+//!
+//! let text = r#"
+//!     name = "NBR O-ring, water at 80 °C"
+//!     [material]
+//!     library = "nbr-70"
+//!     [surface]
+//!     rms_roughness = "0.8 um"
+//!     hurst_exponent = 0.8
+//!     q0 = "3e5 1/m"
+//!     q1 = "1e8 1/m"
+//!     [fluid]
+//!     viscosity = "0.35 mPa*s"
+//!     pressure_difference = "0.5 bar"
+//!     [seal]
+//!     kind = "o-ring"
+//!     cross_section = "3.53 mm"
+//!     mean_diameter = "50 mm"
+//!     squeeze = 0.25
+//!     [environment]
+//!     temperature = "80 C"
+//!     [failure]
+//!     max_leaked_volume = "0.5 L"
+//!     [simulation]
+//!     duration = "10 year"
+//! "#;
+//! // units are parsed and every value is checked once, here; errors name the line and key
+//! let scenario = Scenario::from_str(text, Path::new("example.toml"))?;
+//! let result = workflow::life::run(&scenario, &mut |_, _| {});
+//!
+//! let first = &result.rows[0];
+//! let last = result.rows.last().expect("a history has rows");
+//! assert_eq!(first.time, 0.0);
+//! assert!((last.time - 10.0 * 365.25 * 86400.0).abs() < 1.0); // s
+//! // the rubber relaxes: the sealing force falls, and the leak rate rises
+//! assert!(last.sealing_force < first.sealing_force); // N/m
+//! assert!(result.final_leak_rate() > result.initial_leak_rate()); // m³/s
+//! // each validity limit crossed is reported once, with its worst value and when
+//! for finding in result.findings.iter() {
+//!     println!("warning: {finding}");
+//! }
+//! # Ok::<(), sealsim::scenario::ScenarioError>(())
+//! ```
+//!
+//! # Example: the paper's §3 case, one static state
 //!
 //! ```
 //! use sealsim::contact::{ContactSettings, Elastic};
