@@ -8,7 +8,6 @@ use crate::leak::{Fidelity, LeakPoint, StaticSolver};
 use crate::report::csv::scenario_leak_table;
 use crate::report::plot::{LogLogChart, Series};
 use crate::scenario::figure_set::{FigureGroup, FigureSet, PlotKind, output_paths};
-use crate::scenario::life::parse_fidelity;
 use clap::Args;
 use std::path::PathBuf;
 
@@ -23,8 +22,13 @@ pub struct FiguresArgs {
     #[arg(long, value_name = "DIR")]
     pub out_dir: PathBuf,
 
-    /// Fidelity level: rule-of-thumb, critical-junction (= table), exact, effective-medium.
-    #[arg(long, value_name = "LEVEL", value_parser = parse_fidelity, default_value = "critical-junction")]
+    /// Fidelity level.
+    #[arg(
+        long,
+        value_name = "LEVEL",
+        value_enum,
+        default_value = "critical-junction"
+    )]
     pub fidelity: Fidelity,
 }
 

@@ -6,7 +6,6 @@ use crate::leak::{Fidelity, FlatSeal, LeakPoint, StaticSolver, Warning};
 use crate::math::log_spaced;
 use crate::report::csv::{leak_table, motion_leak_table};
 use crate::scenario::Scenario;
-use crate::scenario::life::parse_fidelity;
 use crate::units::{self, Dimension};
 use clap::Args;
 use std::mem::discriminant;
@@ -55,9 +54,8 @@ pub struct LeakArgs {
     #[arg(long, value_name = "N", requires = "sweep", value_parser = clap::value_parser!(u32).range(2..=MAX_SWEEP_POINTS))]
     pub points: Option<u32>,
 
-    /// Fidelity level: rule-of-thumb, critical-junction (= table), exact, effective-medium
-    /// [default: the scenario's simulation.fidelity, else critical-junction].
-    #[arg(long, value_name = "LEVEL", value_parser = parse_fidelity)]
+    /// Fidelity level [default: the scenario's simulation.fidelity, else critical-junction].
+    #[arg(long, value_name = "LEVEL", value_enum)]
     pub fidelity: Option<Fidelity>,
 
     /// Write the CSV to FILE (atomically) instead of standard output.

@@ -538,20 +538,22 @@ impl Source<'_> {
 
 /// A fidelity name of the ladder (DESIGN §4): `rule-of-thumb`, `critical-junction` (= `table`,
 /// the contact table), `exact` (critical junction by quadrature), `effective-medium`,
-/// `numerical`.
+/// `numerical` — the names and aliases of [`Fidelity::ALL`].
 pub fn parse_fidelity(name: &str) -> Result<Fidelity, String> {
-    match name {
-        "table" => Ok(Fidelity::Table),
-        other => Fidelity::ALL
+    Fidelity::from_name(name).ok_or_else(|| {
+        let levels: Vec<String> = Fidelity::ALL
             .into_iter()
-            .find(|f| f.name() == other)
-            .ok_or_else(|| {
-                format!(
-                    "must be one of \"rule-of-thumb\", \"critical-junction\" (= \"table\"), \
-                     \"exact\", \"effective-medium\", \"numerical\", got {other:?}"
-                )
-            }),
-    }
+            .map(|f| {
+                let aliases: Vec<String> = f.aliases().iter().map(|a| format!("{a:?}")).collect();
+                if aliases.is_empty() {
+                    format!("{:?}", f.name())
+                } else {
+                    format!("{:?} (= {})", f.name(), aliases.join(", "))
+                }
+            })
+            .collect();
+        format!("must be one of {}, got {name:?}", levels.join(", "))
+    })
 }
 
 #[cfg(test)]
