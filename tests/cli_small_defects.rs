@@ -91,3 +91,43 @@ fn every_fidelity_level_and_alias_is_accepted() {
         assert!(stderr.contains(level), "{stderr}");
     }
 }
+
+/// The command after `marker` on a comment line of `text`, split into words (the test's paths
+/// hold no spaces or quotes).
+fn quoted_command(text: &str, marker: &str) -> Vec<String> {
+    let line = text
+        .lines()
+        .find(|l| l.contains(marker))
+        .unwrap_or_else(|| panic!("no line with {marker:?} in\n{text}"));
+    let command = &line[line.find(marker).unwrap()..];
+    let words: Vec<String> = command.split_whitespace().map(str::to_owned).collect();
+    assert_eq!(words[0], "sealsim", "{line}");
+    words[1..].to_vec()
+}
+
+#[test]
+fn export_header_of_a_material_file_names_commands_that_work() {
+    let dir = TempDir::new().unwrap();
+    // a user material whose file stem is no library id
+    let file = dir.path().join("my-compound.toml");
+    fs::copy(repo_file("materials/nbr-70.toml"), &file).unwrap();
+    let file = file.to_str().unwrap();
+    for (format, comment) in [("abaqus", "** "), ("ansys", "! ")] {
+        let text = stdout_ok(&["materials", "export", "--file", file, "--format", format]);
+        let show = quoted_command(&text, "sealsim materials show");
+        assert_eq!(show, ["materials", "show", "--file", file], "{text}");
+        let described = stdout_ok(&show.iter().map(String::as_str).collect::<Vec<_>>());
+        assert!(described.contains("NBR"), "{described}");
+        // the first line repeats the export itself
+        let first = text.lines().next().unwrap();
+        assert!(first.starts_with(comment), "{first}");
+        let export = quoted_command(first, "sealsim materials export");
+        let again = stdout_ok(&export.iter().map(String::as_str).collect::<Vec<_>>());
+        assert_eq!(again, text);
+    }
+    // a library compound is still named by its id
+    let text = stdout_ok(&["materials", "export", "epdm-70", "--format", "abaqus"]);
+    let show = quoted_command(&text, "sealsim materials show");
+    assert_eq!(show, ["materials", "show", "epdm-70"]);
+    stdout_ok(&show.iter().map(String::as_str).collect::<Vec<_>>());
+}
