@@ -131,3 +131,92 @@ fn export_header_of_a_material_file_names_commands_that_work() {
     assert_eq!(show, ["materials", "show", "epdm-70"]);
     stdout_ok(&show.iter().map(String::as_str).collect::<Vec<_>>());
 }
+
+/// A small O-ring scenario (line numbers in the tests refer to this text).
+const ORING: &str = r#"name = "o-ring"
+[material]
+library = "nbr-70"
+[surface]
+rms_roughness = "0.8 um"
+hurst_exponent = 0.7
+q0 = "3e5 1/m"
+q1 = "1e10 1/m"
+[fluid]
+viscosity = "1 mPa*s"
+pressure_difference = "2 bar"
+[seal]
+kind = "o-ring"
+cross_section = "3.53 mm"
+mean_diameter = "50 mm"
+squeeze = 0.2
+"#;
+
+/// `ORING` with `from` replaced by `to`, written to `dir/s.toml`.
+fn oring_with(dir: &TempDir, from: &str, to: &str) -> PathBuf {
+    assert!(ORING.contains(from), "{from}");
+    let path = dir.path().join("s.toml");
+    fs::write(&path, ORING.replacen(from, to, 1)).unwrap();
+    path
+}
+
+#[test]
+fn seal_and_shift_kinds_take_the_right_article() {
+    let dir = TempDir::new().unwrap();
+    let scenario = oring_with(&dir, "squeeze = 0.2\n", "squeeze = 0.2\nwidth = \"1 mm\"\n");
+    let stderr = stderr_rejected(&["leak", scenario.to_str().unwrap()]);
+    assert!(
+        stderr.contains("s.toml:17: seal.width: not a key of an O-ring seal, which takes"),
+        "{stderr}"
+    );
+    let scenario = oring_with(&dir, "squeeze = 0.2\n", "");
+    let stderr = stderr_rejected(&["run", scenario.to_str().unwrap()]);
+    assert!(
+        stderr.contains("seal.squeeze: missing key `squeeze` in [seal] (an O-ring seal needs"),
+        "{stderr}"
+    );
+    // a material file whose Arrhenius shift has a WLF constant
+    let text = fs::read_to_string(repo_file("materials/nbr-70.toml"))
+        .unwrap()
+        .replacen(
+            "kind = \"wlf\"\n",
+            "kind = \"arrhenius\"\nactivation_energy = \"90 kJ/mol\"\n",
+            1,
+        );
+    let material = dir.path().join("m.toml");
+    fs::write(&material, text).unwrap();
+    let stderr = stderr_rejected(&["materials", "show", "--file", material.to_str().unwrap()]);
+    assert!(
+        stderr.contains("not a parameter of an Arrhenius shift, which takes"),
+        "{stderr}"
+    );
+    for bad in ["a o-ring", "a arrhenius", "a O-ring"] {
+        assert!(!stderr.to_lowercase().contains(bad), "{stderr}");
+    }
+}
+
+#[test]
+fn no_text_of_the_project_says_a_o_ring() {
+    fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
+        for entry in fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                walk(&path, out);
+            } else if path
+                .extension()
+                .is_some_and(|e| ["rs", "md", "toml"].iter().any(|x| e == *x))
+            {
+                out.push(path);
+            }
+        }
+    }
+    let mut files = vec![repo_file("README.md")];
+    for dir in ["src", "scenarios", "materials"] {
+        walk(&repo_file(dir), &mut files);
+    }
+    for file in files {
+        let text = fs::read_to_string(&file).unwrap().to_lowercase();
+        for bad in ["a o-ring", "a arrhenius shift"] {
+            assert!(!text.contains(bad), "{} says {bad:?}", file.display());
+        }
+    }
+}

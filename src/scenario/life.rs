@@ -136,6 +136,11 @@ impl Source<'_> {
     pub(super) fn seal(&self, table: &Spanned<RawSeal>) -> Result<SealSpec, ScenarioError> {
         let raw = table.get_ref();
         let kind = raw.kind.as_ref().map_or("flat", |k| k.get_ref().as_str());
+        // the kind with its article, for the messages (the other kinds are rejected below)
+        let a_seal = match kind {
+            "o-ring" => "an O-ring seal",
+            _ => "a flat seal",
+        };
         let loading = match &raw.loading {
             None => Loading::Displacement,
             Some(l) => match l.get_ref().as_str() {
@@ -159,7 +164,7 @@ impl Source<'_> {
                 table.span(),
                 f.key,
                 format!(
-                    "missing key `{}` in [seal] (a {kind} seal needs {keys})",
+                    "missing key `{}` in [seal] ({a_seal} needs {keys})",
                     f.key.trim_start_matches("seal.")
                 ),
             )),
@@ -170,7 +175,7 @@ impl Source<'_> {
                     return Err(self.error(
                         q.span(),
                         &format!("seal.{key}"),
-                        format!("not a key of a {kind} seal, which takes {takes}"),
+                        format!("not a key of {a_seal}, which takes {takes}"),
                     ));
                 }
             }
@@ -704,7 +709,7 @@ squeeze = 0.2
             (
                 "squeeze = 0.2",
                 "squeeze = 0.2\nwidth = 1",
-                ":17: seal.width: not a key of a o-ring seal",
+                ":17: seal.width: not a key of an O-ring seal",
             ),
             (
                 "squeeze = 0.2",
