@@ -220,3 +220,48 @@ fn no_text_of_the_project_says_a_o_ring() {
         }
     }
 }
+
+#[test]
+fn numbers_in_error_messages_are_readable() {
+    let dir = TempDir::new().unwrap();
+    // 3.53 mm is 0.0035299999999999997 m in binary
+    let scenario = oring_with(
+        &dir,
+        "mean_diameter = \"50 mm\"",
+        "mean_diameter = \"3 mm\"",
+    );
+    for command in ["leak", "run"] {
+        let stderr = stderr_rejected(&[command, scenario.to_str().unwrap()]);
+        assert!(
+            stderr.contains(
+                "s.toml:15: seal.mean_diameter: must exceed the cross_section (0.00353 m), got 0.003 m"
+            ),
+            "{stderr}"
+        );
+    }
+    // 0.07 mm is 7.000000000000001e-5 m in binary
+    let scenario = oring_with(&dir, "\"0.8 um\"", "\"-0.07 mm\"");
+    let stderr = stderr_rejected(&["leak", scenario.to_str().unwrap()]);
+    assert!(
+        stderr.contains("s.toml:5: surface.rms_roughness: must be positive, got -7e-5 m"),
+        "{stderr}"
+    );
+    // a bound of a quantity with a unit
+    let scenario = oring_with(&dir, "\"3.53 mm\"", "\"-3.53 mm\"");
+    let stderr = stderr_rejected(&["leak", scenario.to_str().unwrap()]);
+    assert!(
+        stderr.contains("s.toml:14: seal.cross_section: must be positive, got -0.00353 m"),
+        "{stderr}"
+    );
+    // a flag value
+    let stderr = stderr_rejected(&[
+        "leak",
+        scenario_path("persson-yang-2008.toml").to_str().unwrap(),
+        "--sweep",
+        "0.7MPa..0.07MPa",
+    ]);
+    assert!(
+        stderr.contains("the end of the sweep must exceed its start, got 700000 Pa..70000 Pa"),
+        "{stderr}"
+    );
+}

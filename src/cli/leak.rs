@@ -88,7 +88,8 @@ fn parse_pressure(text: &str) -> Result<f64, String> {
         Ok(value)
     } else {
         Err(format!(
-            "a nominal pressure must be positive and finite, got {value:e} Pa"
+            "a nominal pressure must be positive and finite, got {} Pa",
+            units::show(value)
         ))
     }
 }
@@ -103,7 +104,9 @@ fn parse_sweep(text: &str) -> Result<Sweep, String> {
         Ok(Sweep { from, to })
     } else {
         Err(format!(
-            "the end of the sweep must exceed its start, got {from:e} Pa..{to:e} Pa"
+            "the end of the sweep must exceed its start, got {} Pa..{} Pa",
+            units::show(from),
+            units::show(to)
         ))
     }
 }

@@ -9,10 +9,10 @@
 use super::{CliError, write_output};
 use crate::material::curve::{Curve, response_curve};
 use crate::material::{Material, Shift};
-use crate::report::materials::{abaqus, ansys, curve_table, describe, human, library_table};
+use crate::report::materials::{abaqus, ansys, curve_table, describe, library_table};
 use crate::report::plot::{LogLogChart, Series};
 use crate::scenario::{library, load_material_file};
-use crate::units;
+use crate::units::{self, human, show};
 use clap::{Args, Subcommand, ValueEnum};
 use std::path::PathBuf;
 
@@ -152,7 +152,8 @@ fn parse_temperature(text: &str) -> Result<f64, String> {
         Ok(kelvin)
     } else {
         Err(format!(
-            "a temperature must be above absolute zero, got {kelvin} K"
+            "a temperature must be above absolute zero, got {} K",
+            show(kelvin)
         ))
     }
 }

@@ -8,13 +8,13 @@
 
 use super::ReportError;
 use super::csv::{csv_error, finish, number};
-use super::materials::human;
 use super::plot::{LogLogChart, Series};
 use crate::dynamic::{Motion, MotionPoint, MotionSpec, StrokeCycle};
 use crate::material::shift::{DAY, YEAR};
 use crate::material::{Material, Status};
 use crate::seal::SealGeometry;
 use crate::simulate::{AsperityModulus, LifeProblem, LifeResult, LifeWarning, Loading};
+use crate::units::human;
 use serde::Serialize;
 
 /// Columns of the history CSV, in order (units in the names).

@@ -7,6 +7,7 @@ use super::ReportError;
 use super::csv::{csv_error, finish};
 use crate::material::curve::Curve;
 use crate::material::{Material, Shift, Status};
+use crate::units::human;
 
 /// Columns of the curve CSV, in order: one row per grid point, the dynamic moduli at the
 /// angular frequency ω = 1/t of the same row.
@@ -45,34 +46,6 @@ pub fn curve_table(curve: &Curve) -> Result<String, ReportError> {
         writer.write_record(&record).map_err(csv_error)?;
     }
     finish(writer)
-}
-
-/// A number for people: `sig` significant digits, trailing zeros dropped; scientific outside
-/// 1e-3 ≤ |v| < 1e6.
-pub fn human(v: f64, sig: usize) -> String {
-    if v == 0.0 || !v.is_finite() {
-        return format!("{v}");
-    }
-    let sig = sig.max(1);
-    if (1e-3..1e6).contains(&v.abs()) {
-        let magnitude = v.abs().log10().floor() as i64;
-        let decimals = (sig as i64 - 1 - magnitude).max(0) as usize;
-        trim_zeros(format!("{v:.decimals$}"))
-    } else {
-        let text = format!("{v:.*e}", sig - 1);
-        match text.split_once('e') {
-            Some((mantissa, exponent)) => format!("{}e{exponent}", trim_zeros(mantissa.into())),
-            None => text,
-        }
-    }
-}
-
-fn trim_zeros(text: String) -> String {
-    if text.contains('.') {
-        text.trim_end_matches('0').trim_end_matches('.').to_owned()
-    } else {
-        text
-    }
 }
 
 /// `"23 °C (296.15 K)"`.
@@ -510,17 +483,6 @@ fn abaqus_name(id: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn human_numbers() {
-        assert_eq!(human(3.80976, 6), "3.80976");
-        assert_eq!(human(296.15 - 273.15, 6), "23");
-        assert_eq!(human(-34.0, 4), "-34");
-        assert_eq!(human(1e-6, 4), "1e-6");
-        assert_eq!(human(1.65e-4, 6), "1.65e-4");
-        assert_eq!(human(1e13, 4), "1e13");
-        assert_eq!(human(12.345678, 4), "12.35");
-    }
 
     #[test]
     fn solver_numbers_round_trip() {

@@ -7,14 +7,13 @@
 use super::error::{ScenarioError, Source};
 use super::history;
 use super::raw::{Quantity, RawEnvironment, RawFailure, RawScenarioAgeing, RawSeal, RawSimulation};
-use super::show;
 use super::validate::{Bound, Field, field};
 use crate::leak::Fidelity;
 use crate::material::shift::{Cycle, DAY, YEAR};
 use crate::material::{Ageing, Material, Shift, TemperatureHistory};
 use crate::seal::SealGeometry;
 use crate::simulate::{FailureCriteria, Loading, ThermalStrain, TimeGrid};
-use crate::units::Dimension;
+use crate::units::{Dimension, show};
 use std::path::PathBuf;
 use toml::Spanned;
 

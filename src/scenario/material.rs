@@ -21,15 +21,15 @@
 //! default `relaxed`); a scenario material with E∞ = 0 is therefore an error.
 
 use super::error::{ScenarioError, Source};
+use super::library;
 use super::raw::{
     Quantity, RawAgeing, RawMaterial, RawMaterialFile, RawPronyTerm, RawQuantity, RawShift,
 };
 use super::validate::{Bound, Field, field};
-use super::{library, show};
 use crate::contact::Elastic;
 use crate::material::{Ageing, Material, Prony, PronyTerm, Shift, Status};
 use crate::simulate::AsperityModulus;
-use crate::units::{self, Dimension};
+use crate::units::{self, Dimension, show};
 use std::ops::Range;
 use std::path::Path;
 use toml::Spanned;
