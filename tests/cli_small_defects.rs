@@ -265,3 +265,59 @@ fn numbers_in_error_messages_are_readable() {
         "{stderr}"
     );
 }
+
+#[test]
+fn negative_pressures_reach_the_parser() {
+    let dir = TempDir::new().unwrap();
+    let out = dir.path().join("out.csv");
+    let scenario = scenario_path("persson-yang-2008.toml");
+    let scenario = scenario.to_str().unwrap();
+    let out_arg = out.to_str().unwrap();
+    let cases: [(&[&str], &str); 5] = [
+        (
+            &["--pressures", "-1MPa"],
+            "invalid value '-1MPa' for '--pressures <P,...>': a nominal pressure must be \
+             positive and finite, got -1e6 Pa",
+        ),
+        (
+            &["--pressures", "-2e5"],
+            "invalid value '-2e5' for '--pressures <P,...>': a nominal pressure must be \
+             positive and finite, got -200000 Pa",
+        ),
+        (
+            &["--pressures", "-0.1MPa,0.2MPa"],
+            "invalid value '-0.1MPa' for '--pressures <P,...>'",
+        ),
+        (
+            &["--sweep", "-1MPa..1MPa"],
+            "invalid value '-1MPa..1MPa' for '--sweep <A..B>': a nominal pressure must be \
+             positive and finite, got -1e6 Pa",
+        ),
+        (
+            &["--sweep", "0.1MPa..1MPa", "--points", "-3"],
+            "invalid value '-3' for '--points <N>'",
+        ),
+    ];
+    for (flags, expected) in cases {
+        let mut args = vec!["leak", scenario];
+        args.extend_from_slice(flags);
+        args.extend_from_slice(&["-o", out_arg]);
+        let stderr = stderr_rejected(&args);
+        assert!(stderr.contains(expected), "{flags:?}:\n{stderr}");
+        assert!(!stderr.contains("unexpected argument"), "{stderr}");
+        assert!(!out.exists(), "{flags:?}: the output was written");
+    }
+    // the flags still take their ordinary values
+    cargo_bin_cmd!("sealsim")
+        .args([
+            "leak",
+            scenario,
+            "--pressures",
+            "0.1MPa,0.2MPa",
+            "-o",
+            out_arg,
+        ])
+        .assert()
+        .success();
+    assert_eq!(fs::read_to_string(&out).unwrap().lines().count(), 3);
+}

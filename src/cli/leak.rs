@@ -43,15 +43,20 @@ pub struct LeakArgs {
     pub scenario: PathBuf,
 
     /// Comma-separated nominal pressures [default: the scenario's seal.nominal_pressure].
-    #[arg(long, value_name = "P,...", value_delimiter = ',', value_parser = parse_pressure)]
+    // allow_hyphen_values: a negative pressure reaches parse_pressure (and its message)
+    // instead of being read as an option
+    #[arg(long, value_name = "P,...", value_delimiter = ',', value_parser = parse_pressure,
+          allow_hyphen_values = true)]
     pub pressures: Option<Vec<f64>>,
 
     /// Log-spaced nominal pressures from A to B inclusive, e.g. 0.05MPa..1MPa.
-    #[arg(long, value_name = "A..B", value_parser = parse_sweep, conflicts_with = "pressures")]
+    #[arg(long, value_name = "A..B", value_parser = parse_sweep, conflicts_with = "pressures",
+          allow_hyphen_values = true)]
     pub sweep: Option<Sweep>,
 
     /// Number of points of --sweep [default: 20].
-    #[arg(long, value_name = "N", requires = "sweep", value_parser = clap::value_parser!(u32).range(2..=MAX_SWEEP_POINTS))]
+    #[arg(long, value_name = "N", requires = "sweep", allow_negative_numbers = true,
+          value_parser = clap::value_parser!(u32).range(2..=MAX_SWEEP_POINTS))]
     pub points: Option<u32>,
 
     /// Fidelity level [default: the scenario's simulation.fidelity, else critical-junction].
