@@ -321,3 +321,131 @@ fn negative_pressures_reach_the_parser() {
         .success();
     assert_eq!(fs::read_to_string(&out).unwrap().lines().count(), 3);
 }
+
+/// The README's text.
+fn readme() -> String {
+    fs::read_to_string(repo_file("README.md")).unwrap()
+}
+
+/// The section of `text` from the heading `heading` to the next heading of any level.
+fn section<'a>(text: &'a str, heading: &str) -> &'a str {
+    let start = text
+        .find(&format!("\n{heading}\n"))
+        .unwrap_or_else(|| panic!("no heading {heading:?}"))
+        + heading.len()
+        + 2;
+    let rest = &text[start..];
+    let end = rest.find("\n#").unwrap_or(rest.len());
+    &rest[..end]
+}
+
+#[test]
+fn readme_says_how_to_install_and_lists_every_command() {
+    let text = readme();
+    // right after the set-up commands, before the first section
+    let intro = &text[..text.find("\n## ").unwrap()];
+    assert!(intro.contains("cargo install --path ."), "{intro}");
+    assert!(intro.contains("cargo test --release"), "{intro}");
+    // the commands table has a row for every subcommand
+    let table = section(&text, "## Commands");
+    let help = stdout_ok(&["--help"]);
+    let commands: Vec<&str> = help
+        .lines()
+        .skip_while(|l| !l.starts_with("Commands:"))
+        .skip(1)
+        .take_while(|l| l.starts_with("  "))
+        .filter_map(|l| l.split_whitespace().next())
+        .filter(|c| *c != "help")
+        .collect();
+    assert!(commands.contains(&"fit-prony"), "{help}");
+    for command in commands {
+        assert!(
+            table.contains(&format!("| `sealsim {command} ")),
+            "the README's commands table has no row for {command}:\n{table}"
+        );
+    }
+}
+
+/// `(name, version)` of every package in Cargo.lock.
+fn locked_packages() -> Vec<(String, String)> {
+    let lock = fs::read_to_string(repo_file("Cargo.lock")).unwrap();
+    let mut out = Vec::new();
+    let mut name = None;
+    for line in lock.lines() {
+        if let Some(n) = line.strip_prefix("name = ") {
+            name = Some(n.trim_matches('"').to_owned());
+        } else if let (Some(v), Some(n)) = (line.strip_prefix("version = "), name.take()) {
+            out.push((n, v.trim_matches('"').to_owned()));
+        }
+    }
+    out
+}
+
+/// Every `(crate, version)` the README names: a locked package's name as a word, then
+/// (after an optional closing backtick) a space and a version number.
+fn versions_named_in(text: &str, packages: &[(String, String)]) -> Vec<(String, String)> {
+    let mut out = Vec::new();
+    for (name, _) in packages {
+        for (at, _) in text.match_indices(name.as_str()) {
+            let before = text[..at].chars().next_back();
+            if before.is_some_and(|c| c.is_alphanumeric() || "_-./".contains(c)) {
+                continue;
+            }
+            let after = &text[at + name.len()..];
+            let after = after.strip_prefix('`').unwrap_or(after);
+            let Some(after) = after.strip_prefix(' ') else {
+                continue;
+            };
+            let version: String = after
+                .chars()
+                .take_while(|c| c.is_ascii_digit() || *c == '.')
+                .collect();
+            let version = version.trim_end_matches('.');
+            if version.contains('.') {
+                out.push((name.clone(), version.to_owned()));
+            }
+        }
+    }
+    out.sort();
+    out.dedup();
+    out
+}
+
+#[test]
+fn readme_crate_versions_match_the_lock_file() {
+    let packages = locked_packages();
+    assert!(packages.iter().any(|(n, _)| n == "statrs"));
+    let named = versions_named_in(&readme(), &packages);
+    // the README names at least these
+    for name in ["statrs", "nalgebra", "ode_solvers"] {
+        assert!(named.iter().any(|(n, _)| n == name), "{named:?}");
+    }
+    for (name, version) in named {
+        let locked: Vec<&str> = packages
+            .iter()
+            .filter(|(n, _)| *n == name)
+            .map(|(_, v)| v.as_str())
+            .collect();
+        assert!(
+            locked
+                .iter()
+                .any(|v| *v == version || v.starts_with(&format!("{version}."))),
+            "the README names {name} {version}, Cargo.lock has {locked:?}"
+        );
+    }
+}
+
+#[test]
+fn no_unchecked_minimum_rust_version_is_claimed() {
+    let manifest = fs::read_to_string(repo_file("Cargo.toml")).unwrap();
+    assert!(!manifest.contains("rust-version"), "{manifest}");
+    let text = readme();
+    assert!(
+        !text.contains("(1.88+"),
+        "the README still claims Rust 1.88+"
+    );
+    assert!(
+        text.contains("a stable Rust toolchain (tested with 1.95, the one CI uses)"),
+        "the README does not say which toolchain it is tested with"
+    );
+}
