@@ -73,6 +73,36 @@ impl Fidelity {
             Fidelity::Numerical => "numerical",
         }
     }
+
+    /// Other names of the level (scenario files and command line alike).
+    pub fn aliases(self) -> &'static [&'static str] {
+        match self {
+            Fidelity::Table => &["table"],
+            _ => &[],
+        }
+    }
+
+    /// What the level computes, in a few words (command-line help).
+    pub fn description(self) -> &'static str {
+        match self {
+            Fidelity::RuleOfThumb => "u_c ≈ h_rms(ζc), closed forms only",
+            Fidelity::Table => "critical junction from a contact table built once per surface",
+            Fidelity::Exact => "critical junction by quadrature at every pressure",
+            Fidelity::EffectiveMedium => "Bruggeman effective medium over the separation P(u)",
+            Fidelity::Numerical => {
+                "numerical reference: BEM contact and Reynolds flow on surface realisations \
+                 (seconds to minutes)"
+            }
+        }
+    }
+
+    /// The level named `name` (its [`name`](Self::name) or one of its
+    /// [`aliases`](Self::aliases)).
+    pub fn from_name(name: &str) -> Option<Fidelity> {
+        Fidelity::ALL
+            .into_iter()
+            .find(|f| f.name() == name || f.aliases().contains(&name))
+    }
 }
 
 /// Everything the static leak calculation needs, in SI units.

@@ -10,6 +10,7 @@
 //! Conventions (PY08 §2): `C(q) = (2π)^-2 ∫ d²x <h(x)h(0)> e^{-iq·x}` [m⁴];
 //! `h_rms² = 2π ∫ q C(q) dq`. All quantities in SI units.
 
+use crate::units::show;
 use std::fmt;
 
 /// Why a spectrum could not be built. The input boundary adds file, line and key.
@@ -94,12 +95,15 @@ impl Spectrum {
         positive_finite("q1", q1)?;
         if !(hurst > 0.0 && hurst < 1.0) {
             return Err(SpectrumError::Invalid(format!(
-                "Hurst exponent must lie strictly between 0 and 1, got {hurst}"
+                "Hurst exponent must lie strictly between 0 and 1, got {}",
+                show(hurst)
             )));
         }
         if q0 >= q1 {
             return Err(SpectrumError::Invalid(format!(
-                "q0 must be smaller than q1, got q0 = {q0} 1/m and q1 = {q1} 1/m"
+                "q0 must be smaller than q1, got q0 = {} 1/m and q1 = {} 1/m",
+                show(q0),
+                show(q1)
             )));
         }
         let slope = -2.0 * (1.0 + hurst);
@@ -115,7 +119,8 @@ impl Spectrum {
                 positive_finite("roll-off wavevector", qr)?;
                 if !(qr > q0 && qr < q1) {
                     return Err(SpectrumError::Invalid(format!(
-                        "the roll-off wavevector must lie between q0 and q1, got {qr} 1/m"
+                        "the roll-off wavevector must lie between q0 and q1, got {} 1/m",
+                        show(qr)
                     )));
                 }
                 let ln_qr = qr.ln();
@@ -417,7 +422,8 @@ fn positive_finite(what: &str, v: f64) -> Result<(), SpectrumError> {
         Ok(())
     } else {
         Err(SpectrumError::Invalid(format!(
-            "{what} must be positive and finite, got {v}"
+            "{what} must be positive and finite, got {}",
+            show(v)
         )))
     }
 }

@@ -279,6 +279,41 @@ fn article(noun: &str) -> &'static str {
     }
 }
 
+/// A number for a message: at most six significant digits, no binary noise, plain when
+/// moderate (`0.00353`, `1200`), else scientific (`3.5e-7`, `1e10`). Every error message
+/// prints its numbers with this (`0.0035299999999999997` reads `0.00353`).
+pub fn show(v: f64) -> String {
+    human(v, 6)
+}
+
+/// A number for people: `sig` significant digits, trailing zeros dropped; scientific outside
+/// 1e-3 ≤ |v| < 1e6.
+pub fn human(v: f64, sig: usize) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return format!("{v}");
+    }
+    let sig = sig.max(1);
+    if (1e-3..1e6).contains(&v.abs()) {
+        let magnitude = v.abs().log10().floor() as i64;
+        let decimals = (sig as i64 - 1 - magnitude).max(0) as usize;
+        trim_zeros(format!("{v:.decimals$}"))
+    } else {
+        let text = format!("{v:.*e}", sig - 1);
+        match text.split_once('e') {
+            Some((mantissa, exponent)) => format!("{}e{exponent}", trim_zeros(mantissa.into())),
+            None => text,
+        }
+    }
+}
+
+fn trim_zeros(text: String) -> String {
+    if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_owned()
+    } else {
+        text
+    }
+}
+
 /// Why a quantity or unit string was rejected.
 #[derive(Debug, Clone, PartialEq)]
 pub enum UnitError {
@@ -350,11 +385,7 @@ impl fmt::Display for UnitError {
                  used as the whole unit (e.g. \"80 C\") or as \"1/C\"; use K inside compound units"
             ),
             UnitError::BelowAbsoluteZero { kelvin } => {
-                if kelvin.abs() >= 0.01 {
-                    write!(f, "temperature {kelvin:.2} K is below absolute zero")
-                } else {
-                    write!(f, "temperature {kelvin:e} K is below absolute zero")
-                }
+                write!(f, "temperature {} K is below absolute zero", show(*kelvin))
             }
             UnitError::MalformedUnit { unit, reason } => {
                 write!(f, "malformed unit \"{unit}\": {reason}")
@@ -840,6 +871,30 @@ fn lookup_symbol(symbol: &str, whole: &str) -> Result<(f64, Dimension), UnitErro
 mod tests {
     use super::*;
     use proptest::prelude::*;
+
+    #[test]
+    fn numbers_in_messages_have_no_binary_noise() {
+        assert_eq!(show(3.53e-3), "0.00353");
+        assert_eq!(show(0.0035299999999999997), "0.00353");
+        assert_eq!(show(0.1 + 0.2), "0.3");
+        assert_eq!(show(1200.0), "1200");
+        assert_eq!(show(-90000.0), "-90000");
+        assert_eq!(show(1e10), "1e10");
+        assert_eq!(show(1.23456789e-7), "1.23457e-7");
+        assert_eq!(show(0.0), "0");
+        assert_eq!(show(f64::INFINITY), "inf");
+    }
+
+    #[test]
+    fn human_numbers() {
+        assert_eq!(human(3.80976, 6), "3.80976");
+        assert_eq!(human(296.15 - 273.15, 6), "23");
+        assert_eq!(human(-34.0, 4), "-34");
+        assert_eq!(human(1e-6, 4), "1e-6");
+        assert_eq!(human(1.65e-4, 6), "1.65e-4");
+        assert_eq!(human(1e13, 4), "1e13");
+        assert_eq!(human(12.345678, 4), "12.35");
+    }
 
     fn close(actual: f64, expected: f64, rel: f64) -> bool {
         (actual - expected).abs() <= rel * expected.abs()

@@ -13,7 +13,6 @@ use crate::material::Material;
 use crate::report::life::{
     CompareRow, compare_table, compare_text, has_positive_leak_rate, leak_rate_chart,
 };
-use crate::scenario::life::parse_fidelity;
 use crate::scenario::{library, load_material_file};
 use crate::workflow;
 use clap::Args;
@@ -44,8 +43,8 @@ pub struct CompareArgs {
     #[arg(long, value_name = "FILE.svg")]
     pub plot: Option<PathBuf>,
 
-    /// Override the scenario's simulation.fidelity: critical-junction (= table) or exact.
-    #[arg(long, value_name = "LEVEL", value_parser = parse_fidelity)]
+    /// Override the scenario's simulation.fidelity.
+    #[arg(long, value_name = "LEVEL", value_enum)]
     pub fidelity: Option<Fidelity>,
 }
 

@@ -7,7 +7,6 @@ use crate::leak::{Fidelity, LeakPoint};
 use crate::report::csv::scenario_leak_table;
 use crate::report::plot::{LogLogChart, Series};
 use crate::scenario::figure_set::{FigureGroup, FigureSet, PlotKind, output_paths};
-use crate::scenario::life::parse_fidelity;
 use crate::workflow;
 use crate::workflow::figures::{Curve, GroupCurves};
 use clap::Args;
@@ -24,8 +23,13 @@ pub struct FiguresArgs {
     #[arg(long, value_name = "DIR")]
     pub out_dir: PathBuf,
 
-    /// Fidelity level: rule-of-thumb, critical-junction (= table), exact, effective-medium.
-    #[arg(long, value_name = "LEVEL", value_parser = parse_fidelity, default_value = "critical-junction")]
+    /// Fidelity level.
+    #[arg(
+        long,
+        value_name = "LEVEL",
+        value_enum,
+        default_value = "critical-junction"
+    )]
     pub fidelity: Fidelity,
 }
 

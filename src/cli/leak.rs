@@ -5,7 +5,6 @@ use crate::leak::Fidelity;
 use crate::math::log_spaced;
 use crate::report::csv::{leak_table, motion_leak_table};
 use crate::scenario::Scenario;
-use crate::scenario::life::parse_fidelity;
 use crate::units::{self, Dimension};
 use crate::workflow;
 use clap::Args;
@@ -43,20 +42,24 @@ pub struct LeakArgs {
     pub scenario: PathBuf,
 
     /// Comma-separated nominal pressures [default: the scenario's seal.nominal_pressure].
-    #[arg(long, value_name = "P,...", value_delimiter = ',', value_parser = parse_pressure)]
+    // allow_hyphen_values: a negative pressure reaches parse_pressure (and its message)
+    // instead of being read as an option
+    #[arg(long, value_name = "P,...", value_delimiter = ',', value_parser = parse_pressure,
+          allow_hyphen_values = true)]
     pub pressures: Option<Vec<f64>>,
 
     /// Log-spaced nominal pressures from A to B inclusive, e.g. 0.05MPa..1MPa.
-    #[arg(long, value_name = "A..B", value_parser = parse_sweep, conflicts_with = "pressures")]
+    #[arg(long, value_name = "A..B", value_parser = parse_sweep, conflicts_with = "pressures",
+          allow_hyphen_values = true)]
     pub sweep: Option<Sweep>,
 
     /// Number of points of --sweep [default: 20].
-    #[arg(long, value_name = "N", requires = "sweep", value_parser = clap::value_parser!(u32).range(2..=MAX_SWEEP_POINTS))]
+    #[arg(long, value_name = "N", requires = "sweep", allow_negative_numbers = true,
+          value_parser = clap::value_parser!(u32).range(2..=MAX_SWEEP_POINTS))]
     pub points: Option<u32>,
 
-    /// Fidelity level: rule-of-thumb, critical-junction (= table), exact, effective-medium
-    /// [default: the scenario's simulation.fidelity, else critical-junction].
-    #[arg(long, value_name = "LEVEL", value_parser = parse_fidelity)]
+    /// Fidelity level [default: the scenario's simulation.fidelity, else critical-junction].
+    #[arg(long, value_name = "LEVEL", value_enum)]
     pub fidelity: Option<Fidelity>,
 
     /// Write the CSV to FILE (atomically) instead of standard output.
@@ -89,7 +92,8 @@ fn parse_pressure(text: &str) -> Result<f64, String> {
         Ok(value)
     } else {
         Err(format!(
-            "a nominal pressure must be positive and finite, got {value:e} Pa"
+            "a nominal pressure must be positive and finite, got {} Pa",
+            units::show(value)
         ))
     }
 }
@@ -104,7 +108,9 @@ fn parse_sweep(text: &str) -> Result<Sweep, String> {
         Ok(Sweep { from, to })
     } else {
         Err(format!(
-            "the end of the sweep must exceed its start, got {from:e} Pa..{to:e} Pa"
+            "the end of the sweep must exceed its start, got {} Pa..{} Pa",
+            units::show(from),
+            units::show(to)
         ))
     }
 }

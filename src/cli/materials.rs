@@ -9,10 +9,10 @@
 use super::{CliError, write_output};
 use crate::material::curve::{Curve, response_curve};
 use crate::material::{Material, Shift};
-use crate::report::materials::{abaqus, ansys, curve_table, describe, human, library_table};
+use crate::report::materials::{abaqus, ansys, curve_table, describe, library_table};
 use crate::report::plot::{LogLogChart, Series};
 use crate::scenario::{library, load_material_file};
-use crate::units;
+use crate::units::{self, human, show};
 use clap::{Args, Subcommand, ValueEnum};
 use std::path::PathBuf;
 
@@ -52,6 +52,29 @@ pub struct MaterialRef {
     /// `status` it is a user material, e.g. the output of `sealsim fit-prony`).
     #[arg(long, value_name = "PATH", conflicts_with = "id")]
     pub file: Option<PathBuf>,
+}
+
+impl MaterialRef {
+    /// The compound as the command line names it, `nbr-70` or `--file PATH` (quoted for a
+    /// POSIX shell when the path needs it), for commands quoted in outputs.
+    pub fn command_line(&self) -> String {
+        match (&self.file, &self.id) {
+            (Some(path), _) => format!("--file {}", shell_word(&path.to_string_lossy())),
+            (None, Some(id)) => shell_word(id),
+            (None, None) => String::new(),
+        }
+    }
+}
+
+/// `word` as one word of a POSIX shell command: as is when it holds only safe characters,
+/// else in single quotes.
+fn shell_word(word: &str) -> String {
+    let safe = |c: char| c.is_ascii_alphanumeric() || "-_./:=+@%,".contains(c);
+    if !word.is_empty() && word.chars().all(safe) {
+        word.to_owned()
+    } else {
+        format!("'{}'", word.replace('\'', r"'\''"))
+    }
 }
 
 /// Arguments of `sealsim materials show`.
@@ -129,7 +152,8 @@ fn parse_temperature(text: &str) -> Result<f64, String> {
         Ok(kelvin)
     } else {
         Err(format!(
-            "a temperature must be above absolute zero, got {kelvin} K"
+            "a temperature must be above absolute zero, got {} K",
+            show(kelvin)
         ))
     }
 }
@@ -265,8 +289,8 @@ fn chart(id: &str, material: &Material, curve: &Curve) -> LogLogChart {
 fn export(args: ExportArgs) -> Result<(), CliError> {
     let (id, material) = resolve(&args.material)?;
     let text = match args.format {
-        ExportFormat::Abaqus => abaqus(&id, &material),
-        ExportFormat::Ansys => ansys(&id, &material),
+        ExportFormat::Abaqus => abaqus(&id, &args.material.command_line(), &material),
+        ExportFormat::Ansys => ansys(&args.material.command_line(), &material),
     };
     if material.prony.long_term() == 0.0 {
         eprintln!(
@@ -286,6 +310,28 @@ fn export(args: ExportArgs) -> Result<(), CliError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn compounds_are_named_as_on_the_command_line() {
+        let by_id = MaterialRef {
+            id: Some("nbr-70".into()),
+            file: None,
+        };
+        assert_eq!(by_id.command_line(), "nbr-70");
+        let by_file = |path: &str| MaterialRef {
+            id: None,
+            file: Some(PathBuf::from(path)),
+        };
+        assert_eq!(by_file("fit/my.toml").command_line(), "--file fit/my.toml");
+        assert_eq!(
+            by_file("my fit.toml").command_line(),
+            "--file 'my fit.toml'"
+        );
+        assert_eq!(
+            by_file("it's.toml").command_line(),
+            r"--file 'it'\''s.toml'"
+        );
+    }
 
     #[test]
     fn temperatures_take_units_or_kelvin() {

@@ -47,6 +47,27 @@ pub(crate) fn print_findings(context: Option<&str>, findings: &crate::validity::
     eprint!("{}", report::findings::warning_lines(context, findings));
 }
 
+/// `--fidelity LEVEL` of every command: the levels, their aliases and help all come from
+/// [`Fidelity::ALL`](crate::leak::Fidelity::ALL), so no command's help can miss one.
+impl clap::ValueEnum for crate::leak::Fidelity {
+    fn value_variants<'a>() -> &'a [Self] {
+        &Self::ALL
+    }
+
+    fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
+        let aliases = self.aliases();
+        let help = match aliases {
+            [] => self.description().to_owned(),
+            _ => format!("{} (alias: {})", self.description(), aliases.join(", ")),
+        };
+        Some(
+            clap::builder::PossibleValue::new(self.name())
+                .aliases(aliases.iter().copied())
+                .help(help),
+        )
+    }
+}
+
 /// Exit status for bad input, the same as clap's for usage errors.
 pub const EXIT_BAD_INPUT: i32 = 2;
 /// Exit status for a failure to write the output, or an internal error.

@@ -12,7 +12,6 @@ use crate::report::life::{
     Summary, has_positive_leak_rate, history_table, human_summary, leak_rate_chart,
 };
 use crate::scenario::Scenario;
-use crate::scenario::life::parse_fidelity;
 use crate::simulate::LifeResult;
 use crate::workflow;
 use clap::Args;
@@ -54,9 +53,8 @@ pub struct RunArgs {
     #[arg(long, value_name = "FILE.svg")]
     pub plot: Option<PathBuf>,
 
-    /// Override the scenario's simulation.fidelity: rule-of-thumb, critical-junction (= table),
-    /// exact or effective-medium.
-    #[arg(long, value_name = "LEVEL", value_parser = parse_fidelity)]
+    /// Override the scenario's simulation.fidelity.
+    #[arg(long, value_name = "LEVEL", value_enum)]
     pub fidelity: Option<Fidelity>,
 }
 

@@ -34,6 +34,7 @@
 use super::{Prony, PronyError, PronyTerm};
 use crate::math::log_spaced;
 use crate::math::nnls::{NnlsError, nnls};
+use crate::units::show;
 use nalgebra::{DMatrix, DVector};
 use std::fmt;
 
@@ -153,7 +154,8 @@ impl fmt::Display for FitError {
             }
             FitError::NotPositive { what, index, value } => write!(
                 f,
-                "{what} of point {index} must be positive and finite, got {value:e}"
+                "{what} of point {index} must be positive and finite, got {}",
+                show(*value)
             ),
             FitError::NotIncreasing {
                 what,
@@ -162,7 +164,9 @@ impl fmt::Display for FitError {
                 value,
             } => write!(
                 f,
-                "{what} must increase strictly: point {index} has {value:e} after {previous:e}"
+                "{what} must increase strictly: point {index} has {} after {}",
+                show(*value),
+                show(*previous)
             ),
             FitError::Solver(e) => e.fmt(f),
             FitError::Degenerate(e) => write!(f, "the fit gives no valid Prony series: {e}"),

@@ -9,6 +9,7 @@
 //! Phenomenological Theory of Linear Viscoelastic Behavior*, Springer 1989, ch. 4).
 
 use crate::math::special::exp_neg;
+use crate::units::show;
 use std::fmt;
 
 /// One Maxwell branch: modulus E_i [Pa], relaxation time τ_i [s, reduced time].
@@ -46,7 +47,8 @@ impl Prony {
     pub fn new(long_term: f64, terms: &[PronyTerm]) -> Result<Self, PronyError> {
         if !(long_term.is_finite() && long_term >= 0.0) {
             return Err(PronyError(format!(
-                "the long-term modulus must be finite and ≥ 0, got {long_term} Pa"
+                "the long-term modulus must be finite and ≥ 0, got {} Pa",
+                show(long_term)
             )));
         }
         for (i, t) in terms.iter().enumerate() {
@@ -54,14 +56,14 @@ impl Prony {
                 return Err(PronyError(format!(
                     "term {}: the modulus must be positive and finite, got {} Pa",
                     i + 1,
-                    t.modulus
+                    show(t.modulus)
                 )));
             }
             if !(t.tau.is_finite() && t.tau > 0.0) {
                 return Err(PronyError(format!(
                     "term {}: the relaxation time must be positive and finite, got {} s",
                     i + 1,
-                    t.tau
+                    show(t.tau)
                 )));
             }
         }

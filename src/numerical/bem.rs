@@ -91,6 +91,7 @@ use rustfft::{Fft, FftPlanner};
 
 use super::HeightMap;
 use super::fft::{Complex, Fft2, signed_index};
+use crate::units::show;
 
 /// Coarse-to-fine recursion stops at grids with fewer points a side than this (or odd ones).
 pub const COARSEST: usize = 32;
@@ -196,11 +197,16 @@ impl fmt::Display for BemError {
             BemError::InvalidModulus(e) => {
                 write!(
                     f,
-                    "effective modulus must be positive and finite, got {e} Pa"
+                    "effective modulus must be positive and finite, got {} Pa",
+                    show(*e)
                 )
             }
             BemError::InvalidPressure(p) => {
-                write!(f, "mean pressure must be positive and finite, got {p} Pa")
+                write!(
+                    f,
+                    "mean pressure must be positive and finite, got {} Pa",
+                    show(*p)
+                )
             }
             BemError::InvalidGrid(msg) => write!(f, "invalid height map: {msg}"),
             BemError::NonFiniteHeights => write!(f, "height map contains NaN or infinite values"),
@@ -210,7 +216,8 @@ impl fmt::Display for BemError {
                 residual,
             } => write!(
                 f,
-                "contact solver did not converge in {iterations} iterations (residual {residual:e})"
+                "contact solver did not converge in {iterations} iterations (residual {})",
+                show(*residual)
             ),
             BemError::Breakdown => write!(f, "contact solver broke down (non-finite values)"),
         }
@@ -306,7 +313,7 @@ fn validate(
     if !(map.pixel.is_finite() && map.pixel > 0.0) {
         return Err(BemError::InvalidGrid(format!(
             "pixel size must be positive and finite, got {} m",
-            map.pixel
+            show(map.pixel)
         )));
     }
     if map.heights.iter().any(|h| !h.is_finite()) {
@@ -315,7 +322,7 @@ fn validate(
     if !(settings.tolerance.is_finite() && settings.tolerance > 0.0) {
         return Err(BemError::InvalidSettings(format!(
             "tolerance must be positive and finite, got {}",
-            settings.tolerance
+            show(settings.tolerance)
         )));
     }
     if settings.max_iterations == 0 {

@@ -78,6 +78,7 @@
 //!   gap fields with 20–30 % contact, and just above the percolation threshold.
 
 use super::percolation;
+use crate::units::show;
 
 /// Direction of the mean pressure drop on the grid.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -212,7 +213,8 @@ impl std::fmt::Display for FlowError {
             Self::InvalidGap { index, value } => {
                 write!(
                     f,
-                    "gap value {value} at cell {index} is negative or not finite"
+                    "gap value {} at cell {index} is negative or not finite",
+                    show(*value)
                 )
             }
             Self::InvalidParameter(what) => write!(f, "{what} must be positive and finite"),
@@ -221,8 +223,9 @@ impl std::fmt::Display for FlowError {
                 residual,
             } => write!(
                 f,
-                "Reynolds solve did not converge: relative residual {residual:.3e} after \
-                 {iterations} iterations"
+                "Reynolds solve did not converge: relative residual {} after {iterations} \
+                 iterations",
+                show(*residual)
             ),
         }
     }

@@ -8,7 +8,6 @@
 
 use super::ReportError;
 use super::csv::{csv_error, finish, number};
-use super::materials::human;
 use super::plot::{LogLogChart, Series};
 use crate::dynamic::{Motion, MotionPoint, MotionSpec, StrokeCycle};
 use crate::material::shift::{DAY, YEAR};
@@ -16,6 +15,7 @@ use crate::material::{Material, Status};
 use crate::report::findings::{FindingRecord, records};
 use crate::seal::SealGeometry;
 use crate::simulate::{AsperityModulus, LifeProblem, LifeResult, Loading};
+use crate::units::human;
 use crate::validity::Limit;
 use serde::Serialize;
 

@@ -7,6 +7,7 @@ use super::ReportError;
 use super::csv::{csv_error, finish};
 use crate::material::curve::Curve;
 use crate::material::{Material, Shift, Status};
+use crate::units::human;
 
 /// Columns of the curve CSV, in order: one row per grid point, the dynamic moduli at the
 /// angular frequency ω = 1/t of the same row.
@@ -45,34 +46,6 @@ pub fn curve_table(curve: &Curve) -> Result<String, ReportError> {
         writer.write_record(&record).map_err(csv_error)?;
     }
     finish(writer)
-}
-
-/// A number for people: `sig` significant digits, trailing zeros dropped; scientific outside
-/// 1e-3 ≤ |v| < 1e6.
-pub fn human(v: f64, sig: usize) -> String {
-    if v == 0.0 || !v.is_finite() {
-        return format!("{v}");
-    }
-    let sig = sig.max(1);
-    if (1e-3..1e6).contains(&v.abs()) {
-        let magnitude = v.abs().log10().floor() as i64;
-        let decimals = (sig as i64 - 1 - magnitude).max(0) as usize;
-        trim_zeros(format!("{v:.decimals$}"))
-    } else {
-        let text = format!("{v:.*e}", sig - 1);
-        match text.split_once('e') {
-            Some((mantissa, exponent)) => format!("{}e{exponent}", trim_zeros(mantissa.into())),
-            None => text,
-        }
-    }
-}
-
-fn trim_zeros(text: String) -> String {
-    if text.contains('.') {
-        text.trim_end_matches('0').trim_end_matches('.').to_owned()
-    } else {
-        text
-    }
 }
 
 /// `"23 °C (296.15 K)"`.
@@ -309,17 +282,23 @@ fn ascii(text: &str) -> String {
         .collect()
 }
 
-/// The comment lines common to both exports (without the comment marker).
-fn export_header(id: &str, m: &Material, solver: &str, format: &str) -> Vec<String> {
+/// The comment lines common to both exports (without the comment marker). `source` names the
+/// compound as the command line does (`nbr-70`, or `--file PATH`), so that the commands the
+/// header quotes work as written.
+fn export_header(source: &str, m: &Material, solver: &str, format: &str) -> Vec<String> {
     let prony = &m.prony;
     let e0 = prony.instantaneous();
     let sum: f64 = prony.terms().iter().map(|t| t.modulus / e0).sum();
     let mut lines = vec![
-        format!("sealsim materials export {id} --format {format}"),
+        format!(
+            "sealsim materials export {} --format {format}",
+            ascii(source)
+        ),
         format!("material: {}", ascii(&m.name)),
         format!(
-            "status: {} - provenance of every number: sealsim materials show {id}",
-            m.status.as_str()
+            "status: {} - provenance of every number: sealsim materials show {}",
+            m.status.as_str(),
+            ascii(source)
         ),
         "units: SI - moduli in Pa, times in s, temperatures in K".to_owned(),
         format!(
@@ -360,17 +339,18 @@ fn export_header(id: &str, m: &Material, solver: &str, format: &str) -> Vec<Stri
     lines
 }
 
-/// Abaqus input: `*MATERIAL`, `*ELASTIC, MODULI=INSTANTANEOUS` (E0, ν),
 /// The comment line that explains the WLF data of both exports.
 const WLF_NOTE: &str =
     "WLF shift: log10 a_T = -C1 (T - T_ref)/(C2 + T - T_ref); data: T_ref [K], C1, C2 [K]";
 
+/// Abaqus input: `*MATERIAL`, `*ELASTIC, MODULI=INSTANTANEOUS` (E0, ν),
 /// `*VISCOELASTIC, TIME=PRONY` (g_i, k_i = 0, τ_i) and, for WLF, `*TRS, DEFINITION=WLF`.
-pub fn abaqus(id: &str, m: &Material) -> String {
+/// `id` names the material card; `source` is the compound as the command line names it.
+pub fn abaqus(id: &str, source: &str, m: &Material) -> String {
     let prony = &m.prony;
     let e0 = prony.instantaneous();
     let mut out = String::new();
-    for line in export_header(id, m, "Abaqus", "abaqus") {
+    for line in export_header(source, m, "Abaqus", "abaqus") {
         out += &format!("** {line}\n");
     }
     out += "** k_i = 0: no bulk relaxation (the bulk modulus is elastic)\n";
@@ -417,11 +397,12 @@ pub fn abaqus(id: &str, m: &Material) -> String {
 
 /// ANSYS Mechanical APDL input: `MP,EX` (E0), `MP,PRXY` (ν), `TB,PRONY,1,,N,SHEAR` with
 /// `TBDATA` pairs (a_i = E_i/E0, τ_i) and, for WLF, `TB,SHIFT,1,,3` (T_ref, C1, C2).
-pub fn ansys(id: &str, m: &Material) -> String {
+/// `source` is the compound as the command line names it (`nbr-70`, or `--file PATH`).
+pub fn ansys(source: &str, m: &Material) -> String {
     let prony = &m.prony;
     let e0 = prony.instantaneous();
     let mut out = String::new();
-    for line in export_header(id, m, "ANSYS", "ansys") {
+    for line in export_header(source, m, "ANSYS", "ansys") {
         out += &format!("! {line}\n");
     }
     out += "! shear Prony series only (no TB,PRONY,,,,BULK): no bulk relaxation\n";
@@ -502,17 +483,6 @@ fn abaqus_name(id: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn human_numbers() {
-        assert_eq!(human(3.80976, 6), "3.80976");
-        assert_eq!(human(296.15 - 273.15, 6), "23");
-        assert_eq!(human(-34.0, 4), "-34");
-        assert_eq!(human(1e-6, 4), "1e-6");
-        assert_eq!(human(1.65e-4, 6), "1.65e-4");
-        assert_eq!(human(1e13, 4), "1e13");
-        assert_eq!(human(12.345678, 4), "12.35");
-    }
 
     #[test]
     fn solver_numbers_round_trip() {

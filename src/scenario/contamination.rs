@@ -8,10 +8,9 @@
 
 use super::error::{ScenarioError, Source};
 use super::raw::{Quantity, RawContamination, RawSimulation, RawSizeDistribution};
-use super::show;
 use super::validate::{Bound, Field, field};
 use crate::clogging::{Contamination, DEFAULT_TOLERANCE, SizeDistribution};
-use crate::units::{self, Dimension};
+use crate::units::{self, Dimension, show};
 use toml::Spanned;
 
 const NUMBER_CONCENTRATION: Field = field(

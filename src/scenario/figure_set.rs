@@ -14,9 +14,9 @@
 use super::error::{ScenarioError, Source};
 use super::raw::Quantity;
 use super::validate::{Bound, Field, field};
-use super::{Scenario, read, show};
+use super::{Scenario, read};
 use crate::math::log_spaced;
-use crate::units::Dimension;
+use crate::units::{Dimension, show};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 use toml::Spanned;

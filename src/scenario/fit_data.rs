@@ -23,7 +23,7 @@
 //! increasing, at least 3 rows. Parsed by hand (like the PSD files) so that every error names
 //! the real line: `data.csv:7: E_loss: must be positive, got -3e5`.
 
-use crate::units::{self, Dimension};
+use crate::units::{self, Dimension, show};
 use std::f64::consts::TAU;
 use std::fmt;
 use std::path::{Path, PathBuf};
@@ -242,7 +242,7 @@ fn parse(text: &str, kind: FitKind) -> Result<FitData, Located> {
                 Ok(v) => {
                     return Err(at(
                         line,
-                        format!("{}: must be finite, got {v}", column.name),
+                        format!("{}: must be finite, got {}", column.name, show(v)),
                     ));
                 }
                 Err(_) => {

@@ -7,7 +7,7 @@
 //! even size) and at least [`MIN_SIZE`]; every cell a finite number. Parsed by hand so that
 //! every error names the real line of the file.
 
-use super::show;
+use crate::units::show;
 
 /// Smallest accepted grid side.
 pub(super) const MIN_SIZE: usize = 8;

@@ -14,8 +14,7 @@
 //! is constant ([`crate::material::TemperatureHistory::table`]). Parsed by hand (like the PSD
 //! files) so that every error names the real line.
 
-use super::show;
-use crate::units::{self, Dimension};
+use crate::units::{self, Dimension, show};
 
 /// A malformed history file: what is wrong and, when it is on one row, the 1-based line.
 #[derive(Debug, Clone, PartialEq)]
@@ -173,7 +172,10 @@ fn units_row(line: usize, row: &str) -> Result<Units, HistoryError> {
 fn number(cell: &str, column: &str, line: usize) -> Result<f64, HistoryError> {
     match cell.parse::<f64>() {
         Ok(v) if v.is_finite() => Ok(v),
-        Ok(v) => Err(at(line, format!("{column} must be finite, got {v}"))),
+        Ok(v) => Err(at(
+            line,
+            format!("{column} must be finite, got {}", show(v)),
+        )),
         Err(_) => Err(at(line, format!("{column} is not a number: {cell:?}"))),
     }
 }

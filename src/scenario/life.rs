@@ -7,14 +7,13 @@
 use super::error::{ScenarioError, Source};
 use super::history;
 use super::raw::{Quantity, RawEnvironment, RawFailure, RawScenarioAgeing, RawSeal, RawSimulation};
-use super::show;
 use super::validate::{Bound, Field, field};
 use crate::leak::Fidelity;
 use crate::material::shift::{Cycle, DAY, YEAR};
 use crate::material::{Ageing, Material, Shift, TemperatureHistory};
 use crate::seal::SealGeometry;
 use crate::simulate::{FailureCriteria, Loading, ThermalStrain, TimeGrid};
-use crate::units::Dimension;
+use crate::units::{Dimension, show};
 use std::path::PathBuf;
 use toml::Spanned;
 
@@ -136,6 +135,11 @@ impl Source<'_> {
     pub(super) fn seal(&self, table: &Spanned<RawSeal>) -> Result<SealSpec, ScenarioError> {
         let raw = table.get_ref();
         let kind = raw.kind.as_ref().map_or("flat", |k| k.get_ref().as_str());
+        // the kind with its article, for the messages (the other kinds are rejected below)
+        let a_seal = match kind {
+            "o-ring" => "an O-ring seal",
+            _ => "a flat seal",
+        };
         let loading = match &raw.loading {
             None => Loading::Displacement,
             Some(l) => match l.get_ref().as_str() {
@@ -159,7 +163,7 @@ impl Source<'_> {
                 table.span(),
                 f.key,
                 format!(
-                    "missing key `{}` in [seal] (a {kind} seal needs {keys})",
+                    "missing key `{}` in [seal] ({a_seal} needs {keys})",
                     f.key.trim_start_matches("seal.")
                 ),
             )),
@@ -170,7 +174,7 @@ impl Source<'_> {
                     return Err(self.error(
                         q.span(),
                         &format!("seal.{key}"),
-                        format!("not a key of a {kind} seal, which takes {takes}"),
+                        format!("not a key of {a_seal}, which takes {takes}"),
                     ));
                 }
             }
@@ -538,20 +542,22 @@ impl Source<'_> {
 
 /// A fidelity name of the ladder (DESIGN §4): `rule-of-thumb`, `critical-junction` (= `table`,
 /// the contact table), `exact` (critical junction by quadrature), `effective-medium`,
-/// `numerical`.
+/// `numerical` — the names and aliases of [`Fidelity::ALL`].
 pub fn parse_fidelity(name: &str) -> Result<Fidelity, String> {
-    match name {
-        "table" => Ok(Fidelity::Table),
-        other => Fidelity::ALL
+    Fidelity::from_name(name).ok_or_else(|| {
+        let levels: Vec<String> = Fidelity::ALL
             .into_iter()
-            .find(|f| f.name() == other)
-            .ok_or_else(|| {
-                format!(
-                    "must be one of \"rule-of-thumb\", \"critical-junction\" (= \"table\"), \
-                     \"exact\", \"effective-medium\", \"numerical\", got {other:?}"
-                )
-            }),
-    }
+            .map(|f| {
+                let aliases: Vec<String> = f.aliases().iter().map(|a| format!("{a:?}")).collect();
+                if aliases.is_empty() {
+                    format!("{:?}", f.name())
+                } else {
+                    format!("{:?} (= {})", f.name(), aliases.join(", "))
+                }
+            })
+            .collect();
+        format!("must be one of {}, got {name:?}", levels.join(", "))
+    })
 }
 
 #[cfg(test)]
@@ -702,7 +708,7 @@ squeeze = 0.2
             (
                 "squeeze = 0.2",
                 "squeeze = 0.2\nwidth = 1",
-                ":17: seal.width: not a key of a o-ring seal",
+                ":17: seal.width: not a key of an O-ring seal",
             ),
             (
                 "squeeze = 0.2",

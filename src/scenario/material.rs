@@ -21,15 +21,15 @@
 //! default `relaxed`); a scenario material with E∞ = 0 is therefore an error.
 
 use super::error::{ScenarioError, Source};
+use super::library;
 use super::raw::{
     Quantity, RawAgeing, RawMaterial, RawMaterialFile, RawPronyTerm, RawQuantity, RawShift,
 };
 use super::validate::{Bound, Field, field};
-use super::{library, show};
 use crate::contact::Elastic;
 use crate::material::{Ageing, Material, Prony, PronyTerm, Shift, Status};
 use crate::simulate::AsperityModulus;
-use crate::units::{self, Dimension};
+use crate::units::{self, Dimension, show};
 use std::ops::Range;
 use std::path::Path;
 use toml::Spanned;
@@ -472,13 +472,16 @@ impl Source<'_> {
     fn shift(&self, table: &Spanned<RawShift>) -> Result<Shift, ScenarioError> {
         let raw = table.get_ref();
         let kind = raw.kind.get_ref().as_str();
-        // (the keys the kind needs, the keys of the other kind)
-        let (needs, foreign): (&str, Vec<(&Option<Quantity>, &str)>) = match kind {
+        // (the kind with its article for the messages, the keys the kind needs, the keys of
+        // the other kind)
+        let (a_shift, needs, foreign): (&str, &str, Vec<(&Option<Quantity>, &str)>) = match kind {
             "wlf" => (
+                "a WLF shift",
                 "reference_temperature, c1 and c2",
                 vec![(&raw.activation_energy, "activation_energy")],
             ),
             "arrhenius" => (
+                "an Arrhenius shift",
                 "reference_temperature and activation_energy",
                 vec![(&raw.c1, "c1"), (&raw.c2, "c2")],
             ),
@@ -495,7 +498,7 @@ impl Source<'_> {
                 return Err(self.error(
                     q.span(),
                     &format!("material.shift.{key}"),
-                    format!("not a parameter of a {kind} shift, which takes {needs}"),
+                    format!("not a parameter of {a_shift}, which takes {needs}"),
                 ));
             }
         }
@@ -503,7 +506,7 @@ impl Source<'_> {
             self.error(
                 table.span(),
                 &format!("material.shift.{key}"),
-                format!("missing key `{key}` (a {kind} shift needs {needs})"),
+                format!("missing key `{key}` ({a_shift} needs {needs})"),
             )
         };
         let reference = raw
@@ -864,12 +867,12 @@ ageing = "test: ageing"
             (
                 "c2 = \"101.6 K\"",
                 "activation_energy = \"90 kJ/mol\"",
-                ":13: material.shift.activation_energy: not a parameter of a wlf shift",
+                ":13: material.shift.activation_energy: not a parameter of a WLF shift",
             ),
             (
                 "c2 = \"101.6 K\"\n",
                 "",
-                ":9: material.shift.c2: missing key `c2` (a wlf shift needs reference_temperature, c1 and c2)",
+                ":9: material.shift.c2: missing key `c2` (a WLF shift needs reference_temperature, c1 and c2)",
             ),
             (
                 "activation_energy = \"90 kJ/mol\"",
@@ -905,7 +908,7 @@ ageing = "test: ageing"
         );
         let e = error(&arrhenius);
         assert!(
-            e.contains(":13: material.shift.c1: not a parameter of a arrhenius shift"),
+            e.contains(":13: material.shift.c1: not a parameter of an Arrhenius shift"),
             "{e}"
         );
         let e = error(&arrhenius.replace("c1 = 1\n", ""));

@@ -128,15 +128,6 @@ fn read(path: &Path) -> Result<String, ScenarioError> {
     })
 }
 
-/// A number for a message: plain when moderate (`0.6`, `1200`), else scientific (`1e10`).
-fn show(v: f64) -> String {
-    if v == 0.0 || (1e-3..1e6).contains(&v.abs()) {
-        format!("{v}")
-    } else {
-        format!("{v:e}")
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

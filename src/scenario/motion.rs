@@ -7,10 +7,9 @@
 
 use super::error::{ScenarioError, Source};
 use super::raw::RawMotion;
-use super::show;
 use super::validate::{Bound, Field, field};
 use crate::dynamic::{Motion, MotionSpec};
-use crate::units::Dimension;
+use crate::units::{Dimension, show};
 use toml::Spanned;
 
 const SLIDING_SPEED: Field = field(

@@ -5,7 +5,7 @@
 //! rows; `q` strictly increasing and positive; `C` positive. Parsed by hand (the format is
 //! tiny) so that every error names the real line of the file.
 
-use super::show;
+use crate::units::show;
 
 /// A malformed PSD file: what is wrong and, when it is on one row, the 1-based line.
 #[derive(Debug, Clone, PartialEq)]
@@ -88,7 +88,7 @@ fn number(cell: &str, column: &str, line: usize) -> Result<f64, PsdError> {
         Ok(v) if v.is_finite() => Ok(v),
         Ok(v) => Err(PsdError::at(
             line,
-            format!("{column} must be finite, got {v}"),
+            format!("{column} must be finite, got {}", show(v)),
         )),
         Err(_) => Err(PsdError::at(
             line,

@@ -9,7 +9,7 @@ use super::error::{ScenarioError, Source};
 use super::raw::{
     Quantity, RawFluid, RawModel, RawNumerical, RawQuantity, RawScenario, RawSurface,
 };
-use super::{height_map, psd, show};
+use super::{height_map, psd};
 use crate::contact::ContactSettings;
 use crate::fluid::Fluid;
 use crate::leak::{FlatSeal, StaticProblem};
@@ -19,7 +19,7 @@ use crate::numerical::{HeightMap, psd as map_psd};
 use crate::seal::{Profile, SealGeometry};
 use crate::simulate::LifeProblem;
 use crate::surface::Spectrum;
-use crate::units::{self, Dimension};
+use crate::units::{self, Dimension, show};
 use toml::Spanned;
 
 /// Gauss–Legendre points across an O-ring's Hertz profile (strips in series) in a life run.
