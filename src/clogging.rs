@@ -2,7 +2,7 @@
 //!
 //! Particles of diameter d larger than the height u_c of the critical constriction cannot
 //! pass it and block the channel that carries them ("sieving", complete blocking, Hermia
-//! n = 2). With the particle number concentration n_p [1/m³], the cumulative size
+//! n = 2). With the particle number concentration n_p \[1/m³\], the cumulative size
 //! distribution F(d) and N_ch = L_y/λ_c parallel critical channels, the open fraction f of
 //! the channels obeys
 //!
@@ -10,7 +10,7 @@
 //! df/dt = −n_p [1 − F(u_c(t))] Q̇(t) / N_ch            (1)
 //! ```
 //!
-//! (every captured particle blocks one channel; Q̇ n_p [1 − F] is the rate at which captured
+//! (every captured particle blocks one channel; Q̇ n_p \[1 − F\] is the rate at which captured
 //! particles arrive). This module holds the validated inputs and the size distributions; the
 //! time integration lives in [`crate::simulate`].
 
@@ -28,7 +28,7 @@ pub const DEFAULT_TOLERANCE: f64 = 1e-8;
 /// features, so it brings no second nalgebra).
 #[derive(Debug, Clone, PartialEq)]
 pub enum SizeDistribution {
-    /// All particles of one diameter [m]: F(u) = 1 for u ≥ d, else 0.
+    /// All particles of one diameter \[m\]: F(u) = 1 for u ≥ d, else 0.
     Monodisperse { diameter: f64 },
     /// Log-normal by number: ln d normal with mean ln(median) and standard deviation
     /// ln(geometric_std) (geometric_std > 1).
@@ -36,12 +36,12 @@ pub enum SizeDistribution {
     /// Weibull: F(d) = 1 − exp(−(d/scale)^shape).
     Weibull { scale: f64, shape: f64 },
     /// A tabulated CDF, linear between rows, from (0, 0) to the first row and 1 beyond the
-    /// last: diameters [m] strictly increasing, F non-decreasing in [0, 1], ending at 1.
+    /// last: diameters \[m\] strictly increasing, F non-decreasing in \[0, 1\], ending at 1.
     Table { diameter: Vec<f64>, cdf: Vec<f64> },
 }
 
 impl SizeDistribution {
-    /// F(u): the fraction of particles (by number) with diameter ≤ u [m].
+    /// F(u): the fraction of particles (by number) with diameter ≤ u \[m\].
     pub fn cdf(&self, u: f64) -> f64 {
         if u.is_nan() || u <= 0.0 {
             return 0.0;
@@ -78,7 +78,7 @@ impl SizeDistribution {
         }
     }
 
-    /// E[d³] [m³]: monodisperse d³; log-normal median³ exp(4.5 ln²σg); Weibull
+    /// E\[d³\] \[m³\]: monodisperse d³; log-normal median³ exp(4.5 ln²σg); Weibull
     /// λ³ Γ(1 + 3/k); a table exactly for its piecewise-linear CDF (uniform density in each
     /// interval: ΔF (d₁⁴ − d₀⁴)/(4 (d₁ − d₀))).
     pub fn mean_cube(&self) -> f64 {
@@ -103,7 +103,7 @@ impl SizeDistribution {
         }
     }
 
-    /// Mean particle volume E[π d³/6] [m³].
+    /// Mean particle volume E\[π d³/6\] \[m³\].
     pub fn mean_volume(&self) -> f64 {
         PI / 6.0 * self.mean_cube()
     }
@@ -112,7 +112,7 @@ impl SizeDistribution {
 /// The `[contamination]` block, validated (SI units).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Contamination {
-    /// n_p [1/m³] (from `number_concentration`, or `volume_fraction / E[π d³/6]`).
+    /// n_p \[1/m³\] (from `number_concentration`, or `volume_fraction / E[π d³/6]`).
     pub number_concentration: f64,
     pub size_distribution: SizeDistribution,
     /// Blocked channels count as extra contact for the percolation (the next, narrower
@@ -124,7 +124,7 @@ pub struct Contamination {
 
 impl Contamination {
     /// Fraction of the arriving particles that are captured at a constriction of height
-    /// `u_c` [m] (None: sealed, nothing arrives): `1 − F(u_c)`.
+    /// `u_c` \[m\] (None: sealed, nothing arrives): `1 − F(u_c)`.
     pub fn captured_fraction(&self, u_c: f64) -> f64 {
         (1.0 - self.size_distribution.cdf(u_c)).clamp(0.0, 1.0)
     }

@@ -17,7 +17,7 @@
 //! `P′_a = P_a + B_a v0 − C_a Q̇` (eq. 9), and from the junction to the outlet
 //! `P′_b = P_b − B_b v0 ∓ C_b Q̇` (eq. 12), where
 //!
-//! * `B_a = 6 L_a η ∫_{u_c}^∞ P̃(u)/u² du` (**eq. 10**) [Pa·s/m], `B_b` the same with `L_b`;
+//! * `B_a = 6 L_a η ∫_{u_c}^∞ P̃(u)/u² du` (**eq. 10**) \[Pa·s/m\], `B_b` the same with `L_b`;
 //! * `L_a` is "the length of the percolation path projected on the x-axis" from the
 //!   high-pressure edge to the critical junction, `L_b` from the junction to the low-pressure
 //!   edge, so `L_a + L_b = L = L_x`, the seal width along the flow. The paper does not say where
@@ -38,9 +38,9 @@
 //! seal). The seal has `L_y/L_x` such cells side by side (eq. 3, and eq. 15's "extra factor
 //! L_y/L_x"), so
 //!
-//! `Q̇ = (L_y/L_x) M [ΔP + (B_a + B_b) v0]`  (**eq. 13**, with eq. 3's factor) [m³/s].
+//! `Q̇ = (L_y/L_x) M [ΔP + (B_a + B_b) v0]`  (**eq. 13**, with eq. 3's factor) \[m³/s\].
 //!
-//! At `v0 = 0` this is exactly sealsim's static leak [`crate::leak::leak_rate`],
+//! At `v0 = 0` this is exactly sealsim's static leak [`crate::fluid::Fluid::leak_rate`],
 //! `(L_y/L_x) α u_c³ ΔP/(12η)` (eq. 3). DESIGN §3.4 writes `Q̇ = M[ΔP + (B_a+B_b)v0]` without
 //! the cell count and a single `B = 6 L η ∫…`; that B is `B_a + B_b` with `L = L_x`.
 //!
@@ -112,11 +112,11 @@ pub struct ReciprocatingSeal {
     /// Nominal pressure P0 \[Pa\], width `L_x = L` along the flow \[m\] and length `L_y` across it
     /// \[m\] (e.g. the rod circumference).
     pub seal: FlatSeal,
-    /// Dynamic viscosity η [Pa·s].
+    /// Dynamic viscosity η \[Pa·s\].
     pub viscosity: f64,
     /// Shape factor α of the critical constriction (PY08 eq. 2), ≈ 1.
     pub shape_factor: f64,
-    /// `L_a/L_x` ∈ [0, 1]: the projected distance from the high-pressure edge to the critical
+    /// `L_a/L_x` ∈ \[0, 1\]: the projected distance from the high-pressure edge to the critical
     /// junction over the width (clamped). ½ for a symmetric seal. Changes only the split of
     /// `B_a + B_b`, not the leak rate (module docs).
     pub junction_position: f64,
@@ -183,21 +183,21 @@ pub struct DragCoefficients {
     /// The seal's extent along (L_x) and across (L_y) the flow; `L_y/L_x` square cells
     /// (constrictions) side by side (PY08 eq. 3).
     pub geometry: FlowGeometry,
-    /// Viscosity η of the fluid [Pa·s].
+    /// Viscosity η of the fluid \[Pa·s\].
     pub viscosity: f64,
-    /// `M = α u_c³/(12η)` [m³/(Pa·s)]: conductance of one constriction (PY08 eq. 2).
+    /// `M = α u_c³/(12η)` \[m³/(Pa·s)\]: conductance of one constriction (PY08 eq. 2).
     pub m: f64,
-    /// `B_a = 6 L_a η J` [Pa·s/m] (PY08 eq. 10), `J = ∫_{u_c}^∞ P̃(u)/u² du`.
+    /// `B_a = 6 L_a η J` \[Pa·s/m\] (PY08 eq. 10), `J = ∫_{u_c}^∞ P̃(u)/u² du`.
     pub b_a: f64,
-    /// `B_b = 6 L_b η J` [Pa·s/m] (PY08 eq. 12's counterpart of eq. 10).
+    /// `B_b = 6 L_b η J` \[Pa·s/m\] (PY08 eq. 12's counterpart of eq. 10).
     pub b_b: f64,
-    /// `I = ∫_{u_c}^∞ u_c² P̃(u)/u² du` ∈ [0, 1] (dimensionless; PY08 first eq. 17).
+    /// `I = ∫_{u_c}^∞ u_c² P̃(u)/u² du` ∈ \[0, 1\] (dimensionless; PY08 first eq. 17).
     pub integral_i: f64,
     /// `β = α I/2` (PY08 first eq. 17; paper: ≈ 0.1).
     pub beta: f64,
     /// Wiper film `d = β u_c` \[m\] (PY08 eq. 16): volume dragged out per swept area.
     pub film_thickness: f64,
-    /// `v_max = E u_c³/(6 L η λ_c I) = E u_c/(λ_c (B_a + B_b))` [m/s] (PY08 second eq. 17,
+    /// `v_max = E u_c³/(6 L η λ_c I) = E u_c/(λ_c (B_a + B_b))` \[m/s\] (PY08 second eq. 17,
     /// un-approximated; E Young's modulus, L = L_x): the theory needs `|v0| ≪ v_max`.
     /// +∞ when sealed or when P(u) has no mass above u_c.
     pub speed_bound: f64,
@@ -290,17 +290,17 @@ impl DragCoefficients {
         }
     }
 
-    /// `B_a + B_b = 6 L_x η J` [Pa·s/m] (DESIGN §3.4's B).
+    /// `B_a + B_b = 6 L_x η J` \[Pa·s/m\] (DESIGN §3.4's B).
     pub fn b(&self) -> f64 {
         self.b_a + self.b_b
     }
 
-    /// `(L_y/L_x) M` [m³/(Pa·s)]: the static conductance of the whole seal.
+    /// `(L_y/L_x) M` \[m³/(Pa·s)\]: the static conductance of the whole seal.
     pub fn conductance(&self) -> f64 {
         self.geometry.cells() * self.m
     }
 
-    /// The pressure-driven part `(L_y/L_x) M ΔP` [m³/s] at `pressure_difference` ΔP \[Pa\]:
+    /// The pressure-driven part `(L_y/L_x) M ΔP` \[m³/s\] at `pressure_difference` ΔP \[Pa\]:
     /// the static leak law ([`Fluid::leak_rate`]) through the junction's conductance M.
     pub fn static_leak_rate(&self, pressure_difference: f64) -> f64 {
         let fluid = Fluid {
@@ -316,15 +316,15 @@ impl DragCoefficients {
     }
 }
 
-/// `Q̇ = (L_y/L_x) M [ΔP + (B_a + B_b) v0]` [m³/s] (PY08 eq. 13 with eq. 3's cell count, the
+/// `Q̇ = (L_y/L_x) M [ΔP + (B_a + B_b) v0]` \[m³/s\] (PY08 eq. 13 with eq. 3's cell count, the
 /// `M(C_a − C_b)` term dropped as in the paper). `pressure_difference = P_a − P_b` \[Pa\];
-/// `speed = v0` [m/s], positive when the countersurface moves from the high-pressure side
+/// `speed = v0` \[m/s\], positive when the countersurface moves from the high-pressure side
 /// towards the low-pressure side (out-stroke). Positive Q̇ flows from a to b.
 pub fn leak_rate(coeffs: &DragCoefficients, pressure_difference: f64, speed: f64) -> f64 {
     coeffs.static_leak_rate(pressure_difference) + drag_leak_rate(coeffs, speed)
 }
 
-/// The drag term alone, `(L_y/L_x) M (B_a + B_b) v0 = L_y d v0` [m³/s] (PY08 eqs. 14–15):
+/// The drag term alone, `(L_y/L_x) M (B_a + B_b) v0 = L_y d v0` \[m³/s\] (PY08 eqs. 14–15):
 /// the leak of a wiper (ΔP = 0). Sign convention as [`leak_rate`].
 pub fn drag_leak_rate(coeffs: &DragCoefficients, speed: f64) -> f64 {
     let g = coeffs.conductance();
@@ -360,7 +360,7 @@ pub struct StrokeCycle {
 }
 
 /// One stroke cycle of length `stroke` S \[m\] at out-stroke speed `out_speed` and in-stroke
-/// speed `in_speed` (magnitudes, > 0) [m/s] against `pressure_difference` ΔP \[Pa\].
+/// speed `in_speed` (magnitudes, > 0) \[m/s\] against `pressure_difference` ΔP \[Pa\].
 ///
 /// In the linear theory of PY08 §8 the drag volumes of the two strokes are equal and opposite
 /// (`±L_y d S`, independent of speed), so `net_volume = static_volume` exactly: the
@@ -406,7 +406,7 @@ pub fn probability_above(distribution: &SeparationDistribution, u_c: f64) -> f64
         .sum()
 }
 
-/// `I = ∫_{u_c}^∞ u_c² P̃(u)/u² du`, `P̃ = P/∫_{u_c}^∞ P` (PY08 eqs. 10 and 17), ∈ [0, 1].
+/// `I = ∫_{u_c}^∞ u_c² P̃(u)/u² du`, `P̃ = P/∫_{u_c}^∞ P` (PY08 eqs. 10 and 17), ∈ \[0, 1\].
 ///
 /// The numerator is integrated in `x = ln(u/u_c)` (integrand `u_c ρ(u) e^{−x}`, ρ the
 /// continuous density), from 0 to the largest `center + 8·width` of the components that reach
@@ -501,7 +501,7 @@ pub fn separation_integral(
 }
 
 /// The motion of the countersurface in a scenario (`[motion]`): constant sliding or a stroke
-/// cycle. Speeds are magnitudes [m/s], lengths in m.
+/// cycle. Speeds are magnitudes \[m/s\], lengths in m.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Motion {
     /// Constant sliding at `speed` ≥ 0 in the out-stroke direction (`v0 = +speed`: the
@@ -529,12 +529,12 @@ pub struct MotionSpec {
 /// `sealsim run`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct MotionPoint {
-    /// The drag term `L_y d v` [m³/s] at [`MotionSpec::drag_speed`] (the sliding speed, or the
+    /// The drag term `L_y d v` \[m³/s\] at [`MotionSpec::drag_speed`] (the sliding speed, or the
     /// out-stroke speed of a cycle). 0 when sealed.
     pub drag_leak_rate: f64,
     /// The film `d = β u_c` \[m\] the countersurface carries out (PY08 eq. 16). 0 when sealed.
     pub film_thickness: f64,
-    /// The speed bound of PY08's second eq. 17 [m/s] (+∞ when sealed).
+    /// The speed bound of PY08's second eq. 17 \[m/s\] (+∞ when sealed).
     pub speed_bound: f64,
     /// [`MotionSpec::fastest_speed`] exceeds [`Self::speed_bound`]: the drag pressure would open
     /// the critical constriction (hydrodynamic lift-off), which is not modelled.
@@ -552,7 +552,7 @@ impl MotionSpec {
         }
     }
 
-    /// The speed the drag term is evaluated at [m/s]: the sliding speed, or a cycle's
+    /// The speed the drag term is evaluated at \[m/s\]: the sliding speed, or a cycle's
     /// out-stroke speed (the direction that carries fluid out).
     pub fn drag_speed(&self) -> f64 {
         match self.motion {
@@ -561,7 +561,7 @@ impl MotionSpec {
         }
     }
 
-    /// The largest speed of the motion [m/s], the one checked against the speed bound.
+    /// The largest speed of the motion \[m/s\], the one checked against the speed bound.
     pub fn fastest_speed(&self) -> f64 {
         match self.motion {
             Motion::Steady { speed } => speed,
@@ -618,7 +618,7 @@ impl MotionSpec {
     }
 
     /// The motion quantities of a state with drag coefficients `coeffs` and static
-    /// (pressure-driven) leak rate `static_leak_rate` [m³/s]. The stroke volumes take the
+    /// (pressure-driven) leak rate `static_leak_rate` \[m³/s\]. The stroke volumes take the
     /// given static leak rate (the level's, or an O-ring's strips in series) and the drag of
     /// `coeffs` ([`stroke_cycle_from`]).
     pub fn evaluate(&self, coeffs: &DragCoefficients, static_leak_rate: f64) -> MotionPoint {
@@ -701,8 +701,8 @@ pub fn stroke_cycle_from(
     ))
 }
 
-/// The cycle of a static leak rate [m³/s] and a drag volume per stroke [m³], with the
-/// durations of the two strokes [s].
+/// The cycle of a static leak rate \[m³/s\] and a drag volume per stroke \[m³\], with the
+/// durations of the two strokes \[s\].
 fn assemble_cycle(
     static_leak_rate: f64,
     drag_volume: f64,

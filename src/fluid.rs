@@ -11,9 +11,9 @@
 /// A Newtonian, incompressible fluid and the pressure it pushes across the seal.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Fluid {
-    /// Dynamic viscosity η [Pa·s].
+    /// Dynamic viscosity η \[Pa·s\].
     pub viscosity: f64,
-    /// ΔP = P_a − P_b across the seal [Pa] (≥ 0).
+    /// ΔP = P_a − P_b across the seal \[Pa\] (≥ 0).
     pub pressure_difference: f64,
 }
 
@@ -21,10 +21,10 @@ pub struct Fluid {
 /// lengths cannot be swapped silently.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FlowGeometry {
-    /// L_x: the extent along the flow, from the pressurised side to the outlet [m] (the contact
+    /// L_x: the extent along the flow, from the pressurised side to the outlet \[m\] (the contact
     /// width).
     pub along_flow: f64,
-    /// L_y: the extent across the flow [m] (the sealing length; an O-ring's mean circumference
+    /// L_y: the extent across the flow \[m\] (the sealing length; an O-ring's mean circumference
     /// π D).
     pub across_flow: f64,
 }
@@ -40,7 +40,7 @@ impl FlowGeometry {
 /// How the interface conducts between the two ends of the seal.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Conduction {
-    /// One conductance per unit width σ [m³/(Pa·s)] over the whole extent along the flow
+    /// One conductance per unit width σ \[m³/(Pa·s)\] over the whole extent along the flow
     /// (a flat seal; `σ = α u_c³/(12η)` for the critical junction, σ_eff for an effective
     /// medium or the numerical reference).
     Uniform { conductance: f64 },
@@ -50,7 +50,7 @@ pub enum Conduction {
 }
 
 impl Fluid {
-    /// The leak rate Q̇ [m³/s] through `conduction` over `geometry` (docs/model.md §3.1–§3.2):
+    /// The leak rate Q̇ \[m³/s\] through `conduction` over `geometry` (docs/model.md §3.1–§3.2):
     /// * uniform: `Q̇ = (L_y/L_x) σ ΔP` (PY08 eq. 3 with the conductance of eq. 2);
     /// * series: `Q̇ = L_y ΔP / ∫ dx/σ(x)` (the flux per unit width is the same through every
     ///   strip; with σ uniform it is the uniform law).
@@ -69,9 +69,9 @@ impl Fluid {
     }
 }
 
-/// Conductance per unit width of one critical constriction of height `u_c` [m] (PY08 eqs.
-/// 1–2; docs/model.md §3.1): `σ = α u_c³/(12 η)` [m³/(Pa·s)], α the shape factor, η the
-/// viscosity [Pa·s]. The flow through a thin gap between parallel walls (plane Poiseuille).
+/// Conductance per unit width of one critical constriction of height `u_c` \[m\] (PY08 eqs.
+/// 1–2; docs/model.md §3.1): `σ = α u_c³/(12 η)` \[m³/(Pa·s)\], α the shape factor, η the
+/// viscosity \[Pa·s\]. The flow through a thin gap between parallel walls (plane Poiseuille).
 pub fn junction_conductance(u_c: f64, shape_factor: f64, viscosity: f64) -> f64 {
     shape_factor * u_c.powi(3) / (12.0 * viscosity)
 }

@@ -14,11 +14,11 @@ use crate::validity::{self, At, ContactState, Findings};
 /// A flat seal: uniform nominal pressure over a rectangle `width × length` (PY08 Fig. 2).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FlatSeal {
-    /// Nominal squeezing pressure P0 [Pa].
+    /// Nominal squeezing pressure P0 \[Pa\].
     pub nominal_pressure: f64,
-    /// L_x, the width along the flow [m].
+    /// L_x, the width along the flow \[m\].
     pub width: f64,
-    /// L_y, the length across the flow [m].
+    /// L_y, the length across the flow \[m\].
     pub length: f64,
 }
 
@@ -122,10 +122,10 @@ pub struct StaticProblem {
 /// `junction` is the conducting channel of the level ([`ContactPath::critical_junction`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LeakPoint {
-    /// Nominal squeezing pressure P0 [Pa].
+    /// Nominal squeezing pressure P0 \[Pa\].
     pub nominal_pressure: f64,
     pub junction: Junction,
-    /// Volume leak rate Q̇ [m³/s]; exactly 0 when sealed.
+    /// Volume leak rate Q̇ \[m³/s\]; exactly 0 when sealed.
     pub leak_rate: f64,
 }
 
@@ -186,7 +186,7 @@ impl ContactPath {
     ///
     /// The numerical level cannot fail on validated input except by a solver not converging
     /// within its (generous) iteration limit; should a node fail, it is left out of the table
-    /// and counted in [`Self::failed_nodes`] (a warning for the caller to print), never
+    /// and reported by [`Self::assess`] (a warning for the caller to print), never
     /// silently.
     pub fn build(
         spectrum: &Spectrum,
@@ -341,7 +341,7 @@ impl ContactPath {
         }
     }
 
-    /// Conductance per unit width of the interface at `s` [m³/(Pa·s)]: `α u_c³/(12η)` for the
+    /// Conductance per unit width of the interface at `s` \[m³/(Pa·s)\]: `α u_c³/(12η)` for the
     /// critical-junction levels (PY08 eq. 1), `σ_eff = u_eff³/(12η)` for the effective medium
     /// (α does not enter); 0 when sealed.
     pub fn conductance(&self, s: f64, shape_factor: f64, viscosity: f64) -> f64 {
@@ -387,7 +387,7 @@ impl StaticSolver {
         &self.problem
     }
 
-    /// The junction and leak rate at nominal pressure `p0` [Pa] (> 0):
+    /// The junction and leak rate at nominal pressure `p0` \[Pa\] (> 0):
     /// `Q̇ = (L_y/L_x) σ ΔP` ([`Fluid::leak_rate`]) with σ the path's [`ContactPath::conductance`].
     pub fn evaluate(&self, p0: f64) -> LeakPoint {
         let pb = &self.problem;

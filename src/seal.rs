@@ -5,8 +5,8 @@
 //!   plates — Lindley's empirical relations for a laterally unrestrained O-ring
 //!   (P.B. Lindley, "Compression characteristics of laterally-unrestrained rubber O-rings",
 //!   J. Inst. Rubber Ind. 1 (1967) 209), as written in DESIGN §6:
-//!   force per unit length `f = E d (1.25 ε^{3/2} + 50 ε⁶)` [N/m], contact width
-//!   `b = d √(6ε/π)` [m], and a Hertz-shaped profile `p(x) = p_max √(1 − (2x/b)²)`,
+//!   force per unit length `f = E d (1.25 ε^{3/2} + 50 ε⁶)` \[N/m\], contact width
+//!   `b = d √(6ε/π)` \[m\], and a Hertz-shaped profile `p(x) = p_max √(1 − (2x/b)²)`,
 //!   `p_max = 4 f/(π b)`. The constants could not be checked word for word against the
 //!   original here (DESIGN marks them "recalled"); what is tested is their own consistency
 //!   (∫p dx = f) and the stated range: the relations are meant for squeeze up to ≈ 30 %, and
@@ -29,7 +29,7 @@ pub fn squeeze_function(eps: f64) -> f64 {
     1.25 * e.powf(1.5) + 50.0 * e.powi(6)
 }
 
-/// O-ring contact width `b = d √(6ε/π)` [m].
+/// O-ring contact width `b = d √(6ε/π)` \[m\].
 pub fn oring_contact_width(cross_section: f64, eps: f64) -> f64 {
     cross_section * (6.0 * eps.max(0.0) / PI).sqrt()
 }
@@ -53,7 +53,7 @@ pub enum SealGeometry {
 }
 
 impl SealGeometry {
-    /// L_y, the sealing length across the flow [m] (O-ring: π D).
+    /// L_y, the sealing length across the flow \[m\] (O-ring: π D).
     pub fn sealing_length(&self) -> f64 {
         match *self {
             SealGeometry::Flat { length, .. } => length,
@@ -71,14 +71,14 @@ impl SealGeometry {
 /// The nominal pressure across the sealing width at one instant.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Profile {
-    /// Uniform `pressure` [Pa] over `width` [m].
+    /// Uniform `pressure` \[Pa\] over `width` \[m\].
     Uniform { pressure: f64, width: f64 },
-    /// `p(x) = peak √(1 − (2x/b)²)` over `width` b [m].
+    /// `p(x) = peak √(1 − (2x/b)²)` over `width` b \[m\].
     Hertz { peak: f64, width: f64 },
 }
 
 impl Profile {
-    /// Sealing force per unit length `∫ p dx` [N/m].
+    /// Sealing force per unit length `∫ p dx` \[N/m\].
     pub fn force_per_length(&self) -> f64 {
         match *self {
             Profile::Uniform { pressure, width } => pressure * width,
@@ -86,7 +86,7 @@ impl Profile {
         }
     }
 
-    /// Peak nominal pressure [Pa].
+    /// Peak nominal pressure \[Pa\].
     pub fn peak(&self) -> f64 {
         match *self {
             Profile::Uniform { pressure, .. } => pressure,
@@ -94,12 +94,12 @@ impl Profile {
         }
     }
 
-    /// Mean nominal pressure over the width [Pa].
+    /// Mean nominal pressure over the width \[Pa\].
     pub fn mean(&self) -> f64 {
         self.force_per_length() / self.width()
     }
 
-    /// Contact width L_x [m].
+    /// Contact width L_x \[m\].
     pub fn width(&self) -> f64 {
         match *self {
             Profile::Uniform { width, .. } | Profile::Hertz { width, .. } => width,
@@ -137,7 +137,7 @@ impl Profile {
     }
 
     /// Resistance per unit width of the profile's strips in series (DESIGN §3.2),
-    /// `R = ∫ dx / σ(p(x))` [Pa·s/m²], with the local conductance per unit width `σ(p)`
+    /// `R = ∫ dx / σ(p(x))` \[Pa·s/m²\], with the local conductance per unit width `σ(p)`
     /// [m³/(Pa·s)] supplied by the caller (`σ = α u_c(p)³/(12η)`; `0` where sealed); the leak
     /// rate is then `Q̇ = L_y ΔP / R` ([`crate::fluid::Fluid::leak_rate`] with
     /// [`crate::fluid::Conduction::Series`]).

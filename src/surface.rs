@@ -7,7 +7,7 @@
 //! The moments `∫ q^n C(q) dq` that the contact theory needs are then closed forms, so no
 //! quadrature error enters G(ζ), h_rms(ζ) or the critical magnification ζc.
 //!
-//! Conventions (PY08 §2): `C(q) = (2π)^-2 ∫ d²x <h(x)h(0)> e^{-iq·x}` [m⁴];
+//! Conventions (PY08 §2): `C(q) = (2π)^-2 ∫ d²x <h(x)h(0)> e^{-iq·x}` \[m⁴\];
 //! `h_rms² = 2π ∫ q C(q) dq`. All quantities in SI units.
 
 use crate::units::show;
@@ -76,8 +76,8 @@ pub struct Spectrum {
 }
 
 impl Spectrum {
-    /// Self-affine fractal with rms roughness `h_rms` [m], Hurst exponent `hurst` ∈ (0, 1),
-    /// cut-offs `q0 < q1` [1/m] and an optional roll-off `q_r` ∈ (q0, q1) below which C is
+    /// Self-affine fractal with rms roughness `h_rms` \[m\], Hurst exponent `hurst` ∈ (0, 1),
+    /// cut-offs `q0 < q1` \[1/m\] and an optional roll-off `q_r` ∈ (q0, q1) below which C is
     /// flat at `C(q_r)` (DESIGN §2).
     ///
     /// Normalised exactly so that `2π ∫_{q0}^{q1} q C dq = h_rms²`. Without roll-off this is
@@ -147,7 +147,7 @@ impl Spectrum {
         Ok(s)
     }
 
-    /// Tabulated spectrum: strictly increasing `q` [1/m] with `C > 0` [m⁴], interpolated
+    /// Tabulated spectrum: strictly increasing `q` \[1/m\] with `C > 0` \[m⁴\], interpolated
     /// linearly in `ln C` against `ln q` (DESIGN §2). At least two points.
     pub fn tabulated(q: &[f64], c: &[f64]) -> Result<Self, SpectrumError> {
         if q.len() != c.len() {
@@ -267,12 +267,12 @@ impl Spectrum {
         })
     }
 
-    /// Lower cut-off q0 [1/m]; magnification ζ = q/q0.
+    /// Lower cut-off q0 \[1/m\]; magnification ζ = q/q0.
     pub fn q0(&self) -> f64 {
         self.ln_q0().exp()
     }
 
-    /// Upper cut-off q1 [1/m].
+    /// Upper cut-off q1 \[1/m\].
     pub fn q1(&self) -> f64 {
         self.ln_q1().exp()
     }
@@ -302,7 +302,7 @@ impl Spectrum {
         self.segments[self.segment_index(ln_q)].ln_c_at(ln_q)
     }
 
-    /// C(q) [m⁴]; zero outside `[q0, q1]`.
+    /// C(q) \[m⁴\]; zero outside `[q0, q1]`.
     pub fn c(&self, q: f64) -> f64 {
         let l = q.ln();
         if !(l >= self.ln_q0() && l <= self.ln_q1()) {
@@ -332,7 +332,7 @@ impl Spectrum {
         }
     }
 
-    /// `∫_{q0}^{q} q'³ C dq'` [m⁰… m⁴·m⁻⁴·…]: the moment behind G(ζ) (PY08 §2), exact.
+    /// `∫_{q0}^{q} q'³ C dq'` \[m⁰… m⁴·m⁻⁴·…\]: the moment behind G(ζ) (PY08 §2), exact.
     pub fn m3_to(&self, q: f64) -> f64 {
         self.cumulative(q.ln(), 3.0, &self.cum_m3)
     }
@@ -364,7 +364,7 @@ impl Spectrum {
         self.cum_m1[self.cum_m1.len() - 1]
     }
 
-    /// rms roughness `h_rms = (2π ∫ q C dq)^{1/2}` [m].
+    /// rms roughness `h_rms = (2π ∫ q C dq)^{1/2}` \[m\].
     pub fn rms_roughness(&self) -> f64 {
         (2.0 * std::f64::consts::PI * self.total_m1()).sqrt()
     }

@@ -21,7 +21,7 @@ pub const MAX_PRESSURE_RATIO: f64 = 0.1;
 /// (docs/model.md §9.2).
 pub const MAX_ASPECT_RATIO: f64 = 0.1;
 
-/// Constriction height below which continuum flow is not a valid picture [m] (1 nm;
+/// Constriction height below which continuum flow is not a valid picture \[m\] (1 nm;
 /// docs/model.md §9.3).
 pub const MIN_CONTINUUM_GAP: f64 = 1e-9;
 
@@ -199,9 +199,9 @@ pub enum At {
     Setup,
     /// The installation state of a seal evaluated statically (`sealsim leak`).
     Installation,
-    /// A static leak point at nominal pressure P0 [Pa].
+    /// A static leak point at nominal pressure P0 \[Pa\].
     Pressure(f64),
-    /// A life step at time t [s] since installation.
+    /// A life step at time t \[s\] since installation.
     Time(f64),
 }
 
@@ -394,9 +394,9 @@ impl Findings {
 /// spectrum's q1/q0.
 #[derive(Debug, Clone, Copy)]
 pub struct ContactState<'a> {
-    /// Nominal contact pressure [Pa].
+    /// Nominal contact pressure \[Pa\].
     pub nominal_pressure: f64,
-    /// ΔP across the seal [Pa].
+    /// ΔP across the seal \[Pa\].
     pub pressure_difference: f64,
     pub junction: &'a Junction,
     /// q1/q0 of the spectrum.
@@ -459,8 +459,8 @@ pub fn surface(spectrum: &Spectrum, out: &mut Findings) {
     );
 }
 
-/// Temperature `t` [K] against the glass transition `glass_transition` [K] and the WLF frozen
-/// limit `frozen_below` [K] (docs/model.md §9.7).
+/// Temperature `t` \[K\] against the glass transition `glass_transition` \[K\] and the WLF frozen
+/// limit `frozen_below` \[K\] (docs/model.md §9.7).
 pub fn temperature(
     t: f64,
     glass_transition: Option<f64>,
@@ -483,7 +483,7 @@ pub fn squeeze(eps: f64, at: At, out: &mut Findings) {
     out.check(Limit::Squeeze, !(lo..=hi).contains(&eps), eps, bound, at);
 }
 
-/// A sliding `speed` [m/s] against the PY08 §8 bound `bound` [m/s] (docs/model.md §9.9).
+/// A sliding `speed` \[m/s\] against the PY08 §8 bound `bound` \[m/s\] (docs/model.md §9.9).
 pub fn speed(speed: f64, bound: f64, at: At, out: &mut Findings) {
     out.check(Limit::SpeedBound, speed > bound, speed, bound, at);
 }
@@ -597,10 +597,7 @@ mod tests {
         }
         let text = out.iter().map(ToString::to_string).collect::<String>();
         assert!(text.contains("ΔP/P0 = 0.16 is above 0.1"), "{text}");
-        assert!(
-            text.contains("worst at t = 3.156e8 s (10 years)"),
-            "{text}"
-        );
+        assert!(text.contains("worst at t = 3.156e8 s (10 years)"), "{text}");
         assert!(text.contains("first at t = 0 s, 2 evaluations"), "{text}");
         assert!(text.contains("docs/model.md §9.1"), "{text}");
     }

@@ -48,7 +48,7 @@ pub struct FitPronyArgs {
     #[arg(short, long, value_name = "FILE")]
     pub output: Option<PathBuf>,
 
-    /// Material name [default: the data file's name without extension].
+    /// Material name \[default: the data file's name without extension\].
     #[arg(long, value_name = "NAME", value_parser = NonEmptyStringValueParser::new())]
     pub name: Option<String>,
 }

@@ -2,7 +2,7 @@
 //!
 //! Each subcommand lives in its own module with an `Args` struct and a
 //! `run(args) -> Result<(), CliError>`; adding one means a variant in [`Command`] and an arm in
-//! [`run`]. Exit status: 0 success, 2 bad input (usage, flag values, scenario files), 1 failure
+//! [`run()`]. Exit status: 0 success, 2 bad input (usage, flag values, scenario files), 1 failure
 //! to write the output or an internal error.
 
 pub mod compare;

@@ -1,6 +1,6 @@
 //! `sealsim tradeoff`: the scenario's static state and life run at every fidelity level and at
 //! a ladder of numerical settings, with wall time and error against the most accurate setting
-//! ([`crate::tradeoff`]).
+//! ([`crate::workflow::tradeoff`]).
 
 use super::{CliError, print_findings, progress_bar, write_output};
 use crate::report::tradeoff::{tradeoff_chart, tradeoff_markdown, tradeoff_table};
@@ -33,11 +33,11 @@ pub struct TradeoffArgs {
     #[arg(long, value_name = "FILE.svg")]
     pub plot: Option<PathBuf>,
 
-    /// Band q1/q0 resolved by the numerical level [default: the scenario's numerical.band, 32].
-    #[arg(long, value_parser = parse_band)]
+    /// Band q1/q0 resolved by the numerical level \[default: the scenario's numerical.band, 32\].
+    #[arg(long, allow_hyphen_values = true, value_parser = parse_band)]
     pub band: Option<f64>,
 
-    /// Seed of the synthetic surfaces [default: the scenario's numerical.seed, 1].
+    /// Seed of the synthetic surfaces \[default: the scenario's numerical.seed, 1\].
     #[arg(long)]
     pub seed: Option<u64>,
 

@@ -4,7 +4,7 @@
 //! **Separation distribution** [recalled: Lorenz & Persson, Eur. Phys. J. E 31 (2010) 159;
 //! Persson, J. Phys.: Condens. Matter 22 (2010) 265004], for u ≥ 0:
 //!
-//! `P(u) = (A(ζ1)/A0) δ(u) + ∫_1^{ζ1} dζ [−A′(ζ)/A0] (2π h²(ζ))^{−1/2}
+//! `P(u) = (A(ζ1)/A0) δ(u) + ∫_1^{ζ1} dζ \[−A′(ζ)/A0\] (2π h²(ζ))^{−1/2}
 //!         { e^{−(u−u1(ζ))²/2h²(ζ)} + e^{−(u+u1(ζ))²/2h²(ζ)} }`,
 //!
 //! with ζ1 = q1/q0, h(ζ) = h_rms(ζ) the roughness left above ζq0 (PY08 eq. 4) and u1(ζ) the
@@ -15,9 +15,9 @@
 //! the quadrature error (a test).
 //!
 //! **Effective conductance**: the local conductance per unit width of a gap u is
-//! `σ(u) = u³/(12η)` [m³/(Pa·s)]; the 2-D Bruggeman condition is
+//! `σ(u) = u³/(12η)` \[m³/(Pa·s)\]; the 2-D Bruggeman condition is
 //! `∫ P(u) (σ_eff − σ(u))/(σ_eff + σ(u)) du = 0`. η cancels, so it is solved for
-//! `g = 12 η σ_eff = u_eff³` [m³] by bisection in ln g. The left-hand side increases
+//! `g = 12 η σ_eff = u_eff³` \[m³\] by bisection in ln g. The left-hand side increases
 //! monotonically from `2c − 1` (g → 0⁺) to 1 (g → ∞): a root exists only below the 2-D
 //! threshold c < 1/2; at and above it the interface is sealed, g = 0 exactly.
 //! The leak rate of a flat seal is `Q̇ = (L_y/L_x) σ_eff ΔP` (DESIGN §3.3).
@@ -75,9 +75,9 @@ impl EffectiveMediumSettings {
 pub struct FoldedGaussian {
     /// Probability carried by this component (≥ 0).
     pub weight: f64,
-    /// Centre u1(ζ) [m] (≥ 0).
+    /// Centre u1(ζ) \[m\] (≥ 0).
     pub center: f64,
-    /// Standard deviation h_rms(ζ) [m] (≥ 0).
+    /// Standard deviation h_rms(ζ) \[m\] (≥ 0).
     pub width: f64,
 }
 
@@ -96,7 +96,7 @@ impl FoldedGaussian {
     }
 
     /// Mean of the folded normal (without the weight):
-    /// `σ√(2/π) e^{−μ²/2σ²} + μ erf(μ/(σ√2))` [m].
+    /// `σ√(2/π) e^{−μ²/2σ²} + μ erf(μ/(σ√2))` \[m\].
     pub fn mean(&self) -> f64 {
         if self.width <= 0.0 {
             return self.center;
@@ -206,7 +206,7 @@ impl SeparationDistribution {
                 .sum::<f64>()
     }
 
-    /// The continuous part of P(u) [1/m] at u ≥ 0 (point-mass components are left out).
+    /// The continuous part of P(u) \[1/m\] at u ≥ 0 (point-mass components are left out).
     pub fn density(&self, u: f64) -> f64 {
         if u < 0.0 {
             return 0.0;
@@ -222,12 +222,12 @@ impl SeparationDistribution {
             .sum()
     }
 
-    /// The mean separation `∫ u P(u) du` [m].
+    /// The mean separation `∫ u P(u) du` \[m\].
     pub fn mean(&self) -> f64 {
         self.components.iter().map(|g| g.weight * g.mean()).sum()
     }
 
-    /// `12 η σ_eff` [m³] of the 2-D Bruggeman medium with local conductance `u³/(12η)`
+    /// `12 η σ_eff` \[m³\] of the 2-D Bruggeman medium with local conductance `u³/(12η)`
     /// (module docs); exactly 0 at and above the threshold `contact_fraction ≥ 1/2`, or when
     /// no component has a positive gap.
     pub fn bruggeman_cubed_gap(&self, settings: EffectiveMediumSettings) -> f64 {
@@ -296,7 +296,7 @@ impl SeparationDistribution {
         (0.5 * (lo + hi)).exp()
     }
 
-    /// `∫ u³ P(u) du` [m³], in closed form per component
+    /// `∫ u³ P(u) du` \[m³\], in closed form per component
     /// (`E|X|³` of a folded normal: `(μ³ + 3μσ²) erf(μ/σ√2) + √(2/π) σ (μ² + 2σ²) e^{−μ²/2σ²}`).
     pub fn mean_cubed(&self) -> f64 {
         self.components
@@ -376,7 +376,7 @@ impl SeparationDistribution {
 pub struct EffectiveMedium {
     /// Contact fraction `A(ζ1)/A0` (sealed at ≥ 1/2).
     pub contact_fraction: f64,
-    /// `12 η σ_eff` [m³]; 0 when sealed.
+    /// `12 η σ_eff` \[m³\]; 0 when sealed.
     pub cubed_gap: f64,
 }
 
@@ -403,12 +403,12 @@ impl EffectiveMedium {
         self.cubed_gap <= 0.0
     }
 
-    /// The effective gap `u_eff = (12 η σ_eff)^{1/3}` [m].
+    /// The effective gap `u_eff = (12 η σ_eff)^{1/3}` \[m\].
     pub fn effective_gap(&self) -> f64 {
         self.cubed_gap.cbrt()
     }
 
-    /// Effective conductance per unit width `σ_eff` [m³/(Pa·s)] for viscosity η [Pa·s].
+    /// Effective conductance per unit width `σ_eff` \[m³/(Pa·s)\] for viscosity η \[Pa·s\].
     pub fn conductance(&self, viscosity: f64) -> f64 {
         self.cubed_gap / (12.0 * viscosity)
     }

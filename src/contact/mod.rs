@@ -29,14 +29,14 @@ use std::f64::consts::PI;
 /// Linear-elastic rubber against a rigid countersurface.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Elastic {
-    /// Young's modulus E [Pa].
+    /// Young's modulus E \[Pa\].
     pub youngs_modulus: f64,
-    /// Poisson ratio ν ∈ [0, 0.5].
+    /// Poisson ratio ν ∈ \[0, 0.5\].
     pub poisson_ratio: f64,
 }
 
 impl Elastic {
-    /// Plane-strain modulus of the rubber on a rigid substrate, `E* = E/(1−ν²)` [Pa] (PY08 §2).
+    /// Plane-strain modulus of the rubber on a rigid substrate, `E* = E/(1−ν²)` \[Pa\] (PY08 §2).
     pub fn effective_modulus(&self) -> f64 {
         self.youngs_modulus / (1.0 - self.poisson_ratio * self.poisson_ratio)
     }
@@ -97,13 +97,13 @@ impl Default for ContactSettings {
 pub struct CriticalJunction {
     /// Critical magnification ζc (dimensionless, ≥ 1).
     pub zeta_c: f64,
-    /// Lateral size `λc = 2π/(ζc q0)` [m] (the convention L = 2π/q0).
+    /// Lateral size `λc = 2π/(ζc q0)` \[m\] (the convention L = 2π/q0).
     pub lambda_c: f64,
-    /// Height of the critical constriction `u_c = u1(ζc)` [m].
+    /// Height of the critical constriction `u_c = u1(ζc)` \[m\].
     pub u_c: f64,
-    /// Mean separation in the apparent contact at ζc, `ū(ζc)` [m].
+    /// Mean separation in the apparent contact at ζc, `ū(ζc)` \[m\].
     pub ubar_c: f64,
-    /// rms roughness left at ζc, `h_rms(ζc)` [m] (PY08 eq. 4).
+    /// rms roughness left at ζc, `h_rms(ζc)` \[m\] (PY08 eq. 4).
     pub hrms_c: f64,
 }
 
@@ -129,9 +129,9 @@ impl Junction {
 /// ū and its derivative with respect to ln ζ at one magnification.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Separation {
-    /// Mean separation ū(ζ) [m].
+    /// Mean separation ū(ζ) \[m\].
     pub mean: f64,
-    /// dū/d ln ζ [m] (≤ 0).
+    /// dū/d ln ζ \[m\] (≤ 0).
     pub mean_dlnzeta: f64,
     /// A(ζ)/A0.
     pub area: f64,

@@ -195,7 +195,7 @@ impl EffectiveMediumTable {
         self.s_half
     }
 
-    /// `u_eff` [m] at `s = P0/E*`: interpolated inside the table, solved outside; 0 when
+    /// `u_eff` \[m\] at `s = P0/E*`: interpolated inside the table, solved outside; 0 when
     /// sealed.
     pub fn effective_gap(&self, s: f64) -> f64 {
         let v = logit(s / self.s_half);

@@ -1,10 +1,10 @@
 //! A rubber compound: its viscoelastic modulus, shift function, thermal and ageing data, and
 //! where each number came from.
 //!
-//! # Material TOML schema (shared by library files, scenario [material] tables and fit-prony output)
+//! # Material TOML schema (shared by library files, scenario \[material\] tables and fit-prony output)
 //!
 //! A material file holds one `[material]` table; a scenario's inline `[material]` table uses the same keys.
-//! Quantities: bare number = SI, or "<number> <unit>" strings (src/units.rs: parse_quantity, parse_temperature).
+//! Quantities: bare number = SI, or "`<number> <unit>`" strings (src/units.rs: parse_quantity, parse_temperature).
 //!
 //! ```toml
 //! [material]
@@ -38,7 +38,7 @@
 //! ageing = "..."
 //! ```
 //! Rules: exactly one of `youngs_modulus` or (`long_term_modulus` with optional `prony`) [prony without
-//! long_term_modulus: E∞ = 0 is allowed only if written explicitly]. A scenario's [material] may instead be
+//! long_term_modulus: E∞ = 0 is allowed only if written explicitly]. A scenario's \[material\] may instead be
 //! `library = "ID"` (no other keys except, later, scenario-level options such as asperity_modulus).
 //! Model type: `sealsim::material::Material` (src/material/compound.rs) with `prony: Prony`
 //! (src/material/prony.rs; `Prony::new(long_term, &[PronyTerm{modulus,tau}])`, `Prony::elastic(E)`), `shift: Shift`
@@ -74,11 +74,11 @@ impl Status {
 /// is multiplied by `exp(−∫ k(T) dt)`, `k(T) = k_ref exp(−(Ea/R)(1/T − 1/T_ref))`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Ageing {
-    /// Ea [J/mol].
+    /// Ea \[J/mol\].
     pub activation_energy: f64,
-    /// k_ref [1/s] at `reference_temperature`.
+    /// k_ref \[1/s\] at `reference_temperature`.
     pub rate: f64,
-    /// T_ref [K].
+    /// T_ref \[K\].
     pub reference_temperature: f64,
 }
 
@@ -91,9 +91,9 @@ pub struct Material {
     pub prony: Prony,
     pub poisson_ratio: f64,
     pub shift: Shift,
-    /// Glass transition temperature T_g [K].
+    /// Glass transition temperature T_g \[K\].
     pub glass_transition: Option<f64>,
-    /// Linear thermal expansion coefficient [1/K].
+    /// Linear thermal expansion coefficient \[1/K\].
     pub thermal_expansion: Option<f64>,
     pub ageing: Option<Ageing>,
     /// (parameter key, where its value came from), in file order.

@@ -8,7 +8,7 @@
 //! * Grid: `terms_per_decade` = N (1–4) τ per decade, log-spaced (rounded to 4 significant
 //!   digits) over the data window widened by one decade on each side, so that relaxation
 //!   just outside the window can still be represented: relaxation data `[t_min/10,
-//!   10 t_max]`; DMA data `[1/(10 ω_max), 10/ω_min]` (a branch shows in E″ around ωτ = 1).
+//!   10 t_max]`; DMA data `\[1/(10 ω_max), 10/ω_min\]` (a branch shows in E″ around ωτ = 1).
 //!   A window of `d` decades gets `⌈d N⌉ + 1` terms.
 //! * Relaxation rows: `E∞ + Σ E_i e^{−t_k/τ_i} ≈ E_k`.
 //!   DMA rows (stacked): `E∞ + Σ E_i ω_k²τ_i²/(1+ω_k²τ_i²) ≈ E′_k` and

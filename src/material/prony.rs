@@ -12,7 +12,7 @@ use crate::math::special::exp_neg;
 use crate::units::show;
 use std::fmt;
 
-/// One Maxwell branch: modulus E_i [Pa], relaxation time τ_i [s, reduced time].
+/// One Maxwell branch: modulus E_i \[Pa\], relaxation time τ_i \[s, reduced time\].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PronyTerm {
     pub modulus: f64,
@@ -96,12 +96,12 @@ impl Prony {
         Prony::new(modulus, &[])
     }
 
-    /// Long-term (relaxed) modulus E∞ [Pa].
+    /// Long-term (relaxed) modulus E∞ \[Pa\].
     pub fn long_term(&self) -> f64 {
         self.long_term
     }
 
-    /// Instantaneous (glassy-side) modulus E0 = E∞ + Σ E_i [Pa].
+    /// Instantaneous (glassy-side) modulus E0 = E∞ + Σ E_i \[Pa\].
     pub fn instantaneous(&self) -> f64 {
         self.long_term + self.terms.iter().map(|t| t.modulus).sum::<f64>()
     }
@@ -111,7 +111,7 @@ impl Prony {
         &self.terms
     }
 
-    /// Relaxation modulus E(ξ) [Pa] at reduced time ξ ≥ 0 [s] (with the table-driven
+    /// Relaxation modulus E(ξ) \[Pa\] at reduced time ξ ≥ 0 \[s\] (with the table-driven
     /// [`exp_neg`]: E(ξ) sits in every time step and fit residual).
     pub fn relaxation(&self, xi: f64) -> f64 {
         // 1/τ stored (a multiply, not a divide, per term) and four independent partial sums
@@ -131,7 +131,7 @@ impl Prony {
         self.long_term + (acc[0] + acc[1]) + (acc[2] + acc[3]) + rest
     }
 
-    /// Storage modulus E′(ω) [Pa], ω [rad/s].
+    /// Storage modulus E′(ω) \[Pa\], ω \[rad/s\].
     pub fn storage(&self, omega: f64) -> f64 {
         self.long_term
             + self
@@ -142,7 +142,7 @@ impl Prony {
                 .sum::<f64>()
     }
 
-    /// Loss modulus E″(ω) [Pa], ω [rad/s].
+    /// Loss modulus E″(ω) \[Pa\], ω \[rad/s\].
     pub fn loss(&self, omega: f64) -> f64 {
         self.terms
             .iter()
@@ -240,20 +240,20 @@ impl Prony {
     }
 }
 
-/// Creep compliance `J(ξ) = 1/E0 + ξ/η0 + Σ_j B_j (1 − e^{−ξ/λ_j})` [1/Pa]; the flow term
+/// Creep compliance `J(ξ) = 1/E0 + ξ/η0 + Σ_j B_j (1 − e^{−ξ/λ_j})` \[1/Pa\]; the flow term
 /// ξ/η0 is present only when E∞ = 0 (then `1/Ê(s)` has a pole at s = 0), otherwise
 /// `J(∞) = 1/E∞`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Creep {
     instantaneous: f64,
-    /// 1/η0 [1/(Pa·s)], zero for a solid (E∞ > 0).
+    /// 1/η0 \[1/(Pa·s)\], zero for a solid (E∞ > 0).
     fluidity: f64,
-    /// B_j [1/Pa] in `modulus`, λ_j in `tau`.
+    /// B_j \[1/Pa\] in `modulus`, λ_j in `tau`.
     retardation: Vec<PronyTerm>,
 }
 
 impl Creep {
-    /// J(ξ) [1/Pa].
+    /// J(ξ) \[1/Pa\].
     pub fn compliance(&self, xi: f64) -> f64 {
         let delayed: f64 = self
             .retardation
@@ -263,17 +263,17 @@ impl Creep {
         self.instantaneous + self.fluidity * xi + delayed
     }
 
-    /// 1/η0 [1/(Pa·s)] of the steady-flow term (zero when E∞ > 0).
+    /// 1/η0 \[1/(Pa·s)\] of the steady-flow term (zero when E∞ > 0).
     pub fn fluidity(&self) -> f64 {
         self.fluidity
     }
 
-    /// The retardation terms (B_j in `modulus` [1/Pa], λ_j in `tau` [s]).
+    /// The retardation terms (B_j in `modulus` \[1/Pa\], λ_j in `tau` \[s\]).
     pub fn retardation(&self) -> &[PronyTerm] {
         &self.retardation
     }
 
-    /// J(0) = 1/E0 [1/Pa].
+    /// J(0) = 1/E0 \[1/Pa\].
     pub fn instantaneous(&self) -> f64 {
         self.instantaneous
     }
@@ -310,7 +310,7 @@ impl RelaxationState {
         self.strain += d_strain;
     }
 
-    /// Current stress σ = E∞ ε + Σ h_i [Pa].
+    /// Current stress σ = E∞ ε + Σ h_i \[Pa\].
     pub fn stress(&self, prony: &Prony) -> f64 {
         prony.long_term() * self.strain + self.branches.iter().sum::<f64>()
     }

@@ -14,7 +14,7 @@
 use crate::math::quadrature::gauss_legendre;
 use std::sync::OnceLock;
 
-/// Molar gas constant R [J/(mol·K)] (CODATA 2018, exact).
+/// Molar gas constant R \[J/(mol·K)\] (CODATA 2018, exact).
 pub const GAS_CONSTANT: f64 = 8.314_462_618;
 
 /// Seconds in a day and in a Julian year (365.25 d).
@@ -26,9 +26,9 @@ pub const YEAR: f64 = 365.25 * DAY;
 pub enum Shift {
     /// No temperature dependence (a_T = 1).
     None,
-    /// WLF with reference temperature [K], C1 (dimensionless) and C2 [K], C2 > 0.
+    /// WLF with reference temperature \[K\], C1 (dimensionless) and C2 \[K\], C2 > 0.
     Wlf { reference: f64, c1: f64, c2: f64 },
-    /// Arrhenius with reference temperature [K] and activation energy [J/mol].
+    /// Arrhenius with reference temperature \[K\] and activation energy \[J/mol\].
     Arrhenius {
         reference: f64,
         activation_energy: f64,
@@ -36,7 +36,7 @@ pub enum Shift {
 }
 
 impl Shift {
-    /// `ln(1/a_T)` at temperature `t` [K]: +∞-safe; `−∞` when frozen (WLF at or below
+    /// `ln(1/a_T)` at temperature `t` \[K\]: +∞-safe; `−∞` when frozen (WLF at or below
     /// Tref − C2).
     pub fn ln_rate(&self, t: f64) -> f64 {
         match *self {
@@ -66,12 +66,12 @@ impl Shift {
         (-self.ln_rate(t)).exp()
     }
 
-    /// Whether the material is frozen (glassy, no relaxation) at `t` [K].
+    /// Whether the material is frozen (glassy, no relaxation) at `t` \[K\].
     pub fn is_frozen(&self, t: f64) -> bool {
         self.ln_rate(t) == f64::NEG_INFINITY
     }
 
-    /// The temperature at and below which a WLF material is frozen, `Tref − C2` [K].
+    /// The temperature at and below which a WLF material is frozen, `Tref − C2` \[K\].
     pub fn frozen_below(&self) -> Option<f64> {
         match *self {
             Shift::Wlf { reference, c2, .. } => Some(reference - c2),
@@ -83,11 +83,11 @@ impl Shift {
 /// A sinusoidal temperature cycle `A sin(2π (t − t0)/P)`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Cycle {
-    /// Amplitude [K].
+    /// Amplitude \[K\].
     pub amplitude: f64,
-    /// Period P [s].
+    /// Period P \[s\].
     pub period: f64,
-    /// Time of the upward zero crossing t0 [s].
+    /// Time of the upward zero crossing t0 \[s\].
     pub phase: f64,
 }
 
@@ -101,13 +101,13 @@ impl Cycle {
 /// plus optional sinusoidal cycles (daily, yearly).
 #[derive(Debug, Clone, PartialEq)]
 pub struct TemperatureHistory {
-    /// (time [s], temperature [K]) with strictly increasing times; one point = constant.
+    /// (time \[s\], temperature \[K\]) with strictly increasing times; one point = constant.
     points: Vec<(f64, f64)>,
     cycles: Vec<Cycle>,
 }
 
 impl TemperatureHistory {
-    /// Constant temperature [K].
+    /// Constant temperature \[K\].
     pub fn constant(t: f64) -> Self {
         TemperatureHistory {
             points: vec![(0.0, t)],
@@ -115,7 +115,7 @@ impl TemperatureHistory {
         }
     }
 
-    /// Piecewise-linear table of (time [s], temperature [K]); times strictly increasing, at
+    /// Piecewise-linear table of (time \[s\], temperature \[K\]); times strictly increasing, at
     /// least one point. Validated by the caller (the scenario boundary).
     pub fn table(points: Vec<(f64, f64)>) -> Self {
         TemperatureHistory {
@@ -135,7 +135,7 @@ impl TemperatureHistory {
         self.points.len() == 1 && self.cycles.iter().all(|c| c.amplitude == 0.0)
     }
 
-    /// T(t) [K].
+    /// T(t) \[K\].
     pub fn at(&self, t: f64) -> f64 {
         self.base(t) + self.cycles.iter().map(|c| c.at(t)).sum::<f64>()
     }
@@ -153,7 +153,7 @@ impl TemperatureHistory {
         y0 + (y1 - y0) * (t - t0) / (t1 - t0)
     }
 
-    /// The shortest period among the cycles with a non-zero amplitude [s].
+    /// The shortest period among the cycles with a non-zero amplitude \[s\].
     pub fn shortest_period(&self) -> Option<f64> {
         self.cycles
             .iter()
@@ -162,12 +162,12 @@ impl TemperatureHistory {
             .min_by(f64::total_cmp)
     }
 
-    /// The times of the table's points [s] (kinks of T(t)).
+    /// The times of the table's points \[s\] (kinks of T(t)).
     pub fn knots(&self) -> impl Iterator<Item = f64> + '_ {
         self.points.iter().map(|p| p.0)
     }
 
-    /// Lowest and highest temperature the history can reach [K] (bounds, for warnings).
+    /// Lowest and highest temperature the history can reach \[K\] (bounds, for warnings).
     pub fn range(&self) -> (f64, f64) {
         let amp: f64 = self.cycles.iter().map(|c| c.amplitude.abs()).sum();
         let (lo, hi) = self
@@ -203,7 +203,7 @@ impl TemperatureHistory {
     }
 }
 
-/// Reduced time accumulated over `[a, b]`: `ξ(b) − ξ(a) = ∫_a^b dt / a_T(T(t))` [s].
+/// Reduced time accumulated over `[a, b]`: `ξ(b) − ξ(a) = ∫_a^b dt / a_T(T(t))` \[s\].
 ///
 /// Exact for a constant temperature; otherwise the interval is split at the history's kinks
 /// and into eighths of each cycle, and each piece is integrated by globally adaptive

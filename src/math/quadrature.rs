@@ -1,6 +1,6 @@
 //! Gauss–Legendre quadrature.
 
-/// Nodes and weights of the n-point Gauss–Legendre rule on [−1, 1], by Newton iteration on
+/// Nodes and weights of the n-point Gauss–Legendre rule on \[−1, 1\], by Newton iteration on
 /// the Legendre polynomial from Tricomi's initial guesses (Golub & Welsch give the same
 /// rule; Newton is simpler and exact to rounding for the n ≤ 64 used here).
 pub fn gauss_legendre(n: usize) -> (Vec<f64>, Vec<f64>) {

@@ -21,7 +21,7 @@
 //! periodic on the cell of side `L = n a` (pixel `a`), `h_q = ĥ(k)/n²` at `q = (2π/L) k`, have
 //! `⟨|h_q|²⟩ = (2π/L)² C(|q|)`. Hence, without window,
 //!
-//! `C(q) = |ĥ(k)|² · a² / (n² (2π)²)`  [m⁴].
+//! `C(q) = |ĥ(k)|² · a² / (n² (2π)²)`  \[m⁴\].
 //!
 //! A window multiplies the expected periodogram of a stationary field by its mean square
 //! `⟨w²⟩ = n⁻² Σ_x w(x)²` (9/64 for the 2-D Hann window), so the estimate is divided by it:

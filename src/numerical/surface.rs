@@ -4,7 +4,7 @@
 //! `n × n` pixels of size `a = L/n`. A height field periodic on the cell is a Fourier series
 //! `h(x) = Σ_q h_q e^{iq·x}` over the lattice `q = (2π/L)(k_x, k_y)`, `k` integer, and with the
 //! convention of Persson et al., J. Phys.: Condens. Matter 17 (2005) R1,
-//! `C(q) = (2π)⁻² ∫ d²x ⟨h(x)h(0)⟩ e^{−iq·x}` [m⁴], a stationary field has
+//! `C(q) = (2π)⁻² ∫ d²x ⟨h(x)h(0)⟩ e^{−iq·x}` \[m⁴\], a stationary field has
 //! `⟨|h_q|²⟩ = (2π/L)² C(|q|)`: each lattice mode stands for one cell of area `(2π/L)²` of the
 //! q-plane, and `Σ_q |h_q|² ≈ ∫ d²q C = 2π ∫ q C dq = h_rms²`.
 //!

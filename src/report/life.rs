@@ -143,16 +143,16 @@ pub struct Summary {
     pub time_to_failure_s: Option<f64>,
     /// `leak_rate`, `leaked_volume`, `retained_force`, `lift_off` or `none`.
     pub failure_mode: String,
-    /// Leak rate right after installation (t = 0) [m³/s].
+    /// Leak rate right after installation (t = 0) \[m³/s\].
     pub initial_leak_rate_m3_per_s: f64,
-    /// Leak rate at the end of the run [m³/s].
+    /// Leak rate at the end of the run \[m³/s\].
     pub final_leak_rate_m3_per_s: f64,
-    /// Volume leaked over the whole run [m³].
+    /// Volume leaked over the whole run \[m³\].
     pub leaked_volume_m3: f64,
-    /// Sealing force per unit length right after installation [N/m].
+    /// Sealing force per unit length right after installation \[N/m\].
     #[serde(rename = "initial_sealing_force_N_per_m")]
     pub initial_sealing_force_n_per_m: f64,
-    /// Sealing force per unit length at the end of the run [N/m].
+    /// Sealing force per unit length at the end of the run \[N/m\].
     #[serde(rename = "final_sealing_force_N_per_m")]
     pub final_sealing_force_n_per_m: f64,
     /// Length of the run \[s\].
@@ -175,16 +175,16 @@ pub struct MotionSummary {
     /// `steady` (constant sliding: the drag is included in the leak rate) or `stroke` (a stroke
     /// cycle: the leak rate is the static one, the drag volumes are in the cycles below).
     pub kind: String,
-    /// Constant sliding: the speed [m/s].
+    /// Constant sliding: the speed \[m/s\].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub sliding_speed_m_per_s: Option<f64>,
     /// Stroke cycle: the stroke length \[m\].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub stroke_m: Option<f64>,
-    /// Stroke cycle: the out-stroke speed [m/s].
+    /// Stroke cycle: the out-stroke speed \[m/s\].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub out_speed_m_per_s: Option<f64>,
-    /// Stroke cycle: the in-stroke speed [m/s].
+    /// Stroke cycle: the in-stroke speed \[m/s\].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub in_speed_m_per_s: Option<f64>,
     /// Stroke cycle: `S/v_out + S/v_in` \[s\].
@@ -192,15 +192,15 @@ pub struct MotionSummary {
     pub cycle_period_s: Option<f64>,
     /// `L_a/L_x` of the critical junction.
     pub junction_position: f64,
-    /// The drag term `L_y d v` at installation [m³/s] (sliding speed, or out-stroke speed).
+    /// The drag term `L_y d v` at installation \[m³/s\] (sliding speed, or out-stroke speed).
     pub initial_drag_leak_rate_m3_per_s: f64,
-    /// The drag term at the end of the run [m³/s].
+    /// The drag term at the end of the run \[m³/s\].
     pub final_drag_leak_rate_m3_per_s: f64,
     /// The film `d = β u_c` at the peak strip at installation \[m\].
     pub initial_film_thickness_m: f64,
     /// The film at the end of the run \[m\].
     pub final_film_thickness_m: f64,
-    /// The smallest speed bound of PY08 eq. 17 over the history rows [m/s]; `null` when the
+    /// The smallest speed bound of PY08 eq. 17 over the history rows \[m/s\]; `null` when the
     /// peak strip is sealed throughout (no bound).
     pub speed_bound_m_per_s: Option<f64>,
     /// Whether the fastest speed exceeded the bound at some time of the run (a warning).
@@ -708,7 +708,7 @@ pub const COMPARE_COLUMNS: [&str; 8] = [
     "leak_rate_10years_m3_per_s",
 ];
 
-/// The times of the comparison's leak-rate columns [s] with their labels.
+/// The times of the comparison's leak-rate columns \[s\] with their labels.
 pub const COMPARE_TIMES: [(f64, &str); 3] =
     [(DAY, "1 day"), (YEAR, "1 year"), (10.0 * YEAR, "10 years")];
 
@@ -719,7 +719,7 @@ pub struct CompareRow<'a> {
     pub label: &'a str,
     pub material: &'a Material,
     pub result: &'a LifeResult,
-    /// Length of the run [s] (leak rates beyond it are blank).
+    /// Length of the run \[s\] (leak rates beyond it are blank).
     pub duration: f64,
 }
 

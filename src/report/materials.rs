@@ -68,7 +68,7 @@ fn status_meaning(status: Status) -> &'static str {
     }
 }
 
-/// The library table of `sealsim materials list`: id, name, status, E0 and E∞ [MPa], T_g [°C].
+/// The library table of `sealsim materials list`: id, name, status, E0 and E∞ \[MPa\], T_g \[°C\].
 pub fn library_table(rows: &[(&str, &Material)]) -> String {
     let header = ["id", "name", "status", "E0 [MPa]", "E∞ [MPa]", "T_g [°C]"];
     let cells: Vec<[String; 6]> = rows

@@ -1,4 +1,4 @@
-//! The speed/accuracy trade-off study ([`crate::tradeoff`]) as CSV, a readable table and an
+//! The speed/accuracy trade-off study ([`crate::workflow::tradeoff`]) as CSV, a readable table and an
 //! error-against-time chart.
 
 use super::ReportError;

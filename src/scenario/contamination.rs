@@ -1,7 +1,7 @@
 //! `[contamination]` → [`Contamination`] (DESIGN §7), and `[simulation] clogging_tolerance`.
 //!
 //! Keys: `number_concentration` (1/m³) XOR `volume_fraction` (dimensionless; then
-//! n_p = φ / E[π d³/6] from the size distribution), `size_distribution` (an inline table with
+//! n_p = φ / E\[π d³/6\] from the size distribution), `size_distribution` (an inline table with
 //! `kind` = `monodisperse` (`diameter`), `lognormal` (`median`, `geometric_std` > 1),
 //! `weibull` (`scale`, `shape` > 0) or `table` (`file`, a CSV of d and cumulative F)),
 //! `capture = "sieving"` (the only model) and `reroute` (default true).
@@ -270,7 +270,7 @@ type TableError = (Option<usize>, String);
 /// A size table: rows `d, F` (comma-separated; `#` comments and blank lines ignored), an
 /// optional header row (no number in it) and an optional units row after it whose first cell
 /// is a length unit (`um`; default m). d strictly increasing and positive, F non-decreasing
-/// within [0, 1] and reaching 1 at the last row ("not a CDF" otherwise).
+/// within \[0, 1\] and reaching 1 at the last row ("not a CDF" otherwise).
 fn parse_size_table(text: &str) -> Result<(Vec<f64>, Vec<f64>), TableError> {
     let mut d: Vec<f64> = Vec::new();
     let mut f: Vec<f64> = Vec::new();

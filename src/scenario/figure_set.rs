@@ -64,7 +64,7 @@ pub struct FigureGroup {
 #[derive(Debug, Clone, PartialEq)]
 pub struct FigureSet {
     pub name: String,
-    /// Nominal pressures [Pa], log-spaced and increasing.
+    /// Nominal pressures \[Pa\], log-spaced and increasing.
     pub pressures: Vec<f64>,
     pub groups: Vec<FigureGroup>,
 }

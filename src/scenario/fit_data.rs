@@ -121,9 +121,9 @@ pub fn parse_fit_data(text: &str, path: &Path, kind: FitKind) -> Result<FitData,
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Quantity {
     Time,
-    /// Ordinary frequency f [Hz]; ω = 2π f.
+    /// Ordinary frequency f \[Hz\]; ω = 2π f.
     Frequency,
-    /// Angular frequency ω [rad/s].
+    /// Angular frequency ω \[rad/s\].
     Omega,
     Relaxation,
     Storage,

@@ -95,22 +95,22 @@ const POINTS_PER_DECADE: Field = field(
     Bound::Positive,
 );
 
-/// Default `simulation.duration` [s]: 30 years.
+/// Default `simulation.duration` \[s\]: 30 years.
 pub const DEFAULT_DURATION: f64 = 30.0 * YEAR;
-/// Default `simulation.start` [s].
+/// Default `simulation.start` \[s\].
 pub const DEFAULT_START: f64 = 1.0;
 /// Default `simulation.points_per_decade`.
 pub const DEFAULT_POINTS_PER_DECADE: f64 = 20.0;
 /// Upper limit of `simulation.points_per_decade` (a guard against typos that would make a
 /// run take minutes).
 pub const MAX_POINTS_PER_DECADE: f64 = 1000.0;
-/// Temperature when neither `[environment]` nor the material's shift gives one: 23 °C [K].
+/// Temperature when neither `[environment]` nor the material's shift gives one: 23 °C \[K\].
 pub const DEFAULT_TEMPERATURE: f64 = 296.15;
 
-/// Phase (upward zero crossing) of the daily cycle [s after midnight]: the maximum falls a
+/// Phase (upward zero crossing) of the daily cycle \[s after midnight\]: the maximum falls a
 /// quarter period later, at 15:00.
 pub const DAILY_PHASE: f64 = 9.0 * 3600.0;
-/// Time of the yearly maximum [s after t = 0, midnight of 1 January]: noon on 21 July, day
+/// Time of the yearly maximum \[s after t = 0, midnight of 1 January\]: noon on 21 July, day
 /// 201.5 of a non-leap year.
 pub const YEARLY_MAXIMUM: f64 = 201.5 * DAY;
 
@@ -119,9 +119,9 @@ pub const YEARLY_MAXIMUM: f64 = 201.5 * DAY;
 pub(super) struct SealSpec {
     pub geometry: SealGeometry,
     pub loading: Loading,
-    /// `housing_expansion` [1/K] and its span.
+    /// `housing_expansion` \[1/K\] and its span.
     pub housing_expansion: Option<(f64, std::ops::Range<usize>)>,
-    /// `installation_temperature` [K].
+    /// `installation_temperature` \[K\].
     pub installation_temperature: Option<f64>,
 }
 

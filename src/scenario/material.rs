@@ -547,7 +547,7 @@ impl Source<'_> {
         })
     }
 
-    /// An absolute temperature [K]: a bare number in kelvin, or a string with a unit
+    /// An absolute temperature \[K\]: a bare number in kelvin, or a string with a unit
     /// (`"23 C"`, `"296.15 K"`, `"73.4 F"`); must be above absolute zero.
     pub(super) fn absolute_temperature(
         &self,

@@ -34,7 +34,7 @@ pub(super) enum Bound {
     NonNegative,
     /// strictly inside (lo, hi)
     Open(f64, f64),
-    /// inside [lo, hi]
+    /// inside \[lo, hi\]
     Closed(f64, f64),
 }
 

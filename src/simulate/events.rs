@@ -25,7 +25,7 @@ impl FailureMode {
 /// When and how the seal failed.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FailureEvent {
-    /// Time to failure [s].
+    /// Time to failure \[s\].
     pub time: f64,
     pub mode: FailureMode,
 }
@@ -33,9 +33,9 @@ pub struct FailureEvent {
 /// The scenario's failure criteria; any subset, the first event wins.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct FailureCriteria {
-    /// Leak rate above this [m³/s].
+    /// Leak rate above this \[m³/s\].
     pub max_leak_rate: Option<f64>,
-    /// Cumulative leaked volume above this [m³].
+    /// Cumulative leaked volume above this \[m³\].
     pub max_leaked_volume: Option<f64>,
     /// Sealing force below this fraction of its value right after installation.
     pub min_retained_force: Option<f64>,

@@ -11,7 +11,7 @@
 //!
 //! With a `[contamination]` block (DESIGN §7, [`crate::clogging`]) the open fraction f of the
 //! critical channels is integrated alongside, segment by segment between the internal time
-//! points (see [`Simulator::integrate_clogging`]); without it nothing of that runs.
+//! points (see `Simulator::integrate_clogging`); without it nothing of that runs.
 //!
 //! With a `[motion]` block (PY08 §8, [`crate::dynamic`]) each state also gets the drag of
 //! the sliding countersurface, evaluated at the *peak strip* (an approximation: the most
@@ -60,13 +60,13 @@ const REROUTE_QUADRATURE: crate::contact::QuadratureSettings = crate::contact::Q
 const REROUTE_NODE_SPACING: f64 = 1e-3;
 
 /// Largest temperature change within one internal step when the squeeze depends on the
-/// temperature [K].
+/// temperature \[K\].
 const MAX_STEP_TEMPERATURE: f64 = 10.0;
 /// Largest change of log10 a_T within one internal step when the squeeze depends on the
 /// temperature.
 const MAX_STEP_LOG_SHIFT: f64 = 0.5;
 /// Largest temperature change within one internal step that crosses the WLF frozen limit
-/// (where a_T is infinite at one end) [K].
+/// (where a_T is infinite at one end) \[K\].
 const MAX_STEP_TEMPERATURE_FROZEN_EDGE: f64 = 1.0;
 /// Upper bound of the pieces one internal step is split into for the thermal strain.
 const MAX_THERMAL_PIECES: f64 = 10_000.0;
@@ -81,7 +81,7 @@ pub enum AsperityModulus {
     /// The bulk's own relaxation: E(ξ(t)) under displacement loading, 1/J(ξ(t)) under force
     /// loading (the contact creeps under a constant load).
     Follow,
-    /// A fixed modulus [Pa].
+    /// A fixed modulus \[Pa\].
     Fixed(f64),
 }
 
@@ -98,20 +98,20 @@ pub enum Loading {
 /// the housing's. `ε(T) = ε0 + (α_r − α_h (1 − ε0)) (T − T_install)` (first order).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ThermalStrain {
-    /// Rubber linear CTE α_r [1/K].
+    /// Rubber linear CTE α_r \[1/K\].
     pub rubber_expansion: f64,
-    /// Housing linear CTE α_h [1/K].
+    /// Housing linear CTE α_h \[1/K\].
     pub housing_expansion: f64,
-    /// Installation temperature [K].
+    /// Installation temperature \[K\].
     pub installation_temperature: f64,
 }
 
 /// The output/evaluation grid.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TimeGrid {
-    /// First time after installation [s] (> 0).
+    /// First time after installation \[s\] (> 0).
     pub start: f64,
-    /// Last time [s] (> start).
+    /// Last time \[s\] (> start).
     pub duration: f64,
     /// Log-uniform points per decade.
     pub points_per_decade: f64,
@@ -176,7 +176,7 @@ impl LifeProblem {
         self.assess_rubber(self.environment.at(0.0), At::Installation, out);
     }
 
-    /// The rubber's temperature `t` [K] and, for an O-ring, its squeeze at `t`.
+    /// The rubber's temperature `t` \[K\] and, for an O-ring, its squeeze at `t`.
     fn assess_rubber(&self, t: f64, at: At, out: &mut Findings) {
         if let SealGeometry::ORing { .. } = self.geometry {
             validity::squeeze(squeeze_at(self, t), at, out);
@@ -219,12 +219,12 @@ pub struct HistoryRow {
     pub temperature: f64,
     pub reduced_time: f64,
     pub shift_factor: f64,
-    /// Sealing force per unit length [N/m].
+    /// Sealing force per unit length \[N/m\].
     pub sealing_force: f64,
     pub peak_pressure: f64,
     pub mean_pressure: f64,
     pub contact_width: f64,
-    /// Height of the critical constriction at the peak pressure [m]; `None` when sealed there.
+    /// Height of the critical constriction at the peak pressure \[m\]; `None` when sealed there.
     pub u_c: Option<f64>,
     pub leak_rate: f64,
     pub leaked_volume: f64,
@@ -266,7 +266,7 @@ impl LifeResult {
         self.rows.last().map_or(1.0, |r| r.open_fraction)
     }
 
-    /// Leak rate at time `t` [s], interpolated as a power law between rows (0 outside).
+    /// Leak rate at time `t` \[s\], interpolated as a power law between rows (0 outside).
     pub fn leak_rate_at(&self, t: f64) -> Option<f64> {
         let k = self.rows.partition_point(|r| r.time < t);
         let b = self.rows.get(k)?;
@@ -295,11 +295,11 @@ struct Snapshot {
     leak_rate: f64,
     state: SealState,
     retained: f64,
-    /// Leak rate with all critical channels open [m³/s] (= `leak_rate` when clean).
+    /// Leak rate with all critical channels open \[m³/s\] (= `leak_rate` when clean).
     open_leak_rate: f64,
-    /// u_c at the peak strip with all channels open [m] (0 when sealed there).
+    /// u_c at the peak strip with all channels open \[m\] (0 when sealed there).
     open_u_c: f64,
-    /// λ_c at the peak strip with all channels open [m] (0 when sealed there).
+    /// λ_c at the peak strip with all channels open \[m\] (0 when sealed there).
     lambda_c: f64,
     /// Peak reduced pressure P_peak/E*.
     peak_reduced_pressure: f64,
@@ -308,7 +308,7 @@ struct Snapshot {
     /// `[motion]`: the motion quantities at the peak strip (all channels open until
     /// [`Simulator::clogged`] scales them).
     motion: Option<MotionPoint>,
-    /// `[motion]`, constant sliding: the pressure-driven part of `open_leak_rate` [m³/s]
+    /// `[motion]`, constant sliding: the pressure-driven part of `open_leak_rate` \[m³/s\]
     /// (`open_leak_rate` = this + the drag); `None` otherwise.
     open_static_leak_rate: Option<f64>,
 }
@@ -967,7 +967,7 @@ struct CloggingOde<'s, 'a> {
     b: f64,
     before: &'s Snapshot,
     after: &'s Snapshot,
-    /// L_y [m].
+    /// L_y \[m\].
     length: f64,
     /// Re-routing ratios `(k, ratio, u_eff)` at `ln f = k h` ([`REROUTE_NODE_SPACING`]) and the
     /// step's end peak pressure, computed on demand and interpolated linearly in
@@ -978,7 +978,7 @@ struct CloggingOde<'s, 'a> {
 }
 
 impl CloggingOde<'_, '_> {
-    /// `−d(ln f)/dt` [1/s] at time `t` and `y = ln f` (≥ 0, finite).
+    /// `−d(ln f)/dt` \[1/s\] at time `t` and `y = ln f` (≥ 0, finite).
     fn rate(&self, t: f64, y: f64) -> f64 {
         let (a, b) = (self.a, self.b);
         let t = t.clamp(a, b);

@@ -22,7 +22,7 @@ pub struct LeakOutcome {
     pub findings: Findings,
 }
 
-/// The leak of `scenario`'s seal at each of `pressures` [Pa] at `fidelity`. The numerical
+/// The leak of `scenario`'s seal at each of `pressures` \[Pa\] at `fidelity`. The numerical
 /// level solves exactly at these pressures; `progress` reports its realisations.
 pub fn evaluate(
     scenario: &Scenario,
