@@ -1,6 +1,7 @@
 //! Mathematical building blocks that are not physics (quadrature, interpolation, least squares,
 //! special functions, linear solvers), each documented with its method and reference.
 
+pub mod fft;
 pub mod interp;
 pub mod nnls;
 pub mod quadrature;

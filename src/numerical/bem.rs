@@ -90,7 +90,7 @@ use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
 use rustfft::{Fft, FftPlanner};
 
 use super::HeightMap;
-use super::fft::{Complex, Fft2, signed_index};
+use crate::math::fft::{Complex, Fft2, signed_index};
 
 /// Coarse-to-fine recursion stops at grids with fewer points a side than this (or odd ones).
 pub const COARSEST: usize = 32;
