@@ -174,7 +174,7 @@ struct Worker {
 ///
 /// Real FFTs along the rows, then the columns tile by tile (transpose in cache, forward
 /// transform, multiply, inverse transform, transpose back), then inverse real FFTs along the
-/// rows. The half spectrum is stored in tiles of [`TILE`] columns, each tile contiguous
+/// rows. The half spectrum is stored in tiles of `TILE` = 8 columns, each tile contiguous
 /// (`tile[ky * width + j]`), so the column pass streams memory; the tiles are dealt out in
 /// `threads` contiguous bands so that the threads of the column pass own disjoint memory, and
 /// the rows likewise in the row passes. Every 1-D transform is the same whatever the thread
