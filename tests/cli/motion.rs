@@ -10,9 +10,9 @@ use std::fs;
 use std::path::{Path, PathBuf};
 use tempfile::TempDir;
 
-const WIPER: &str = include_str!("../scenarios/wiper-blade-water.toml");
-const ROD: &str = include_str!("../scenarios/hydraulic-rod-seal.toml");
-const PAPER: &str = include_str!("../scenarios/persson-yang-2008.toml");
+const WIPER: &str = include_str!("../../scenarios/wiper-blade-water.toml");
+const ROD: &str = include_str!("../../scenarios/hydraulic-rod-seal.toml");
+const PAPER: &str = include_str!("../../scenarios/persson-yang-2008.toml");
 
 const LEAK_HEADER: &str =
     "nominal_pressure_Pa,zeta_c,lambda_c_m,u_c_m,ubar_c_m,hrms_c_m,leak_rate_m3_per_s,state";

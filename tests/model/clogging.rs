@@ -8,8 +8,8 @@ use sealsim::scenario::Scenario;
 use sealsim::simulate::{LifeProblem, LifeResult, SealState, simulate};
 use std::path::Path;
 
-const PAPER: &str = include_str!("../scenarios/persson-yang-2008.toml");
-const NBR: &str = include_str!("../scenarios/oring-nbr-water-80c.toml");
+const PAPER: &str = include_str!("../../scenarios/persson-yang-2008.toml");
+const NBR: &str = include_str!("../../scenarios/oring-nbr-water-80c.toml");
 const DAY: f64 = 86400.0;
 
 /// The paper's flat seal with an elastic rubber: constant Q̇0 and u_c over the whole run.

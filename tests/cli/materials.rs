@@ -33,7 +33,7 @@ prony = "test value: one term"
 shift = "test value: universal WLF constants"
 "#;
 
-const PAPER: &str = include_str!("../scenarios/persson-yang-2008.toml");
+const PAPER: &str = include_str!("../../scenarios/persson-yang-2008.toml");
 
 fn sealsim() -> assert_cmd::Command {
     cargo_bin_cmd!("sealsim")

@@ -8,9 +8,9 @@ use std::fs;
 use std::path::{Path, PathBuf};
 use tempfile::TempDir;
 
-const PAPER: &str = include_str!("../scenarios/persson-yang-2008.toml");
-const PSD_EXAMPLE: &str = include_str!("../scenarios/psd-example.toml");
-const PSD_EXAMPLE_CSV: &str = include_str!("../scenarios/psd-example.csv");
+const PAPER: &str = include_str!("../../scenarios/persson-yang-2008.toml");
+const PSD_EXAMPLE: &str = include_str!("../../scenarios/psd-example.toml");
+const PSD_EXAMPLE_CSV: &str = include_str!("../../scenarios/psd-example.csv");
 
 const HEADER: &str =
     "nominal_pressure_Pa,zeta_c,lambda_c_m,u_c_m,ubar_c_m,hrms_c_m,leak_rate_m3_per_s,state";

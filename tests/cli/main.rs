@@ -1,0 +1,11 @@
+//! End-to-end tests of the `sealsim` binary (one test binary: linking one is much faster than
+//! one per file). Each module is a former `tests/cli_NAME.rs`; run one with
+//! `cargo test --release --test cli NAME::`.
+
+mod figures;
+mod fit;
+mod leak;
+mod materials;
+mod motion;
+mod run;
+mod tradeoff;

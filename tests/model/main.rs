@@ -1,0 +1,18 @@
+//! Integration tests of the library (one test binary: linking one is much faster than one per
+//! file). Each module is a former `tests/NAME.rs`; run one with
+//! `cargo test --release --test model NAME::`.
+
+mod bem;
+mod clogging;
+mod dynamic;
+mod effective_medium;
+mod fit;
+mod flow;
+mod height_map;
+mod life;
+mod motion;
+mod numerical;
+mod physics;
+mod properties;
+mod scenario;
+mod viscoelastic;
