@@ -2,6 +2,10 @@
 //! one per file). Each module is a former `tests/cli_NAME.rs`; run one with
 //! `cargo test --release --test cli NAME::`.
 
+#[path = "../common/mod.rs"]
+mod common;
+mod support;
+
 mod figures;
 mod fit;
 mod leak;

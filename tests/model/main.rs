@@ -2,6 +2,9 @@
 //! file). Each module is a former `tests/NAME.rs`; run one with
 //! `cargo test --release --test model NAME::`.
 
+#[path = "../common/mod.rs"]
+mod common;
+
 mod bem;
 mod clogging;
 mod dynamic;
