@@ -2,6 +2,13 @@
 //! one per file). Each module is a former `tests/cli_NAME.rs`; run one with
 //! `cargo test --release --test cli NAME::`.
 
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::panic,
+    reason = "tests and benches: a failure is a test failure"
+)]
+
 #[path = "../common/mod.rs"]
 mod common;
 mod support;
