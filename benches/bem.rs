@@ -13,6 +13,13 @@
 //! counts and contact fraction are printed first. `cargo bench --bench bem` takes about three
 //! minutes without the 2048² group (add about four with it).
 
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::panic,
+    reason = "tests and benches: a failure is a test failure"
+)]
+
 use criterion::{Criterion, criterion_group, criterion_main};
 use sealsim::numerical::HeightMap;
 use sealsim::numerical::bem::{BemSettings, Boundary, solve};

@@ -2,6 +2,13 @@
 //! surface, and table lookup (targets: ≤ 1 ms, ≤ 5 ms, ≤ 1 µs); the effective-medium level per
 //! state (target ≤ 1 ms with its table). Figures go in the README.
 
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::panic,
+    reason = "tests and benches: a failure is a test failure"
+)]
+
 use criterion::{Criterion, criterion_group, criterion_main};
 use sealsim::contact::{
     ContactSettings, ContactTable, EffectiveMediumSettings, EffectiveMediumTable, PerssonContact,

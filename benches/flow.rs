@@ -6,6 +6,13 @@
 //! log-uniform in |k| ≤ n/8, amplitude ∝ |k|^−0.8, i.e. self-affine with H = 0.8), `d` set so that
 //! 25 % of the cells are in contact. The iteration counts are printed before the timings.
 
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::panic,
+    reason = "tests and benches: a failure is a test failure"
+)]
+
 use criterion::{Criterion, criterion_group, criterion_main};
 use sealsim::numerical::flow::{FlowSettings, Preconditioner, solve};
 use std::hint::black_box;

@@ -4,6 +4,13 @@
 //! With particle clogging (issue 5, DESIGN §7): the same run in dirty water (log-normal dirt,
 //! median 1.5 µm, 1e10 /m³), without and with re-routing; target ≤ 3× the clean run.
 
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::panic,
+    reason = "tests and benches: a failure is a test failure"
+)]
+
 use criterion::{Criterion, criterion_group, criterion_main};
 use sealsim::clogging::{Contamination, DEFAULT_TOLERANCE, SizeDistribution};
 use sealsim::leak::Fidelity;

@@ -2,6 +2,13 @@
 //! update of its 30 branch stresses, and a Prony fit to 100 relaxation points (targets:
 //! ≤ 100 ns, ≤ 300 ns, ≤ 10 ms). Figures go in the README.
 
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::panic,
+    reason = "tests and benches: a failure is a test failure"
+)]
+
 use criterion::{Criterion, criterion_group, criterion_main};
 use sealsim::material::fit::{FitSettings, fit_relaxation};
 use sealsim::material::{Prony, PronyTerm, RelaxationState};

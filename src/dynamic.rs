@@ -742,7 +742,7 @@ const DRAG_TABLE_UPPER_GAP: f64 = 0.03;
 /// interpolation; a lookup multiplies by the u_c of the junction it is given. Below the table
 /// the direct evaluation answers; above it (within 3 % of sealing, where the film
 /// `d = (α/2) I u_c` is below 1e-20 m) `I/u_c` is held at its last value. The interpolation
-/// error against the direct evaluation is measured in tests/motion.rs.
+/// error against the direct evaluation is measured in tests/model/motion.rs.
 #[derive(Debug, Clone)]
 pub struct DragTable {
     contact: PerssonContact,

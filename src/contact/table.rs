@@ -39,7 +39,7 @@ impl TableSettings {
 
     /// The effective-medium table's default: 8 points per decade over 6 decades below the
     /// threshold (each node costs a Bruggeman solve; measured worst error vs the direct solve in
-    /// tests/effective_medium.rs).
+    /// tests/model/effective_medium.rs).
     pub fn effective_medium() -> Self {
         TableSettings {
             points_per_decade: 8.0,

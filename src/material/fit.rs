@@ -19,7 +19,7 @@
 //!   of order one.
 //! * Terms that come out empty (exactly 0 from NNLS, or below 1e-12 of E0) are dropped.
 //!
-//! Accuracy (measured in tests/fit.rs, data sampled from known series): when the true τ lie
+//! Accuracy (measured in tests/model/fit.rs, data sampled from known series): when the true τ lie
 //! on the grid the fit is exact to rounding. Otherwise a sum of decaying exponentials with
 //! non-negative weights cannot shift a relaxation time between grid points, and the fit
 //! ripples: on a quasi-continuous 12-decade spectrum, 4 % in E(t) with one term per decade,
@@ -52,7 +52,7 @@ pub const TERMS_PER_DECADE: std::ops::RangeInclusive<u32> = 1..=4;
 pub struct FitSettings {
     /// Relaxation times per decade of the grid, 1–4 (default 3: with one per decade a
     /// spectrum whose τ fall between grid points leaves a ≈4 % ripple in E(t); three bring it
-    /// below 0.04 %, measured in tests/fit.rs).
+    /// below 0.04 %, measured in tests/model/fit.rs).
     pub terms_per_decade: u32,
 }
 

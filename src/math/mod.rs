@@ -1,10 +1,34 @@
 //! Mathematical building blocks that are not physics (quadrature, interpolation, least squares,
-//! special functions, linear solvers), each documented with its method and reference.
+//! special functions, FFTs, linear solvers), each documented with its method and reference.
+//!
+//! Linear solvers: [`cg`] (preconditioned conjugate gradients, generic over the operator and the
+//! preconditioner), [`laplacian`] (the periodic five-point operator), [`multigrid`] (aggregation
+//! multigrid K-cycle preconditioner), [`cholesky`] (dense and modified incomplete Cholesky).
 
+pub mod cg;
+pub mod cholesky;
+pub mod fft;
 pub mod interp;
+pub mod laplacian;
+pub mod multigrid;
 pub mod nnls;
 pub mod quadrature;
 pub mod special;
+
+/// Dot product `a · b` of two slices of equal length, with four partial sums: vectorisable and
+/// a little more accurate than one running sum; the summation order is fixed.
+pub fn dot(a: &[f64], b: &[f64]) -> f64 {
+    let mut s = [0.0; 4];
+    let (ca, ra) = a.as_chunks::<4>();
+    let (cb, rb) = b.as_chunks::<4>();
+    for (x, y) in ca.iter().zip(cb) {
+        for k in 0..4 {
+            s[k] += x[k] * y[k];
+        }
+    }
+    let tail: f64 = ra.iter().zip(rb).map(|(x, y)| x * y).sum();
+    (s[0] + s[1]) + (s[2] + s[3]) + tail
+}
 
 /// `n ≥ 2` log-spaced values from `from` to `to` (both > 0), both ends exact.
 pub fn log_spaced(from: f64, to: f64, n: usize) -> Vec<f64> {

@@ -52,11 +52,13 @@
 //!
 //! # Solver
 //!
-//! Preconditioned conjugate gradients (flexible Polak–Ribière form), from φ = 0, stopped when
+//! The system is a [`GridLaplacian`] (the five-point operator of the face conductances, the
+//! pinned cells as sinks), solved by preconditioned conjugate gradients ([`crate::math::cg`],
+//! flexible Polak–Ribière form), from φ = 0, stopped when
 //! the relative residual `‖b − Aφ‖₂/‖b‖₂` (true residual, recomputed at the end) is below the
 //! tolerance (default 1e-10) and — given a few more iterations if needed — the energy decrement
-//! of the last step is below the tolerance times the current dissipation. σ_eff is evaluated from the dissipation `Σ_faces g Δp²`
-//! (= `Q_cross ΔP`), which is variational: its error is quadratic in the error of φ. Near the
+//! of the last step is below the tolerance times the current dissipation. σ_eff is evaluated
+//! from the dissipation `Σ_faces g Δp²` (= `Q_cross ΔP`), which is variational: its error is quadratic in the error of φ. Near the
 //! percolation threshold, where the flow is set by one constriction many decades narrower than
 //! the wide channels, this keeps σ_eff accurate (the preconditioners agree to ~1e-10 with a
 //! constriction 1e-12 of the largest conductance) although the residual, and with it the
@@ -66,8 +68,10 @@
 //! * `Jacobi` — diagonal; cheap per iteration, but the iteration count grows like `n` and with
 //!   the conductance contrast;
 //! * `IncompleteCholesky` — modified incomplete Cholesky MIC(0) (natural order, relaxation
-//!   0.97); about 5× fewer iterations than Jacobi, sequential triangular solves;
-//! * `Multigrid` (default) — aggregation algebraic multigrid with geometric guidance: aggregates
+//!   0.97; [`crate::math::cholesky`]); about 5× fewer iterations than Jacobi, sequential
+//!   triangular solves;
+//! * `Multigrid` (default) — aggregation algebraic multigrid with geometric guidance
+//!   ([`crate::math::multigrid`]): aggregates
 //!   are the strongly connected components of the nodes of 2 × 2 blocks (a face is strong when
 //!   its conductance is at least 0.25 of the largest face of both its cells, so no aggregate
 //!   straddles a constriction; a node left alone joins the neighbour it is most strongly tied
@@ -78,6 +82,11 @@
 //!   gap fields with 20–30 % contact, and just above the percolation threshold.
 
 use super::percolation;
+use crate::math::cg;
+use crate::math::cholesky::ModifiedIncompleteCholesky;
+use crate::math::dot;
+use crate::math::laplacian::GridLaplacian;
+use crate::math::multigrid::Multigrid;
 use crate::units::show;
 
 /// Direction of the mean pressure drop on the grid.
@@ -392,7 +401,7 @@ fn solve_x(
     for (i, _) in pin.iter().flatten() {
         active[*i] = false;
     }
-    let grid = Grid::new(n, &face_e, &face_n, &active);
+    let grid = GridLaplacian::new(n, &face_e, &face_n, &active);
     // Right-hand side for ΔP = 1 (a drop of 1/n per cell): b_i = (g_west − g_east)/n.
     let h = 1.0 / n as f64;
     let mut b = vec![0.0; cells];
@@ -460,1059 +469,69 @@ fn solve_x(
 }
 
 // ---------------------------------------------------------------------------------------------
-// The linear system on a periodic grid: a weighted graph Laplacian with Dirichlet sinks.
+// The solver: conjugate gradients (crate::math::cg) with the chosen preconditioner.
 
-/// Symmetric positive (semi)definite 5-point operator on a periodic `n × n` grid:
-/// `(A x)_i = d_i x_i − Σ_faces g x_neighbour`. Inactive cells have no faces and `d = 0`; their
-/// entries in every vector stay 0.
-#[derive(Debug, Clone)]
-struct Grid {
-    n: usize,
-    /// Conductance of the face to the east neighbour (0 if either cell is inactive).
-    ge: Vec<f64>,
-    /// Conductance of the face to the north neighbour.
-    gn: Vec<f64>,
-    /// Diagonal: sum of the faces plus the sinks to pinned cells.
-    diag: Vec<f64>,
-    /// 1/diag, 0 for inactive cells.
-    inv_diag: Vec<f64>,
-    /// Sinks: diagonal excess over the faces (connections to pinned cells).
-    extra: Vec<f64>,
-}
+/// Relaxation of the modified incomplete Cholesky (1 = row sums preserved exactly, 0 = IC(0)).
+const MIC_RELAXATION: f64 = 0.97;
 
-impl Grid {
-    /// The operator of the active cells, from the physical faces; faces to inactive cells that
-    /// are part of the physical network (pinned cells) become sinks.
-    fn new(n: usize, face_e: &[f64], face_n: &[f64], active: &[bool]) -> Self {
-        let cells = n * n;
-        let mut ge = vec![0.0; cells];
-        let mut gn = vec![0.0; cells];
-        let mut extra = vec![0.0; cells];
-        for iy in 0..n {
-            for ix in 0..n {
-                let i = iy * n + ix;
-                for (j, g, slot) in [
-                    (iy * n + (ix + 1) % n, face_e[i], &mut ge),
-                    (((iy + 1) % n) * n + ix, face_n[i], &mut gn),
-                ] {
-                    match (active[i], active[j]) {
-                        (true, true) => slot[i] = g,
-                        (true, false) => extra[i] += g,
-                        (false, true) => extra[j] += g,
-                        (false, false) => {}
-                    }
-                }
-            }
-        }
-        Self::assemble(n, ge, gn, extra)
-    }
-
-    fn assemble(n: usize, ge: Vec<f64>, gn: Vec<f64>, extra: Vec<f64>) -> Self {
-        let cells = n * n;
-        let mut diag = extra.clone();
-        for iy in 0..n {
-            for ix in 0..n {
-                let i = iy * n + ix;
-                diag[i] +=
-                    ge[i] + ge[iy * n + (ix + n - 1) % n] + gn[i] + gn[((iy + n - 1) % n) * n + ix];
-            }
-        }
-        let inv_diag = diag
-            .iter()
-            .map(|&d| if d > 0.0 { 1.0 / d } else { 0.0 })
-            .collect();
-        debug_assert_eq!(diag.len(), cells);
-        Self {
-            n,
-            ge,
-            gn,
-            diag,
-            inv_diag,
-            extra,
-        }
-    }
-
-    fn cells(&self) -> usize {
-        self.n * self.n
-    }
-
-    /// y = A x.
-    fn apply(&self, x: &[f64], y: &mut [f64]) {
-        self.apply_dot(x, y);
-    }
-
-    /// y = A x; returns x·y (computed row by row while the row is in cache).
-    fn apply_dot(&self, x: &[f64], y: &mut [f64]) -> f64 {
-        let n = self.n;
-        let mut xy = 0.0;
-        for iy in 0..n {
-            let row = iy * n;
-            let south = ((iy + n - 1) % n) * n;
-            let north = ((iy + 1) % n) * n;
-            let xr = &x[row..row + n];
-            let xs = &x[south..south + n];
-            let xn = &x[north..north + n];
-            let ge = &self.ge[row..row + n];
-            let gn = &self.gn[row..row + n];
-            let gs = &self.gn[south..south + n];
-            let d = &self.diag[row..row + n];
-            let yr = &mut y[row..row + n];
-            let edge = |ix: usize, w: usize, e: usize| {
-                d[ix] * xr[ix] - ge[ix] * xr[e] - ge[w] * xr[w] - gn[ix] * xn[ix] - gs[ix] * xs[ix]
-            };
-            yr[0] = edge(0, n - 1, 1 % n);
-            for ix in 1..n - 1 {
-                yr[ix] = d[ix] * xr[ix]
-                    - ge[ix] * xr[ix + 1]
-                    - ge[ix - 1] * xr[ix - 1]
-                    - gn[ix] * xn[ix]
-                    - gs[ix] * xs[ix];
-            }
-            yr[n - 1] = edge(n - 1, n - 2, 0);
-            xy += dot(xr, yr);
-        }
-        xy
-    }
-
-    /// One Gauss–Seidel sweep on A x = rhs, forward (lexicographic) or backward. Row by row: the
-    /// terms from the rows above and below and the right-hand side first (vectorised), then the
-    /// recurrence along the row.
-    fn gauss_seidel(&self, rhs: &[f64], x: &mut [f64], forward: bool, scratch: &mut Vec<f64>) {
-        let n = self.n;
-        scratch.resize(n, 0.0);
-        let t = &mut scratch[..];
-        let mut row_sweep = |iy: usize| {
-            let row = iy * n;
-            let south = ((iy + n - 1) % n) * n;
-            let (cur, xs, xn) = rows_mut(x, n, iy);
-            let ge = &self.ge[row..row + n];
-            let gn = &self.gn[row..row + n];
-            let gs = &self.gn[south..south + n];
-            let inv = &self.inv_diag[row..row + n];
-            let b = &rhs[row..row + n];
-            if forward {
-                // t = (b + vertical + east (old)) / d; then x_i = t_i + g_w x_{i−1} / d.
-                for ix in 0..n - 1 {
-                    t[ix] = (b[ix] + gn[ix] * xn[ix] + gs[ix] * xs[ix] + ge[ix] * cur[ix + 1])
-                        * inv[ix];
-                }
-                cur[0] = t[0] + ge[n - 1] * cur[n - 1] * inv[0];
-                let mut west = cur[0];
-                for ix in 1..n - 1 {
-                    west = t[ix] + ge[ix - 1] * inv[ix] * west;
-                    cur[ix] = west;
-                }
-                let last = n - 1;
-                cur[last] = (b[last]
-                    + gn[last] * xn[last]
-                    + gs[last] * xs[last]
-                    + ge[last] * cur[0]
-                    + ge[last - 1] * west)
-                    * inv[last];
-            } else {
-                // t = (b + vertical + west (old)) / d; then x_i = t_i + g_e x_{i+1} / d.
-                for ix in 1..n {
-                    t[ix] = (b[ix] + gn[ix] * xn[ix] + gs[ix] * xs[ix] + ge[ix - 1] * cur[ix - 1])
-                        * inv[ix];
-                }
-                let last = n - 1;
-                cur[last] = t[last] + ge[last] * cur[0] * inv[last];
-                let mut east = cur[last];
-                for ix in (1..n - 1).rev() {
-                    east = t[ix] + ge[ix] * inv[ix] * east;
-                    cur[ix] = east;
-                }
-                cur[0] =
-                    (b[0] + gn[0] * xn[0] + gs[0] * xs[0] + ge[0] * east + ge[last] * cur[last])
-                        * inv[0];
-            }
-        };
-        if forward {
-            (0..n).for_each(&mut row_sweep);
-        } else {
-            (0..n).rev().for_each(&mut row_sweep);
-        }
-    }
-}
-
-/// Row `iy` of an `n × n` field (mutable) with its periodic neighbours below and above.
-fn rows_mut(x: &mut [f64], n: usize, iy: usize) -> (&mut [f64], &[f64], &[f64]) {
-    let (before, rest) = x.split_at_mut(iy * n);
-    let (cur, after) = rest.split_at_mut(n);
-    let south: &[f64] = if iy > 0 {
-        &before[(iy - 1) * n..]
-    } else {
-        &after[after.len() - n..]
-    };
-    let north: &[f64] = if iy + 1 < n {
-        &after[..n]
-    } else {
-        &before[..n]
-    };
-    (cur, south, north)
-}
-
-fn dot(a: &[f64], b: &[f64]) -> f64 {
-    // Four partial sums: vectorisable and a little more accurate.
-    let mut s = [0.0; 4];
-    let (ca, ra) = a.as_chunks::<4>();
-    let (cb, rb) = b.as_chunks::<4>();
-    for (x, y) in ca.iter().zip(cb) {
-        for k in 0..4 {
-            s[k] += x[k] * y[k];
-        }
-    }
-    let tail: f64 = ra.iter().zip(rb).map(|(x, y)| x * y).sum();
-    (s[0] + s[1]) + (s[2] + s[3]) + tail
-}
-
-// ---------------------------------------------------------------------------------------------
-// Preconditioners.
-
-enum Precond {
-    Jacobi,
-    Mic(Mic),
+/// The preconditioner selected by [`Preconditioner`].
+enum Precond<'a> {
+    Jacobi(cg::Jacobi<'a>),
+    Mic(ModifiedIncompleteCholesky<'a>),
     Multigrid(Box<Multigrid>),
 }
 
-impl Precond {
-    fn new(kind: Preconditioner, grid: &Grid) -> Self {
+impl<'a> Precond<'a> {
+    fn new(kind: Preconditioner, grid: &'a GridLaplacian) -> Self {
         match kind {
-            Preconditioner::Jacobi => Self::Jacobi,
-            Preconditioner::IncompleteCholesky => Self::Mic(Mic::new(grid, MIC_RELAXATION)),
+            Preconditioner::Jacobi => Self::Jacobi(cg::Jacobi {
+                inverse_diagonal: grid.inverse_diagonal(),
+            }),
+            Preconditioner::IncompleteCholesky => {
+                Self::Mic(ModifiedIncompleteCholesky::new(grid, MIC_RELAXATION))
+            }
             Preconditioner::Multigrid => Self::Multigrid(Box::new(Multigrid::new(grid.clone()))),
         }
     }
+}
 
-    /// z = M⁻¹ r.
-    fn apply(&mut self, grid: &Grid, r: &[f64], z: &mut [f64]) {
+impl cg::Preconditioner for Precond<'_> {
+    fn apply(&mut self, r: &[f64], z: &mut [f64]) {
         match self {
-            Self::Jacobi => {
-                for ((z, r), d) in z.iter_mut().zip(r).zip(&grid.inv_diag) {
-                    *z = r * d;
-                }
-            }
-            Self::Mic(m) => m.apply(grid, r, z),
+            Self::Jacobi(m) => m.apply(r, z),
+            Self::Mic(m) => m.solve(r, z),
             Self::Multigrid(m) => m.apply(r, z),
         }
     }
 }
 
-/// Relaxation of the modified incomplete Cholesky (1 = row sums preserved exactly, 0 = IC(0)).
-const MIC_RELAXATION: f64 = 0.97;
-
-/// Modified incomplete Cholesky `M = (D − E) D⁻¹ (D − Eᵀ)`, E the strictly lower part of −A,
-/// natural (row-major) order, no fill; the dropped fill is added to the diagonal with weight ω.
-struct Mic {
-    /// Pivots D.
-    pivot: Vec<f64>,
-    inv_pivot: Vec<f64>,
-}
-
-/// The four neighbours of cell `i` with the conductances of the faces to them.
-fn neighbours(grid: &Grid, i: usize) -> [(usize, f64); 4] {
-    let n = grid.n;
-    let (ix, iy) = (i % n, i / n);
-    let e = iy * n + (ix + 1) % n;
-    let w = iy * n + (ix + n - 1) % n;
-    let no = ((iy + 1) % n) * n + ix;
-    let so = ((iy + n - 1) % n) * n + ix;
-    [
-        (e, grid.ge[i]),
-        (w, grid.ge[w]),
-        (no, grid.gn[i]),
-        (so, grid.gn[so]),
-    ]
-}
-
-impl Mic {
-    fn new(grid: &Grid, omega: f64) -> Self {
-        let cells = grid.cells();
-        let mut pivot = vec![0.0; cells];
-        for i in 0..cells {
-            if grid.diag[i] <= 0.0 {
-                continue;
-            }
-            let mut d = grid.diag[i];
-            for (j, g) in neighbours(grid, i) {
-                if j >= i || g == 0.0 || pivot[j] <= 0.0 {
-                    continue;
-                }
-                // Fill that elimination of j would put in row i, towards j's other upper
-                // neighbours k (dropped, and added to the diagonal with weight ω).
-                let fill: f64 = neighbours(grid, j)
-                    .iter()
-                    .filter(|&&(k, _)| k > j && k != i)
-                    .map(|&(_, gk)| gk)
-                    .sum();
-                d -= g * (g + omega * fill) / pivot[j];
-            }
-            // Guard against breakdown (near-singular clusters, round-off).
-            pivot[i] = if d > 1e-12 * grid.diag[i] {
-                d
-            } else {
-                grid.diag[i]
-            };
-        }
-        let inv_pivot = pivot
-            .iter()
-            .map(|&d| if d > 0.0 { 1.0 / d } else { 0.0 })
-            .collect();
-        Self { pivot, inv_pivot }
-    }
-
-    fn apply(&self, grid: &Grid, r: &[f64], z: &mut [f64]) {
-        let n = grid.n;
-        let (ge, gn, inv) = (&grid.ge, &grid.gn, &self.inv_pivot);
-        let last_row = (n - 1) * n;
-        // Forward: (D − E) w = r, w_i = (r_i + Σ_{j<i} g_ij w_j)/D_i. The neighbours before a
-        // cell: west, south, and through the periodic boundary the first cell of the row (for the
-        // last cell of a row) and the cell of the first row (for the last row).
-        for iy in 0..n {
-            let row = iy * n;
-            for ix in 0..n {
-                let i = row + ix;
-                let mut s = r[i];
-                if ix > 0 {
-                    s += ge[i - 1] * z[i - 1];
-                }
-                if iy > 0 {
-                    s += gn[i - n] * z[i - n];
-                }
-                if ix == n - 1 {
-                    s += ge[i] * z[row];
-                }
-                if iy == n - 1 {
-                    s += gn[i] * z[ix];
-                }
-                z[i] = s * inv[i];
-            }
-        }
-        // Backward: (D − Eᵀ) z = D w, z_i = w_i + (Σ_{j>i} g_ij z_j)/D_i.
-        for iy in (0..n).rev() {
-            let row = iy * n;
-            for ix in (0..n).rev() {
-                let i = row + ix;
-                let mut s = 0.0;
-                if ix < n - 1 {
-                    s += ge[i] * z[i + 1];
-                }
-                if iy < n - 1 {
-                    s += gn[i] * z[i + n];
-                }
-                if ix == 0 {
-                    s += ge[row + n - 1] * z[row + n - 1];
-                }
-                if iy == 0 {
-                    s += gn[last_row + ix] * z[last_row + ix];
-                }
-                z[i] += s * inv[i];
-            }
-        }
-        debug_assert_eq!(self.pivot.len(), grid.cells());
-    }
-}
-
-/// Aggregation strength threshold: a face joins two nodes into one aggregate only if its
-/// conductance is at least this fraction of the largest face of *both* nodes, so aggregates do
-/// not straddle constrictions (weak links would otherwise be short-circuited on the coarse grids).
-const STRENGTH: f64 = 0.25;
-/// The hierarchy stops at a level with at most this many unknowns (dense Cholesky).
-const COARSEST_NODES: usize = 400;
-/// The K-cycle skips its second step when the first reduced the residual below this fraction.
-const KRYLOV_SKIP: f64 = 0.25;
-/// Symmetric Gauss–Seidel sweeps before and after the coarse correction.
-const SWEEPS: usize = 1;
-
-const NONE: u32 = u32::MAX;
-
-/// A coarse level: graph Laplacian with sinks in compressed rows,
-/// `(A x)_i = d_i x_i − Σ_e w_e x_col(e)`, `d_i = Σ_e w_e + sink_i`. Its nodes belong to the
-/// blocks of a `side × side` periodic grid of cell blocks and are sorted by block.
-struct Sparse {
-    side: usize,
-    /// First node of every block (`side² + 1` entries).
-    block_start: Vec<u32>,
-    /// First edge of every node (`nodes + 1` entries).
-    start: Vec<u32>,
-    col: Vec<u32>,
-    weight: Vec<f64>,
-    sink: Vec<f64>,
-    diag: Vec<f64>,
-    inv_diag: Vec<f64>,
-}
-
-impl Sparse {
-    fn nodes(&self) -> usize {
-        self.start.len() - 1
-    }
-
-    fn finish(
-        side: usize,
-        block_start: Vec<u32>,
-        start: Vec<u32>,
-        col: Vec<u32>,
-        weight: Vec<f64>,
-        sink: Vec<f64>,
-    ) -> Self {
-        let diag: Vec<f64> = (0..start.len() - 1)
-            .map(|i| {
-                weight[start[i] as usize..start[i + 1] as usize]
-                    .iter()
-                    .sum::<f64>()
-                    + sink[i]
-            })
-            .collect();
-        let inv_diag = diag
-            .iter()
-            .map(|&d| if d > 0.0 { 1.0 / d } else { 0.0 })
-            .collect();
-        Self {
-            side,
-            block_start,
-            start,
-            col,
-            weight,
-            sink,
-            diag,
-            inv_diag,
-        }
-    }
-
-    /// The fine grid as a graph (one node per cell with a non-zero diagonal, in cell order),
-    /// with the node of every cell (`NONE` for cells out of the system).
-    fn from_grid(grid: &Grid) -> (Self, Vec<u32>) {
-        let cells = grid.cells();
-        let mut node = vec![NONE; cells];
-        let mut block_start = Vec::with_capacity(cells + 1);
-        let mut count = 0u32;
-        for (i, slot) in node.iter_mut().enumerate() {
-            block_start.push(count);
-            if grid.diag[i] > 0.0 {
-                *slot = count;
-                count += 1;
-            }
-        }
-        block_start.push(count);
-        let mut start = Vec::with_capacity(count as usize + 1);
-        start.push(0u32);
-        let mut col = Vec::with_capacity(4 * count as usize);
-        let mut weight = Vec::with_capacity(4 * count as usize);
-        let mut sink = Vec::with_capacity(count as usize);
-        for i in 0..cells {
-            if node[i] == NONE {
-                continue;
-            }
-            for (j, g) in neighbours(grid, i) {
-                if g > 0.0 {
-                    col.push(node[j]);
-                    weight.push(g);
-                }
-            }
-            sink.push(grid.extra[i]);
-            start.push(col.len() as u32);
-        }
-        (
-            Self::finish(grid.n, block_start, start, col, weight, sink),
-            node,
-        )
-    }
-
-    fn edges(&self, i: usize) -> impl Iterator<Item = (usize, f64)> + '_ {
-        let range = self.start[i] as usize..self.start[i + 1] as usize;
-        self.col[range.clone()]
-            .iter()
-            .zip(&self.weight[range])
-            .map(|(&j, &w)| (j as usize, w))
-    }
-
-    /// Aggregates: within every 2 × 2 super-block of blocks, the connected components of the
-    /// nodes under the strong edges (`w ≥ θ · max(largest edge of either end)`). Returns the
-    /// aggregate of every node, the first aggregate of every super-block and their count.
-    fn aggregate(&self, theta: f64) -> (Vec<u32>, Vec<u32>, usize) {
-        let nodes = self.nodes();
-        let largest: Vec<f64> = (0..nodes)
-            .map(|i| self.edges(i).map(|(_, w)| w).fold(0.0, f64::max))
-            .collect();
-        let side = self.side;
-        let cs = side.div_ceil(2);
-        let mut agg = vec![NONE; nodes];
-        let mut stamp = vec![NONE; nodes];
-        let mut coarse_start = Vec::with_capacity(cs * cs + 1);
-        let mut members: Vec<usize> = Vec::new();
-        let mut stack: Vec<usize> = Vec::new();
-        let mut sizes: Vec<u32> = Vec::new();
-        let mut renumber: Vec<u32> = Vec::new();
-        let mut count = 0u32;
-        for by in 0..cs {
-            for bx in 0..cs {
-                coarse_start.push(count);
-                let s = (by * cs + bx) as u32;
-                members.clear();
-                for (cx, cy) in [
-                    (2 * bx, 2 * by),
-                    (2 * bx + 1, 2 * by),
-                    (2 * bx, 2 * by + 1),
-                    (2 * bx + 1, 2 * by + 1),
-                ] {
-                    if cx < side && cy < side {
-                        let b = cy * side + cx;
-                        let range = self.block_start[b]..self.block_start[b + 1];
-                        members.extend(range.map(|i| i as usize));
-                    }
-                }
-                for &i in &members {
-                    stamp[i] = s;
-                }
-                // Phase 1: components under the strong edges, local ids from `first`.
-                let first = count;
-                sizes.clear();
-                for &i in &members {
-                    if agg[i] != NONE {
-                        continue;
-                    }
-                    let id = count;
-                    agg[i] = id;
-                    let mut size = 1u32;
-                    stack.push(i);
-                    while let Some(k) = stack.pop() {
-                        for (j, w) in self.edges(k) {
-                            if stamp[j] == s
-                                && agg[j] == NONE
-                                && w >= theta * largest[k].max(largest[j])
-                            {
-                                agg[j] = id;
-                                size += 1;
-                                stack.push(j);
-                            }
-                        }
-                    }
-                    sizes.push(size);
-                    count += 1;
-                }
-                // Phase 2: a node left alone joins the neighbouring aggregate of the super-block
-                // it is most strongly tied to, if that tie is strong from its own side.
-                let mut merged = false;
-                for &i in &members {
-                    if sizes[(agg[i] - first) as usize] != 1 {
-                        continue;
-                    }
-                    let best = self
-                        .edges(i)
-                        .filter(|&(j, _)| stamp[j] == s && agg[j] != agg[i])
-                        .max_by(|a, b| a.1.total_cmp(&b.1));
-                    if let Some((j, w)) = best
-                        && w >= theta * largest[i]
-                    {
-                        sizes[(agg[i] - first) as usize] = 0;
-                        agg[i] = agg[j];
-                        sizes[(agg[j] - first) as usize] += 1;
-                        merged = true;
-                    }
-                }
-                if merged {
-                    // Renumber the aggregates of this super-block without the emptied ones.
-                    renumber.clear();
-                    let mut next = first;
-                    for &size in &sizes {
-                        renumber.push(next);
-                        if size > 0 {
-                            next += 1;
-                        }
-                    }
-                    for &i in &members {
-                        agg[i] = renumber[(agg[i] - first) as usize];
-                    }
-                    count = next;
-                }
-            }
-        }
-        coarse_start.push(count);
-        (agg, coarse_start, count as usize)
-    }
-
-    /// Galerkin operator `Pᵀ A P` for the piecewise-constant prolongation of `agg`.
-    fn galerkin(&self, agg: &[u32], coarse_start: Vec<u32>, count: usize) -> Sparse {
-        // Members of every aggregate (counting sort).
-        let mut first = vec![0u32; count + 1];
-        for &a in agg {
-            first[a as usize + 1] += 1;
-        }
-        for k in 0..count {
-            first[k + 1] += first[k];
-        }
-        let mut fill = first.clone();
-        let mut members = vec![0u32; agg.len()];
-        for (i, &a) in agg.iter().enumerate() {
-            members[fill[a as usize] as usize] = i as u32;
-            fill[a as usize] += 1;
-        }
-        let mut position = vec![NONE; count];
-        let mut start = Vec::with_capacity(count + 1);
-        start.push(0u32);
-        let mut col: Vec<u32> = Vec::new();
-        let mut weight: Vec<f64> = Vec::new();
-        let mut sink = Vec::with_capacity(count);
-        for a in 0..count {
-            let row = col.len();
-            let mut s = 0.0;
-            for &i in &members[first[a] as usize..first[a + 1] as usize] {
-                s += self.sink[i as usize];
-                for (j, w) in self.edges(i as usize) {
-                    let b = agg[j];
-                    if b as usize == a {
-                        continue;
-                    }
-                    match position[b as usize] {
-                        NONE => {
-                            position[b as usize] = col.len() as u32;
-                            col.push(b);
-                            weight.push(w);
-                        }
-                        p => weight[p as usize] += w,
-                    }
-                }
-            }
-            for &b in &col[row..] {
-                position[b as usize] = NONE;
-            }
-            sink.push(s);
-            start.push(col.len() as u32);
-        }
-        Sparse::finish(
-            self.side.div_ceil(2),
-            coarse_start,
-            start,
-            col,
-            weight,
-            sink,
-        )
-    }
-
-    /// y = A x.
-    fn apply(&self, x: &[f64], y: &mut [f64]) {
-        for i in 0..self.nodes() {
-            let mut s = self.diag[i] * x[i];
-            for (j, w) in self.edges(i) {
-                s -= w * x[j];
-            }
-            y[i] = s;
-        }
-    }
-
-    /// r = b − A x.
-    fn residual(&self, b: &[f64], x: &[f64], r: &mut [f64]) {
-        for i in 0..self.nodes() {
-            let mut s = b[i] - self.diag[i] * x[i];
-            for (j, w) in self.edges(i) {
-                s += w * x[j];
-            }
-            r[i] = s;
-        }
-    }
-
-    fn gauss_seidel(&self, b: &[f64], x: &mut [f64], forward: bool) {
-        let mut relax = |i: usize| {
-            let mut s = b[i];
-            for (j, w) in self.edges(i) {
-                s += w * x[j];
-            }
-            x[i] = s * self.inv_diag[i];
-        };
-        if forward {
-            (0..self.nodes()).for_each(&mut relax);
-        } else {
-            (0..self.nodes()).rev().for_each(&mut relax);
-        }
-    }
-}
-
-/// Builds the coarse levels below a graph until one is small enough for the dense solve.
-/// Returns the aggregate map of `fine` and the levels with the maps between them.
-fn hierarchy(fine: &Sparse, theta: f64) -> (Vec<u32>, Vec<Sparse>, Vec<Vec<u32>>) {
-    let mut levels: Vec<Sparse> = Vec::new();
-    let mut maps: Vec<Vec<u32>> = Vec::new();
-    let mut first_map = Vec::new();
-    loop {
-        let current = levels.last().unwrap_or(fine);
-        if current.nodes() <= COARSEST_NODES || (current.side == 1 && !levels.is_empty()) {
-            break;
-        }
-        let (mut agg, mut starts, mut count) = current.aggregate(theta);
-        if count as f64 > 0.9 * current.nodes() as f64 {
-            // Too little coarsening (many weak links): aggregate on the geometry alone.
-            (agg, starts, count) = current.aggregate(0.0);
-        }
-        if count == current.nodes() && current.side == 1 {
-            break;
-        }
-        let next = current.galerkin(&agg, starts, count);
-        if levels.is_empty() {
-            first_map = agg;
-        } else {
-            maps.push(agg);
-        }
-        levels.push(next);
-    }
-    (first_map, levels, maps)
-}
-
-struct Multigrid {
-    fine: Grid,
-    /// Level-1 node of every fine cell (`NONE` outside the system), or, without coarse levels,
-    /// the unknown of the dense solve.
-    fine_map: Vec<u32>,
-    /// Coarse levels 1, 2, … (the last one is solved directly).
-    levels: Vec<Sparse>,
-    /// `maps[k]`: node of `levels[k + 1]` for every node of `levels[k]`.
-    maps: Vec<Vec<u32>>,
-    dense: DenseCholesky,
-    fine_res: Vec<f64>,
-    scratch: Vec<f64>,
-    /// Per coarse level, work vectors of the K-cycle: rhs copy, v1, A v1, A v2.
-    krylov: Vec<[Vec<f64>; 4]>,
-    /// Per coarse level: iterate, right-hand side, residual.
-    x: Vec<Vec<f64>>,
-    rhs: Vec<Vec<f64>>,
-    res: Vec<Vec<f64>>,
-}
-
-impl Multigrid {
-    fn new(fine: Grid) -> Self {
-        let (graph, node) = Sparse::from_grid(&fine);
-        let (first_map, levels, maps) = hierarchy(&graph, STRENGTH);
-        let (fine_map, dense) = if levels.is_empty() {
-            (node, DenseCholesky::new(&graph))
-        } else {
-            let map = node
-                .iter()
-                .map(|&k| {
-                    if k == NONE {
-                        NONE
-                    } else {
-                        first_map[k as usize]
-                    }
-                })
-                .collect();
-            let dense = DenseCholesky::new(levels.last().expect("non-empty"));
-            (map, dense)
-        };
-        drop(graph);
-        let x = levels.iter().map(|g| vec![0.0; g.nodes()]).collect();
-        let rhs = levels.iter().map(|g| vec![0.0; g.nodes()]).collect();
-        let res = levels.iter().map(|g| vec![0.0; g.nodes()]).collect();
-        Self {
-            fine_res: vec![0.0; fine.cells()],
-            scratch: Vec::new(),
-            krylov: levels
-                .iter()
-                .map(|g| std::array::from_fn(|_| vec![0.0; g.nodes()]))
-                .collect(),
-            fine,
-            fine_map,
-            levels,
-            maps,
-            dense,
-            x,
-            rhs,
-            res,
-        }
-    }
-
-    /// z = B r: one cycle from z = 0 (symmetric Gauss–Seidel around the coarse correction).
-    fn apply(&mut self, r: &[f64], z: &mut [f64]) {
-        if self.levels.is_empty() {
-            // Small system: exact solve.
-            let rhs: Vec<f64> = self.dense_gather(r);
-            let mut y = vec![0.0; rhs.len()];
-            self.dense.solve(&rhs, &mut y);
-            z.fill(0.0);
-            for (zi, &k) in z.iter_mut().zip(&self.fine_map) {
-                if k != NONE {
-                    *zi = y[k as usize];
-                }
-            }
-            return;
-        }
-        // Fine level: smooth, restrict, coarse cycle, prolong, smooth.
-        z.fill(0.0);
-        for _ in 0..SWEEPS {
-            self.fine.gauss_seidel(r, z, true, &mut self.scratch);
-        }
-        self.fine.apply(z, &mut self.fine_res);
-        let rhs1 = &mut self.rhs[0];
-        rhs1.fill(0.0);
-        for ((&k, q), b) in self.fine_map.iter().zip(&self.fine_res).zip(r) {
-            if k != NONE {
-                rhs1[k as usize] += b - q;
-            }
-        }
-        self.coarse_cycle(0);
-        let x1 = &self.x[0];
-        for (zi, &k) in z.iter_mut().zip(&self.fine_map) {
-            if k != NONE {
-                *zi += x1[k as usize];
-            }
-        }
-        for _ in 0..SWEEPS {
-            self.fine.gauss_seidel(r, z, false, &mut self.scratch);
-        }
-    }
-
-    /// Approximate solve of coarse level `l` (`x[l]` from `rhs[l]`, starting from 0):
-    /// symmetric Gauss–Seidel around a correction from level `l + 1`, exact on the coarsest
-    /// level. Above it the correction is the K-cycle of Notay & Vassilevski (Numer. Linear
-    /// Algebra Appl. 15 (2008) 473): two recursive cycles combined by two steps of flexible
-    /// conjugate gradients on level `l + 1`, which keeps the rate of unsmoothed aggregation
-    /// independent of the number of levels without a tuned over-correction.
-    fn coarse_cycle(&mut self, l: usize) {
-        let last = self.levels.len() - 1;
-        if l == last {
-            self.dense.solve(&self.rhs[l], &mut self.x[l]);
-            return;
-        }
-        self.x[l].fill(0.0);
-        for _ in 0..SWEEPS {
-            self.levels[l].gauss_seidel(&self.rhs[l], &mut self.x[l], true);
-        }
-        self.levels[l].residual(&self.rhs[l], &self.x[l], &mut self.res[l]);
-        let next = l + 1;
-        {
-            let coarse = &mut self.rhs[next];
-            coarse.fill(0.0);
-            for (&k, q) in self.maps[l].iter().zip(&self.res[l]) {
-                coarse[k as usize] += q;
-            }
-        }
-        if next < last {
-            self.krylov_correction(next);
-        } else {
-            self.coarse_cycle(next);
-        }
-        let (head, tail) = self.x.split_at_mut(next);
-        for (xi, &k) in head[l].iter_mut().zip(&self.maps[l]) {
-            *xi += tail[0][k as usize];
-        }
-        for _ in 0..SWEEPS {
-            self.levels[l].gauss_seidel(&self.rhs[l], &mut self.x[l], false);
-        }
-    }
-
-    /// K-cycle correction on level `m`: `x[m]` ≈ A⁻¹ `rhs[m]` from two preconditioned steps.
-    fn krylov_correction(&mut self, m: usize) {
-        // The work vectors of level m are not touched by the cycles below it.
-        let mut work = std::mem::take(&mut self.krylov[m]);
-        self.krylov_steps(m, &mut work);
-        self.krylov[m] = work;
-    }
-
-    fn krylov_steps(&mut self, m: usize, [rc, v1, w1, w2]: &mut [Vec<f64>; 4]) {
-        rc.copy_from_slice(&self.rhs[m]);
-        self.coarse_cycle(m);
-        v1.copy_from_slice(&self.x[m]);
-        self.levels[m].apply(v1, w1);
-        let rho1 = dot(v1, w1);
-        if rho1.is_nan() || rho1 <= 0.0 {
-            self.rhs[m].copy_from_slice(rc);
-            return;
-        }
-        let alpha1 = dot(v1, rc) / rho1;
-        // Second step on r2 = rc − α1 A v1, unless the first one left little residual.
-        let r2 = &mut self.rhs[m];
-        for ((r, c), w) in r2.iter_mut().zip(rc.iter()).zip(w1.iter()) {
-            *r = c - alpha1 * w;
-        }
-        if dot(r2, r2) <= KRYLOV_SKIP * KRYLOV_SKIP * dot(rc, rc) {
-            for (x, v) in self.x[m].iter_mut().zip(v1.iter()) {
-                *x = alpha1 * v;
-            }
-            self.rhs[m].copy_from_slice(rc);
-            return;
-        }
-        self.coarse_cycle(m);
-        let v2 = &self.x[m];
-        self.levels[m].apply(v2, w2);
-        let gamma = dot(v2, w1);
-        let beta = dot(v2, w2);
-        let alpha2 = dot(v2, &self.rhs[m]);
-        let rho2 = beta - gamma * gamma / rho1;
-        let (c1, c2) = if rho2 > 0.0 {
-            (alpha1 - gamma * alpha2 / (rho1 * rho2), alpha2 / rho2)
-        } else {
-            (alpha1, 0.0)
-        };
-        for (x, v) in self.x[m].iter_mut().zip(v1.iter()) {
-            *x = c1 * v + c2 * *x;
-        }
-        self.rhs[m].copy_from_slice(rc);
-    }
-
-    fn dense_gather(&self, r: &[f64]) -> Vec<f64> {
-        let mut out = vec![0.0; self.dense.size()];
-        for (&k, &v) in self.fine_map.iter().zip(r) {
-            if k != NONE {
-                out[k as usize] = v;
-            }
-        }
-        out
-    }
-}
-
-/// Dense Cholesky factor of a small graph operator.
-struct DenseCholesky {
-    m: usize,
-    /// Lower factor, row-major `m × m` (with the pivots on the diagonal).
-    l: Vec<f64>,
-    /// Its transpose without the diagonal, row-major.
-    u: Vec<f64>,
-}
-
-impl DenseCholesky {
-    fn new(graph: &Sparse) -> Self {
-        let m = graph.nodes();
-        let mut a = vec![0.0; m * m];
-        for i in 0..m {
-            a[i * m + i] += graph.diag[i];
-            for (j, w) in graph.edges(i) {
-                a[i * m + j] -= w;
-            }
-        }
-        // In-place Cholesky, lower triangle.
-        for j in 0..m {
-            let mut d = a[j * m + j];
-            for k in 0..j {
-                d -= a[j * m + k] * a[j * m + k];
-            }
-            let floor = 1e-14 * graph.diag[j];
-            let d = if d > floor { d.sqrt() } else { floor.sqrt() };
-            a[j * m + j] = d;
-            for i in j + 1..m {
-                let mut s = a[i * m + j];
-                for k in 0..j {
-                    s -= a[i * m + k] * a[j * m + k];
-                }
-                a[i * m + j] = if d > 0.0 { s / d } else { 0.0 };
-            }
-        }
-        let mut u = vec![0.0; m * m];
-        for i in 0..m {
-            for k in 0..i {
-                u[k * m + i] = a[i * m + k];
-            }
-        }
-        Self { m, l: a, u }
-    }
-
-    fn size(&self) -> usize {
-        self.m
-    }
-
-    fn solve(&self, rhs: &[f64], x: &mut [f64]) {
-        let m = self.m;
-        let pivot = |i: usize, s: f64| {
-            let d = self.l[i * m + i];
-            if d > 0.0 { s / d } else { 0.0 }
-        };
-        x.copy_from_slice(&rhs[..m]);
-        for i in 0..m {
-            let (done, rest) = x.split_at_mut(i);
-            rest[0] = pivot(i, rest[0] - dot(&self.l[i * m..i * m + i], done));
-        }
-        for i in (0..m).rev() {
-            let (head, done) = x.split_at_mut(i + 1);
-            head[i] = pivot(i, head[i] - dot(&self.u[i * m + i + 1..(i + 1) * m], done));
-        }
-    }
-}
-
-// ---------------------------------------------------------------------------------------------
-// Conjugate gradients.
-
-/// Solves A x = b from x = 0; returns (iterations, true relative residual).
-/// Once the residual criterion holds, also asks the energy decrement of the last step,
-/// `α r·z = ‖x_{k+1} − x_k‖²_A`, to be below `tolerance × D(x)` (the dissipation of the iterate,
-/// evaluated directly): near the percolation threshold the residual is dominated by the wide
-/// channels while the flow is set by a constriction. This second test gets at most
-/// `10 + iterations/4` extra iterations, since at extreme contrast (beyond ~1e-15) it is below
-/// the round-off of the wide channels; the residual test alone decides convergence.
+/// Solves A φ = b from φ = 0 by preconditioned conjugate gradients ([`cg::solve`]); returns
+/// (iterations, true relative residual). Once the residual criterion holds, the energy decrement
+/// of the last step must also be below `tolerance ×` the dissipation D(φ) (see the module docs):
+/// near the percolation threshold the residual is dominated by the wide channels while the flow
+/// is set by a constriction. The preconditioner is built only for a non-zero right-hand side.
 fn pcg(
-    grid: &Grid,
+    grid: &GridLaplacian,
     b: &[f64],
     x: &mut [f64],
     dissipation: &dyn Fn(&[f64]) -> f64,
     settings: &FlowSettings,
 ) -> Result<(usize, f64), FlowError> {
-    let cells = grid.cells();
-    let b_norm = dot(b, b).sqrt();
-    x.fill(0.0);
-    if b_norm == 0.0 {
+    if dot(b, b) == 0.0 {
+        x.fill(0.0);
         return Ok((0, 0.0));
     }
     let mut precond = Precond::new(settings.preconditioner, grid);
-    let mut r = b.to_vec();
-    let mut z = vec![0.0; cells];
-    let mut p = vec![0.0; cells];
-    let mut q = vec![0.0; cells];
-    let mut iterations = 0;
-    let target = settings.tolerance * b_norm;
-    let mut extra = 0;
-    let mut true_norm = f64::INFINITY;
-    // Restarts from the true residual if the recursive one drifted below it.
-    for _restart in 0..5 {
-        precond.apply(grid, &r, &mut z);
-        p.copy_from_slice(&z);
-        let mut rz = dot(&r, &z);
-        while iterations < settings.max_iterations {
-            let pq = grid.apply_dot(&p, &mut q);
-            if pq.is_nan() || pq <= 0.0 || pq.is_infinite() {
-                break;
-            }
-            let alpha = rz / pq;
-            let mut rr = 0.0;
-            for ((xi, pi), (ri, qi)) in x.iter_mut().zip(&p).zip(r.iter_mut().zip(&q)) {
-                *xi += alpha * pi;
-                *ri -= alpha * qi;
-                rr += *ri * *ri;
-            }
-            iterations += 1;
-            if rr.sqrt() <= target {
-                let energy_converged = alpha * rz <= settings.tolerance * dissipation(x);
-                if energy_converged || extra >= 10 + iterations / 4 {
-                    break;
-                }
-                extra += 1;
-            }
-            precond.apply(grid, &r, &mut z);
-            // Flexible (Polak–Ribière) β = z·(r − r_old)/(z_old·r_old) = −α z·q/(z_old·r_old):
-            // the same as Fletcher–Reeves for a fixed preconditioner, robust for the K-cycle.
-            let (mut rz_new, mut qz) = (0.0, 0.0);
-            for ((ri, qi), zi) in r.iter().zip(&q).zip(&z) {
-                rz_new += ri * zi;
-                qz += qi * zi;
-            }
-            let beta = -alpha * qz / rz;
-            rz = rz_new;
-            for (pi, zi) in p.iter_mut().zip(&z) {
-                *pi = zi + beta * *pi;
-            }
-        }
-        // True residual.
-        grid.apply(x, &mut q);
-        for ((ri, bi), qi) in r.iter_mut().zip(b).zip(&q) {
-            *ri = bi - qi;
-        }
-        true_norm = dot(&r, &r).sqrt();
-        if true_norm <= target {
-            return Ok((iterations, true_norm / b_norm));
-        }
-        if iterations >= settings.max_iterations {
-            break;
-        }
-    }
-    Err(FlowError::NotConverged {
-        iterations,
-        residual: true_norm / b_norm,
-    })
+    let cg_settings = cg::Settings {
+        tolerance: settings.tolerance,
+        max_iterations: settings.max_iterations,
+    };
+    cg::solve(grid, &mut precond, b, x, Some(dissipation), &cg_settings)
+        .map(|c| (c.iterations, c.residual))
+        .map_err(|e| FlowError::NotConverged {
+            iterations: e.iterations,
+            residual: e.residual,
+        })
 }
 
 #[cfg(test)]

@@ -6,7 +6,6 @@
 //! the same band-limited spectrum.
 
 pub mod bem;
-pub mod fft;
 pub mod flow;
 pub mod percolation;
 pub mod psd;

@@ -57,7 +57,7 @@
 //! magnification hardly depend on C below `FIT_LOW · q0`; h_rms does.
 
 use super::HeightMap;
-use super::fft::{Complex, Fft2, signed_index};
+use crate::math::fft::{Complex, Fft2, signed_index};
 use crate::surface::{Spectrum, SpectrumError};
 use std::f64::consts::PI;
 

@@ -33,7 +33,7 @@
 //! spectrum re-estimated from the map ([`super::psd`]), not the continuous h_rms.
 
 use super::HeightMap;
-use super::fft::{Complex, Fft2, signed_index};
+use crate::math::fft::{Complex, Fft2, signed_index};
 use crate::surface::Spectrum;
 use rand_chacha::ChaCha8Rng;
 use rand_core::{RngCore, SeedableRng};

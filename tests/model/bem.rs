@@ -1,5 +1,5 @@
 //! Slow checks of the FFT boundary-element contact solver, all `#[ignore]`d; run with
-//! `cargo test --release --test bem -- --ignored --nocapture`.
+//! `cargo test --release --test model bem:: -- --ignored --nocapture`.
 //!
 //! * `timings_of_the_accelerations` — wall time, iterations and agreement of the four
 //!   preconditioner / warm-start combinations on the benchmark surface (`benches/bem.rs`).

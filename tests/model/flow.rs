@@ -1,7 +1,7 @@
 //! Integration tests of the numerical flow reference on a realistic rough gap field, and a
 //! timing table (ignored by default):
-//! `cargo test --release --test flow -- --ignored --nocapture` (sizes from `SEALSIM_FLOW_SIZES`,
-//! default "256,512,1024").
+//! `cargo test --release --test model flow:: -- --ignored --nocapture` (sizes from
+//! `SEALSIM_FLOW_SIZES`, default "256,512,1024").
 
 use sealsim::numerical::flow::{FlowSettings, Preconditioner, solve, solve_field};
 use sealsim::numerical::percolation;

@@ -1,13 +1,8 @@
 //! `sealsim figures` end to end: the PY08 §3 figure set, and bad figure-set input.
 
-use assert_cmd::Command;
-use assert_cmd::cargo::cargo_bin_cmd;
+use crate::support::sealsim;
 use std::fs;
 use std::path::Path;
-
-fn sealsim() -> Command {
-    cargo_bin_cmd!("sealsim")
-}
 
 fn column(header: &str, name: &str) -> usize {
     header

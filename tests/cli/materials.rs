@@ -3,7 +3,8 @@
 //! and shift constants read through the public `sealsim::scenario` API, never copied from the
 //! program's output.
 
-use assert_cmd::cargo::cargo_bin_cmd;
+use crate::common::PAPER;
+use crate::support::sealsim;
 use predicates::prelude::*;
 use sealsim::material::{Material, Shift};
 use sealsim::scenario::{library, load_material_file};
@@ -32,12 +33,6 @@ long_term_modulus = "test value: E_inf"
 prony = "test value: one term"
 shift = "test value: universal WLF constants"
 "#;
-
-const PAPER: &str = include_str!("../scenarios/persson-yang-2008.toml");
-
-fn sealsim() -> assert_cmd::Command {
-    cargo_bin_cmd!("sealsim")
-}
 
 /// Runs `sealsim <args>`, expects success, returns (stdout, stderr).
 fn ok(args: &[&str]) -> (String, String) {

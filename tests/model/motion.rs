@@ -2,6 +2,7 @@
 //! against the direct evaluation, v0 = 0 is the static run bit for bit, the drag is linear in
 //! the speed, a stroke cycle leaves the leak rate static and carries the film out and back.
 
+use crate::common::{rel, scenario_path};
 use sealsim::contact::{Junction, PerssonContact};
 use sealsim::dynamic::{
     DragCoefficients, DragSettings, DragTable, Motion, MotionSpec, separation_integral,
@@ -10,20 +11,9 @@ use sealsim::leak::FlatSeal;
 use sealsim::scenario::Scenario;
 use sealsim::simulate::{HistoryRow, LifeProblem, LifeResult, simulate};
 use sealsim::validity::{Finding, Limit};
-use std::path::{Path, PathBuf};
-
-fn shipped(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("scenarios")
-        .join(name)
-}
 
 fn load(name: &str) -> Scenario {
-    Scenario::load(&shipped(name)).unwrap()
-}
-
-fn rel(a: f64, b: f64) -> f64 {
-    (a - b).abs() / b.abs().max(f64::MIN_POSITIVE)
+    Scenario::load(&scenario_path(name)).unwrap()
 }
 
 /// Everything of a row except the motion.
@@ -174,7 +164,7 @@ fn steady_drag_is_linear_in_speed_and_included_in_the_leak() {
     assert!(fast.leaked_volume() - bare.leaked_volume() > 1.99 * extra);
     assert!(slow.findings.get(Limit::SpeedBound).is_none());
     // B_a, B_b > 0 at the peak strip of the installed O-ring
-    let s = Scenario::load(&shipped("hydraulic-rod-seal.toml")).unwrap();
+    let s = Scenario::load(&scenario_path("hydraulic-rod-seal.toml")).unwrap();
     let seal = MotionSpec::steady(v).seal(
         s.problem.material,
         s.problem.seal,

@@ -2,16 +2,14 @@
 //! CSV and JSON contracts, a closed-form failure time through the whole CLI, and that bad input
 //! exits with status 2, names the file, line and key, and writes nothing.
 
+use crate::common::scenarios_dir;
+use crate::support::{HISTORY_HEADER, no_nan};
 use assert_cmd::cargo::cargo_bin_cmd;
 use predicates::prelude::*;
 use serde_json::Value;
 use std::fs;
 use std::path::{Path, PathBuf};
 use tempfile::TempDir;
-
-const HISTORY_HEADER: &str = "time_s,temperature_K,reduced_time_s,shift_factor,\
-sealing_force_N_per_m,peak_pressure_Pa,mean_pressure_Pa,contact_width_m,u_c_m,\
-leak_rate_m3_per_s,leaked_volume_m3,state,open_fraction";
 
 const COMPARE_HEADER: &str = "material,name,status,time_to_failure_s,failure_mode,\
 leak_rate_1day_m3_per_s,leak_rate_1year_m3_per_s,leak_rate_10years_m3_per_s";
@@ -30,10 +28,6 @@ const SUMMARY_KEYS: [&str; 10] = [
 ];
 
 const YEAR: f64 = 365.25 * 86400.0;
-
-fn scenarios_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios")
-}
 
 /// Every scenario file shipped in `scenarios/` (recursively), not the figure sets.
 fn shipped_scenarios() -> Vec<PathBuf> {
@@ -61,12 +55,6 @@ fn csv_rows(text: &str) -> Vec<Vec<String>> {
         .records()
         .map(|r| r.unwrap().iter().map(str::to_owned).collect())
         .collect()
-}
-
-fn no_nan(text: &str, what: &str) {
-    for bad in ["NaN", "nan", "inf"] {
-        assert!(!text.contains(bad), "{what} contains {bad}:\n{text}");
-    }
 }
 
 /// The outputs of one `run` in a temporary directory.

@@ -1,6 +1,7 @@
 //! Reciprocating seals at low speed (PY08 §8, DESIGN §3.4): the paper's wiper example, the
 //! static limit, linearity in v0, convergence of the integral I, and properties over inputs.
 
+use crate::common::rel;
 use proptest::prelude::*;
 use sealsim::contact::effective_medium::FoldedGaussian;
 use sealsim::contact::{
@@ -37,10 +38,6 @@ fn wiper(p0: f64) -> ReciprocatingSeal {
         shape_factor: 1.0,
         junction_position: 0.5,
     }
-}
-
-fn rel(a: f64, b: f64) -> f64 {
-    (a - b).abs() / b.abs().max(f64::MIN_POSITIVE)
 }
 
 fn within_factor(x: f64, target: f64, factor: f64) -> bool {

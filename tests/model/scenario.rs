@@ -1,19 +1,14 @@
 //! The public scenario API: shipped scenarios load into SI model types; a `psd_file` is
 //! resolved against the scenario's directory and can be restricted to a band.
 
+use crate::common::scenario_path;
 use sealsim::scenario::{Scenario, ScenarioError};
 use std::fs;
-use std::path::{Path, PathBuf};
-
-fn shipped(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("scenarios")
-        .join(name)
-}
+use std::path::Path;
 
 #[test]
 fn paper_scenario_loads_in_si_units() {
-    let s = Scenario::load(&shipped("persson-yang-2008.toml")).unwrap();
+    let s = Scenario::load(&scenario_path("persson-yang-2008.toml")).unwrap();
     assert_eq!(s.name, "Persson & Yang 2008, section 3");
     let p = &s.problem;
     assert_eq!(p.material.effective_modulus(), 1e7 / 0.75);
@@ -30,7 +25,7 @@ fn paper_scenario_loads_in_si_units() {
 
 #[test]
 fn psd_example_is_the_self_affine_law_it_tabulates() {
-    let s = Scenario::load(&shipped("psd-example.toml")).unwrap();
+    let s = Scenario::load(&scenario_path("psd-example.toml")).unwrap();
     let sp = &s.problem.spectrum;
     assert!((sp.q0() / 1e4 - 1.0).abs() < 1e-12);
     assert!((sp.q1() / 1e9 - 1.0).abs() < 1e-3);
@@ -50,8 +45,8 @@ fn psd_band_can_be_restricted_and_path_is_relative_to_the_scenario() {
     let dir = tempfile::tempdir().unwrap();
     let sub = dir.path().join("data");
     fs::create_dir(&sub).unwrap();
-    fs::copy(shipped("psd-example.csv"), sub.join("psd.csv")).unwrap();
-    let text = fs::read_to_string(shipped("psd-example.toml"))
+    fs::copy(scenario_path("psd-example.csv"), sub.join("psd.csv")).unwrap();
+    let text = fs::read_to_string(scenario_path("psd-example.toml"))
         .unwrap()
         .replace("\"psd-example.csv\"", "\"data/psd.csv\"")
         .replace("# q0 = \"2e4 1/m\"", "q0 = \"2e4 1/m\"")
@@ -65,7 +60,7 @@ fn psd_band_can_be_restricted_and_path_is_relative_to_the_scenario() {
 
 #[test]
 fn errors_point_at_the_file_to_fix() {
-    let text = fs::read_to_string(shipped("psd-example.toml")).unwrap();
+    let text = fs::read_to_string(scenario_path("psd-example.toml")).unwrap();
     let err = Scenario::from_str(&text, Path::new("/nowhere/s.toml")).unwrap_err();
     assert!(
         matches!(err, ScenarioError::PsdRead { line: 10, .. }),

@@ -1,18 +1,12 @@
 //! End-to-end tests of the fidelity ladder on the command line: `sealsim tradeoff` (the
 //! measured speed/accuracy table) and every level through `sealsim leak --fidelity`.
 
+use crate::common::scenario_path;
 use assert_cmd::cargo::cargo_bin_cmd;
 use predicates::prelude::*;
 use std::collections::HashMap;
 use std::fs;
-use std::path::{Path, PathBuf};
 use tempfile::TempDir;
-
-fn scenario_path(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("scenarios")
-        .join(name)
-}
 
 /// The CSV as (header → cell) maps, with no NaN or infinity anywhere.
 fn parse(text: &str) -> Vec<HashMap<String, String>> {

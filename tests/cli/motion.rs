@@ -3,6 +3,8 @@
 //! CSV, the drag is linear in the speed, the stroke volumes, and that every bad `[motion]`
 //! exits with status 2 naming `file:line: motion.KEY:` and writes nothing.
 
+use crate::common::{PAPER, rel, scenario_path};
+use crate::support::{HISTORY_HEADER, no_nan};
 use assert_cmd::cargo::cargo_bin_cmd;
 use predicates::prelude::*;
 use serde_json::Value;
@@ -10,36 +12,16 @@ use std::fs;
 use std::path::{Path, PathBuf};
 use tempfile::TempDir;
 
-const WIPER: &str = include_str!("../scenarios/wiper-blade-water.toml");
-const ROD: &str = include_str!("../scenarios/hydraulic-rod-seal.toml");
-const PAPER: &str = include_str!("../scenarios/persson-yang-2008.toml");
+const WIPER: &str = include_str!("../../scenarios/wiper-blade-water.toml");
+const ROD: &str = include_str!("../../scenarios/hydraulic-rod-seal.toml");
 
 const LEAK_HEADER: &str =
     "nominal_pressure_Pa,zeta_c,lambda_c_m,u_c_m,ubar_c_m,hrms_c_m,leak_rate_m3_per_s,state";
 const DRAG_COLUMNS: &str = "drag_leak_rate_m3_per_s,film_thickness_m,speed_bound_m_per_s";
 const STROKE_COLUMNS: &str = "out_stroke_volume_m3,in_stroke_volume_m3,net_volume_per_cycle_m3";
-const HISTORY_HEADER: &str = "time_s,temperature_K,reduced_time_s,shift_factor,\
-sealing_force_N_per_m,peak_pressure_Pa,mean_pressure_Pa,contact_width_m,u_c_m,\
-leak_rate_m3_per_s,leaked_volume_m3,state,open_fraction";
 
 /// The wiper's sliding-speed line, replaced by the bad-input cases.
 const WIPER_SPEED: &str = "sliding_speed = \"1 cm/s\"        # PY08 §8's example speed";
-
-fn scenario_path(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("scenarios")
-        .join(name)
-}
-
-fn rel(a: f64, b: f64) -> f64 {
-    (a - b).abs() / b.abs().max(f64::MIN_POSITIVE)
-}
-
-fn no_nan(text: &str, what: &str) {
-    for bad in ["NaN", "nan", "inf"] {
-        assert!(!text.contains(bad), "{what} contains {bad}:\n{text}");
-    }
-}
 
 /// `sealsim leak <scenario> <args>` → (header, rows as cells, stderr), expecting success.
 fn leak(scenario: &Path, args: &[&str]) -> (String, Vec<Vec<String>>, String) {

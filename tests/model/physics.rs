@@ -1,6 +1,7 @@
 //! Physics of the static engine against independent references, closed forms, limits,
 //! scaling and convergence (DESIGN §2–3.1, PY08 §2–3).
 
+use crate::common::rel;
 use sealsim::contact::{
     ContactSettings, ContactTable, CriticalJunction, Junction, PerssonContact, QuadratureSettings,
     TableSettings,
@@ -19,10 +20,6 @@ fn leaking(j: Junction) -> CriticalJunction {
         Junction::Leaking(j) => j,
         Junction::Sealed => panic!("expected a leaking junction"),
     }
-}
-
-fn rel(a: f64, b: f64) -> f64 {
-    (a / b - 1.0).abs()
 }
 
 /// Values from tests/reference/persson_reference.py: scipy adaptive quadrature of the

@@ -2,7 +2,8 @@
 //! problem, determinism, and — as `#[ignore]`d studies whose figures are in the README — its own
 //! refinement and its comparison with the analytic levels over P0/E*.
 //!
-//! Run the studies with `cargo test --release --test numerical -- --ignored --nocapture`.
+//! Run the studies with
+//! `cargo test --release --test model numerical:: -- --ignored --nocapture`.
 
 use sealsim::contact::{ContactSettings, Elastic, PerssonContact};
 use sealsim::fluid::Fluid;

@@ -1,6 +1,7 @@
 //! Particle clogging of the critical constrictions (issue 5, DESIGN §7): the closed form,
 //! limits, convergence of the ODE and extremes.
 
+use crate::common::PAPER;
 use sealsim::clogging::{Contamination, SizeDistribution};
 use sealsim::contact::PerssonContact;
 use sealsim::leak::Fidelity;
@@ -8,8 +9,7 @@ use sealsim::scenario::Scenario;
 use sealsim::simulate::{LifeProblem, LifeResult, SealState, simulate};
 use std::path::Path;
 
-const PAPER: &str = include_str!("../scenarios/persson-yang-2008.toml");
-const NBR: &str = include_str!("../scenarios/oring-nbr-water-80c.toml");
+const NBR: &str = include_str!("../../scenarios/oring-nbr-water-80c.toml");
 const DAY: f64 = 86400.0;
 
 /// The paper's flat seal with an elastic rubber: constant Q̇0 and u_c over the whole run.

@@ -21,9 +21,7 @@ fn repo_file(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join(name)
 }
 
-fn scenario_path(name: &str) -> PathBuf {
-    repo_file("scenarios").join(name)
-}
+use crate::common::scenario_path;
 
 /// Runs `sealsim <args>`, expects success and returns stdout.
 fn stdout_ok(args: &[&str]) -> String {

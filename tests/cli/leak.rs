@@ -2,15 +2,15 @@
 //! every kind of bad input exits with status 2, names the file, line and key, never panics and
 //! never creates or touches the `-o` file.
 
+use crate::common::{PAPER, rel, scenario_path};
 use assert_cmd::cargo::cargo_bin_cmd;
 use predicates::prelude::*;
 use std::fs;
 use std::path::{Path, PathBuf};
 use tempfile::TempDir;
 
-const PAPER: &str = include_str!("../scenarios/persson-yang-2008.toml");
-const PSD_EXAMPLE: &str = include_str!("../scenarios/psd-example.toml");
-const PSD_EXAMPLE_CSV: &str = include_str!("../scenarios/psd-example.csv");
+const PSD_EXAMPLE: &str = include_str!("../../scenarios/psd-example.toml");
+const PSD_EXAMPLE_CSV: &str = include_str!("../../scenarios/psd-example.csv");
 
 const HEADER: &str =
     "nominal_pressure_Pa,zeta_c,lambda_c_m,u_c_m,ubar_c_m,hrms_c_m,leak_rate_m3_per_s,state";
@@ -18,12 +18,6 @@ const HEADER: &str =
 /// Reference values at P0 = 0.2 MPa from tests/reference/persson_reference.py (scipy).
 const REFERENCE_ZETA_C: f64 = 16.1860614;
 const REFERENCE_U_C: f64 = 1.23573438e-7;
-
-fn scenario_path(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("scenarios")
-        .join(name)
-}
 
 /// One parsed data row of the leak CSV.
 #[derive(Debug)]
@@ -71,10 +65,6 @@ fn parse_csv(text: &str) -> Vec<Row> {
             }
         })
         .collect()
-}
-
-fn rel(a: f64, b: f64) -> f64 {
-    (a / b - 1.0).abs()
 }
 
 #[test]

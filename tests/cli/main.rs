@@ -1,0 +1,23 @@
+//! End-to-end tests of the `sealsim` binary (one test binary: linking one is much faster than
+//! one per file). Each module is a former `tests/cli_NAME.rs`; run one with
+//! `cargo test --release --test cli NAME::`.
+
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::panic,
+    reason = "tests and benches: a failure is a test failure"
+)]
+
+#[path = "../common/mod.rs"]
+mod common;
+mod support;
+
+mod figures;
+mod fit;
+mod leak;
+mod materials;
+mod motion;
+mod run;
+mod small_defects;
+mod tradeoff;

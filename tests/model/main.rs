@@ -1,0 +1,28 @@
+//! Integration tests of the library (one test binary: linking one is much faster than one per
+//! file). Each module is a former `tests/NAME.rs`; run one with
+//! `cargo test --release --test model NAME::`.
+
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::panic,
+    reason = "tests and benches: a failure is a test failure"
+)]
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod bem;
+mod clogging;
+mod dynamic;
+mod effective_medium;
+mod fit;
+mod flow;
+mod height_map;
+mod life;
+mod motion;
+mod numerical;
+mod physics;
+mod properties;
+mod scenario;
+mod viscoelastic;
