@@ -159,11 +159,13 @@ pub struct FlowSolution {
 }
 
 impl FlowSolution {
-    /// Leak rate `Q̇ = (L_y/L_x) σ_eff ΔP` (m³/s) of a seal of `length` across the flow (L_y, m),
-    /// `width` along it (L_x, m) under the pressure difference `pressure_difference` (Pa),
-    /// DESIGN §3.3.
-    pub fn leak_rate(&self, length: f64, width: f64, pressure_difference: f64) -> f64 {
-        length / width * self.conductance * pressure_difference
+    /// The interface as the leak law sees it: a uniform conductance per unit width σ_eff
+    /// (m³/(Pa·s)); the leak rate is [`crate::fluid::Fluid::leak_rate`] over the seal's
+    /// geometry, `Q̇ = (L_y/L_x) σ_eff ΔP` (DESIGN §3.5).
+    pub fn conduction(&self) -> crate::fluid::Conduction {
+        crate::fluid::Conduction::Uniform {
+            conductance: self.conductance,
+        }
     }
 }
 
@@ -850,7 +852,15 @@ mod tests {
         let u = 0.1e-6;
         let s = solve(&[u; 16], 4, PIXEL, ETA, &FlowSettings::default()).unwrap();
         // L_y = 10 mm, L_x = 1 mm, ΔP = 1 MPa
-        let q = s.leak_rate(10e-3, 1e-3, 1e6);
+        let fluid = crate::fluid::Fluid {
+            viscosity: ETA,
+            pressure_difference: 1e6,
+        };
+        let geometry = crate::fluid::FlowGeometry {
+            along_flow: 1e-3,
+            across_flow: 10e-3,
+        };
+        let q = fluid.leak_rate(geometry, s.conduction());
         assert!(rel(q, 10.0 * sigma(u) * 1e6) <= 1e-14);
     }
 
