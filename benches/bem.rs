@@ -1,4 +1,4 @@
-//! Speed of the FFT boundary-element contact solve (DESIGN §3.5; targets 512² ≤ 0.5 s,
+//! Speed of the FFT boundary-element contact solve (docs/model.md §3.5; targets 512² ≤ 0.5 s,
 //! 1024² ≤ 3 s, 2048² ≤ 30 s on 2 cores).
 //!
 //! Surface: `numerical::surface::synthesize` of a self-affine spectrum, H = 0.8, h_rms = 1 µm

@@ -1,4 +1,4 @@
-//! Speed of the thin-film Reynolds solve (DESIGN §3.5) on a realistic gap field: 512² cells with
+//! Speed of the thin-film Reynolds solve (docs/model.md §3.5) on a realistic gap field: 512² cells with
 //! each preconditioner, 1024² with the default multigrid (target: 1024² ≤ 5 s; Jacobi and
 //! MIC(0) take tens of seconds there — see `tests/flow.rs`, test `timings`, for a one-shot
 //! table of every size and preconditioner). The gap is

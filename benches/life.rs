@@ -1,7 +1,7 @@
 //! Speed of the seal-life simulation: a 30-year O-ring run (the shipped NBR scenario,
 //! 20 points per decade, critical-junction fidelity, 16 strips across the Hertz profile),
 //! contact table build included. Target ≤ 20 ms; the figure goes in the README.
-//! With particle clogging (issue 5, DESIGN §7): the same run in dirty water (log-normal dirt,
+//! With particle clogging (issue 5, docs/model.md §7): the same run in dirty water (log-normal dirt,
 //! median 1.5 µm, 1e10 /m³), without and with re-routing; target ≤ 3× the clean run.
 
 #![allow(

@@ -1,4 +1,4 @@
-//! Particle clogging of the critical constrictions (DESIGN §7, after PY08 §6).
+//! Particle clogging of the critical constrictions (docs/model.md §7, after PY08 §6).
 //!
 //! Particles of diameter d larger than the height u_c of the critical constriction cannot
 //! pass it and block the channel that carries them ("sieving", complete blocking, Hermia

@@ -1,4 +1,4 @@
-//! Reciprocating (dynamic) seals at low sliding speed (PY08 §8, eqs. 7–17; DESIGN §3.4).
+//! Reciprocating (dynamic) seals at low sliding speed (PY08 §8, eqs. 7–17; docs/model.md §3.4).
 //!
 //! # The model, derived from the paper's text
 //!
@@ -26,7 +26,7 @@
 //!   so the choice changes the split, never Q̇;
 //! * `P̃(u) = P(u)/∫_{u_c}^∞ P(u′) du′` on `u > u_c` (the paper's approximation, after eq. 8),
 //!   with P(u) the separation distribution of the whole interface
-//!   ([`SeparationDistribution::persson`], DESIGN §3.3);
+//!   ([`SeparationDistribution::persson`], docs/model.md §3.3);
 //! * `C_a = 12 l_a η ∫ P̃/(λ(u) u³) du` (eq. 11) needs the unknown channel widths λ(u). The
 //!   paper drops the factor `M(C_a − C_b)` in the denominator of eq. 13 ("negligible compared
 //!   to unity"); so does sealsim. (Integrating dp/ds from the junction to the outlet actually
@@ -41,7 +41,7 @@
 //! `Q̇ = (L_y/L_x) M [ΔP + (B_a + B_b) v0]`  (**eq. 13**, with eq. 3's factor) \[m³/s\].
 //!
 //! At `v0 = 0` this is exactly sealsim's static leak [`crate::fluid::Fluid::leak_rate`],
-//! `(L_y/L_x) α u_c³ ΔP/(12η)` (eq. 3). DESIGN §3.4 writes `Q̇ = M[ΔP + (B_a+B_b)v0]` without
+//! `(L_y/L_x) α u_c³ ΔP/(12η)` (eq. 3). docs/model.md §3.4 writes `Q̇ = M[ΔP + (B_a+B_b)v0]` without
 //! the cell count and a single `B = 6 L η ∫…`; that B is `B_a + B_b` with `L = L_x`.
 //!
 //! **Wiper film (eqs. 14–17).** With `ΔP = 0`, `Q̇ = (L_y/L_x) M (B_a+B_b) v0
@@ -290,7 +290,7 @@ impl DragCoefficients {
         }
     }
 
-    /// `B_a + B_b = 6 L_x η J` \[Pa·s/m\] (DESIGN §3.4's B).
+    /// `B_a + B_b = 6 L_x η J` \[Pa·s/m\] (docs/model.md §3.4's B).
     pub fn b(&self) -> f64 {
         self.b_a + self.b_b
     }

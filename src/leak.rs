@@ -32,7 +32,7 @@ impl FlatSeal {
     }
 }
 
-/// Which level of the fidelity ladder (DESIGN §4) evaluates the contact and the leak.
+/// Which level of the fidelity ladder (docs/model.md §4) evaluates the contact and the leak.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Fidelity {
     /// `u_c ≈ h_rms(ζc)` (PY08 §5): closed forms only, no separation quadrature.
@@ -43,11 +43,11 @@ pub enum Fidelity {
     /// back to the exact path outside the table's range).
     #[default]
     Table,
-    /// Bruggeman's 2-D effective medium over the separation distribution P(u) (DESIGN §3.3,
+    /// Bruggeman's 2-D effective medium over the separation distribution P(u) (docs/model.md §3.3,
     /// [`crate::contact::effective_medium`]), tabulated once per surface
     /// ([`EffectiveMediumTable`]).
     EffectiveMedium,
-    /// The numerical reference (DESIGN §3.5, [`crate::numerical`]): BEM contact, percolation
+    /// The numerical reference (docs/model.md §3.5, [`crate::numerical`]): BEM contact, percolation
     /// and Reynolds flow on realisations of the surface (or on a measured height map),
     /// tabulated against P0/E* at a few nodes ([`NumericalTable`]); seconds to minutes to build.
     Numerical,

@@ -4,11 +4,11 @@
 //! * O-ring of cord diameter d and mean diameter D squeezed by ε (compression/d) between flat
 //!   plates — Lindley's empirical relations for a laterally unrestrained O-ring
 //!   (P.B. Lindley, "Compression characteristics of laterally-unrestrained rubber O-rings",
-//!   J. Inst. Rubber Ind. 1 (1967) 209), as written in DESIGN §6:
+//!   J. Inst. Rubber Ind. 1 (1967) 209), as written in docs/model.md §6:
 //!   force per unit length `f = E d (1.25 ε^{3/2} + 50 ε⁶)` \[N/m\], contact width
 //!   `b = d √(6ε/π)` \[m\], and a Hertz-shaped profile `p(x) = p_max √(1 − (2x/b)²)`,
 //!   `p_max = 4 f/(π b)`. The constants could not be checked word for word against the
-//!   original here (DESIGN marks them "recalled"); what is tested is their own consistency
+//!   original here (docs/model.md marks them "recalled"); what is tested is their own consistency
 //!   (∫p dx = f) and the stated range: the relations are meant for squeeze up to ≈ 30 %, and
 //!   sealsim warns beyond (and below 5 %, where the ε⁶ term is irrelevant but the contact is
 //!   too narrow for a Hertz picture of a real groove).
@@ -136,7 +136,7 @@ impl Profile {
         }
     }
 
-    /// Resistance per unit width of the profile's strips in series (DESIGN §3.2),
+    /// Resistance per unit width of the profile's strips in series (docs/model.md §3.2),
     /// `R = ∫ dx / σ(p(x))` \[Pa·s/m²\], with the local conductance per unit width `σ(p)`
     /// [m³/(Pa·s)] supplied by the caller (`σ = α u_c(p)³/(12η)`; `0` where sealed); the leak
     /// rate is then `Q̇ = L_y ΔP / R` ([`crate::fluid::Fluid::leak_rate`] with

@@ -3,7 +3,7 @@
 //! Every spectrum sealsim handles is represented exactly as a *piecewise power law* in q:
 //! on the segment `[q_k, q_{k+1}]`, `C(q) = C_k (q/q_k)^{s_k}`. A self-affine fractal is one
 //! segment (PY08 §3: `C = C0 q^{-2(1+H)}`), a spectrum with a roll-off is two, and a tabulated
-//! spectrum interpolated linearly in log C against log q (DESIGN §2) is one segment per interval.
+//! spectrum interpolated linearly in log C against log q (docs/model.md §2) is one segment per interval.
 //! The moments `∫ q^n C(q) dq` that the contact theory needs are then closed forms, so no
 //! quadrature error enters G(ζ), h_rms(ζ) or the critical magnification ζc.
 //!
@@ -78,7 +78,7 @@ pub struct Spectrum {
 impl Spectrum {
     /// Self-affine fractal with rms roughness `h_rms` \[m\], Hurst exponent `hurst` ∈ (0, 1),
     /// cut-offs `q0 < q1` \[1/m\] and an optional roll-off `q_r` ∈ (q0, q1) below which C is
-    /// flat at `C(q_r)` (DESIGN §2).
+    /// flat at `C(q_r)` (docs/model.md §2).
     ///
     /// Normalised exactly so that `2π ∫_{q0}^{q1} q C dq = h_rms²`. Without roll-off this is
     /// PY08 §3's `C0 = (H/π) h_rms² [q0^{-2H} − q1^{-2H}]^{-1}` (the paper's approximate form
@@ -148,7 +148,7 @@ impl Spectrum {
     }
 
     /// Tabulated spectrum: strictly increasing `q` \[1/m\] with `C > 0` \[m⁴\], interpolated
-    /// linearly in `ln C` against `ln q` (DESIGN §2). At least two points.
+    /// linearly in `ln C` against `ln q` (docs/model.md §2). At least two points.
     pub fn tabulated(q: &[f64], c: &[f64]) -> Result<Self, SpectrumError> {
         if q.len() != c.len() {
             return Err(SpectrumError::Invalid(
@@ -221,7 +221,7 @@ impl Spectrum {
     }
 
     /// Returns a copy with `C` multiplied by a constant so that the rms roughness is `h_rms`.
-    /// Every contact quantity of the copy follows from the scaling law of DESIGN §2.
+    /// Every contact quantity of the copy follows from the scaling law of docs/model.md §2.
     pub fn with_rms_roughness(&self, h_rms: f64) -> Self {
         let mut s = self.clone();
         s.rescale_to(h_rms);

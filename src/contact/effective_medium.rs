@@ -1,4 +1,4 @@
-//! The effective-medium level (DESIGN §3.3): Bruggeman's 2-D effective conductance over the
+//! The effective-medium level (docs/model.md §3.3): Bruggeman's 2-D effective conductance over the
 //! distribution of interfacial separations.
 //!
 //! **Separation distribution** [recalled: Lorenz & Persson, Eur. Phys. J. E 31 (2010) 159;
@@ -8,7 +8,7 @@
 //!         { e^{−(u−u1(ζ))²/2h²(ζ)} + e^{−(u+u1(ζ))²/2h²(ζ)} }`,
 //!
 //! with ζ1 = q1/q0, h(ζ) = h_rms(ζ) the roughness left above ζq0 (PY08 eq. 4) and u1(ζ) the
-//! separation of the surfaces that come into contact at ζ (DESIGN §2). It is kept as a contact
+//! separation of the surfaces that come into contact at ζ (docs/model.md §2). It is kept as a contact
 //! fraction `c = A(ζ1)/A0` plus a set of weighted *folded* Gaussians — one per Gauss–Legendre
 //! node in ln M3(ζ), weight `w_i = ω_i [−dA/d ln M3]/A0` — so that the mass, the mean and the CDF
 //! are closed forms. The weights integrate −A′ from 1 to ζ1, so `c + Σ w_i = A(1)/A0 = 1` up to
@@ -20,7 +20,7 @@
 //! `g = 12 η σ_eff = u_eff³` \[m³\] by bisection in ln g. The left-hand side increases
 //! monotonically from `2c − 1` (g → 0⁺) to 1 (g → ∞): a root exists only below the 2-D
 //! threshold c < 1/2; at and above it the interface is sealed, g = 0 exactly.
-//! The leak rate of a flat seal is `Q̇ = (L_y/L_x) σ_eff ΔP` (DESIGN §3.3).
+//! The leak rate of a flat seal is `Q̇ = (L_y/L_x) σ_eff ΔP` (docs/model.md §3.3).
 
 use super::PerssonContact;
 use crate::math::quadrature::{composite, gauss_legendre};

@@ -1,7 +1,7 @@
 //! Persson contact mechanics and the critical junction of a rough interface (PY08 §2).
 //!
 //! Everything here depends on the nominal pressure and the rubber only through the reduced
-//! pressure `s = P0/E*`, `E* = E/(1−ν²)` (DESIGN §2, "Scaling"). With the moments of the
+//! pressure `s = P0/E*`, `E* = E/(1−ν²)` (docs/model.md §2, "Scaling"). With the moments of the
 //! spectrum `M3(ζ) = ∫_{q0}^{ζq0} q³C dq`:
 //! * `G(ζ) = (π/4) E*² M3(ζ)` and `A(ζ)/A0 = erf(P0/(2√G)) = erf(s/√(π M3))`;
 //! * `p(ζ) = P0 A0/A(ζ)`;
@@ -331,7 +331,7 @@ impl PerssonContact {
         Junction::Leaking(self.junction_from(ln_a, u_c, ubar_c))
     }
 
-    /// The rule-of-thumb junction (DESIGN §4, PY08 §5 notes that u1(ζc) and h_rms(ζc) are
+    /// The rule-of-thumb junction (docs/model.md §4, PY08 §5 notes that u1(ζc) and h_rms(ζc) are
     /// close): ζc and λc as in [`Self::critical_junction`], and `u_c ≈ h_rms(ζc)` (PY08 eq. 4),
     /// all closed forms — no separation quadrature. This level does not compute ū(ζc) either:
     /// `ubar_c` carries the same h_rms(ζc).
@@ -348,7 +348,7 @@ impl PerssonContact {
 
     /// The critical junction at reduced pressure `s` for an arbitrary percolation threshold
     /// `threshold` ∈ (0, 1) instead of the settings' a_c (used by clogging with re-routing,
-    /// DESIGN §7: blocked channels count as contact, so the flow percolates at the smaller
+    /// docs/model.md §7: blocked channels count as contact, so the flow percolates at the smaller
     /// threshold `a_eff`). Same quadrature as [`Self::critical_junction`], with
     /// `M3(ζc) = s²/(π erfinv²(threshold))`; erfinv² is computed per call. Sealed for a
     /// threshold outside (0, 1).

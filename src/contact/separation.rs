@@ -105,7 +105,7 @@ mod tests {
 
     #[test]
     fn check_values_from_design() {
-        // DESIGN §2 check values for γ = 0.4, confirmed independently by direct adaptive
+        // docs/model.md §2 check values for γ = 0.4, confirmed independently by direct adaptive
         // quadrature in tests/reference/persson_reference.py (scipy, rtol 1e-13).
         let cases = [
             (0.01, 2.459_355_241_2),

@@ -1,7 +1,7 @@
 //! The contact table: u_c and ū_c against the reduced pressure P0/E*, built once per surface.
 //!
 //! For a given spectrum and settings, the critical junction depends on the nominal pressure
-//! and the rubber only through `s = P0/E*` (DESIGN §2). ζc, λc and h_rms(ζc) are closed forms
+//! and the rubber only through `s = P0/E*` (docs/model.md §2). ζc, λc and h_rms(ζc) are closed forms
 //! and are always computed exactly; only the quadrature results u_c and ū_c are tabulated, as
 //! `ln(u/h_rms)` on a uniform grid in `v = logit(s/s_seal) = ln(r/(1−r))`, `r = s/s_seal`,
 //! with 4-point cubic interpolation. `v` is log-uniform at low pressure, where u_c varies like
@@ -137,7 +137,7 @@ impl ContactTable {
 }
 
 /// The effective gap `u_eff(P0/E*) = (12 η σ_eff)^{1/3}` of the effective-medium level
-/// (DESIGN §3.3), built once per surface like [`ContactTable`]: `ln(u_eff/h_rms)` on a uniform
+/// (docs/model.md §3.3), built once per surface like [`ContactTable`]: `ln(u_eff/h_rms)` on a uniform
 /// grid in `logit(s/s_half)`, where `s_half = erfinv(½) √(π M3(q1))` is the pressure at which
 /// the contact fraction reaches the 2-D threshold ½ and σ_eff vanishes (linearly in u_eff).
 /// Outside the tabulated range (and within `upper_gap` of `s_half`) the Bruggeman solve

@@ -70,7 +70,7 @@ impl Status {
     }
 }
 
-/// Arrhenius chemical stress relaxation (DESIGN §6, ISO 11346 practice): the sealing stress
+/// Arrhenius chemical stress relaxation (docs/model.md §6, ISO 11346 practice): the sealing stress
 /// is multiplied by `exp(−∫ k(T) dt)`, `k(T) = k_ref exp(−(Ea/R)(1/T − 1/T_ref))`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Ageing {

@@ -1,4 +1,4 @@
-//! Prony series fitted to measured relaxation or DMA data (DESIGN §5, "Fitting").
+//! Prony series fitted to measured relaxation or DMA data (docs/model.md §5, "Fitting").
 //!
 //! The relaxation times are fixed on a log-spaced grid, so the model is linear in its
 //! unknowns, E∞ ≥ 0 and E_i ≥ 0, and the fit is a non-negative least-squares problem

@@ -1,5 +1,5 @@
 //! Viscoelastic rubber: Prony series in reduced time, time–temperature shift, fitting, and
-//! the material library's model types (DESIGN §5).
+//! the material library's model types (docs/model.md §5).
 
 pub mod compound;
 pub mod curve;

@@ -1,4 +1,4 @@
-//! Prony-series relaxation modulus in reduced time (DESIGN §5).
+//! Prony-series relaxation modulus in reduced time (docs/model.md §5).
 //!
 //! `E(ξ) = E∞ + Σ E_i e^{−ξ/τ_i}`, `E0 = E∞ + Σ E_i`. Storage and loss moduli
 //! `E′(ω) = E∞ + Σ E_i ω²τ_i²/(1+ω²τ_i²)`, `E″(ω) = Σ E_i ωτ_i/(1+ω²τ_i²)`.

@@ -1,5 +1,5 @@
 //! Time–temperature superposition: shift factors a_T and reduced time ξ(t) = ∫ dt / a_T(T(t))
-//! over a temperature history (DESIGN §5).
+//! over a temperature history (docs/model.md §5).
 //!
 //! * WLF (Williams, Landel & Ferry, J. Am. Chem. Soc. 77 (1955) 3701):
 //!   `log10 a_T = −C1 (T − Tref)/(C2 + T − Tref)`; a_T < 1 above Tref (faster relaxation).

@@ -1,6 +1,6 @@
 //! Frictionless normal contact of an elastic half-space with a rigid rough surface: FFT boundary
 //! elements solved by the constrained conjugate-gradient method of Polonsky & Keer (Wear 231
-//! (1999) 206), load-controlled to a prescribed mean nominal pressure (DESIGN §3.5).
+//! (1999) 206), load-controlled to a prescribed mean nominal pressure (docs/model.md §3.5).
 //!
 //! # Geometry and sign conventions
 //!

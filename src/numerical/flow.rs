@@ -1,4 +1,4 @@
-//! Thin-film Reynolds flow through a gap field (DESIGN §3.5): effective conductance of the
+//! Thin-film Reynolds flow through a gap field (docs/model.md §3.5): effective conductance of the
 //! non-contact region of a periodic cell.
 //!
 //! # Model
@@ -22,7 +22,7 @@
 //! with `Q_cross` the volume flow (m³/s) through any cross-section x = const (the same for every
 //! cross-section: conservation). For a seal of width `L_x` (along the flow) and length `L_y`
 //! (across it) built from such cells, the leak rate is `Q̇ = (L_y/L_x) σ_eff ΔP` — the form of
-//! DESIGN §3.3 (effective medium) and §3.1 with `σ_eff = α u_c³/(12η)`. The *effective gap* is
+//! docs/model.md §3.3 (effective medium) and §3.1 with `σ_eff = α u_c³/(12η)`. The *effective gap* is
 //! `(12 η σ_eff)^{1/3}`, the uniform gap with the same conductance (compare with u_c).
 //!
 //! For a square cell σ_eff does not depend on the pixel size (a 2-D conductance is scale-free);
@@ -161,7 +161,7 @@ pub struct FlowSolution {
 impl FlowSolution {
     /// The interface as the leak law sees it: a uniform conductance per unit width σ_eff
     /// (m³/(Pa·s)); the leak rate is [`crate::fluid::Fluid::leak_rate`] over the seal's
-    /// geometry, `Q̇ = (L_y/L_x) σ_eff ΔP` (DESIGN §3.5).
+    /// geometry, `Q̇ = (L_y/L_x) σ_eff ΔP` (docs/model.md §3.5).
     pub fn conduction(&self) -> crate::fluid::Conduction {
         crate::fluid::Conduction::Uniform {
             conductance: self.conductance,

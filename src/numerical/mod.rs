@@ -1,4 +1,4 @@
-//! Numerical reference (DESIGN §3.5): a periodic random surface from the spectrum, FFT boundary
+//! Numerical reference (docs/model.md §3.5): a periodic random surface from the spectrum, FFT boundary
 //! elements for the frictionless contact of an elastic half-space on it, percolation of the
 //! non-contact region and thin-film Reynolds flow through the gap field.
 //!

@@ -1,4 +1,4 @@
-//! Percolation of the non-contact region along the flow direction (DESIGN §3.5).
+//! Percolation of the non-contact region along the flow direction (docs/model.md §3.5).
 //!
 //! The interface is the periodic `n × n` cell grid of [`super::HeightMap`] (row-major,
 //! `cell = iy * n + ix`, x along the flow). A cell is *open* when the fluid can be there (gap

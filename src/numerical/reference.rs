@@ -1,4 +1,4 @@
-//! The numerical level (DESIGN §3.5, §4): an ensemble of contact-and-flow solutions at one
+//! The numerical level (docs/model.md §3.5, §4): an ensemble of contact-and-flow solutions at one
 //! nominal pressure.
 //!
 //! Per realisation: a periodic random-phase surface from the spectrum ([`super::surface`], or a
@@ -7,7 +7,7 @@
 //! percolation along the flow ([`super::percolation`]) and thin-film Reynolds flow through the
 //! gap field ([`super::flow`]) → effective conductance σ_eff. The ensemble gives the mean and
 //! the spread of σ_eff, of the contact fraction and of the mean gap; the leak rate of a flat
-//! seal is `Q̇ = (L_y/L_x) σ_eff ΔP` (DESIGN §3.3, as for the effective medium).
+//! seal is `Q̇ = (L_y/L_x) σ_eff ΔP` (docs/model.md §3.3, as for the effective medium).
 //!
 //! The grid resolves only a band of wavevectors: the synthetic surfaces keep the spectrum on
 //! `[q0, band · q0]` ([`band_limited`]); comparisons with the analytic levels are made on that

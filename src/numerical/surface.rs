@@ -1,4 +1,4 @@
-//! Periodic random rough surfaces synthesised from a power spectrum (DESIGN §3.5).
+//! Periodic random rough surfaces synthesised from a power spectrum (docs/model.md §3.5).
 //!
 //! The cell is the square of side `L = 2π/q0` (q0 = the spectrum's lower cut-off) sampled on
 //! `n × n` pixels of size `a = L/n`. A height field periodic on the cell is a Fourier series

@@ -28,7 +28,7 @@ use serde::Serialize;
 /// * `state` is `leaking`, `sealed` or `lift_off` (the peak contact pressure is below ΔP:
 ///   the seal opens and the leak rate shown is the model's, which no longer applies);
 /// * `open_fraction` is the open fraction f of the critical channels under particle
-///   clogging (DESIGN §7), always written (1 without `[contamination]`) so that the schema is
+///   clogging (docs/model.md §7), always written (1 without `[contamination]`) so that the schema is
 ///   one.
 pub const HISTORY_COLUMNS: [&str; 13] = [
     "time_s",

@@ -1,4 +1,4 @@
-//! `[contamination]` → [`Contamination`] (DESIGN §7), and `[simulation] clogging_tolerance`.
+//! `[contamination]` → [`Contamination`] (docs/model.md §7), and `[simulation] clogging_tolerance`.
 //!
 //! Keys: `number_concentration` (1/m³) XOR `volume_fraction` (dimensionless; then
 //! n_p = φ / E\[π d³/6\] from the size distribution), `size_distribution` (an inline table with

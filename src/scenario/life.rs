@@ -540,7 +540,7 @@ impl Source<'_> {
     }
 }
 
-/// A fidelity name of the ladder (DESIGN §4): `rule-of-thumb`, `critical-junction` (= `table`,
+/// A fidelity name of the ladder (docs/model.md §4): `rule-of-thumb`, `critical-junction` (= `table`,
 /// the contact table), `exact` (critical junction by quadrature), `effective-medium`,
 /// `numerical` — the names and aliases of [`Fidelity::ALL`].
 pub fn parse_fidelity(name: &str) -> Result<Fidelity, String> {

@@ -17,7 +17,7 @@
 //! Whenever provenance is given it is checked: every key names a parameter the material gives,
 //! every value is a non-empty string.
 //!
-//! The static leak problem takes the relaxed modulus E∞ and the material's ν (DESIGN §6,
+//! The static leak problem takes the relaxed modulus E∞ and the material's ν (docs/model.md §6,
 //! default `relaxed`); a scenario material with E∞ = 0 is therefore an error.
 
 use super::error::{ScenarioError, Source};
@@ -241,7 +241,7 @@ impl Source<'_> {
                 key,
                 format!(
                     "no relaxed modulus: the material ({}) has E∞ = 0 (no equilibrium modulus), \
-                     but the static leak problem takes the relaxed modulus E∞ (DESIGN §6); give \
+                     but the static leak problem takes the relaxed modulus E∞ (docs/model.md §6); give \
                      a long_term_modulus > 0",
                     material.name
                 ),

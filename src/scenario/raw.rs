@@ -223,7 +223,7 @@ pub(super) struct RawScenarioAgeing {
     pub reference_temperature: Option<Quantity>,
 }
 
-/// `[numerical]`: grid, band, realisations and seed of the numerical level (DESIGN §3.5).
+/// `[numerical]`: grid, band, realisations and seed of the numerical level (docs/model.md §3.5).
 #[derive(Debug, serde::Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct RawNumerical {
@@ -245,7 +245,7 @@ pub(super) struct RawSimulation {
 }
 
 /// `[contamination]`: particles in the fluid that clog the critical constrictions
-/// (DESIGN §7); which keys go together is checked in validation.
+/// (docs/model.md §7); which keys go together is checked in validation.
 #[derive(Debug, serde::Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct RawContamination {

@@ -1,4 +1,4 @@
-//! Failure criteria (DESIGN §8) and the power-law interpolation used between time steps.
+//! Failure criteria (docs/model.md §8) and the power-law interpolation used between time steps.
 
 use crate::surface::expm1_over_x;
 

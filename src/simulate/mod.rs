@@ -1,4 +1,4 @@
-//! The seal-life time loop (DESIGN §1, §3.2, §5–6, §8).
+//! The seal-life time loop (docs/model.md §1, §3.2, §5–6, §8).
 //!
 //! Each step: temperature T(t) → reduced time ξ (exact for constant T, adaptive quadrature
 //! otherwise) → squeeze ε(t) with thermal strain → exact Prony update of the hereditary
@@ -9,7 +9,7 @@
 //! criteria, located between steps by bisection on the exact state update to ≤ 1e-12 relative
 //! in time.
 //!
-//! With a `[contamination]` block (DESIGN §7, [`crate::clogging`]) the open fraction f of the
+//! With a `[contamination]` block (docs/model.md §7, [`crate::clogging`]) the open fraction f of the
 //! critical channels is integrated alongside, segment by segment between the internal time
 //! points (see `Simulator::integrate_clogging`); without it nothing of that runs.
 //!
@@ -71,7 +71,7 @@ const MAX_STEP_TEMPERATURE_FROZEN_EDGE: f64 = 1.0;
 /// Upper bound of the pieces one internal step is split into for the thermal strain.
 const MAX_THERMAL_PIECES: f64 = 10_000.0;
 
-/// Which modulus the asperity contact sees (DESIGN §6).
+/// Which modulus the asperity contact sees (docs/model.md §6).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum AsperityModulus {
     /// E∞, the low-frequency modulus PY08 uses (conservative). The default.
@@ -670,7 +670,7 @@ impl<'a> Simulator<'a> {
         }
     }
 
-    /// Integrates the open fraction over one internal step `[before, open]` (DESIGN §7).
+    /// Integrates the open fraction over one internal step `[before, open]` (docs/model.md §7).
     ///
     /// The state is `y = ln f` (so f = e^y can never overshoot below 0, and a huge
     /// concentration drives y to −∞, f to 0, within the step), with

@@ -1,4 +1,4 @@
-//! The measured speed/accuracy trade of the fidelity ladder (DESIGN §4): one scenario's static
+//! The measured speed/accuracy trade of the fidelity ladder (docs/model.md §4): one scenario's static
 //! state and life run at every level and at a ladder of numerical settings, each with its wall
 //! time and its error against the most accurate setting run.
 //!

@@ -1,4 +1,4 @@
-//! Particle clogging of the critical constrictions (issue 5, DESIGN §7): the closed form,
+//! Particle clogging of the critical constrictions (issue 5, docs/model.md §7): the closed form,
 //! limits, convergence of the ODE and extremes.
 
 use crate::common::PAPER;

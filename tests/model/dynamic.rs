@@ -1,4 +1,4 @@
-//! Reciprocating seals at low speed (PY08 §8, DESIGN §3.4): the paper's wiper example, the
+//! Reciprocating seals at low speed (PY08 §8, docs/model.md §3.4): the paper's wiper example, the
 //! static limit, linearity in v0, convergence of the integral I, and properties over inputs.
 
 use crate::common::rel;

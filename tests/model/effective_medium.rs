@@ -1,4 +1,4 @@
-//! The effective-medium level (DESIGN §3.3): the separation distribution P(u) and the 2-D
+//! The effective-medium level (docs/model.md §3.3): the separation distribution P(u) and the 2-D
 //! Bruggeman conductance, tested by their properties and closed forms.
 
 use sealsim::contact::effective_medium::FoldedGaussian;

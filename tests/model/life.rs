@@ -79,7 +79,7 @@ fn nbr_like() -> Material {
 
 #[test]
 fn follow_modulus_keeps_the_leak_rate_constant() {
-    // Linear-viscoelastic invariance (DESIGN §6): P0 and the asperity modulus relax alike.
+    // Linear-viscoelastic invariance (docs/model.md §6): P0 and the asperity modulus relax alike.
     let mut p = oring_problem(nbr_like());
     p.asperity_modulus = AsperityModulus::Follow;
     let r = simulate(&p);

@@ -20,6 +20,7 @@ mod fit;
 mod flow;
 mod height_map;
 mod life;
+mod model_reference;
 mod motion;
 mod numerical;
 mod physics;

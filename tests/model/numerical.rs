@@ -1,4 +1,4 @@
-//! The numerical reference end to end (DESIGN §3.5): percolation threshold of the contact
+//! The numerical reference end to end (docs/model.md §3.5): percolation threshold of the contact
 //! problem, determinism, and — as `#[ignore]`d studies whose figures are in the README — its own
 //! refinement and its comparison with the analytic levels over P0/E*.
 //!

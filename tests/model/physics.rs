@@ -1,5 +1,5 @@
 //! Physics of the static engine against independent references, closed forms, limits,
-//! scaling and convergence (DESIGN §2–3.1, PY08 §2–3).
+//! scaling and convergence (docs/model.md §2–3.1, PY08 §2–3).
 
 use crate::common::rel;
 use sealsim::contact::{
@@ -93,7 +93,7 @@ fn matches_independent_reference() {
     }
 }
 
-/// DESIGN §3.1 check value, the paper's wiper case (PY08 §8): ζc ≈ 16.19, u_c ≈ 0.124 µm
+/// docs/model.md §3.1 check value, the paper's wiper case (PY08 §8): ζc ≈ 16.19, u_c ≈ 0.124 µm
 /// (the paper says "≈ 0.1 µm").
 #[test]
 fn paper_wiper_check_value() {
@@ -103,7 +103,7 @@ fn paper_wiper_check_value() {
     assert!((j.u_c - 0.124e-6).abs() < 0.0005e-6, "u_c = {}", j.u_c);
 }
 
-/// Small load: A/A0 → κ P0/(E* h'_rms), κ = √(8/π) (DESIGN §2).
+/// Small load: A/A0 → κ P0/(E* h'_rms), κ = √(8/π) (docs/model.md §2).
 #[test]
 fn small_load_contact_area_is_linear_with_kappa() {
     let c = contact(2e-6, 0.8, 1e4, 7.8e9);
@@ -116,7 +116,7 @@ fn small_load_contact_area_is_linear_with_kappa() {
     }
 }
 
-/// Small load: ū ≈ u0 ln(β E*/P0) with u0 ≈ 0.4255 h_rms for H = 0.8, γ = 0.4 (DESIGN §2).
+/// Small load: ū ≈ u0 ln(β E*/P0) with u0 ≈ 0.4255 h_rms for H = 0.8, γ = 0.4 (docs/model.md §2).
 #[test]
 fn small_load_mean_separation_is_logarithmic() {
     let c = contact(2e-6, 0.8, 1e4, 7.8e9);
@@ -130,7 +130,7 @@ fn small_load_mean_separation_is_logarithmic() {
 }
 
 /// ζc and u_c/h_rms depend on P0/(E* h_rms) only: doubling h_rms and P0 together leaves ζc
-/// unchanged and doubles u_c (DESIGN §2, "Scaling").
+/// unchanged and doubles u_c (docs/model.md §2, "Scaling").
 #[test]
 fn scaling_with_roughness_and_pressure() {
     for (hurst, p0) in [(0.8, 0.2e6), (0.6, 0.05e6), (0.9, 0.3e6)] {

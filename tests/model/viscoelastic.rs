@@ -1,4 +1,4 @@
-//! Viscoelastic numerics against closed forms and independent references (issue 3, DESIGN §5).
+//! Viscoelastic numerics against closed forms and independent references (issue 3, docs/model.md §5).
 
 use sealsim::material::{Prony, PronyTerm, RelaxationState};
 
