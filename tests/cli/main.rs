@@ -21,3 +21,4 @@ mod motion;
 mod run;
 mod small_defects;
 mod tradeoff;
+mod validity;

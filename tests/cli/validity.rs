@@ -1,0 +1,212 @@
+//! One validity system (docs/model.md §9): every limit fires for `sealsim leak` and for
+//! `sealsim run` on the same scenario, with the same message, and a life run reports its worst
+//! value and when.
+
+use crate::common::{rel, scenario_path};
+use crate::support::sealsim;
+use std::fs;
+use tempfile::TempDir;
+
+const PAPER_SURFACE: &str = "rms_roughness = \"2 um\"\nhurst_exponent = 0.8\n\
+                             q0 = \"1e4 1/m\"\nq1 = \"7.8e9 1/m\"";
+const ELASTIC: &str = "youngs_modulus = \"10 MPa\"\npoisson_ratio = 0.5";
+
+/// A flat seal of 1 mm × 10 mm, water, one day; `top` goes before the first table.
+fn flat(p0: &str, dp: &str, surface: &str, material: &str, top: &str, extra: &str) -> String {
+    format!(
+        "name = \"validity case\"\n{top}\n[material]\n{material}\n[surface]\n{surface}\n\
+         [fluid]\nviscosity = \"1e-3 Pa*s\"\npressure_difference = \"{dp}\"\n\
+         [seal]\nkind = \"flat\"\nnominal_pressure = \"{p0}\"\nwidth = \"1 mm\"\nlength = \"10 mm\"\n\
+         [simulation]\nduration = \"1 day\"\n{extra}"
+    )
+}
+
+/// An NBR-70 O-ring (3.53 mm cord) at `temperature` and `squeeze`, on the paper's surface.
+fn oring(temperature: &str, squeeze: f64) -> String {
+    format!(
+        "name = \"validity case\"\n[material]\nlibrary = \"nbr-70\"\n[surface]\n{PAPER_SURFACE}\n\
+         [fluid]\nviscosity = \"1e-3 Pa*s\"\npressure_difference = \"0.1 bar\"\n\
+         [seal]\nkind = \"o-ring\"\ncross_section = \"3.53 mm\"\nmean_diameter = \"50 mm\"\n\
+         squeeze = {squeeze}\n[environment]\ntemperature = \"{temperature}\"\n\
+         [simulation]\nduration = \"1 day\"\n"
+    )
+}
+
+/// `(limit id, section, scenario)`: one scenario per limit that crosses it at installation.
+fn cases() -> Vec<(&'static str, &'static str, String)> {
+    let steep =
+        "rms_roughness = \"4 um\"\nhurst_exponent = 0.7\nq0 = \"3e5 1/m\"\nq1 = \"1e10 1/m\"";
+    let short =
+        "rms_roughness = \"2 um\"\nhurst_exponent = 0.8\nq0 = \"1e4 1/m\"\nq1 = \"3e5 1/m\"";
+    let rough_h =
+        "rms_roughness = \"2 um\"\nhurst_exponent = 0.4\nq0 = \"1e4 1/m\"\nq1 = \"1e7 1/m\"";
+    vec![
+        (
+            "pressure_ratio",
+            "§9.1",
+            flat("0.1 MPa", "0.02 MPa", PAPER_SURFACE, ELASTIC, "", ""),
+        ),
+        (
+            "aspect_ratio",
+            "§9.2",
+            flat("0.2 MPa", "0.01 MPa", steep, ELASTIC, "", ""),
+        ),
+        (
+            "molecular_gap",
+            "§9.3",
+            flat("1 MPa", "0.01 MPa", PAPER_SURFACE, ELASTIC, "", ""),
+        ),
+        (
+            "near_cutoff",
+            "§9.4",
+            flat("0.22 MPa", "0.01 MPa", short, ELASTIC, "", ""),
+        ),
+        (
+            "hurst_exponent",
+            "§9.5",
+            flat("0.2 MPa", "0.01 MPa", rough_h, ELASTIC, "", ""),
+        ),
+        ("squeeze", "§9.6", oring("23 C", 0.35)),
+        ("below_glass_transition", "§9.7", oring("-40 C", 0.25)),
+        ("frozen", "§9.7", oring("-90 C", 0.25)),
+        (
+            "rms_slope",
+            "§9.8",
+            flat("0.2 MPa", "0.01 MPa", PAPER_SURFACE, ELASTIC, "", ""),
+        ),
+        (
+            "speed_above_bound",
+            "§9.9",
+            flat(
+                "0.2 MPa",
+                "0 Pa",
+                PAPER_SURFACE,
+                ELASTIC,
+                "",
+                "[motion]\nsliding_speed = \"1 cm/s\"\n",
+            ),
+        ),
+        (
+            "band_limited",
+            "§9.10",
+            flat(
+                "0.2 MPa",
+                "0.01 MPa",
+                PAPER_SURFACE,
+                ELASTIC,
+                "",
+                "fidelity = \"numerical\"\n[numerical]\nband = 4\npixels_per_wavelength = 2\n\
+                 realisations = 1\n",
+            ),
+        ),
+    ]
+}
+
+/// `(exit success, stderr)` of `sealsim ARGS` in `dir`.
+fn stderr_of(dir: &TempDir, args: &[&str]) -> String {
+    let out = sealsim()
+        .current_dir(dir.path())
+        .args(args)
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{args:?}: {out:?}");
+    String::from_utf8(out.stderr).unwrap()
+}
+
+/// The warning line of `section` in `stderr`.
+fn line_of<'a>(stderr: &'a str, section: &str) -> Option<&'a str> {
+    let tag = format!("[docs/model.md {section}]");
+    stderr
+        .lines()
+        .find(|l| l.starts_with("warning: ") && l.ends_with(&tag))
+}
+
+#[test]
+fn every_limit_fires_for_leak_and_for_run_on_the_same_scenario() {
+    for (id, section, text) in cases() {
+        let dir = TempDir::new().unwrap();
+        fs::write(dir.path().join("case.toml"), &text).unwrap();
+        let leak = stderr_of(&dir, &["leak", "case.toml"]);
+        let run = stderr_of(&dir, &["run", "case.toml", "--summary", "s.json"]);
+        let json: serde_json::Value =
+            serde_json::from_str(&fs::read_to_string(dir.path().join("s.json")).unwrap()).unwrap();
+        let records = json["warnings"].as_array().unwrap();
+        let record = records.iter().find(|r| r["id"] == id);
+        assert!(record.is_some(), "{id}: run summary lacks it: {json}");
+        let record = record.unwrap();
+        assert_eq!(record["section"], format!("docs/model.md {section}"));
+        let (leak_line, run_line) = (line_of(&leak, section), line_of(&run, section));
+        assert!(leak_line.is_some(), "{id}: leak did not warn:\n{leak}");
+        assert!(run_line.is_some(), "{id}: run did not warn:\n{run}");
+        // the same quantity and value in both (the place differs: a pressure, a time; the speed
+        // bound of the drag comes from the exact path in leak and from a table in run)
+        let head = |l: &str| {
+            let end = l
+                .find(" is above")
+                .or_else(|| l.find(" is below"))
+                .unwrap_or(l.len());
+            l[..end].to_owned()
+        };
+        if record["quantity"].is_string() && record["at"] != "setup" {
+            let value = record["value"].as_f64().unwrap();
+            let bound = record["bound"].as_f64().unwrap();
+            assert!(value > 0.0 && bound > 0.0, "{id}: {record}");
+            assert_ne!(value, bound, "{id}");
+            assert_eq!(
+                head(leak_line.unwrap()),
+                head(run_line.unwrap()),
+                "{id}: leak and run state the limit differently"
+            );
+        } else {
+            assert_eq!(leak_line, run_line, "{id}");
+        }
+    }
+}
+
+#[test]
+fn the_80c_oring_reports_its_worst_pressure_ratio_and_when() {
+    let dir = TempDir::new().unwrap();
+    let scenario = scenario_path("oring-nbr-water-80c.toml");
+    let stderr = stderr_of(
+        &dir,
+        &["run", scenario.to_str().unwrap(), "--summary", "s.json"],
+    );
+    let json: serde_json::Value =
+        serde_json::from_str(&fs::read_to_string(dir.path().join("s.json")).unwrap()).unwrap();
+    let ratio = json["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|r| r["id"] == "pressure_ratio")
+        .cloned()
+        .unwrap();
+    // ΔP = 0.2 MPa against a peak pressure that relaxes with the rubber: first above 0.1 early,
+    // worst at the end of the 30 years, when the force has relaxed most
+    let worst = ratio["value"].as_f64().unwrap();
+    let when = ratio["worst_time_s"].as_f64().unwrap();
+    let first = ratio["first_time_s"].as_f64().unwrap();
+    let duration = json["duration_s"].as_f64().unwrap();
+    assert_eq!(when, duration, "{ratio}");
+    assert!(first < 10.0, "{ratio}");
+    assert!(worst > 0.1 && worst < 1.0, "{ratio}");
+    // the worst ratio is ΔP over the final peak pressure (the history's last row)
+    let line = line_of(&stderr, "§9.1").unwrap();
+    assert!(line.contains("worst at t = 9.467e8 s (30 years)"), "{line}");
+    assert!(
+        rel(worst, 2e5 / final_peak(&dir, &scenario)) < 1e-12,
+        "{worst}"
+    );
+}
+
+/// The peak pressure of the last history row of `scenario` [Pa].
+fn final_peak(dir: &TempDir, scenario: &std::path::Path) -> f64 {
+    stderr_of(dir, &["run", scenario.to_str().unwrap(), "-o", "h.csv"]);
+    let csv = fs::read_to_string(dir.path().join("h.csv")).unwrap();
+    let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+    let k = header
+        .iter()
+        .position(|c| *c == "peak_pressure_Pa")
+        .unwrap();
+    let last = csv.lines().last().unwrap();
+    last.split(',').nth(k).unwrap().parse().unwrap()
+}
