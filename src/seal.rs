@@ -61,11 +61,76 @@ impl SealGeometry {
         }
     }
 
+    /// The squeeze at temperature `t` \[K\] with the thermal strain `thermal` (O-rings; 0 for a
+    /// flat seal): `ε(T) = ε0 + (α_r − α_h (1 − ε0)) (T − T_install)` (docs/model.md §6).
+    pub fn squeeze_at(&self, thermal: Option<&ThermalStrain>, t: f64) -> f64 {
+        match *self {
+            SealGeometry::ORing { squeeze, .. } => match thermal {
+                Some(th) => {
+                    squeeze
+                        + (th.rubber_expansion - th.housing_expansion * (1.0 - squeeze))
+                            * (t - th.installation_temperature)
+                }
+                None => squeeze,
+            },
+            SealGeometry::Flat { .. } => 0.0,
+        }
+    }
+
+    /// The variable the Prony recursion runs on at temperature `t` \[K\]: Lindley's g(ε) for an
+    /// O-ring, 1 for a flat seal.
+    pub fn load_variable(&self, thermal: Option<&ThermalStrain>, t: f64) -> f64 {
+        match self {
+            SealGeometry::ORing { .. } => squeeze_function(self.squeeze_at(thermal, t)),
+            SealGeometry::Flat { .. } => 1.0,
+        }
+    }
+
+    /// The nominal profile for the hereditary `stress` \[Pa\] on the load variable, with
+    /// `instantaneous_modulus` E0 \[Pa\], at temperature `t` \[K\]: a flat seal's P0 scaled by
+    /// stress/E0 over its width; an O-ring's Hertz profile of force `d · stress` over Lindley's
+    /// width at the current squeeze (docs/model.md §6).
+    pub fn profile(
+        &self,
+        stress: f64,
+        instantaneous_modulus: f64,
+        thermal: Option<&ThermalStrain>,
+        t: f64,
+    ) -> Profile {
+        match *self {
+            SealGeometry::Flat {
+                nominal_pressure,
+                width,
+                ..
+            } => Profile::Uniform {
+                pressure: nominal_pressure * stress / instantaneous_modulus,
+                width,
+            },
+            SealGeometry::ORing { cross_section, .. } => {
+                let eps = self.squeeze_at(thermal, t);
+                let width = oring_contact_width(cross_section, eps).max(f64::MIN_POSITIVE);
+                Profile::hertz((cross_section * stress).max(0.0), width)
+            }
+        }
+    }
+
     /// Whether Lindley's relations are used outside their range at squeeze `eps`.
     pub fn squeeze_out_of_range(&self, eps: f64) -> bool {
         matches!(self, SealGeometry::ORing { .. })
             && !(LINDLEY_RANGE.0..=LINDLEY_RANGE.1).contains(&eps)
     }
+}
+
+/// Thermal strain of an O-ring: the cord expands with the rubber's CTE, the groove depth with
+/// the housing's. `ε(T) = ε0 + (α_r − α_h (1 − ε0)) (T − T_install)` (first order).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ThermalStrain {
+    /// Rubber linear CTE α_r \[1/K\].
+    pub rubber_expansion: f64,
+    /// Housing linear CTE α_h \[1/K\].
+    pub housing_expansion: f64,
+    /// Installation temperature \[K\].
+    pub installation_temperature: f64,
 }
 
 /// The nominal pressure across the sealing width at one instant.

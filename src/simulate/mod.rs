@@ -29,21 +29,29 @@
 //! strain each sub-step is split further until a_T changes by at most half a decade within it,
 //! so that the strain is close to piecewise linear in reduced time, as the exact update
 //! requires.
+//!
+//! Layout: [`problem`](LifeProblem) holds the problem and result types; what depends on the
+//! seal kind (squeeze with thermal strain, the load variable, the pressure profile) lives with
+//! the seal ([`crate::seal::SealGeometry`]); `clogging` applies the open fraction and
+//! integrates its ODE; [`events`] the failure criteria.
 
+mod clogging;
 pub mod events;
+mod problem;
 
-use std::cell::RefCell;
+pub use problem::{
+    AsperityModulus, HistoryRow, LifeProblem, LifeResult, Loading, SealState, TimeGrid,
+};
 
-use crate::clogging::{Contamination, effective_threshold};
-use crate::contact::{ContactSettings, CriticalJunction, Elastic, Junction, PerssonContact};
+use crate::contact::{ContactSettings, Elastic, Junction, PerssonContact};
 use crate::dynamic::{DragSettings, DragTable, MotionPoint, MotionSpec};
-use crate::fluid::{Conduction, Fluid};
-use crate::leak::{ContactPath, Fidelity, FlatSeal};
+use crate::fluid::Conduction;
+use crate::leak::{ContactPath, FlatSeal};
 use crate::material::shift::reduced_time;
-use crate::material::{Ageing, Material, RelaxationState, Shift, TemperatureHistory};
+use crate::material::{RelaxationState, Shift};
 use crate::math::quadrature::gauss_legendre;
-use crate::seal::{Profile, SealGeometry, oring_contact_width, squeeze_function};
-use crate::surface::Spectrum;
+use crate::seal::Profile;
+pub use crate::seal::ThermalStrain;
 use crate::validity::{self, At, ContactState, Findings};
 pub use events::{FailureCriteria, FailureEvent, FailureMode};
 
@@ -70,219 +78,6 @@ const MAX_STEP_LOG_SHIFT: f64 = 0.5;
 const MAX_STEP_TEMPERATURE_FROZEN_EDGE: f64 = 1.0;
 /// Upper bound of the pieces one internal step is split into for the thermal strain.
 const MAX_THERMAL_PIECES: f64 = 10_000.0;
-
-/// Which modulus the asperity contact sees (docs/model.md §6).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum AsperityModulus {
-    /// E∞, the low-frequency modulus PY08 uses (conservative). The default.
-    Relaxed,
-    /// E0.
-    Instantaneous,
-    /// The bulk's own relaxation: E(ξ(t)) under displacement loading, 1/J(ξ(t)) under force
-    /// loading (the contact creeps under a constant load).
-    Follow,
-    /// A fixed modulus \[Pa\].
-    Fixed(f64),
-}
-
-/// How the seal is held.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Loading {
-    /// Fixed squeeze (O-ring in a groove): the sealing force relaxes.
-    Displacement,
-    /// Fixed load (spring-loaded): the sealing force stays.
-    Force,
-}
-
-/// Thermal strain of an O-ring: the cord expands with the rubber's CTE, the groove depth with
-/// the housing's. `ε(T) = ε0 + (α_r − α_h (1 − ε0)) (T − T_install)` (first order).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ThermalStrain {
-    /// Rubber linear CTE α_r \[1/K\].
-    pub rubber_expansion: f64,
-    /// Housing linear CTE α_h \[1/K\].
-    pub housing_expansion: f64,
-    /// Installation temperature \[K\].
-    pub installation_temperature: f64,
-}
-
-/// The output/evaluation grid.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct TimeGrid {
-    /// First time after installation \[s\] (> 0).
-    pub start: f64,
-    /// Last time \[s\] (> start).
-    pub duration: f64,
-    /// Log-uniform points per decade.
-    pub points_per_decade: f64,
-}
-
-impl TimeGrid {
-    /// 0, then `start · 10^{k/n}` up to `duration` (which is always the last point).
-    pub fn times(&self) -> Vec<f64> {
-        let mut t = vec![0.0];
-        let decades = (self.duration / self.start).log10();
-        let n = (decades * self.points_per_decade).ceil().max(1.0) as usize;
-        for k in 0..n {
-            t.push(self.start * 10f64.powf(decades * k as f64 / n as f64));
-        }
-        t.push(self.duration);
-        t
-    }
-}
-
-/// A seal-life problem in SI units.
-#[derive(Debug, Clone, PartialEq)]
-pub struct LifeProblem {
-    pub material: Material,
-    pub asperity_modulus: AsperityModulus,
-    pub spectrum: Spectrum,
-    pub contact: ContactSettings,
-    pub shape_factor: f64,
-    pub fluid: Fluid,
-    pub geometry: SealGeometry,
-    pub loading: Loading,
-    pub environment: TemperatureHistory,
-    pub thermal_strain: Option<ThermalStrain>,
-    pub ageing: Option<Ageing>,
-    pub failure: FailureCriteria,
-    pub time: TimeGrid,
-    pub fidelity: Fidelity,
-    /// Gauss–Legendre points across the Hertz profile (strips in series).
-    pub strips: usize,
-    /// Particle clogging of the critical constrictions (`None`: clean fluid, zero cost).
-    pub contamination: Option<Contamination>,
-    /// The countersurface's motion (`[motion]`, PY08 §8; `None`: a static seal, zero cost).
-    pub motion: Option<MotionSpec>,
-}
-
-impl LifeProblem {
-    /// The nominal pressure profile right after installation (t = 0): the instantaneous
-    /// modulus E0 on the load at the temperature T(0) (Lindley force and Hertz profile for an
-    /// O-ring, including the thermal strain at T(0); the given nominal pressure for a flat seal).
-    pub fn initial_profile(&self) -> Profile {
-        let t0 = self.environment.at(0.0);
-        profile_for(
-            self,
-            self.material.prony.instantaneous() * load_variable(self, t0),
-            t0,
-        )
-    }
-
-    /// Records the findings of the installation state (t = 0) into `out`: the temperature
-    /// against the glass transition and the WLF frozen limit, an O-ring's squeeze against
-    /// Lindley's range (docs/model.md §9.6–§9.7). A life run evaluates the same at every step.
-    pub fn assess_installation(&self, out: &mut Findings) {
-        self.assess_rubber(self.environment.at(0.0), At::Installation, out);
-    }
-
-    /// The rubber's temperature `t` \[K\] and, for an O-ring, its squeeze at `t`.
-    fn assess_rubber(&self, t: f64, at: At, out: &mut Findings) {
-        if let SealGeometry::ORing { .. } = self.geometry {
-            validity::squeeze(squeeze_at(self, t), at, out);
-        }
-        validity::temperature(
-            t,
-            self.material.glass_transition,
-            self.material.shift.frozen_below(),
-            at,
-            out,
-        );
-    }
-}
-
-/// State of the interface at one time.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum SealState {
-    Leaking,
-    /// No channel percolates (somewhere across the width).
-    Sealed,
-    /// The peak contact pressure is below the fluid pressure: the seal opens; the leak rate
-    /// shown is the model's, which no longer applies.
-    LiftOff,
-}
-
-impl SealState {
-    pub fn as_str(self) -> &'static str {
-        match self {
-            SealState::Leaking => "leaking",
-            SealState::Sealed => "sealed",
-            SealState::LiftOff => "lift_off",
-        }
-    }
-}
-
-/// One row of the history.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct HistoryRow {
-    pub time: f64,
-    pub temperature: f64,
-    pub reduced_time: f64,
-    pub shift_factor: f64,
-    /// Sealing force per unit length \[N/m\].
-    pub sealing_force: f64,
-    pub peak_pressure: f64,
-    pub mean_pressure: f64,
-    pub contact_width: f64,
-    /// Height of the critical constriction at the peak pressure \[m\]; `None` when sealed there.
-    pub u_c: Option<f64>,
-    pub leak_rate: f64,
-    pub leaked_volume: f64,
-    pub state: SealState,
-    /// Open fraction f of the critical channels (1 without contamination).
-    pub open_fraction: f64,
-    /// `[motion]`: drag, film, speed bound and stroke volumes at the peak strip (`None` for a
-    /// static seal). Constant sliding: `drag_leak_rate` is included in `leak_rate`; a stroke
-    /// cycle: it is the out-stroke's instantaneous drag, not included (`leak_rate` is the
-    /// static, cycle-averaged one).
-    pub motion: Option<MotionPoint>,
-}
-
-/// The result of a life run.
-#[derive(Debug, Clone, PartialEq)]
-pub struct LifeResult {
-    pub rows: Vec<HistoryRow>,
-    pub failure: Option<FailureEvent>,
-    /// The validity limits crossed during the run, each once with its worst value and when
-    /// (docs/model.md §9.11).
-    pub findings: Findings,
-}
-
-impl LifeResult {
-    pub fn initial_leak_rate(&self) -> f64 {
-        self.rows.first().map_or(0.0, |r| r.leak_rate)
-    }
-
-    pub fn final_leak_rate(&self) -> f64 {
-        self.rows.last().map_or(0.0, |r| r.leak_rate)
-    }
-
-    pub fn leaked_volume(&self) -> f64 {
-        self.rows.last().map_or(0.0, |r| r.leaked_volume)
-    }
-
-    /// Open fraction of the critical channels at the end of the run (1 when clean).
-    pub fn final_open_fraction(&self) -> f64 {
-        self.rows.last().map_or(1.0, |r| r.open_fraction)
-    }
-
-    /// Leak rate at time `t` \[s\], interpolated as a power law between rows (0 outside).
-    pub fn leak_rate_at(&self, t: f64) -> Option<f64> {
-        let k = self.rows.partition_point(|r| r.time < t);
-        let b = self.rows.get(k)?;
-        if k == 0 || b.time == t {
-            return Some(b.leak_rate);
-        }
-        let a = &self.rows[k - 1];
-        Some(events::interpolate_power_law(
-            a.time,
-            a.leak_rate,
-            b.time,
-            b.leak_rate,
-            t,
-        ))
-    }
-}
 
 /// Everything evaluated at one instant from the mechanical state.
 #[derive(Debug, Clone, Copy)]
@@ -365,7 +160,9 @@ impl<'a> Simulator<'a> {
     /// Prepares the run with a contact path built beforehand by [`Self::contact_path`] for a
     /// problem with the same surface, contact settings and fidelity.
     pub fn with_path(problem: &'a LifeProblem, path: ContactPath) -> Self {
-        let load0 = load_variable(problem, problem.environment.at(0.0));
+        let load0 = problem
+            .geometry
+            .load_variable(problem.thermal_strain.as_ref(), problem.environment.at(0.0));
         let initial_profile = problem.initial_profile();
         let rerouting = problem
             .contamination
@@ -523,7 +320,9 @@ impl<'a> Simulator<'a> {
         let d_xi = reduced_time(&p.environment, &p.material.shift, a, b);
         let d_load = match p.loading {
             Loading::Displacement => {
-                load_variable(p, p.environment.at(b)) - state.relaxation.strain()
+                p.geometry
+                    .load_variable(p.thermal_strain.as_ref(), p.environment.at(b))
+                    - state.relaxation.strain()
             }
             Loading::Force => 0.0,
         };
@@ -562,192 +361,6 @@ impl<'a> Simulator<'a> {
         self.clogged(open, state)
     }
 
-    /// The leak rate of `open` (all channels open) with the state's open fraction f:
-    /// * without re-routing the blocked channels carry nothing, the rest are unchanged:
-    ///   `Q̇ = f Q̇_open`;
-    /// * with re-routing the blocked channels count as contact, the effective threshold is
-    ///   `a_eff = 1 − (1 − a_c)/f` and the next, narrower constriction takes over. The
-    ///   strips-in-series open leak rate is scaled by the *peak strip's* ratio
-    ///   `(u_c(s_peak, a_eff)/u_c(s_peak, a_c))³` (an approximation: the peak strip dominates
-    ///   the series resistance), both junctions by the exact path; 0 when a_eff ≤ 0 or the
-    ///   peak strip seals at a_eff.
-    fn clogged(&self, mut snap: Snapshot, state: &Mechanics) -> Snapshot {
-        let f = if state.clogged_shut {
-            0.0
-        } else {
-            state.log_open_fraction.exp().clamp(0.0, 1.0)
-        };
-        snap.open_fraction = f;
-        if f >= 1.0 {
-            return snap;
-        }
-        let (scale, u_c) = match &self.rerouting {
-            None => (f, snap.u_c),
-            Some(_) if state.clogged_shut => (0.0, None),
-            Some(_) => {
-                let (ratio, u_eff) = self.reroute_ratio(snap.peak_reduced_pressure, f);
-                (ratio, u_eff)
-            }
-        };
-        snap.u_c = u_c;
-        snap.peak_junction = match (snap.peak_junction, u_c) {
-            (Junction::Leaking(j), Some(u_c)) => Junction::Leaking(CriticalJunction { u_c, ..j }),
-            _ => Junction::Sealed,
-        };
-        // The drag flows through the same channels: without re-routing the blocked ones carry
-        // none of it (× f); with re-routing the film is taken to scale with the constriction
-        // height, d = β u_c at fixed β (× the cube root of the u_c³ ratio).
-        let drag_scale = if self.rerouting.is_some() {
-            scale.cbrt()
-        } else {
-            scale
-        };
-        snap.leak_rate = match (snap.open_static_leak_rate, snap.motion) {
-            (Some(static_rate), Some(m)) => {
-                (static_rate * scale + m.drag_leak_rate * drag_scale).max(0.0)
-            }
-            _ => (snap.open_leak_rate * scale).max(0.0),
-        };
-        if !snap.leak_rate.is_finite() {
-            snap.leak_rate = 0.0;
-        }
-        if let (Some((spec, _)), Some(m)) = (&self.drag, snap.motion) {
-            let static_rate = match snap.open_static_leak_rate {
-                Some(static_rate) => (static_rate * scale).max(0.0),
-                None => snap.leak_rate,
-            };
-            snap.motion = Some(spec.rescale(m, static_rate, drag_scale));
-        }
-        if snap.state == SealState::Leaking && snap.leak_rate <= 0.0 {
-            snap.state = SealState::Sealed;
-        }
-        snap
-    }
-
-    /// `((u_c(s, a_eff)/u_c(s, a_c))³, u_c(s, a_eff))` at the peak reduced pressure `s` and
-    /// open fraction `f` (re-routing only; `(0, None)` when the junction seals).
-    fn reroute_ratio(&self, s: f64, f: f64) -> (f64, Option<f64>) {
-        let Some(exact) = &self.rerouting else {
-            return (f, None);
-        };
-        let a_c = self.problem.contact.percolation_threshold;
-        let a_eff = effective_threshold(a_c, f);
-        if a_eff.is_nan() || a_eff <= 0.0 {
-            return (0.0, None);
-        }
-        let reference = self.reference_junction(exact, s);
-        Self::ratio_against(exact, s, a_eff, reference)
-    }
-
-    /// `u_c(s, a_c)` on the re-routing quadrature, remembered for the last `s`.
-    fn reference_junction(&self, exact: &PerssonContact, s: f64) -> Option<f64> {
-        if let Some((last, u)) = self.reference_memo.get()
-            && last == s
-        {
-            return u;
-        }
-        let a_c = self.problem.contact.percolation_threshold;
-        let u = exact
-            .critical_junction_at_threshold(s, a_c)
-            .leaking()
-            .map(|j| j.u_c);
-        self.reference_memo.set(Some((s, u)));
-        u
-    }
-
-    /// `((u_c(s, a_eff)/u_ref)³, u_c(s, a_eff))` for a given reference `u_ref = u_c(s, a_c)`.
-    fn ratio_against(
-        exact: &PerssonContact,
-        s: f64,
-        a_eff: f64,
-        reference: Option<f64>,
-    ) -> (f64, Option<f64>) {
-        match (reference, exact.critical_junction_at_threshold(s, a_eff)) {
-            (Some(r), Junction::Leaking(n)) if r > 0.0 => {
-                ((n.u_c / r).powi(3).min(1.0), Some(n.u_c))
-            }
-            _ => (0.0, None),
-        }
-    }
-
-    /// Integrates the open fraction over one internal step `[before, open]` (docs/model.md §7).
-    ///
-    /// The state is `y = ln f` (so f = e^y can never overshoot below 0, and a huge
-    /// concentration drives y to −∞, f to 0, within the step), with
-    /// `dy/dt = −n_p [1 − F(u)] Q̇ / (N_ch f)`, N_ch = L_y/λ_c (λ_c of the critical junction
-    /// at the peak strip with all channels open: the channels that carry the flow), and
-    /// * without re-routing `Q̇ = f Q̇_open`, u = u_c: `dy/dt = −n_p [1 − F(u_c)] Q̇_open/N_ch`;
-    /// * with re-routing `Q̇ = Q̇_open (u_c(a_eff)/u_c(a_c))³` and u = u_c(a_eff) (see
-    ///   [`Self::clogged`]); the right side vanishes where the seal closes.
-    ///
-    /// Inside the step u_c, Q̇_open, λ_c and the peak reduced pressure are interpolated as
-    /// power laws in time between the step's ends ([`events::interpolate_power_law`]).
-    /// Dopri5 (ode_solvers) with sparse output (only the end state is used; its dense output
-    /// extrapolates the last point), rtol = atol = the clogging tolerance on ln f (an
-    /// absolute error in ln f is a relative error in f). If the integration fails (a stiff
-    /// closure under re-routing, which the explicit method cannot follow) the seal is taken
-    /// as clogged shut from there on.
-    fn integrate_clogging(
-        &self,
-        c: &Contamination,
-        state: &mut Mechanics,
-        b: f64,
-        before: &Snapshot,
-        after: &Snapshot,
-    ) {
-        let a = state.time;
-        if state.clogged_shut || state.log_open_fraction == f64::NEG_INFINITY || b <= a {
-            return;
-        }
-        let length = self.problem.geometry.sealing_length();
-        let system = CloggingOde {
-            simulator: self,
-            contamination: c,
-            a,
-            b,
-            before,
-            after,
-            length,
-            ratios: RefCell::new(Vec::new()),
-        };
-        // Nothing captured at the ends: nothing in between either (u_c(t) is a power law,
-        // hence monotone, and so is F(u_c(t))), the clean case costs no integration; the
-        // midpoint is probed as well for safety.
-        let probes = [a, 0.5 * (a + b), b];
-        if probes
-            .iter()
-            .all(|&t| system.rate(t, state.log_open_fraction) == 0.0)
-        {
-            return;
-        }
-        let y0 = ode_solvers::Vector1::new(state.log_open_fraction);
-        let tol = c.tolerance;
-        let mut stepper = ode_solvers::Dopri5::new(system, a, b, b - a, y0, tol, tol);
-        stepper.set_output(ode_solvers::OutputType::Sparse);
-        let y = match stepper.integrate() {
-            Ok(_) => stepper.y_out().last().map(|v| v[0]),
-            Err(_) => None,
-        };
-        match y {
-            Some(y) if y.is_finite() => {
-                // below e^-745 f underflows: every channel is blocked
-                state.log_open_fraction = if y < f64::MIN_POSITIVE.ln() {
-                    f64::NEG_INFINITY
-                } else {
-                    y.min(0.0)
-                };
-            }
-            Some(y) if y == f64::NEG_INFINITY => state.log_open_fraction = y,
-            _ => {
-                if c.reroute {
-                    state.clogged_shut = true;
-                } else {
-                    state.log_open_fraction = f64::NEG_INFINITY;
-                }
-            }
-        }
-    }
-
     /// Profile, asperity modulus, junctions and leak rate at the state's time `t`, with all
     /// critical channels open.
     fn open_snapshot_at(&self, state: &Mechanics, t: f64) -> Snapshot {
@@ -757,9 +370,10 @@ impl<'a> Simulator<'a> {
             .ageing
             .map_or(1.0, |ag| (-ag.rate * state.ageing_time).exp());
         let profile = match p.loading {
-            Loading::Displacement => profile_for(
-                p,
+            Loading::Displacement => p.geometry.profile(
                 state.relaxation.stress(&p.material.prony) * ageing,
+                p.material.prony.instantaneous(),
+                p.thermal_strain.as_ref(),
                 temperature,
             ),
             Loading::Force => self.initial_profile,
@@ -954,172 +568,6 @@ impl Snapshot {
             leaked_volume,
             retained_force: self.retained,
             lifted: self.state == SealState::LiftOff,
-        }
-    }
-}
-
-/// The clogging ODE of one internal step, `d(ln f)/dt` (see
-/// [`Simulator::integrate_clogging`]).
-struct CloggingOde<'s, 'a> {
-    simulator: &'s Simulator<'a>,
-    contamination: &'s Contamination,
-    a: f64,
-    b: f64,
-    before: &'s Snapshot,
-    after: &'s Snapshot,
-    /// L_y \[m\].
-    length: f64,
-    /// Re-routing ratios `(k, ratio, u_eff)` at `ln f = k h` ([`REROUTE_NODE_SPACING`]) and the
-    /// step's end peak pressure, computed on demand and interpolated linearly in
-    /// ln f: the right side is then a fixed, smooth function of f within the step (independent
-    /// of where the solver samples it), at a few exact junctions per step instead of two per
-    /// evaluation.
-    ratios: RefCell<Vec<(i64, f64, Option<f64>)>>,
-}
-
-impl CloggingOde<'_, '_> {
-    /// `−d(ln f)/dt` \[1/s\] at time `t` and `y = ln f` (≥ 0, finite).
-    fn rate(&self, t: f64, y: f64) -> f64 {
-        let (a, b) = (self.a, self.b);
-        let t = t.clamp(a, b);
-        let at = |qa: f64, qb: f64| events::interpolate_power_law(a, qa, b, qb, t).max(0.0);
-        let q_open = at(self.before.open_leak_rate, self.after.open_leak_rate);
-        let lambda_c = at(self.before.lambda_c, self.after.lambda_c);
-        if !(q_open > 0.0 && lambda_c > 0.0) {
-            return 0.0;
-        }
-        let channels = self.length / lambda_c;
-        let n_p = self.contamination.number_concentration;
-        let rate = match &self.simulator.rerouting {
-            None => {
-                let u_c = at(self.before.open_u_c, self.after.open_u_c);
-                n_p * self.contamination.captured_fraction(u_c) * q_open / channels
-            }
-            Some(_) => {
-                let f = y.exp().min(1.0);
-                if f <= 0.0 {
-                    return 0.0;
-                }
-                let (ratio, u_eff) = if f >= 1.0 {
-                    (1.0, Some(at(self.before.open_u_c, self.after.open_u_c)))
-                } else {
-                    self.interpolated_ratio(y)
-                };
-                let Some(u_eff) = u_eff else {
-                    return 0.0;
-                };
-                n_p * self.contamination.captured_fraction(u_eff) * q_open * ratio / (channels * f)
-            }
-        };
-        if rate.is_nan() {
-            0.0
-        } else {
-            rate.min(f64::MAX)
-        }
-    }
-}
-
-impl CloggingOde<'_, '_> {
-    /// The step's peak reduced pressure for the re-routing ratio: the end's, the pressure its
-    /// end snapshot uses, so the ratio integrated and the ratio reported agree at the end.
-    fn step_pressure(&self) -> f64 {
-        self.after.peak_reduced_pressure
-    }
-
-    /// The re-routing ratio at node `k` (`ln f = k h`), cached.
-    fn node(&self, k: i64) -> (f64, Option<f64>) {
-        if let Some(&(_, r, u)) = self.ratios.borrow().iter().find(|n| n.0 == k) {
-            return (r, u);
-        }
-        let f = (k as f64 * REROUTE_NODE_SPACING).exp().min(1.0);
-        let (r, u) = match &self.simulator.rerouting {
-            Some(exact) => {
-                let s = self.step_pressure();
-                let a_c = self.simulator.problem.contact.percolation_threshold;
-                let reference = self.simulator.reference_junction(exact, s);
-                let a_eff = effective_threshold(a_c, f);
-                if f >= 1.0 {
-                    (1.0, reference)
-                } else if a_eff.is_nan() || a_eff <= 0.0 {
-                    (0.0, None)
-                } else {
-                    Simulator::ratio_against(exact, s, a_eff, reference)
-                }
-            }
-            None => (f, None),
-        };
-        self.ratios.borrow_mut().push((k, r, u));
-        (r, u)
-    }
-
-    /// `(ratio, u_eff)` at `y = ln f`, linear in ln f between the two nearest nodes.
-    fn interpolated_ratio(&self, y: f64) -> (f64, Option<f64>) {
-        let x = y / REROUTE_NODE_SPACING;
-        let k = x.floor();
-        let w = x - k;
-        let (k, w) = if k.is_finite() {
-            (k as i64, w)
-        } else {
-            return (0.0, None);
-        };
-        let (r0, u0) = self.node(k);
-        let (r1, u1) = self.node(k + 1);
-        match (u0, u1) {
-            (Some(u0), Some(u1)) => (r0 + w * (r1 - r0), Some(u0 + w * (u1 - u0))),
-            // one node sealed: take the nearer one
-            _ if w < 0.5 => (r0, u0),
-            _ => (r1, u1),
-        }
-    }
-}
-
-impl ode_solvers::System<f64, ode_solvers::Vector1<f64>> for CloggingOde<'_, '_> {
-    fn system(&self, t: f64, y: &ode_solvers::Vector1<f64>, dy: &mut ode_solvers::Vector1<f64>) {
-        dy[0] = -self.rate(t, y[0]);
-    }
-}
-
-/// Squeeze at temperature `t` including the thermal strain (O-rings only).
-fn squeeze_at(p: &LifeProblem, temperature: f64) -> f64 {
-    match p.geometry {
-        SealGeometry::ORing { squeeze, .. } => match p.thermal_strain {
-            Some(th) => {
-                squeeze
-                    + (th.rubber_expansion - th.housing_expansion * (1.0 - squeeze))
-                        * (temperature - th.installation_temperature)
-            }
-            None => squeeze,
-        },
-        SealGeometry::Flat { .. } => 0.0,
-    }
-}
-
-/// The variable the Prony recursion runs on: g(ε) for an O-ring, 1 for a flat seal.
-fn load_variable(p: &LifeProblem, temperature: f64) -> f64 {
-    match p.geometry {
-        SealGeometry::ORing { .. } => squeeze_function(squeeze_at(p, temperature)),
-        SealGeometry::Flat { .. } => 1.0,
-    }
-}
-
-/// The nominal profile for hereditary stress `stress` (on the load variable) at `temperature`.
-fn profile_for(p: &LifeProblem, stress: f64, temperature: f64) -> Profile {
-    match p.geometry {
-        SealGeometry::Flat {
-            nominal_pressure,
-            width,
-            ..
-        } => {
-            let e0 = p.material.prony.instantaneous();
-            Profile::Uniform {
-                pressure: nominal_pressure * stress / e0,
-                width,
-            }
-        }
-        SealGeometry::ORing { cross_section, .. } => {
-            let eps = squeeze_at(p, temperature);
-            let width = oring_contact_width(cross_section, eps).max(f64::MIN_POSITIVE);
-            Profile::hertz((cross_section * stress).max(0.0), width)
         }
     }
 }

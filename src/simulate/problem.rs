@@ -1,0 +1,220 @@
+//! A seal-life problem and its result: what the time loop needs (SI units) and what it returns.
+
+use super::events::{self, FailureCriteria, FailureEvent};
+use crate::clogging::Contamination;
+use crate::contact::ContactSettings;
+use crate::dynamic::{MotionPoint, MotionSpec};
+use crate::fluid::Fluid;
+use crate::leak::Fidelity;
+use crate::material::{Ageing, Material, TemperatureHistory};
+use crate::seal::{Profile, SealGeometry, ThermalStrain};
+use crate::surface::Spectrum;
+use crate::validity::{self, At, Findings};
+
+/// Which modulus the asperity contact sees (docs/model.md §6).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum AsperityModulus {
+    /// E∞, the low-frequency modulus PY08 uses (conservative). The default.
+    Relaxed,
+    /// E0.
+    Instantaneous,
+    /// The bulk's own relaxation: E(ξ(t)) under displacement loading, 1/J(ξ(t)) under force
+    /// loading (the contact creeps under a constant load).
+    Follow,
+    /// A fixed modulus \[Pa\].
+    Fixed(f64),
+}
+
+/// How the seal is held.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Loading {
+    /// Fixed squeeze (O-ring in a groove): the sealing force relaxes.
+    Displacement,
+    /// Fixed load (spring-loaded): the sealing force stays.
+    Force,
+}
+
+/// The output/evaluation grid.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TimeGrid {
+    /// First time after installation \[s\] (> 0).
+    pub start: f64,
+    /// Last time \[s\] (> start).
+    pub duration: f64,
+    /// Log-uniform points per decade.
+    pub points_per_decade: f64,
+}
+
+impl TimeGrid {
+    /// 0, then `start · 10^{k/n}` up to `duration` (which is always the last point).
+    pub fn times(&self) -> Vec<f64> {
+        let mut t = vec![0.0];
+        let decades = (self.duration / self.start).log10();
+        let n = (decades * self.points_per_decade).ceil().max(1.0) as usize;
+        for k in 0..n {
+            t.push(self.start * 10f64.powf(decades * k as f64 / n as f64));
+        }
+        t.push(self.duration);
+        t
+    }
+}
+
+/// A seal-life problem in SI units.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LifeProblem {
+    pub material: Material,
+    pub asperity_modulus: AsperityModulus,
+    pub spectrum: Spectrum,
+    pub contact: ContactSettings,
+    pub shape_factor: f64,
+    pub fluid: Fluid,
+    pub geometry: SealGeometry,
+    pub loading: Loading,
+    pub environment: TemperatureHistory,
+    pub thermal_strain: Option<ThermalStrain>,
+    pub ageing: Option<Ageing>,
+    pub failure: FailureCriteria,
+    pub time: TimeGrid,
+    pub fidelity: Fidelity,
+    /// Gauss–Legendre points across the Hertz profile (strips in series).
+    pub strips: usize,
+    /// Particle clogging of the critical constrictions (`None`: clean fluid, zero cost).
+    pub contamination: Option<Contamination>,
+    /// The countersurface's motion (`[motion]`, PY08 §8; `None`: a static seal, zero cost).
+    pub motion: Option<MotionSpec>,
+}
+
+impl LifeProblem {
+    /// The nominal pressure profile right after installation (t = 0): the instantaneous
+    /// modulus E0 on the load at the temperature T(0) (Lindley force and Hertz profile for an
+    /// O-ring, including the thermal strain at T(0); the given nominal pressure for a flat seal).
+    pub fn initial_profile(&self) -> Profile {
+        let t0 = self.environment.at(0.0);
+        let thermal = self.thermal_strain.as_ref();
+        let e0 = self.material.prony.instantaneous();
+        self.geometry.profile(
+            e0 * self.geometry.load_variable(thermal, t0),
+            e0,
+            thermal,
+            t0,
+        )
+    }
+
+    /// Records the findings of the installation state (t = 0) into `out`: the temperature
+    /// against the glass transition and the WLF frozen limit, an O-ring's squeeze against
+    /// Lindley's range (docs/model.md §9.6–§9.7). A life run evaluates the same at every step.
+    pub fn assess_installation(&self, out: &mut Findings) {
+        self.assess_rubber(self.environment.at(0.0), At::Installation, out);
+    }
+
+    /// The rubber's temperature `t` \[K\] and, for an O-ring, its squeeze at `t`.
+    pub(super) fn assess_rubber(&self, t: f64, at: At, out: &mut Findings) {
+        if let SealGeometry::ORing { .. } = self.geometry {
+            validity::squeeze(
+                self.geometry.squeeze_at(self.thermal_strain.as_ref(), t),
+                at,
+                out,
+            );
+        }
+        validity::temperature(
+            t,
+            self.material.glass_transition,
+            self.material.shift.frozen_below(),
+            at,
+            out,
+        );
+    }
+}
+
+/// State of the interface at one time.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SealState {
+    Leaking,
+    /// No channel percolates (somewhere across the width).
+    Sealed,
+    /// The peak contact pressure is below the fluid pressure: the seal opens; the leak rate
+    /// shown is the model's, which no longer applies.
+    LiftOff,
+}
+
+impl SealState {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            SealState::Leaking => "leaking",
+            SealState::Sealed => "sealed",
+            SealState::LiftOff => "lift_off",
+        }
+    }
+}
+
+/// One row of the history.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HistoryRow {
+    pub time: f64,
+    pub temperature: f64,
+    pub reduced_time: f64,
+    pub shift_factor: f64,
+    /// Sealing force per unit length \[N/m\].
+    pub sealing_force: f64,
+    pub peak_pressure: f64,
+    pub mean_pressure: f64,
+    pub contact_width: f64,
+    /// Height of the critical constriction at the peak pressure \[m\]; `None` when sealed there.
+    pub u_c: Option<f64>,
+    pub leak_rate: f64,
+    pub leaked_volume: f64,
+    pub state: SealState,
+    /// Open fraction f of the critical channels (1 without contamination).
+    pub open_fraction: f64,
+    /// `[motion]`: drag, film, speed bound and stroke volumes at the peak strip (`None` for a
+    /// static seal). Constant sliding: `drag_leak_rate` is included in `leak_rate`; a stroke
+    /// cycle: it is the out-stroke's instantaneous drag, not included (`leak_rate` is the
+    /// static, cycle-averaged one).
+    pub motion: Option<MotionPoint>,
+}
+
+/// The result of a life run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LifeResult {
+    pub rows: Vec<HistoryRow>,
+    pub failure: Option<FailureEvent>,
+    /// The validity limits crossed during the run, each once with its worst value and when
+    /// (docs/model.md §9.11).
+    pub findings: Findings,
+}
+
+impl LifeResult {
+    pub fn initial_leak_rate(&self) -> f64 {
+        self.rows.first().map_or(0.0, |r| r.leak_rate)
+    }
+
+    pub fn final_leak_rate(&self) -> f64 {
+        self.rows.last().map_or(0.0, |r| r.leak_rate)
+    }
+
+    pub fn leaked_volume(&self) -> f64 {
+        self.rows.last().map_or(0.0, |r| r.leaked_volume)
+    }
+
+    /// Open fraction of the critical channels at the end of the run (1 when clean).
+    pub fn final_open_fraction(&self) -> f64 {
+        self.rows.last().map_or(1.0, |r| r.open_fraction)
+    }
+
+    /// Leak rate at time `t` \[s\], interpolated as a power law between rows (0 outside).
+    pub fn leak_rate_at(&self, t: f64) -> Option<f64> {
+        let k = self.rows.partition_point(|r| r.time < t);
+        let b = self.rows.get(k)?;
+        if k == 0 || b.time == t {
+            return Some(b.leak_rate);
+        }
+        let a = &self.rows[k - 1];
+        Some(events::interpolate_power_law(
+            a.time,
+            a.leak_rate,
+            b.time,
+            b.leak_rate,
+            t,
+        ))
+    }
+}
