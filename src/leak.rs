@@ -35,7 +35,7 @@ impl FlatSeal {
 /// Which level of the fidelity ladder (docs/model.md §4) evaluates the contact and the leak.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Fidelity {
-    /// `u_c ≈ h_rms(ζc)` (PY08 §5): closed forms only, no separation quadrature.
+    /// `u_c ≈ h_rms(ζc)` (PY08 §3, Fig. 12): closed forms only, no separation quadrature.
     RuleOfThumb,
     /// Critical junction `u_c = u1(ζc)` by quadrature at every pressure.
     Exact,

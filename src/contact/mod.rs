@@ -331,7 +331,7 @@ impl PerssonContact {
         Junction::Leaking(self.junction_from(ln_a, u_c, ubar_c))
     }
 
-    /// The rule-of-thumb junction (docs/model.md §4, PY08 §5 notes that u1(ζc) and h_rms(ζc) are
+    /// The rule-of-thumb junction (docs/model.md §4, PY08 §3 (Fig. 12) notes that u1(ζc) and h_rms(ζc) are
     /// close): ζc and λc as in [`Self::critical_junction`], and `u_c ≈ h_rms(ζc)` (PY08 eq. 4),
     /// all closed forms — no separation quadrature. This level does not compute ū(ζc) either:
     /// `ubar_c` carries the same h_rms(ζc).
