@@ -1,11 +1,11 @@
 //! `sealsim compare` as a library call: one life scenario with each of several compounds.
 
-use super::{Progress, scenario_path};
+use super::{Progress, life_on, scenario_path};
 use crate::contact::ContactSettings;
 use crate::leak::{ContactPath, Fidelity};
 use crate::material::Material;
 use crate::scenario::{Scenario, ScenarioError};
-use crate::simulate::{LifeResult, Simulator};
+use crate::simulate::LifeResult;
 use crate::surface::Spectrum;
 use crate::validity::Findings;
 use std::path::Path;
@@ -52,7 +52,7 @@ pub fn compare(
     for ((label, material), scenario) in compounds.into_iter().zip(scenarios) {
         let life = &scenario.life;
         let key = (life.spectrum.clone(), life.contact, life.fidelity);
-        let (path, mut findings) = match &shared {
+        let (path, findings) = match &shared {
             Some((first, path)) if *first == key => (path.clone(), Findings::default()),
             _ => {
                 let (path, findings) = scenario_path(&scenario, life.fidelity, None, progress);
@@ -60,9 +60,7 @@ pub fn compare(
                 (path, findings)
             }
         };
-        let mut result = Simulator::with_path(life, path).run();
-        findings.extend(std::mem::take(&mut result.findings));
-        result.findings = findings;
+        let result = life_on(life, path, findings);
         runs.push(CompoundRun {
             label,
             material,

@@ -14,6 +14,7 @@ pub mod tradeoff;
 
 use crate::leak::{ContactPath, Fidelity, PathOptions};
 use crate::scenario::Scenario;
+use crate::simulate::{LifeProblem, LifeResult, Simulator};
 use crate::validity::Findings;
 
 /// A progress report `(done, total)` for long work (the numerical level's realisations, the
@@ -40,4 +41,13 @@ pub fn scenario_path(
     let mut findings = Findings::default();
     path.assess(&options, &mut findings);
     (path, findings)
+}
+
+/// The life of `life` on a contact path built beforehand, its findings after the path's own
+/// `findings`.
+fn life_on(life: &LifeProblem, path: ContactPath, mut findings: Findings) -> LifeResult {
+    let mut result = Simulator::with_path(life, path).run();
+    findings.extend(std::mem::take(&mut result.findings));
+    result.findings = findings;
+    result
 }
