@@ -655,7 +655,7 @@ fn parse_compound(unit: &str) -> Result<(f64, Dimension), UnitError> {
 }
 
 fn is_symbol_char(c: char) -> bool {
-    c.is_alphabetic() || c == '°'
+    c.is_alphabetic() || c == '°' || c == '%'
 }
 
 /// factor { separator factor }
@@ -803,19 +803,31 @@ const DAY: f64 = 86_400.0;
 
 const UNITS: &[UnitDef] = &[
     unit("m", 1.0, Dimension::LENGTH, true),
+    // the international inch (exactly 25.4 mm): AS568 sizes and US drawings
+    unit("in", 0.0254, Dimension::LENGTH, false),
+    unit("%", 0.01, Dimension::DIMENSIONLESS, false),
     unit("g", 1e-3, Dimension::MASS, true),
     unit("s", 1.0, Dimension::TIME, true),
     unit("min", 60.0, Dimension::TIME, false),
+    unit("minutes", 60.0, Dimension::TIME, false),
     unit("h", 3600.0, Dimension::TIME, false),
     unit("hr", 3600.0, Dimension::TIME, false),
+    unit("hours", 3600.0, Dimension::TIME, false),
     unit("d", DAY, Dimension::TIME, false),
     unit("day", DAY, Dimension::TIME, false),
+    unit("days", DAY, Dimension::TIME, false),
     unit("week", 7.0 * DAY, Dimension::TIME, false),
+    unit("weeks", 7.0 * DAY, Dimension::TIME, false),
     unit("year", 365.25 * DAY, Dimension::TIME, false),
+    unit("years", 365.25 * DAY, Dimension::TIME, false),
     unit("yr", 365.25 * DAY, Dimension::TIME, false),
     unit("Pa", 1.0, Dimension::PRESSURE, true),
     unit("bar", 1e5, Dimension::PRESSURE, true),
     unit("psi", 6894.757293168, Dimension::PRESSURE, false),
+    // gauge pressures: relative to the outlet (ambient) side, which is what a pressure
+    // difference across a seal to ambient is
+    unit("psig", 6894.757293168, Dimension::PRESSURE, false),
+    unit("barg", 1e5, Dimension::PRESSURE, false),
     unit("atm", 101_325.0, Dimension::PRESSURE, false),
     unit("N", 1.0, Dimension::FORCE, true),
     unit("J", 1.0, Dimension::ENERGY, true),
@@ -871,6 +883,31 @@ fn lookup_symbol(symbol: &str, whole: &str) -> Result<(f64, Dimension), UnitErro
 mod tests {
     use super::*;
     use proptest::prelude::*;
+
+    #[test]
+    fn units_engineers_write() {
+        // the inch is exactly 25.4 mm: AS568-214's cord 0.139 in = 3.5306 mm
+        let cord = parse_quantity("0.139 in", Dimension::LENGTH);
+        assert!(cord.is_ok_and(|v| (v - 3.5306e-3).abs() < 1e-15));
+        assert_eq!(parse_quantity("25 %", Dimension::DIMENSIONLESS), Ok(0.25));
+        assert_eq!(parse_quantity("25%", Dimension::DIMENSIONLESS), Ok(0.25));
+        assert!(parse_quantity("25 %", Dimension::LENGTH).is_err());
+        for (text, seconds) in [
+            ("30 years", 30.0 * 365.25 * 86_400.0),
+            ("2 days", 172_800.0),
+            ("3 hours", 10_800.0),
+            ("2 weeks", 1_209_600.0),
+            ("5 minutes", 300.0),
+        ] {
+            assert_eq!(parse_quantity(text, Dimension::TIME), Ok(seconds), "{text}");
+        }
+        // gauge pressure over ambient: a pressure difference to the outlet
+        assert_eq!(parse_quantity("100 barg", Dimension::PRESSURE), Ok(1e7));
+        assert_eq!(
+            parse_quantity("1 psig", Dimension::PRESSURE),
+            parse_quantity("1 psi", Dimension::PRESSURE)
+        );
+    }
 
     #[test]
     fn numbers_in_messages_have_no_binary_noise() {
@@ -1164,7 +1201,7 @@ mod tests {
             "1 m .s",
             "1 m.",
             "1 m2x",
-            "1 m%",
+            "1 m$",
             "1 1",
             "1 m/1",
             "1 fm^-100",

@@ -555,7 +555,17 @@ impl Source<'_> {
         key: &str,
     ) -> Result<f64, ScenarioError> {
         let kelvin = match raw.get_ref() {
-            RawQuantity::Number(v) => *v,
+            // "100": °C or K? Both are common; guessing wrong is a 373 K error.
+            RawQuantity::Number(v) => {
+                return Err(self.error(
+                    raw.span(),
+                    key,
+                    format!(
+                        "a temperature needs its unit: write \"{v} C\" or \"{v} K\" (a bare \
+                         number is ambiguous)"
+                    ),
+                ));
+            }
             RawQuantity::Text(text) => units::parse_temperature(text)
                 .map_err(|e| self.error(raw.span(), key, e.to_string()))?,
         };
@@ -753,7 +763,7 @@ ageing = "test: ageing"
         // an Arrhenius shift
         let arrhenius = with(
             "kind = \"wlf\"\nreference_temperature = \"23 C\"\nc1 = 8.86\nc2 = \"101.6 K\"",
-            "kind = \"arrhenius\"\nreference_temperature = 296.15\nactivation_energy = \"120 kJ/mol\"",
+            "kind = \"arrhenius\"\nreference_temperature = \"296.15 K\"\nactivation_energy = \"120 kJ/mol\"",
         );
         let m = parse(&arrhenius).unwrap();
         assert_eq!(
@@ -811,8 +821,13 @@ ageing = "test: ageing"
             ("\"-30 C\"", "\"-300 C\"", ":7: material.glass_transition: "),
             (
                 "\"-30 C\"",
-                "0",
+                "\"0 K\"",
                 ":7: material.glass_transition: must be an absolute temperature above 0 K, got 0 K",
+            ),
+            (
+                "\"-30 C\"",
+                "243",
+                ":7: material.glass_transition: a temperature needs its unit: write \"243 C\" or \"243 K\"",
             ),
             (
                 "\"2.3e-4 1/K\"",
@@ -836,7 +851,7 @@ ageing = "test: ageing"
             ),
             (
                 "reference_temperature = \"23 C\"",
-                "reference_temperature = -5",
+                "reference_temperature = \"0 K\"",
                 ":11: material.shift.reference_temperature: must be an absolute temperature above 0 K",
             ),
             (

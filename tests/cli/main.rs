@@ -13,6 +13,7 @@
 mod common;
 mod support;
 
+mod engineering_units;
 mod figures;
 mod fit;
 mod leak;
