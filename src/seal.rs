@@ -62,14 +62,17 @@ impl SealGeometry {
     }
 
     /// The squeeze at temperature `t` \[K\] with the thermal strain `thermal` (O-rings; 0 for a
-    /// flat seal): `ε(T) = ε0 + (α_r − α_h (1 − ε0)) (T − T_install)` (docs/model.md §6).
+    /// flat seal). With gland depth h and cord d, ε = 1 − h/d; heating by ΔT expands the housing
+    /// with α_h and the cord with α_r, so
+    /// `ε(T) = 1 − (1 − ε0)(1 + α_h ΔT)/(1 + α_r ΔT) ≈ ε0 + (1 − ε0)(α_r − α_h) ΔT`
+    /// (docs/model.md §6): the compression is referred to the current cord.
     pub fn squeeze_at(&self, thermal: Option<&ThermalStrain>, t: f64) -> f64 {
         match *self {
             SealGeometry::ORing { squeeze, .. } => match thermal {
                 Some(th) => {
-                    squeeze
-                        + (th.rubber_expansion - th.housing_expansion * (1.0 - squeeze))
-                            * (t - th.installation_temperature)
+                    let dt = t - th.installation_temperature;
+                    1.0 - (1.0 - squeeze) * (1.0 + th.housing_expansion * dt)
+                        / (1.0 + th.rubber_expansion * dt)
                 }
                 None => squeeze,
             },
@@ -122,7 +125,8 @@ impl SealGeometry {
 }
 
 /// Thermal strain of an O-ring: the cord expands with the rubber's CTE, the groove depth with
-/// the housing's. `ε(T) = ε0 + (α_r − α_h (1 − ε0)) (T − T_install)` (first order).
+/// the housing's: `ε(T) = 1 − (1 − ε0)(1 + α_h ΔT)/(1 + α_r ΔT)`, ΔT = T − T_install
+/// ([`SealGeometry::squeeze_at`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ThermalStrain {
     /// Rubber linear CTE α_r \[1/K\].
@@ -314,6 +318,32 @@ mod tests {
             if p > 0.9 * hertz.peak() { 0.0 } else { 1e-12 }
         });
         assert_eq!(q, 0.0);
+    }
+
+    #[test]
+    fn thermal_strain_refers_the_compression_to_the_current_cord() {
+        // NBR cord (α_r = 2.3e-4 1/K) in a steel gland (α_h = 1.2e-5 1/K), 25 % squeeze at 23 °C,
+        // cooled to −42 °C (ΔT = −65 K). By hand: h/d = 0.75; h' = h (1 − 7.8e-4),
+        // d' = d (1 − 0.01495): ε' = 1 − 0.75 × 0.99922/0.98505 = 0.2392111…
+        let ring = SealGeometry::ORing {
+            cross_section: 3.53e-3,
+            mean_diameter: 0.05,
+            squeeze: 0.25,
+        };
+        let th = ThermalStrain {
+            rubber_expansion: 2.3e-4,
+            housing_expansion: 1.2e-5,
+            installation_temperature: 296.15,
+        };
+        let eps = ring.squeeze_at(Some(&th), 296.15 - 65.0);
+        let by_hand = 1.0 - 0.75 * (1.0 - 65.0 * 1.2e-5) / (1.0 - 65.0 * 2.3e-4);
+        assert!((eps - by_hand).abs() < 1e-15, "{eps}");
+        assert!((eps - 0.239_211).abs() < 1e-6, "{eps}");
+        // first order: Δε = (1 − ε0)(α_r − α_h) ΔT = −0.0106275; the old form
+        // (α_r − α_h (1 − ε0)) ΔT = −0.014365 overstated it by 35 %
+        assert!(((eps - 0.25) / -0.010_627_5 - 1.0).abs() < 0.02);
+        assert_eq!(ring.squeeze_at(Some(&th), 296.15), 0.25);
+        assert_eq!(ring.squeeze_at(None, 200.0), 0.25);
     }
 
     #[test]
