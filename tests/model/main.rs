@@ -19,6 +19,7 @@ mod effective_medium;
 mod fit;
 mod flow;
 mod height_map;
+mod interface;
 mod life;
 mod model_reference;
 mod motion;

@@ -1,0 +1,101 @@
+//! The fluid pressure inside the interface (docs/model.md §3.6) with Persson's critical junction
+//! as the local conductance: the uniform closed form against an independent quadrature, the
+//! ΔP → 0 limit, lift-off at ΔP = P0, and the shooting across a Hertz profile.
+
+use sealsim::contact::{ContactSettings, Elastic};
+use sealsim::fluid::{Conduction, junction_conductance};
+use sealsim::interface::{InterfaceFlow, InterfaceSettings, hertz, uniform};
+use sealsim::leak::{ContactPath, Fidelity};
+use sealsim::surface::Spectrum;
+
+const ETA: f64 = 1e-3;
+
+fn paper_path(fidelity: Fidelity) -> (ContactPath, f64) {
+    let spectrum = Spectrum::self_affine(2e-6, 0.8, 1e4, 7.8e9, None).unwrap();
+    let e_star = Elastic {
+        youngs_modulus: 10e6,
+        poisson_ratio: 0.5,
+    }
+    .effective_modulus();
+    (
+        ContactPath::new(&spectrum, ContactSettings::default(), fidelity),
+        e_star,
+    )
+}
+
+/// σ(e) of the critical junction [m³/(Pa·s)] at asperity pressure e [Pa].
+fn sigma_of(path: &ContactPath, e_star: f64) -> impl Fn(f64) -> f64 + '_ {
+    move |e: f64| match path.critical_junction(e / e_star).leaking() {
+        Some(j) => junction_conductance(j.u_c, 1.0, ETA),
+        None => 0.0,
+    }
+}
+
+#[test]
+fn uniform_pressure_equals_the_integral_of_the_local_conductance() {
+    let (path, e_star) = paper_path(Fidelity::Exact);
+    let sigma = sigma_of(&path, e_star);
+    let p0 = 0.2e6;
+    for dp in [0.02e6, 0.1e6, 0.18e6] {
+        let got = match uniform(&sigma, p0, dp, &InterfaceSettings::default()) {
+            InterfaceFlow::Conducting(Conduction::Uniform { conductance }) => conductance * dp,
+            other => panic!("{other:?}"),
+        };
+        // independent: composite Simpson in p (not ln e), 4000 intervals
+        let n = 4000;
+        let h = dp / n as f64;
+        let mut simpson = sigma(p0) + sigma(p0 - dp);
+        for k in 1..n {
+            simpson += if k % 2 == 1 { 4.0 } else { 2.0 } * sigma(p0 - k as f64 * h);
+        }
+        simpson *= h / 3.0;
+        assert!(
+            (got / simpson - 1.0).abs() < 1e-6,
+            "ΔP = {dp}: {got} vs {simpson}"
+        );
+        // the fluid pressure relieves the asperities: more leak than σ(P0) ΔP
+        assert!(got > sigma(p0) * dp);
+    }
+    // ΔP/P0 → 0: today's σ(P0)
+    let tiny = match uniform(&sigma, p0, 1e-6, &InterfaceSettings::default()) {
+        InterfaceFlow::Conducting(Conduction::Uniform { conductance }) => conductance,
+        other => panic!("{other:?}"),
+    };
+    assert!((tiny / sigma(p0) - 1.0).abs() < 1e-9);
+    // lift-off exactly when ΔP reaches P0
+    let set = InterfaceSettings::default();
+    assert!(matches!(
+        uniform(&sigma, p0, p0 * (1.0 - 1e-9), &set),
+        InterfaceFlow::Conducting(_)
+    ));
+    assert_eq!(uniform(&sigma, p0, p0, &set), InterfaceFlow::LiftOff);
+}
+
+#[test]
+fn hertz_shooting_with_the_contact_table_converges_and_rises_with_pressure() {
+    let (path, e_star) = paper_path(Fidelity::Table);
+    let sigma = sigma_of(&path, e_star);
+    let (peak, width) = (0.5e6, 1e-3);
+    let flux = |dp: f64, steps: usize| {
+        let set = InterfaceSettings {
+            steps,
+            ..InterfaceSettings::default()
+        };
+        match hertz(&sigma, peak, width, dp, &set) {
+            InterfaceFlow::Conducting(Conduction::Series { resistance }) => dp / resistance,
+            other => panic!("ΔP = {dp}: {other:?}"),
+        }
+    };
+    let mut last = 0.0;
+    for dp in [1e2, 1e3, 1e4, 5e4, 1e5, 2e5, 4e5] {
+        let (q, q2) = (flux(dp, 3200), flux(dp, 6400));
+        assert!((q2 / q - 1.0).abs() < 1e-9, "ΔP = {dp}: {q} vs {q2}");
+        assert!(q > last, "ΔP = {dp}");
+        last = q;
+    }
+    let set = InterfaceSettings::default();
+    assert_eq!(
+        hertz(&sigma, peak, width, peak, &set),
+        InterfaceFlow::LiftOff
+    );
+}
