@@ -99,3 +99,39 @@ fn hertz_shooting_with_the_contact_table_converges_and_rises_with_pressure() {
         InterfaceFlow::LiftOff
     );
 }
+
+/// Study (ignored; `cargo test --release --test model interface::study -- --ignored
+/// --nocapture`): the error and cost of the Hertz shooting at few steps, against 6400 steps, on
+/// the contact table — what a life loop could afford per state.
+#[test]
+#[ignore]
+fn study_hertz_steps_against_cost() {
+    let (path, e_star) = paper_path(Fidelity::Table);
+    let sigma = sigma_of(&path, e_star);
+    let (peak, width) = (0.5e6, 1e-3);
+    let solve = |dp: f64, steps: usize| {
+        let set = InterfaceSettings {
+            steps,
+            tolerance: 1e-10,
+            ..InterfaceSettings::default()
+        };
+        match hertz(&sigma, peak, width, dp, &set) {
+            InterfaceFlow::Conducting(Conduction::Series { resistance }) => resistance,
+            other => panic!("{other:?}"),
+        }
+    };
+    for dp in [1e3, 5e4, 2e5, 4e5] {
+        let reference = solve(dp, 6400);
+        for steps in [16, 32, 64, 128, 256] {
+            let start = std::time::Instant::now();
+            let r = solve(dp, steps);
+            let seconds = start.elapsed().as_secs_f64();
+            println!(
+                "ΔP/p_max = {:.3}: {steps:4} steps: error {:.2e}, {:.1} µs",
+                dp / peak,
+                (r / reference - 1.0).abs(),
+                seconds * 1e6
+            );
+        }
+    }
+}
