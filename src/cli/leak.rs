@@ -21,6 +21,9 @@ const MAX_SWEEP_POINTS: i64 = 1_000_000;
     after_help = "Pressures take units (\"0.2 MPa\", \"2bar\", \"30psi\"); bare numbers are Pa.\n\
     Output columns: nominal_pressure_Pa, zeta_c, lambda_c_m, u_c_m, ubar_c_m, hrms_c_m, \
     leak_rate_m3_per_s, state (leaking|sealed); lambda_c = 2π/(zeta_c q0).\n\
+    An O-ring scenario is evaluated in the state `sealsim run` starts from (its installed Hertz \
+    profile through 16 strips in series); a pressure is the peak of that profile, and the \
+    junction columns are the peak strip's.\n\
     With --fidelity effective-medium, u_c_m is the effective gap (12 η σ_eff)^(1/3) and the other \
     junction columns are the critical junction's at the same pressure; with rule-of-thumb, \
     u_c_m = ubar_c_m = hrms_c_m (the level computes no separation).\n\
@@ -119,14 +122,14 @@ fn parse_sweep(text: &str) -> Result<Sweep, String> {
 pub fn run(args: LeakArgs) -> Result<(), CliError> {
     let scenario = Scenario::load(&args.scenario)?;
     let pressures = match (&args.pressures, args.sweep) {
-        (Some(list), _) => list.clone(),
-        (None, Some(sweep)) => sweep.pressures(args.points.unwrap_or(DEFAULT_SWEEP_POINTS)),
-        (None, None) => vec![scenario.problem.seal.nominal_pressure],
+        (Some(list), _) => Some(list.clone()),
+        (None, Some(sweep)) => Some(sweep.pressures(args.points.unwrap_or(DEFAULT_SWEEP_POINTS))),
+        (None, None) => None,
     };
     let fidelity = args.fidelity.unwrap_or(scenario.life.fidelity);
     let outcome = workflow::leak::evaluate(
         &scenario,
-        &pressures,
+        pressures.as_deref(),
         fidelity,
         &mut progress_bar("numerical level"),
     );

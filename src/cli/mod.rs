@@ -88,8 +88,8 @@ pub enum Command {
     Run(run::RunArgs),
     /// The same life scenario with several compounds, side by side.
     Compare(compare::CompareArgs),
-    /// Leak rate at one or more nominal pressures, as CSV (an O-ring: its central strip right
-    /// after installation).
+    /// Leak rate at one or more nominal pressures, as CSV (an O-ring: its installed profile, the
+    /// first state of `run`; a pressure is the profile's peak).
     Leak(leak::LeakArgs),
     /// Speed against accuracy: the scenario at every fidelity level and a ladder of numerical
     /// settings, with wall time and error against the most accurate setting.

@@ -25,7 +25,7 @@ use std::path::PathBuf;
     contact_width_m, u_c_m (blank when sealed at the peak), leak_rate_m3_per_s, \
     leaked_volume_m3, state (leaking|sealed|lift_off), open_fraction (open fraction of the critical channels under particle clogging; 1 without [contamination]). The first row is the installation, t = 0.\n\
     An O-ring's leak rate is integrated over its Hertz profile as strips in series; `sealsim \
-    leak` on the same scenario evaluates only the central strip right after installation.\n\
+    leak` on the same scenario evaluates the same installed state (the first row).\n\
     With [motion] (a reciprocating seal, PY08 §8) the history gets drag_leak_rate_m3_per_s, the \
     drag L_y d v of the peak strip's film d = β u_c (the most compressed strip holds the critical \
     junction): with constant sliding it is included in leak_rate_m3_per_s (hence in the leaked \

@@ -202,17 +202,7 @@ impl<'a> Simulator<'a> {
             validity::no_failure_criterion(&mut findings);
         }
         validity::surface(&p.spectrum, &mut findings);
-        let mut state = Mechanics {
-            time: 0.0,
-            reduced_time: 0.0,
-            relaxation: RelaxationState::new(&p.material.prony),
-            ageing_time: 0.0,
-            leaked_volume: 0.0,
-            log_open_fraction: 0.0,
-            clogged_shut: false,
-        };
-        // installation: an instantaneous jump of the load variable
-        state.relaxation.step(&p.material.prony, 0.0, self.load0);
+        let mut state = self.installed();
         let first = self.snapshot(&state);
         self.assess(&state, &first, &mut findings);
         let mut rows = vec![self.row(&state, &first)];
@@ -238,6 +228,78 @@ impl<'a> Simulator<'a> {
             failure,
             findings,
         }
+    }
+
+    /// The mechanical state right after installation (t = 0): an instantaneous jump of the load
+    /// variable.
+    fn installed(&self) -> Mechanics {
+        let p = self.problem;
+        let mut state = Mechanics {
+            time: 0.0,
+            reduced_time: 0.0,
+            relaxation: RelaxationState::new(&p.material.prony),
+            ageing_time: 0.0,
+            leaked_volume: 0.0,
+            log_open_fraction: 0.0,
+            clogged_shut: false,
+        };
+        state.relaxation.step(&p.material.prony, 0.0, self.load0);
+        state
+    }
+
+    /// The static leak of the installed seal with its pressure profile scaled to the peak contact
+    /// pressure `peak` \[Pa\]: the strips in series with the asperity modulus at installation,
+    /// exactly as the first row of [`Self::run`] computes it (at the installation's own peak, the
+    /// same number). Returns the leak rate \[m³/s\] (all channels open, no drag) and the peak
+    /// strip's junction.
+    pub fn installed_leak(&self, peak: f64) -> (f64, Junction) {
+        let p = self.problem;
+        let state = self.installed();
+        let e_star = self.asperity_modulus(&state) / (1.0 - p.material.poisson_ratio.powi(2));
+        let installed = self.profile_at(&state, 0.0);
+        self.profile_leak(&installed.scaled(peak / installed.peak()), e_star)
+    }
+
+    /// The peak contact pressure right after installation \[Pa\] (the first row of
+    /// [`Self::run`]).
+    pub fn installed_peak(&self) -> f64 {
+        self.profile_at(&self.installed(), 0.0).peak()
+    }
+
+    /// The nominal pressure profile of `state` at time `t`.
+    fn profile_at(&self, state: &Mechanics, t: f64) -> Profile {
+        let p = self.problem;
+        let ageing = p
+            .ageing
+            .map_or(1.0, |ag| (-ag.rate * state.ageing_time).exp());
+        match p.loading {
+            Loading::Displacement => p.geometry.profile(
+                state.relaxation.stress(&p.material.prony) * ageing,
+                p.material.prony.instantaneous(),
+                p.thermal_strain.as_ref(),
+                p.environment.at(t),
+            ),
+            Loading::Force => self.initial_profile,
+        }
+    }
+
+    /// The leak rate through `profile`'s strips in series (the leak law) and the peak strip's
+    /// junction, with the asperity contact's E* `e_star` \[Pa\].
+    fn profile_leak(&self, profile: &Profile, e_star: f64) -> (f64, Junction) {
+        let p = self.problem;
+        let conductance = |pressure: f64| {
+            self.path
+                .conductance(pressure / e_star, p.shape_factor, p.fluid.viscosity)
+        };
+        let resistance = profile.series_resistance(&self.rule, conductance);
+        let leak_rate = p.fluid.leak_rate(
+            profile.geometry(p.geometry.sealing_length()),
+            Conduction::Series { resistance },
+        );
+        (
+            leak_rate,
+            self.path.critical_junction(profile.peak() / e_star),
+        )
     }
 
     /// Internal step ends in (from, to]: `to`, plus eight per shortest temperature cycle
@@ -366,31 +428,11 @@ impl<'a> Simulator<'a> {
     fn open_snapshot_at(&self, state: &Mechanics, t: f64) -> Snapshot {
         let p = self.problem;
         let temperature = p.environment.at(t);
-        let ageing = p
-            .ageing
-            .map_or(1.0, |ag| (-ag.rate * state.ageing_time).exp());
-        let profile = match p.loading {
-            Loading::Displacement => p.geometry.profile(
-                state.relaxation.stress(&p.material.prony) * ageing,
-                p.material.prony.instantaneous(),
-                p.thermal_strain.as_ref(),
-                temperature,
-            ),
-            Loading::Force => self.initial_profile,
-        };
+        let profile = self.profile_at(state, t);
         let retained = profile.force_per_length() / self.initial_profile.force_per_length();
         let e_asperity = self.asperity_modulus(state);
         let e_star = e_asperity / (1.0 - p.material.poisson_ratio.powi(2));
-        let conductance = |pressure: f64| {
-            self.path
-                .conductance(pressure / e_star, p.shape_factor, p.fluid.viscosity)
-        };
-        let resistance = profile.series_resistance(&self.rule, conductance);
-        let leak_rate = p.fluid.leak_rate(
-            profile.geometry(p.geometry.sealing_length()),
-            Conduction::Series { resistance },
-        );
-        let peak_junction = self.path.critical_junction(profile.peak() / e_star);
+        let (leak_rate, peak_junction) = self.profile_leak(&profile, e_star);
         let u_c = peak_junction.leaking().map(|j| j.u_c);
         let lambda_c = peak_junction.leaking().map_or(0.0, |j| j.lambda_c);
         let (motion, open_static_leak_rate, leak_rate) = match &self.drag {

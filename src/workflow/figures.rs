@@ -40,7 +40,7 @@ pub fn evaluate<'a>(
                     let mut scenario = sc.clone();
                     scenario.life.motion = None;
                     let (path, findings) = scenario_path(&scenario, fidelity, None, progress);
-                    let outcome = evaluate_on(&scenario, path, findings, &set.pressures);
+                    let outcome = evaluate_on(&scenario, path, findings, Some(&set.pressures));
                     Curve {
                         name: scenario.name,
                         points: outcome.points,

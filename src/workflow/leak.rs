@@ -5,6 +5,8 @@ use super::{Progress, scenario_path};
 use crate::dynamic::{DragCoefficients, DragSettings, MotionPoint, MotionSpec};
 use crate::leak::{ContactPath, Fidelity, FlatSeal, LeakPoint, StaticSolver};
 use crate::scenario::Scenario;
+use crate::seal::SealGeometry;
+use crate::simulate::Simulator;
 use crate::validity::{self, At, Findings};
 
 /// The leak of a scenario at several pressures.
@@ -26,13 +28,28 @@ pub struct LeakOutcome {
 /// level solves exactly at these pressures; `progress` reports its realisations.
 pub fn evaluate(
     scenario: &Scenario,
-    pressures: &[f64],
+    pressures: Option<&[f64]>,
     fidelity: Fidelity,
     progress: Progress<'_>,
 ) -> LeakOutcome {
-    let e_star = scenario.problem.material.effective_modulus();
-    let nodes = pressures.iter().map(|p| p / e_star).collect();
-    let (path, findings) = scenario_path(scenario, fidelity, Some(nodes), progress);
+    // the numerical level solves exactly at a flat seal's pressures; an O-ring's strips need
+    // its table over all pressures
+    let nodes = match (scenario.life.geometry, pressures) {
+        (SealGeometry::Flat { .. }, Some(list)) => {
+            let e_star = scenario.problem.material.effective_modulus();
+            Some(list.iter().map(|p| p / e_star).collect())
+        }
+        (
+            SealGeometry::Flat {
+                nominal_pressure, ..
+            },
+            None,
+        ) => Some(vec![
+            nominal_pressure / scenario.problem.material.effective_modulus(),
+        ]),
+        (SealGeometry::ORing { .. }, _) => None,
+    };
+    let (path, findings) = scenario_path(scenario, fidelity, nodes, progress);
     evaluate_on(scenario, path, findings, pressures)
 }
 
@@ -42,13 +59,21 @@ pub fn evaluate_on(
     scenario: &Scenario,
     path: ContactPath,
     mut findings: Findings,
-    pressures: &[f64],
+    pressures: Option<&[f64]>,
 ) -> LeakOutcome {
     let pb = &scenario.problem;
     validity::surface(&pb.spectrum, &mut findings);
     scenario.life.assess_installation(&mut findings);
+    let mut points: Vec<LeakPoint> = match scenario.life.geometry {
+        SealGeometry::ORing { .. } => installed_oring(scenario, path.clone(), pressures),
+        SealGeometry::Flat { .. } => {
+            let solver = StaticSolver::with_path(pb.clone(), path.clone());
+            let own = [pb.seal.nominal_pressure];
+            let list = pressures.unwrap_or(&own);
+            list.iter().map(|&p0| solver.evaluate(p0)).collect()
+        }
+    };
     let solver = StaticSolver::with_path(pb.clone(), path);
-    let mut points: Vec<LeakPoint> = pressures.iter().map(|&p0| solver.evaluate(p0)).collect();
     for point in &points {
         solver.assess(point, &mut findings);
     }
@@ -68,6 +93,38 @@ pub fn evaluate_on(
             .is_some_and(MotionSpec::is_stroke),
         findings,
     }
+}
+
+/// An O-ring's installed state (what `sealsim run` computes at t = 0: the Hertz profile through
+/// its strips in series, with the asperity modulus at installation), with its profile scaled to
+/// each of `pressures` as the peak contact pressure \[Pa\] (`None`: the installation's own
+/// peak). Static: no drag, all channels open.
+fn installed_oring(
+    scenario: &Scenario,
+    path: ContactPath,
+    pressures: Option<&[f64]>,
+) -> Vec<LeakPoint> {
+    let mut life = scenario.life.clone();
+    life.motion = None;
+    life.contamination = None;
+    let simulator = Simulator::with_path(&life, path);
+    let own = [simulator.installed_peak()];
+    pressures
+        .unwrap_or(&own)
+        .iter()
+        .map(|&peak| {
+            let (leak_rate, junction) = simulator.installed_leak(peak);
+            LeakPoint {
+                nominal_pressure: peak,
+                junction,
+                leak_rate: if leak_rate.is_finite() {
+                    leak_rate
+                } else {
+                    0.0
+                },
+            }
+        })
+        .collect()
 }
 
 /// The motion quantities at `point` (exact critical junction and P(u) at its pressure,

@@ -452,9 +452,8 @@ pub fn for_scenario(
     let rows = run(&scenario.problem, &scenario.life, options, progress);
     let mut table_level = scenario.clone();
     table_level.life.fidelity = Fidelity::Table;
-    let p0 = [scenario.problem.seal.nominal_pressure];
     let mut findings =
-        super::leak::evaluate(&table_level, &p0, Fidelity::Table, &mut |_, _| {}).findings;
+        super::leak::evaluate(&table_level, None, Fidelity::Table, &mut |_, _| {}).findings;
     findings.extend(super::life::run(&table_level, &mut |_, _| {}).findings);
     ScenarioTradeoff { rows, findings }
 }
