@@ -126,7 +126,8 @@ pub fn hertz(
         half_width: 0.5 * width,
         dp,
         theta_a,
-        steps: settings.steps.max(8),
+        // even: the no-fluid-pressure resistance uses Simpson's rule on the same steps
+        steps: settings.steps.max(8).next_multiple_of(2),
     };
     let resistance = if dp > 0.0 {
         shot.flux(settings.tolerance)

@@ -11,6 +11,7 @@
 use crate::contact::Junction;
 use crate::seal::LINDLEY_RANGE;
 use crate::surface::Spectrum;
+use crate::units::human;
 use std::fmt;
 
 /// ΔP/P0 above which the fluid pressure is no longer small against the contact pressure
@@ -288,33 +289,13 @@ impl fmt::Display for Finding {
     }
 }
 
-/// `value unit` with four significant digits.
+/// `value unit` with four significant digits ([`human`]).
 fn with_unit(value: f64, unit: &str) -> String {
-    let number = if value != 0.0 && (value.abs() >= 1e4 || value.abs() < 1e-3) {
-        format!("{value:.3e}")
-    } else {
-        trimmed(value)
-    };
+    let number = human(value, 4);
     if unit.is_empty() {
         number
     } else {
         format!("{number} {unit}")
-    }
-}
-
-/// `value` with four significant digits, trailing zeros dropped.
-fn trimmed(value: f64) -> String {
-    let magnitude = if value == 0.0 {
-        0
-    } else {
-        value.abs().log10().floor() as i32
-    };
-    let decimals = (3 - magnitude).max(0) as usize;
-    let text = format!("{value:.decimals$}");
-    if text.contains('.') {
-        text.trim_end_matches('0').trim_end_matches('.').to_owned()
-    } else {
-        text
     }
 }
 
@@ -324,9 +305,9 @@ fn duration(t: f64) -> String {
     const YEAR: f64 = 365.25 * DAY;
     let seconds = with_unit(t, "s");
     if t >= YEAR {
-        format!("{seconds} ({} years)", trimmed(t / YEAR))
+        format!("{seconds} ({} years)", human(t / YEAR, 4))
     } else if t >= DAY {
-        format!("{seconds} ({} days)", trimmed(t / DAY))
+        format!("{seconds} ({} days)", human(t / DAY, 4))
     } else {
         seconds
     }

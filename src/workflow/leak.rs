@@ -64,16 +64,15 @@ pub fn evaluate_on(
     let pb = &scenario.problem;
     validity::surface(&pb.spectrum, &mut findings);
     scenario.life.assess_installation(&mut findings);
+    let solver = StaticSolver::with_path(pb.clone(), path);
     let mut points: Vec<LeakPoint> = match scenario.life.geometry {
-        SealGeometry::ORing { .. } => installed_oring(scenario, path.clone(), pressures),
+        SealGeometry::ORing { .. } => installed_oring(scenario, solver.path(), pressures),
         SealGeometry::Flat { .. } => {
-            let solver = StaticSolver::with_path(pb.clone(), path.clone());
             let own = [pb.seal.nominal_pressure];
             let list = pressures.unwrap_or(&own);
             list.iter().map(|&p0| solver.evaluate(p0)).collect()
         }
     };
-    let solver = StaticSolver::with_path(pb.clone(), path);
     for point in &points {
         solver.assess(point, &mut findings);
     }
@@ -101,13 +100,13 @@ pub fn evaluate_on(
 /// peak). Static: no drag, all channels open.
 fn installed_oring(
     scenario: &Scenario,
-    path: ContactPath,
+    path: &ContactPath,
     pressures: Option<&[f64]>,
 ) -> Vec<LeakPoint> {
     let mut life = scenario.life.clone();
     life.motion = None;
     life.contamination = None;
-    let simulator = Simulator::with_path(&life, path);
+    let simulator = Simulator::with_path(&life, path.clone());
     let own = [simulator.installed_peak()];
     pressures
         .unwrap_or(&own)

@@ -452,8 +452,11 @@ pub fn for_scenario(
     let rows = run(&scenario.problem, &scenario.life, options, progress);
     let mut table_level = scenario.clone();
     table_level.life.fidelity = Fidelity::Table;
+    // one contact table for the static state and the life
+    let (path, findings) =
+        super::scenario_path(&table_level, Fidelity::Table, None, &mut |_, _| {});
     let mut findings =
-        super::leak::evaluate(&table_level, None, Fidelity::Table, &mut |_, _| {}).findings;
-    findings.extend(super::life::run(&table_level, &mut |_, _| {}).findings);
+        super::leak::evaluate_on(&table_level, path.clone(), findings, None).findings;
+    findings.extend(super::life_on(&table_level.life, path, Default::default()).findings);
     ScenarioTradeoff { rows, findings }
 }
