@@ -100,46 +100,97 @@ fn mean_over(sigma: &dyn Fn(f64) -> f64, a: f64, b: f64, settings: &InterfaceSet
     total / (b - a)
 }
 
-/// The Hertz profile `p_c = peak √(1 − (2x/b)²)` over `width` b \[m\] under ΔP \[Pa\]: the flux q
-/// by shooting; the result as the series resistance `R = ΔP/q` \[Pa·s/m²\]. Lift-off when
-/// ΔP ≥ peak; sealed when σ(peak − ΔP) = 0 (the centre seals even with the whole fluid pressure
-/// relieving it).
+/// A Hertz-shaped contact-pressure profile lifted by a uniform energisation:
+/// `p_c(x) = offset + peak √(1 − (2x/b)²)` over `width` b \[m\] (pressures in Pa, gauge over
+/// the outlet). `offset = k_e ΔP` for a pressure-energised O-ring (docs/model.md §6.3), 0
+/// otherwise.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HertzContact {
+    /// The ring's own (squeeze) peak \[Pa\].
+    pub peak: f64,
+    /// The uniform energisation added to it \[Pa\].
+    pub offset: f64,
+    /// Contact width b \[m\].
+    pub width: f64,
+}
+
+/// A solved Hertz interface.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HertzSolution {
+    /// What the interface does.
+    pub flow: InterfaceFlow,
+    /// The fluid pressure at the profile's peak (x = 0) \[Pa\]: the asperities there carry
+    /// `offset + peak − centre_fluid_pressure`. ΔP when lifted off or sealed (no flow lowers
+    /// the inlet pressure before the sealing strip).
+    pub centre_fluid_pressure: f64,
+    /// `κ = q R0/ΔP` (≥ 1), the flux over its no-fluid-pressure value: a start for the next
+    /// solve of a nearby state (`None` when there is no flow).
+    pub flux_ratio: Option<f64>,
+}
+
+/// The Hertz contact `contact` under ΔP = `pressure_difference` \[Pa\]: the flux q by shooting;
+/// the result as the series resistance `R = ΔP/q` \[Pa·s/m²\]. Lift-off when ΔP ≥ offset + peak;
+/// sealed when σ(offset + peak − ΔP) = 0 (the centre seals even with the whole fluid pressure
+/// relieving it). `start`: a flux ratio κ from a nearby state ([`HertzSolution::flux_ratio`]),
+/// which the secant iteration starts from (the result does not depend on it beyond the
+/// tolerance).
 pub fn hertz(
     sigma: &dyn Fn(f64) -> f64,
-    peak: f64,
-    width: f64,
+    contact: HertzContact,
     pressure_difference: f64,
     settings: &InterfaceSettings,
-) -> InterfaceFlow {
+    start: Option<f64>,
+) -> HertzSolution {
     let dp = pressure_difference;
-    if dp >= peak {
-        return InterfaceFlow::LiftOff;
+    let HertzContact {
+        peak,
+        offset,
+        width,
+    } = contact;
+    let unsolved = |flow| HertzSolution {
+        flow,
+        centre_fluid_pressure: dp,
+        flux_ratio: None,
+    };
+    if dp >= peak + offset {
+        return unsolved(InterfaceFlow::LiftOff);
     }
-    if sigma(peak - dp) <= 0.0 {
-        return InterfaceFlow::Sealed;
+    if sigma(peak + offset - dp) <= 0.0 {
+        return unsolved(InterfaceFlow::Sealed);
     }
     // x = (b/2) sin θ; the contact is open (p_c ≤ ΔP) for θ < θ_a
-    let theta_a = -(dp / peak).clamp(0.0, 1.0).acos();
+    let theta_a = -((dp - offset) / peak).clamp(0.0, 1.0).acos();
     let shot = Shot {
         sigma,
         peak,
+        offset,
         half_width: 0.5 * width,
         dp,
         theta_a,
         // even: the no-fluid-pressure resistance uses Simpson's rule on the same steps
         steps: settings.steps.max(8).next_multiple_of(2),
     };
-    let resistance = if dp > 0.0 {
-        shot.flux(settings.tolerance)
-            .filter(|q| *q > 0.0 && q.is_finite())
-            .map_or(f64::INFINITY, |q| dp / q)
-    } else {
-        shot.zero_pressure_resistance()
-    };
-    if resistance.is_finite() {
-        InterfaceFlow::Conducting(Conduction::Series { resistance })
-    } else {
-        InterfaceFlow::Sealed
+    let r0 = shot.zero_pressure_resistance();
+    if !(r0.is_finite() && r0 > 0.0) {
+        return unsolved(InterfaceFlow::Sealed);
+    }
+    if dp <= 0.0 {
+        return HertzSolution {
+            flow: InterfaceFlow::Conducting(Conduction::Series { resistance: r0 }),
+            centre_fluid_pressure: 0.0,
+            flux_ratio: Some(1.0),
+        };
+    }
+    match shot
+        .flux(r0, start, settings.tolerance)
+        .filter(|q| *q > 0.0 && q.is_finite())
+    {
+        Some(q) => HertzSolution {
+            flow: InterfaceFlow::Conducting(Conduction::Series { resistance: dp / q }),
+            centre_fluid_pressure: shot.centre_pressure(q),
+            flux_ratio: Some(q * r0 / dp),
+        },
+        None => unsolved(InterfaceFlow::Sealed),
     }
 }
 
@@ -147,6 +198,7 @@ pub fn hertz(
 struct Shot<'a> {
     sigma: &'a dyn Fn(f64) -> f64,
     peak: f64,
+    offset: f64,
     half_width: f64,
     dp: f64,
     theta_a: f64,
@@ -174,29 +226,48 @@ impl Shot<'_> {
     fn slope(&self, t: f64, p: f64, q: f64) -> f64 {
         let (theta, dtheta) = self.angle(t);
         let c = theta.cos().max(0.0);
-        let r = self.resistivity(self.peak * c - p);
+        let r = self.resistivity(self.offset + self.peak * c - p);
         if r == 0.0 {
             return 0.0;
         }
         -q * r * self.half_width * c * dtheta
     }
 
-    /// p_f at the outlet for flux `q` (RK4 in t); −∞ once a strip seals.
-    fn outlet_pressure(&self, q: f64) -> f64 {
+    /// p_f at `t_end` for flux `q` (RK4 in t on the grid of `steps` over [0, 1], the last step
+    /// partial); −∞ once a strip seals.
+    fn pressure_at(&self, q: f64, t_end: f64) -> f64 {
         let h = 1.0 / self.steps as f64;
         let mut p = self.dp;
-        for k in 0..self.steps {
-            let t = k as f64 * h;
+        let mut t = 0.0;
+        while t < t_end {
+            let step = h.min(t_end - t);
             let k1 = self.slope(t, p, q);
-            let k2 = self.slope(t + 0.5 * h, p + 0.5 * h * k1, q);
-            let k3 = self.slope(t + 0.5 * h, p + 0.5 * h * k2, q);
-            let k4 = self.slope(t + h, p + h * k3, q);
-            p += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+            let k2 = self.slope(t + 0.5 * step, p + 0.5 * step * k1, q);
+            let k3 = self.slope(t + 0.5 * step, p + 0.5 * step * k2, q);
+            let k4 = self.slope(t + step, p + step * k3, q);
+            p += step / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
             if !p.is_finite() {
                 return f64::NEG_INFINITY;
             }
+            // whole steps land on k·h exactly (no drift over thousands of steps)
+            t = if step == h {
+                ((t / h).round() + 1.0) * h
+            } else {
+                t_end
+            };
         }
         p
+    }
+
+    /// p_f at the outlet for flux `q`.
+    fn outlet_pressure(&self, q: f64) -> f64 {
+        self.pressure_at(q, 1.0)
+    }
+
+    /// p_f at the profile's peak (θ = 0) for flux `q`.
+    fn centre_pressure(&self, q: f64) -> f64 {
+        let t_centre = (-self.theta_a / (FRAC_PI_2 - self.theta_a)).sqrt();
+        self.pressure_at(q, t_centre).max(0.0)
     }
 
     /// `R0 = ∫ dx/σ(p_c(x))` over the part of the width beyond θ_a (no fluid pressure in the
@@ -207,7 +278,7 @@ impl Shot<'_> {
         let f = |t: f64| {
             let (theta, dtheta) = self.angle(t);
             let c = theta.cos().max(0.0);
-            self.resistivity(self.peak * c) * self.half_width * c * dtheta
+            self.resistivity(self.offset + self.peak * c) * self.half_width * c * dtheta
         };
         let mut total = f(0.0) + f(1.0);
         for k in 1..self.steps {
@@ -216,81 +287,72 @@ impl Shot<'_> {
         total * h / 3.0
     }
 
-    /// The flux with p_f(outlet) = 0, to relative `tolerance`: bracketing from `ΔP/R0` by
-    /// factors of 4, then the Illinois variant of regula falsi on ln q (Dowell & Jarratt,
-    /// BIT 11 (1971) 168, recalled), whose function of ln q here is smooth and monotone.
-    fn flux(&self, tolerance: f64) -> Option<f64> {
-        let r0 = self.zero_pressure_resistance();
-        let guess = if r0.is_finite() && r0 > 0.0 {
-            self.dp / r0
-        } else {
-            return None;
+    /// The flux with p_f(outlet) = 0, to relative `tolerance` in q.
+    ///
+    /// The unknown is x = ln q and the function `g(x) = ln(ΔP − p_f(outlet)) − ln ΔP`, the log
+    /// of the pressure drop the flux q needs over ΔP: increasing in x, with slope 1 where the
+    /// fluid pressure hardly changes the asperity pressure (drop ≈ q R0), steeper as it does, and
+    /// +∞ beyond the flux at which a strip seals. The root is found by secant steps, the first
+    /// with slope 1, kept inside the bracket the signs of g establish (bisection when a step
+    /// leaves it or g is infinite): from a nearby state's κ (`start`) two or three evaluations.
+    fn flux(&self, r0: f64, start: Option<f64>, tolerance: f64) -> Option<f64> {
+        let g = |x: f64| {
+            let drop = self.dp - self.outlet_pressure(x.exp());
+            if drop.is_nan() {
+                f64::INFINITY
+            } else {
+                (drop / self.dp).ln()
+            }
         };
-        let f = |ln_q: f64| self.outlet_pressure(ln_q.exp());
-        // the fluid pressure lowers the asperity pressure: q ≥ ΔP/R0; bracket upwards
-        let (mut a, mut fa) = (guess.ln(), f(guess.ln()));
-        if fa <= 0.0 {
-            // rounding of R0's rule: step down until positive
-            for _ in 0..60 {
-                a -= 4f64.ln();
-                fa = f(a);
-                if fa > 0.0 {
-                    break;
-                }
-            }
-            if fa <= 0.0 {
-                return None;
-            }
-        }
-        let (mut b, mut fb) = (a + 4f64.ln(), f(a + 4f64.ln()));
-        let mut expansions = 0;
-        while fb > 0.0 {
-            a = b;
-            fa = fb;
-            b += 4f64.ln();
-            fb = f(b);
-            expansions += 1;
-            if expansions > 200 {
-                return None;
-            }
-        }
-        // Illinois on [a, b] with f(a) > 0 > f(b) (f(b) may be −∞: bisect until finite)
-        let mut side = 0;
+        let x0 = (self.dp / r0).ln() + start.unwrap_or(1.0).max(1.0).ln();
+        Self::bracketed_secant(&g, x0, tolerance).map(f64::exp)
+    }
+
+    /// The root of an increasing `g` from `x0`: secant steps (the first with slope 1), each kept
+    /// inside the bracket [lo, hi] of the points where g < 0 and g > 0 (or +∞) seen so far, and
+    /// bisection of the bracket when a step would leave it; `None` if no root in 200 steps.
+    fn bracketed_secant(g: &dyn Fn(f64) -> f64, x0: f64, tolerance: f64) -> Option<f64> {
+        let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+        let (mut x, mut gx) = (x0, g(x0));
+        let mut slope = 1.0;
         for _ in 0..200 {
-            if (b - a).abs() <= tolerance {
-                break;
+            if gx == 0.0 {
+                return Some(x);
             }
-            let c = if fb.is_finite() {
-                let c = b - fb * (b - a) / (fb - fa);
-                if c > a.min(b) && c < a.max(b) {
-                    c
-                } else {
-                    0.5 * (a + b)
-                }
+            if gx < 0.0 {
+                lo = lo.max(x);
             } else {
-                0.5 * (a + b)
+                hi = hi.min(x);
+            }
+            if hi - lo <= tolerance {
+                return Some(0.5 * (lo + hi));
+            }
+            let mut next = if gx.is_finite() {
+                x - gx / slope
+            } else {
+                f64::NAN
             };
-            let fc = f(c);
-            if fc > 0.0 {
-                a = c;
-                fa = fc;
-                if side == -1 {
-                    fb *= 0.5;
-                }
-                side = -1;
-            } else {
-                b = c;
-                fb = fc;
-                if side == 1 {
-                    fa *= 0.5;
-                }
-                side = 1;
+            if !(next > lo && next < hi) {
+                // outside the bracket (or no finite secant): bisect it, or march out of a
+                // one-sided one by factors of e
+                next = match (lo.is_finite(), hi.is_finite()) {
+                    (true, true) => 0.5 * (lo + hi),
+                    (true, false) => lo + 1.0,
+                    (false, true) => hi - 1.0,
+                    (false, false) => return None,
+                };
             }
-            if fc == 0.0 {
-                return Some(c.exp());
+            let g_next = g(next);
+            if (next - x).abs() <= tolerance && g_next.is_finite() {
+                return Some(next);
             }
+            if gx.is_finite() && g_next.is_finite() && g_next != gx {
+                let s = (g_next - gx) / (next - x);
+                slope = if s > 0.0 && s.is_finite() { s } else { 1.0 };
+            }
+            (x, gx) = (next, g_next);
         }
-        Some((0.5 * (a + b)).exp())
+        None
     }
 }
 
@@ -340,7 +402,12 @@ mod tests {
             steps,
             ..InterfaceSettings::default()
         };
-        match hertz(&quadratic, peak, 1e-3, dp, &set) {
+        let contact = HertzContact {
+            peak,
+            offset: 0.0,
+            width: 1e-3,
+        };
+        match hertz(&quadratic, contact, dp, &set, None).flow {
             InterfaceFlow::Conducting(Conduction::Series { resistance }) => dp / resistance,
             other => panic!("{other:?}"),
         }
@@ -359,7 +426,18 @@ mod tests {
         }
         let set = InterfaceSettings::default();
         assert_eq!(
-            hertz(&quadratic, peak, 1e-3, peak, &set),
+            hertz(
+                &quadratic,
+                HertzContact {
+                    peak,
+                    offset: 0.0,
+                    width: 1e-3
+                },
+                peak,
+                &set,
+                None
+            )
+            .flow,
             InterfaceFlow::LiftOff
         );
     }

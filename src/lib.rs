@@ -100,6 +100,7 @@ pub mod clogging;
 pub mod contact;
 pub mod dynamic;
 pub mod fluid;
+pub mod gland;
 pub mod interface;
 pub mod leak;
 pub mod material;

@@ -11,6 +11,7 @@ use super::validate::{Bound, Field, field};
 use crate::leak::Fidelity;
 use crate::material::shift::{Cycle, DAY, YEAR};
 use crate::material::{Ageing, Material, Shift, TemperatureHistory};
+use crate::gland::Gland;
 use crate::seal::SealGeometry;
 use crate::simulate::{FailureCriteria, Loading, ThermalStrain, TimeGrid};
 use crate::units::{Dimension, show};
@@ -118,6 +119,10 @@ pub const YEARLY_MAXIMUM: f64 = 201.5 * DAY;
 /// environment).
 pub(super) struct SealSpec {
     pub geometry: SealGeometry,
+    /// The groove of a groove-seated O-ring.
+    pub gland: Option<Gland>,
+    /// k_e (docs/model.md §6.3).
+    pub energisation_factor: f64,
     pub loading: Loading,
     /// `housing_expansion` \[1/K\] and its span.
     pub housing_expansion: Option<(f64, std::ops::Range<usize>)>,
@@ -202,6 +207,8 @@ impl Source<'_> {
                         width: required(&raw.width, &WIDTH, FLAT_KEYS)?,
                         length: required(&raw.length, &LENGTH, FLAT_KEYS)?,
                     },
+                    gland: None,
+                    energisation_factor: 0.0,
                     loading,
                     housing_expansion: None,
                     installation_temperature: None,
@@ -257,6 +264,8 @@ impl Source<'_> {
                         mean_diameter,
                         squeeze,
                     },
+                    gland: None,
+                    energisation_factor: 0.0,
                     loading,
                     housing_expansion,
                     installation_temperature,

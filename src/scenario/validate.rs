@@ -225,6 +225,8 @@ impl Source<'_> {
             shape_factor,
             fluid,
             geometry: seal.geometry,
+            gland: seal.gland,
+            energisation_factor: seal.energisation_factor,
             loading: seal.loading,
             environment,
             thermal_strain,

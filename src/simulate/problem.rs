@@ -5,6 +5,7 @@ use crate::clogging::Contamination;
 use crate::contact::ContactSettings;
 use crate::dynamic::{MotionPoint, MotionSpec};
 use crate::fluid::Fluid;
+use crate::gland::Gland;
 use crate::leak::Fidelity;
 use crate::material::{Ageing, Material, TemperatureHistory};
 use crate::seal::{Profile, SealGeometry, ThermalStrain};
@@ -69,6 +70,11 @@ pub struct LifeProblem {
     pub shape_factor: f64,
     pub fluid: Fluid,
     pub geometry: SealGeometry,
+    /// The groove an O-ring sits in (`None`: a flat seal, or a ring squeezed between plates).
+    pub gland: Option<Gland>,
+    /// Energisation factor k_e: the fluid pressure adds `k_e ΔP` to the contact pressure across
+    /// the width (docs/model.md §6.3; 1 for a groove-seated ring by default, 0 otherwise).
+    pub energisation_factor: f64,
     pub loading: Loading,
     pub environment: TemperatureHistory,
     pub thermal_strain: Option<ThermalStrain>,

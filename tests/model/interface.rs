@@ -4,7 +4,7 @@
 
 use sealsim::contact::{ContactSettings, Elastic};
 use sealsim::fluid::{Conduction, junction_conductance};
-use sealsim::interface::{InterfaceFlow, InterfaceSettings, hertz, uniform};
+use sealsim::interface::{HertzContact, InterfaceFlow, InterfaceSettings, hertz, uniform};
 use sealsim::leak::{ContactPath, Fidelity};
 use sealsim::surface::Spectrum;
 
@@ -81,7 +81,12 @@ fn hertz_shooting_with_the_contact_table_converges_and_rises_with_pressure() {
             steps,
             ..InterfaceSettings::default()
         };
-        match hertz(&sigma, peak, width, dp, &set) {
+        let contact = HertzContact {
+            peak,
+            offset: 0.0,
+            width,
+        };
+        match hertz(&sigma, contact, dp, &set, None).flow {
             InterfaceFlow::Conducting(Conduction::Series { resistance }) => dp / resistance,
             other => panic!("ΔP = {dp}: {other:?}"),
         }
@@ -94,44 +99,63 @@ fn hertz_shooting_with_the_contact_table_converges_and_rises_with_pressure() {
         last = q;
     }
     let set = InterfaceSettings::default();
+    let contact = HertzContact {
+        peak,
+        offset: 0.0,
+        width,
+    };
     assert_eq!(
-        hertz(&sigma, peak, width, peak, &set),
+        hertz(&sigma, contact, peak, &set, None).flow,
         InterfaceFlow::LiftOff
     );
 }
 
 /// Study (ignored; `cargo test --release --test model interface::study -- --ignored
 /// --nocapture`): the error and cost of the Hertz shooting at few steps, against 6400 steps, on
-/// the contact table — what a life loop could afford per state.
+/// the contact table — cold (no start) and warm (started from the flux ratio of a state 1 %
+/// away in pressure, as a life loop does) — with and without energisation.
 #[test]
 #[ignore]
 fn study_hertz_steps_against_cost() {
     let (path, e_star) = paper_path(Fidelity::Table);
     let sigma = sigma_of(&path, e_star);
     let (peak, width) = (0.5e6, 1e-3);
-    let solve = |dp: f64, steps: usize| {
+    let solve = |dp: f64, offset: f64, steps: usize, start: Option<f64>| {
         let set = InterfaceSettings {
             steps,
             tolerance: 1e-10,
             ..InterfaceSettings::default()
         };
-        match hertz(&sigma, peak, width, dp, &set) {
-            InterfaceFlow::Conducting(Conduction::Series { resistance }) => resistance,
+        let contact = HertzContact {
+            peak,
+            offset,
+            width,
+        };
+        let s = hertz(&sigma, contact, dp, &set, start);
+        match s.flow {
+            InterfaceFlow::Conducting(Conduction::Series { resistance }) => {
+                (resistance, s.flux_ratio)
+            }
             other => panic!("{other:?}"),
         }
     };
-    for dp in [1e3, 5e4, 2e5, 4e5] {
-        let reference = solve(dp, 6400);
-        for steps in [16, 32, 64, 128, 256] {
-            let start = std::time::Instant::now();
-            let r = solve(dp, steps);
-            let seconds = start.elapsed().as_secs_f64();
-            println!(
-                "ΔP/p_max = {:.3}: {steps:4} steps: error {:.2e}, {:.1} µs",
-                dp / peak,
-                (r / reference - 1.0).abs(),
-                seconds * 1e6
-            );
+    for k_e in [0.0, 1.0] {
+        for dp in [1e3, 5e4, 2e5, 4e5] {
+            let (reference, _) = solve(dp, k_e * dp, 6400, None);
+            for steps in [16, 32, 64, 128, 256] {
+                let (_, nearby) = solve(0.99 * dp, k_e * 0.99 * dp, steps, None);
+                for (name, start) in [("cold", None), ("warm", nearby)] {
+                    let clock = std::time::Instant::now();
+                    let (r, _) = solve(dp, k_e * dp, steps, start);
+                    let seconds = clock.elapsed().as_secs_f64();
+                    println!(
+                        "k_e = {k_e}, ΔP/p_max = {:.3}: {steps:4} steps {name}: error {:.2e}, {:.1} µs",
+                        dp / peak,
+                        (r / reference - 1.0).abs(),
+                        seconds * 1e6
+                    );
+                }
+            }
         }
     }
 }

@@ -55,6 +55,8 @@ fn oring_problem(material: Material) -> LifeProblem {
             mean_diameter: 0.05,
             squeeze: 0.2,
         },
+        gland: None,
+        energisation_factor: 0.0,
         loading: Loading::Displacement,
         environment: TemperatureHistory::constant(TREF),
         thermal_strain: None,
