@@ -194,6 +194,105 @@ pub fn hertz(
     }
 }
 
+/// Hertz solutions of one run, interpolated in the peak pressure.
+///
+/// For a fixed σ(e) (the asperity modulus constant over the run), ΔP and energisation, the
+/// solution depends on the peak p_max and the width b only through p_max: in ξ = x/b the
+/// problem does not contain b, so `q b = F(p_max)` and the fluid pressure at the peak is
+/// `ΔP φ(p_max)`; with σ ∝ 1/η, `q b η` does not depend on the viscosity either. `ln F` and φ
+/// are smooth in ln p_max away from lift-off and sealing, and a life run visits a narrow band of
+/// p_max thousands of times (temperature cycles, bisection of failure times): this memo
+/// solves [`hertz`] at nodes `ln p_max = k h` as they are needed and interpolates with
+/// 4-point cubics (Lagrange on the uniform grid). Where a node does not conduct (near lift-off
+/// or sealing) it answers with the direct solve. Determinism: a node's value depends only on
+/// its index, not on the order in which states ask for it.
+#[derive(Debug)]
+pub struct HertzMemo {
+    /// Node spacing h in ln p_max.
+    spacing: f64,
+    /// `k → (ln(q b η), p_f(centre)/ΔP)` at `p_max = e^{k h}` (`None`: not conducting there).
+    nodes: std::cell::RefCell<std::collections::HashMap<i64, Option<(f64, f64)>>>,
+}
+
+/// Node spacing of [`HertzMemo`] in ln p_max (0.2 %): measured 2.7e-8 worst relative difference
+/// of the leak rate from the direct solves over the 30-year EPDM outdoor-cycle run (2.9e-7 at
+/// 1/128; the convergence is slower than h⁴ because σ from the contact table is only
+/// continuous at its own nodes), checked in tests/model/interface.rs.
+pub const MEMO_SPACING: f64 = 1.0 / 512.0;
+
+impl HertzMemo {
+    pub fn new(spacing: f64) -> Self {
+        HertzMemo {
+            spacing,
+            nodes: Default::default(),
+        }
+    }
+
+    /// [`hertz`] at peak `peak` \[Pa\], offset, `width` \[m\], ΔP, with `sigma` the local
+    /// conductance at viscosity `viscosity` \[Pa·s\] (the memo's σ must not change between calls
+    /// except by the viscosity): interpolated between memoised nodes, or solved directly.
+    pub fn solve(
+        &self,
+        sigma: &dyn Fn(f64) -> f64,
+        contact: HertzContact,
+        viscosity: f64,
+        pressure_difference: f64,
+        settings: &InterfaceSettings,
+    ) -> HertzSolution {
+        let direct = || hertz(sigma, contact, pressure_difference, settings, None);
+        if !(contact.peak > 0.0 && contact.width > 0.0 && pressure_difference > 0.0) {
+            return direct();
+        }
+        let x = contact.peak.ln() / self.spacing;
+        let k0 = x.floor() as i64 - 1;
+        let mut values = [(0.0, 0.0); 4];
+        for (j, v) in values.iter_mut().enumerate() {
+            let k = k0 + j as i64;
+            let node = *self.nodes.borrow_mut().entry(k).or_insert_with(|| {
+                let at = HertzContact {
+                    peak: (k as f64 * self.spacing).exp(),
+                    width: 1.0,
+                    ..contact
+                };
+                let solved = hertz(sigma, at, pressure_difference, settings, None);
+                match solved.flow {
+                    InterfaceFlow::Conducting(Conduction::Series { resistance })
+                        if resistance.is_finite() && resistance > 0.0 =>
+                    {
+                        Some((
+                            (pressure_difference / resistance * viscosity).ln(),
+                            solved.centre_fluid_pressure / pressure_difference,
+                        ))
+                    }
+                    _ => None,
+                }
+            });
+            match node {
+                Some(n) => *v = n,
+                None => return direct(),
+            }
+        }
+        // Lagrange weights at t = x − (k0 + 1) ∈ [0, 1) on nodes −1, 0, 1, 2
+        let t = x - (k0 + 1) as f64;
+        let w = [
+            -t * (t - 1.0) * (t - 2.0) / 6.0,
+            (t + 1.0) * (t - 1.0) * (t - 2.0) / 2.0,
+            -(t + 1.0) * t * (t - 2.0) / 2.0,
+            (t + 1.0) * t * (t - 1.0) / 6.0,
+        ];
+        let ln_flux: f64 = w.iter().zip(&values).map(|(w, v)| w * v.0).sum();
+        let centre: f64 = w.iter().zip(&values).map(|(w, v)| w * v.1).sum();
+        let q = ln_flux.exp() / (viscosity * contact.width);
+        HertzSolution {
+            flow: InterfaceFlow::Conducting(Conduction::Series {
+                resistance: pressure_difference / q,
+            }),
+            centre_fluid_pressure: (centre * pressure_difference).clamp(0.0, pressure_difference),
+            flux_ratio: None,
+        }
+    }
+}
+
 /// One shooting problem across a Hertz profile.
 struct Shot<'a> {
     sigma: &'a dyn Fn(f64) -> f64,

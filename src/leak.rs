@@ -5,6 +5,7 @@ use crate::contact::{
     Elastic, Junction, PerssonContact, TableSettings,
 };
 use crate::fluid::{Conduction, FlowGeometry, Fluid, junction_conductance};
+use crate::interface::{self, InterfaceFlow, InterfaceSettings};
 use crate::numerical::HeightMap;
 use crate::numerical::reference::NumericalSettings;
 use crate::numerical::table::NumericalTable;
@@ -124,9 +125,33 @@ pub struct StaticProblem {
 pub struct LeakPoint {
     /// Nominal squeezing pressure P0 \[Pa\].
     pub nominal_pressure: f64,
+    /// The critical junction where the asperities carry most (docs/model.md §3.6).
     pub junction: Junction,
     /// Volume leak rate Q̇ \[m³/s\]; exactly 0 when sealed.
     pub leak_rate: f64,
+    pub state: SealState,
+}
+
+/// State of the interface.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SealState {
+    Leaking,
+    /// No channel percolates (somewhere across the width).
+    Sealed,
+    /// The fluid pressure reaches the contact pressure across the whole width: the seal opens
+    /// (docs/model.md §3.6). The leak rate shown is the strips in series without the fluid
+    /// pressure, a number that no longer applies.
+    LiftOff,
+}
+
+impl SealState {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            SealState::Leaking => "leaking",
+            SealState::Sealed => "sealed",
+            SealState::LiftOff => "lift_off",
+        }
+    }
 }
 
 /// Evaluates the leak of one surface at many pressures through one [`ContactPath`].
@@ -345,6 +370,11 @@ impl ContactPath {
     /// critical-junction levels (PY08 eq. 1), `σ_eff = u_eff³/(12η)` for the effective medium
     /// (α does not enter); 0 when sealed.
     pub fn conductance(&self, s: f64, shape_factor: f64, viscosity: f64) -> f64 {
+        if let ContactPath::Table(t) = self {
+            return t.critical_gap(s).map_or(0.0, |u_c| {
+                junction_conductance(u_c, shape_factor, viscosity)
+            });
+        }
         self.channel_conductance(&self.critical_junction(s), shape_factor, viscosity)
     }
 
@@ -387,22 +417,41 @@ impl StaticSolver {
         &self.problem
     }
 
-    /// The junction and leak rate at nominal pressure `p0` \[Pa\] (> 0):
-    /// `Q̇ = (L_y/L_x) σ ΔP` ([`Fluid::leak_rate`]) with σ the path's [`ContactPath::conductance`].
+    /// The junction and leak rate at nominal pressure `p0` \[Pa\] (> 0) with the fluid pressure
+    /// inside the interface (docs/model.md §3.6): `Q̇ = (L_y/L_x) σ_eff ΔP`
+    /// ([`Fluid::leak_rate`]), `σ_eff = (1/ΔP) ∫_{P0−ΔP}^{P0} σ(e) de` with σ the path's
+    /// [`ContactPath::conductance`] ([`interface::uniform`]); lift-off when ΔP ≥ P0. The
+    /// junction is the outlet's (asperity pressure P0), where the asperities carry most.
     pub fn evaluate(&self, p0: f64) -> LeakPoint {
         let pb = &self.problem;
-        let s = p0 / pb.material.effective_modulus();
-        let junction = self.path.critical_junction(s);
-        let conductance =
+        let e_star = pb.material.effective_modulus();
+        let junction = self.path.critical_junction(p0 / e_star);
+        let sigma = |e: f64| {
             self.path
-                .channel_conductance(&junction, pb.shape_factor, pb.fluid.viscosity);
-        let leak_rate = pb
-            .fluid
-            .leak_rate(pb.seal.geometry(), Conduction::Uniform { conductance });
+                .conductance(e / e_star, pb.shape_factor, pb.fluid.viscosity)
+        };
+        let law = |conductance| {
+            pb.fluid
+                .leak_rate(pb.seal.geometry(), Conduction::Uniform { conductance })
+        };
+        let (leak_rate, state) = match interface::uniform(
+            &sigma,
+            p0,
+            pb.fluid.pressure_difference,
+            &InterfaceSettings::default(),
+        ) {
+            InterfaceFlow::Conducting(conduction) => (
+                pb.fluid.leak_rate(pb.seal.geometry(), conduction),
+                SealState::Leaking,
+            ),
+            InterfaceFlow::Sealed => (0.0, SealState::Sealed),
+            InterfaceFlow::LiftOff => (law(sigma(p0)), SealState::LiftOff),
+        };
         LeakPoint {
             nominal_pressure: p0,
             junction,
             leak_rate,
+            state,
         }
     }
 

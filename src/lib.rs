@@ -99,6 +99,7 @@ pub mod cli;
 pub mod clogging;
 pub mod contact;
 pub mod dynamic;
+pub mod extrusion;
 pub mod fluid;
 pub mod gland;
 pub mod interface;

@@ -14,9 +14,13 @@ use crate::surface::Spectrum;
 use crate::units::human;
 use std::fmt;
 
-/// ΔP/P0 above which the fluid pressure is no longer small against the contact pressure
-/// (docs/model.md §9.1).
-pub const MAX_PRESSURE_RATIO: f64 = 0.1;
+/// ΔP over the peak contact pressure above which the fluid's load on the rubber body, not
+/// modelled, is comparable to the contact load (docs/model.md §9.1).
+pub const MAX_PRESSURE_RATIO: f64 = 0.5;
+
+/// Clearance over the extrusion chart's limit above which sealsim warns that the ring is close
+/// to extruding (docs/model.md §9.12).
+pub const EXTRUSION_WARNING: f64 = 0.8;
 
 /// u_c/λ_c above which the thin-gap (lubrication) flow of the critical constriction fails
 /// (docs/model.md §9.2).
@@ -66,11 +70,16 @@ pub enum Limit {
     NumericalFailure,
     /// No failure criterion: a life run can only survive (§8).
     NoFailureCriterion,
+    /// Clearance close to (or beyond) the extrusion chart's limit (§9.12).
+    Extrusion,
+    /// Pressure or hardness outside the extrusion chart: its nearest row or band was used
+    /// (§9.12).
+    ExtrusionChart,
 }
 
 impl Limit {
     /// Every limit, in the order of docs/model.md.
-    pub const ALL: [Limit; 13] = [
+    pub const ALL: [Limit; 15] = [
         Limit::PressureRatio,
         Limit::AspectRatio,
         Limit::MolecularGap,
@@ -84,6 +93,8 @@ impl Limit {
         Limit::BandLimited,
         Limit::NumericalFailure,
         Limit::NoFailureCriterion,
+        Limit::Extrusion,
+        Limit::ExtrusionChart,
     ];
 
     /// The limit's identifier in JSON summaries.
@@ -102,6 +113,8 @@ impl Limit {
             Limit::BandLimited => "band_limited",
             Limit::NumericalFailure => "numerical_failure",
             Limit::NoFailureCriterion => "no_failure_criterion",
+            Limit::Extrusion => "extrusion",
+            Limit::ExtrusionChart => "extrusion_chart",
         }
     }
 
@@ -119,6 +132,7 @@ impl Limit {
             Limit::SpeedBound => "§9.9",
             Limit::BandLimited | Limit::NumericalFailure => "§9.10",
             Limit::NoFailureCriterion => "§8",
+            Limit::Extrusion | Limit::ExtrusionChart => "§9.12",
         }
     }
 
@@ -136,7 +150,8 @@ impl Limit {
             Limit::SpeedBound => Some(("sliding speed", "m/s")),
             Limit::BandLimited => Some(("q1/q0", "")),
             Limit::NumericalFailure => Some(("P0/E*", "")),
-            Limit::NoFailureCriterion => None,
+            Limit::NoFailureCriterion | Limit::ExtrusionChart => None,
+            Limit::Extrusion => Some(("clearance/limit", "")),
         }
     }
 
@@ -144,8 +159,9 @@ impl Limit {
     fn consequence(self) -> &'static str {
         match self {
             Limit::PressureRatio => {
-                "the theory assumes the contact pressure far above the fluid pressure; the fluid \
-                 pressure in the interface (not modelled) opens the contact"
+                "the fluid pressure is comparable to the contact pressure: in the interface it is \
+                 modelled on the asperities, but its load on the rubber body, which reshapes the \
+                 contact, is not"
             }
             Limit::AspectRatio => {
                 "the critical constriction is not a thin gap: the lubrication flow u³/12η \
@@ -188,6 +204,14 @@ impl Limit {
             }
             Limit::NoFailureCriterion => {
                 "the [failure] block sets no criterion: the seal can only survive"
+            }
+            Limit::Extrusion => {
+                "the clearance gap is close to the extrusion chart's limit for this pressure and \
+                 hardness (above 1: the ring extrudes)"
+            }
+            Limit::ExtrusionChart => {
+                "outside the extrusion chart (70–90 Shore A, up to 3000 psi): its nearest row or \
+                 band was used"
             }
         }
     }
@@ -467,6 +491,30 @@ pub fn squeeze(eps: f64, at: At, out: &mut Findings) {
 /// A sliding `speed` \[m/s\] against the PY08 §8 bound `bound` \[m/s\] (docs/model.md §9.9).
 pub fn speed(speed: f64, bound: f64, at: At, out: &mut Findings) {
     out.check(Limit::SpeedBound, speed > bound, speed, bound, at);
+}
+
+/// The extrusion check of a groove-seated ring (docs/model.md §9.12): the diametral clearance
+/// over the chart's limit, and whether the chart had to be extended.
+pub fn extrusion(ratio: f64, limit: &crate::extrusion::ExtrusionLimit, at: At, out: &mut Findings) {
+    out.check(
+        Limit::Extrusion,
+        ratio > EXTRUSION_WARNING,
+        ratio,
+        EXTRUSION_WARNING,
+        at,
+    );
+    if limit.beyond_pressure || limit.beyond_hardness {
+        let mut f = Finding::new(Limit::ExtrusionChart, 0.0, 0.0, at);
+        f.detail = Some(
+            match (limit.beyond_pressure, limit.beyond_hardness) {
+                (true, true) => "pressure above 3000 psi and hardness outside 70–90 Shore A",
+                (true, false) => "pressure above 3000 psi",
+                _ => "hardness outside 70–90 Shore A",
+            }
+            .to_owned(),
+        );
+        out.record(f);
+    }
 }
 
 /// The numerical level resolved the band `band` of a spectrum spanning `spectrum_band` = q1/q0

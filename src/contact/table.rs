@@ -120,6 +120,21 @@ impl ContactTable {
         Some((self.s_seal * logistic(a), self.s_seal * logistic(b)))
     }
 
+    /// u_c at `s = P0/E*` \[m\] (`None` when sealed): the same number as
+    /// [`Self::critical_junction`]'s, without assembling the junction (ζc, λc, h_rms(ζc)) — the
+    /// conductance needs u_c alone, and the interface-pressure solutions ask for it thousands of
+    /// times per state.
+    pub fn critical_gap(&self, s: f64) -> Option<f64> {
+        let v = logit(s / self.s_seal);
+        match &self.grid {
+            // inside the grid r ≤ 1 − upper_gap < 1: below the sealing pressure, leaking
+            Some(g) if v >= g.u_c.range().0 && v <= g.u_c.range().1 => {
+                Some((g.u_c.eval(v) + self.ln_h).exp())
+            }
+            _ => self.exact.critical_junction(s).leaking().map(|j| j.u_c),
+        }
+    }
+
     /// The critical junction at `s = P0/E*`: ζc exact, u_c and ū_c interpolated.
     pub fn critical_junction(&self, s: f64) -> Junction {
         let v = logit(s / self.s_seal);

@@ -10,7 +10,7 @@ use crate::contact::Junction;
 use crate::dynamic::MotionPoint;
 use crate::leak::LeakPoint;
 
-/// Columns of the leak table, in order. Units are in the names; `state` is `leaking` or
+/// Columns of the leak table, in order. Units are in the names; `state` is `leaking`, `lift_off` or
 /// `sealed`. `lambda_c_m` is λc = 2π/(ζc q0).
 pub const LEAK_COLUMNS: [&str; 8] = [
     "nominal_pressure_Pa",
@@ -134,7 +134,7 @@ fn table<'a>(
                 cell(4, j.ubar_c)?,
                 cell(5, j.hrms_c)?,
                 cell(6, point.leak_rate)?,
-                "leaking".to_owned(),
+                point.state.as_str().to_owned(),
             ],
             Junction::Sealed => [
                 cell(0, point.nominal_pressure)?,
@@ -144,7 +144,7 @@ fn table<'a>(
                 String::new(),
                 String::new(),
                 cell(6, point.leak_rate)?,
-                "sealed".to_owned(),
+                point.state.as_str().to_owned(),
             ],
         };
         let label = label_column.map(|_| label.to_owned());
@@ -181,6 +181,7 @@ pub(crate) fn finish(writer: ::csv::Writer<Vec<u8>>) -> Result<String, ReportErr
 mod tests {
     use super::*;
     use crate::contact::CriticalJunction;
+    use crate::leak::SealState;
 
     fn leaking(p0: f64, u_c: f64) -> LeakPoint {
         let j = CriticalJunction {
@@ -194,6 +195,7 @@ mod tests {
             nominal_pressure: p0,
             junction: Junction::Leaking(j),
             leak_rate: 1.25e-12,
+            state: SealState::Leaking,
         }
     }
 
@@ -203,6 +205,7 @@ mod tests {
             nominal_pressure: 3e6,
             junction: Junction::Sealed,
             leak_rate: 0.0,
+            state: SealState::Sealed,
         };
         let text = leak_table(&[leaking(2e5, 0.1), sealed]).unwrap();
         let lines: Vec<&str> = text.lines().collect();
@@ -234,6 +237,7 @@ mod tests {
             nominal_pressure: 3e6,
             junction: Junction::Sealed,
             leak_rate: 0.0,
+            state: SealState::Sealed,
         };
         let moving = MotionPoint {
             drag_leak_rate: 4e-11,

@@ -8,10 +8,10 @@ use super::error::{ScenarioError, Source};
 use super::history;
 use super::raw::{Quantity, RawEnvironment, RawFailure, RawScenarioAgeing, RawSeal, RawSimulation};
 use super::validate::{Bound, Field, field};
+use crate::gland::Gland;
 use crate::leak::Fidelity;
 use crate::material::shift::{Cycle, DAY, YEAR};
 use crate::material::{Ageing, Material, Shift, TemperatureHistory};
-use crate::gland::Gland;
 use crate::seal::SealGeometry;
 use crate::simulate::{FailureCriteria, Loading, ThermalStrain, TimeGrid};
 use crate::units::{Dimension, show};
@@ -422,6 +422,8 @@ impl Source<'_> {
             min_retained_force: self
                 .optional(raw.min_retained_force.as_ref(), &MIN_RETAINED_FORCE)?,
             lift_off: raw.lift_off.as_ref().is_some_and(|b| *b.get_ref()),
+            // on unless switched off: it applies to groove-seated rings only
+            extrusion: raw.extrusion.as_ref().is_none_or(|b| *b.get_ref()),
         })
     }
 
@@ -932,9 +934,13 @@ squeeze = 0.2
                 max_leak_rate: Some(1e-9),
                 max_leaked_volume: Some(1e-3),
                 min_retained_force: Some(0.5),
-                lift_off: true
+                lift_off: true,
+                extrusion: true,
             }
         );
+        // the extrusion check is on unless switched off
+        let off = load(&with("[failure]\nextrusion = false\n")).unwrap();
+        assert!(!off.life.failure.extrusion);
         assert!(load(&with("[failure]\n")).unwrap().life.failure.is_empty());
         let e = error(&with("[failure]\nmin_retained_force = 1.5\n"));
         assert!(

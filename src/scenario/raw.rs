@@ -212,6 +212,7 @@ pub(super) struct RawFailure {
     pub max_leaked_volume: Option<Quantity>,
     pub min_retained_force: Option<Quantity>,
     pub lift_off: Option<Spanned<bool>>,
+    pub extrusion: Option<Spanned<bool>>,
 }
 
 /// A scenario's `[ageing]`: each constant defaults to the material's `[material.ageing]`.

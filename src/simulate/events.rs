@@ -9,6 +9,8 @@ pub enum FailureMode {
     LeakedVolume,
     RetainedForce,
     LiftOff,
+    /// The ring extrudes into the clearance gap (docs/model.md §6.3).
+    Extrusion,
 }
 
 impl FailureMode {
@@ -18,6 +20,7 @@ impl FailureMode {
             FailureMode::LeakedVolume => "leaked_volume",
             FailureMode::RetainedForce => "retained_force",
             FailureMode::LiftOff => "lift_off",
+            FailureMode::Extrusion => "extrusion",
         }
     }
 }
@@ -39,8 +42,10 @@ pub struct FailureCriteria {
     pub max_leaked_volume: Option<f64>,
     /// Sealing force below this fraction of its value right after installation.
     pub min_retained_force: Option<f64>,
-    /// Peak contact pressure below the fluid pressure difference.
+    /// The fluid pressure opens the contact across the whole width (docs/model.md §3.6).
     pub lift_off: bool,
+    /// A groove-seated ring's clearance gap beyond the extrusion chart's limit (§6.3).
+    pub extrusion: bool,
 }
 
 /// What the criteria look at, at one instant.
@@ -50,12 +55,15 @@ pub struct EventInput {
     pub leaked_volume: f64,
     /// Sealing force / sealing force right after installation.
     pub retained_force: f64,
-    /// Whether the peak contact pressure is below ΔP.
+    /// Whether the fluid pressure opens the contact.
     pub lifted: bool,
+    /// Whether the clearance is beyond the extrusion chart's limit.
+    pub extruded: bool,
 }
 
 impl FailureCriteria {
-    /// No criterion at all.
+    /// No criterion that can end a life over time (the extrusion check, a property of the
+    /// gland at the service pressure and temperature, does not count).
     pub fn is_empty(&self) -> bool {
         self.max_leak_rate.is_none()
             && self.max_leaked_volume.is_none()
@@ -63,8 +71,9 @@ impl FailureCriteria {
             && !self.lift_off
     }
 
-    const MODES: [FailureMode; 4] = [
+    const MODES: [FailureMode; 5] = [
         FailureMode::LiftOff,
+        FailureMode::Extrusion,
         FailureMode::LeakRate,
         FailureMode::LeakedVolume,
         FailureMode::RetainedForce,
@@ -81,6 +90,7 @@ impl FailureCriteria {
                 .min_retained_force
                 .is_some_and(|m| x.retained_force < m),
             FailureMode::LiftOff => self.lift_off && x.lifted,
+            FailureMode::Extrusion => self.extrusion && x.extruded,
         }
     }
 
@@ -159,6 +169,7 @@ mod tests {
             leaked_volume: 0.0,
             retained_force: 0.9,
             lifted: false,
+            extruded: false,
         };
         let bad = EventInput {
             leak_rate: 2.0,
@@ -171,6 +182,20 @@ mod tests {
         );
         assert!(c.at_start(&ok).is_none());
         assert!(FailureCriteria::default().is_empty());
+        // the extrusion check alone cannot end a life over time
+        let gland_only = FailureCriteria {
+            extrusion: true,
+            ..Default::default()
+        };
+        assert!(gland_only.is_empty());
+        let extruded = EventInput {
+            extruded: true,
+            ..ok
+        };
+        assert_eq!(
+            gland_only.at_start(&extruded).map(|e| e.mode),
+            Some(FailureMode::Extrusion)
+        );
         assert!(
             !FailureCriteria {
                 lift_off: true,

@@ -45,7 +45,9 @@ pub use problem::{
 
 use crate::contact::{ContactSettings, Elastic, Junction, PerssonContact};
 use crate::dynamic::{DragSettings, DragTable, MotionPoint, MotionSpec};
+use crate::extrusion::ExtrusionLimit;
 use crate::fluid::Conduction;
+use crate::interface::{self, HertzContact, HertzMemo, InterfaceFlow, InterfaceSettings};
 use crate::leak::{ContactPath, FlatSeal};
 use crate::material::shift::reduced_time;
 use crate::material::{RelaxationState, Shift};
@@ -54,6 +56,19 @@ use crate::seal::Profile;
 pub use crate::seal::ThermalStrain;
 use crate::validity::{self, At, ContactState, Findings};
 pub use events::{FailureCriteria, FailureEvent, FailureMode};
+
+/// ΔP over the contact pressure below which the fluid pressure inside the interface changes the
+/// leak by rounding only (the mean of σ over [P0 − ΔP, P0] is σ(P0) to ≈ 1e-16).
+const NEGLIGIBLE_PRESSURE_RATIO: f64 = 1e-8;
+
+/// Accuracy of the interface-pressure solutions in the life loop: 128 RK4 steps across a Hertz
+/// profile keep the flux within 1e-6 of the converged one from ΔP/p_max = 0.002 to 0.8, with
+/// and without energisation (the ignored study `interface::study_hertz_steps_against_cost`).
+const INTERFACE: InterfaceSettings = InterfaceSettings {
+    panels_per_log_unit: 4.0,
+    steps: 128,
+    tolerance: 1e-12,
+};
 
 /// Quadrature of the re-routing junctions: both u_c(a_eff) and u_c(a_c) of the ratio
 /// `(u_c(a_eff)/u_c(a_c))³` use it, so its error (≈ 6e-5 in u_c, measured against the default
@@ -103,9 +118,40 @@ struct Snapshot {
     /// `[motion]`: the motion quantities at the peak strip (all channels open until
     /// [`Simulator::clogged`] scales them).
     motion: Option<MotionPoint>,
+    /// A groove-seated ring: its diametral clearance over the extrusion chart's limit at the
+    /// state's temperature, and the limit (`None` without a gland).
+    extrusion: Option<(f64, ExtrusionLimit)>,
     /// `[motion]`, constant sliding: the pressure-driven part of `open_leak_rate` \[m³/s\]
     /// (`open_leak_rate` = this + the drag); `None` otherwise.
     open_static_leak_rate: Option<f64>,
+}
+
+/// The leak through a profile with the fluid pressure inside the interface.
+#[derive(Debug, Clone, Copy)]
+struct InterfaceLeak {
+    leak_rate: f64,
+    junction: Junction,
+    lifted_off: bool,
+}
+
+impl InterfaceLeak {
+    fn state(&self) -> SealState {
+        if self.lifted_off {
+            SealState::LiftOff
+        } else if self.leak_rate > 0.0 {
+            SealState::Leaking
+        } else {
+            SealState::Sealed
+        }
+    }
+
+    fn new(leak_rate: f64, junction: Junction, lifted_off: bool) -> Self {
+        InterfaceLeak {
+            leak_rate,
+            junction,
+            lifted_off,
+        }
+    }
 }
 
 /// The mechanical state carried along the time loop.
@@ -140,6 +186,11 @@ pub struct Simulator<'a> {
     /// The last `(s, u_c(s, a_c))` of the re-routing reference junction: a step's ratio nodes
     /// and its end snapshot share one pressure, hence one reference evaluation.
     reference_memo: std::cell::Cell<Option<(f64, Option<f64>)>>,
+    /// The flux ratio κ of the last Hertz interface solve: the start of the next (nearby) one.
+    interface_memo: std::cell::Cell<Option<f64>>,
+    /// Hertz interface solutions interpolated in the peak pressure, when σ(e) stays the same
+    /// over the run (every asperity modulus but `follow`).
+    hertz_memo: Option<HertzMemo>,
     /// `[motion]`: the motion and the table of I (built once; `None` for a static seal).
     drag: Option<(MotionSpec, DragTable)>,
 }
@@ -190,6 +241,9 @@ impl<'a> Simulator<'a> {
             creep: problem.material.prony.creep(),
             rerouting,
             reference_memo: std::cell::Cell::new(None),
+            interface_memo: std::cell::Cell::new(None),
+            hertz_memo: (problem.asperity_modulus != AsperityModulus::Follow)
+                .then(|| HertzMemo::new(interface::MEMO_SPACING)),
             drag,
         }
     }
@@ -252,12 +306,13 @@ impl<'a> Simulator<'a> {
     /// exactly as the first row of [`Self::run`] computes it (at the installation's own peak, the
     /// same number). Returns the leak rate \[m³/s\] (all channels open, no drag) and the peak
     /// strip's junction.
-    pub fn installed_leak(&self, peak: f64) -> (f64, Junction) {
+    pub fn installed_leak(&self, peak: f64) -> (f64, Junction, SealState) {
         let p = self.problem;
         let state = self.installed();
         let e_star = self.asperity_modulus(&state) / (1.0 - p.material.poisson_ratio.powi(2));
         let installed = self.profile_at(&state, 0.0);
-        self.profile_leak(&installed.scaled(peak / installed.peak()), e_star)
+        let leak = self.profile_leak(&installed.scaled(peak / installed.peak()), e_star);
+        (leak.leak_rate, leak.junction, leak.state())
     }
 
     /// The peak contact pressure right after installation \[Pa\] (the first row of
@@ -283,23 +338,70 @@ impl<'a> Simulator<'a> {
         }
     }
 
-    /// The leak rate through `profile`'s strips in series (the leak law) and the peak strip's
-    /// junction, with the asperity contact's E* `e_star` \[Pa\].
-    fn profile_leak(&self, profile: &Profile, e_star: f64) -> (f64, Junction) {
+    /// The leak through `profile` with the fluid pressure inside the interface (docs/model.md
+    /// §3.6) and the energisation `k_e ΔP` added to the contact pressure (§6.3), with the
+    /// asperity contact's E* `e_star` \[Pa\]: the leak rate, the critical junction where the
+    /// asperities carry most (the peak of a Hertz profile less the fluid pressure there; a
+    /// uniform contact's outlet), and the state. Where ΔP is negligible against the contact
+    /// pressure (≤ 1e-8 of it) the strips in series at the contact pressure (§3.2). Lifted
+    /// off: the strips in series without the fluid pressure, a number that no longer applies.
+    fn profile_leak(&self, profile: &Profile, e_star: f64) -> InterfaceLeak {
         let p = self.problem;
-        let conductance = |pressure: f64| {
+        let dp = p.fluid.pressure_difference;
+        let offset = p.energisation_factor * dp;
+        let sigma = |e: f64| {
             self.path
-                .conductance(pressure / e_star, p.shape_factor, p.fluid.viscosity)
+                .conductance(e / e_star, p.shape_factor, p.fluid.viscosity)
         };
-        let resistance = profile.series_resistance(&self.rule, conductance);
-        let leak_rate = p.fluid.leak_rate(
-            profile.geometry(p.geometry.sealing_length()),
-            Conduction::Series { resistance },
-        );
-        (
-            leak_rate,
-            self.path.critical_junction(profile.peak() / e_star),
-        )
+        let geometry = profile.geometry(p.geometry.sealing_length());
+        let series = || {
+            let resistance = profile.series_resistance(&self.rule, |pc| sigma(pc + offset));
+            p.fluid
+                .leak_rate(geometry, Conduction::Series { resistance })
+        };
+        let top = profile.peak() + offset;
+        let junction_at = |e: f64| self.path.critical_junction(e.max(0.0) / e_star);
+        if dp <= NEGLIGIBLE_PRESSURE_RATIO * top {
+            let leak_rate = series();
+            return InterfaceLeak::new(leak_rate, junction_at(top), false);
+        }
+        let (flow, junction) = match *profile {
+            Profile::Uniform { pressure, .. } => (
+                interface::uniform(&sigma, pressure + offset, dp, &INTERFACE),
+                junction_at(top),
+            ),
+            Profile::Hertz { peak, width } => {
+                let contact = HertzContact {
+                    peak,
+                    offset,
+                    width,
+                };
+                let solved = match &self.hertz_memo {
+                    Some(memo) => memo.solve(&sigma, contact, p.fluid.viscosity, dp, &INTERFACE),
+                    None => {
+                        let solved = interface::hertz(
+                            &sigma,
+                            contact,
+                            dp,
+                            &INTERFACE,
+                            self.interface_memo.get(),
+                        );
+                        if solved.flux_ratio.is_some() {
+                            self.interface_memo.set(solved.flux_ratio);
+                        }
+                        solved
+                    }
+                };
+                (solved.flow, junction_at(top - solved.centre_fluid_pressure))
+            }
+        };
+        match flow {
+            InterfaceFlow::Conducting(conduction) => {
+                InterfaceLeak::new(p.fluid.leak_rate(geometry, conduction), junction, false)
+            }
+            InterfaceFlow::Sealed => InterfaceLeak::new(0.0, junction, false),
+            InterfaceFlow::LiftOff => InterfaceLeak::new(series(), junction_at(top), true),
+        }
     }
 
     /// Internal step ends in (from, to]: `to`, plus eight per shortest temperature cycle
@@ -432,7 +534,8 @@ impl<'a> Simulator<'a> {
         let retained = profile.force_per_length() / self.initial_profile.force_per_length();
         let e_asperity = self.asperity_modulus(state);
         let e_star = e_asperity / (1.0 - p.material.poisson_ratio.powi(2));
-        let (leak_rate, peak_junction) = self.profile_leak(&profile, e_star);
+        let leak = self.profile_leak(&profile, e_star);
+        let (leak_rate, peak_junction) = (leak.leak_rate, leak.junction);
         let u_c = peak_junction.leaking().map(|j| j.u_c);
         let lambda_c = peak_junction.leaking().map_or(0.0, |j| j.lambda_c);
         let (motion, open_static_leak_rate, leak_rate) = match &self.drag {
@@ -473,7 +576,7 @@ impl<'a> Simulator<'a> {
                 }
             }
         };
-        let state = if profile.peak() < p.fluid.pressure_difference {
+        let state = if leak.lifted_off {
             SealState::LiftOff
         } else if leak_rate > 0.0 {
             SealState::Leaking
@@ -497,6 +600,7 @@ impl<'a> Simulator<'a> {
             open_u_c: u_c.unwrap_or(0.0),
             lambda_c,
             peak_reduced_pressure: profile.peak() / e_star,
+            extrusion: p.extrusion_at(temperature),
             open_fraction: 1.0,
             motion,
             open_static_leak_rate,
@@ -597,6 +701,9 @@ impl<'a> Simulator<'a> {
             at,
             findings,
         );
+        if let Some((ratio, limit)) = &snap.extrusion {
+            validity::extrusion(*ratio, limit, at, findings);
+        }
         if let (Some((spec, _)), Some(m)) = (&self.drag, snap.motion) {
             validity::speed(spec.fastest_speed(), m.speed_bound, at, findings);
         }
@@ -610,6 +717,7 @@ impl Snapshot {
             leaked_volume,
             retained_force: self.retained,
             lifted: self.state == SealState::LiftOff,
+            extruded: self.extrusion.is_some_and(|(ratio, _)| ratio > 1.0),
         }
     }
 }

@@ -4,13 +4,18 @@ use super::events::{self, FailureCriteria, FailureEvent};
 use crate::clogging::Contamination;
 use crate::contact::ContactSettings;
 use crate::dynamic::{MotionPoint, MotionSpec};
+use crate::extrusion::{self, ExtrusionLimit};
 use crate::fluid::Fluid;
 use crate::gland::Gland;
 use crate::leak::Fidelity;
+pub use crate::leak::SealState;
 use crate::material::{Ageing, Material, TemperatureHistory};
 use crate::seal::{Profile, SealGeometry, ThermalStrain};
 use crate::surface::Spectrum;
 use crate::validity::{self, At, Findings};
+
+/// The time scale of a Shore A reading \[s\] (the hardness the extrusion chart is drawn for).
+const HARDNESS_TEST_TIME: f64 = 3.0;
 
 /// Which modulus the asperity contact sees (docs/model.md §6).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -110,7 +115,26 @@ impl LifeProblem {
     /// against the glass transition and the WLF frozen limit, an O-ring's squeeze against
     /// Lindley's range (docs/model.md §9.6–§9.7). A life run evaluates the same at every step.
     pub fn assess_installation(&self, out: &mut Findings) {
-        self.assess_rubber(self.environment.at(0.0), At::Installation, out);
+        let t0 = self.environment.at(0.0);
+        self.assess_rubber(t0, At::Installation, out);
+        if let Some((ratio, limit)) = self.extrusion_at(t0) {
+            validity::extrusion(ratio, &limit, At::Installation, out);
+        }
+    }
+
+    /// The extrusion check of a groove-seated ring at `temperature` \[K\] (docs/model.md §6.3):
+    /// the rubber's Shore A from its modulus at 3 s at that temperature (Gent's relation
+    /// inverted), the chart's limit at ΔP, and the diametral clearance (twice the gap) over it;
+    /// `None` without a gland.
+    pub fn extrusion_at(&self, temperature: f64) -> Option<(f64, ExtrusionLimit)> {
+        let gland = self.gland.as_ref()?;
+        let a_t = self.material.shift.factor(temperature);
+        let modulus = self.material.prony.relaxation(HARDNESS_TEST_TIME / a_t);
+        let limit = extrusion::limit(
+            self.fluid.pressure_difference,
+            extrusion::shore_a_from_modulus(modulus),
+        );
+        Some((2.0 * gland.extrusion_gap / limit.diametral_clearance, limit))
     }
 
     /// The rubber's temperature `t` \[K\] and, for an O-ring, its squeeze at `t`.
@@ -129,27 +153,6 @@ impl LifeProblem {
             at,
             out,
         );
-    }
-}
-
-/// State of the interface at one time.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum SealState {
-    Leaking,
-    /// No channel percolates (somewhere across the width).
-    Sealed,
-    /// The peak contact pressure is below the fluid pressure: the seal opens; the leak rate
-    /// shown is the model's, which no longer applies.
-    LiftOff,
-}
-
-impl SealState {
-    pub fn as_str(self) -> &'static str {
-        match self {
-            SealState::Leaking => "leaking",
-            SealState::Sealed => "sealed",
-            SealState::LiftOff => "lift_off",
-        }
     }
 }
 

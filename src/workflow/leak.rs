@@ -32,21 +32,27 @@ pub fn evaluate(
     fidelity: Fidelity,
     progress: Progress<'_>,
 ) -> LeakOutcome {
-    // the numerical level solves exactly at a flat seal's pressures; an O-ring's strips need
-    // its table over all pressures
+    // the numerical level solves exactly at a flat seal's pressures and at each less ΔP (the
+    // ends of the interface-pressure integral, docs/model.md §3.6; between them its table
+    // interpolates); an O-ring's strips need its table over all pressures
+    let dp = scenario.problem.fluid.pressure_difference;
+    let e_star = scenario.problem.material.effective_modulus();
+    let ends = |p0: f64| {
+        [p0, p0 - dp]
+            .into_iter()
+            .filter(|p| *p > 0.0)
+            .map(|p| p / e_star)
+    };
     let nodes = match (scenario.life.geometry, pressures) {
         (SealGeometry::Flat { .. }, Some(list)) => {
-            let e_star = scenario.problem.material.effective_modulus();
-            Some(list.iter().map(|p| p / e_star).collect())
+            Some(list.iter().flat_map(|&p| ends(p)).collect())
         }
         (
             SealGeometry::Flat {
                 nominal_pressure, ..
             },
             None,
-        ) => Some(vec![
-            nominal_pressure / scenario.problem.material.effective_modulus(),
-        ]),
+        ) => Some(ends(nominal_pressure).collect()),
         (SealGeometry::ORing { .. }, _) => None,
     };
     let (path, findings) = scenario_path(scenario, fidelity, nodes, progress);
@@ -112,7 +118,7 @@ fn installed_oring(
         .unwrap_or(&own)
         .iter()
         .map(|&peak| {
-            let (leak_rate, junction) = simulator.installed_leak(peak);
+            let (leak_rate, junction, state) = simulator.installed_leak(peak);
             LeakPoint {
                 nominal_pressure: peak,
                 junction,
@@ -121,6 +127,7 @@ fn installed_oring(
                 } else {
                     0.0
                 },
+                state,
             }
         })
         .collect()
