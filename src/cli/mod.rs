@@ -47,6 +47,17 @@ pub(crate) fn print_findings(context: Option<&str>, findings: &crate::validity::
     eprint!("{}", report::findings::warning_lines(context, findings));
 }
 
+/// Prints a scenario's input warnings (e.g. a gland fill above the guidance) to stderr, one
+/// `warning:` line each, `context` (e.g. a compound's id) leading each line.
+pub(crate) fn print_scenario_warnings(context: Option<&str>, scenario: &crate::scenario::Scenario) {
+    for w in &scenario.warnings {
+        match context {
+            Some(c) => eprintln!("warning: {c}: {w}"),
+            None => eprintln!("warning: {w}"),
+        }
+    }
+}
+
 /// `--fidelity LEVEL` of every command: the levels, their aliases and help all come from
 /// [`Fidelity::ALL`](crate::leak::Fidelity::ALL), so no command's help can miss one.
 impl clap::ValueEnum for crate::leak::Fidelity {
