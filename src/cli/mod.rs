@@ -11,6 +11,7 @@ pub mod fit_prony;
 pub mod leak;
 pub mod materials;
 pub mod run;
+pub mod sizes;
 pub mod tradeoff;
 
 use crate::report::{self, ReportError};
@@ -111,6 +112,8 @@ pub enum Command {
     FitProny(fit_prony::FitPronyArgs),
     /// The material library: list, show, response curves, Abaqus/ANSYS export.
     Materials(materials::MaterialsArgs),
+    /// AS568 O-ring sizes: one size's dimensions (inch and mm, tolerances, source), or all.
+    Sizes(sizes::SizesArgs),
 }
 
 /// Why a command failed; decides the exit status.
@@ -189,6 +192,7 @@ pub fn run(command: Command) -> Result<(), CliError> {
         Command::Figures(args) => figures::run(args),
         Command::FitProny(args) => fit_prony::run(args),
         Command::Materials(args) => materials::run(args),
+        Command::Sizes(args) => sizes::run(args),
     }
 }
 
