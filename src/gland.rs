@@ -477,12 +477,12 @@ impl Housing {
                  10.4e-6 1/K for grey cast iron, 32–212 °F, \
                  https://www.engineeringtoolbox.com/thermal-expansion-metals-d_859.html)"
             ),
-            Housing::Titanium => format!(
-                "Ti-6Al-4V and commercially pure grade 1 (both 8.6e-6 1/K): W.D. Callister, \
-                 Fundamentals of Materials Science and Engineering: An Integrated Approach, 3rd \
-                 ed., App. B, Table B.6 (read at \
-                 https://issuhub.com/view/index/5550?pageIndex=844)"
-            ),
+            Housing::Titanium => "Ti-6Al-4V and commercially pure grade 1 (both 8.6e-6 \
+                                   1/K): W.D. Callister, Fundamentals of Materials Science \
+                                   and Engineering: An Integrated Approach, 3rd ed., App. B, \
+                                   Table B.6 (read at \
+                                   https://issuhub.com/view/index/5550?pageIndex=844)"
+                .to_owned(),
         }
     }
 }

@@ -199,12 +199,18 @@ mod tests {
         assert_eq!(lookup("AS568-4").unwrap().dash, 4);
         assert!(matches!(lookup("214"), Err(LookupError::Malformed(_))));
         assert!(matches!(lookup("AS568-"), Err(LookupError::Malformed(_))));
-        assert!(matches!(lookup("AS568-2x4"), Err(LookupError::Malformed(_))));
+        assert!(matches!(
+            lookup("AS568-2x4"),
+            Err(LookupError::Malformed(_))
+        ));
         let e = lookup("AS568-290").unwrap_err();
         let LookupError::Unknown { nearest, .. } = &e else {
             panic!("{e}")
         };
-        assert_eq!(nearest, &["AS568-283", "AS568-284", "AS568-309", "AS568-310"]);
+        assert_eq!(
+            nearest,
+            &["AS568-283", "AS568-284", "AS568-309", "AS568-310"]
+        );
         assert!(e.to_string().contains("AS568-284, AS568-309"), "{e}");
     }
 }

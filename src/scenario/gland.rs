@@ -355,7 +355,7 @@ impl Source<'_> {
                 let squeeze = self.quantity(s, &SQUEEZE)?;
                 design.gland_depth = design
                     .depth_for_squeeze(squeeze)
-                    .map_err(|e| self.gland_error(&e, s.span(), SQUEEZE.key, table, &locator_key))?;
+                    .map_err(|e| self.gland_error(&e, s.span(), SQUEEZE.key, table, locator_key))?;
                 (s.span(), SQUEEZE.key)
             }
             (None, None) => {
@@ -380,12 +380,12 @@ impl Source<'_> {
         }
         let installed = design
             .installed()
-            .map_err(|e| self.gland_error(&e, depth_span.clone(), depth_key, table, &locator_key))?;
+            .map_err(|e| self.gland_error(&e, depth_span.clone(), depth_key, table, locator_key))?;
 
         let mut warnings = Vec::new();
         let range = design
             .squeeze_range()
-            .map_err(|e| self.gland_error(&e, depth_span.clone(), depth_key, table, &locator_key))?;
+            .map_err(|e| self.gland_error(&e, depth_span.clone(), depth_key, table, locator_key))?;
         if range.min <= 0.0 {
             warnings.push(
                 self.error(
@@ -403,7 +403,7 @@ impl Source<'_> {
         }
         let fill = design
             .max_material_fill()
-            .map_err(|e| self.gland_error(&e, depth_span.clone(), depth_key, table, &locator_key))?;
+            .map_err(|e| self.gland_error(&e, depth_span.clone(), depth_key, table, locator_key))?;
         if fill > MAX_FILL_GUIDANCE {
             let span = raw
                 .groove_width

@@ -124,7 +124,9 @@ fn an_overfilled_groove_is_a_located_warning() {
     let (code, _, stderr, _, path) = run(&text);
     assert_eq!(code, Some(0), "{stderr}");
     assert!(
-        stderr.contains(&format!("warning: {path}:18: seal.groove_width: gland fill")),
+        stderr.contains(&format!(
+            "warning: {path}:18: seal.groove_width: gland fill"
+        )),
         "{stderr}"
     );
 }
@@ -170,8 +172,14 @@ fn sizes_json_and_the_whole_table() {
     assert_eq!(all.as_array().unwrap().len(), 336);
     let out = sealsim().arg("sizes").assert().success();
     let text = String::from_utf8(out.get_output().stdout.clone()).unwrap();
-    assert!(text.contains("AS568-001") && text.contains("AS568-467"), "{text}");
-    assert_eq!(text.lines().filter(|l| l.starts_with("AS568-")).count(), 336);
+    assert!(
+        text.contains("AS568-001") && text.contains("AS568-467"),
+        "{text}"
+    );
+    assert_eq!(
+        text.lines().filter(|l| l.starts_with("AS568-")).count(),
+        336
+    );
 }
 
 #[test]
@@ -188,5 +196,7 @@ fn an_unknown_size_exits_2_with_the_nearest() {
         .args(["sizes", "214"])
         .assert()
         .code(2)
-        .stderr(predicate::str::contains("expected an AS568 size such as \"AS568-214\""));
+        .stderr(predicate::str::contains(
+            "expected an AS568 size such as \"AS568-214\"",
+        ));
 }

@@ -158,7 +158,11 @@ fn squeeze_may_replace_the_groove_depth() {
     assert!(close(g.gland_depth, 0.8 * d, 1e-12));
     // the groove bottom moved with the depth: S = 31 − 2h, stretched onto it
     let inst = g.installed().unwrap();
-    assert!(close(inst.inner_diameter, 31.0e-3 - 2.0 * g.gland_depth, 1e-12));
+    assert!(close(
+        inst.inner_diameter,
+        31.0e-3 - 2.0 * g.gland_depth,
+        1e-12
+    ));
 }
 
 #[test]
@@ -242,7 +246,10 @@ fn a_gland_takes_the_housings_thermal_strain_by_default() {
         "cross_section = \"3.53 mm\"\nmean_diameter = \"50 mm\"\nsqueeze = 0.2\nhousing = \"titanium\"\n",
     )
     .unwrap();
-    assert_eq!(plates.life.thermal_strain.unwrap().housing_expansion, 8.6e-6);
+    assert_eq!(
+        plates.life.thermal_strain.unwrap().housing_expansion,
+        8.6e-6
+    );
     assert!(plates.life.gland.is_none() && plates.life.energisation_factor == 0.0);
 }
 
@@ -386,7 +393,10 @@ fn the_as568_table_matches_its_source() {
     // and the .250 in steps of the series (-376 9.725, -378 10.475); 9.975 is used
     let s377 = as568::lookup("AS568-377").unwrap();
     assert_eq!(s377.id_in, 9.975);
-    assert!((253.37_f64 - 9.975 * 25.4).abs() <= 0.005 + 1e-9, "the mm entry rounds 253.365");
+    assert!(
+        (253.37_f64 - 9.975 * 25.4).abs() <= 0.005 + 1e-9,
+        "the mm entry rounds 253.365"
+    );
     // metric = inch × 25.4 exactly: -214 is 24.9936 × 3.5306 mm
     let r = as568::lookup("AS568-214").unwrap().ring();
     assert!((r.inner_diameter - 24.9936e-3).abs() < 1e-15);
@@ -414,7 +424,11 @@ fn the_as568_table_keeps_its_series_invariants() {
         }
         assert_eq!(s.cs_tol_in, tol, "AS568-{:03}", s.dash);
         // the ID tolerance grows with the ID, from .004 in to under 1 % of the larger IDs
-        assert!(s.id_tol_in >= 0.004 && s.id_tol_in <= 0.1, "AS568-{:03}", s.dash);
+        assert!(
+            s.id_tol_in >= 0.004 && s.id_tol_in <= 0.1,
+            "AS568-{:03}",
+            s.dash
+        );
     }
     for pair in table.windows(2) {
         if pair[0].series() == pair[1].series() {
@@ -427,7 +441,11 @@ fn the_as568_table_keeps_its_series_invariants() {
         }
     }
     // first and last ID of each series as Global O-Ring's chart gives them
-    let first_last = [(1, 50, 0.029, 5.239), (102, 178, 0.049, 9.737), (201, 284, 0.171, 17.955)];
+    let first_last = [
+        (1, 50, 0.029, 5.239),
+        (102, 178, 0.049, 9.737),
+        (201, 284, 0.171, 17.955),
+    ];
     for (a, b, ia, ib) in first_last {
         assert_eq!(as568::lookup(&format!("AS568-{a}")).unwrap().id_in, ia);
         assert_eq!(as568::lookup(&format!("AS568-{b}")).unwrap().id_in, ib);
