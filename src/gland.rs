@@ -22,7 +22,7 @@
 //!   (`D′ = S + d′` on an inner seat S, `D′ = S − d′` on an outer one). To first order
 //!   `Δd/d ≈ −s/2`, Marco Rubber's "% cross section reduction due to stretch about half of the
 //!   % ID stretch" (<http://www.marcorubber.com/gd-directory.htm>). Parker's empirical curve
-//!   (which gives a somewhat larger reduction) was not found in a readable source and is not used;
+//!   was not found in a readable source and is not used;
 //! * squeeze `ε = 1 − h/d′`, h the gland depth (the height the cord is squeezed into);
 //! * gland fill `F = (π d′²/4)/(h w)`, w the groove width; warned above
 //!   [`MAX_FILL_GUIDANCE`] = 90 % at maximum material condition (Parker, "Gland overfill",
