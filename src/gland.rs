@@ -1,5 +1,36 @@
-//! The gland an O-ring sits in (docs/model.md §6.3): what the fluid pressure does to a
-//! groove-seated ring (energisation, extrusion into the clearance gap).
+//! The gland an O-ring sits in: its geometry (docs/model.md §6.2) — stretch of the ring onto its
+//! seat, the cross-section left after stretching, squeeze, gland fill and their range over the
+//! tolerances, the housing's thermal expansion — and what the fluid pressure does to a
+//! groove-seated ring (energisation, extrusion into the clearance gap; docs/model.md §6.3).
+//!
+//! Everything here is SI (m, 1/K) and knows no file or unit; the scenario boundary
+//! (`[seal] gland = …`, `src/scenario/life.rs`) validates the keys into a [`GlandDesign`].
+//!
+//! **Relations** (docs/model.md §6.2):
+//!
+//! * stretch `s = (ID′ − ID)/ID`, ID the ring's free inside diameter, ID′ installed (the
+//!   definition of Parker's gland-design note, re-posted at
+//!   <https://www.gallagherseals.com/blog/how-to-design-o-ring-gland-stretch>: "the diameter of
+//!   the hardware minus the O-ring inner diameter (ID), all divided by the O-ring ID");
+//! * cross-section after stretch: the ring's volume is conserved and its section stays round —
+//!   the assumption Apple Rubber states for its relation
+//!   (<https://www.applerubber.com/seal-design-guide/operating-environment-factors/seal-compression-squeeze/>:
+//!   "assumes the o-ring volume does not change and the cross-section remains round when
+//!   stretched"). sealsim uses the torus exactly: volume `V = (π d²/4) · π D` with D = ID + d the
+//!   centreline diameter, so `d′² D′ = d² D`, i.e. `d′ = d /√(1 + s_c)` with
+//!   `s_c = (D′ − D)/D` the stretch of the centreline, solved together with the seat
+//!   (`D′ = S + d′` on an inner seat S, `D′ = S − d′` on an outer one). To first order
+//!   `Δd/d ≈ −s/2`, Marco Rubber's "% cross section reduction due to stretch about half of the
+//!   % ID stretch" (<http://www.marcorubber.com/gd-directory.htm>). Parker's empirical curve
+//!   was not found in a readable source and is not used;
+//! * squeeze `ε = 1 − h/d′`, h the gland depth (the height the cord is squeezed into);
+//! * gland fill `F = (π d′²/4)/(h w)`, w the groove width; warned above
+//!   [`MAX_FILL_GUIDANCE`] = 90 % at maximum material condition (Parker, "Gland overfill",
+//!   <https://www.parker.com/us/en/divisions/o-ring-and-engineered-seals-division/resources/oring-ehandbook/failure-modes/gland-overfill.html>:
+//!   "a maximum material condition gland fill of 90%"), refused at 100 % (the ring does not fit).
+
+use std::f64::consts::PI;
+use std::fmt;
 
 /// Where the groove is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -12,6 +43,17 @@ pub enum GlandKind {
     Rod,
 }
 
+impl GlandKind {
+    /// The scenario's name of the kind (`gland = "face"`).
+    pub fn name(self) -> &'static str {
+        match self {
+            GlandKind::Face => "face",
+            GlandKind::Piston => "piston",
+            GlandKind::Rod => "rod",
+        }
+    }
+}
+
 /// A groove-seated O-ring's gland, validated, SI.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Gland {
@@ -19,4 +61,528 @@ pub struct Gland {
     /// The gap the ring is pushed against on its low-pressure side \[m\]: half the diametral
     /// clearance of a piston or rod gland, the flange separation of a face gland.
     pub extrusion_gap: f64,
+}
+
+/// Gland fill above which a warning is given, at maximum material condition: 0.90 (Parker,
+/// "Gland overfill": "Parker recommends a gland design where the O-ring has a maximum material
+/// condition gland fill of 90%", stretchable to 95 % with little fluid swell or thermal
+/// expansion).
+pub const MAX_FILL_GUIDANCE: f64 = 0.90;
+
+/// An O-ring as made: free inside diameter and cross-section with their (±) tolerances \[m\].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ring {
+    /// Free inside diameter ID \[m\].
+    pub inner_diameter: f64,
+    /// ± tolerance of the ID \[m\] (0 when unknown).
+    pub inner_diameter_tolerance: f64,
+    /// Free cross-section (cord diameter) d \[m\].
+    pub cross_section: f64,
+    /// ± tolerance of d \[m\] (0 when unknown).
+    pub cross_section_tolerance: f64,
+}
+
+/// The hardware diameter that decides the ring's stretch.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Locator {
+    /// None given: the ring lies in the groove at its free diameters (stretch 0; a face gland).
+    Free,
+    /// Piston gland: the bore B \[m\]; the groove bottom is at `B − 2h`.
+    Bore(f64),
+    /// Rod gland: the rod diameter R \[m\]; the groove bottom (outer) is at `R + 2h`.
+    Rod(f64),
+    /// Face gland, internally pressurised: the groove's outer diameter \[m\], the ring's OD is
+    /// brought onto it (stretched or compressed).
+    GrooveOuter(f64),
+    /// Face gland, externally pressurised (vacuum): the groove's inner diameter \[m\], the ring's
+    /// ID is brought onto it.
+    GrooveInner(f64),
+}
+
+/// Where the ring is held circumferentially.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Seat {
+    /// Its ID on the diameter \[m\].
+    Inner(f64),
+    /// Its OD on the diameter \[m\].
+    Outer(f64),
+    /// Nowhere: free diameters.
+    Free,
+}
+
+/// The ring as installed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Installed {
+    /// Stretch of the ID, `s = (ID′ − ID)/ID` (negative: circumferential compression).
+    pub stretch: f64,
+    /// Installed inside diameter ID′ \[m\].
+    pub inner_diameter: f64,
+    /// Cross-section after stretch d′ \[m\] (constant volume, round section).
+    pub cross_section: f64,
+    /// Centreline (mean) diameter D′ = ID′ + d′ \[m\]: the sealing length is π D′.
+    pub mean_diameter: f64,
+    /// Squeeze `ε = 1 − h/d′` (≤ 0: the cord does not touch both walls).
+    pub squeeze: f64,
+    /// Gland fill `(π d′²/4)/(h w)`.
+    pub fill: f64,
+}
+
+/// The squeeze over the tolerances: the lowest and highest over every combination of the
+/// ring's ID and cross-section and the gland depth at their tolerance limits.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SqueezeRange {
+    pub min: f64,
+    pub nominal: f64,
+    pub max: f64,
+}
+
+/// Why a ring does not fit its gland.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum GlandError {
+    /// The piston's groove bottom `B − 2h` is not positive.
+    NoGrooveBottom { bore: f64, depth: f64 },
+    /// The ring cannot be brought onto its outer seat (its section would close the hole).
+    CannotSeat { diameter: f64 },
+    /// `h ≥ d′`: the groove is deeper than the (stretched) cross-section.
+    GrooveTooDeep { cross_section: f64, depth: f64 },
+    /// Gland fill ≥ 100 %.
+    Overfilled { fill: f64 },
+}
+
+impl fmt::Display for GlandError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        use crate::units::show;
+        match *self {
+            GlandError::NoGrooveBottom { bore, depth } => write!(
+                f,
+                "the groove bottom diameter bore − 2·depth = {} m − 2·{} m is not positive",
+                show(bore),
+                show(depth)
+            ),
+            GlandError::CannotSeat { diameter } => write!(
+                f,
+                "the ring cannot be brought onto the diameter {} m: its cross-section would \
+                 close the ring",
+                show(diameter)
+            ),
+            GlandError::GrooveTooDeep {
+                cross_section,
+                depth,
+            } => write!(
+                f,
+                "groove deeper than the cross-section: the cord ({} m after stretch) is not \
+                 squeezed by a gland depth of {} m (squeeze {} %)",
+                show(cross_section),
+                show(depth),
+                show(100.0 * (1.0 - depth / cross_section))
+            ),
+            GlandError::Overfilled { fill } => write!(
+                f,
+                "the ring does not fit: its cross-section fills {} % of the groove (depth × \
+                 width); widen or deepen the groove",
+                show(100.0 * fill)
+            ),
+        }
+    }
+}
+
+impl std::error::Error for GlandError {}
+
+/// A ring in its gland, validated, SI: everything [`Installed`] and [`SqueezeRange`] need.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GlandDesign {
+    pub kind: GlandKind,
+    pub ring: Ring,
+    /// What fixes the stretch.
+    pub locator: Locator,
+    /// Gland depth h \[m\]: the height the cord is squeezed into — bore to groove bottom
+    /// (piston), rod to groove bottom (rod), groove depth plus flange separation (face).
+    pub gland_depth: f64,
+    /// ± tolerance of h \[m\].
+    pub gland_depth_tolerance: f64,
+    /// Groove width w \[m\].
+    pub groove_width: f64,
+    /// Extrusion gap \[m\] (see [`Gland::extrusion_gap`]).
+    pub extrusion_gap: f64,
+}
+
+impl GlandDesign {
+    /// The gland as the life model sees it.
+    pub fn gland(&self) -> Gland {
+        Gland {
+            kind: self.kind,
+            extrusion_gap: self.extrusion_gap,
+        }
+    }
+
+    /// The nominal installation, or why the ring does not fit: a seat that cannot be reached,
+    /// a groove deeper than the stretched cord (ε ≤ 0), a fill of 100 % or more.
+    pub fn installed(&self) -> Result<Installed, GlandError> {
+        let r = &self.ring;
+        let inst = install(
+            r.inner_diameter,
+            r.cross_section,
+            self.gland_depth,
+            self.groove_width,
+            self.locator,
+        )?;
+        if inst.squeeze <= 0.0 {
+            return Err(GlandError::GrooveTooDeep {
+                cross_section: inst.cross_section,
+                depth: self.gland_depth,
+            });
+        }
+        if inst.fill >= 1.0 {
+            return Err(GlandError::Overfilled { fill: inst.fill });
+        }
+        Ok(inst)
+    }
+
+    /// The installations at every combination of ID, cross-section and gland depth at their
+    /// tolerance limits (those that can be seated).
+    fn corners(&self) -> Vec<Installed> {
+        let r = &self.ring;
+        let mut out = Vec::with_capacity(8);
+        for id in [-1.0, 1.0] {
+            for d in [-1.0, 1.0] {
+                for h in [-1.0, 1.0] {
+                    if let Ok(inst) = install(
+                        r.inner_diameter + id * r.inner_diameter_tolerance,
+                        r.cross_section + d * r.cross_section_tolerance,
+                        self.gland_depth + h * self.gland_depth_tolerance,
+                        self.groove_width,
+                        self.locator,
+                    ) {
+                        out.push(inst);
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// Minimum, nominal and maximum squeeze over the tolerances of the ring (ID, cross-section)
+    /// and of the gland depth (each ±, all 8 combinations; the extremes need no monotonicity).
+    pub fn squeeze_range(&self) -> Result<SqueezeRange, GlandError> {
+        let nominal = self.installed()?.squeeze;
+        let (mut min, mut max) = (nominal, nominal);
+        for inst in self.corners() {
+            min = min.min(inst.squeeze);
+            max = max.max(inst.squeeze);
+        }
+        Ok(SqueezeRange { min, nominal, max })
+    }
+
+    /// Gland fill at maximum material condition: the largest over the tolerance combinations
+    /// (largest cord, shallowest gland), compared with [`MAX_FILL_GUIDANCE`].
+    pub fn max_material_fill(&self) -> Result<f64, GlandError> {
+        let nominal = self.installed()?.fill;
+        Ok(self.corners().iter().fold(nominal, |m, i| m.max(i.fill)))
+    }
+
+    /// The gland depth h \[m\] that gives the squeeze `squeeze` (0 < ε < 1) to this ring,
+    /// `h = d′ (1 − ε)` with d′ the stretched cord — solved by fixed-point iteration where the
+    /// seat depends on h (a piston's groove bottom `B − 2h`): the dependence is weak (∂d′/∂h is
+    /// of order d/D), so it converges in a few steps.
+    pub fn depth_for_squeeze(&self, squeeze: f64) -> Result<f64, GlandError> {
+        let r = &self.ring;
+        let mut h = r.cross_section * (1.0 - squeeze);
+        for _ in 0..100 {
+            let inst = install(
+                r.inner_diameter,
+                r.cross_section,
+                h,
+                self.groove_width,
+                self.locator,
+            )?;
+            let next = inst.cross_section * (1.0 - squeeze);
+            let done = (next - h).abs() <= 1e-15 * h;
+            h = next;
+            if done {
+                break;
+            }
+        }
+        Ok(h)
+    }
+}
+
+/// The seat of a ring (free ID `id`, cord `d`) in a gland of depth `h`.
+fn seat(locator: Locator, id: f64, d: f64, h: f64) -> Result<Seat, GlandError> {
+    // radial gland between diameters s_in < s_out (s_out − s_in = 2h): a ring smaller than
+    // the inner one is stretched onto it; otherwise its OD, larger than the outer one when
+    // d > h, is compressed onto that (a ring that touches neither wall is free)
+    let radial = |s_in: f64, s_out: f64| {
+        if id < s_in {
+            Seat::Inner(s_in)
+        } else if id + 2.0 * d > s_out {
+            Seat::Outer(s_out)
+        } else {
+            Seat::Free
+        }
+    };
+    Ok(match locator {
+        Locator::Free => Seat::Free,
+        Locator::GrooveInner(g) => Seat::Inner(g),
+        Locator::GrooveOuter(g) => Seat::Outer(g),
+        Locator::Bore(bore) => {
+            let bottom = bore - 2.0 * h;
+            if bottom <= 0.0 {
+                return Err(GlandError::NoGrooveBottom { bore, depth: h });
+            }
+            radial(bottom, bore)
+        }
+        Locator::Rod(rod) => radial(rod, rod + 2.0 * h),
+    })
+}
+
+/// Stretch, stretched cord, squeeze and fill of a ring (free ID `id`, cord `d`) in a gland of
+/// depth `h`, width `w`; squeeze and fill are returned as they come (no fit check).
+fn install(id: f64, d: f64, h: f64, w: f64, locator: Locator) -> Result<Installed, GlandError> {
+    // constant volume of the torus: d′² D′ = d² D, D = id + d
+    let k = d * d * (id + d);
+    let (d1, inner, mean) = match seat(locator, id, d, h)? {
+        Seat::Free => (d, id, id + d),
+        // d′²(S + d′) = k: increasing in d′, one positive root
+        Seat::Inner(s) => {
+            let f = |x: f64| x * x * (s + x) - k;
+            let mut hi = d;
+            for _ in 0..64 {
+                if f(hi) >= 0.0 {
+                    break;
+                }
+                hi *= 2.0;
+            }
+            let d1 = bisect(f, 0.0, hi);
+            (d1, s, s + d1)
+        }
+        // d′²(S − d′) = k with d′ < S/2 (the hole stays open): increasing there
+        Seat::Outer(s) => {
+            let f = |x: f64| x * x * (s - x) - k;
+            if s <= 0.0 || f(0.5 * s) <= 0.0 {
+                return Err(GlandError::CannotSeat { diameter: s });
+            }
+            let d1 = bisect(f, 0.0, 0.5 * s);
+            (d1, s - 2.0 * d1, s - d1)
+        }
+    };
+    Ok(Installed {
+        stretch: (inner - id) / id,
+        inner_diameter: inner,
+        cross_section: d1,
+        mean_diameter: mean,
+        squeeze: 1.0 - h / d1,
+        fill: PI * d1 * d1 / 4.0 / (h * w),
+    })
+}
+
+/// The root of an increasing `f` in (lo, hi) with f(lo) < 0 ≤ f(hi), by bisection to the last
+/// bit.
+fn bisect(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if f(mid) < 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+/// The housing's material, for the thermal strain of a groove-seated ring (docs/model.md §6):
+/// linear CTEs near room temperature, each with the source it was read from; one
+/// representative alloy per name, taken constant over the temperature range.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Housing {
+    Steel,
+    Stainless,
+    Aluminium,
+    Brass,
+    Bronze,
+    CastIron,
+    Titanium,
+}
+
+/// AmesWeb, linear thermal expansion coefficients of steels.
+const AMES_STEELS: &str =
+    "https://amesweb.info/Materials/Linear_Thermal_Expansion_Coefficient_of_Steel.aspx";
+/// AmesWeb, linear thermal expansion coefficients of metals.
+const AMES_METALS: &str =
+    "https://amesweb.info/Materials/Linear-Thermal-Expansion-Coefficient-Metals.aspx";
+
+impl Housing {
+    /// Every housing, in the order of the messages.
+    pub const ALL: [Housing; 7] = [
+        Housing::Steel,
+        Housing::Stainless,
+        Housing::Aluminium,
+        Housing::Brass,
+        Housing::Bronze,
+        Housing::CastIron,
+        Housing::Titanium,
+    ];
+
+    /// The scenario's name (`housing = "cast-iron"`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Housing::Steel => "steel",
+            Housing::Stainless => "stainless",
+            Housing::Aluminium => "aluminium",
+            Housing::Brass => "brass",
+            Housing::Bronze => "bronze",
+            Housing::CastIron => "cast-iron",
+            Housing::Titanium => "titanium",
+        }
+    }
+
+    /// The housing named `name` (`"aluminum"` is accepted for `"aluminium"`).
+    pub fn from_name(name: &str) -> Option<Housing> {
+        if name == "aluminum" {
+            return Some(Housing::Aluminium);
+        }
+        Housing::ALL.into_iter().find(|h| h.name() == name)
+    }
+
+    /// Linear CTE α_h \[1/K\].
+    pub fn expansion(self) -> f64 {
+        match self {
+            Housing::Steel => 11.7e-6,
+            Housing::Stainless => 17.2e-6,
+            Housing::Aluminium => 23.6e-6,
+            Housing::Brass => 20.5e-6,
+            Housing::Bronze => 18.0e-6,
+            Housing::CastIron => 11.4e-6,
+            Housing::Titanium => 8.6e-6,
+        }
+    }
+
+    /// Which alloy the value is for and where it was read.
+    pub fn source(self) -> String {
+        let callister = "the same value in W.D. Callister, Fundamentals of Materials Science \
+                         and Engineering: An Integrated Approach, 3rd ed., App. B, Table B.6 \
+                         (read at https://issuhub.com/view/index/5550?pageIndex=844)";
+        match self {
+            Housing::Steel => format!("AISI 1020 carbon steel, annealed, 0–100 °C; {AMES_STEELS}"),
+            Housing::Stainless => {
+                format!("stainless grade 304, annealed, 0–100 °C; {AMES_STEELS}")
+            }
+            Housing::Aluminium => format!("aluminium alloy 6061; {AMES_METALS}; {callister}"),
+            Housing::Brass => format!("free-cutting brass C36000; {AMES_METALS}; {callister}"),
+            Housing::Bronze => format!("bearing bronze C93200; {AMES_METALS}; {callister}"),
+            Housing::CastIron => format!(
+                "grey cast iron G3000; {AMES_METALS} (Engineering ToolBox gives 5.8e-6 1/°F = \
+                 10.4e-6 1/K for grey cast iron, 32–212 °F, \
+                 https://www.engineeringtoolbox.com/thermal-expansion-metals-d_859.html)"
+            ),
+            Housing::Titanium => "Ti-6Al-4V and commercially pure grade 1 (both 8.6e-6 \
+                                   1/K): W.D. Callister, Fundamentals of Materials Science \
+                                   and Engineering: An Integrated Approach, 3rd ed., App. B, \
+                                   Table B.6 (read at \
+                                   https://issuhub.com/view/index/5550?pageIndex=844)"
+                .to_owned(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ring(id: f64, d: f64) -> Ring {
+        Ring {
+            inner_diameter: id,
+            inner_diameter_tolerance: 0.0,
+            cross_section: d,
+            cross_section_tolerance: 0.0,
+        }
+    }
+
+    fn design(locator: Locator, h: f64) -> GlandDesign {
+        GlandDesign {
+            kind: GlandKind::Piston,
+            ring: ring(24.99e-3, 3.53e-3),
+            locator,
+            gland_depth: h,
+            gland_depth_tolerance: 0.0,
+            groove_width: 4.7e-3,
+            extrusion_gap: 0.0,
+        }
+    }
+
+    #[test]
+    fn volume_is_conserved_on_every_seat() {
+        let v = |id: f64, d: f64| d * d * (id + d);
+        let v0 = v(24.99e-3, 3.53e-3);
+        for locator in [
+            Locator::Free,
+            Locator::Bore(32e-3),
+            Locator::Rod(26e-3),
+            Locator::Rod(24e-3),
+            Locator::GrooveOuter(32.5e-3),
+            Locator::GrooveInner(25.5e-3),
+        ] {
+            let i = design(locator, 2.8e-3).installed().unwrap();
+            assert!(((i.mean_diameter - i.inner_diameter) / i.cross_section - 1.0).abs() < 1e-12);
+            assert!((v(i.inner_diameter, i.cross_section) / v0 - 1.0).abs() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn a_piston_ring_is_stretched_onto_the_groove_bottom() {
+        // groove bottom 31.06 − 2·2.8 = 25.46 mm > ID 24.99 mm
+        let i = design(Locator::Bore(31.06e-3), 2.8e-3).installed().unwrap();
+        assert!((i.inner_diameter - 25.46e-3).abs() < 1e-15);
+        assert!((i.stretch - (25.46 / 24.99 - 1.0)).abs() < 1e-12);
+        assert!(i.cross_section < 3.53e-3);
+        // first order: Δd/d ≈ −s_c/2 with s_c the centreline stretch
+        let sc = (i.mean_diameter - 28.52e-3) / 28.52e-3;
+        assert!(((3.53e-3 - i.cross_section) / 3.53e-3 / (sc / 2.0) - 1.0).abs() < 0.05);
+    }
+
+    #[test]
+    fn errors_and_ranges() {
+        let deep = design(Locator::Free, 3.6e-3);
+        assert!(matches!(
+            deep.installed(),
+            Err(GlandError::GrooveTooDeep { .. })
+        ));
+        let mut narrow = design(Locator::Free, 2.8e-3);
+        narrow.groove_width = 3.0e-3;
+        assert!(matches!(
+            narrow.installed(),
+            Err(GlandError::Overfilled { .. })
+        ));
+        assert!(matches!(
+            design(Locator::Bore(5e-3), 2.8e-3).installed(),
+            Err(GlandError::NoGrooveBottom { .. })
+        ));
+        let mut d = design(Locator::Free, 2.8e-3);
+        d.ring.cross_section_tolerance = 0.1e-3;
+        d.gland_depth_tolerance = 0.05e-3;
+        let r = d.squeeze_range().unwrap();
+        // free ring: ε = 1 − h/d at the corners
+        assert!((r.min - (1.0 - 2.85 / 3.43)).abs() < 1e-12);
+        assert!((r.max - (1.0 - 2.75 / 3.63)).abs() < 1e-12);
+        assert!((r.nominal - (1.0 - 2.8 / 3.53)).abs() < 1e-12);
+        let h = design(Locator::Bore(31.06e-3), 2.8e-3)
+            .depth_for_squeeze(0.2)
+            .unwrap();
+        let mut back = design(Locator::Bore(31.06e-3), h);
+        back.gland_depth = h;
+        assert!((back.installed().unwrap().squeeze - 0.2).abs() < 1e-12);
+    }
+
+    #[test]
+    fn housings_have_names_and_values() {
+        for h in Housing::ALL {
+            assert_eq!(Housing::from_name(h.name()), Some(h));
+            assert!(h.expansion() > 5e-6 && h.expansion() < 3e-5);
+            assert!(h.source().contains("https://"));
+        }
+        assert_eq!(Housing::from_name("aluminum"), Some(Housing::Aluminium));
+        assert_eq!(Housing::from_name("wood"), None);
+    }
 }

@@ -7,7 +7,7 @@
 //! scenario's `asperity_modulus` still applies, and whatever depends on the compound (default
 //! temperature, thermal strain, ageing defaults) is validated against it.
 
-use super::{CliError, print_findings, progress_bar, write_output};
+use super::{CliError, print_findings, print_scenario_warnings, progress_bar, write_output};
 use crate::leak::Fidelity;
 use crate::material::Material;
 use crate::report::life::{
@@ -97,6 +97,7 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
     };
 
     for run in &runs {
+        print_scenario_warnings(Some(&run.label), &run.scenario);
         print_findings(Some(&run.label), &run.result.findings);
     }
     if let (Some(path), Some(csv)) = (&args.output, &csv) {

@@ -1,6 +1,6 @@
 //! `sealsim leak`: leak rate of a flat seal at one or more nominal pressures, as CSV.
 
-use super::{CliError, print_findings, progress_bar, write_output};
+use super::{CliError, print_findings, print_scenario_warnings, progress_bar, write_output};
 use crate::leak::Fidelity;
 use crate::math::log_spaced;
 use crate::report::csv::{leak_table, motion_leak_table};
@@ -137,6 +137,7 @@ pub fn run(args: LeakArgs) -> Result<(), CliError> {
         None => leak_table(&outcome.points)?,
         Some(motion) => motion_leak_table(&outcome.points, motion, outcome.stroke)?,
     };
+    print_scenario_warnings(None, &scenario);
     print_findings(None, &outcome.findings);
     write_output(args.output.as_deref(), csv.as_bytes())
 }

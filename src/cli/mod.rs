@@ -11,6 +11,7 @@ pub mod fit_prony;
 pub mod leak;
 pub mod materials;
 pub mod run;
+pub mod sizes;
 pub mod tradeoff;
 
 use crate::report::{self, ReportError};
@@ -45,6 +46,17 @@ pub(crate) fn progress_bar(what: &str) -> impl FnMut(usize, usize) {
 /// id) leading each line.
 pub(crate) fn print_findings(context: Option<&str>, findings: &crate::validity::Findings) {
     eprint!("{}", report::findings::warning_lines(context, findings));
+}
+
+/// Prints a scenario's input warnings (e.g. a gland fill above the guidance) to stderr, one
+/// `warning:` line each, `context` (e.g. a compound's id) leading each line.
+pub(crate) fn print_scenario_warnings(context: Option<&str>, scenario: &crate::scenario::Scenario) {
+    for w in &scenario.warnings {
+        match context {
+            Some(c) => eprintln!("warning: {c}: {w}"),
+            None => eprintln!("warning: {w}"),
+        }
+    }
 }
 
 /// `--fidelity LEVEL` of every command: the levels, their aliases and help all come from
@@ -100,6 +112,8 @@ pub enum Command {
     FitProny(fit_prony::FitPronyArgs),
     /// The material library: list, show, response curves, Abaqus/ANSYS export.
     Materials(materials::MaterialsArgs),
+    /// AS568 O-ring sizes: one size's dimensions (inch and mm, tolerances, source), or all.
+    Sizes(sizes::SizesArgs),
 }
 
 /// Why a command failed; decides the exit status.
@@ -178,6 +192,7 @@ pub fn run(command: Command) -> Result<(), CliError> {
         Command::Figures(args) => figures::run(args),
         Command::FitProny(args) => fit_prony::run(args),
         Command::Materials(args) => materials::run(args),
+        Command::Sizes(args) => sizes::run(args),
     }
 }
 

@@ -6,7 +6,7 @@
 //! the leak-rate chart (`--plot`) are written only when asked for, each atomically, and only
 //! after the whole run has succeeded (on bad input nothing is written).
 
-use super::{CliError, print_findings, progress_bar, write_output};
+use super::{CliError, print_findings, print_scenario_warnings, progress_bar, write_output};
 use crate::leak::Fidelity;
 use crate::report::life::{
     Summary, has_positive_leak_rate, history_table, human_summary, leak_rate_chart,
@@ -83,6 +83,7 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
         None => None,
     };
 
+    print_scenario_warnings(None, &scenario);
     print_findings(None, &result.findings);
     for (path, bytes) in [
         (&args.output, csv.as_deref()),

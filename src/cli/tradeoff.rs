@@ -2,7 +2,7 @@
 //! a ladder of numerical settings, with wall time and error against the most accurate setting
 //! ([`crate::workflow::tradeoff`]).
 
-use super::{CliError, print_findings, progress_bar, write_output};
+use super::{CliError, print_findings, print_scenario_warnings, progress_bar, write_output};
 use crate::report::tradeoff::{tradeoff_chart, tradeoff_markdown, tradeoff_table};
 use crate::scenario::Scenario;
 use crate::workflow::tradeoff::{self, ScenarioTradeoff, TradeoffOptions};
@@ -84,6 +84,7 @@ pub fn run(args: TradeoffArgs) -> Result<(), CliError> {
             write_output(Some(path), bytes.as_bytes())?;
         }
     }
+    print_scenario_warnings(None, &scenario);
     print_findings(None, &findings);
     write_output(None, tradeoff_markdown(&rows).as_bytes())
 }

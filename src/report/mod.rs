@@ -8,6 +8,7 @@ pub mod life;
 pub mod material_toml;
 pub mod materials;
 pub mod plot;
+pub mod sizes;
 pub mod tradeoff;
 
 use std::fmt;

@@ -8,7 +8,7 @@ use super::error::{ScenarioError, Source};
 use super::history;
 use super::raw::{Quantity, RawEnvironment, RawFailure, RawScenarioAgeing, RawSeal, RawSimulation};
 use super::validate::{Bound, Field, field};
-use crate::gland::Gland;
+use crate::gland::{Gland, GlandDesign, Housing};
 use crate::leak::Fidelity;
 use crate::material::shift::{Cycle, DAY, YEAR};
 use crate::material::{Ageing, Material, Shift, TemperatureHistory};
@@ -124,16 +124,34 @@ pub(super) struct SealSpec {
     /// k_e (docs/model.md §6.3).
     pub energisation_factor: f64,
     pub loading: Loading,
-    /// `housing_expansion` \[1/K\] and its span.
-    pub housing_expansion: Option<(f64, std::ops::Range<usize>)>,
+    /// The housing's CTE and where it was set (`housing`, `housing_expansion`, or a gland's
+    /// default).
+    pub housing_expansion: Option<HousingExpansion>,
     /// `installation_temperature` \[K\].
     pub installation_temperature: Option<f64>,
+    /// A groove-seated ring's ring and groove (docs/model.md §6.2).
+    pub design: Option<GlandDesign>,
+    /// Located warnings about the input (e.g. a gland fill above the guidance).
+    pub warnings: Vec<String>,
+}
+
+/// The housing's linear CTE α_h and the key that set it.
+pub(super) struct HousingExpansion {
+    /// α_h \[1/K\].
+    pub value: f64,
+    /// The span of the key's value (of `gland` for the default).
+    pub span: std::ops::Range<usize>,
+    /// `seal.housing`, `seal.housing_expansion` or `seal.gland`.
+    pub key: &'static str,
+    /// Set by default (a groove-seated ring without `housing` or `housing_expansion`).
+    pub by_default: bool,
 }
 
 /// The keys of each seal kind (for the messages).
 const FLAT_KEYS: &str = "nominal_pressure, width, length and loading";
-const ORING_KEYS: &str = "cross_section, mean_diameter, squeeze, loading, housing_expansion and \
-                          installation_temperature";
+const ORING_KEYS: &str = "cross_section, mean_diameter, squeeze, loading, housing or \
+                          housing_expansion, installation_temperature, and gland with its ring \
+                          and groove keys";
 
 impl Source<'_> {
     /// `[seal]`: `kind = "flat"` (default) or `"o-ring"`.
@@ -197,6 +215,21 @@ impl Source<'_> {
                     ],
                     FLAT_KEYS,
                 )?;
+                for (key, span) in [
+                    ("gland", raw.gland.as_ref().map(Spanned::span)),
+                    ("housing", raw.housing.as_ref().map(Spanned::span)),
+                ]
+                .into_iter()
+                .chain(super::gland::gland_only_keys(raw))
+                {
+                    if let Some(span) = span {
+                        return Err(self.error(
+                            span,
+                            &format!("seal.{key}"),
+                            format!("not a key of {a_seal}, which takes {FLAT_KEYS}"),
+                        ));
+                    }
+                }
                 Ok(SealSpec {
                     geometry: SealGeometry::Flat {
                         nominal_pressure: required(
@@ -212,6 +245,8 @@ impl Source<'_> {
                     loading,
                     housing_expansion: None,
                     installation_temperature: None,
+                    design: None,
+                    warnings: Vec::new(),
                 })
             }
             "o-ring" => {
@@ -223,6 +258,21 @@ impl Source<'_> {
                     ],
                     ORING_KEYS,
                 )?;
+                if let Some(gland) = &raw.gland {
+                    let kind = self.gland_kind(gland)?;
+                    return self.gland_seal(table, kind, gland.span(), loading);
+                }
+                for (key, span) in super::gland::gland_only_keys(raw) {
+                    if let Some(span) = span {
+                        return Err(self.error(
+                            span,
+                            &format!("seal.{key}"),
+                            "only applies to a groove-seated ring: set gland = \"face\", \
+                             \"piston\" or \"rod\" (without gland the ring is squeezed \
+                             between plates, given by cross_section, mean_diameter and squeeze)",
+                        ));
+                    }
+                }
                 let cross_section = required(&raw.cross_section, &CROSS_SECTION, ORING_KEYS)?;
                 let mean_diameter = required(&raw.mean_diameter, &MEAN_DIAMETER, ORING_KEYS)?;
                 let squeeze = required(&raw.squeeze, &SQUEEZE, ORING_KEYS)?;
@@ -241,18 +291,16 @@ impl Source<'_> {
                         ),
                     ));
                 }
-                let housing_expansion = match &raw.housing_expansion {
-                    Some(q) => Some((self.quantity(q, &HOUSING_EXPANSION)?, q.span())),
-                    None => None,
-                };
+                let housing_expansion = self.housing_expansion(raw)?;
                 let installation_temperature = match &raw.installation_temperature {
                     Some(q) if housing_expansion.is_none() => {
                         return Err(self.error(
                             q.span(),
                             "seal.installation_temperature",
                             "the thermal strain it is the reference of is modelled only with \
-                             housing_expansion; set housing_expansion (0 for a housing that does \
-                             not expand) or remove installation_temperature",
+                             housing or housing_expansion (or in a gland); set one \
+                             (housing_expansion = 0 for a housing that does not expand) or \
+                             remove installation_temperature",
                         ));
                     }
                     Some(q) => Some(self.absolute_temperature(q, "seal.installation_temperature")?),
@@ -269,6 +317,8 @@ impl Source<'_> {
                     loading,
                     housing_expansion,
                     installation_temperature,
+                    design: None,
+                    warnings: Vec::new(),
                 })
             }
             other => {
@@ -282,33 +332,86 @@ impl Source<'_> {
         }
     }
 
-    /// The thermal strain of an O-ring with `housing_expansion`: the rubber's CTE is the
-    /// material's `thermal_expansion` (required), the installation temperature defaults to
-    /// the environment at t = 0.
+    /// `housing = "steel"` (a CTE of [`Housing`]) or `housing_expansion` (a CTE), mutually
+    /// exclusive; `None` when neither is given.
+    pub(super) fn housing_expansion(
+        &self,
+        raw: &RawSeal,
+    ) -> Result<Option<HousingExpansion>, ScenarioError> {
+        match (&raw.housing, &raw.housing_expansion) {
+            (Some(_), Some(q)) => Err(self.error(
+                q.span(),
+                HOUSING_EXPANSION.key,
+                "housing and housing_expansion both give the housing's expansion: name the \
+                 material (housing) or give its CTE (housing_expansion), not both",
+            )),
+            (Some(name), None) => match Housing::from_name(name.get_ref()) {
+                Some(h) => Ok(Some(HousingExpansion {
+                    value: h.expansion(),
+                    span: name.span(),
+                    key: "seal.housing",
+                    by_default: false,
+                })),
+                None => Err(self.error(
+                    name.span(),
+                    "seal.housing",
+                    format!(
+                        "must be one of {} (or give housing_expansion, a CTE such as \
+                         \"12e-6 1/K\"), got {:?}",
+                        Housing::ALL
+                            .iter()
+                            .map(|h| format!("{:?}", h.name()))
+                            .collect::<Vec<_>>()
+                            .join(", "),
+                        name.get_ref()
+                    ),
+                )),
+            },
+            (None, Some(q)) => Ok(Some(HousingExpansion {
+                value: self.quantity(q, &HOUSING_EXPANSION)?,
+                span: q.span(),
+                key: HOUSING_EXPANSION.key,
+                by_default: false,
+            })),
+            (None, None) => Ok(None),
+        }
+    }
+
+    /// The thermal strain of an O-ring with a housing CTE (`housing`, `housing_expansion`, or a
+    /// groove-seated ring's default steel): the rubber's CTE is the material's
+    /// `thermal_expansion` (required), the installation temperature defaults to the
+    /// environment at t = 0 (to 23 °C in a gland, set by [`Source::gland_seal`]).
     pub(super) fn thermal_strain(
         &self,
         seal: &SealSpec,
         material: &Material,
         environment: &TemperatureHistory,
     ) -> Result<Option<ThermalStrain>, ScenarioError> {
-        let Some((housing_expansion, span)) = &seal.housing_expansion else {
+        let Some(housing) = &seal.housing_expansion else {
             return Ok(None);
         };
         let Some(rubber_expansion) = material.thermal_expansion else {
-            return Err(self.error(
-                span.clone(),
-                HOUSING_EXPANSION.key,
+            let message = if housing.by_default {
+                format!(
+                    "a groove-seated ring follows the temperature by default (housing \"steel\", \
+                     installed at 23 °C; docs/model.md §6.2), which needs the rubber's \
+                     expansion, but the material ({}) gives no thermal_expansion; add \
+                     thermal_expansion to [material]",
+                    material.name
+                )
+            } else {
                 format!(
                     "the thermal strain needs the rubber's expansion too, but the material ({}) \
-                     gives no thermal_expansion; add it to [material] or remove \
-                     housing_expansion",
-                    material.name
-                ),
-            ));
+                     gives no thermal_expansion; add it to [material] or remove {}",
+                    material.name,
+                    housing.key.trim_start_matches("seal.")
+                )
+            };
+            return Err(self.error(housing.span.clone(), housing.key, message));
         };
         Ok(Some(ThermalStrain {
             rubber_expansion,
-            housing_expansion: *housing_expansion,
+            housing_expansion: housing.value,
             installation_temperature: seal
                 .installation_temperature
                 .unwrap_or_else(|| environment.at(0.0)),

@@ -16,10 +16,12 @@
 //! [`leak::StaticProblem`]: crate::leak::StaticProblem
 //! [`simulate::LifeProblem`]: crate::simulate::LifeProblem
 
+pub mod as568;
 mod contamination;
 mod error;
 pub mod figure_set;
 pub mod fit_data;
+mod gland;
 mod height_map;
 mod history;
 pub mod library;
@@ -33,6 +35,7 @@ mod validate;
 pub use error::ScenarioError;
 pub use material::{PARAMETERS, load_material_file, material_from_str};
 
+use crate::gland::GlandDesign;
 use crate::leak::StaticProblem;
 use crate::material::Material;
 use crate::numerical::HeightMap;
@@ -67,6 +70,14 @@ pub struct Scenario {
     /// `[numerical]`: grid, band, realisations and seed of the numerical level (defaults:
     /// [`NumericalSettings::default`]).
     pub numerical: NumericalSettings,
+    /// A groove-seated O-ring's ring and groove (`[seal] gland = …`, docs/model.md §6.2): its
+    /// installed state, squeeze range over the tolerances and gland fill
+    /// ([`GlandDesign::installed`], [`GlandDesign::squeeze_range`],
+    /// [`GlandDesign::max_material_fill`]); `life.geometry` is its nominal installed state.
+    pub gland: Option<GlandDesign>,
+    /// Warnings about the input, each located like an error (`FILE:LINE: KEY: …`), e.g. a gland
+    /// fill above the guidance; the commands print them as `warning:` lines.
+    pub warnings: Vec<String>,
 }
 
 impl Scenario {

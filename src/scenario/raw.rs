@@ -177,8 +177,8 @@ pub(super) struct RawFluid {
 }
 
 /// `[seal]`: a flat seal (`nominal_pressure`, `width`, `length`) or an O-ring
-/// (`cross_section`, `mean_diameter`, `squeeze`, optional thermal strain); which keys belong
-/// to which `kind` is checked in validation.
+/// (`cross_section`, `mean_diameter`, `squeeze`, optional thermal strain; or, seated in a
+/// `gland`, its ring and groove); which keys belong to which `kind` is checked in validation.
 #[derive(Debug, serde::Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct RawSeal {
@@ -192,6 +192,23 @@ pub(super) struct RawSeal {
     pub loading: Option<Spanned<String>>,
     pub housing_expansion: Option<Quantity>,
     pub installation_temperature: Option<Quantity>,
+    /// A groove-seated O-ring (docs/model.md §6.2): `"face"`, `"piston"` or `"rod"`, and its
+    /// ring (`size`, or `cross_section` with `inner_diameter`) and groove.
+    pub gland: Option<Spanned<String>>,
+    pub size: Option<Spanned<String>>,
+    pub inner_diameter: Option<Quantity>,
+    pub groove_depth: Option<Quantity>,
+    pub groove_depth_tolerance: Option<Quantity>,
+    pub groove_width: Option<Quantity>,
+    pub diametral_clearance: Option<Quantity>,
+    pub extrusion_gap: Option<Quantity>,
+    pub bore_diameter: Option<Quantity>,
+    pub rod_diameter: Option<Quantity>,
+    pub groove_outer_diameter: Option<Quantity>,
+    pub groove_inner_diameter: Option<Quantity>,
+    pub energisation_factor: Option<Quantity>,
+    /// The housing's material (`"steel"`, …), for its thermal expansion.
+    pub housing: Option<Spanned<String>>,
 }
 
 /// `[environment]`: the temperature history (constant, a CSV table, plus cycles).

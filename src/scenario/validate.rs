@@ -238,7 +238,7 @@ impl Source<'_> {
             contamination,
             motion,
         };
-        let seal = static_seal(&life);
+        let static_seal = static_seal(&life);
         Ok(Scenario {
             name,
             path: self.path.to_path_buf(),
@@ -247,13 +247,15 @@ impl Source<'_> {
                 material: elastic,
                 spectrum,
                 fluid,
-                seal,
+                seal: static_seal,
                 contact,
                 shape_factor,
             },
             life,
             height_map,
             numerical,
+            gland: seal.design,
+            warnings: seal.warnings,
         })
     }
 

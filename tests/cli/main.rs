@@ -16,6 +16,7 @@ mod support;
 mod engineering_units;
 mod figures;
 mod fit;
+mod gland;
 mod leak;
 mod materials;
 mod motion;
