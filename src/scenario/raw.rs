@@ -58,6 +58,7 @@ pub(super) struct RawScenario {
     pub name: Option<Spanned<String>>,
     pub material: Spanned<RawMaterial>,
     pub surface: Spanned<RawSurface>,
+    pub groove_surface: Option<Spanned<RawSurface>>,
     pub fluid: Spanned<RawFluid>,
     pub seal: Spanned<RawSeal>,
     pub model: Option<Spanned<RawModel>>,
@@ -75,6 +76,7 @@ impl RawScenario {
     pub const TABLES: &[&str] = &[
         "material",
         "surface",
+        "groove_surface",
         "fluid",
         "seal",
         "model",

@@ -17,6 +17,7 @@ use crate::material::Material;
 use crate::numerical::reference::NumericalSettings;
 use crate::numerical::{HeightMap, psd as map_psd};
 use crate::seal::{Profile, SealGeometry};
+use crate::simulate::GrooveInterface;
 use crate::simulate::LifeProblem;
 use crate::surface::Spectrum;
 use crate::units::{self, Dimension, show};
@@ -204,6 +205,7 @@ impl Source<'_> {
         let (spectrum, height_map) = self.surface(&raw.surface)?;
         let fluid = self.fluid(raw.fluid.get_ref())?;
         let seal = self.seal(&raw.seal)?;
+        let groove = self.groove_surface(raw.groove_surface.as_ref(), seal.gland.is_some())?;
         let (contact, shape_factor) = match &raw.model {
             Some(model) => self.model(model.get_ref())?,
             None => (ContactSettings::default(), DEFAULT_SHAPE_FACTOR),
@@ -226,6 +228,7 @@ impl Source<'_> {
             fluid,
             geometry: seal.geometry,
             gland: seal.gland,
+            groove,
             energisation_factor: seal.energisation_factor,
             loading: seal.loading,
             environment,
@@ -342,6 +345,58 @@ impl Source<'_> {
             .optional(raw.shape_factor.as_ref(), &SHAPE_FACTOR)?
             .unwrap_or(DEFAULT_SHAPE_FACTOR);
         Ok((contact, shape_factor))
+    }
+
+    /// `[groove_surface]`: the groove bottom's surface of a groove-seated ring, in the keys of
+    /// `[surface]` but without a height map (absent: the counterface's surface); refused without a
+    /// gland. Messages name `groove_surface.…`.
+    fn groove_surface(
+        &self,
+        table: Option<&Spanned<RawSurface>>,
+        in_gland: bool,
+    ) -> Result<GrooveInterface, ScenarioError> {
+        let Some(table) = table else {
+            return Ok(if in_gland {
+                GrooveInterface::Counterface
+            } else {
+                GrooveInterface::None
+            });
+        };
+        if !in_gland {
+            return Err(self.error(
+                table.span(),
+                "groove_surface",
+                "the groove bottom is the second sealing interface of a groove-seated O-ring: set \
+                 [seal] gland (face, piston or rod) or remove [groove_surface]",
+            ));
+        }
+        if let Some(map) = &table.get_ref().height_map {
+            return Err(self.error(
+                map.span(),
+                "groove_surface.height_map",
+                "a height map describes the counterface for the numerical level; give the groove \
+                 bottom as a spectrum (self-affine keys or psd_file)",
+            ));
+        }
+        let rename = |text: String| text.replace("surface.", "groove_surface.");
+        match self.surface(table) {
+            Ok((spectrum, _)) => Ok(GrooveInterface::Own(spectrum)),
+            Err(ScenarioError::Invalid {
+                path,
+                line,
+                key,
+                message,
+            }) => Err(ScenarioError::Invalid {
+                path,
+                line,
+                key: key.map(|k| match k.strip_prefix("surface") {
+                    Some(rest) => format!("groove_surface{rest}"),
+                    None => k,
+                }),
+                message: rename(message),
+            }),
+            Err(other) => Err(other),
+        }
     }
 
     /// `[surface]`: a self-affine spectrum, a tabulated one from `psd_file`, or the spectrum

@@ -40,7 +40,8 @@ pub mod events;
 mod problem;
 
 pub use problem::{
-    AsperityModulus, HistoryRow, LifeProblem, LifeResult, Loading, SealState, TimeGrid,
+    AsperityModulus, GrooveInterface, HistoryRow, LifeProblem, LifeResult, Loading, SealState,
+    TimeGrid,
 };
 
 use crate::contact::{ContactSettings, Elastic, Junction, PerssonContact};
@@ -154,6 +155,42 @@ impl InterfaceLeak {
     }
 }
 
+/// The Hertz interface solutions of one surface over a run: memoised in the peak pressure when
+/// σ(e) stays the same over the run (every asperity modulus but `follow`), else solved at each
+/// state from the previous state's flux ratio.
+struct InterfaceSolver {
+    memo: Option<HertzMemo>,
+    /// The flux ratio κ of the last direct solve: the start of the next (nearby) one.
+    warm: std::cell::Cell<Option<f64>>,
+}
+
+impl InterfaceSolver {
+    fn new(problem: &LifeProblem) -> Self {
+        InterfaceSolver {
+            memo: (problem.asperity_modulus != AsperityModulus::Follow)
+                .then(|| HertzMemo::new(interface::MEMO_SPACING)),
+            warm: std::cell::Cell::new(None),
+        }
+    }
+
+    fn solve(
+        &self,
+        sigma: &dyn Fn(f64) -> f64,
+        contact: HertzContact,
+        viscosity: f64,
+        dp: f64,
+    ) -> interface::HertzSolution {
+        if let Some(memo) = &self.memo {
+            return memo.solve(sigma, contact, viscosity, dp, &INTERFACE);
+        }
+        let solved = interface::hertz(sigma, contact, dp, &INTERFACE, self.warm.get());
+        if solved.flux_ratio.is_some() {
+            self.warm.set(solved.flux_ratio);
+        }
+        solved
+    }
+}
+
 /// The mechanical state carried along the time loop.
 #[derive(Debug, Clone)]
 struct Mechanics {
@@ -186,11 +223,10 @@ pub struct Simulator<'a> {
     /// The last `(s, u_c(s, a_c))` of the re-routing reference junction: a step's ratio nodes
     /// and its end snapshot share one pressure, hence one reference evaluation.
     reference_memo: std::cell::Cell<Option<(f64, Option<f64>)>>,
-    /// The flux ratio κ of the last Hertz interface solve: the start of the next (nearby) one.
-    interface_memo: std::cell::Cell<Option<f64>>,
-    /// Hertz interface solutions interpolated in the peak pressure, when σ(e) stays the same
-    /// over the run (every asperity modulus but `follow`).
-    hertz_memo: Option<HertzMemo>,
+    /// The counterface's interface solutions.
+    counterface: InterfaceSolver,
+    /// The groove bottom's own surface: its contact path and interface solutions.
+    groove: Option<(ContactPath, InterfaceSolver)>,
     /// `[motion]`: the motion and the table of I (built once; `None` for a static seal).
     drag: Option<(MotionSpec, DragTable)>,
 }
@@ -241,9 +277,14 @@ impl<'a> Simulator<'a> {
             creep: problem.material.prony.creep(),
             rerouting,
             reference_memo: std::cell::Cell::new(None),
-            interface_memo: std::cell::Cell::new(None),
-            hertz_memo: (problem.asperity_modulus != AsperityModulus::Follow)
-                .then(|| HertzMemo::new(interface::MEMO_SPACING)),
+            counterface: InterfaceSolver::new(problem),
+            groove: match &problem.groove {
+                GrooveInterface::Own(spectrum) => Some((
+                    ContactPath::new(spectrum, problem.contact, problem.fidelity),
+                    InterfaceSolver::new(problem),
+                )),
+                _ => None,
+            },
             drag,
         }
     }
@@ -256,6 +297,9 @@ impl<'a> Simulator<'a> {
             validity::no_failure_criterion(&mut findings);
         }
         validity::surface(&p.spectrum, &mut findings);
+        if let GrooveInterface::Own(groove) = &p.groove {
+            validity::surface(groove, &mut findings);
+        }
         let mut state = self.installed();
         let first = self.snapshot(&state);
         self.assess(&state, &first, &mut findings);
@@ -301,24 +345,26 @@ impl<'a> Simulator<'a> {
         state
     }
 
-    /// The static leak of the installed seal with its pressure profile scaled to the peak contact
-    /// pressure `peak` \[Pa\]: the strips in series with the asperity modulus at installation,
-    /// exactly as the first row of [`Self::run`] computes it (at the installation's own peak, the
-    /// same number). Returns the leak rate \[m³/s\] (all channels open, no drag) and the peak
-    /// strip's junction.
+    /// The static leak of the installed seal with its pressure profile scaled so that the peak
+    /// contact pressure (with the energisation k_e ΔP) is `peak` \[Pa\]: the interface with the
+    /// asperity modulus at installation, exactly as the first row of [`Self::run`] computes it
+    /// (at the installation's own peak, the same number). Returns the leak rate \[m³/s\] (all
+    /// channels open, no drag), the junction where the asperities carry most, and the state.
     pub fn installed_leak(&self, peak: f64) -> (f64, Junction, SealState) {
         let p = self.problem;
         let state = self.installed();
         let e_star = self.asperity_modulus(&state) / (1.0 - p.material.poisson_ratio.powi(2));
         let installed = self.profile_at(&state, 0.0);
-        let leak = self.profile_leak(&installed.scaled(peak / installed.peak()), e_star);
+        let own = installed.peak();
+        let squeeze_peak = (peak - (self.contact_peak(&installed) - own)).max(0.0);
+        let leak = self.profile_leak(&installed.scaled(squeeze_peak / own), e_star);
         (leak.leak_rate, leak.junction, leak.state())
     }
 
-    /// The peak contact pressure right after installation \[Pa\] (the first row of
-    /// [`Self::run`]).
+    /// The peak contact pressure right after installation, with the energisation \[Pa\] (the
+    /// first row of [`Self::run`]).
     pub fn installed_peak(&self) -> f64 {
-        self.profile_at(&self.installed(), 0.0).peak()
+        self.contact_peak(&self.profile_at(&self.installed(), 0.0))
     }
 
     /// The nominal pressure profile of `state` at time `t`.
@@ -340,19 +386,41 @@ impl<'a> Simulator<'a> {
 
     /// The leak through `profile` with the fluid pressure inside the interface (docs/model.md
     /// §3.6) and the energisation `k_e ΔP` added to the contact pressure (§6.3), with the
-    /// asperity contact's E* `e_star` \[Pa\]: the leak rate, the critical junction where the
-    /// asperities carry most (the peak of a Hertz profile less the fluid pressure there; a
-    /// uniform contact's outlet), and the state. Where ΔP is negligible against the contact
-    /// pressure (≤ 1e-8 of it) the strips in series at the contact pressure (§3.2). Lifted
-    /// off: the strips in series without the fluid pressure, a number that no longer applies.
+    /// asperity contact's E* `e_star` \[Pa\]: the counterface's interface, plus the groove
+    /// bottom's in parallel for a groove-seated ring. The junction and state are the
+    /// counterface's.
     fn profile_leak(&self, profile: &Profile, e_star: f64) -> InterfaceLeak {
+        let counterface = self.interface_leak(&self.path, &self.counterface, profile, e_star);
+        let groove = match (&self.problem.groove, &self.groove) {
+            (GrooveInterface::Counterface, _) => counterface.leak_rate,
+            (GrooveInterface::Own(_), Some((path, solver))) => {
+                self.interface_leak(path, solver, profile, e_star).leak_rate
+            }
+            _ => 0.0,
+        };
+        InterfaceLeak {
+            leak_rate: counterface.leak_rate + groove,
+            ..counterface
+        }
+    }
+
+    /// One interface of `path` under `profile` (see [`Self::profile_leak`]): the leak rate, the
+    /// critical junction where the asperities carry most (the peak of a Hertz profile less the
+    /// fluid pressure there; a uniform contact's outlet), and whether it lifted off. Where ΔP is
+    /// negligible against the contact pressure (≤ 1e-8 of it) the strips in series at the
+    /// contact pressure (§3.2). Lifted off: the strips in series without the fluid pressure, a
+    /// number that no longer applies.
+    fn interface_leak(
+        &self,
+        path: &ContactPath,
+        solver: &InterfaceSolver,
+        profile: &Profile,
+        e_star: f64,
+    ) -> InterfaceLeak {
         let p = self.problem;
         let dp = p.fluid.pressure_difference;
         let offset = p.energisation_factor * dp;
-        let sigma = |e: f64| {
-            self.path
-                .conductance(e / e_star, p.shape_factor, p.fluid.viscosity)
-        };
+        let sigma = |e: f64| path.conductance(e / e_star, p.shape_factor, p.fluid.viscosity);
         let geometry = profile.geometry(p.geometry.sealing_length());
         let series = || {
             let resistance = profile.series_resistance(&self.rule, |pc| sigma(pc + offset));
@@ -360,10 +428,9 @@ impl<'a> Simulator<'a> {
                 .leak_rate(geometry, Conduction::Series { resistance })
         };
         let top = profile.peak() + offset;
-        let junction_at = |e: f64| self.path.critical_junction(e.max(0.0) / e_star);
+        let junction_at = |e: f64| path.critical_junction(e.max(0.0) / e_star);
         if dp <= NEGLIGIBLE_PRESSURE_RATIO * top {
-            let leak_rate = series();
-            return InterfaceLeak::new(leak_rate, junction_at(top), false);
+            return InterfaceLeak::new(series(), junction_at(top), false);
         }
         let (flow, junction) = match *profile {
             Profile::Uniform { pressure, .. } => (
@@ -376,22 +443,7 @@ impl<'a> Simulator<'a> {
                     offset,
                     width,
                 };
-                let solved = match &self.hertz_memo {
-                    Some(memo) => memo.solve(&sigma, contact, p.fluid.viscosity, dp, &INTERFACE),
-                    None => {
-                        let solved = interface::hertz(
-                            &sigma,
-                            contact,
-                            dp,
-                            &INTERFACE,
-                            self.interface_memo.get(),
-                        );
-                        if solved.flux_ratio.is_some() {
-                            self.interface_memo.set(solved.flux_ratio);
-                        }
-                        solved
-                    }
-                };
+                let solved = solver.solve(&sigma, contact, p.fluid.viscosity, dp);
                 (solved.flow, junction_at(top - solved.centre_fluid_pressure))
             }
         };
@@ -607,6 +659,12 @@ impl<'a> Simulator<'a> {
         }
     }
 
+    /// The peak contact pressure of `profile` with the energisation k_e ΔP \[Pa\].
+    fn contact_peak(&self, profile: &Profile) -> f64 {
+        let p = self.problem;
+        profile.peak() + p.energisation_factor * p.fluid.pressure_difference
+    }
+
     fn asperity_modulus(&self, state: &Mechanics) -> f64 {
         let prony = &self.problem.material.prony;
         match self.problem.asperity_modulus {
@@ -628,7 +686,7 @@ impl<'a> Simulator<'a> {
             reduced_time: state.reduced_time,
             shift_factor: p.material.shift.factor(snap.temperature),
             sealing_force: snap.profile.force_per_length(),
-            peak_pressure: snap.profile.peak(),
+            peak_pressure: self.contact_peak(&snap.profile),
             mean_pressure: snap.profile.mean(),
             contact_width: snap.profile.width(),
             u_c: snap.u_c,
@@ -693,7 +751,7 @@ impl<'a> Simulator<'a> {
         p.assess_rubber(snap.temperature, at, findings);
         validity::contact(
             &ContactState {
-                nominal_pressure: snap.profile.peak(),
+                nominal_pressure: self.contact_peak(&snap.profile),
                 pressure_difference: p.fluid.pressure_difference,
                 junction: &snap.peak_junction,
                 cutoff: p.spectrum.q1() / p.spectrum.q0(),

@@ -31,6 +31,18 @@ pub enum AsperityModulus {
     Fixed(f64),
 }
 
+/// The second sealing interface of a groove-seated O-ring: the ring also seals on the groove
+/// bottom, in parallel with the counterface (`[surface]`).
+#[derive(Debug, Clone, PartialEq)]
+pub enum GrooveInterface {
+    /// None modelled: a flat seal, or a ring between plates (one interface, as before glands).
+    None,
+    /// The groove bottom has the counterface's surface: the same leak again.
+    Counterface,
+    /// The groove bottom's own surface (`[groove_surface]`).
+    Own(Spectrum),
+}
+
 /// How the seal is held.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Loading {
@@ -77,6 +89,9 @@ pub struct LifeProblem {
     pub geometry: SealGeometry,
     /// The groove an O-ring sits in (`None`: a flat seal, or a ring squeezed between plates).
     pub gland: Option<Gland>,
+    /// The groove bottom's interface of a groove-seated ring, which leaks in parallel with the
+    /// counterface's (docs/model.md §6.3).
+    pub groove: GrooveInterface,
     /// Energisation factor k_e: the fluid pressure adds `k_e ΔP` to the contact pressure across
     /// the width (docs/model.md §6.3; 1 for a groove-seated ring by default, 0 otherwise).
     pub energisation_factor: f64,

@@ -7,8 +7,8 @@ use sealsim::material::shift::Cycle;
 use sealsim::material::{Material, Prony, PronyTerm, Shift, Status, TemperatureHistory};
 use sealsim::seal::SealGeometry;
 use sealsim::simulate::{
-    AsperityModulus, FailureCriteria, FailureMode, LifeProblem, Loading, SealState, TimeGrid,
-    simulate,
+    AsperityModulus, FailureCriteria, FailureMode, GrooveInterface, LifeProblem, Loading,
+    SealState, TimeGrid, simulate,
 };
 use sealsim::surface::Spectrum;
 use sealsim::validity::Limit;
@@ -56,6 +56,7 @@ fn oring_problem(material: Material) -> LifeProblem {
             squeeze: 0.2,
         },
         gland: None,
+        groove: GrooveInterface::None,
         energisation_factor: 0.0,
         loading: Loading::Displacement,
         environment: TemperatureHistory::constant(TREF),
