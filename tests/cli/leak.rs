@@ -201,25 +201,25 @@ fn psd_file_is_found_relative_to_the_scenario_not_the_working_directory() {
 
 #[test]
 fn warnings_are_aggregated_per_kind() {
-    // ΔP/P0 = 0.2 and 0.1… at the two lowest pressures: one line, with the worst and the count.
+    // ΔP/P0 = 0.8 and 0.67 at the two lowest pressures: one line, with the worst and the count.
     let path = scenario_path("persson-yang-2008.toml");
     cargo_bin_cmd!("sealsim")
         .args([
             "leak",
             path.to_str().unwrap(),
             "--pressures",
-            "0.05MPa,0.06MPa,1MPa",
+            "0.0125MPa,0.015MPa,1MPa",
         ])
         .assert()
         .success()
         .stderr(predicate::str::contains("warning: ΔP/P0 = ").count(1))
         .stderr(
             predicate::str::contains(
-                "ΔP/P0 = 0.2 is above 0.1, worst at P0 = 50000 Pa; first at P0 = 5.000e4 Pa",
+                "ΔP/P0 = 0.8 is above 0.5, worst at P0 = 12500 Pa; first at P0 = 1.250e4 Pa",
             )
             .not()
             .and(predicate::str::contains(
-                "ΔP/P0 = 0.2 is above 0.1, worst at P0 = 50000 Pa (2 evaluations)",
+                "ΔP/P0 = 0.8 is above 0.5, worst at P0 = 12500 Pa (2 evaluations)",
             )),
         );
 }

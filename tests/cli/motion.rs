@@ -182,8 +182,13 @@ fn stroke_cycle_leak_has_the_volumes_per_stroke() {
     let r = &rows[0];
     let (leak_rate, drag, film) = (num(&r[6]), num(&r[8]), num(&r[9]));
     let (out, back, net) = (num(&r[11]), num(&r[12]), num(&r[13]));
-    // L_y = π × 50 mm, S = 100 mm, v_out = v_in = 0.1 m/s (1 s per stroke)
-    let l_y = std::f64::consts::PI * 0.05;
+    // L_y = π D′ (the ring as installed on the rod), S = 100 mm, v_out = v_in = 0.1 m/s (1 s
+    // per stroke)
+    let l_y = sealsim::scenario::Scenario::load(&scenario_path("hydraulic-rod-seal.toml"))
+        .unwrap()
+        .life
+        .geometry
+        .sealing_length();
     let film_volume = l_y * film * 0.1;
     assert!(rel(drag, l_y * film * 0.1) < 1e-9);
     assert!(rel(out, leak_rate * 1.0 + film_volume) < 1e-9);

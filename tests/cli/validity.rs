@@ -44,7 +44,7 @@ fn cases() -> Vec<(&'static str, &'static str, String)> {
         (
             "pressure_ratio",
             "§9.1",
-            flat("0.1 MPa", "0.02 MPa", PAPER_SURFACE, ""),
+            flat("0.1 MPa", "0.06 MPa", PAPER_SURFACE, ""),
         ),
         (
             "aspect_ratio",
@@ -161,8 +161,17 @@ fn every_limit_fires_for_leak_and_for_run_on_the_same_scenario() {
 
 #[test]
 fn the_80c_oring_reports_its_worst_pressure_ratio_and_when() {
+    // the 80 °C O-ring at 20 bar: ΔP over the peak contact pressure (the ring's own, relaxing,
+    // plus the energisation ΔP) passes 0.5 once the ring has relaxed
     let dir = TempDir::new().unwrap();
-    let scenario = scenario_path("oring-nbr-water-80c.toml");
+    let text = fs::read_to_string(scenario_path("oring-nbr-water-80c.toml"))
+        .unwrap()
+        .replace(
+            "pressure_difference = \"2 bar\"",
+            "pressure_difference = \"20 bar\"",
+        );
+    let scenario = dir.path().join("s.toml");
+    fs::write(&scenario, text).unwrap();
     let stderr = stderr_of(
         &dir,
         &["run", scenario.to_str().unwrap(), "--summary", "s.json"],
@@ -176,7 +185,7 @@ fn the_80c_oring_reports_its_worst_pressure_ratio_and_when() {
         .find(|r| r["id"] == "pressure_ratio")
         .cloned()
         .unwrap();
-    // ΔP = 0.2 MPa against a peak pressure that relaxes with the rubber: first above 0.1 early,
+    // ΔP = 2 MPa against a peak pressure that relaxes with the rubber: first above 0.5 early,
     // worst at the end of the 30 years, when the force has relaxed most
     let worst = ratio["value"].as_f64().unwrap();
     let when = ratio["worst_time_s"].as_f64().unwrap();
@@ -184,12 +193,12 @@ fn the_80c_oring_reports_its_worst_pressure_ratio_and_when() {
     let duration = json["duration_s"].as_f64().unwrap();
     assert_eq!(when, duration, "{ratio}");
     assert!(first < 10.0, "{ratio}");
-    assert!(worst > 0.1 && worst < 1.0, "{ratio}");
+    assert!(worst > 0.5 && worst < 1.0, "{ratio}");
     // the worst ratio is ΔP over the final peak pressure (the history's last row)
     let line = line_of(&stderr, "§9.1").unwrap();
     assert!(line.contains("worst at t = 9.467e8 s (30 years)"), "{line}");
     assert!(
-        rel(worst, 2e5 / final_peak(&dir, &scenario)) < 1e-12,
+        rel(worst, 2e6 / final_peak(&dir, &scenario)) < 1e-12,
         "{worst}"
     );
 }
