@@ -17,6 +17,7 @@ mod engineering_units;
 mod figures;
 mod fit;
 mod gland;
+mod gland_pressure;
 mod leak;
 mod materials;
 mod motion;

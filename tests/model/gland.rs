@@ -452,3 +452,41 @@ fn the_as568_table_keeps_its_series_invariants() {
     }
     assert_eq!(as568::lookup("AS568-309").unwrap().id_in, 0.412);
 }
+
+#[test]
+fn two_interfaces_leak_in_parallel() {
+    // the shipped piston seal: honed bore ([surface]) and turned groove bottom ([groove_surface]);
+    // each interface sees the same contact, so Q̇(bore, groove) = (Q̇(bore, bore) + Q̇(groove,
+    // groove))/2 exactly, whatever the leak law
+    use sealsim::simulate::{GrooveInterface, Simulator};
+    let s = sealsim::scenario::Scenario::load(
+        &crate::common::scenarios_dir().join("oring-nbr-piston-hydraulic.toml"),
+    )
+    .unwrap();
+    let mut mixed = s.life.clone();
+    // a bore that leaks too (the shipped honed bore seals at installation): 0.8 µm rms, smoother
+    // than the 1.6 µm groove bottom
+    mixed.spectrum = sealsim::surface::Spectrum::self_affine(0.8e-6, 0.7, 3e5, 1e10, None).unwrap();
+    let GrooveInterface::Own(groove) = mixed.groove.clone() else {
+        panic!("the piston scenario has its own groove surface")
+    };
+    let mut bore_bore = mixed.clone();
+    bore_bore.groove = GrooveInterface::Counterface;
+    let mut groove_groove = mixed.clone();
+    groove_groove.spectrum = groove;
+    groove_groove.groove = GrooveInterface::Counterface;
+    let leak = |p: &sealsim::simulate::LifeProblem| {
+        let sim = Simulator::new(p);
+        sim.installed_leak(sim.installed_peak()).0
+    };
+    let (q_mixed, q_bb, q_gg) = (leak(&mixed), leak(&bore_bore), leak(&groove_groove));
+    assert!(q_bb > 0.0 && q_gg > q_bb, "{q_bb} {q_gg}");
+    assert!(
+        (q_mixed / (0.5 * (q_bb + q_gg)) - 1.0).abs() < 1e-12,
+        "{q_mixed} vs ({q_bb} + {q_gg})/2"
+    );
+    // a ring between plates keeps one interface: half of the same surface on both faces
+    let mut plates = bore_bore.clone();
+    plates.groove = GrooveInterface::None;
+    assert!((leak(&plates) / (0.5 * q_bb) - 1.0).abs() < 1e-12);
+}

@@ -4,7 +4,7 @@
 
 use sealsim::contact::{ContactSettings, Elastic};
 use sealsim::fluid::{Conduction, junction_conductance};
-use sealsim::interface::{HertzContact, InterfaceFlow, InterfaceSettings, hertz, uniform};
+use sealsim::interface::{self, HertzContact, InterfaceFlow, InterfaceSettings, hertz, uniform};
 use sealsim::leak::{ContactPath, Fidelity};
 use sealsim::surface::Spectrum;
 
@@ -157,5 +157,83 @@ fn study_hertz_steps_against_cost() {
                 }
             }
         }
+    }
+}
+
+#[test]
+fn energised_shooting_converges_and_rises_with_pressure() {
+    // k_e = 1: the contact pressure is p_max √(1 − (2x/b)²) + ΔP; the asperities at the inlet
+    // edge carry 0, nowhere is the contact open
+    let (path, e_star) = paper_path(Fidelity::Table);
+    let sigma = sigma_of(&path, e_star);
+    let (peak, width) = (0.5e6, 1e-3);
+    let flux = |dp: f64, steps: usize| {
+        let set = InterfaceSettings {
+            steps,
+            ..InterfaceSettings::default()
+        };
+        let contact = HertzContact {
+            peak,
+            offset: dp,
+            width,
+        };
+        match hertz(&sigma, contact, dp, &set, None).flow {
+            InterfaceFlow::Conducting(Conduction::Series { resistance }) => dp / resistance,
+            other => panic!("ΔP = {dp}: {other:?}"),
+        }
+    };
+    let mut last = 0.0;
+    for dp in [1e3, 1e4, 1e5, 2e5, 4e5] {
+        let (q, q2) = (flux(dp, 3200), flux(dp, 6400));
+        assert!((q2 / q - 1.0).abs() < 1e-9, "ΔP = {dp}: {q} vs {q2}");
+        assert!(q > last, "ΔP = {dp}");
+        last = q;
+    }
+    // energised, it never lifts off; at ΔP = 8 p_max the outlet edge alone carries k_e ΔP = 4 MPa,
+    // above the surface's sealing pressure: the interface seals (the energisation wins)
+    let contact = HertzContact {
+        peak,
+        offset: 4e6,
+        width,
+    };
+    let set = InterfaceSettings::default();
+    assert_eq!(
+        hertz(&sigma, contact, 4e6, &set, None).flow,
+        InterfaceFlow::Sealed
+    );
+    assert!(sigma(4e6) == 0.0 && sigma(peak) > 0.0);
+}
+
+#[test]
+fn the_memo_interpolates_the_direct_solutions() {
+    // the life loop's memo (nodes 1/512 apart in ln p_max) against direct solves, with and without
+    // energisation, over a sweep of peaks that are not nodes
+    use sealsim::interface::{HertzMemo, MEMO_SPACING};
+    let (path, e_star) = paper_path(Fidelity::Table);
+    let viscosity = 2e-3;
+    let sigma = |e: f64| sigma_of(&path, e_star)(e) * ETA / viscosity;
+    let set = InterfaceSettings {
+        steps: 128,
+        ..InterfaceSettings::default()
+    };
+    let dp = 5e4;
+    for k_e in [0.0, 1.0] {
+        let memo = HertzMemo::new(MEMO_SPACING);
+        let mut worst: f64 = 0.0;
+        for i in 0..40 {
+            let contact = HertzContact {
+                peak: 0.2e6 * (1.0 + 0.0371 * i as f64),
+                offset: k_e * dp,
+                width: 1.3e-3,
+            };
+            let resistance = |s: interface::HertzSolution| match s.flow {
+                InterfaceFlow::Conducting(Conduction::Series { resistance }) => resistance,
+                other => panic!("{other:?}"),
+            };
+            let direct = resistance(hertz(&sigma, contact, dp, &set, None));
+            let memoised = resistance(memo.solve(&sigma, contact, viscosity, dp, &set));
+            worst = worst.max((memoised / direct - 1.0).abs());
+        }
+        assert!(worst < 1e-7, "k_e = {k_e}: {worst:e}");
     }
 }
