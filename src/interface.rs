@@ -158,6 +158,14 @@ pub fn hertz(
     if sigma(peak + offset - dp) <= 0.0 {
         return unsolved(InterfaceFlow::Sealed);
     }
+    // the outlet edge: an energised profile ends on a step from k_e ΔP to 0; across it the fluid
+    // pressure can fall without resistance down to where the asperities seal (as the uniform
+    // contact's separable solution does), so the outlet condition is p_f = max(0, k_e ΔP − e_s)
+    let outlet = if offset > 0.0 && sigma(offset) <= 0.0 {
+        offset - sealing_pressure(sigma, peak + offset - dp, offset)
+    } else {
+        0.0
+    };
     // x = (b/2) sin θ; the contact is open (p_c ≤ ΔP) for θ < θ_a
     let theta_a = -((dp - offset) / peak).clamp(0.0, 1.0).acos();
     let shot = Shot {
@@ -166,32 +174,63 @@ pub fn hertz(
         offset,
         half_width: 0.5 * width,
         dp,
+        outlet,
         theta_a,
-        // even: the no-fluid-pressure resistance uses Simpson's rule on the same steps
+        // even: the reference resistances use Simpson's rule on the same steps
         steps: settings.steps.max(8).next_multiple_of(2),
     };
-    let r0 = shot.zero_pressure_resistance();
-    if !(r0.is_finite() && r0 > 0.0) {
-        return unsolved(InterfaceFlow::Sealed);
-    }
+    // the no-fluid-pressure resistance R0 (the ΔP → 0 limit), or — where the dry contact seals
+    // (an outlet step above e_s) — the resistance with the whole ΔP relieving every strip, a
+    // lower bound: the flux's reference and the start of the iteration
+    let r0 = shot.reference_resistance(0.0);
     if dp <= 0.0 {
-        return HertzSolution {
-            flow: InterfaceFlow::Conducting(Conduction::Series { resistance: r0 }),
-            centre_fluid_pressure: 0.0,
-            flux_ratio: Some(1.0),
+        return if r0.is_finite() && r0 > 0.0 {
+            HertzSolution {
+                flow: InterfaceFlow::Conducting(Conduction::Series { resistance: r0 }),
+                centre_fluid_pressure: 0.0,
+                flux_ratio: Some(1.0),
+            }
+        } else {
+            unsolved(InterfaceFlow::Sealed)
         };
     }
+    let reference = if r0.is_finite() {
+        r0
+    } else {
+        shot.reference_resistance(dp)
+    };
+    if !(reference.is_finite() && reference > 0.0) {
+        return unsolved(InterfaceFlow::Sealed);
+    }
     match shot
-        .flux(r0, start, settings.tolerance)
+        .flux(reference, start, settings.tolerance)
         .filter(|q| *q > 0.0 && q.is_finite())
     {
         Some(q) => HertzSolution {
             flow: InterfaceFlow::Conducting(Conduction::Series { resistance: dp / q }),
             centre_fluid_pressure: shot.centre_pressure(q),
-            flux_ratio: Some(q * r0 / dp),
+            flux_ratio: Some(q * reference / (dp - outlet)),
         },
         None => unsolved(InterfaceFlow::Sealed),
     }
+}
+
+/// The asperity pressure at which `sigma` stops conducting, between `conducting` (σ > 0) and
+/// `sealed` (σ = 0) \[Pa\]: bisection to 1e-13 relative (σ decreases with e).
+fn sealing_pressure(sigma: &dyn Fn(f64) -> f64, conducting: f64, sealed: f64) -> f64 {
+    let (mut lo, mut hi) = (conducting, sealed);
+    while hi - lo > 1e-13 * hi {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if sigma(mid) > 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    hi
 }
 
 /// Hertz solutions of one run, interpolated in the peak pressure.
@@ -300,6 +339,9 @@ struct Shot<'a> {
     offset: f64,
     half_width: f64,
     dp: f64,
+    /// The fluid pressure the integration must reach at the outlet (0, or the pressure above
+    /// which an energised profile's outlet step lets the fluid out).
+    outlet: f64,
     theta_a: f64,
     steps: usize,
 }
@@ -369,15 +411,16 @@ impl Shot<'_> {
         self.pressure_at(q, t_centre).max(0.0)
     }
 
-    /// `R0 = ∫ dx/σ(p_c(x))` over the part of the width beyond θ_a (no fluid pressure in the
-    /// contact), by the same rule: the ΔP → 0 resistance and the first guess `q ≈ ΔP/R0`.
-    fn zero_pressure_resistance(&self) -> f64 {
+    /// `∫ dx/σ(p_c(x) − relief)` over the part of the width beyond θ_a, by Simpson's rule on
+    /// the same steps: with `relief` = 0 the no-fluid-pressure resistance R0 (the ΔP → 0
+    /// resistance), with ΔP a lower bound of the resistance.
+    fn reference_resistance(&self, relief: f64) -> f64 {
         let h = 1.0 / self.steps as f64;
         // Simpson on the stretched variable (the integrand vanishes at t = 0 with dθ/dt)
         let f = |t: f64| {
             let (theta, dtheta) = self.angle(t);
             let c = theta.cos().max(0.0);
-            self.resistivity(self.offset + self.peak * c) * self.half_width * c * dtheta
+            self.resistivity(self.offset + self.peak * c - relief) * self.half_width * c * dtheta
         };
         let mut total = f(0.0) + f(1.0);
         for k in 1..self.steps {
@@ -386,24 +429,26 @@ impl Shot<'_> {
         total * h / 3.0
     }
 
-    /// The flux with p_f(outlet) = 0, to relative `tolerance` in q.
+    /// The flux with p_f(outlet) = the outlet condition P_out (0 unless an energised outlet step),
+    /// to relative `tolerance` in q.
     ///
-    /// The unknown is x = ln q and the function `g(x) = ln(ΔP − p_f(outlet)) − ln ΔP`, the log
-    /// of the pressure drop the flux q needs over ΔP: increasing in x, with slope 1 where the
+    /// The unknown is x = ln q and the function `g(x) = ln(ΔP − p_f(outlet)) − ln(ΔP − P_out)`,
+    /// the log of the pressure drop the flux q needs over the one available: increasing in x, with slope 1 where the
     /// fluid pressure hardly changes the asperity pressure (drop ≈ q R0), steeper as it does, and
     /// +∞ beyond the flux at which a strip seals. The root is found by secant steps, the first
     /// with slope 1, kept inside the bracket the signs of g establish (bisection when a step
     /// leaves it or g is infinite): from a nearby state's κ (`start`) two or three evaluations.
-    fn flux(&self, r0: f64, start: Option<f64>, tolerance: f64) -> Option<f64> {
+    fn flux(&self, reference: f64, start: Option<f64>, tolerance: f64) -> Option<f64> {
+        let available = self.dp - self.outlet;
         let g = |x: f64| {
             let drop = self.dp - self.outlet_pressure(x.exp());
             if drop.is_nan() {
                 f64::INFINITY
             } else {
-                (drop / self.dp).ln()
+                (drop / available).ln()
             }
         };
-        let x0 = (self.dp / r0).ln() + start.unwrap_or(1.0).max(1.0).ln();
+        let x0 = (available / reference).ln() + start.unwrap_or(1.0).ln();
         Self::bracketed_secant(&g, x0, tolerance).map(f64::exp)
     }
 

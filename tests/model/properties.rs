@@ -5,7 +5,7 @@
 use proptest::prelude::*;
 use sealsim::contact::{ContactSettings, Elastic, Junction};
 use sealsim::fluid::Fluid;
-use sealsim::leak::{Fidelity, FlatSeal, LeakPoint, StaticProblem, StaticSolver};
+use sealsim::leak::{Fidelity, FlatSeal, LeakPoint, SealState, StaticProblem, StaticSolver};
 use sealsim::surface::Spectrum;
 
 #[derive(Debug, Clone, Copy)]
@@ -81,7 +81,13 @@ fn check_point(pt: &LeakPoint) -> Result<(), TestCaseError> {
             );
             prop_assert!(pt.leak_rate > 0.0 || j.u_c < 1e-100);
         }
-        Junction::Sealed => prop_assert_eq!(pt.leak_rate, 0.0),
+        // sealed where the asperities carry most (the outlet, P0): the fluid pressure relieves
+        // the rest of the width, and the flow leaves across the contact's outlet edge (docs/model.md
+        // §3.6) — a leak only in the leaking state
+        Junction::Sealed => prop_assert!(
+            pt.leak_rate == 0.0 || pt.state == SealState::Leaking,
+            "{pt:?}"
+        ),
     }
     Ok(())
 }
