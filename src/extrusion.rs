@@ -30,7 +30,7 @@ pub const CHART: [(f64, [f64; 5]); 2] = [
     (90.0, [0.028, 0.024, 0.020, 0.016, 0.010]),
 ];
 
-const PSI: f64 = 6894.757_293_168_361;
+const PSI: f64 = 6_894.757_293_168_361;
 const INCH: f64 = 0.0254;
 
 /// What the chart allows at one pressure and hardness.
