@@ -61,6 +61,9 @@ pub struct Gland {
     /// The gap the ring is pushed against on its low-pressure side \[m\]: half the diametral
     /// clearance of a piston or rod gland, the flange separation of a face gland.
     pub extrusion_gap: f64,
+    /// Lowest and highest squeeze over the ring's and the groove's tolerances (reported; the
+    /// run uses the nominal squeeze).
+    pub squeeze_range: Option<(f64, f64)>,
 }
 
 /// Gland fill above which a warning is given, at maximum material condition: 0.90 (Parker,
@@ -209,9 +212,11 @@ pub struct GlandDesign {
 impl GlandDesign {
     /// The gland as the life model sees it.
     pub fn gland(&self) -> Gland {
+        let squeeze_range = self.squeeze_range().ok().map(|r| (r.min, r.max));
         Gland {
             kind: self.kind,
             extrusion_gap: self.extrusion_gap,
+            squeeze_range,
         }
     }
 

@@ -10,6 +10,7 @@ use super::ReportError;
 use super::csv::{csv_error, finish, number};
 use super::plot::{LogLogChart, Series};
 use crate::dynamic::{Motion, MotionPoint, MotionSpec, StrokeCycle};
+use crate::gland::GlandKind;
 use crate::material::shift::{DAY, YEAR};
 use crate::material::{Material, Status};
 use crate::report::findings::{FindingRecord, records};
@@ -141,7 +142,7 @@ pub struct Summary {
     pub fidelity: String,
     /// Time to failure \[s\]; `null` when the seal survives the whole run.
     pub time_to_failure_s: Option<f64>,
-    /// `leak_rate`, `leaked_volume`, `retained_force`, `lift_off` or `none`.
+    /// `leak_rate`, `leaked_volume`, `retained_force`, `lift_off`, `extrusion` or `none`.
     pub failure_mode: String,
     /// Leak rate right after installation (t = 0) \[m³/s\].
     pub initial_leak_rate_m3_per_s: f64,
@@ -166,6 +167,28 @@ pub struct Summary {
     /// `[motion]` (absent from the JSON for a static seal).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub motion: Option<MotionSummary>,
+    /// A groove-seated O-ring's gland (absent otherwise).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub gland: Option<GlandSummary>,
+}
+
+/// The `gland` object of the summary.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct GlandSummary {
+    /// `face`, `piston` or `rod`.
+    pub kind: String,
+    /// The squeeze the run uses (nominal).
+    pub squeeze: f64,
+    /// Lowest squeeze over the ring's and the groove's tolerances.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub squeeze_min: Option<f64>,
+    /// Highest squeeze over the tolerances.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub squeeze_max: Option<f64>,
+    /// k_e.
+    pub energisation_factor: f64,
+    /// The extrusion gap \[m\].
+    pub extrusion_gap_m: f64,
 }
 
 /// The `motion` object of the summary: the drag of the sliding countersurface at the peak
@@ -354,6 +377,17 @@ impl Summary {
                 .motion
                 .as_ref()
                 .and_then(|spec| MotionSummary::new(spec, result)),
+            gland: problem.gland.as_ref().map(|g| GlandSummary {
+                kind: gland_name(g.kind).to_owned(),
+                squeeze: match problem.geometry {
+                    SealGeometry::ORing { squeeze, .. } => squeeze,
+                    SealGeometry::Flat { .. } => 0.0,
+                },
+                squeeze_min: g.squeeze_range.map(|r| r.0),
+                squeeze_max: g.squeeze_range.map(|r| r.1),
+                energisation_factor: problem.energisation_factor,
+                extrusion_gap_m: g.extrusion_gap,
+            }),
         }
     }
 
@@ -653,6 +687,24 @@ fn seal_description(problem: &LifeProblem) -> String {
         AsperityModulus::Follow => "follow (the bulk's relaxation)".to_owned(),
         AsperityModulus::Fixed(e) => format!("{} MPa", human(e / 1e6, 4)),
     };
+    let gland = match &problem.gland {
+        Some(g) => {
+            let range = g.squeeze_range.map_or(String::new(), |(lo, hi)| {
+                format!(
+                    " (squeeze {}–{} % over the tolerances)",
+                    human(lo * 100.0, 3),
+                    human(hi * 100.0, 3)
+                )
+            });
+            format!(
+                ", {} gland{range}, extrusion gap {} mm, energisation k_e = {}",
+                gland_name(g.kind),
+                human(g.extrusion_gap * 1e3, 3),
+                human(problem.energisation_factor, 3)
+            )
+        }
+        None => String::new(),
+    };
     let thermal = match problem.thermal_strain {
         Some(th) => format!(
             ", housing expansion {} 1/K from {}",
@@ -662,9 +714,18 @@ fn seal_description(problem: &LifeProblem) -> String {
         None => String::new(),
     };
     format!(
-        "{geometry}, {} loading, asperity modulus {asperity}{thermal}",
+        "{geometry}{gland}, {} loading, asperity modulus {asperity}{thermal}",
         loading_name(problem.loading)
     )
+}
+
+/// `face`, `piston` or `rod`.
+fn gland_name(kind: GlandKind) -> &'static str {
+    match kind {
+        GlandKind::Face => "face",
+        GlandKind::Piston => "piston",
+        GlandKind::Rod => "rod",
+    }
 }
 
 /// Log–log chart of leak rate against time for one or more runs (zero rates and t = 0 are

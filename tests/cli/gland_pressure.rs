@@ -51,6 +51,20 @@ fn cell<'a>(row: &'a [(String, String)], column: &str) -> &'a str {
 fn the_energised_100_bar_face_seal_holds_and_lifts_off_without_energisation() {
     let (summary, first, _) = run_day(&[]);
     assert_eq!(summary["failure_mode"], "none", "{summary}");
+    // the gland as reported: nominal squeeze inside its tolerance range, k_e, the gap
+    let g = &summary["gland"];
+    assert_eq!(g["kind"], "face");
+    let (lo, nominal, hi) = (
+        g["squeeze_min"].as_f64().unwrap(),
+        g["squeeze"].as_f64().unwrap(),
+        g["squeeze_max"].as_f64().unwrap(),
+    );
+    assert!(
+        lo < nominal && nominal < hi && (nominal - 0.22).abs() < 0.01,
+        "{g}"
+    );
+    assert_eq!(g["energisation_factor"].as_f64(), Some(1.0));
+    assert!((g["extrusion_gap_m"].as_f64().unwrap() - 3e-5).abs() < 1e-12);
     // the peak contact pressure is the ring's own plus ΔP: above the fluid pressure
     let peak: f64 = cell(&first, "peak_pressure_Pa").parse().unwrap();
     assert!(peak > 1e7, "{peak}");
