@@ -20,10 +20,14 @@ const MAX_SWEEP_POINTS: i64 = 1_000_000;
 #[command(
     after_help = "Pressures take units (\"0.2 MPa\", \"2bar\", \"30psi\"); bare numbers are Pa.\n\
     Output columns: nominal_pressure_Pa, zeta_c, lambda_c_m, u_c_m, ubar_c_m, hrms_c_m, \
-    leak_rate_m3_per_s, state (leaking|sealed); lambda_c = 2π/(zeta_c q0).\n\
-    An O-ring scenario is evaluated in the state `sealsim run` starts from (its installed Hertz \
-    profile through 16 strips in series); a pressure is the peak of that profile, and the \
-    junction columns are the peak strip's.\n\
+    leak_rate_m3_per_s, state (leaking|sealed|lift_off); lambda_c = 2π/(zeta_c q0). The fluid \
+    pressure inside the interface relieves the asperities (docs/model.md §3.6); a flat seal lifts \
+    off when ΔP reaches its nominal pressure.\n\
+    An O-ring scenario is evaluated in the state `sealsim run` starts from: its installed Hertz \
+    profile plus the energisation k_e ΔP of a groove-seated ring, with the fluid pressure inside \
+    the interface, along the counterface and, in a gland, the groove bottom in parallel; a \
+    pressure is the peak contact pressure (with k_e ΔP), and the junction columns are the \
+    counterface's at that peak less the fluid pressure there.\n\
     With --fidelity effective-medium, u_c_m is the effective gap (12 η σ_eff)^(1/3) and the other \
     junction columns are the critical junction's at the same pressure; with rule-of-thumb, \
     u_c_m = ubar_c_m = hrms_c_m (the level computes no separation).\n\
@@ -139,7 +143,32 @@ pub fn run(args: LeakArgs) -> Result<(), CliError> {
     };
     print_scenario_warnings(None, &scenario);
     print_findings(None, &outcome.findings);
+    if let Some(note) = oring_state_note(&scenario) {
+        eprintln!("note: {note}");
+    }
     write_output(args.output.as_deref(), csv.as_bytes())
+}
+
+/// Which state `leak` evaluates for an O-ring (issue: say it in the output, not only the help).
+fn oring_state_note(scenario: &Scenario) -> Option<String> {
+    use crate::seal::SealGeometry;
+    use crate::simulate::GrooveInterface;
+    let life = &scenario.life;
+    if !matches!(life.geometry, SealGeometry::ORing { .. }) {
+        return None;
+    }
+    let interfaces = match life.groove {
+        GrooveInterface::None => "one interface (a ring between plates)",
+        GrooveInterface::Counterface => {
+            "counterface and groove bottom (the same surface) in parallel"
+        }
+        GrooveInterface::Own(_) => "counterface and groove bottom ([groove_surface]) in parallel",
+    };
+    Some(format!(
+        "O-ring: the installed state `sealsim run` starts from; pressures are the peak contact \
+         pressure including k_e ΔP = {} Pa; {interfaces}",
+        units::human(life.energisation_factor * life.fluid.pressure_difference, 4)
+    ))
 }
 
 #[cfg(test)]

@@ -252,8 +252,9 @@ fn a_uniform_step_and_its_separable_solution_agree() {
 
 #[test]
 fn the_memo_interpolates_the_direct_solutions() {
-    // the life loop's memo (nodes 1/512 apart in ln p_max) against direct solves, with and without
-    // energisation, over a sweep of peaks that are not nodes
+    // the life loop's memo (nodes 1/128 apart in ln p_max) against direct solves, with and without
+    // energisation, over a sweep of peaks that are not nodes: below the 128-step shooting's own
+    // error (8.4e-7)
     use sealsim::interface::{HertzMemo, MEMO_SPACING};
     let (path, e_star) = paper_path(Fidelity::Table);
     let viscosity = 2e-3;
@@ -280,6 +281,7 @@ fn the_memo_interpolates_the_direct_solutions() {
             let memoised = resistance(memo.solve(&sigma, contact, viscosity, dp, &set));
             worst = worst.max((memoised / direct - 1.0).abs());
         }
-        assert!(worst < 1e-7, "k_e = {k_e}: {worst:e}");
+        assert!(worst < 1e-6, "k_e = {k_e}: {worst:e}");
+        eprintln!("memo vs direct, k_e = {k_e}: {worst:e}");
     }
 }
