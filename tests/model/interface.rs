@@ -71,26 +71,35 @@ fn uniform_pressure_equals_the_integral_of_the_local_conductance() {
     assert_eq!(uniform(&sigma, p0, p0, &set), InterfaceFlow::LiftOff);
 }
 
+/// The flux q = ΔP/R [m²/s] of the Hertz solution at `steps` RK4 steps (panics unless it
+/// conducts).
+fn hertz_flux(
+    sigma: &dyn Fn(f64) -> f64,
+    (peak, offset, width): (f64, f64, f64),
+    dp: f64,
+    steps: usize,
+) -> f64 {
+    let set = InterfaceSettings {
+        steps,
+        ..InterfaceSettings::default()
+    };
+    let contact = HertzContact {
+        peak,
+        offset,
+        width,
+    };
+    match hertz(sigma, contact, dp, &set, None).flow {
+        InterfaceFlow::Conducting(Conduction::Series { resistance }) => dp / resistance,
+        other => panic!("ΔP = {dp}: {other:?}"),
+    }
+}
+
 #[test]
 fn hertz_shooting_with_the_contact_table_converges_and_rises_with_pressure() {
     let (path, e_star) = paper_path(Fidelity::Table);
     let sigma = sigma_of(&path, e_star);
     let (peak, width) = (0.5e6, 1e-3);
-    let flux = |dp: f64, steps: usize| {
-        let set = InterfaceSettings {
-            steps,
-            ..InterfaceSettings::default()
-        };
-        let contact = HertzContact {
-            peak,
-            offset: 0.0,
-            width,
-        };
-        match hertz(&sigma, contact, dp, &set, None).flow {
-            InterfaceFlow::Conducting(Conduction::Series { resistance }) => dp / resistance,
-            other => panic!("ΔP = {dp}: {other:?}"),
-        }
-    };
+    let flux = |dp: f64, steps: usize| hertz_flux(&sigma, (peak, 0.0, width), dp, steps);
     let mut last = 0.0;
     for dp in [1e2, 1e3, 1e4, 5e4, 1e5, 2e5, 4e5] {
         let (q, q2) = (flux(dp, 3200), flux(dp, 6400));
@@ -167,21 +176,7 @@ fn energised_shooting_converges_and_rises_with_pressure() {
     let (path, e_star) = paper_path(Fidelity::Table);
     let sigma = sigma_of(&path, e_star);
     let (peak, width) = (0.5e6, 1e-3);
-    let flux = |dp: f64, steps: usize| {
-        let set = InterfaceSettings {
-            steps,
-            ..InterfaceSettings::default()
-        };
-        let contact = HertzContact {
-            peak,
-            offset: dp,
-            width,
-        };
-        match hertz(&sigma, contact, dp, &set, None).flow {
-            InterfaceFlow::Conducting(Conduction::Series { resistance }) => dp / resistance,
-            other => panic!("ΔP = {dp}: {other:?}"),
-        }
-    };
+    let flux = |dp: f64, steps: usize| hertz_flux(&sigma, (peak, dp, width), dp, steps);
     let mut last = 0.0;
     for dp in [1e3, 1e4, 1e5, 2e5, 4e5] {
         let (q, q2) = (flux(dp, 3200), flux(dp, 6400));
@@ -194,21 +189,7 @@ fn energised_shooting_converges_and_rises_with_pressure() {
     // which the fluid pressure falls from k_e ΔP − e_s to 0 without resistance (as the uniform
     // contact's separable solution does) — the interface conducts, converged under refinement
     assert!(sigma(4e6) == 0.0 && sigma(peak) > 0.0);
-    let at = |steps: usize| {
-        let set = InterfaceSettings {
-            steps,
-            ..InterfaceSettings::default()
-        };
-        let contact = HertzContact {
-            peak,
-            offset: 4e6,
-            width,
-        };
-        match hertz(&sigma, contact, 4e6, &set, None).flow {
-            InterfaceFlow::Conducting(Conduction::Series { resistance }) => 4e6 / resistance,
-            other => panic!("{other:?}"),
-        }
-    };
+    let at = |steps: usize| hertz_flux(&sigma, (peak, 4e6, width), 4e6, steps);
     let (q, q2) = (at(3200), at(6400));
     assert!(q > 0.0 && (q2 / q - 1.0).abs() < 1e-8, "{q} vs {q2}");
 }
@@ -230,19 +211,7 @@ fn a_uniform_step_and_its_separable_solution_agree() {
             }
             other => panic!("{other:?}"),
         };
-        let set = InterfaceSettings {
-            steps: 6400,
-            ..InterfaceSettings::default()
-        };
-        let contact = HertzContact {
-            peak: 1e-10 * offset,
-            offset,
-            width,
-        };
-        let hertz_flux = match hertz(&sigma, contact, dp, &set, None).flow {
-            InterfaceFlow::Conducting(Conduction::Series { resistance }) => dp / resistance,
-            other => panic!("{other:?}"),
-        };
+        let hertz_flux = hertz_flux(&sigma, (1e-10 * offset, offset, width), dp, 6400);
         assert!(
             (hertz_flux / uniform_flux - 1.0).abs() < 1e-5,
             "k_e ΔP = {offset}: {hertz_flux} vs {uniform_flux}"
