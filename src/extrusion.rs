@@ -40,9 +40,17 @@ pub struct ExtrusionLimit {
     pub diametral_clearance: f64,
     /// The pressure is above the chart's last band (3000 psi): its last band was used.
     pub beyond_pressure: bool,
-    /// The hardness is outside 70–90 Shore A: the nearest row was used.
+    /// The hardness is outside 70–90 Shore A by more than [`HARDNESS_RESOLUTION`]: the nearest
+    /// row was used.
     pub beyond_hardness: bool,
+    /// The hardness the limit is for \[Shore A\].
+    pub hardness: f64,
 }
+
+/// Shore A points within which a hardness counts as on the chart's 70 or 90 row: the reading of
+/// a durometer resolves about 1 point and a compound's grade is specified ± 5; 2 points keeps a
+/// nominal 70 Shore A compound (69.97 here) on its row without hiding a softened one.
+pub const HARDNESS_RESOLUTION: f64 = 2.0;
 
 /// The chart's limit at pressure difference `pressure` \[Pa\] and hardness `shore_a`.
 pub fn limit(pressure: f64, shore_a: f64) -> ExtrusionLimit {
@@ -57,7 +65,9 @@ pub fn limit(pressure: f64, shore_a: f64) -> ExtrusionLimit {
     ExtrusionLimit {
         diametral_clearance: inches * INCH,
         beyond_pressure: psi > BAND_ENDS_PSI[BAND_ENDS_PSI.len() - 1],
-        beyond_hardness: !(soft.0..=hard.0).contains(&shore_a),
+        beyond_hardness: !(soft.0 - HARDNESS_RESOLUTION..=hard.0 + HARDNESS_RESOLUTION)
+            .contains(&shore_a),
+        hardness: shore_a,
     }
 }
 
@@ -98,9 +108,10 @@ mod tests {
         let l = limit(1000.0 * PSI, 80.0);
         assert!((l.diametral_clearance / 0.0254 - 0.017).abs() < 1e-12);
         assert!(limit(1000.0 * PSI, 70.0).diametral_clearance < 0.016 * 0.0254);
-        // outside the chart: flagged, nearest row/band
+        // outside the chart: flagged, nearest row/band; within 2 points of a row: on it
         let l = limit(400e5, 60.0);
         assert!(l.beyond_pressure && l.beyond_hardness);
+        assert!(!limit(100e5, 68.5).beyond_hardness && limit(100e5, 67.9).beyond_hardness);
         assert!((l.diametral_clearance - 0.002 * 0.0254).abs() < 1e-15);
         // monotone: more pressure, less clearance; harder, more clearance
         let mut last = f64::INFINITY;

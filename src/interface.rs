@@ -85,6 +85,26 @@ pub fn uniform(
     }
 }
 
+/// The uniform contact at the onset of lift-off, as the conduction the leak law takes at the
+/// actual ΔP \[Pa\]: the flux with the fluid pressure in the interface at its largest, P0,
+/// `q L_x = ∫_0^{P0} σ(e) de`, so `σ_eff = (1/ΔP) ∫_0^{P0} σ(e) de`. Once lifted off the seal is
+/// open and its leak is not the interface's any more: this is the last value the model gives, a
+/// lower bound (docs/model.md §3.6).
+pub fn uniform_onset(
+    sigma: &dyn Fn(f64) -> f64,
+    contact_pressure: f64,
+    pressure_difference: f64,
+    settings: &InterfaceSettings,
+) -> Conduction {
+    let p0 = contact_pressure;
+    // ∫_0^{P0}: the integrand σ(e)·e of the log rule vanishes as e → 0; start 1e-12 P0 below
+    let floor = 1e-12 * p0;
+    let integral = mean_over(sigma, floor, p0, settings) * (p0 - floor);
+    Conduction::Uniform {
+        conductance: integral / pressure_difference,
+    }
+}
+
 /// `(1/(b − a)) ∫_a^b σ(e) de` for 0 < a < b, composite Gauss–Legendre in ln e (the integrand
 /// σ(e)·e is smooth in ln e down to e → 0, where σ grows like ln³(1/e)).
 fn mean_over(sigma: &dyn Fn(f64) -> f64, a: f64, b: f64, settings: &InterfaceSettings) -> f64 {

@@ -4,7 +4,7 @@ use crate::contact::{
     ContactSettings, ContactTable, CriticalJunction, EffectiveMediumSettings, EffectiveMediumTable,
     Elastic, Junction, PerssonContact, TableSettings,
 };
-use crate::fluid::{Conduction, FlowGeometry, Fluid, junction_conductance};
+use crate::fluid::{FlowGeometry, Fluid, junction_conductance};
 use crate::interface::{self, InterfaceFlow, InterfaceSettings};
 use crate::numerical::HeightMap;
 use crate::numerical::reference::NumericalSettings;
@@ -139,8 +139,8 @@ pub enum SealState {
     /// No channel percolates (somewhere across the width).
     Sealed,
     /// The fluid pressure reaches the contact pressure across the whole width: the seal opens
-    /// (docs/model.md §3.6). The leak rate shown is the strips in series without the fluid
-    /// pressure, a number that no longer applies.
+    /// (docs/model.md §3.6). The leak rate shown is the model's at the onset of lift-off, a
+    /// lower bound: an open seal's leak is not the interface's.
     LiftOff,
 }
 
@@ -420,8 +420,9 @@ impl StaticSolver {
     /// The junction and leak rate at nominal pressure `p0` \[Pa\] (> 0) with the fluid pressure
     /// inside the interface (docs/model.md §3.6): `Q̇ = (L_y/L_x) σ_eff ΔP`
     /// ([`Fluid::leak_rate`]), `σ_eff = (1/ΔP) ∫_{P0−ΔP}^{P0} σ(e) de` with σ the path's
-    /// [`ContactPath::conductance`] ([`interface::uniform`]); lift-off when ΔP ≥ P0. The
-    /// junction is the outlet's (asperity pressure P0), where the asperities carry most.
+    /// [`ContactPath::conductance`] ([`interface::uniform`]); lift-off when ΔP ≥ P0, with the
+    /// leak at its onset ([`interface::uniform_onset`], a lower bound). The junction is the
+    /// outlet's (asperity pressure P0), where the asperities carry most.
     pub fn evaluate(&self, p0: f64) -> LeakPoint {
         let pb = &self.problem;
         let e_star = pb.material.effective_modulus();
@@ -429,10 +430,6 @@ impl StaticSolver {
         let sigma = |e: f64| {
             self.path
                 .conductance(e / e_star, pb.shape_factor, pb.fluid.viscosity)
-        };
-        let law = |conductance| {
-            pb.fluid
-                .leak_rate(pb.seal.geometry(), Conduction::Uniform { conductance })
         };
         let (leak_rate, state) = match interface::uniform(
             &sigma,
@@ -445,7 +442,18 @@ impl StaticSolver {
                 SealState::Leaking,
             ),
             InterfaceFlow::Sealed => (0.0, SealState::Sealed),
-            InterfaceFlow::LiftOff => (law(sigma(p0)), SealState::LiftOff),
+            InterfaceFlow::LiftOff => (
+                pb.fluid.leak_rate(
+                    pb.seal.geometry(),
+                    interface::uniform_onset(
+                        &sigma,
+                        p0,
+                        pb.fluid.pressure_difference,
+                        &InterfaceSettings::default(),
+                    ),
+                ),
+                SealState::LiftOff,
+            ),
         };
         LeakPoint {
             nominal_pressure: p0,
@@ -462,7 +470,12 @@ impl StaticSolver {
             &ContactState {
                 nominal_pressure: point.nominal_pressure,
                 pressure_difference: self.problem.fluid.pressure_difference,
-                junction: &point.junction,
+                // lifted off, the contact is open: only the pressure ratio applies
+                junction: if point.state == SealState::LiftOff {
+                    &Junction::Sealed
+                } else {
+                    &point.junction
+                },
                 cutoff: sp.q1() / sp.q0(),
             },
             At::Pressure(point.nominal_pressure),

@@ -210,8 +210,8 @@ impl Limit {
                  hardness (above 1: the ring extrudes)"
             }
             Limit::ExtrusionChart => {
-                "outside the extrusion chart (70–90 Shore A, up to 3000 psi): its nearest row or \
-                 band was used"
+                "outside the extrusion chart (70–90 Shore A ± 2, up to 3000 psi): its nearest row \
+                 or band was used"
             }
         }
     }
@@ -505,14 +505,16 @@ pub fn extrusion(ratio: f64, limit: &crate::extrusion::ExtrusionLimit, at: At, o
     );
     if limit.beyond_pressure || limit.beyond_hardness {
         let mut f = Finding::new(Limit::ExtrusionChart, 0.0, 0.0, at);
-        f.detail = Some(
-            match (limit.beyond_pressure, limit.beyond_hardness) {
-                (true, true) => "pressure above 3000 psi and hardness outside 70–90 Shore A",
-                (true, false) => "pressure above 3000 psi",
-                _ => "hardness outside 70–90 Shore A",
-            }
-            .to_owned(),
+        let hardness = format!(
+            "hardness {} Shore A, the {} row used",
+            human(limit.hardness, 3),
+            if limit.hardness < 80.0 { "70" } else { "90" }
         );
+        f.detail = Some(match (limit.beyond_pressure, limit.beyond_hardness) {
+            (true, true) => format!("pressure above 3000 psi, its last band used; {hardness}"),
+            (true, false) => "pressure above 3000 psi, its last band used".to_owned(),
+            _ => hardness,
+        });
         out.record(f);
     }
 }

@@ -26,8 +26,9 @@ use serde::Serialize;
 ///   a_T = ∞) or a_T overflows a double;
 /// * `u_c_m`, the critical constriction at the peak pressure, is blank where that strip is
 ///   sealed (no percolating channel);
-/// * `state` is `leaking`, `sealed` or `lift_off` (the peak contact pressure is below ΔP:
-///   the seal opens and the leak rate shown is the model's, which no longer applies);
+/// * `state` is `leaking`, `sealed` or `lift_off` (the fluid pressure reaches the contact
+///   pressure across the width: the seal opens; the leak rate shown is the model's at the onset
+///   of lift-off, a lower bound);
 /// * `open_fraction` is the open fraction f of the critical channels under particle
 ///   clogging (docs/model.md §7), always written (1 without `[contamination]`) so that the schema is
 ///   one.
@@ -585,7 +586,7 @@ pub fn human_summary(
             human(f.time, 6),
             f.mode.as_str()
         ),
-        None if problem.failure.is_empty() => {
+        None if !problem.can_fail() => {
             format!("survives {duration} (no failure criterion set)")
         }
         None => format!("survives {duration}"),

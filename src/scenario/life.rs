@@ -516,7 +516,11 @@ impl Source<'_> {
         table: Option<&Spanned<RawFailure>>,
     ) -> Result<FailureCriteria, ScenarioError> {
         let Some(table) = table else {
-            return Ok(FailureCriteria::default());
+            // the extrusion check is a property of a groove-seated ring: on unless switched off
+            return Ok(FailureCriteria {
+                extrusion: true,
+                ..FailureCriteria::default()
+            });
         };
         let raw = table.get_ref();
         Ok(FailureCriteria {

@@ -132,6 +132,8 @@ struct Snapshot {
 struct InterfaceLeak {
     leak_rate: f64,
     junction: Junction,
+    /// The asperity pressure e the junction is evaluated at \[Pa\].
+    junction_pressure: f64,
     lifted_off: bool,
 }
 
@@ -146,10 +148,15 @@ impl InterfaceLeak {
         }
     }
 
-    fn new(leak_rate: f64, junction: Junction, lifted_off: bool) -> Self {
+    fn new(
+        leak_rate: f64,
+        (junction, junction_pressure): (Junction, f64),
+        lifted_off: bool,
+    ) -> Self {
         InterfaceLeak {
             leak_rate,
             junction,
+            junction_pressure,
             lifted_off,
         }
     }
@@ -293,7 +300,7 @@ impl<'a> Simulator<'a> {
     pub fn run(&self) -> LifeResult {
         let p = self.problem;
         let mut findings = Findings::default();
-        if p.failure.is_empty() {
+        if !p.can_fail() {
             validity::no_failure_criterion(&mut findings);
         }
         validity::surface(&p.spectrum, &mut findings);
@@ -408,8 +415,8 @@ impl<'a> Simulator<'a> {
     /// critical junction where the asperities carry most (the peak of a Hertz profile less the
     /// fluid pressure there; a uniform contact's outlet), and whether it lifted off. Where ΔP is
     /// negligible against the contact pressure (≤ 1e-8 of it) the strips in series at the
-    /// contact pressure (§3.2). Lifted off: the strips in series without the fluid pressure, a
-    /// number that no longer applies.
+    /// contact pressure (§3.2). Lifted off: the leak at the onset of lift-off, a lower bound
+    /// ([`Self::onset_leak`]).
     fn interface_leak(
         &self,
         path: &ContactPath,
@@ -428,7 +435,7 @@ impl<'a> Simulator<'a> {
                 .leak_rate(geometry, Conduction::Series { resistance })
         };
         let top = profile.peak() + offset;
-        let junction_at = |e: f64| path.critical_junction(e.max(0.0) / e_star);
+        let junction_at = |e: f64| (path.critical_junction(e.max(0.0) / e_star), e.max(0.0));
         if dp <= NEGLIGIBLE_PRESSURE_RATIO * top {
             return InterfaceLeak::new(series(), junction_at(top), false);
         }
@@ -452,8 +459,46 @@ impl<'a> Simulator<'a> {
                 InterfaceLeak::new(p.fluid.leak_rate(geometry, conduction), junction, false)
             }
             InterfaceFlow::Sealed => InterfaceLeak::new(0.0, junction, false),
-            InterfaceFlow::LiftOff => InterfaceLeak::new(series(), junction_at(top), true),
+            InterfaceFlow::LiftOff => InterfaceLeak::new(
+                self.onset_leak(&sigma, profile, offset),
+                junction_at(top),
+                true,
+            ),
         }
+    }
+
+    /// The leak at the onset of lift-off (docs/model.md §3.6): the interface with the fluid
+    /// pressure in it at its largest — the peak contact pressure, less 1e-9 of it for a Hertz
+    /// profile — driving the flux; the last value the model gives for an open seal, a lower
+    /// bound.
+    fn onset_leak(&self, sigma: &dyn Fn(f64) -> f64, profile: &Profile, offset: f64) -> f64 {
+        let p = self.problem;
+        let geometry = profile.geometry(p.geometry.sealing_length());
+        let dp = p.fluid.pressure_difference;
+        let conduction = match *profile {
+            Profile::Uniform { pressure, .. } => {
+                interface::uniform_onset(sigma, pressure + offset, dp, &INTERFACE)
+            }
+            Profile::Hertz { peak, width } => {
+                let onset = (peak + offset) * (1.0 - 1e-9);
+                let contact = HertzContact {
+                    peak,
+                    offset,
+                    width,
+                };
+                match interface::hertz(sigma, contact, onset, &INTERFACE, None).flow {
+                    InterfaceFlow::Conducting(Conduction::Series { resistance }) => {
+                        Conduction::Series {
+                            resistance: resistance * dp / onset,
+                        }
+                    }
+                    _ => Conduction::Series {
+                        resistance: f64::INFINITY,
+                    },
+                }
+            }
+        };
+        p.fluid.leak_rate(geometry, conduction)
     }
 
     /// Internal step ends in (from, to]: `to`, plus eight per shortest temperature cycle
@@ -588,6 +633,8 @@ impl<'a> Simulator<'a> {
         let e_star = e_asperity / (1.0 - p.material.poisson_ratio.powi(2));
         let leak = self.profile_leak(&profile, e_star);
         let (leak_rate, peak_junction) = (leak.leak_rate, leak.junction);
+        // the junction's own reduced pressure (the energised peak less the fluid pressure there)
+        let junction_s = leak.junction_pressure / e_star;
         let u_c = peak_junction.leaking().map(|j| j.u_c);
         let lambda_c = peak_junction.leaking().map_or(0.0, |j| j.lambda_c);
         let (motion, open_static_leak_rate, leak_rate) = match &self.drag {
@@ -598,7 +645,7 @@ impl<'a> Simulator<'a> {
                 } else {
                     0.0
                 };
-                let s = profile.peak() / e_star;
+                let s = junction_s;
                 let junction = match self.path {
                     ContactPath::Table(_) | ContactPath::Exact(_) => peak_junction,
                     _ => self.path.persson_junction(s),
@@ -609,7 +656,7 @@ impl<'a> Simulator<'a> {
                         poisson_ratio: p.material.poisson_ratio,
                     },
                     FlatSeal {
-                        nominal_pressure: profile.peak(),
+                        nominal_pressure: self.contact_peak(&profile),
                         width: profile.width(),
                         length: p.geometry.sealing_length(),
                     },
@@ -651,7 +698,7 @@ impl<'a> Simulator<'a> {
             open_leak_rate: leak_rate,
             open_u_c: u_c.unwrap_or(0.0),
             lambda_c,
-            peak_reduced_pressure: profile.peak() / e_star,
+            peak_reduced_pressure: junction_s,
             extrusion: p.extrusion_at(temperature),
             open_fraction: 1.0,
             motion,
@@ -753,7 +800,12 @@ impl<'a> Simulator<'a> {
             &ContactState {
                 nominal_pressure: self.contact_peak(&snap.profile),
                 pressure_difference: p.fluid.pressure_difference,
-                junction: &snap.peak_junction,
+                // lifted off, the contact is open: only the pressure ratio applies
+                junction: if snap.state == SealState::LiftOff {
+                    &Junction::Sealed
+                } else {
+                    &snap.peak_junction
+                },
                 cutoff: p.spectrum.q1() / p.spectrum.q0(),
             },
             at,

@@ -137,6 +137,12 @@ impl LifeProblem {
         }
     }
 
+    /// Whether any criterion can end the life: one of `[failure]`'s, or the extrusion check of a
+    /// groove-seated ring.
+    pub fn can_fail(&self) -> bool {
+        !self.failure.is_empty() || (self.failure.extrusion && self.gland.is_some())
+    }
+
     /// The extrusion check of a groove-seated ring at `temperature` \[K\] (docs/model.md §6.3):
     /// the rubber's Shore A from its modulus at 3 s at that temperature (Gent's relation
     /// inverted), the chart's limit at ΔP, and the diametral clearance (twice the gap) over it;

@@ -70,6 +70,10 @@ pub fn evaluate_on(
     let pb = &scenario.problem;
     validity::surface(&pb.spectrum, &mut findings);
     scenario.life.assess_installation(&mut findings);
+    // the groove bottom's own surface, as `run` checks it (the counterface's: the path's findings)
+    if let crate::simulate::GrooveInterface::Own(groove) = &scenario.life.groove {
+        validity::surface(groove, &mut findings);
+    }
     let solver = StaticSolver::with_path(pb.clone(), path);
     let mut points: Vec<LeakPoint> = match scenario.life.geometry {
         SealGeometry::ORing { .. } => installed_oring(scenario, solver.path(), pressures),

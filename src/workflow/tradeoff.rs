@@ -21,13 +21,14 @@
 //! Timing is wall-clock on the calling thread (repeated until ≥ 50 ms for fast settings, the
 //! mean reported); the numerical level's contact solver uses two threads for its FFTs.
 
-use crate::contact::{Junction, QuadratureSettings, TableSettings};
+use crate::contact::{QuadratureSettings, TableSettings};
 use crate::fluid::Conduction;
 use crate::leak::{ContactPath, Fidelity, PathOptions, StaticProblem, StaticSolver};
 use crate::math::special::erf_inv;
 use crate::numerical::psd::{self, PsdOptions, Window};
 use crate::numerical::reference::{NumericalSettings, Surfaces, band_limited, evaluate};
 use crate::numerical::surface::synthesize;
+use crate::seal::SealGeometry;
 use crate::simulate::{LifeProblem, Simulator};
 use std::f64::consts::PI;
 use std::time::Instant;
@@ -220,14 +221,35 @@ fn analytic_path(life: &LifeProblem, setting: &Setting) -> ContactPath {
     )
 }
 
+/// The static state `sealsim leak` evaluates: a flat seal at its nominal pressure, an O-ring
+/// installed (its profile with the energisation, the fluid pressure inside the interface, both
+/// interfaces of a gland — the first state of the life run).
 fn static_state(problem: &StaticProblem, life: &LifeProblem, setting: &Setting) -> (f64, f64) {
     let mut pb = problem.clone();
     pb.contact = life.contact;
-    timed(|| {
-        StaticSolver::with_path(pb.clone(), analytic_path(life, setting))
-            .evaluate(pb.seal.nominal_pressure)
-            .leak_rate
+    timed(|| match life.geometry {
+        SealGeometry::ORing { .. } => {
+            let mut bare = life.clone();
+            bare.motion = None;
+            bare.contamination = None;
+            let simulator = Simulator::with_path(&bare, analytic_path(life, setting));
+            simulator.installed_leak(simulator.installed_peak()).0
+        }
+        SealGeometry::Flat { .. } => {
+            StaticSolver::with_path(pb.clone(), analytic_path(life, setting))
+                .evaluate(pb.seal.nominal_pressure)
+                .leak_rate
+        }
     })
+}
+
+/// The pressure of the static state: a flat seal's nominal pressure, an O-ring's installed peak
+/// contact pressure (with the energisation).
+fn static_pressure(problem: &StaticProblem, life: &LifeProblem) -> f64 {
+    match life.geometry {
+        SealGeometry::ORing { .. } => Simulator::new(life).installed_peak(),
+        SealGeometry::Flat { .. } => problem.seal.nominal_pressure,
+    }
 }
 
 fn life_run(problem: &LifeProblem, setting: &Setting) -> (f64, Option<f64>, f64) {
@@ -284,7 +306,7 @@ pub fn run(
         section: Section::FullSpectrum,
         level: Fidelity::Exact,
         setting: reference.label.clone(),
-        nominal_pressure: problem.seal.nominal_pressure,
+        nominal_pressure: static_pressure(problem, life),
         static_seconds: ref_static_s,
         leak_rate: ref_q,
         static_error: Some(0.0),
@@ -304,7 +326,7 @@ pub fn run(
             section: Section::FullSpectrum,
             level: setting.level,
             setting: setting.label.clone(),
-            nominal_pressure: problem.seal.nominal_pressure,
+            nominal_pressure: static_pressure(problem, life),
             static_seconds,
             leak_rate: q,
             static_error: relative_error(q, ref_q),
@@ -365,7 +387,10 @@ fn band_limited_section(
     let s = erf_inv(0.2) * (PI * pb.spectrum.total_m3()).sqrt();
     let p0 = s * e_star;
     pb.seal.nominal_pressure = p0;
-    // the leak law is linear in σ: the mean and the spread of σ map to leak rates alike
+    // the leak law is linear in σ: the mean and the spread of σ map to leak rates alike. Like
+    // for like: the numerical level gives σ(P0), the local conductance at one pressure, so the
+    // analytic rows below use theirs too — the fluid pressure inside the interface
+    // (docs/model.md §3.6) is the same integral over either σ and is left out of this section
     let leak_rate_of = |conductance: f64| {
         pb.fluid
             .leak_rate(pb.seal.geometry(), Conduction::Uniform { conductance })
@@ -408,11 +433,14 @@ fn band_limited_section(
         Fidelity::Exact,
         Fidelity::EffectiveMedium,
     ] {
-        let (seconds, q) = timed(|| StaticSolver::new(pb.clone(), level).evaluate(p0));
-        let leak_rate = match q.junction {
-            Junction::Leaking(_) => q.leak_rate,
-            Junction::Sealed => 0.0,
-        };
+        let (seconds, conductance) = timed(|| {
+            StaticSolver::new(pb.clone(), level).path().conductance(
+                p0 / e_star,
+                pb.shape_factor,
+                pb.fluid.viscosity,
+            )
+        });
+        let leak_rate = leak_rate_of(conductance);
         rows.push(TradeoffRow {
             section: Section::BandLimited,
             level,

@@ -85,7 +85,7 @@ fn check_point(pt: &LeakPoint) -> Result<(), TestCaseError> {
         // the rest of the width, and the flow leaves across the contact's outlet edge (docs/model.md
         // §3.6) — a leak only in the leaking state
         Junction::Sealed => prop_assert!(
-            pt.leak_rate == 0.0 || pt.state == SealState::Leaking,
+            pt.leak_rate == 0.0 || pt.state != SealState::Sealed,
             "{pt:?}"
         ),
     }
@@ -110,8 +110,15 @@ proptest! {
     fn leak_rate_does_not_increase_with_pressure(p in params(), a in log_uniform(1.0, 1e9), b in log_uniform(1.0, 1e9)) {
         let (lo, hi) = if a < b { (a, b) } else { (b, a) };
         let s = solver(p, Fidelity::Exact);
-        let (q_lo, q_hi) = (s.evaluate(lo).leak_rate, s.evaluate(hi).leak_rate);
-        prop_assert!(q_hi <= q_lo * (1.0 + 1e-9), "Q({hi}) = {q_hi} > Q({lo}) = {q_lo}");
+        let (at_lo, at_hi) = (s.evaluate(lo), s.evaluate(hi));
+        // lifted off (P0 ≤ ΔP = 1e4 Pa) the seal is open and the number is the onset's lower
+        // bound (docs/model.md §3.6): monotonicity is a property of the closed interface
+        prop_assert_eq!(at_lo.state == SealState::LiftOff, lo <= 1e4);
+        prop_assert_eq!(at_hi.state == SealState::LiftOff, hi <= 1e4);
+        if lo > 1e4 {
+            let (q_lo, q_hi) = (at_lo.leak_rate, at_hi.leak_rate);
+            prop_assert!(q_hi <= q_lo * (1.0 + 1e-9), "Q({hi}) = {q_hi} > Q({lo}) = {q_lo}");
+        }
     }
 
     #[test]
