@@ -10,7 +10,6 @@ use super::ReportError;
 use super::csv::{csv_error, finish, number};
 use super::plot::{LogLogChart, Series};
 use crate::dynamic::{Motion, MotionPoint, MotionSpec, StrokeCycle};
-use crate::gland::GlandKind;
 use crate::material::shift::{DAY, YEAR};
 use crate::material::{Material, Status};
 use crate::report::findings::{FindingRecord, records};
@@ -379,7 +378,7 @@ impl Summary {
                 .as_ref()
                 .and_then(|spec| MotionSummary::new(spec, result)),
             gland: problem.gland.as_ref().map(|g| GlandSummary {
-                kind: gland_name(g.kind).to_owned(),
+                kind: g.kind.name().to_owned(),
                 squeeze: match problem.geometry {
                     SealGeometry::ORing { squeeze, .. } => squeeze,
                     SealGeometry::Flat { .. } => 0.0,
@@ -699,7 +698,7 @@ fn seal_description(problem: &LifeProblem) -> String {
             });
             format!(
                 ", {} gland{range}, extrusion gap {} mm, energisation k_e = {}",
-                gland_name(g.kind),
+                g.kind.name(),
                 human(g.extrusion_gap * 1e3, 3),
                 human(problem.energisation_factor, 3)
             )
@@ -718,15 +717,6 @@ fn seal_description(problem: &LifeProblem) -> String {
         "{geometry}{gland}, {} loading, asperity modulus {asperity}{thermal}",
         loading_name(problem.loading)
     )
-}
-
-/// `face`, `piston` or `rod`.
-fn gland_name(kind: GlandKind) -> &'static str {
-    match kind {
-        GlandKind::Face => "face",
-        GlandKind::Piston => "piston",
-        GlandKind::Rod => "rod",
-    }
 }
 
 /// Log–log chart of leak rate against time for one or more runs (zero rates and t = 0 are
