@@ -130,6 +130,10 @@ pub const DEFAULT_POINTS_PER_DECADE: f64 = 20.0;
 /// Upper limit of `simulation.duration` and `simulation.start` \[s\]: 1000 years (the run's
 /// cost grows with the number of temperature cycles in it, eight internal steps each).
 pub const MAX_DURATION: f64 = 1000.0 * YEAR;
+/// Most internal steps the temperature cycles may ask of one run: eight per period of the
+/// shortest cycle over the simulated time. 400 000 is 137 years of daily cycles, a few seconds
+/// of run time; beyond it the run is refused (exit 2) rather than left to run for minutes.
+pub const MAX_CYCLE_STEPS: f64 = 400_000.0;
 /// Upper limit of `simulation.points_per_decade` (a guard against typos that would make a
 /// run take minutes).
 pub const MAX_POINTS_PER_DECADE: f64 = 1000.0;
@@ -661,6 +665,52 @@ impl Source<'_> {
                 points_per_decade,
             },
             fidelity,
+        ))
+    }
+
+    /// Refuses a run whose temperature cycles would need more than [`MAX_CYCLE_STEPS`]
+    /// internal steps (eight per period of the shortest cycle between `start` and `duration`),
+    /// reported at `simulation.duration` (or, if that is not written, at the cycle's amplitude).
+    pub(super) fn cycle_budget(
+        &self,
+        simulation: Option<&Spanned<RawSimulation>>,
+        environment: Option<&Spanned<RawEnvironment>>,
+        history: &TemperatureHistory,
+        time: &TimeGrid,
+    ) -> Result<(), ScenarioError> {
+        let Some(period) = history.shortest_period() else {
+            return Ok(());
+        };
+        let steps = 8.0 * (time.duration - time.start) / period;
+        if steps <= MAX_CYCLE_STEPS {
+            return Ok(());
+        }
+        let written = simulation.and_then(|t| t.get_ref().duration.as_ref());
+        let (span, key) = match (written, environment) {
+            (Some(q), _) => (q.span(), DURATION.key),
+            (None, Some(env)) => {
+                let raw = env.get_ref();
+                match (&raw.daily_amplitude, &raw.yearly_amplitude) {
+                    (Some(q), _) if period < YEAR => (q.span(), DAILY_AMPLITUDE.key),
+                    (_, Some(q)) => (q.span(), YEARLY_AMPLITUDE.key),
+                    _ => (env.span(), DURATION.key),
+                }
+            }
+            (None, None) => return Ok(()),
+        };
+        Err(self.error(
+            span,
+            key,
+            format!(
+                "a run of {} s with a temperature cycle of period {} s needs {} internal steps \
+                 (8 per cycle), more than the limit of {} ({} s of this cycle): shorten \
+                 simulation.duration or drop the cycle",
+                show(time.duration),
+                show(period),
+                show(steps.round()),
+                show(MAX_CYCLE_STEPS),
+                show((MAX_CYCLE_STEPS / 8.0 * period).round())
+            ),
         ))
     }
 

@@ -234,6 +234,12 @@ impl Source<'_> {
         let ageing = self.scenario_ageing(raw.ageing.as_ref(), &material)?;
         let failure = self.failure(raw.failure.as_ref())?;
         let (time, fidelity) = self.simulation(raw.simulation.as_ref())?;
+        self.cycle_budget(
+            raw.simulation.as_ref(),
+            raw.environment.as_ref(),
+            &environment,
+            &time,
+        )?;
         let clogging_tolerance = self.clogging_tolerance(raw.simulation.as_ref())?;
         let contamination = self.contamination(raw.contamination.as_ref(), clogging_tolerance)?;
         let numerical = self.numerical(raw.numerical.as_ref())?;
