@@ -1218,7 +1218,7 @@ squeeze = 0.2
             ),
             (
                 "points_per_decade = 5000",
-                ":18: simulation.points_per_decade: must be at most 1000",
+                ":18: simulation.points_per_decade: must lie in [0.1, 1000], got 5000",
             ),
             (
                 "fidelity = \"fast\"",

@@ -124,7 +124,7 @@ const ASPERITY_MODULUS: Field = field(
     Bound::Range(1e3, 1e12),
 );
 
-/// Plausible range of an absolute temperature \[K\] (docs/model.md §11.3).
+/// Plausible range of an absolute temperature \[K\] (README "Ranges", docs/model.md §11.1).
 pub(super) const TEMPERATURE_RANGE: (f64, f64) = (1.0, 1000.0);
 
 /// Where a `[material]` table is read; decides which keys are required.

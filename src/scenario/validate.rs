@@ -33,7 +33,7 @@ pub(super) enum Bound {
     Open(f64, f64),
     /// inside \[lo, hi\]
     Closed(f64, f64),
-    /// The plausible range \[lo, hi\] of a physical quantity (docs/model.md §11.3): outside it
+    /// The plausible range \[lo, hi\] of a physical quantity (README "Ranges", docs/model.md §11.1): outside it
     /// the value is nonsense or overflows the model. A value ≤ 0 where `lo > 0` is reported as
     /// "must be positive", a negative one where `lo = 0` as "must not be negative"; anything
     /// else outside as "must lie in \[lo, hi\] unit".
