@@ -61,6 +61,9 @@ impl Default for QuadratureSettings {
     }
 }
 
+/// Lowest `ln t` of the separation quadrature: `e^v` underflows to 0 below it.
+const LN_T_FLOOR: f64 = -745.2;
+
 impl QuadratureSettings {
     /// The same rule with `factor`× as many nodes (narrower panels): for convergence checks.
     pub fn refined(self, factor: f64) -> Self {
@@ -255,7 +258,11 @@ impl PerssonContact {
                 Some(lq) => (lq - ln_a).exp_m1().ln(),
                 None => ln_t_max,
             }
-        };
+        }
+        // below ln t = −745, t = e^v is 0 in f64 and the integrand (∝ t) contributes nothing;
+        // the floor keeps the panel count finite when t_lin underflows (an extreme roughness
+        // made ln t_min = −∞ and the quadrature never ended)
+        .max(LN_T_FLOOR);
         if ln_t_min >= ln_t_max {
             return Separation {
                 mean: 0.0,

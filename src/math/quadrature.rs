@@ -41,10 +41,16 @@ pub fn gauss_legendre(n: usize) -> (Vec<f64>, Vec<f64>) {
     (x, w)
 }
 
+/// Most panels [`composite`] cuts one interval into: a bound on the cost of one integral (an
+/// interval wider than `MAX_PANELS × max_width` gets wider panels, a coarser rule, rather than
+/// an unbounded loop).
+pub const MAX_PANELS: f64 = 1_048_576.0;
+
 /// The composite rule built from the n-point rule (`nodes`, `weights` of [`gauss_legendre`]) on
 /// the intervals between consecutive `breaks` (increasing), each cut into equal panels no wider
 /// than `max_width`: `(abscissa, weight)` pairs in increasing abscissa, weight `½ h w_i` for a
-/// panel of width h.
+/// panel of width h. An interval of non-finite length contributes no pairs; an interval is cut
+/// into at most [`MAX_PANELS`] panels.
 pub fn composite<'a>(
     breaks: &'a [f64],
     max_width: f64,
@@ -53,7 +59,12 @@ pub fn composite<'a>(
 ) -> impl Iterator<Item = (f64, f64)> + 'a {
     breaks.windows(2).flat_map(move |pair| {
         let (lo, hi) = (pair[0], pair[1]);
-        let panels = ((hi - lo) / max_width).ceil().max(1.0) as usize;
+        // an interval of non-finite length has no panels; at most MAX_PANELS per interval
+        let panels = if (hi - lo).is_finite() {
+            ((hi - lo) / max_width).ceil().clamp(1.0, MAX_PANELS)
+        } else {
+            0.0
+        } as usize;
         let h = (hi - lo) / panels as f64;
         (0..panels).flat_map(move |p| {
             let mid = lo + (p as f64 + 0.5) * h;

@@ -17,7 +17,7 @@ const NUMBER_CONCENTRATION: Field = field(
     "contamination.number_concentration",
     Dimension::NUMBER_DENSITY,
     "1/m^3",
-    Bound::NonNegative,
+    Bound::Range(0.0, 1e30),
 );
 const VOLUME_FRACTION: Field = field(
     "contamination.volume_fraction",
@@ -29,31 +29,31 @@ const DIAMETER: Field = field(
     "contamination.size_distribution.diameter",
     Dimension::LENGTH,
     "m",
-    Bound::Positive,
+    Bound::Range(1e-9, 1e-2),
 );
 const MEDIAN: Field = field(
     "contamination.size_distribution.median",
     Dimension::LENGTH,
     "m",
-    Bound::Positive,
+    Bound::Range(1e-9, 1e-2),
 );
 const GEOMETRIC_STD: Field = field(
     "contamination.size_distribution.geometric_std",
     Dimension::DIMENSIONLESS,
     "",
-    Bound::Positive,
+    Bound::Range(1e-3, 1e2),
 );
 const SCALE: Field = field(
     "contamination.size_distribution.scale",
     Dimension::LENGTH,
     "m",
-    Bound::Positive,
+    Bound::Range(1e-9, 1e-2),
 );
 const SHAPE: Field = field(
     "contamination.size_distribution.shape",
     Dimension::DIMENSIONLESS,
     "",
-    Bound::Positive,
+    Bound::Range(1e-2, 1e2),
 );
 const CLOGGING_TOLERANCE: Field = field(
     "simulation.clogging_tolerance",

@@ -94,8 +94,18 @@ struct RawGroup {
     plots: Option<Vec<Spanned<String>>>,
 }
 
-const FROM: Field = field("pressures.from", Dimension::PRESSURE, "Pa", Bound::Positive);
-const TO: Field = field("pressures.to", Dimension::PRESSURE, "Pa", Bound::Positive);
+const FROM: Field = field(
+    "pressures.from",
+    Dimension::PRESSURE,
+    "Pa",
+    Bound::Range(1.0, 1e10),
+);
+const TO: Field = field(
+    "pressures.to",
+    Dimension::PRESSURE,
+    "Pa",
+    Bound::Range(1.0, 1e10),
+);
 const MAX_POINTS: i64 = 10_000;
 
 impl FigureSet {

@@ -32,17 +32,18 @@ const fn length(key: &'static str, bound: Bound) -> Field {
     field(key, Dimension::LENGTH, "m", bound)
 }
 
-const CROSS_SECTION: Field = length("seal.cross_section", Bound::Positive);
-const INNER_DIAMETER: Field = length("seal.inner_diameter", Bound::Positive);
-const GROOVE_DEPTH: Field = length("seal.groove_depth", Bound::Positive);
-const GROOVE_DEPTH_TOLERANCE: Field = length("seal.groove_depth_tolerance", Bound::NonNegative);
-const GROOVE_WIDTH: Field = length("seal.groove_width", Bound::Positive);
-const DIAMETRAL_CLEARANCE: Field = length("seal.diametral_clearance", Bound::NonNegative);
-const EXTRUSION_GAP: Field = length("seal.extrusion_gap", Bound::NonNegative);
-const BORE_DIAMETER: Field = length("seal.bore_diameter", Bound::Positive);
-const ROD_DIAMETER: Field = length("seal.rod_diameter", Bound::Positive);
-const GROOVE_OUTER_DIAMETER: Field = length("seal.groove_outer_diameter", Bound::Positive);
-const GROOVE_INNER_DIAMETER: Field = length("seal.groove_inner_diameter", Bound::Positive);
+const CROSS_SECTION: Field = length("seal.cross_section", Bound::Range(1e-9, 10.0));
+const INNER_DIAMETER: Field = length("seal.inner_diameter", Bound::Range(1e-9, 10.0));
+const GROOVE_DEPTH: Field = length("seal.groove_depth", Bound::Range(1e-9, 10.0));
+const GROOVE_DEPTH_TOLERANCE: Field =
+    length("seal.groove_depth_tolerance", Bound::Range(0.0, 10.0));
+const GROOVE_WIDTH: Field = length("seal.groove_width", Bound::Range(1e-9, 10.0));
+const DIAMETRAL_CLEARANCE: Field = length("seal.diametral_clearance", Bound::Range(0.0, 10.0));
+const EXTRUSION_GAP: Field = length("seal.extrusion_gap", Bound::Range(0.0, 10.0));
+const BORE_DIAMETER: Field = length("seal.bore_diameter", Bound::Range(1e-9, 10.0));
+const ROD_DIAMETER: Field = length("seal.rod_diameter", Bound::Range(1e-9, 10.0));
+const GROOVE_OUTER_DIAMETER: Field = length("seal.groove_outer_diameter", Bound::Range(1e-9, 10.0));
+const GROOVE_INNER_DIAMETER: Field = length("seal.groove_inner_diameter", Bound::Range(1e-9, 10.0));
 const SQUEEZE: Field = field(
     "seal.squeeze",
     Dimension::DIMENSIONLESS,

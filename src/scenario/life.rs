@@ -22,21 +22,31 @@ const NOMINAL_PRESSURE: Field = field(
     "seal.nominal_pressure",
     Dimension::PRESSURE,
     "Pa",
-    Bound::Positive,
+    Bound::Range(1.0, 1e10),
 );
-const WIDTH: Field = field("seal.width", Dimension::LENGTH, "m", Bound::Positive);
-const LENGTH: Field = field("seal.length", Dimension::LENGTH, "m", Bound::Positive);
+const WIDTH: Field = field(
+    "seal.width",
+    Dimension::LENGTH,
+    "m",
+    Bound::Range(1e-9, 10.0),
+);
+const LENGTH: Field = field(
+    "seal.length",
+    Dimension::LENGTH,
+    "m",
+    Bound::Range(1e-9, 10.0),
+);
 const CROSS_SECTION: Field = field(
     "seal.cross_section",
     Dimension::LENGTH,
     "m",
-    Bound::Positive,
+    Bound::Range(1e-9, 10.0),
 );
 const MEAN_DIAMETER: Field = field(
     "seal.mean_diameter",
     Dimension::LENGTH,
     "m",
-    Bound::Positive,
+    Bound::Range(1e-9, 10.0),
 );
 const SQUEEZE: Field = field(
     "seal.squeeze",
@@ -48,31 +58,31 @@ const HOUSING_EXPANSION: Field = field(
     "seal.housing_expansion",
     Dimension::THERMAL_EXPANSION,
     "1/K",
-    Bound::NonNegative,
+    Bound::Range(0.0, 1e-2),
 );
 const DAILY_AMPLITUDE: Field = field(
     "environment.daily_amplitude",
     Dimension::TEMPERATURE,
     "K",
-    Bound::NonNegative,
+    Bound::Range(0.0, 500.0),
 );
 const YEARLY_AMPLITUDE: Field = field(
     "environment.yearly_amplitude",
     Dimension::TEMPERATURE,
     "K",
-    Bound::NonNegative,
+    Bound::Range(0.0, 500.0),
 );
 const MAX_LEAK_RATE: Field = field(
     "failure.max_leak_rate",
     Dimension::VOLUME_FLOW,
     "m^3/s",
-    Bound::Positive,
+    Bound::Range(1e-30, 1.0),
 );
 const MAX_LEAKED_VOLUME: Field = field(
     "failure.max_leaked_volume",
     Dimension::VOLUME,
     "m^3",
-    Bound::Positive,
+    Bound::Range(1e-30, 1e6),
 );
 const MIN_RETAINED_FORCE: Field = field(
     "failure.min_retained_force",
@@ -84,16 +94,31 @@ const AGEING_ACTIVATION_ENERGY: Field = field(
     "ageing.activation_energy",
     Dimension::MOLAR_ENERGY,
     "J/mol",
-    Bound::Positive,
+    Bound::Range(1.0, 1e6),
 );
-const AGEING_RATE: Field = field("ageing.rate", Dimension::FREQUENCY, "1/s", Bound::Positive);
-const DURATION: Field = field("simulation.duration", Dimension::TIME, "s", Bound::Positive);
-const START: Field = field("simulation.start", Dimension::TIME, "s", Bound::Positive);
+const AGEING_RATE: Field = field(
+    "ageing.rate",
+    Dimension::FREQUENCY,
+    "1/s",
+    Bound::Range(1e-30, 1e3),
+);
+const DURATION: Field = field(
+    "simulation.duration",
+    Dimension::TIME,
+    "s",
+    Bound::Range(1e-9, MAX_DURATION),
+);
+const START: Field = field(
+    "simulation.start",
+    Dimension::TIME,
+    "s",
+    Bound::Range(1e-9, MAX_DURATION),
+);
 const POINTS_PER_DECADE: Field = field(
     "simulation.points_per_decade",
     Dimension::DIMENSIONLESS,
     "",
-    Bound::Positive,
+    Bound::Range(0.1, MAX_POINTS_PER_DECADE),
 );
 
 /// Default `simulation.duration` \[s\]: 30 years.
@@ -102,6 +127,13 @@ pub const DEFAULT_DURATION: f64 = 30.0 * YEAR;
 pub const DEFAULT_START: f64 = 1.0;
 /// Default `simulation.points_per_decade`.
 pub const DEFAULT_POINTS_PER_DECADE: f64 = 20.0;
+/// Upper limit of `simulation.duration` and `simulation.start` \[s\]: 1000 years (the run's
+/// cost grows with the number of temperature cycles in it, eight internal steps each).
+pub const MAX_DURATION: f64 = 1000.0 * YEAR;
+/// Most internal steps the temperature cycles may ask of one run: eight per period of the
+/// shortest cycle over the simulated time. 400 000 is 137 years of daily cycles, a few seconds
+/// of run time; beyond it the run is refused (exit 2) rather than left to run for minutes.
+pub const MAX_CYCLE_STEPS: f64 = 400_000.0;
 /// Upper limit of `simulation.points_per_decade` (a guard against typos that would make a
 /// run take minutes).
 pub const MAX_POINTS_PER_DECADE: f64 = 1000.0;
@@ -621,19 +653,6 @@ impl Source<'_> {
         let points_per_decade = self
             .optional(raw.points_per_decade.as_ref(), &POINTS_PER_DECADE)?
             .unwrap_or(DEFAULT_POINTS_PER_DECADE);
-        if points_per_decade > MAX_POINTS_PER_DECADE
-            && let Some(q) = &raw.points_per_decade
-        {
-            return Err(self.error(
-                q.span(),
-                POINTS_PER_DECADE.key,
-                format!(
-                    "must be at most {}, got {}",
-                    show(MAX_POINTS_PER_DECADE),
-                    show(points_per_decade)
-                ),
-            ));
-        }
         let fidelity = match &raw.fidelity {
             None => Fidelity::Table,
             Some(f) => parse_fidelity(f.get_ref())
@@ -646,6 +665,52 @@ impl Source<'_> {
                 points_per_decade,
             },
             fidelity,
+        ))
+    }
+
+    /// Refuses a run whose temperature cycles would need more than [`MAX_CYCLE_STEPS`]
+    /// internal steps (eight per period of the shortest cycle between `start` and `duration`),
+    /// reported at `simulation.duration` (or, if that is not written, at the cycle's amplitude).
+    pub(super) fn cycle_budget(
+        &self,
+        simulation: Option<&Spanned<RawSimulation>>,
+        environment: Option<&Spanned<RawEnvironment>>,
+        history: &TemperatureHistory,
+        time: &TimeGrid,
+    ) -> Result<(), ScenarioError> {
+        let Some(period) = history.shortest_period() else {
+            return Ok(());
+        };
+        let steps = 8.0 * (time.duration - time.start) / period;
+        if steps <= MAX_CYCLE_STEPS {
+            return Ok(());
+        }
+        let written = simulation.and_then(|t| t.get_ref().duration.as_ref());
+        let (span, key) = match (written, environment) {
+            (Some(q), _) => (q.span(), DURATION.key),
+            (None, Some(env)) => {
+                let raw = env.get_ref();
+                match (&raw.daily_amplitude, &raw.yearly_amplitude) {
+                    (Some(q), _) if period < YEAR => (q.span(), DAILY_AMPLITUDE.key),
+                    (_, Some(q)) => (q.span(), YEARLY_AMPLITUDE.key),
+                    _ => (env.span(), DURATION.key),
+                }
+            }
+            (None, None) => return Ok(()),
+        };
+        Err(self.error(
+            span,
+            key,
+            format!(
+                "a run of {} s with a temperature cycle of period {} s needs {} internal steps \
+                 (8 per cycle), more than the limit of {} ({} s of this cycle): shorten \
+                 simulation.duration or drop the cycle",
+                show(time.duration),
+                show(period),
+                show(steps.round()),
+                show(MAX_CYCLE_STEPS),
+                show((MAX_CYCLE_STEPS / 8.0 * period).round())
+            ),
         ))
     }
 
@@ -1153,7 +1218,7 @@ squeeze = 0.2
             ),
             (
                 "points_per_decade = 5000",
-                ":18: simulation.points_per_decade: must be at most 1000",
+                ":18: simulation.points_per_decade: must lie in [0.1, 1000], got 5000",
             ),
             (
                 "fidelity = \"fast\"",

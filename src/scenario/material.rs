@@ -51,7 +51,7 @@ const YOUNGS_MODULUS: Field = field(
     "material.youngs_modulus",
     Dimension::PRESSURE,
     "Pa",
-    Bound::Positive,
+    Bound::Range(1e3, 1e12),
 );
 const POISSON_RATIO: Field = field(
     "material.poisson_ratio",
@@ -63,61 +63,69 @@ const LONG_TERM_MODULUS: Field = field(
     "material.long_term_modulus",
     Dimension::PRESSURE,
     "Pa",
-    Bound::NonNegative,
+    Bound::Range(0.0, 1e12),
 );
 /// `material.prony[i].modulus`; the key is replaced by the indexed one in errors.
 const TERM_MODULUS: Field = field(
     "material.prony.modulus",
     Dimension::PRESSURE,
     "Pa",
-    Bound::Positive,
+    Bound::Range(1e-6, 1e12),
 );
 /// `material.prony[i].tau`; the key is replaced by the indexed one in errors.
-const TERM_TAU: Field = field("material.prony.tau", Dimension::TIME, "s", Bound::Positive);
+const TERM_TAU: Field = field(
+    "material.prony.tau",
+    Dimension::TIME,
+    "s",
+    Bound::Range(1e-20, 1e20),
+);
 const THERMAL_EXPANSION: Field = field(
     "material.thermal_expansion",
     Dimension::THERMAL_EXPANSION,
     "1/K",
-    Bound::Positive,
+    Bound::Range(1e-8, 1e-2),
 );
 const WLF_C1: Field = field(
     "material.shift.c1",
     Dimension::DIMENSIONLESS,
     "",
-    Bound::Positive,
+    Bound::Range(1e-3, 1e3),
 );
 /// A temperature difference (a bare number or `"101.6 K"`; `"101.6 C"` is the same).
 const WLF_C2: Field = field(
     "material.shift.c2",
     Dimension::TEMPERATURE,
     "K",
-    Bound::Positive,
+    Bound::Range(1e-3, 1e3),
 );
 const SHIFT_ACTIVATION_ENERGY: Field = field(
     "material.shift.activation_energy",
     Dimension::MOLAR_ENERGY,
     "J/mol",
-    Bound::Positive,
+    Bound::Range(1.0, 1e6),
 );
 const AGEING_ACTIVATION_ENERGY: Field = field(
     "material.ageing.activation_energy",
     Dimension::MOLAR_ENERGY,
     "J/mol",
-    Bound::Positive,
+    Bound::Range(1.0, 1e6),
 );
 const AGEING_RATE: Field = field(
     "material.ageing.rate",
     Dimension::FREQUENCY,
     "1/s",
-    Bound::Positive,
+    Bound::Range(1e-30, 1e3),
 );
 /// A fixed asperity modulus (`asperity_modulus = "3 MPa"`).
 const ASPERITY_MODULUS: Field = field(
     "material.asperity_modulus",
     Dimension::PRESSURE,
     "Pa",
-    Bound::Positive,
+    Bound::Range(1e3, 1e12),
 );
+
+/// Plausible range of an absolute temperature \[K\] (README "Ranges", docs/model.md §11.1).
+pub(super) const TEMPERATURE_RANGE: (f64, f64) = (1.0, 1000.0);
 
 /// Where a `[material]` table is read; decides which keys are required.
 #[derive(Debug, Clone, Copy)]
@@ -569,18 +577,30 @@ impl Source<'_> {
             RawQuantity::Text(text) => units::parse_temperature(text)
                 .map_err(|e| self.error(raw.span(), key, e.to_string()))?,
         };
-        if kelvin.is_finite() && kelvin > 0.0 {
-            Ok(kelvin)
-        } else {
-            Err(self.error(
+        if !(kelvin.is_finite() && kelvin > 0.0) {
+            return Err(self.error(
                 raw.span(),
                 key,
                 format!(
                     "must be an absolute temperature above 0 K, got {} K",
                     show(kelvin)
                 ),
-            ))
+            ));
         }
+        let (lo, hi) = TEMPERATURE_RANGE;
+        if !(lo..=hi).contains(&kelvin) {
+            return Err(self.error(
+                raw.span(),
+                key,
+                format!(
+                    "must lie in [{}, {}] K, got {} K",
+                    show(lo),
+                    show(hi),
+                    show(kelvin)
+                ),
+            ));
+        }
+        Ok(kelvin)
     }
 
     /// `[material.provenance]` in file order: every key names a parameter the material gives,

@@ -16,26 +16,31 @@ const SLIDING_SPEED: Field = field(
     "motion.sliding_speed",
     Dimension::VELOCITY,
     "m/s",
-    Bound::NonNegative,
+    Bound::Range(0.0, 100.0),
 );
-const STROKE: Field = field("motion.stroke", Dimension::LENGTH, "m", Bound::Positive);
+const STROKE: Field = field(
+    "motion.stroke",
+    Dimension::LENGTH,
+    "m",
+    Bound::Range(1e-9, 10.0),
+);
 const FREQUENCY: Field = field(
     "motion.frequency",
     Dimension::FREQUENCY,
     "Hz",
-    Bound::Positive,
+    Bound::Range(1e-9, 1e6),
 );
 const OUT_SPEED: Field = field(
     "motion.out_speed",
     Dimension::VELOCITY,
     "m/s",
-    Bound::Positive,
+    Bound::Range(1e-9, 100.0),
 );
 const IN_SPEED: Field = field(
     "motion.in_speed",
     Dimension::VELOCITY,
     "m/s",
-    Bound::Positive,
+    Bound::Range(1e-9, 100.0),
 );
 const JUNCTION_POSITION: Field = field(
     "motion.junction_position",

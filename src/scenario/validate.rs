@@ -29,14 +29,15 @@ pub const STRIPS: usize = 16;
 /// The values a key accepts (all of them also finite).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) enum Bound {
-    /// > 0
-    Positive,
-    /// ≥ 0
-    NonNegative,
     /// strictly inside (lo, hi)
     Open(f64, f64),
     /// inside \[lo, hi\]
     Closed(f64, f64),
+    /// The plausible range \[lo, hi\] of a physical quantity (README "Ranges", docs/model.md §11.1): outside it
+    /// the value is nonsense or overflows the model. A value ≤ 0 where `lo > 0` is reported as
+    /// "must be positive", a negative one where `lo = 0` as "must not be negative"; anything
+    /// else outside as "must lie in \[lo, hi\] unit".
+    Range(f64, f64),
 }
 
 impl Bound {
@@ -49,18 +50,14 @@ impl Bound {
         };
         let ok = v.is_finite()
             && match self {
-                Bound::Positive => v > 0.0,
-                Bound::NonNegative => v >= 0.0,
                 Bound::Open(lo, hi) => v > lo && v < hi,
-                Bound::Closed(lo, hi) => (lo..=hi).contains(&v),
+                Bound::Closed(lo, hi) | Bound::Range(lo, hi) => (lo..=hi).contains(&v),
             };
         if ok {
             return None;
         }
         Some(match self {
             _ if !v.is_finite() => format!("must be finite, got {got}"),
-            Bound::Positive => format!("must be positive, got {got}"),
-            Bound::NonNegative => format!("must not be negative, got {got}"),
             Bound::Open(lo, hi) => format!(
                 "must lie strictly between {} and {}, got {got}",
                 show(lo),
@@ -68,6 +65,18 @@ impl Bound {
             ),
             Bound::Closed(lo, hi) => {
                 format!("must lie between {} and {}, got {got}", show(lo), show(hi))
+            }
+            Bound::Range(lo, _) if lo > 0.0 && v <= 0.0 => format!("must be positive, got {got}"),
+            Bound::Range(lo, _) if lo == 0.0 && v < 0.0 => {
+                format!("must not be negative, got {got}")
+            }
+            Bound::Range(lo, hi) => {
+                let unit = if unit.is_empty() {
+                    String::new()
+                } else {
+                    format!(" {unit}")
+                };
+                format!("must lie in [{}, {}]{unit}, got {got}", show(lo), show(hi))
             }
         })
     }
@@ -102,7 +111,7 @@ const RMS_ROUGHNESS: Field = field(
     "surface.rms_roughness",
     Dimension::LENGTH,
     "m",
-    Bound::Positive,
+    Bound::Range(1e-10, 1e-3),
 );
 const HURST_EXPONENT: Field = field(
     "surface.hurst_exponent",
@@ -110,19 +119,29 @@ const HURST_EXPONENT: Field = field(
     "",
     Bound::Open(0.0, 1.0),
 );
-const Q0: Field = field("surface.q0", Dimension::WAVEVECTOR, "1/m", Bound::Positive);
-const Q1: Field = field("surface.q1", Dimension::WAVEVECTOR, "1/m", Bound::Positive);
+const Q0: Field = field(
+    "surface.q0",
+    Dimension::WAVEVECTOR,
+    "1/m",
+    Bound::Range(1.0, 1e12),
+);
+const Q1: Field = field(
+    "surface.q1",
+    Dimension::WAVEVECTOR,
+    "1/m",
+    Bound::Range(1.0, 1e12),
+);
 const ROLLOFF: Field = field(
     "surface.rolloff",
     Dimension::WAVEVECTOR,
     "1/m",
-    Bound::Positive,
+    Bound::Range(1.0, 1e12),
 );
 const PIXEL_SIZE: Field = field(
     "surface.pixel_size",
     Dimension::LENGTH,
     "m",
-    Bound::Positive,
+    Bound::Range(1e-10, 1e-2),
 );
 /// Key of the height map file, in messages.
 const HEIGHT_MAP: &str = "surface.height_map";
@@ -132,13 +151,13 @@ const VISCOSITY: Field = field(
     "fluid.viscosity",
     Dimension::VISCOSITY,
     "Pa·s",
-    Bound::Positive,
+    Bound::Range(1e-7, 1e6),
 );
 const PRESSURE_DIFFERENCE: Field = field(
     "fluid.pressure_difference",
     Dimension::PRESSURE,
     "Pa",
-    Bound::NonNegative,
+    Bound::Range(0.0, 1e10),
 );
 const PERCOLATION_THRESHOLD: Field = field(
     "model.percolation_threshold",
@@ -150,7 +169,7 @@ const SHAPE_FACTOR: Field = field(
     "model.shape_factor",
     Dimension::DIMENSIONLESS,
     "",
-    Bound::Positive,
+    Bound::Range(1e-2, 1e2),
 );
 const GAMMA: Field = field(
     "model.gamma",
@@ -215,6 +234,12 @@ impl Source<'_> {
         let ageing = self.scenario_ageing(raw.ageing.as_ref(), &material)?;
         let failure = self.failure(raw.failure.as_ref())?;
         let (time, fidelity) = self.simulation(raw.simulation.as_ref())?;
+        self.cycle_budget(
+            raw.simulation.as_ref(),
+            raw.environment.as_ref(),
+            &environment,
+            &time,
+        )?;
         let clogging_tolerance = self.clogging_tolerance(raw.simulation.as_ref())?;
         let contamination = self.contamination(raw.contamination.as_ref(), clogging_tolerance)?;
         let numerical = self.numerical(raw.numerical.as_ref())?;

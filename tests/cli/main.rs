@@ -21,6 +21,7 @@ mod gland_pressure;
 mod leak;
 mod materials;
 mod motion;
+mod ranges;
 mod run;
 mod small_defects;
 mod tradeoff;
