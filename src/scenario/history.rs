@@ -99,6 +99,19 @@ pub(super) fn parse(text: &str) -> Result<Vec<(f64, f64)>, HistoryError> {
                 ),
             ));
         }
+        // the scenario's plausible range of absolute temperatures (as for its own keys)
+        let (lo, hi) = super::material::TEMPERATURE_RANGE;
+        if !(lo..=hi).contains(&kelvin) {
+            return Err(at(
+                line,
+                format!(
+                    "temperature must lie in [{}, {}] K, got {} K",
+                    show(lo),
+                    show(hi),
+                    show(kelvin)
+                ),
+            ));
+        }
         if let Some(&(prev, _)) = points.last()
             && t <= prev
         {
@@ -183,6 +196,19 @@ fn number(cell: &str, column: &str, line: usize) -> Result<f64, HistoryError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn temperatures_outside_the_plausible_range_are_refused_at_their_line() {
+        let e = parse("time,temperature\nh,C\n0,25\n1,1e308\n").unwrap_err();
+        assert_eq!(e.line, Some(4));
+        assert!(
+            e.message.contains("must lie in [1, 1000] K"),
+            "{}",
+            e.message
+        );
+        assert!(parse("time,temperature\n0,0.5\n").is_err());
+        assert!(parse("time,temperature\n0,1000\n").is_ok());
+    }
 
     #[test]
     fn si_by_default_and_units_row_converts() {

@@ -649,6 +649,17 @@ impl Source<'_> {
         let (q, c) = psd::parse(&text).map_err(|e| format_error(e.line, e.message))?;
         let spectrum =
             Spectrum::tabulated(&q, &c).map_err(|e| format_error(None, e.to_string()))?;
+        // moments that overflow (C(q) of 1e308 …) make every later number meaningless
+        let (h_rms, slope) = (spectrum.rms_roughness(), spectrum.rms_slope());
+        if !(h_rms.is_finite() && slope.is_finite()) {
+            return Err(format_error(
+                None,
+                format!(
+                    "the spectrum's moments overflow (h_rms = {h_rms} m, rms slope = {slope}): \
+                     check the values and the units of C(q)"
+                ),
+            ));
+        }
 
         let q0 = self.optional(raw.q0.as_ref(), &Q0)?;
         let q1 = self.optional(raw.q1.as_ref(), &Q1)?;
