@@ -36,12 +36,13 @@ fn line_of(text: &str, key: &str) -> usize {
 }
 
 /// Runs `sealsim run` on `text` and asserts exit 2, the located range message and no output.
-fn refused(text: &str, line: usize, key: &str, range: &str) {
+/// `sealsim run` on scenario `text` (written as `s.toml`) with `-o out.csv --summary out.json`,
+/// killed after `seconds`: (exit code, stderr, whether an output exists).
+fn run_text(text: &str, seconds: u64) -> (Option<i32>, String, bool) {
     let dir = tempfile::tempdir().unwrap();
     let scenario = dir.path().join("s.toml");
     std::fs::write(&scenario, text).unwrap();
-    let csv = dir.path().join("out.csv");
-    let summary = dir.path().join("out.json");
+    let (csv, summary) = (dir.path().join("out.csv"), dir.path().join("out.json"));
     let out = sealsim()
         .arg("run")
         .arg(&scenario)
@@ -49,18 +50,23 @@ fn refused(text: &str, line: usize, key: &str, range: &str) {
         .arg(&csv)
         .arg("--summary")
         .arg(&summary)
-        .timeout(std::time::Duration::from_secs(10))
+        .timeout(std::time::Duration::from_secs(seconds))
         .output()
         .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "stderr: {stderr}");
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    (out.status.code(), stderr, csv.exists() || summary.exists())
+}
+
+fn refused(text: &str, line: usize, key: &str, range: &str) {
+    let (code, stderr, written) = run_text(text, 10);
+    assert_eq!(code, Some(2), "stderr: {stderr}");
     let expected = format!("s.toml:{line}: {key}: must lie in {range}, got 1e308 m");
     assert!(
         stderr.contains(&expected),
         "want {expected:?}, got:\n{stderr}"
     );
     assert!(!stderr.contains("internal error"), "{stderr}");
-    assert!(!csv.exists() && !summary.exists(), "something was written");
+    assert!(!written, "something was written");
 }
 
 #[test]
@@ -116,17 +122,9 @@ fn too_many_daily_cycles_are_refused_with_the_step_budget() {
         "duration",
         "\"1000 year\"",
     );
-    let dir = tempfile::tempdir().unwrap();
-    let scenario = dir.path().join("s.toml");
-    std::fs::write(&scenario, &text).unwrap();
-    let out = sealsim()
-        .arg("run")
-        .arg(&scenario)
-        .timeout(std::time::Duration::from_secs(10))
-        .output()
-        .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "stderr: {stderr}");
+    let (code, stderr, written) = run_text(&text, 10);
+    assert_eq!(code, Some(2), "stderr: {stderr}");
+    assert!(!written);
     let at = format!(
         "s.toml:{}: simulation.duration:",
         line_of(&text, "duration")
@@ -141,16 +139,8 @@ fn the_edges_of_the_ranges_still_run() {
     // the largest roughness and q1 accepted finish (quickly) without an internal error
     for (key, value) in [("rms_roughness", "\"1 mm\""), ("q1", "1e12")] {
         let text = mutated("oring-fkm-hot-oil-ageing.toml", key, value);
-        let dir = tempfile::tempdir().unwrap();
-        let scenario = dir.path().join("s.toml");
-        std::fs::write(&scenario, &text).unwrap();
-        let out = sealsim()
-            .arg("run")
-            .arg(&scenario)
-            .timeout(std::time::Duration::from_secs(60))
-            .output()
-            .unwrap();
-        let stderr = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(0), "{key} = {value}: {stderr}");
+        let (code, stderr, written) = run_text(&text, 60);
+        assert_eq!(code, Some(0), "{key} = {value}: {stderr}");
+        assert!(written);
     }
 }
