@@ -138,10 +138,12 @@ struct InterfaceLeak {
 }
 
 impl InterfaceLeak {
-    fn state(&self) -> SealState {
+    /// The state with the total leak rate `leak_rate` \[m³/s\] (the interface's, or with a
+    /// sliding countersurface's drag added).
+    fn state_with(&self, leak_rate: f64) -> SealState {
         if self.lifted_off {
             SealState::LiftOff
-        } else if self.leak_rate > 0.0 {
+        } else if leak_rate > 0.0 {
             SealState::Leaking
         } else {
             SealState::Sealed
@@ -365,7 +367,11 @@ impl<'a> Simulator<'a> {
         let own = installed.peak();
         let squeeze_peak = (peak - (self.contact_peak(&installed) - own)).max(0.0);
         let leak = self.profile_leak(&installed.scaled(squeeze_peak / own), e_star);
-        (leak.leak_rate, leak.junction, leak.state())
+        (
+            leak.leak_rate,
+            leak.junction,
+            leak.state_with(leak.leak_rate),
+        )
     }
 
     /// The peak contact pressure right after installation, with the energisation \[Pa\] (the
@@ -675,13 +681,7 @@ impl<'a> Simulator<'a> {
                 }
             }
         };
-        let state = if leak.lifted_off {
-            SealState::LiftOff
-        } else if leak_rate > 0.0 {
-            SealState::Leaking
-        } else {
-            SealState::Sealed
-        };
+        let state = leak.state_with(leak_rate);
         let leak_rate = if leak_rate.is_finite() {
             leak_rate
         } else {

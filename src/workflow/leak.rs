@@ -6,7 +6,7 @@ use crate::dynamic::{DragCoefficients, DragSettings, MotionPoint, MotionSpec};
 use crate::leak::{ContactPath, Fidelity, FlatSeal, LeakPoint, StaticSolver};
 use crate::scenario::Scenario;
 use crate::seal::SealGeometry;
-use crate::simulate::Simulator;
+use crate::simulate::{LifeProblem, Simulator};
 use crate::validity::{self, At, Findings};
 
 /// The leak of a scenario at several pressures.
@@ -76,7 +76,7 @@ pub fn evaluate_on(
     }
     let solver = StaticSolver::with_path(pb.clone(), path);
     let mut points: Vec<LeakPoint> = match scenario.life.geometry {
-        SealGeometry::ORing { .. } => installed_oring(scenario, solver.path(), pressures),
+        SealGeometry::ORing { .. } => installed_oring(&scenario.life, solver.path(), pressures),
         SealGeometry::Flat { .. } => {
             let own = [pb.seal.nominal_pressure];
             let list = pressures.unwrap_or(&own);
@@ -104,16 +104,17 @@ pub fn evaluate_on(
     }
 }
 
-/// An O-ring's installed state (what `sealsim run` computes at t = 0: the Hertz profile through
-/// its strips in series, with the asperity modulus at installation), with its profile scaled to
-/// each of `pressures` as the peak contact pressure \[Pa\] (`None`: the installation's own
-/// peak). Static: no drag, all channels open.
-fn installed_oring(
-    scenario: &Scenario,
+/// An O-ring's installed state (what `sealsim run` computes at t = 0: the energised Hertz
+/// profile with the fluid pressure inside the interface, both interfaces of a gland, the
+/// asperity modulus at installation), with its profile scaled to each of `pressures` as the
+/// peak contact pressure \[Pa\] (`None`: the installation's own peak). Static: no drag, all
+/// channels open. `sealsim tradeoff`'s static state is the same.
+pub(super) fn installed_oring(
+    life: &LifeProblem,
     path: &ContactPath,
     pressures: Option<&[f64]>,
 ) -> Vec<LeakPoint> {
-    let mut life = scenario.life.clone();
+    let mut life = life.clone();
     life.motion = None;
     life.contamination = None;
     let simulator = Simulator::with_path(&life, path.clone());

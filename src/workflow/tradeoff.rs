@@ -221,35 +221,30 @@ fn analytic_path(life: &LifeProblem, setting: &Setting) -> ContactPath {
     )
 }
 
-/// The static state `sealsim leak` evaluates: a flat seal at its nominal pressure, an O-ring
-/// installed (its profile with the energisation, the fluid pressure inside the interface, both
-/// interfaces of a gland — the first state of the life run).
-fn static_state(problem: &StaticProblem, life: &LifeProblem, setting: &Setting) -> (f64, f64) {
+/// The static state `sealsim leak` evaluates — a flat seal at its nominal pressure, an O-ring
+/// installed ([`super::leak::installed_oring`]) — timed with the path's build: (seconds, leak
+/// rate \[m³/s\], its pressure \[Pa\]).
+fn static_state(
+    problem: &StaticProblem,
+    life: &LifeProblem,
+    setting: &Setting,
+) -> (f64, (f64, f64)) {
     let mut pb = problem.clone();
     pb.contact = life.contact;
-    timed(|| match life.geometry {
-        SealGeometry::ORing { .. } => {
-            let mut bare = life.clone();
-            bare.motion = None;
-            bare.contamination = None;
-            let simulator = Simulator::with_path(&bare, analytic_path(life, setting));
-            simulator.installed_leak(simulator.installed_peak()).0
-        }
-        SealGeometry::Flat { .. } => {
-            StaticSolver::with_path(pb.clone(), analytic_path(life, setting))
-                .evaluate(pb.seal.nominal_pressure)
-                .leak_rate
-        }
+    timed(|| {
+        let path = analytic_path(life, setting);
+        let point = match life.geometry {
+            SealGeometry::ORing { .. } => super::leak::installed_oring(life, &path, None)
+                .into_iter()
+                .next(),
+            SealGeometry::Flat { .. } => {
+                Some(StaticSolver::with_path(pb.clone(), path).evaluate(pb.seal.nominal_pressure))
+            }
+        };
+        point.map_or((0.0, pb.seal.nominal_pressure), |p| {
+            (p.leak_rate, p.nominal_pressure)
+        })
     })
-}
-
-/// The pressure of the static state: a flat seal's nominal pressure, an O-ring's installed peak
-/// contact pressure (with the energisation).
-fn static_pressure(problem: &StaticProblem, life: &LifeProblem) -> f64 {
-    match life.geometry {
-        SealGeometry::ORing { .. } => Simulator::new(life).installed_peak(),
-        SealGeometry::Flat { .. } => problem.seal.nominal_pressure,
-    }
 }
 
 fn life_run(problem: &LifeProblem, setting: &Setting) -> (f64, Option<f64>, f64) {
@@ -292,7 +287,7 @@ pub fn run(
         clogging_tolerance: 0.01,
     };
     let ref_life = with_settings(life, &reference);
-    let (ref_static_s, ref_q) = static_state(problem, &ref_life, &reference);
+    let (ref_static_s, (ref_q, pressure)) = static_state(problem, &ref_life, &reference);
     let (ref_life_s, ref_ttf, ref_volume) = life_run(&ref_life, &reference);
     step(progress);
     let judge = |ttf: Option<f64>, volume: f64| match ref_ttf {
@@ -306,7 +301,7 @@ pub fn run(
         section: Section::FullSpectrum,
         level: Fidelity::Exact,
         setting: reference.label.clone(),
-        nominal_pressure: static_pressure(problem, life),
+        nominal_pressure: pressure,
         static_seconds: ref_static_s,
         leak_rate: ref_q,
         static_error: Some(0.0),
@@ -320,13 +315,13 @@ pub fn run(
     }];
     for setting in &ladder {
         let lp = with_settings(life, setting);
-        let (static_seconds, q) = static_state(problem, &lp, setting);
+        let (static_seconds, (q, pressure)) = static_state(problem, &lp, setting);
         let (life_seconds, ttf, volume) = life_run(&lp, setting);
         rows.push(TradeoffRow {
             section: Section::FullSpectrum,
             level: setting.level,
             setting: setting.label.clone(),
-            nominal_pressure: static_pressure(problem, life),
+            nominal_pressure: pressure,
             static_seconds,
             leak_rate: q,
             static_error: relative_error(q, ref_q),
