@@ -253,102 +253,145 @@ fn sealing_pressure(sigma: &dyn Fn(f64) -> f64, conducting: f64, sealed: f64) ->
     hi
 }
 
-/// Hertz solutions of one run, interpolated in the peak pressure.
+/// Hertz solutions of one run, interpolated in the reduced peak and pressure difference.
 ///
-/// For a fixed σ(e) (the asperity modulus constant over the run), ΔP and energisation, the
-/// solution depends on the peak p_max and the width b only through p_max: in ξ = x/b the
-/// problem does not contain b, so `q b = F(p_max)` and the fluid pressure at the peak is
-/// `ΔP φ(p_max)`; with σ ∝ 1/η, `q b η` does not depend on the viscosity either. `ln F` and φ
-/// are smooth in ln p_max away from lift-off and sealing, and a life run visits a narrow band of
-/// p_max thousands of times (temperature cycles, bisection of failure times): this memo
-/// solves [`hertz`] at nodes `ln p_max = k h` as they are needed and interpolates with
-/// 4-point cubics (Lagrange on the uniform grid). Where a node does not conduct (near lift-off
-/// or sealing) it answers with the direct solve. A new node's shooting starts from the flux ratio
-/// of the node solved before it (to its tolerance, 1e-12, the value does not depend on the
-/// start; bit for bit it follows the run's own, deterministic order).
+/// The local conductance of the asperity contact depends on the asperity pressure only through
+/// e/E* (Persson's theory scales with P/E*): `σ(e) = σ̂(e/E*)`. With every pressure scaled by E*
+/// the profile's ODE keeps its form and `q = E* q̂`, so the series resistance ΔP/q and the fluid
+/// pressure at the peak over ΔP depend only on the reduced peak p̂ = p_max/E*, the reduced
+/// ΔP̂ = ΔP/E* (the energisation k_e ΔP̂ follows from it) and — in ξ = x/b — not on b: `q b = ΔP
+/// F(p̂, ΔP̂)`; with σ ∝ 1/η, `q b η` does not depend on the viscosity either. `ln(q b η)` and the
+/// centre's fluid-pressure ratio are smooth in ln p̂ and ln ΔP̂ away from lift-off and sealing,
+/// and a life run visits a narrow band of them thousands of times (temperature cycles,
+/// bisection of failure times): this memo solves [`hertz`] at nodes `(ln p̂, ln ΔP̂) = (i h, j
+/// h_ΔP)` as they are needed and interpolates with 4-point cubics in each (Lagrange on the
+/// uniform grid). When E* stays the same over the run (every asperity modulus but `follow`) ΔP̂ is
+/// one value and the ΔP axis is not interpolated ([`Self::new`]). Where a node does not conduct
+/// (near lift-off or sealing) it answers with the direct solve. A new node's shooting starts from
+/// the flux ratio of the node solved before it (to its tolerance, 1e-12, the value does not depend
+/// on the start; bit for bit it follows the run's own, deterministic order).
 #[derive(Debug)]
 pub struct HertzMemo {
-    /// Node spacing h in ln p_max.
+    /// Node spacing h in ln p̂.
     spacing: f64,
-    /// `k → (ln(q b η), p_f(centre)/ΔP)` at `p_max = e^{k h}` (`None`: not conducting there).
-    nodes: std::cell::RefCell<std::collections::HashMap<i64, Option<(f64, f64)>>>,
+    /// Node spacing in ln ΔP̂ (`None`: ΔP̂ is the same in every call, one node row).
+    pressure_spacing: Option<f64>,
+    /// `(i, j) → (ln(q b η), p_f(centre)/ΔP)` (`None`: not conducting there).
+    nodes: std::cell::RefCell<std::collections::HashMap<(i64, i64), Option<(f64, f64)>>>,
     /// The flux ratio of the last node solved: the start of the next (a neighbour, usually).
     warm: std::cell::Cell<Option<f64>>,
 }
 
-/// Node spacing of [`HertzMemo`] in ln p_max (0.8 %): measured ≤ 4.7e-7 relative difference of
+/// Node spacing of [`HertzMemo`] in ln p̂ (0.8 %): measured ≤ 4.7e-7 relative difference of
 /// the flux from the direct solves (tests/model/interface.rs; 2.9e-7 over a 30-year EPDM cycle
 /// run, 2.7e-8 at 1/512 with 4× the nodes — slower than h⁴ because σ from the contact table is
 /// only continuous at its own nodes), below the 8.4e-7 of the 128-step shooting itself.
 pub const MEMO_SPACING: f64 = 1.0 / 128.0;
 
+/// Node spacing of [`HertzMemo`] in ln ΔP̂ when E* changes over the run (`follow`): measured
+/// 4.7e-7 against direct solves with E* over a factor 20 (tests/model/interface.rs), 1.6e-6 at
+/// 1/16 — the flux is nearly proportional to ΔP̂, so four times the ln p̂ spacing suffices.
+pub const MEMO_PRESSURE_SPACING: f64 = 1.0 / 32.0;
+
+/// Lagrange weights on the nodes −1, 0, 1, 2 at `t ∈ [0, 1)`.
+fn cubic_weights(t: f64) -> [f64; 4] {
+    [
+        -t * (t - 1.0) * (t - 2.0) / 6.0,
+        (t + 1.0) * (t - 1.0) * (t - 2.0) / 2.0,
+        -(t + 1.0) * t * (t - 2.0) / 2.0,
+        (t + 1.0) * t * (t - 1.0) / 6.0,
+    ]
+}
+
 impl HertzMemo {
-    pub fn new(spacing: f64) -> Self {
+    /// A memo with nodes `spacing` apart in ln p̂, and `pressure_spacing` apart in ln ΔP̂ when
+    /// E* (hence ΔP̂) changes between calls (`None`: it does not).
+    pub fn new(spacing: f64, pressure_spacing: Option<f64>) -> Self {
         HertzMemo {
             spacing,
+            pressure_spacing,
             nodes: Default::default(),
             warm: Default::default(),
         }
     }
 
-    /// [`hertz`] at peak `peak` \[Pa\], offset, `width` \[m\], ΔP, with `sigma` the local
-    /// conductance at viscosity `viscosity` \[Pa·s\] (the memo's σ must not change between calls
-    /// except by the viscosity): interpolated between memoised nodes, or solved directly.
+    /// [`hertz`] at peak `peak` \[Pa\], offset, `width` \[m\], ΔP, with the local conductance
+    /// `sigma_hat(e/E*)` at viscosity `viscosity` \[Pa·s\] and the asperity contact's `e_star`
+    /// \[Pa\] (`sigma_hat` must not change between calls except by the viscosity; without a
+    /// pressure spacing neither may ΔP/E*): interpolated between memoised nodes, or solved
+    /// directly.
+    #[allow(clippy::too_many_arguments)]
     pub fn solve(
         &self,
-        sigma: &dyn Fn(f64) -> f64,
+        sigma_hat: &dyn Fn(f64) -> f64,
+        e_star: f64,
         contact: HertzContact,
         viscosity: f64,
         pressure_difference: f64,
         settings: &InterfaceSettings,
     ) -> HertzSolution {
-        let direct = || hertz(sigma, contact, pressure_difference, settings, None);
-        if !(contact.peak > 0.0 && contact.width > 0.0 && pressure_difference > 0.0) {
+        let sigma = |e: f64| sigma_hat(e / e_star);
+        let direct = || hertz(&sigma, contact, pressure_difference, settings, None);
+        if !(contact.peak > 0.0 && contact.width > 0.0 && pressure_difference > 0.0 && e_star > 0.0)
+        {
             return direct();
         }
-        let x = contact.peak.ln() / self.spacing;
-        let k0 = x.floor() as i64 - 1;
-        let mut values = [(0.0, 0.0); 4];
-        for (j, v) in values.iter_mut().enumerate() {
-            let k = k0 + j as i64;
-            let node = *self.nodes.borrow_mut().entry(k).or_insert_with(|| {
-                let at = HertzContact {
-                    peak: (k as f64 * self.spacing).exp(),
-                    width: 1.0,
-                    ..contact
-                };
-                let solved = hertz(sigma, at, pressure_difference, settings, self.warm.get());
-                if solved.flux_ratio.is_some() {
-                    self.warm.set(solved.flux_ratio);
-                }
-                match solved.flow {
-                    InterfaceFlow::Conducting(Conduction::Series { resistance })
-                        if resistance.is_finite() && resistance > 0.0 =>
-                    {
-                        Some((
-                            (pressure_difference / resistance * viscosity).ln(),
-                            solved.centre_fluid_pressure / pressure_difference,
-                        ))
+        let dp_hat = pressure_difference / e_star;
+        let x = (contact.peak / e_star).ln() / self.spacing;
+        let i0 = x.floor() as i64 - 1;
+        let wx = cubic_weights(x - (i0 + 1) as f64);
+        // the ΔP axis: four interpolated rows, or the one row of a constant ΔP̂
+        let (j0, wy, rows) = match self.pressure_spacing {
+            Some(h) => {
+                let y = dp_hat.ln() / h;
+                let j0 = y.floor() as i64 - 1;
+                (j0, cubic_weights(y - (j0 + 1) as f64), 4)
+            }
+            None => (0, [1.0, 0.0, 0.0, 0.0], 1),
+        };
+        let offset_ratio = contact.offset / pressure_difference;
+        let mut ln_flux = 0.0;
+        let mut centre = 0.0;
+        for (dj, wj) in wy.iter().enumerate().take(rows) {
+            let j = j0 + dj as i64;
+            let node_dp = match self.pressure_spacing {
+                Some(h) => (j as f64 * h).exp(),
+                None => dp_hat,
+            };
+            for (di, wi) in wx.iter().enumerate() {
+                let i = i0 + di as i64;
+                let node = *self.nodes.borrow_mut().entry((i, j)).or_insert_with(|| {
+                    let at = HertzContact {
+                        peak: (i as f64 * self.spacing).exp(),
+                        offset: offset_ratio * node_dp,
+                        width: 1.0,
+                    };
+                    let solved = hertz(sigma_hat, at, node_dp, settings, self.warm.get());
+                    if solved.flux_ratio.is_some() {
+                        self.warm.set(solved.flux_ratio);
                     }
-                    _ => None,
-                }
-            });
-            match node {
-                Some(n) => *v = n,
-                None => return direct(),
+                    match solved.flow {
+                        InterfaceFlow::Conducting(Conduction::Series { resistance })
+                            if resistance.is_finite() && resistance > 0.0 =>
+                        {
+                            // q̂ b η with q̂ = ΔP̂/R̂: the flux of the scaled problem; ln q b η =
+                            // ln q̂ b η + ln E*, added below
+                            Some((
+                                (node_dp / resistance * viscosity).ln(),
+                                solved.centre_fluid_pressure / node_dp,
+                            ))
+                        }
+                        _ => None,
+                    }
+                });
+                let Some((flux, ratio)) = node else {
+                    return direct();
+                };
+                ln_flux += wi * wj * flux;
+                centre += wi * wj * ratio;
             }
         }
-        // Lagrange weights at t = x − (k0 + 1) ∈ [0, 1) on nodes −1, 0, 1, 2
-        let t = x - (k0 + 1) as f64;
-        let w = [
-            -t * (t - 1.0) * (t - 2.0) / 6.0,
-            (t + 1.0) * (t - 1.0) * (t - 2.0) / 2.0,
-            -(t + 1.0) * t * (t - 2.0) / 2.0,
-            (t + 1.0) * t * (t - 1.0) / 6.0,
-        ];
-        let ln_flux: f64 = w.iter().zip(&values).map(|(w, v)| w * v.0).sum();
-        let centre: f64 = w.iter().zip(&values).map(|(w, v)| w * v.1).sum();
-        let q = ln_flux.exp() / (viscosity * contact.width);
+        let q = (ln_flux + e_star.ln()).exp() / (viscosity * contact.width);
         HertzSolution {
             flow: InterfaceFlow::Conducting(Conduction::Series {
                 resistance: pressure_difference / q,

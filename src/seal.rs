@@ -29,6 +29,27 @@ pub fn squeeze_function(eps: f64) -> f64 {
     1.25 * e.powf(1.5) + 50.0 * e.powi(6)
 }
 
+/// The squeeze whose [`squeeze_function`] is `load` (≥ 0): g is increasing, so bisection on
+/// [0, 1] to the last bit (g(1) = 51.25; larger loads give 1).
+pub fn squeeze_from_load(load: f64) -> f64 {
+    let (mut lo, mut hi) = (0.0_f64, 1.0_f64);
+    if load <= 0.0 {
+        return 0.0;
+    }
+    for _ in 0..64 {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if squeeze_function(mid) < load {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
 /// O-ring contact width `b = d √(6ε/π)` \[m\].
 pub fn oring_contact_width(cross_section: f64, eps: f64) -> f64 {
     cross_section * (6.0 * eps.max(0.0) / PI).sqrt()

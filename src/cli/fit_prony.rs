@@ -135,6 +135,7 @@ pub fn fitted_material(name: String, fit: &Fit, source: &str, terms_per_decade: 
         glass_transition: None,
         thermal_expansion: None,
         ageing: None,
+        ageing_basis: None,
         provenance,
     }
 }

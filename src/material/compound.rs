@@ -24,10 +24,13 @@
 //! c1 = 8.86                                 # wlf: dimensionless, > 0
 //! c2 = "101.6 K"                            # wlf: temperature DIFFERENCE (parse_quantity with Dimension::TEMPERATURE), > 0
 //! # activation_energy = "90 kJ/mol"         # arrhenius: > 0 (Dimension::MOLAR_ENERGY)
-//! [material.ageing]                         # optional: Arrhenius chemical stress relaxation
+//! [material.ageing]                         # optional: two-network chemical ageing (Arrhenius)
 //! activation_energy = "90 kJ/mol"           # > 0
 //! rate = "1e-9 1/s"                         # k_ref > 0 (Dimension::FREQUENCY)
 //! reference_temperature = "100 C"
+//! crosslinking = 1.0                        # optional, r = k_x/k_s in [0, 10], default 1 (balanced)
+//! property = "compression set (ISO 815)"    # what Ea and k were measured on; required in library files
+//! criterion = "80 % compression set"        # the end-of-life criterion; required in library files
 //! [material.provenance]                     # string per parameter; REQUIRED in library files for every
 //! poisson_ratio = "..."                     # parameter present: poisson_ratio, long_term_modulus (or youngs_modulus),
 //! long_term_modulus = "..."                 # prony, shift, glass_transition, thermal_expansion, ageing
@@ -70,8 +73,10 @@ impl Status {
     }
 }
 
-/// Arrhenius chemical stress relaxation (docs/model.md §6, ISO 11346 practice): the sealing stress
-/// is multiplied by `exp(−∫ k(T) dt)`, `k(T) = k_ref exp(−(Ea/R)(1/T − 1/T_ref))`.
+/// Chemical ageing by the two-network model (docs/model.md §5.3; Andrews, Tobolsky & Hanson,
+/// J. Appl. Phys. 17 (1946) 352): the original network breaks at the Arrhenius rate
+/// `k(T) = k_ref exp(−(Ea/R)(1/T − 1/T_ref))` \[1/s\] (ISO 11346 practice), and a new network
+/// forms at `r·k(T)` in the deformed state ([`crate::material::RelaxationState::step_aged`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Ageing {
     /// Ea \[J/mol\].
@@ -80,6 +85,21 @@ pub struct Ageing {
     pub rate: f64,
     /// T_ref \[K\].
     pub reference_temperature: f64,
+    /// r = k_x/k_s: 1 (the default) balances scission by crosslinking in the deformed state,
+    /// so that compression set = 1 − F/F0 at constant squeeze; 0 is scission alone (no set:
+    /// the sealing stress is multiplied by `exp(−∫ k dt)`).
+    pub crosslinking: f64,
+}
+
+/// The default r of [`Ageing::crosslinking`].
+pub const BALANCED_CROSSLINKING: f64 = 1.0;
+
+/// What a compound's ageing constants were measured on (library files): the property
+/// (compression stress relaxation, compression set, …) and the end-of-life criterion.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AgeingBasis {
+    pub property: String,
+    pub criterion: String,
 }
 
 /// A rubber compound in SI units.
@@ -96,6 +116,8 @@ pub struct Material {
     /// Linear thermal expansion coefficient \[1/K\].
     pub thermal_expansion: Option<f64>,
     pub ageing: Option<Ageing>,
+    /// What the ageing constants were measured on (library files require it with `ageing`).
+    pub ageing_basis: Option<AgeingBasis>,
     /// (parameter key, where its value came from), in file order.
     pub provenance: Vec<(String, String)>,
 }
@@ -116,6 +138,7 @@ impl Material {
             glass_transition: None,
             thermal_expansion: None,
             ageing: None,
+            ageing_basis: None,
             provenance: Vec::new(),
         })
     }

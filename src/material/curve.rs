@@ -231,6 +231,7 @@ mod tests {
             glass_transition: None,
             thermal_expansion: None,
             ageing: None,
+            ageing_basis: None,
             provenance: Vec::new(),
         }
     }

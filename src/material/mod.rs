@@ -7,6 +7,6 @@ pub mod fit;
 pub mod prony;
 pub mod shift;
 
-pub use compound::{Ageing, Material, Status};
-pub use prony::{Creep, Prony, PronyError, PronyTerm, RelaxationState};
+pub use compound::{Ageing, AgeingBasis, BALANCED_CROSSLINKING, Material, Status};
+pub use prony::{ChemicalStep, Creep, Prony, PronyError, PronyTerm, RelaxationState};
 pub use shift::{Shift, TemperatureHistory};

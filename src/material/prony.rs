@@ -285,10 +285,33 @@ impl Creep {
 /// Inelasticity*, Springer 1998, §10.3):
 /// `h_i ← e^{−x} h_i + E_i φ(x) Δε`, `x = Δξ/τ_i`, `φ(x) = −expm1(−x)/x`;
 /// `σ = E∞ ε + Σ h_i`. Unconditionally stable and exact for piecewise-linear strain.
+///
+/// With chemical ageing ([`Self::step_aged`]) the state is that of the two-network model
+/// (docs/model.md §5.3): the original network breaks at the scission rate k_s, a new network
+/// forms at `r·k_s` in the state the rubber is in when it forms and carries stress only for
+/// strain changes after its formation. With K = ∫k_s dt, the crosslink fraction
+/// c (`c' = k_s (r − c)`, c(0) = 1) and the set reference y (`y' = k_s (r ε − y)`, y(0) = 0):
+/// `σ = E∞ (c ε − y) + Σ h_i`, and every branch decays with the network,
+/// `h_i ← e^{−x − ΔK} h_i + E_i c φ(x + ΔK) Δε`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RelaxationState {
     strain: f64,
     branches: Vec<f64>,
+    /// c, the crosslink density relative to the original network's.
+    network: f64,
+    /// y, the equilibrium strain the later networks hold, times their fraction (E∞ y is the
+    /// stress the set takes off the equilibrium spring).
+    set_reference: f64,
+}
+
+/// One step of chemical ageing for [`RelaxationState::step_aged`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ChemicalStep {
+    /// ΔK = ∫ k_s dt over the step (scission of the network, ≥ 0).
+    pub scission: f64,
+    /// r = k_x/k_s, the rate at which a new network forms in the deformed state relative to
+    /// the scission rate (1: balanced, compression set = 1 − F/F0; 0: scission only).
+    pub crosslinking: f64,
 }
 
 impl RelaxationState {
@@ -297,27 +320,78 @@ impl RelaxationState {
         RelaxationState {
             strain: 0.0,
             branches: vec![0.0; prony.terms().len()],
+            network: 1.0,
+            set_reference: 0.0,
         }
     }
 
     /// Advances by reduced time `d_xi ≥ 0` while the strain changes linearly by `d_strain`.
     /// `d_xi = 0` is an instantaneous jump (φ(0) = 1).
     pub fn step(&mut self, prony: &Prony, d_xi: f64, d_strain: f64) {
+        self.step_aged(
+            prony,
+            d_xi,
+            d_strain,
+            ChemicalStep {
+                scission: 0.0,
+                crosslinking: 0.0,
+            },
+        );
+    }
+
+    /// [`Self::step`] with chemical ageing over the step (two-network model; Andrews,
+    /// Tobolsky & Hanson, J. Appl. Phys. 17 (1946) 352): the branches as in the type's doc
+    /// with c at the step's middle; c and y exactly for the strain linear in K within the
+    /// step: `c ← e^{−ΔK} c + r (1 − e^{−ΔK})`,
+    /// `y ← e^{−ΔK} y + r [ε_a (1 − e^{−ΔK}) + Δε (1 − φ(ΔK))]`. Exact at constant strain
+    /// for any step; with ΔK = 0 it is [`Self::step`] bit for bit.
+    pub fn step_aged(&mut self, prony: &Prony, d_xi: f64, d_strain: f64, chem: ChemicalStep) {
+        let d_k = chem.scission;
+        let r = chem.crosslinking;
+        let decay = exp_neg(d_k);
+        let network_end = decay * self.network + r * (1.0 - decay);
+        let network_mid = if d_k > 0.0 {
+            let half = exp_neg(0.5 * d_k);
+            half * self.network + r * (1.0 - half)
+        } else {
+            self.network
+        };
         for (h, t) in self.branches.iter_mut().zip(prony.terms()) {
-            let x = d_xi / t.tau;
-            *h = exp_neg(x) * *h + t.modulus * phi(x) * d_strain;
+            let x = d_xi / t.tau + d_k;
+            *h = exp_neg(x) * *h + t.modulus * network_mid * phi(x) * d_strain;
         }
+        if d_k > 0.0 {
+            self.set_reference = decay * self.set_reference
+                + r * (self.strain * (1.0 - decay) + d_strain * (1.0 - phi(d_k)));
+        }
+        self.network = network_end;
         self.strain += d_strain;
     }
 
-    /// Current stress σ = E∞ ε + Σ h_i \[Pa\].
+    /// Current stress σ = E∞ (c ε − y) + Σ h_i \[Pa\].
     pub fn stress(&self, prony: &Prony) -> f64 {
-        prony.long_term() * self.strain + self.branches.iter().sum::<f64>()
+        prony.long_term() * (self.network * self.strain - self.set_reference)
+            + self.branches.iter().sum::<f64>()
     }
 
     /// Current strain.
     pub fn strain(&self) -> f64 {
         self.strain
+    }
+
+    /// The strain at which the equilibrium stress of the aged networks vanishes, `y/c`: where
+    /// the rubber returns to when released and fully recovered (0 unaged).
+    pub fn set_strain(&self) -> f64 {
+        if self.network > 0.0 {
+            self.set_reference / self.network
+        } else {
+            self.strain
+        }
+    }
+
+    /// The crosslink density relative to the original network's, c.
+    pub fn network(&self) -> f64 {
+        self.network
     }
 }
 

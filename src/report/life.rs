@@ -30,8 +30,10 @@ use serde::Serialize;
 ///   of lift-off, a lower bound);
 /// * `open_fraction` is the open fraction f of the critical channels under particle
 ///   clogging (docs/model.md §7), always written (1 without `[contamination]`) so that the schema is
-///   one.
-pub const HISTORY_COLUMNS: [&str; 13] = [
+///   one;
+/// * `compression_set` is the compression set (ASTM D395 definition, a fraction) of the
+///   two-network ageing model (docs/model.md §5.3), blank without `[ageing]`.
+pub const HISTORY_COLUMNS: [&str; 14] = [
     "time_s",
     "temperature_K",
     "reduced_time_s",
@@ -45,6 +47,7 @@ pub const HISTORY_COLUMNS: [&str; 13] = [
     "leaked_volume_m3",
     "state",
     "open_fraction",
+    "compression_set",
 ];
 
 /// Columns the history gets after [`HISTORY_COLUMNS`] with `[motion]` (PY08 §8): the first
@@ -115,6 +118,7 @@ pub fn history_table(result: &LifeResult) -> Result<String, ReportError> {
             cell(10, r.leaked_volume)?,
             r.state.as_str().to_owned(),
             cell(12, r.open_fraction)?,
+            optional(13, r.compression_set)?,
         ];
         writer
             .write_record(record.into_iter().chain(motion_cells))
@@ -156,6 +160,16 @@ pub struct Summary {
     /// Sealing force per unit length at the end of the run \[N/m\].
     #[serde(rename = "final_sealing_force_N_per_m")]
     pub final_sealing_force_n_per_m: f64,
+    /// The time after installation the retained force is referred to \[s\].
+    pub retained_force_reference_s: f64,
+    /// Sealing force per unit length at that reference \[N/m\].
+    #[serde(rename = "reference_sealing_force_N_per_m")]
+    pub reference_sealing_force_n_per_m: f64,
+    /// The final sealing force over the reference one.
+    pub final_retained_force: f64,
+    /// Compression set at the end of the run (with `[ageing]`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub final_compression_set: Option<f64>,
     /// Length of the run \[s\].
     pub duration_s: f64,
     /// Open fraction of the critical channels at the end of the run (1 without
@@ -370,6 +384,13 @@ impl Summary {
             leaked_volume_m3: result.leaked_volume(),
             initial_sealing_force_n_per_m: first.map_or(0.0, |r| r.sealing_force),
             final_sealing_force_n_per_m: last.map_or(0.0, |r| r.sealing_force),
+            retained_force_reference_s: problem.failure.retained_force_reference,
+            reference_sealing_force_n_per_m: result.reference_force,
+            final_retained_force: retained_fraction(
+                last.map_or(0.0, |r| r.sealing_force),
+                result.reference_force,
+            ),
+            final_compression_set: last.and_then(|r| r.compression_set),
             duration_s: problem.time.duration,
             final_open_fraction: result.final_open_fraction(),
             warnings: records(&result.findings),
@@ -412,6 +433,16 @@ impl Summary {
             ),
             ("duration_s", self.duration_s),
             ("final_open_fraction", self.final_open_fraction),
+            ("retained_force_reference_s", self.retained_force_reference_s),
+            (
+                "reference_sealing_force_N_per_m",
+                self.reference_sealing_force_n_per_m,
+            ),
+            ("final_retained_force", self.final_retained_force),
+            (
+                "final_compression_set",
+                self.final_compression_set.unwrap_or(0.0),
+            ),
         ];
         let motion = self.motion.as_ref().map(MotionSummary::values);
         for (column, value) in values.into_iter().chain(motion.into_iter().flatten()) {
@@ -530,19 +561,34 @@ pub fn human_summary(
         line(
             "ageing",
             format!(
-                "Arrhenius chemical relaxation, k = {} 1/s at {}, Ea = {} kJ/mol",
+                "two networks: scission k = {} 1/s at {}, Ea = {} kJ/mol, new network at {} k \
+                 in the compressed state",
                 human(ag.rate, 3),
                 celsius(ag.reference_temperature),
-                human(ag.activation_energy / 1e3, 3)
+                human(ag.activation_energy / 1e3, 3),
+                human(ag.crosslinking, 3)
             ),
         );
     }
     let duration = human_time(problem.time.duration);
     if let (Some(first), Some(last)) = (result.rows.first(), result.rows.last()) {
-        let retained = if first.sealing_force > 0.0 {
+        let reference = problem.failure.retained_force_reference;
+        let at_reference = if reference > 0.0 {
             format!(
-                " ({} % retained)",
-                human(100.0 * last.sealing_force / first.sealing_force, 3)
+                ", {} N/mm at {} (the reference)",
+                human(result.reference_force / 1e3, 3),
+                human_time(reference)
+            )
+        } else {
+            " (the reference)".to_owned()
+        };
+        let retained = if result.reference_force > 0.0 {
+            format!(
+                " ({} % of the reference retained)",
+                human(
+                    100.0 * retained_fraction(last.sealing_force, result.reference_force),
+                    3
+                )
             )
         } else {
             String::new()
@@ -550,11 +596,17 @@ pub fn human_summary(
         line(
             "sealing force",
             format!(
-                "{} N/mm at installation, {} N/mm after {duration}{retained}",
+                "{} N/mm at installation{at_reference}, {} N/mm after {duration}{retained}",
                 human(first.sealing_force / 1e3, 3),
                 human(last.sealing_force / 1e3, 3)
             ),
         );
+        if let Some(set) = last.compression_set {
+            line(
+                "compression set",
+                format!("{} % after {duration}", human(100.0 * set, 3)),
+            );
+        }
     }
     line(
         "leak rate",
@@ -592,6 +644,15 @@ pub fn human_summary(
     };
     line("result", verdict);
     out
+}
+
+/// `force / reference` (0 when the reference is not positive).
+fn retained_fraction(force: f64, reference: f64) -> f64 {
+    if reference > 0.0 {
+        force / reference
+    } else {
+        0.0
+    }
 }
 
 /// A speed for a reader: `"1 cm/s"`, `"0.1 m/s"`, `"6.1 mm/s"`.
@@ -885,6 +946,7 @@ mod tests {
             leak_rate,
             leaked_volume: leak_rate * time,
             open_fraction: 1.0,
+            compression_set: None,
             motion: None,
             state: if u_c.is_some() {
                 SealState::Leaking
@@ -902,6 +964,7 @@ mod tests {
                 mode: FailureMode::LeakRate,
             }),
             findings: Default::default(),
+            reference_force: 1000.0,
         }
     }
 
@@ -916,11 +979,11 @@ mod tests {
         assert_eq!(lines[0], HISTORY_COLUMNS.join(","));
         assert_eq!(
             lines[1],
-            "0e0,3.5315e2,0e0,1e-1,1e3,2e6,1.5e6,1e-3,2e-7,1e-12,0e0,leaking,1e0"
+            "0e0,3.5315e2,0e0,1e-1,1e3,2e6,1.5e6,1e-3,2e-7,1e-12,0e0,leaking,1e0,"
         );
         assert_eq!(
             lines[2],
-            "1e1,3.5315e2,1e2,,1e3,2e6,1.5e6,1e-3,,0e0,0e0,sealed,1e0"
+            "1e1,3.5315e2,1e2,,1e3,2e6,1.5e6,1e-3,,0e0,0e0,sealed,1e0,"
         );
         let bad = result(vec![row(0.0, f64::NAN, 1.0, None)]);
         assert!(matches!(
@@ -955,7 +1018,7 @@ mod tests {
             lines[0],
             format!("{},drag_leak_rate_m3_per_s", HISTORY_COLUMNS.join(","))
         );
-        assert!(lines[1].ends_with(",leaking,1e0,4e-11"), "{}", lines[1]);
+        assert!(lines[1].ends_with(",leaking,1e0,,4e-11"), "{}", lines[1]);
         let cycle = StrokeCycle {
             period: 2.0,
             out_volume: 1e-12,
@@ -982,7 +1045,7 @@ mod tests {
             )
         );
         assert!(
-            lines[2].ends_with(",leaking,1e0,4e-11,5e-13"),
+            lines[2].ends_with(",leaking,1e0,,4e-11,5e-13"),
             "{}",
             lines[2]
         );

@@ -91,6 +91,11 @@ pub fn material_toml(m: &Material) -> String {
             "reference_temperature",
             &quantity(a.reference_temperature, "K"),
         );
+        line(&mut out, "crosslinking", &float(a.crosslinking));
+        if let Some(b) = &m.ageing_basis {
+            line(&mut out, "property", &string(&b.property));
+            line(&mut out, "criterion", &string(&b.criterion));
+        }
     }
     if !m.provenance.is_empty() {
         out.push_str("\n[material.provenance]\n");
@@ -171,6 +176,7 @@ mod tests {
             glass_transition: None,
             thermal_expansion: None,
             ageing: None,
+            ageing_basis: None,
             provenance: vec![
                 ("poisson_ratio".into(), "assumed".into()),
                 ("prony".into(), "fitted\nby sealsim".into()),
@@ -219,6 +225,11 @@ mod tests {
             activation_energy: 9e4,
             rate: 1e-9,
             reference_temperature: 373.15,
+            crosslinking: 0.5,
+        });
+        m.ageing_basis = Some(crate::material::AgeingBasis {
+            property: "compression set".into(),
+            criterion: "80 % \"set\"".into(),
         });
         m.provenance.push(("odd key".into(), "x".into()));
         let text = material_toml(&m);
@@ -227,7 +238,7 @@ mod tests {
             "glass_transition = \"2.4315e2 K\"\n",
             "thermal_expansion = \"2.3e-4 1/K\"\n",
             "[material.shift]\nkind = \"wlf\"\nreference_temperature = \"2.9615e2 K\"\nc1 = 8.86\nc2 = \"1.016e2 K\"\n",
-            "[material.ageing]\nactivation_energy = \"9e4 J/mol\"\nrate = \"1e-9 1/s\"\nreference_temperature = \"3.7315e2 K\"\n",
+            "[material.ageing]\nactivation_energy = \"9e4 J/mol\"\nrate = \"1e-9 1/s\"\nreference_temperature = \"3.7315e2 K\"\ncrosslinking = 0.5\nproperty = \"compression set\"\ncriterion = \"80 % \\\"set\\\"\"\n",
             "\"odd key\" = \"x\"\n",
         ] {
             assert!(text.contains(needle), "missing {needle:?} in\n{text}");

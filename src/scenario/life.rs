@@ -11,7 +11,7 @@ use super::validate::{Bound, Field, field};
 use crate::gland::{Gland, GlandDesign, Housing};
 use crate::leak::Fidelity;
 use crate::material::shift::{Cycle, DAY, YEAR};
-use crate::material::{Ageing, Material, Shift, TemperatureHistory};
+use crate::material::{Ageing, BALANCED_CROSSLINKING, Material, Shift, TemperatureHistory};
 use crate::seal::SealGeometry;
 use crate::simulate::{FailureCriteria, Loading, ThermalStrain, TimeGrid};
 use crate::units::{Dimension, show};
@@ -90,6 +90,30 @@ const MIN_RETAINED_FORCE: Field = field(
     "",
     Bound::Open(0.0, 1.0),
 );
+const RETAINED_FORCE_REFERENCE: Field = field(
+    "failure.retained_force_reference",
+    Dimension::TIME,
+    "s",
+    Bound::Range(0.0, MAX_DURATION),
+);
+const MAX_COMPRESSION_SET: Field = field(
+    "failure.max_compression_set",
+    Dimension::DIMENSIONLESS,
+    "",
+    Bound::Open(0.0, 1.0),
+);
+const INSTALLATION_TIME: Field = field(
+    "seal.installation_time",
+    Dimension::TIME,
+    "s",
+    Bound::Range(0.0, 1e6),
+);
+/// ISO 3384 practice: the force 30 min after compression is the reference of the retained
+/// force (docs/model.md §8).
+pub const DEFAULT_RETAINED_FORCE_REFERENCE: f64 = 1800.0;
+/// An O-ring is pressed into its gland, or a flange bolted up, within seconds: the squeeze's
+/// ramp at installation (docs/model.md §5.1).
+pub const DEFAULT_INSTALLATION_TIME: f64 = 1.0;
 const AGEING_ACTIVATION_ENERGY: Field = field(
     "ageing.activation_energy",
     Dimension::MOLAR_ENERGY,
@@ -101,6 +125,12 @@ const AGEING_RATE: Field = field(
     Dimension::FREQUENCY,
     "1/s",
     Bound::Range(1e-30, 1e3),
+);
+const AGEING_CROSSLINKING: Field = field(
+    "ageing.crosslinking",
+    Dimension::DIMENSIONLESS,
+    "",
+    Bound::Range(0.0, 10.0),
 );
 const DURATION: Field = field(
     "simulation.duration",
@@ -551,6 +581,7 @@ impl Source<'_> {
             // the extrusion check is a property of a groove-seated ring: on unless switched off
             return Ok(FailureCriteria {
                 extrusion: true,
+                retained_force_reference: DEFAULT_RETAINED_FORCE_REFERENCE,
                 ..FailureCriteria::default()
             });
         };
@@ -560,10 +591,25 @@ impl Source<'_> {
             max_leaked_volume: self.optional(raw.max_leaked_volume.as_ref(), &MAX_LEAKED_VOLUME)?,
             min_retained_force: self
                 .optional(raw.min_retained_force.as_ref(), &MIN_RETAINED_FORCE)?,
+            retained_force_reference: self
+                .optional(
+                    raw.retained_force_reference.as_ref(),
+                    &RETAINED_FORCE_REFERENCE,
+                )?
+                .unwrap_or(DEFAULT_RETAINED_FORCE_REFERENCE),
+            max_compression_set: self
+                .optional(raw.max_compression_set.as_ref(), &MAX_COMPRESSION_SET)?,
             lift_off: raw.lift_off.as_ref().is_some_and(|b| *b.get_ref()),
             // on unless switched off: it applies to groove-seated rings only
             extrusion: raw.extrusion.as_ref().is_none_or(|b| *b.get_ref()),
         })
+    }
+
+    /// `seal.installation_time` (default [`DEFAULT_INSTALLATION_TIME`]).
+    pub(super) fn installation_time(&self, table: &Spanned<RawSeal>) -> Result<f64, ScenarioError> {
+        Ok(self
+            .optional(table.get_ref().installation_time.as_ref(), &INSTALLATION_TIME)?
+            .unwrap_or(DEFAULT_INSTALLATION_TIME))
     }
 
     /// `[ageing]` (absent: no chemical relaxation): each constant defaults to the material's.
@@ -605,10 +651,15 @@ impl Source<'_> {
                 .map(|a| a.reference_temperature)
                 .ok_or_else(|| missing("reference_temperature"))?,
         };
+        let crosslinking = match &raw.crosslinking {
+            Some(q) => self.quantity(q, &AGEING_CROSSLINKING)?,
+            None => own.map_or(BALANCED_CROSSLINKING, |a| a.crosslinking),
+        };
         Ok(Some(Ageing {
             activation_energy,
             rate,
             reference_temperature,
+            crosslinking,
         }))
     }
 
@@ -797,7 +848,7 @@ squeeze = 0.2
         assert!((cross_section / 3.53e-3 - 1.0).abs() < 1e-15);
         assert_eq!((mean_diameter, squeeze), (0.05, 0.2));
         assert_eq!(life.loading, Loading::Displacement);
-        assert_eq!(life.asperity_modulus, AsperityModulus::Relaxed);
+        assert_eq!(life.asperity_modulus, AsperityModulus::Follow);
         // no [environment]: constant at the WLF reference temperature (23 °C)
         assert!(life.environment.is_constant());
         assert!((life.environment.at(1e6) - 296.15).abs() < 1e-9);
@@ -811,8 +862,16 @@ squeeze = 0.2
             }
         );
         assert_eq!((life.fidelity, life.strips), (Fidelity::Table, 16));
-        // `leak`: Hertz peak of Lindley's force with E0, Lindley's width, π D
-        let e0 = s.material.prony.instantaneous();
+        // `leak`: Hertz peak of Lindley's force with the modulus at the end of the 1 s
+        // installation ramp, E∞ + Σ E_i τ_i (1 − e^{−1 s/τ_i})/1 s, Lindley's width, π D
+        assert_eq!(life.installation_time, 1.0);
+        let prony = &s.material.prony;
+        let e0 = prony.long_term()
+            + prony
+                .terms()
+                .iter()
+                .map(|t| t.modulus * t.tau * -(-1.0 / t.tau).exp_m1())
+                .sum::<f64>();
         let g = 1.25 * 0.2f64.powf(1.5) + 50.0 * 0.2f64.powi(6);
         let b = 3.53e-3 * (1.2 / PI).sqrt();
         let peak = 4.0 * e0 * cross_section * g / (PI * b);
@@ -1106,6 +1165,8 @@ squeeze = 0.2
                 max_leak_rate: Some(1e-9),
                 max_leaked_volume: Some(1e-3),
                 min_retained_force: Some(0.5),
+                retained_force_reference: DEFAULT_RETAINED_FORCE_REFERENCE,
+                max_compression_set: None,
                 lift_off: true,
                 extrusion: true,
             }
@@ -1171,7 +1232,8 @@ squeeze = 0.2
             Some(Ageing {
                 activation_energy: 8e4,
                 rate: 1e-9,
-                reference_temperature: 373.15
+                reference_temperature: 373.15,
+                crosslinking: 1.0,
             })
         );
     }

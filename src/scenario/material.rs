@@ -27,7 +27,9 @@ use super::raw::{
 };
 use super::validate::{Bound, Field, field};
 use crate::contact::Elastic;
-use crate::material::{Ageing, Material, Prony, PronyTerm, Shift, Status};
+use crate::material::{
+    Ageing, AgeingBasis, BALANCED_CROSSLINKING, Material, Prony, PronyTerm, Shift, Status,
+};
 use crate::simulate::AsperityModulus;
 use crate::units::{self, Dimension, show};
 use std::ops::Range;
@@ -115,6 +117,12 @@ const AGEING_RATE: Field = field(
     Dimension::FREQUENCY,
     "1/s",
     Bound::Range(1e-30, 1e3),
+);
+const AGEING_CROSSLINKING: Field = field(
+    "material.ageing.crosslinking",
+    Dimension::DIMENSIONLESS,
+    "",
+    Bound::Range(0.0, 10.0),
 );
 /// A fixed asperity modulus (`asperity_modulus = "3 MPa"`).
 const ASPERITY_MODULUS: Field = field(
@@ -262,11 +270,11 @@ impl Source<'_> {
         Ok((material, elastic, asperity))
     }
 
-    /// `material.asperity_modulus`: `"relaxed"` (default), `"instantaneous"`, `"follow"`, or a
+    /// `material.asperity_modulus`: `"follow"` (default), `"relaxed"`, `"instantaneous"`, or a
     /// fixed modulus (`"3 MPa"`, or a bare number in Pa).
     fn asperity_modulus(&self, raw: &RawMaterial) -> Result<AsperityModulus, ScenarioError> {
         let Some(q) = &raw.asperity_modulus else {
-            return Ok(AsperityModulus::Relaxed);
+            return Ok(AsperityModulus::Follow);
         };
         if let RawQuantity::Text(text) = q.get_ref() {
             match text.trim() {
@@ -339,6 +347,12 @@ impl Source<'_> {
             None => Shift::None,
         };
         let ageing = raw.ageing.as_ref().map(|a| self.ageing(a)).transpose()?;
+        let ageing_basis = raw
+            .ageing
+            .as_ref()
+            .map(|a| self.ageing_basis(a, status != Status::User))
+            .transpose()?
+            .flatten();
         // published or illustrative data must say where every number comes from
         let provenance = self.provenance(raw, status != Status::User)?;
         Ok(Material {
@@ -350,6 +364,7 @@ impl Source<'_> {
             glass_transition,
             thermal_expansion,
             ageing,
+            ageing_basis,
             provenance,
         })
     }
@@ -552,7 +567,40 @@ impl Source<'_> {
                 &raw.reference_temperature,
                 "material.ageing.reference_temperature",
             )?,
+            crosslinking: match &raw.crosslinking {
+                Some(q) => self.quantity(q, &AGEING_CROSSLINKING)?,
+                None => BALANCED_CROSSLINKING,
+            },
         })
+    }
+
+    /// `property` and `criterion` of `[material.ageing]`: both or neither; both required when
+    /// the data make a claim (library files and materials with a `status`).
+    fn ageing_basis(
+        &self,
+        table: &Spanned<RawAgeing>,
+        required: bool,
+    ) -> Result<Option<AgeingBasis>, ScenarioError> {
+        let raw = table.get_ref();
+        match (&raw.property, &raw.criterion) {
+            (Some(p), Some(c)) => Ok(Some(AgeingBasis {
+                property: p.get_ref().clone(),
+                criterion: c.get_ref().clone(),
+            })),
+            (None, None) if !required => Ok(None),
+            (p, _) => {
+                let key = if p.is_none() { "property" } else { "criterion" };
+                Err(self.error(
+                    table.span(),
+                    &format!("material.ageing.{key}"),
+                    format!(
+                        "missing key `{key}` in [material.ageing]: ageing constants that make a \
+                         claim say what they were measured on and to which end-of-life \
+                         criterion (`property` and `criterion`)"
+                    ),
+                ))
+            }
+        }
     }
 
     /// An absolute temperature \[K\]: a bare number in kelvin, or a string with a unit
@@ -714,6 +762,8 @@ c2 = "101.6 K"
 activation_energy = "90 kJ/mol"
 rate = "1e-9 1/s"
 reference_temperature = "100 C"
+property = "test: compression set"
+criterion = "test: 80 % set"
 [material.provenance]
 poisson_ratio = "test: incompressible"
 long_term_modulus = "test: E_inf"
@@ -1012,17 +1062,17 @@ ageing = "test: ageing"
             "ageing = \"x\"\nhardness = \"y\"",
         ));
         assert!(
-            e.contains(":26: material.provenance.hardness: unknown key `hardness`"),
+            e.contains(":28: material.provenance.hardness: unknown key `hardness`"),
             "{e}"
         );
         let e = error(&with(
-            "[material.ageing]\nactivation_energy = \"90 kJ/mol\"\nrate = \"1e-9 1/s\"\nreference_temperature = \"100 C\"\n",
+            "[material.ageing]\nactivation_energy = \"90 kJ/mol\"\nrate = \"1e-9 1/s\"\nreference_temperature = \"100 C\"\nproperty = \"test: compression set\"\ncriterion = \"test: 80 % set\"\n",
             "",
         ));
         assert!(e.contains("material.provenance.ageing: provenance of `ageing`, which this material does not give"), "{e}");
         let e = error(&with("\"test: CTE\"", "\"  \""));
         assert!(
-            e.contains(":24: material.provenance.thermal_expansion: must not be empty"),
+            e.contains(":26: material.provenance.thermal_expansion: must not be empty"),
             "{e}"
         );
     }

@@ -137,13 +137,18 @@ pub(super) struct RawShift {
     pub activation_energy: Option<Quantity>,
 }
 
-/// `[material.ageing]`: Arrhenius chemical stress relaxation.
+/// `[material.ageing]`: two-network chemical ageing with an Arrhenius rate.
 #[derive(Debug, serde::Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct RawAgeing {
     pub activation_energy: Quantity,
     pub rate: Quantity,
     pub reference_temperature: Quantity,
+    pub crosslinking: Option<Quantity>,
+    /// What the constants were measured on (required in library files).
+    pub property: Option<Spanned<String>>,
+    /// The end-of-life criterion of the data (required in library files).
+    pub criterion: Option<Spanned<String>>,
 }
 
 /// A material file (`materials/ID.toml`): one `[material]` table.
@@ -194,6 +199,8 @@ pub(super) struct RawSeal {
     pub loading: Option<Spanned<String>>,
     pub housing_expansion: Option<Quantity>,
     pub installation_temperature: Option<Quantity>,
+    /// The squeeze's ramp at installation (default 1 s).
+    pub installation_time: Option<Quantity>,
     /// A groove-seated O-ring (docs/model.md §6.2): `"face"`, `"piston"` or `"rod"`, and its
     /// ring (`size`, or `cross_section` with `inner_diameter`) and groove.
     pub gland: Option<Spanned<String>>,
@@ -230,6 +237,8 @@ pub(super) struct RawFailure {
     pub max_leak_rate: Option<Quantity>,
     pub max_leaked_volume: Option<Quantity>,
     pub min_retained_force: Option<Quantity>,
+    pub retained_force_reference: Option<Quantity>,
+    pub max_compression_set: Option<Quantity>,
     pub lift_off: Option<Spanned<bool>>,
     pub extrusion: Option<Spanned<bool>>,
 }
@@ -241,6 +250,7 @@ pub(super) struct RawScenarioAgeing {
     pub activation_energy: Option<Quantity>,
     pub rate: Option<Quantity>,
     pub reference_temperature: Option<Quantity>,
+    pub crosslinking: Option<Quantity>,
 }
 
 /// `[numerical]`: grid, band, realisations and seed of the numerical level (docs/model.md §3.5).

@@ -224,6 +224,7 @@ impl Source<'_> {
         let (spectrum, height_map) = self.surface(&raw.surface)?;
         let fluid = self.fluid(raw.fluid.get_ref())?;
         let seal = self.seal(&raw.seal)?;
+        let installation_time = self.installation_time(&raw.seal)?;
         let groove = self.groove_surface(raw.groove_surface.as_ref(), seal.gland.is_some())?;
         let (contact, shape_factor) = match &raw.model {
             Some(model) => self.model(model.get_ref())?,
@@ -256,6 +257,7 @@ impl Source<'_> {
             groove,
             energisation_factor: seal.energisation_factor,
             loading: seal.loading,
+            installation_time,
             environment,
             thermal_strain,
             ageing,

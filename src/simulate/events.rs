@@ -8,6 +8,8 @@ pub enum FailureMode {
     LeakRate,
     LeakedVolume,
     RetainedForce,
+    /// Compression set above its limit (ageing).
+    CompressionSet,
     LiftOff,
     /// The ring extrudes into the clearance gap (docs/model.md §6.3).
     Extrusion,
@@ -19,6 +21,7 @@ impl FailureMode {
             FailureMode::LeakRate => "leak_rate",
             FailureMode::LeakedVolume => "leaked_volume",
             FailureMode::RetainedForce => "retained_force",
+            FailureMode::CompressionSet => "compression_set",
             FailureMode::LiftOff => "lift_off",
             FailureMode::Extrusion => "extrusion",
         }
@@ -40,8 +43,13 @@ pub struct FailureCriteria {
     pub max_leak_rate: Option<f64>,
     /// Cumulative leaked volume above this \[m³\].
     pub max_leaked_volume: Option<f64>,
-    /// Sealing force below this fraction of its value right after installation.
+    /// Sealing force below this fraction of its value at `retained_force_reference`.
     pub min_retained_force: Option<f64>,
+    /// The time after installation the retained force is referred to \[s\] (ISO 3384 practice:
+    /// 30 min; 0: right after installation).
+    pub retained_force_reference: f64,
+    /// Compression set (ASTM D395 definition) above this fraction.
+    pub max_compression_set: Option<f64>,
     /// The fluid pressure opens the contact across the whole width (docs/model.md §3.6).
     pub lift_off: bool,
     /// A groove-seated ring's clearance gap beyond the extrusion chart's limit (§6.3).
@@ -53,8 +61,10 @@ pub struct FailureCriteria {
 pub struct EventInput {
     pub leak_rate: f64,
     pub leaked_volume: f64,
-    /// Sealing force / sealing force right after installation.
+    /// Sealing force / sealing force at the reference time.
     pub retained_force: f64,
+    /// Compression set (0 without ageing).
+    pub compression_set: f64,
     /// Whether the fluid pressure opens the contact.
     pub lifted: bool,
     /// Whether the clearance is beyond the extrusion chart's limit.
@@ -68,15 +78,17 @@ impl FailureCriteria {
         self.max_leak_rate.is_none()
             && self.max_leaked_volume.is_none()
             && self.min_retained_force.is_none()
+            && self.max_compression_set.is_none()
             && !self.lift_off
     }
 
-    const MODES: [FailureMode; 5] = [
+    const MODES: [FailureMode; 6] = [
         FailureMode::LiftOff,
         FailureMode::Extrusion,
         FailureMode::LeakRate,
         FailureMode::LeakedVolume,
         FailureMode::RetainedForce,
+        FailureMode::CompressionSet,
     ];
 
     /// Whether criterion `mode` (if set) has failed in state `x`.
@@ -89,6 +101,9 @@ impl FailureCriteria {
             FailureMode::RetainedForce => self
                 .min_retained_force
                 .is_some_and(|m| x.retained_force < m),
+            FailureMode::CompressionSet => self
+                .max_compression_set
+                .is_some_and(|m| x.compression_set > m),
             FailureMode::LiftOff => self.lift_off && x.lifted,
             FailureMode::Extrusion => self.extrusion && x.extruded,
         }
@@ -168,6 +183,7 @@ mod tests {
             leak_rate: 0.5,
             leaked_volume: 0.0,
             retained_force: 0.9,
+            compression_set: 0.0,
             lifted: false,
             extruded: false,
         };

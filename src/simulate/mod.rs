@@ -1,9 +1,12 @@
 //! The seal-life time loop (docs/model.md §1, §3.2, §5–6, §8).
 //!
+//! The seal is installed by a ramp of the squeeze over `installation_time` (t = 0 is its end).
 //! Each step: temperature T(t) → reduced time ξ (exact for constant T, adaptive quadrature
 //! otherwise) → squeeze ε(t) with thermal strain → exact Prony update of the hereditary
-//! sealing stress on Lindley's squeeze function g(ε) → optional ageing factor
-//! `exp(−∫ k(T) dt)` → nominal pressure profile → asperity modulus → critical junction of each
+//! sealing stress on Lindley's squeeze function g(ε), with the two-network chemical ageing
+//! when `[ageing]` is on ([`RelaxationState::step_aged`]) → nominal pressure profile → asperity
+//! modulus (by default the response to the installation alone, so that at a fixed squeeze the
+//! contact state stays as installed) → critical junction of each
 //! strip (contact table, built once) → leak rate through the strips in series → leaked volume
 //! (integrated as a power law in time between steps, exact for power-law segments) → failure
 //! criteria, located between steps by bisection on the exact state update to ≤ 1e-12 relative
@@ -51,7 +54,7 @@ use crate::fluid::Conduction;
 use crate::interface::{self, HertzContact, HertzMemo, InterfaceFlow, InterfaceSettings};
 use crate::leak::{ContactPath, FlatSeal};
 use crate::material::shift::reduced_time;
-use crate::material::{RelaxationState, Shift};
+use crate::material::{ChemicalStep, RelaxationState, Shift};
 use crate::math::quadrature::gauss_legendre;
 use crate::seal::Profile;
 pub use crate::seal::ThermalStrain;
@@ -106,6 +109,8 @@ struct Snapshot {
     leak_rate: f64,
     state: SealState,
     retained: f64,
+    /// Compression set (ASTM D395 definition) with ageing on.
+    compression_set: Option<f64>,
     /// Leak rate with all critical channels open \[m³/s\] (= `leak_rate` when clean).
     open_leak_rate: f64,
     /// u_c at the peak strip with all channels open \[m\] (0 when sealed there).
@@ -164,39 +169,53 @@ impl InterfaceLeak {
     }
 }
 
-/// The Hertz interface solutions of one surface over a run: memoised in the peak pressure when
-/// σ(e) stays the same over the run (every asperity modulus but `follow`), else solved at each
-/// state from the previous state's flux ratio.
+/// The Hertz interface solutions of one surface over a run, memoised in the reduced peak and
+/// pressure difference ([`HertzMemo`]; the ΔP axis is interpolated only when the asperity
+/// modulus changes over the run, `follow`).
 struct InterfaceSolver {
-    memo: Option<HertzMemo>,
-    /// The flux ratio κ of the last direct solve: the start of the next (nearby) one.
-    warm: std::cell::Cell<Option<f64>>,
+    memo: HertzMemo,
 }
 
 impl InterfaceSolver {
     fn new(problem: &LifeProblem) -> Self {
+        let pressure_spacing = (problem.asperity_modulus == AsperityModulus::Follow)
+            .then_some(interface::MEMO_PRESSURE_SPACING);
         InterfaceSolver {
-            memo: (problem.asperity_modulus != AsperityModulus::Follow)
-                .then(|| HertzMemo::new(interface::MEMO_SPACING)),
-            warm: std::cell::Cell::new(None),
+            memo: HertzMemo::new(interface::MEMO_SPACING, pressure_spacing),
         }
     }
 
     fn solve(
         &self,
-        sigma: &dyn Fn(f64) -> f64,
+        sigma_hat: &dyn Fn(f64) -> f64,
+        e_star: f64,
         contact: HertzContact,
         viscosity: f64,
         dp: f64,
     ) -> interface::HertzSolution {
-        if let Some(memo) = &self.memo {
-            return memo.solve(sigma, contact, viscosity, dp, &INTERFACE);
+        self.memo
+            .solve(sigma_hat, e_star, contact, viscosity, dp, &INTERFACE)
+    }
+}
+
+/// The moduli of the asperity contact for the two parts of the contact pressure \[Pa\]
+/// ([`Simulator::asperity_moduli`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct AsperityModuli {
+    /// For the squeeze's part (held by displacement).
+    squeeze: f64,
+    /// For the fluid's part k_e ΔP − p_f (a load).
+    fluid: f64,
+}
+
+impl AsperityModuli {
+    /// The profile the asperity contact sees at E_fl: the squeeze's scaled by E_fl/E_sq.
+    fn equivalent(&self, profile: &Profile) -> Profile {
+        if self.fluid == self.squeeze {
+            *profile
+        } else {
+            profile.scaled(self.fluid / self.squeeze)
         }
-        let solved = interface::hertz(sigma, contact, dp, &INTERFACE, self.warm.get());
-        if solved.flux_ratio.is_some() {
-            self.warm.set(solved.flux_ratio);
-        }
-        solved
     }
 }
 
@@ -205,9 +224,15 @@ impl InterfaceSolver {
 struct Mechanics {
     time: f64,
     reduced_time: f64,
+    /// The sealing stress's hereditary state on the load variable (with the chemical ageing).
     relaxation: RelaxationState,
-    /// ∫ k(T)/k_ref dt, for the ageing factor.
-    ageing_time: f64,
+    /// The response to the installation alone at a unit load (the same operator): the
+    /// asperity modulus of `follow` for the squeeze's part of the contact pressure.
+    installation: RelaxationState,
+    /// Under a constant unit stress, the equilibrium strain the networks formed since
+    /// installation hold (`y` of the two-network model under creep, \[1/Pa\]): the chemical
+    /// part of the creep compliance ([`Simulator::asperity_moduli`]).
+    creep_set: f64,
     leaked_volume: f64,
     /// ln f, the log of the open fraction of the critical channels (0 when clean; −∞ when
     /// every channel is blocked).
@@ -225,6 +250,8 @@ pub struct Simulator<'a> {
     /// The load variable right after installation (g(ε0) for an O-ring, 1 for a flat seal).
     load0: f64,
     initial_profile: Profile,
+    /// The sealing force per unit length at the retained-force reference time \[N/m\].
+    reference_force: f64,
     creep: crate::material::Creep,
     /// The exact contact path for re-routed clogging (junctions at other thresholds), on a
     /// coarser quadrature ([`REROUTE_QUADRATURE`]).
@@ -277,12 +304,13 @@ impl<'a> Simulator<'a> {
                 DragTable::build(path.exact(), DragSettings::default()),
             )
         });
-        Simulator {
+        let mut simulator = Simulator {
             problem,
             path,
             rule: gauss_legendre(problem.strips.max(2)),
             load0,
             initial_profile,
+            reference_force: initial_profile.force_per_length(),
             creep: problem.material.prony.creep(),
             rerouting,
             reference_memo: std::cell::Cell::new(None),
@@ -295,7 +323,32 @@ impl<'a> Simulator<'a> {
                 _ => None,
             },
             drag,
+        };
+        simulator.reference_force = simulator.force_at_reference();
+        simulator
+    }
+
+    /// The sealing force per unit length at the retained-force reference time (docs/model.md
+    /// §8; ISO 3384 refers compression stress relaxation to the force a stated time after
+    /// compression): the mechanics alone advanced to it along the temperature history \[N/m\].
+    /// Under force loading, the installed force.
+    fn force_at_reference(&self) -> f64 {
+        let p = self.problem;
+        let reference = p.failure.retained_force_reference;
+        if reference <= 0.0 || p.loading == Loading::Force {
+            return self.initial_profile.force_per_length();
         }
+        let mut state = self.installed();
+        for t in self.substeps(0.0, reference) {
+            self.advance_mechanics(&mut state, t);
+            state.time = t;
+        }
+        self.profile_at(&state, reference).force_per_length()
+    }
+
+    /// The sealing force per unit length at the retained-force reference time \[N/m\].
+    pub fn reference_force(&self) -> f64 {
+        self.reference_force
     }
 
     /// Runs the whole life.
@@ -334,23 +387,28 @@ impl<'a> Simulator<'a> {
             rows,
             failure,
             findings,
+            reference_force: self.reference_force,
         }
     }
 
-    /// The mechanical state right after installation (t = 0): an instantaneous jump of the load
-    /// variable.
+    /// The mechanical state right after installation (t = 0): the load variable ramped up
+    /// linearly over the installation time at the temperature T(0) (a jump when it is 0).
     fn installed(&self) -> Mechanics {
         let p = self.problem;
+        let prony = &p.material.prony;
         let mut state = Mechanics {
             time: 0.0,
             reduced_time: 0.0,
-            relaxation: RelaxationState::new(&p.material.prony),
-            ageing_time: 0.0,
+            relaxation: RelaxationState::new(prony),
+            installation: RelaxationState::new(prony),
+            creep_set: 0.0,
             leaked_volume: 0.0,
             log_open_fraction: 0.0,
             clogged_shut: false,
         };
-        state.relaxation.step(&p.material.prony, 0.0, self.load0);
+        let ramp = p.installation_reduced_time();
+        state.relaxation.step(prony, ramp, self.load0);
+        state.installation.step(prony, ramp, 1.0);
         state
     }
 
@@ -360,13 +418,12 @@ impl<'a> Simulator<'a> {
     /// (at the installation's own peak, the same number). Returns the leak rate \[m³/s\] (all
     /// channels open, no drag), the junction where the asperities carry most, and the state.
     pub fn installed_leak(&self, peak: f64) -> (f64, Junction, SealState) {
-        let p = self.problem;
         let state = self.installed();
-        let e_star = self.asperity_modulus(&state) / (1.0 - p.material.poisson_ratio.powi(2));
+        let moduli = self.asperity_moduli(&state);
         let installed = self.profile_at(&state, 0.0);
         let own = installed.peak();
         let squeeze_peak = (peak - (self.contact_peak(&installed) - own)).max(0.0);
-        let leak = self.profile_leak(&installed.scaled(squeeze_peak / own), e_star);
+        let leak = self.profile_leak(&installed.scaled(squeeze_peak / own), moduli);
         (
             leak.leak_rate,
             leak.junction,
@@ -383,13 +440,10 @@ impl<'a> Simulator<'a> {
     /// The nominal pressure profile of `state` at time `t`.
     fn profile_at(&self, state: &Mechanics, t: f64) -> Profile {
         let p = self.problem;
-        let ageing = p
-            .ageing
-            .map_or(1.0, |ag| (-ag.rate * state.ageing_time).exp());
         match p.loading {
             Loading::Displacement => p.geometry.profile(
-                state.relaxation.stress(&p.material.prony) * ageing,
-                p.material.prony.instantaneous(),
+                state.relaxation.stress(&p.material.prony),
+                p.installed_modulus(),
                 p.thermal_strain.as_ref(),
                 p.environment.at(t),
             ),
@@ -397,18 +451,49 @@ impl<'a> Simulator<'a> {
         }
     }
 
+    /// The compression set of `state` (ASTM D395: the part of the compression not recovered,
+    /// here after a full recovery): the set strain y/c of the two-network state, on the squeeze
+    /// through Lindley's g for an O-ring (ε_set = g⁻¹(y/c), over the squeeze at installation),
+    /// the strain itself for a flat seal. `None` without ageing or under force loading.
+    fn compression_set(&self, state: &Mechanics) -> Option<f64> {
+        let p = self.problem;
+        if p.ageing.is_none() || p.loading == Loading::Force {
+            return None;
+        }
+        let set = state.relaxation.set_strain();
+        Some(match p.geometry {
+            crate::seal::SealGeometry::ORing { .. } => {
+                let installed = p
+                    .geometry
+                    .squeeze_at(p.thermal_strain.as_ref(), p.environment.at(0.0));
+                crate::seal::squeeze_from_load(set) / installed
+            }
+            crate::seal::SealGeometry::Flat { .. } => set / self.load0,
+        })
+    }
+
     /// The leak through `profile` with the fluid pressure inside the interface (docs/model.md
     /// §3.6) and the energisation `k_e ΔP` added to the contact pressure (§6.3), with the
-    /// asperity contact's E* `e_star` \[Pa\]: the counterface's interface, plus the groove
-    /// bottom's in parallel for a groove-seated ring. The junction and state are the
-    /// counterface's.
-    fn profile_leak(&self, profile: &Profile, e_star: f64) -> InterfaceLeak {
-        let counterface = self.interface_leak(&self.path, &self.counterface, profile, e_star);
+    /// asperity contact's `moduli`: the counterface's interface, plus the groove bottom's in
+    /// parallel for a groove-seated ring. The junction and state are the counterface's.
+    ///
+    /// The asperity contact sees the squeeze's pressure over its modulus and the fluid's over
+    /// its own, `e/E* = p_sq/E*_sq + (k_e ΔP − p_f)/E*_fl` (docs/model.md §6.1): solved as one
+    /// interface at E*_fl with the squeeze's profile scaled by E_fl/E_sq. Whether the fluid
+    /// lifts the ring off is a balance of stresses, `ΔP ≥ p_max + k_e ΔP`, on the profile itself.
+    fn profile_leak(&self, profile: &Profile, moduli: AsperityModuli) -> InterfaceLeak {
+        let p = self.problem;
+        let e_star = moduli.fluid / (1.0 - p.material.poisson_ratio.powi(2));
+        let equivalent = moduli.equivalent(profile);
+        let lifted = p.fluid.pressure_difference > 0.0
+            && p.fluid.pressure_difference >= self.contact_peak(profile);
+        let interface = |path: &ContactPath, solver: &InterfaceSolver| {
+            self.interface_leak(path, solver, &equivalent, e_star, lifted)
+        };
+        let counterface = interface(&self.path, &self.counterface);
         let groove = match (&self.problem.groove, &self.groove) {
             (GrooveInterface::Counterface, _) => counterface.leak_rate,
-            (GrooveInterface::Own(_), Some((path, solver))) => {
-                self.interface_leak(path, solver, profile, e_star).leak_rate
-            }
+            (GrooveInterface::Own(_), Some((path, solver))) => interface(path, solver).leak_rate,
             _ => 0.0,
         };
         InterfaceLeak {
@@ -421,19 +506,21 @@ impl<'a> Simulator<'a> {
     /// critical junction where the asperities carry most (the peak of a Hertz profile less the
     /// fluid pressure there; a uniform contact's outlet), and whether it lifted off. Where ΔP is
     /// negligible against the contact pressure (≤ 1e-8 of it) the strips in series at the
-    /// contact pressure (§3.2). Lifted off: the leak at the onset of lift-off, a lower bound
-    /// ([`Self::onset_leak`]).
+    /// contact pressure (§3.2). Lifted off (by the model, or `lifted` by the stresses): the leak
+    /// at the onset of lift-off, a lower bound ([`Self::onset_leak`]).
     fn interface_leak(
         &self,
         path: &ContactPath,
         solver: &InterfaceSolver,
         profile: &Profile,
         e_star: f64,
+        lifted: bool,
     ) -> InterfaceLeak {
         let p = self.problem;
         let dp = p.fluid.pressure_difference;
         let offset = p.energisation_factor * dp;
-        let sigma = |e: f64| path.conductance(e / e_star, p.shape_factor, p.fluid.viscosity);
+        let sigma_hat = |s: f64| path.conductance(s, p.shape_factor, p.fluid.viscosity);
+        let sigma = |e: f64| sigma_hat(e / e_star);
         let geometry = profile.geometry(p.geometry.sealing_length());
         let series = || {
             let resistance = profile.series_resistance(&self.rule, |pc| sigma(pc + offset));
@@ -442,6 +529,13 @@ impl<'a> Simulator<'a> {
         };
         let top = profile.peak() + offset;
         let junction_at = |e: f64| (path.critical_junction(e.max(0.0) / e_star), e.max(0.0));
+        if lifted {
+            return InterfaceLeak::new(
+                self.onset_leak(&sigma, profile, offset),
+                junction_at(top),
+                true,
+            );
+        }
         if dp <= NEGLIGIBLE_PRESSURE_RATIO * top {
             return InterfaceLeak::new(series(), junction_at(top), false);
         }
@@ -456,7 +550,7 @@ impl<'a> Simulator<'a> {
                     offset,
                     width,
                 };
-                let solved = solver.solve(&sigma, contact, p.fluid.viscosity, dp);
+                let solved = solver.solve(&sigma_hat, e_star, contact, p.fluid.viscosity, dp);
                 (solved.flow, junction_at(top - solved.centre_fluid_pressure))
             }
         };
@@ -579,10 +673,11 @@ impl<'a> Simulator<'a> {
         out
     }
 
-    /// Advances the mechanical state to time `t` (exact for strain linear in ξ over the step).
-    /// Returns the snapshot at the new time (computed once: the leaked volume needs it).
-    fn advance(&self, state: &mut Mechanics, t: f64, before: &Snapshot) -> Snapshot {
+    /// Advances the hereditary states from `state.time` to `t` (exact for strain linear in ξ
+    /// over the step, and at constant strain for the chemical ageing); leaves `state.time`.
+    fn advance_mechanics(&self, state: &mut Mechanics, t: f64) {
         let p = self.problem;
+        let prony = &p.material.prony;
         let (a, b) = (state.time, t);
         let d_xi = reduced_time(&p.environment, &p.material.shift, a, b);
         let d_load = match p.loading {
@@ -593,15 +688,48 @@ impl<'a> Simulator<'a> {
             }
             Loading::Force => 0.0,
         };
-        state.relaxation.step(&p.material.prony, d_xi, d_load);
+        let chem = match &p.ageing {
+            Some(ag) => {
+                let arrhenius = Shift::Arrhenius {
+                    reference: ag.reference_temperature,
+                    activation_energy: ag.activation_energy,
+                };
+                ChemicalStep {
+                    scission: ag.rate * reduced_time(&p.environment, &arrhenius, a, b),
+                    crosslinking: ag.crosslinking,
+                }
+            }
+            None => ChemicalStep {
+                scission: 0.0,
+                crosslinking: 0.0,
+            },
+        };
+        let network_before = state.relaxation.network();
+        state.relaxation.step_aged(prony, d_xi, d_load, chem);
+        state.installation.step_aged(prony, d_xi, 0.0, chem);
         state.reduced_time += d_xi;
-        if let Some(ag) = &p.ageing {
-            let arrhenius = Shift::Arrhenius {
-                reference: ag.reference_temperature,
-                activation_energy: ag.activation_energy,
+        let e_inf = prony.long_term();
+        if chem.scission > 0.0 && e_inf > 0.0 {
+            // under σ = 1: x = (1/E∞ + y)/c and dy/dK = r x − y = r/(E∞ c) + (r/c − 1) y,
+            // solved with c at the step's middle (exact for r = 1, where c = 1: y = K/E∞)
+            let (r, d_k) = (chem.crosslinking, chem.scission);
+            let c = 0.5 * (network_before + state.relaxation.network());
+            let (a, b) = (r / (e_inf * c), r / c - 1.0);
+            let y = state.creep_set;
+            state.creep_set = if (b * d_k).abs() < 1e-12 {
+                y + a * d_k
+            } else {
+                (y + a / b) * (b * d_k).exp() - a / b
             };
-            state.ageing_time += reduced_time(&p.environment, &arrhenius, a, b);
         }
+    }
+
+    /// Advances the mechanical state to time `t` (exact for strain linear in ξ over the step).
+    /// Returns the snapshot at the new time (computed once: the leaked volume needs it).
+    fn advance(&self, state: &mut Mechanics, t: f64, before: &Snapshot) -> Snapshot {
+        let (a, b) = (state.time, t);
+        self.advance_mechanics(state, t);
+        let p = self.problem;
         let after = match &p.contamination {
             None => self.snapshot_at(state, b),
             Some(c) => {
@@ -634,10 +762,12 @@ impl<'a> Simulator<'a> {
         let p = self.problem;
         let temperature = p.environment.at(t);
         let profile = self.profile_at(state, t);
-        let retained = profile.force_per_length() / self.initial_profile.force_per_length();
-        let e_asperity = self.asperity_modulus(state);
+        let retained = profile.force_per_length() / self.reference_force;
+        let moduli = self.asperity_moduli(state);
+        let e_asperity = moduli.fluid;
         let e_star = e_asperity / (1.0 - p.material.poisson_ratio.powi(2));
-        let leak = self.profile_leak(&profile, e_star);
+        let leak = self.profile_leak(&profile, moduli);
+        let equivalent = moduli.equivalent(&profile);
         let (leak_rate, peak_junction) = (leak.leak_rate, leak.junction);
         // the junction's own reduced pressure (the energised peak less the fluid pressure there)
         let junction_s = leak.junction_pressure / e_star;
@@ -662,7 +792,7 @@ impl<'a> Simulator<'a> {
                         poisson_ratio: p.material.poisson_ratio,
                     },
                     FlatSeal {
-                        nominal_pressure: self.contact_peak(&profile),
+                        nominal_pressure: self.contact_peak(&equivalent),
                         width: profile.width(),
                         length: p.geometry.sealing_length(),
                     },
@@ -681,6 +811,7 @@ impl<'a> Simulator<'a> {
                 }
             }
         };
+        let compression_set = self.compression_set(state);
         let state = leak.state_with(leak_rate);
         let leak_rate = if leak_rate.is_finite() {
             leak_rate
@@ -695,6 +826,7 @@ impl<'a> Simulator<'a> {
             leak_rate,
             state,
             retained,
+            compression_set,
             open_leak_rate: leak_rate,
             open_u_c: u_c.unwrap_or(0.0),
             lambda_c,
@@ -712,16 +844,41 @@ impl<'a> Simulator<'a> {
         profile.peak() + p.energisation_factor * p.fluid.pressure_difference
     }
 
-    fn asperity_modulus(&self, state: &Mechanics) -> f64 {
+    /// The moduli the asperity contact sees (docs/model.md §6.1). `follow`: the squeeze's part
+    /// of the contact pressure is held by displacement, so its modulus is the stress response to
+    /// the installation alone per unit load (P0/E* then stays as installed at a fixed squeeze,
+    /// ageing included); the fluid's part (and all of a force-loaded seal's) is a load held
+    /// since t = 0, so its modulus is 1/J, the creep compliance J(ξ) with the two-network
+    /// ageing's chemical creep: `J_aged = J(ξ) − 1/E∞ + (1/E∞ + y)/c` (y = `creep_set`, c the
+    /// crosslink fraction; J(ξ) unaged). The other options use one fixed modulus for both.
+    fn asperity_moduli(&self, state: &Mechanics) -> AsperityModuli {
         let prony = &self.problem.material.prony;
+        let one = |e: f64| AsperityModuli {
+            squeeze: e,
+            fluid: e,
+        };
         match self.problem.asperity_modulus {
-            AsperityModulus::Relaxed => prony.long_term(),
-            AsperityModulus::Instantaneous => prony.instantaneous(),
-            AsperityModulus::Fixed(e) => e,
-            AsperityModulus::Follow => match self.problem.loading {
-                Loading::Displacement => prony.relaxation(state.reduced_time),
-                Loading::Force => 1.0 / self.creep.compliance(state.reduced_time),
-            },
+            AsperityModulus::Relaxed => one(prony.long_term()),
+            AsperityModulus::Instantaneous => one(prony.instantaneous()),
+            AsperityModulus::Fixed(e) => one(e),
+            AsperityModulus::Follow => {
+                let compliance = self.creep.compliance(state.reduced_time);
+                let e_inf = prony.long_term();
+                let c = state.relaxation.network();
+                let aged = if e_inf > 0.0 && (c != 1.0 || state.creep_set != 0.0) {
+                    compliance - 1.0 / e_inf + (1.0 / e_inf + state.creep_set) / c
+                } else {
+                    compliance
+                };
+                let fluid = 1.0 / aged;
+                match self.problem.loading {
+                    Loading::Displacement => AsperityModuli {
+                        squeeze: state.installation.stress(prony),
+                        fluid,
+                    },
+                    Loading::Force => one(fluid),
+                }
+            }
         }
     }
 
@@ -740,6 +897,7 @@ impl<'a> Simulator<'a> {
             leak_rate: snap.leak_rate,
             leaked_volume: state.leaked_volume,
             state: snap.state,
+            compression_set: snap.compression_set,
             open_fraction: snap.open_fraction,
             motion: snap.motion,
         }
@@ -826,6 +984,7 @@ impl Snapshot {
             leak_rate: self.leak_rate,
             leaked_volume,
             retained_force: self.retained,
+            compression_set: self.compression_set.unwrap_or(0.0),
             lifted: self.state == SealState::LiftOff,
             extruded: self.extrusion.is_some_and(|(ratio, _)| ratio > 1.0),
         }

@@ -17,15 +17,19 @@ use crate::validity::{self, At, Findings};
 /// The time scale of a Shore A reading \[s\] (the hardness the extrusion chart is drawn for).
 const HARDNESS_TEST_TIME: f64 = 3.0;
 
-/// Which modulus the asperity contact sees (docs/model.md §6).
+/// Which modulus the asperity contact sees (docs/model.md §6.1).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum AsperityModulus {
-    /// E∞, the low-frequency modulus PY08 uses (conservative). The default.
+    /// E∞, the low-frequency modulus PY08 uses for a seal at rest since long: at a relaxing
+    /// sealing pressure it *under*-predicts the leak (not conservative).
     Relaxed,
-    /// E0.
+    /// E0 (with a series through the glass transition: the glassy modulus).
     Instantaneous,
-    /// The bulk's own relaxation: E(ξ(t)) under displacement loading, 1/J(ξ(t)) under force
-    /// loading (the contact creeps under a constant load).
+    /// The bulk's own relaxation, consistent with linear viscoelasticity (the default): under
+    /// displacement loading the stress response to the installation alone (E(ξ(t)) after an
+    /// instantaneous installation, with the chemical ageing), so that at a fixed squeeze P0/E*
+    /// and the whole gap field stay as installed; under force loading 1/J(ξ(t)) (the contact
+    /// creeps under a constant load).
     Follow,
     /// A fixed modulus \[Pa\].
     Fixed(f64),
@@ -96,6 +100,10 @@ pub struct LifeProblem {
     /// the width (docs/model.md §6.3; 1 for a groove-seated ring by default, 0 otherwise).
     pub energisation_factor: f64,
     pub loading: Loading,
+    /// The time over which the squeeze is applied at installation \[s\] (a linear ramp ending
+    /// at t = 0; 0: a jump, which a series through the glass transition answers with the
+    /// glassy modulus).
+    pub installation_time: f64,
     pub environment: TemperatureHistory,
     pub thermal_strain: Option<ThermalStrain>,
     pub ageing: Option<Ageing>,
@@ -117,13 +125,33 @@ impl LifeProblem {
     pub fn initial_profile(&self) -> Profile {
         let t0 = self.environment.at(0.0);
         let thermal = self.thermal_strain.as_ref();
-        let e0 = self.material.prony.instantaneous();
+        let e_install = self.installed_modulus();
         self.geometry.profile(
-            e0 * self.geometry.load_variable(thermal, t0),
-            e0,
+            e_install * self.geometry.load_variable(thermal, t0),
+            e_install,
             thermal,
             t0,
         )
+    }
+
+    /// The installation ramp in reduced time at T(0): `installation_time / a_T(T(0))`.
+    pub fn installation_reduced_time(&self) -> f64 {
+        let a_t = self.material.shift.factor(self.environment.at(0.0));
+        if self.installation_time > 0.0 && a_t.is_finite() {
+            self.installation_time / a_t
+        } else {
+            0.0
+        }
+    }
+
+    /// The stress at the end of the installation ramp per unit load \[Pa\]:
+    /// `E∞ + Σ E_i φ(ξ_r/τ_i)`, ξ_r the ramp in reduced time, φ(x) = (1 − e^{−x})/x (E0 for an
+    /// instantaneous installation). A flat seal's `nominal_pressure` is the pressure then.
+    pub fn installed_modulus(&self) -> f64 {
+        let prony = &self.material.prony;
+        let mut state = crate::material::RelaxationState::new(prony);
+        state.step(prony, self.installation_reduced_time(), 1.0);
+        state.stress(prony)
     }
 
     /// Records the findings of the installation state (t = 0) into `out`: the temperature
@@ -194,6 +222,8 @@ pub struct HistoryRow {
     pub leak_rate: f64,
     pub leaked_volume: f64,
     pub state: SealState,
+    /// Compression set (ASTM D395 definition, after a full recovery) with ageing on.
+    pub compression_set: Option<f64>,
     /// Open fraction f of the critical channels (1 without contamination).
     pub open_fraction: f64,
     /// `[motion]`: drag, film, speed bound and stroke volumes at the peak strip (`None` for a
@@ -211,6 +241,8 @@ pub struct LifeResult {
     /// The validity limits crossed during the run, each once with its worst value and when
     /// (docs/model.md §9.11).
     pub findings: Findings,
+    /// The sealing force per unit length at the retained-force reference time \[N/m\].
+    pub reference_force: f64,
 }
 
 impl LifeResult {

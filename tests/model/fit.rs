@@ -485,6 +485,11 @@ fn material_toml_round_trips_through_the_parser() {
             activation_energy: 9e4,
             rate: 1e-9,
             reference_temperature: 373.15,
+            crosslinking: 1.0,
+        }),
+        ageing_basis: Some(sealsim::material::AgeingBasis {
+            property: "compression stress relaxation".into(),
+            criterion: "50 % force retained".into(),
         }),
         provenance: [
             "poisson_ratio",
@@ -512,6 +517,7 @@ fn material_toml_round_trips_through_the_parser() {
             activation_energy: 123_456.7,
         },
         ageing: None,
+        ageing_basis: None,
         glass_transition: None,
         provenance: Vec::new(),
         ..full.clone()

@@ -221,36 +221,47 @@ fn a_uniform_step_and_its_separable_solution_agree() {
 
 #[test]
 fn the_memo_interpolates_the_direct_solutions() {
-    // the life loop's memo (nodes 1/128 apart in ln p_max) against direct solves, with and without
-    // energisation, over a sweep of peaks that are not nodes: below the 128-step shooting's own
-    // error (8.4e-7)
-    use sealsim::interface::{HertzMemo, MEMO_SPACING};
-    let (path, e_star) = paper_path(Fidelity::Table);
+    // the life loop's memo against direct solves, with and without energisation, over a sweep
+    // of peaks that are not nodes: with a constant E* (nodes 1/128 apart in ln p̂, one ΔP̂) and
+    // with E* changing over a factor 20 (the `follow` asperity modulus: nodes 1/16 apart in
+    // ln ΔP̂ too) — both below the 128-step shooting's own error (8.4e-7)
+    use sealsim::interface::{HertzMemo, MEMO_PRESSURE_SPACING, MEMO_SPACING};
+    let (path, e_star0) = paper_path(Fidelity::Table);
     let viscosity = 2e-3;
-    let sigma = |e: f64| sigma_of(&path, e_star)(e) * ETA / viscosity;
+    let sigma_hat = |s: f64| sigma_of(&path, 1.0)(s) * ETA / viscosity;
     let set = InterfaceSettings {
         steps: 128,
         ..InterfaceSettings::default()
     };
     let dp = 5e4;
-    for k_e in [0.0, 1.0] {
-        let memo = HertzMemo::new(MEMO_SPACING);
+    let resistance = |s: interface::HertzSolution| match s.flow {
+        InterfaceFlow::Conducting(Conduction::Series { resistance }) => resistance,
+        other => panic!("{other:?}"),
+    };
+    for (k_e, varying) in [(0.0, false), (1.0, false), (0.0, true), (1.0, true)] {
+        let memo = HertzMemo::new(MEMO_SPACING, varying.then_some(MEMO_PRESSURE_SPACING));
         let mut worst: f64 = 0.0;
         for i in 0..40 {
+            // E* from e_star0 up to 20 e_star0, with the peak in proportion (a fixed squeeze)
+            // and a little more, so that both p̂ and ΔP̂ move between nodes
+            let scale = if varying {
+                20f64.powf(i as f64 / 39.0)
+            } else {
+                1.0
+            };
+            let e_star = e_star0 * scale;
             let contact = HertzContact {
-                peak: 0.2e6 * (1.0 + 0.0371 * i as f64),
+                peak: 0.2e6 * scale * (1.0 + 0.0371 * i as f64),
                 offset: k_e * dp,
                 width: 1.3e-3,
             };
-            let resistance = |s: interface::HertzSolution| match s.flow {
-                InterfaceFlow::Conducting(Conduction::Series { resistance }) => resistance,
-                other => panic!("{other:?}"),
-            };
+            let sigma = |e: f64| sigma_hat(e / e_star);
             let direct = resistance(hertz(&sigma, contact, dp, &set, None));
-            let memoised = resistance(memo.solve(&sigma, contact, viscosity, dp, &set));
+            let memoised =
+                resistance(memo.solve(&sigma_hat, e_star, contact, viscosity, dp, &set));
             worst = worst.max((memoised / direct - 1.0).abs());
         }
-        assert!(worst < 1e-6, "k_e = {k_e}: {worst:e}");
-        eprintln!("memo vs direct, k_e = {k_e}: {worst:e}");
+        assert!(worst < 1e-6, "k_e = {k_e}, E* varying {varying}: {worst:e}");
+        eprintln!("memo vs direct, k_e = {k_e}, E* varying {varying}: {worst:e}");
     }
 }

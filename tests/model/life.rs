@@ -35,6 +35,7 @@ fn material(long_term: f64, terms: &[(f64, f64)], shift: Shift) -> Material {
         glass_transition: None,
         thermal_expansion: None,
         ageing: None,
+        ageing_basis: None,
         provenance: Vec::new(),
     }
 }
@@ -59,6 +60,8 @@ fn oring_problem(material: Material) -> LifeProblem {
         groove: GrooveInterface::None,
         energisation_factor: 0.0,
         loading: Loading::Displacement,
+        // an instantaneous installation: the closed forms below start from E0
+        installation_time: 0.0,
         environment: TemperatureHistory::constant(TREF),
         thermal_strain: None,
         ageing: None,
