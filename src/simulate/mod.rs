@@ -422,8 +422,14 @@ impl<'a> Simulator<'a> {
         let moduli = self.asperity_moduli(&state);
         let installed = self.profile_at(&state, 0.0);
         let own = installed.peak();
-        let squeeze_peak = (peak - (self.contact_peak(&installed) - own)).max(0.0);
-        let leak = self.profile_leak(&installed.scaled(squeeze_peak / own), moduli);
+        let energised = self.contact_peak(&installed);
+        // at the installation's own peak the very profile of the run's first row (bit for bit)
+        let profile = if peak == energised {
+            installed
+        } else {
+            installed.scaled((peak - (energised - own)).max(0.0) / own)
+        };
+        let leak = self.profile_leak(&profile, moduli);
         (
             leak.leak_rate,
             leak.junction,

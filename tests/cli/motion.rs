@@ -242,8 +242,8 @@ fn rod_seal_run_reports_the_stroke_volumes() {
     );
     for line in lines {
         let cells: Vec<&str> = line.split(',').collect();
-        assert_eq!(cells.len(), 15, "{line}");
-        let (leak_rate, drag, net) = (num(cells[9]), num(cells[13]), num(cells[14]));
+        assert_eq!(cells.len(), 16, "{line}");
+        let (leak_rate, drag, net) = (num(cells[9]), num(cells[14]), num(cells[15]));
         assert!(drag > 0.0, "{line}");
         assert!(rel(net, 2.0 * leak_rate) < 1e-9 || net == 0.0, "{line}");
     }
@@ -302,8 +302,8 @@ fn wiper_run_includes_the_drag_in_the_leak_rate() {
     );
     for line in lines {
         let cells: Vec<&str> = line.split(',').collect();
-        assert_eq!(cells.len(), 14);
-        assert_eq!(cells[9], cells[13], "ΔP = 0: the leak is the drag");
+        assert_eq!(cells.len(), 15);
+        assert_eq!(cells[9], cells[14], "ΔP = 0: the leak is the drag");
         assert_eq!(cells[11], "leaking");
     }
     let json: Value = serde_json::from_str(&fs::read_to_string(&s).unwrap()).unwrap();
