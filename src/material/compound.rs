@@ -73,7 +73,7 @@ impl Status {
     }
 }
 
-/// Chemical ageing by the two-network model (docs/model.md §5.3; Andrews, Tobolsky & Hanson,
+/// Chemical ageing by the two-network model (docs/model.md §6.5; Andrews, Tobolsky & Hanson,
 /// J. Appl. Phys. 17 (1946) 352): the original network breaks at the Arrhenius rate
 /// `k(T) = k_ref exp(−(Ea/R)(1/T − 1/T_ref))` \[1/s\] (ISO 11346 practice), and a new network
 /// forms at `r·k(T)` in the deformed state ([`crate::material::RelaxationState::step_aged`]).

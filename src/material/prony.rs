@@ -287,7 +287,7 @@ impl Creep {
 /// `σ = E∞ ε + Σ h_i`. Unconditionally stable and exact for piecewise-linear strain.
 ///
 /// With chemical ageing ([`Self::step_aged`]) the state is that of the two-network model
-/// (docs/model.md §5.3): the original network breaks at the scission rate k_s, a new network
+/// (docs/model.md §6.5): the original network breaks at the scission rate k_s, a new network
 /// forms at `r·k_s` in the state the rubber is in when it forms and carries stress only for
 /// strain changes after its formation. With K = ∫k_s dt, the crosslink fraction
 /// c (`c' = k_s (r − c)`, c(0) = 1) and the set reference y (`y' = k_s (r ε − y)`, y(0) = 0):

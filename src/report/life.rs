@@ -32,7 +32,7 @@ use serde::Serialize;
 ///   clogging (docs/model.md §7), always written (1 without `[contamination]`) so that the schema is
 ///   one;
 /// * `compression_set` is the compression set (ASTM D395 definition, a fraction) of the
-///   two-network ageing model (docs/model.md §5.3), blank without `[ageing]`.
+///   two-network ageing model (docs/model.md §6.5), blank without `[ageing]`.
 pub const HISTORY_COLUMNS: [&str; 14] = [
     "time_s",
     "temperature_K",
