@@ -18,6 +18,7 @@
 //! prony = [ { modulus = "6 MPa", tau = "1000 h" }, { modulus = 1.5e6, tau = 3600 } ]   # E_i > 0, τ_i > 0 (time)
 //! glass_transition = "-30 C"                # optional, absolute temperature (parse_temperature)
 //! thermal_expansion = "2.3e-4 1/K"          # optional, linear CTE, > 0 (Dimension::THERMAL_EXPANSION)
+//! glassy_thermal_expansion = "7.7e-5 1/K"   # optional, linear CTE below glass_transition, > 0; absent = thermal_expansion
 //! [material.shift]                          # optional; absent = no temperature dependence
 //! kind = "wlf"                              # "wlf" | "arrhenius"
 //! reference_temperature = "23 C"            # absolute temperature
@@ -30,11 +31,13 @@
 //! reference_temperature = "100 C"
 //! [material.provenance]                     # string per parameter; REQUIRED in library files for every
 //! poisson_ratio = "..."                     # parameter present: poisson_ratio, long_term_modulus (or youngs_modulus),
-//! long_term_modulus = "..."                 # prony, shift, glass_transition, thermal_expansion, ageing
+//! long_term_modulus = "..."                 # prony, shift, glass_transition, thermal_expansion,
+//!                                           # glassy_thermal_expansion, ageing
 //! prony = "..."
 //! shift = "..."
 //! glass_transition = "..."
 //! thermal_expansion = "..."
+//! glassy_thermal_expansion = "..."
 //! ageing = "..."
 //! ```
 //! Rules: exactly one of `youngs_modulus` or (`long_term_modulus` with optional `prony`) [prony without
@@ -47,6 +50,17 @@
 //! `provenance: Vec<(String, String)>`.
 
 use super::{Prony, Shift};
+
+/// Time after applying the torque at which a Gehman reading is taken \[s\] (ASTM D1053 /
+/// ISO 1432; see [`Material::low_temperature_limit`]).
+pub const GEHMAN_READING_TIME: f64 = 10.0;
+
+/// The room temperature of the Gehman test's reference reading, 23 °C \[K\].
+pub const GEHMAN_ROOM_TEMPERATURE: f64 = 296.15;
+
+/// The stiffening ratio that defines the low-temperature limit T10 (modulus 10 × its value at
+/// 23 °C).
+pub const T10_RATIO: f64 = 10.0;
 
 /// Whether a compound's data are measured and published, or estimated.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -93,8 +107,11 @@ pub struct Material {
     pub shift: Shift,
     /// Glass transition temperature T_g \[K\].
     pub glass_transition: Option<f64>,
-    /// Linear thermal expansion coefficient \[1/K\].
+    /// Linear thermal expansion coefficient \[1/K\] (rubbery: above `glass_transition`).
     pub thermal_expansion: Option<f64>,
+    /// Linear thermal expansion coefficient below `glass_transition` (glassy) \[1/K\]; `None`:
+    /// `thermal_expansion` at every temperature ([`crate::seal::ThermalStrain`]).
+    pub glassy_thermal_expansion: Option<f64>,
     pub ageing: Option<Ageing>,
     /// (parameter key, where its value came from), in file order.
     pub provenance: Vec<(String, String)>,
@@ -115,9 +132,66 @@ impl Material {
             shift: Shift::None,
             glass_transition: None,
             thermal_expansion: None,
+            glassy_thermal_expansion: None,
             ageing: None,
             provenance: Vec::new(),
         })
+    }
+
+    /// The TR-10-like low-temperature limit T10 \[K\]: the temperature at which the modulus read
+    /// at the time scale of a Gehman test is [`T10_RATIO`] = 10 times its value at 23 °C,
+    ///
+    /// `E(t_G / a_T(T10)) = 10 · E(t_G / a_T(23 °C))`, t_G = [`GEHMAN_READING_TIME`] = 10 s,
+    ///
+    /// with E the relaxation modulus in reduced time (the apparent torsional modulus of the
+    /// test is a shear modulus, G = E/3 for an incompressible rubber: the ratio is the same).
+    /// The Gehman test (ASTM D1053, ISO 1432) measures the relative torsional stiffness of a
+    /// rubber strip from low temperatures up to room temperature, and T2, T5, T10, T100 are
+    /// the temperatures at which it is 2, 5, 10, 100 times the 23 °C value. Only the scope of
+    /// ISO 1432 (a torsional relative-stiffness test from room temperature to about −120 °C)
+    /// and of ASTM D1053 (stiffening at low temperatures) could be read here; the 10 s
+    /// reading time and the ratio definition are recalled, not confirmed from the standards.
+    ///
+    /// Found by bisection on T between the WLF frozen limit `Tref − C2` (1 K for an Arrhenius
+    /// shift) and 23 °C: E(t_G/a_T(T)) decreases monotonically with T there. `None` when the
+    /// material has no shift, when 23 °C is at or below the frozen limit, or when the modulus
+    /// never reaches 10 × (E0 < 10 E(23 °C), e.g. a series without a glassy plateau).
+    pub fn low_temperature_limit(&self) -> Option<f64> {
+        let room = GEHMAN_ROOM_TEMPERATURE;
+        let lower = match self.shift {
+            Shift::None => return None,
+            Shift::Wlf { .. } => self.shift.frozen_below()?,
+            Shift::Arrhenius { .. } => 1.0,
+        };
+        if lower >= room {
+            return None;
+        }
+        let target = T10_RATIO * self.gehman_modulus(room);
+        // the modulus at the frozen limit is E0, the largest value it takes
+        if !(self.gehman_modulus(lower) >= target) {
+            return None;
+        }
+        // invariant: E(lo) ≥ target > E(hi)
+        let (mut lo, mut hi) = (lower, room);
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
+            }
+            if self.gehman_modulus(mid) >= target {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        Some(0.5 * (lo + hi))
+    }
+
+    /// The modulus read at the Gehman time scale at temperature `t` \[K\]:
+    /// `E(t_G / a_T(t))` \[Pa\] (E0 when frozen).
+    pub fn gehman_modulus(&self, t: f64) -> f64 {
+        let xi = GEHMAN_READING_TIME * self.shift.ln_rate(t).exp();
+        self.prony.relaxation(xi)
     }
 
     /// The provenance of `key`, if recorded.

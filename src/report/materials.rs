@@ -238,6 +238,13 @@ pub fn describe(id: &str, m: &Material) -> String {
             &[],
         );
     }
+    if let Some(alpha) = m.glassy_thermal_expansion {
+        param(
+            "glassy_thermal_expansion",
+            format!("α_g = {} 1/K (linear, below T_g)", human(alpha, 6)),
+            &[],
+        );
+    }
     if let Some(a) = m.ageing {
         param(
             "ageing",

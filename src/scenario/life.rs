@@ -447,6 +447,8 @@ impl Source<'_> {
             installation_temperature: seal
                 .installation_temperature
                 .unwrap_or_else(|| environment.at(0.0)),
+            glassy_expansion: material.glassy_thermal_expansion,
+            glass_transition: material.glass_transition,
         }))
     }
 

@@ -36,7 +36,7 @@ use toml::Spanned;
 
 /// The parameters that carry a provenance, in schema order (the keys of
 /// `[material.provenance]`).
-pub const PARAMETERS: [&str; 8] = [
+pub const PARAMETERS: [&str; 9] = [
     "poisson_ratio",
     "youngs_modulus",
     "long_term_modulus",
@@ -44,6 +44,7 @@ pub const PARAMETERS: [&str; 8] = [
     "shift",
     "glass_transition",
     "thermal_expansion",
+    "glassy_thermal_expansion",
     "ageing",
 ];
 
@@ -81,6 +82,13 @@ const TERM_TAU: Field = field(
 );
 const THERMAL_EXPANSION: Field = field(
     "material.thermal_expansion",
+    Dimension::THERMAL_EXPANSION,
+    "1/K",
+    Bound::Range(1e-8, 1e-2),
+);
+/// The linear CTE below T_g (glassy); used by the O-ring thermal strain below `glass_transition`.
+const GLASSY_THERMAL_EXPANSION: Field = field(
+    "material.glassy_thermal_expansion",
     Dimension::THERMAL_EXPANSION,
     "1/K",
     Bound::Range(1e-8, 1e-2),
@@ -334,6 +342,11 @@ impl Source<'_> {
             .as_ref()
             .map(|q| self.quantity(q, &THERMAL_EXPANSION))
             .transpose()?;
+        let glassy_thermal_expansion = raw
+            .glassy_thermal_expansion
+            .as_ref()
+            .map(|q| self.quantity(q, &GLASSY_THERMAL_EXPANSION))
+            .transpose()?;
         let shift = match &raw.shift {
             Some(shift) => self.shift(shift)?,
             None => Shift::None,
@@ -349,6 +362,7 @@ impl Source<'_> {
             shift,
             glass_transition,
             thermal_expansion,
+            glassy_thermal_expansion,
             ageing,
             provenance,
         })
@@ -681,6 +695,10 @@ fn present_keys(raw: &RawMaterial) -> Vec<(&'static str, Range<usize>)> {
         ("shift", raw.shift.as_ref().map(Spanned::span)),
         ("glass_transition", quantity(&raw.glass_transition)),
         ("thermal_expansion", quantity(&raw.thermal_expansion)),
+        (
+            "glassy_thermal_expansion",
+            quantity(&raw.glassy_thermal_expansion),
+        ),
         ("ageing", raw.ageing.as_ref().map(Spanned::span)),
         ("provenance", raw.provenance.as_ref().map(Spanned::span)),
         ("asperity_modulus", quantity(&raw.asperity_modulus)),
