@@ -202,3 +202,81 @@ impl Material {
             .map(|(_, v)| v.as_str())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::material::PronyTerm;
+
+    /// E∞ = 1 MPa and one term of 999 MPa at τ = 1 ms (E0 = 1 GPa), WLF at 23 °C.
+    fn one_term(shift: Shift) -> Material {
+        let mut m = Material::elastic("one term", 1e6, 0.5).unwrap();
+        m.prony = Prony::new(
+            1e6,
+            &[PronyTerm {
+                modulus: 999e6,
+                tau: 1e-3,
+            }],
+        )
+        .unwrap();
+        m.shift = shift;
+        m
+    }
+
+    #[test]
+    fn t10_of_a_single_term_series_is_the_closed_form() {
+        let (c1, c2) = (8.86, 101.6);
+        let m = one_term(Shift::Wlf {
+            reference: GEHMAN_ROOM_TEMPERATURE,
+            c1,
+            c2,
+        });
+        // E(ξ) = E∞ + E1 exp(−ξ/τ): the target 10 E(10 s) is reached at
+        // ξ* = −τ ln((10 E(10 s) − E∞)/E1), i.e. a_T = 10 s/ξ*, and WLF inverted:
+        // log10 a_T = L = −C1 ΔT/(C2 + ΔT) ⇒ ΔT = −C2 L/(C1 + L)
+        let e10 = 1e6 + 999e6 * (-1e4_f64).exp();
+        let xi = -1e-3 * ((10.0 * e10 - 1e6) / 999e6).ln();
+        let l = (10.0 / xi).log10();
+        let by_hand = GEHMAN_ROOM_TEMPERATURE - c2 * l / (c1 + l);
+        let t10 = m.low_temperature_limit().unwrap();
+        assert!((t10 - by_hand).abs() < 1e-9, "{t10} vs {by_hand}");
+    }
+
+    #[test]
+    fn t10_needs_a_shift_and_a_glassy_rise() {
+        assert_eq!(one_term(Shift::None).low_temperature_limit(), None);
+        // an elastic material never stiffens
+        let mut elastic = Material::elastic("e", 5e6, 0.5).unwrap();
+        elastic.shift = Shift::Wlf {
+            reference: GEHMAN_ROOM_TEMPERATURE,
+            c1: 8.86,
+            c2: 101.6,
+        };
+        assert_eq!(elastic.low_temperature_limit(), None);
+        // Arrhenius: bisected down to 1 K, the equation holds there too
+        let m = one_term(Shift::Arrhenius {
+            reference: GEHMAN_ROOM_TEMPERATURE,
+            activation_energy: 1e5,
+        });
+        let t10 = m.low_temperature_limit().unwrap();
+        let ratio = m.gehman_modulus(t10) / m.gehman_modulus(GEHMAN_ROOM_TEMPERATURE);
+        assert!((ratio / T10_RATIO - 1.0).abs() < 1e-9, "{ratio}");
+        assert!(t10 < GEHMAN_ROOM_TEMPERATURE);
+    }
+
+    #[test]
+    fn library_t10_solves_its_equation_and_follows_t_g() {
+        let t10 = |id: &str| {
+            let m = crate::scenario::library::get(id).unwrap().load().unwrap();
+            let t = m.low_temperature_limit().unwrap();
+            let ratio = m.gehman_modulus(t) / m.gehman_modulus(GEHMAN_ROOM_TEMPERATURE);
+            assert!((ratio / T10_RATIO - 1.0).abs() < 1e-9, "{id}: {ratio}");
+            // above the WLF frozen limit and the glass transition, below room temperature
+            let tg = m.glass_transition.unwrap();
+            assert!(t > tg && t > m.shift.frozen_below().unwrap() && t < 296.15, "{id}");
+            t
+        };
+        let [vmq, epdm, nbr, fkm] = ["vmq-70", "epdm-70", "nbr-70", "fkm-75"].map(t10);
+        assert!(vmq < epdm && epdm < nbr && nbr < fkm, "{vmq} {epdm} {nbr} {fkm}");
+    }
+}
