@@ -273,10 +273,16 @@ mod tests {
             assert!((ratio / T10_RATIO - 1.0).abs() < 1e-9, "{id}: {ratio}");
             // above the WLF frozen limit and the glass transition, below room temperature
             let tg = m.glass_transition.unwrap();
-            assert!(t > tg && t > m.shift.frozen_below().unwrap() && t < 296.15, "{id}");
+            assert!(
+                t > tg && t > m.shift.frozen_below().unwrap() && t < 296.15,
+                "{id}"
+            );
             t
         };
         let [vmq, epdm, nbr, fkm] = ["vmq-70", "epdm-70", "nbr-70", "fkm-75"].map(t10);
-        assert!(vmq < epdm && epdm < nbr && nbr < fkm, "{vmq} {epdm} {nbr} {fkm}");
+        assert!(
+            vmq < epdm && epdm < nbr && nbr < fkm,
+            "{vmq} {epdm} {nbr} {fkm}"
+        );
     }
 }

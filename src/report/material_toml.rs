@@ -56,7 +56,11 @@ pub fn material_toml(m: &Material) -> String {
         line(&mut out, "thermal_expansion", &quantity(alpha, "1/K"));
     }
     if let Some(alpha) = m.glassy_thermal_expansion {
-        line(&mut out, "glassy_thermal_expansion", &quantity(alpha, "1/K"));
+        line(
+            &mut out,
+            "glassy_thermal_expansion",
+            &quantity(alpha, "1/K"),
+        );
     }
     match m.shift {
         Shift::None => {}

@@ -72,7 +72,13 @@ fn status_meaning(status: Status) -> &'static str {
 /// the low-temperature limit T10 ([`Material::low_temperature_limit`]) \[°C\].
 pub fn library_table(rows: &[(&str, &Material)]) -> String {
     let header = [
-        "id", "name", "status", "E0 [MPa]", "E∞ [MPa]", "T_g [°C]", "T10 [°C]",
+        "id",
+        "name",
+        "status",
+        "E0 [MPa]",
+        "E∞ [MPa]",
+        "T_g [°C]",
+        "T10 [°C]",
     ];
     let cells: Vec<[String; 7]> = rows
         .iter()

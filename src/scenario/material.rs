@@ -776,8 +776,14 @@ ageing = "test: ageing"
             Some("test: glassy CTE")
         );
         for (value, message) in [
-            ("\"-7.7e-5 1/K\"", ":9: material.glassy_thermal_expansion: must be positive"),
-            ("\"0 1/K\"", ":9: material.glassy_thermal_expansion: must be positive"),
+            (
+                "\"-7.7e-5 1/K\"",
+                ":9: material.glassy_thermal_expansion: must be positive",
+            ),
+            (
+                "\"0 1/K\"",
+                ":9: material.glassy_thermal_expansion: must be positive",
+            ),
             ("\"7.7e-5 K\"", ":9: material.glassy_thermal_expansion: "),
             ("\"1 1/K\"", ":9: material.glassy_thermal_expansion: "),
         ] {
