@@ -168,7 +168,8 @@ impl Material {
         }
         let target = T10_RATIO * self.gehman_modulus(room);
         // the modulus at the frozen limit is E0, the largest value it takes
-        if !(self.gehman_modulus(lower) >= target) {
+        let top = self.gehman_modulus(lower);
+        if top.is_nan() || target.is_nan() || top < target {
             return None;
         }
         // invariant: E(lo) ≥ target > E(hi)
