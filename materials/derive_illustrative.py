@@ -112,7 +112,9 @@ KOMMLING = ("A. Kömmling, M. Jaunich, D. Wolff, 'Ageing and lifetime prediction
 CTE_ASSUMED = ("assumed 160e-6 1/K, of the order of the sourced NBR and EPDM values; no source found for "
                "this polymer; illustrative")
 
-# id, name, Shore A grade, T_g [C] with source, linear CTE [1/K] with source, ageing or None
+# id, name, Shore A grade, T_g [C] with source, linear CTE [1/K] with source, ageing or None; optional
+# "m" (Chasset-Thirion exponent, default M_DEFAULT) and "e_g" (glassy modulus [Pa], default
+# E_GLASS_DEFAULT) per compound
 COMPOUNDS = [
     dict(id="nbr-70", name="NBR (nitrile rubber, medium acrylonitrile), 70 Shore A", shore=70,
          tg=-34, tg_src=f"{HANDBOOK}, Table 4.2: nitrile rubber, medium nitrile, T_g = -34 C",
