@@ -7,16 +7,35 @@ same way from a few sourced or clearly assumed numbers:
 1. Modulus at the hardness-test time scale (3 s, 23 C) from the nominal Shore A grade with Gent's
    relation, A.N. Gent (1958), "On the relation between indentation hardness and Young's modulus",
    in the form commonly quoted: E [MPa] = 0.0981 (56 + 7.62336 S) / (0.137505 (254 - 2.54 S)).
-2. Relaxation in the Chasset-Thirion power-law form E(t) = E_inf [1 + (t/tau0)^-m] with ASSUMED
-   m = 0.10 and tau0 = 1e-3 s (the same for every compound: no per-compound data were found),
-   calibrated so that E(3 s) equals the Gent modulus.
-3. That curve, sampled at 20 points per decade over 1e-6 s .. 1e12 s, fitted with E_inf and one Prony
-   term per decade (tau = 1e-7 .. 1e12 s) by non-negative least squares on relative residuals
-   (Lawson-Hanson, scipy.optimize.nnls). The fitted E_inf is a few per cent above the Chasset-Thirion
-   E_inf: it holds the (slow) relaxation beyond 1e12 s, which the data window does not see.
-4. WLF with the "universal" constants C1 = 17.44, C2 = 51.6 K at Tref = T_g (Williams, Landel & Ferry,
+2. Rubbery relaxation in the Chasset-Thirion power-law form E_r(t) = E_inf [1 + (t/tau0)^-m] with
+   tau0 = 1e-3 s ASSUMED for every compound and m per compound (COMPOUNDS key "m", default
+   M_DEFAULT = 0.10, ASSUMED: no per-compound data were found; set it from compression stress
+   relaxation data when available). The power law is capped at short times by writing t + tau_g for
+   t, so that it stays finite: E_r(t) = E_inf [1 + ((t + tau_g)/tau0)^-m].
+3. The glass transition at short times: a glassy modulus E_g (COMPOUNDS key "e_g", default
+   E_GLASS_DEFAULT = 2 GPa, ILLUSTRATIVE: amorphous polymers are of the order of 1-3 GPa below T_g)
+   reached through a stretched exponential (Kohlrausch-Williams-Watts) fraction
+   phi(t) = exp(-(t/tau_g)^beta), beta = BETA = 0.4 (ASSUMED, within the 0.3-0.5 usually quoted for
+   the alpha relaxation of polymers):
+       E(t) = E_g phi(t) + E_r(t) (1 - phi(t)),
+   a mixture that is E_g at t = 0, E_r for t >> tau_g, and decreases monotonically in between.
+   tau_g(23 C) = tau_g(T_g) / a_T(T_g) with the CONVENTION tau_g(T_g) = 100 s (the structural
+   relaxation time commonly associated with the calorimetric T_g; illustrative) and a_T the WLF shift
+   of step 5. E_inf is calibrated so that the full curve gives the Gent modulus at 3 s (the glassy term
+   is negligible there: tau_g(23 C) <= 2e-5 s for every compound here).
+4. That curve, sampled at 20 points per decade from 10^(lg - 6) s to 1e12 s (lg = floor(log10
+   tau_g(23 C)): the glassy plateau is in the window), fitted with E_inf and Prony terms, two per
+   decade from 10^(lg - 5) to 10^(lg + 4) s (the transition: one per decade leaves a 10-30 % ripple
+   where the modulus falls by ~100x within two decades) and one per decade above, up to 1e12 s, by
+   non-negative least squares on relative residuals (Lawson-Hanson, scipy.optimize.nnls). The
+   fitted E_inf is a few per cent above the Chasset-Thirion E_inf: it holds the (slow) relaxation
+   beyond 1e12 s, which the data window does not see. E0 = E_inf + sum E_i is then ~E_g.
+5. WLF with the "universal" constants C1 = 17.44, C2 = 51.6 K at Tref = T_g (Williams, Landel & Ferry,
    J. Am. Chem. Soc. 77 (1955) 3701), moved to Tref = 23 C exactly:
-   C2' = C2 + (Tref - T_g), C1' = C1 C2 / C2'.
+   C2' = C2 + (Tref - T_g), C1' = C1 C2 / C2'. sealsim freezes the shift at T <= Tref - C2' =
+   T_g - 51.6 K (a_T = infinity: no relaxation progresses, the response is the instantaneous E0 ~ E_g).
+6. Glassy linear CTE below T_g: GLASSY_CTE_RATIO = 1/3 of the rubbery one, ASSUMED (no source was
+   found for a compound of these classes; the CTE of amorphous polymers is known to drop at T_g).
 
 Run:  python3 materials/derive_illustrative.py --write   (needs numpy, scipy) — rewrites the Prony
 tables, WLF constants and fit residuals of the TOML files from COMPOUNDS below (the other numbers and
@@ -26,28 +45,63 @@ import math
 import numpy as np
 from scipy.optimize import nnls
 
-M, TAU0, T_TEST = 0.10, 1e-3, 3.0
+M_DEFAULT, TAU0, T_TEST = 0.10, 1e-3, 3.0
+E_GLASS_DEFAULT = 2e9          # Pa, illustrative glassy modulus of an amorphous polymer below T_g
+TAU_G_AT_TG = 100.0            # s, conventional structural relaxation time at the calorimetric T_g
+BETA = 0.4                     # KWW stretching exponent of the glass-rubber transition, assumed
 C1G, C2G, TREF = 17.44, 51.6, 296.15
+# decades (of 10^floor(log10 tau_g(23 C))) below which the first Prony tau and the first data point
+# lie, and above which the Prony terms go from two to one per decade
+TAUS_BELOW, DATA_BELOW, DENSE_ABOVE = 5, 6, 4
+GLASSY_CTE_RATIO = 1 / 3       # alpha_g / alpha_r, assumed
 
 
 def gent(shore):
     return 0.0981 * (56 + 7.62336 * shore) / (0.137505 * (254 - 2.54 * shore)) * 1e6
 
 
-def derive(shore, tg_c):
+def wlf(tg_c):
+    """WLF universal constants moved to Tref = 23 C: (C1', C2')."""
+    c2 = C2G + (TREF - (tg_c + 273.15))
+    return C1G * C2G / c2, c2
+
+
+def tau_g_ref(tg_c):
+    """tau_g at 23 C: TAU_G_AT_TG / a_T(T_g), log10 a_T(T_g) = -C1'(T_g - Tref)/(C2' + T_g - Tref)."""
+    c1, c2 = wlf(tg_c)
+    dt = tg_c + 273.15 - TREF
+    return TAU_G_AT_TG / 10 ** (-c1 * dt / (c2 + dt))
+
+
+def curve(t, e_inf, m, e_g, tau_g):
+    """E(t) = E_g phi + E_r (1 - phi), phi = exp(-(t/tau_g)^beta), E_r = E_inf [1 + ((t + tau_g)/tau0)^-m]."""
+    phi = np.exp(-(t / tau_g) ** BETA)
+    e_r = e_inf * (1 + ((t + tau_g) / TAU0) ** -m)
+    return e_g * phi + e_r * (1 - phi)
+
+
+def derive(shore, tg_c, m, e_g):
     e_test = gent(shore)
-    e_inf = e_test / (1 + (T_TEST / TAU0) ** -M)
-    t = np.logspace(-6, 12, 18 * 20 + 1)
-    target = e_inf * (1 + (t / TAU0) ** -M)
-    taus = np.logspace(-7, 12, 20)
+    tau_g = tau_g_ref(tg_c)
+    # E(3 s) is linear in E_inf: E = E_g phi + E_inf (1 + ...) (1 - phi)
+    phi3 = math.exp(-(T_TEST / tau_g) ** BETA)
+    e_inf = (e_test - e_g * phi3) / ((1 + ((T_TEST + tau_g) / TAU0) ** -m) * (1 - phi3))
+    lg = math.floor(math.log10(tau_g))
+    t_lo, tau_lo, tau_mid = lg - DATA_BELOW, lg - TAUS_BELOW, lg + DENSE_ABOVE
+    t = np.logspace(t_lo, 12, (12 - t_lo) * 20 + 1)
+    target = curve(t, e_inf, m, e_g, tau_g)
+    # two terms per decade through the transition (one per decade leaves a ripple of 10-30 %
+    # where the modulus falls by ~100x in two decades), one per decade on the rubbery side
+    taus = np.concatenate([np.logspace(tau_lo, tau_mid, (tau_mid - tau_lo) * 2 + 1),
+                           np.logspace(tau_mid + 1, 12, 12 - tau_mid)])
     a = np.hstack([np.ones((len(t), 1)), np.exp(-t[:, None] / taus[None, :])]) / target[:, None]
-    sol, _ = nnls(a, np.ones(len(t)))
+    sol, _ = nnls(a, np.ones(len(t)), maxiter=20 * a.shape[1])
     rel = np.abs(a @ sol - 1)
     e_inf_ct, e_inf, coef = e_inf, sol[0], sol[1:]
-    c2 = C2G + (TREF - (tg_c + 273.15))
-    c1 = C1G * C2G / c2
+    c1, c2 = wlf(tg_c)
     return dict(e_test=e_test, e_inf=e_inf, e_inf_ct=e_inf_ct, terms=[(c, tau) for c, tau in zip(coef, taus) if c > 0],
-                max_rel=rel.max(), rms_rel=math.sqrt((rel ** 2).mean()), c1=c1, c2=c2)
+                max_rel=rel.max(), rms_rel=math.sqrt((rel ** 2).mean()), c1=c1, c2=c2, tau_g=tau_g,
+                t_lo=t_lo, tau_lo=tau_lo, e0=sol.sum(), m=m, e_g=e_g)
 
 
 HANDBOOK = ("Handbook of Plastics Technologies: The Complete Guide to Properties and Performance "
@@ -58,7 +112,9 @@ KOMMLING = ("A. Kömmling, M. Jaunich, D. Wolff, 'Ageing and lifetime prediction
 CTE_ASSUMED = ("assumed 160e-6 1/K, of the order of the sourced NBR and EPDM values; no source found for "
                "this polymer; illustrative")
 
-# id, name, Shore A grade, T_g [C] with source, linear CTE [1/K] with source, ageing or None
+# id, name, Shore A grade, T_g [C] with source, linear CTE [1/K] with source, ageing or None; optional
+# "m" (Chasset-Thirion exponent, default M_DEFAULT) and "e_g" (glassy modulus [Pa], default
+# E_GLASS_DEFAULT) per compound
 COMPOUNDS = [
     dict(id="nbr-70", name="NBR (nitrile rubber, medium acrylonitrile), 70 Shore A", shore=70,
          tg=-34, tg_src=f"{HANDBOOK}, Table 4.2: nitrile rubber, medium nitrile, T_g = -34 C",
@@ -95,7 +151,8 @@ COMPOUNDS = [
 
 
 def toml_for(c):
-    d = derive(c["shore"], c["tg"])
+    d = derive(c["shore"], c["tg"], c.get("m", M_DEFAULT), c.get("e_g", E_GLASS_DEFAULT))
+    glassy_cte = c["cte"] * GLASSY_CTE_RATIO
     lines = [
         f"# {c['name']} — ILLUSTRATIVE entry derived by materials/derive_illustrative.py (see its",
         "# docstring): no published Prony series for this class of seal compound was found.",
@@ -106,11 +163,12 @@ def toml_for(c):
         f'long_term_modulus = "{d["e_inf"] / 1e6:.6g} MPa"',
         "prony = [",
     ]
-    lines += [f'    {{ modulus = "{m / 1e6:.6g} MPa", tau = "{tau:.0e} s" }},' for m, tau in d["terms"]]
+    lines += [f'    {{ modulus = "{m / 1e6:.6g} MPa", tau = "{tau:.6g} s" }},' for m, tau in d["terms"]]
     lines += [
         "]",
         f'glass_transition = "{c["tg"]} C"',
         f'thermal_expansion = "{c["cte"]:.3g} 1/K"',
+        f'glassy_thermal_expansion = "{glassy_cte:.3g} 1/K"',
         "",
         "[material.shift]",
         'kind = "wlf"',
@@ -128,20 +186,29 @@ def toml_for(c):
     prov = {
         "poisson_ratio": "rubber is nearly incompressible; 0.5 as in Persson & Yang 2008, section 3; "
                          "illustrative",
-        "long_term_modulus": f"NNLS fit (with the prony terms) to the Chasset-Thirion curve "
-                             f"E_inf [1 + (t/tau0)^-m], E_inf = E(3 s)/(1 + (3 s/tau0)^-m) = "
-                             f"{d['e_inf_ct'] / 1e6:.4f} MPa with {gent_src}, assumed m = {M}, "
-                             f"tau0 = {TAU0:g} s; the fitted value also holds the relaxation beyond "
-                             "1e12 s; illustrative",
-        "prony": f"NNLS fit, one term per decade (tau 1e-7 .. 1e12 s), to that Chasset-Thirion curve on "
-                 f"1e-6 .. 1e12 s at 23 C: max deviation {100 * d['max_rel']:.2f} %, "
-                 f"rms {100 * d['rms_rel']:.2f} %; illustrative",
+        "long_term_modulus": f"NNLS fit (with the prony terms) to E(t) = E_g phi + E_r (1 - phi), "
+                             f"E_r = E_inf [1 + ((t + tau_g)/tau0)^-m] (Chasset-Thirion, capped), "
+                             f"phi = exp(-(t/tau_g)^beta); E_inf = {d['e_inf_ct'] / 1e6:.4f} MPa "
+                             f"calibrated to {gent_src}; assumed m = {d['m']:g}, tau0 = {TAU0:g} s; "
+                             "the fitted value also holds the relaxation beyond 1e12 s; illustrative",
+        "prony": f"NNLS fit on relative residuals to that curve on 1e{d['t_lo']} .. 1e12 s at 23 C, "
+                 f"tau 1e{d['tau_lo']} .. 1e12 s (two per decade up to 1e{d['tau_lo'] + TAUS_BELOW + DENSE_ABOVE} s, "
+                 f"then one): max deviation {100 * d['max_rel']:.2f} %, rms {100 * d['rms_rel']:.2f} %; "
+                 f"glass transition: E_g = {d['e_g'] / 1e9:g} GPa (illustrative: amorphous polymers "
+                 f"are of the order of 1-3 GPa in the glass), tau_g(23 C) = 100 s/a_T(T_g) = "
+                 f"{d['tau_g']:.3g} s (convention: 100 s structural relaxation time at the "
+                 f"calorimetric T_g; illustrative), assumed beta = {BETA:g}; E0 = "
+                 f"{d['e0'] / 1e9:.4g} GPa; below T_g - 51.6 K the WLF shift is frozen and E0 is the "
+                 "response at every time; illustrative",
         "shift": "WLF universal constants C1 = 17.44, C2 = 51.6 K at Tref = T_g (Williams, Landel & "
                  "Ferry, J. Am. Chem. Soc. 77 (1955) 3701) moved exactly to Tref = 23 C: "
                  "C2' = C2 + Tref - T_g, C1' = C1 C2/C2', with T_g below; the constants hold from T_g to about T_g + 50 K (IUPAC Gold Book, WLF equation), beyond that an extrapolation; "
                  "illustrative",
         "glass_transition": c["tg_src"],
         "thermal_expansion": c["cte_src"],
+        "glassy_thermal_expansion": f"assumed: one third of the rubbery CTE ({c['cte']:.3g} 1/K), "
+                                    "used below T_g; no source found for this compound class "
+                                    "(the CTE of amorphous polymers drops at T_g); illustrative",
     }
     if c["ageing"]:
         prov["ageing"] = c["ageing"]["src"]
@@ -157,6 +224,7 @@ if __name__ == "__main__":
     for c in COMPOUNDS:
         text, d = toml_for(c)
         print(f"{c['id']}: E(3 s) = {d['e_test']/1e6:.4f} MPa, E_inf = {d['e_inf']/1e6:.4f} MPa, "
+              f"E0 = {d['e0']/1e9:.4f} GPa, tau_g(23 C) = {d['tau_g']:.3g} s, "
               f"fit max {d['max_rel']:.2e} rms {d['rms_rel']:.2e}, C1' = {d['c1']:.4f}, C2' = {d['c2']:.2f} K")
         if "--write" in sys.argv:
             with open(os.path.join(here, c["id"] + ".toml"), "w") as f:

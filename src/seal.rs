@@ -84,8 +84,9 @@ impl SealGeometry {
 
     /// The squeeze at temperature `t` \[K\] with the thermal strain `thermal` (O-rings; 0 for a
     /// flat seal). With gland depth h and cord d, ε = 1 − h/d; heating by ΔT expands the housing
-    /// with α_h and the cord with α_r, so
-    /// `ε(T) = 1 − (1 − ε0)(1 + α_h ΔT)/(1 + α_r ΔT) ≈ ε0 + (1 − ε0)(α_r − α_h) ΔT`
+    /// with α_h and the cord by its free strain e_r(T) ([`ThermalStrain::rubber_strain`]: α_r ΔT
+    /// above T_g), so
+    /// `ε(T) = 1 − (1 − ε0)(1 + α_h ΔT)/(1 + e_r(T)) ≈ ε0 + (1 − ε0)(α_r − α_h) ΔT`
     /// (docs/model.md §6): the compression is referred to the current cord.
     pub fn squeeze_at(&self, thermal: Option<&ThermalStrain>, t: f64) -> f64 {
         match *self {
@@ -93,7 +94,7 @@ impl SealGeometry {
                 Some(th) => {
                     let dt = t - th.installation_temperature;
                     1.0 - (1.0 - squeeze) * (1.0 + th.housing_expansion * dt)
-                        / (1.0 + th.rubber_expansion * dt)
+                        / (1.0 + th.rubber_strain(t))
                 }
                 None => squeeze,
             },
@@ -145,17 +146,46 @@ impl SealGeometry {
     }
 }
 
-/// Thermal strain of an O-ring: the cord expands with the rubber's CTE, the groove depth with
-/// the housing's: `ε(T) = 1 − (1 − ε0)(1 + α_h ΔT)/(1 + α_r ΔT)`, ΔT = T − T_install
-/// ([`SealGeometry::squeeze_at`]).
+/// Thermal strain of an O-ring: the cord expands with the rubber's free strain e_r(T), the
+/// groove depth with the housing's CTE: `ε(T) = 1 − (1 − ε0)(1 + α_h ΔT)/(1 + e_r(T))`,
+/// ΔT = T − T_install ([`SealGeometry::squeeze_at`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ThermalStrain {
-    /// Rubber linear CTE α_r \[1/K\].
+    /// Rubber linear CTE α_r \[1/K\] (rubbery: above the glass transition).
     pub rubber_expansion: f64,
     /// Housing linear CTE α_h \[1/K\].
     pub housing_expansion: f64,
     /// Installation temperature \[K\].
     pub installation_temperature: f64,
+    /// Rubber linear CTE below the glass transition α_g \[1/K\] (`None`: α_r throughout).
+    pub glassy_expansion: Option<f64>,
+    /// Glass transition temperature T_g \[K\] at which the CTE changes from α_r to α_g.
+    pub glass_transition: Option<f64>,
+}
+
+impl ThermalStrain {
+    /// The rubber's free linear thermal strain from the installation temperature T_i to `t`
+    /// \[K\], `e_r(T) = ∫_{T_i}^{T} α(T') dT'` with α = α_r above T_g and α_g below
+    /// (a bilinear length–temperature curve with its kink at T_g, the dilatometric picture of
+    /// the glass transition). With the primitive `F(T) = α_r (T − T_g)` for T ≥ T_g and
+    /// `α_g (T − T_g)` below, `e_r(T) = F(T) − F(T_i)`, whichever side of T_g T and T_i are.
+    /// Without both α_g and T_g it is `α_r (T − T_i)`.
+    pub fn rubber_strain(&self, t: f64) -> f64 {
+        match (self.glassy_expansion, self.glass_transition) {
+            (Some(glassy), Some(tg)) => {
+                let primitive = |temp: f64| {
+                    let alpha = if temp >= tg {
+                        self.rubber_expansion
+                    } else {
+                        glassy
+                    };
+                    alpha * (temp - tg)
+                };
+                primitive(t) - primitive(self.installation_temperature)
+            }
+            _ => self.rubber_expansion * (t - self.installation_temperature),
+        }
+    }
 }
 
 /// The nominal pressure across the sealing width at one instant.
@@ -355,6 +385,8 @@ mod tests {
             rubber_expansion: 2.3e-4,
             housing_expansion: 1.2e-5,
             installation_temperature: 296.15,
+            glassy_expansion: None,
+            glass_transition: None,
         };
         let eps = ring.squeeze_at(Some(&th), 296.15 - 65.0);
         let by_hand = 1.0 - 0.75 * (1.0 - 65.0 * 1.2e-5) / (1.0 - 65.0 * 2.3e-4);
@@ -365,6 +397,74 @@ mod tests {
         assert!(((eps - 0.25) / -0.010_627_5 - 1.0).abs() < 0.02);
         assert_eq!(ring.squeeze_at(Some(&th), 296.15), 0.25);
         assert_eq!(ring.squeeze_at(None, 200.0), 0.25);
+    }
+
+    /// A cord with α_r = 1.65e-4, α_g = 5.5e-5 1/K and T_g = −34 °C, installed at `install` \[K\].
+    fn glassy(install: f64) -> ThermalStrain {
+        ThermalStrain {
+            rubber_expansion: 1.65e-4,
+            housing_expansion: 1.2e-5,
+            installation_temperature: install,
+            glassy_expansion: Some(5.5e-5),
+            glass_transition: Some(239.15),
+        }
+    }
+
+    #[test]
+    fn rubber_strain_is_the_integral_of_the_piecewise_cte() {
+        let (ar, ag, tg) = (1.65e-4, 5.5e-5, 239.15);
+        // installed at 23 °C, cooled to −60 °C: 57 K rubbery, then 26 K glassy
+        let th = glassy(296.15);
+        let by_hand = -ar * 57.0 - ag * 26.0;
+        assert!((th.rubber_strain(213.15) - by_hand).abs() < 1e-15);
+        // installed in the glass at −60 °C, heated to 23 °C: the same path backwards
+        let cold = glassy(213.15);
+        assert!((cold.rubber_strain(296.15) + by_hand).abs() < 1e-15);
+        // both temperatures below T_g: α_g only; both above: α_r only
+        assert!((cold.rubber_strain(223.15) - ag * 10.0).abs() < 1e-15);
+        assert!((th.rubber_strain(306.15) - ar * 10.0).abs() < 1e-15);
+        // continuous at T_g (and its slope drops from α_r to α_g there)
+        let at = th.rubber_strain(tg);
+        for h in [1e-6, 1e-3] {
+            assert!((th.rubber_strain(tg + h) - at - ar * h).abs() < 1e-15);
+            assert!((th.rubber_strain(tg - h) - at + ag * h).abs() < 1e-15);
+        }
+        // a glassy cord contracts less than a rubbery one would: the squeeze is kept better
+        let ring = SealGeometry::ORing {
+            cross_section: 3.53e-3,
+            mean_diameter: 0.05,
+            squeeze: 0.25,
+        };
+        let rubbery = ThermalStrain {
+            glassy_expansion: None,
+            ..th
+        };
+        let eps = ring.squeeze_at(Some(&th), 213.15);
+        let by_hand = 1.0 - 0.75 * (1.0 - 83.0 * 1.2e-5) / (1.0 + by_hand);
+        assert!((eps - by_hand).abs() < 1e-15, "{eps}");
+        assert!(eps > ring.squeeze_at(Some(&rubbery), 213.15));
+    }
+
+    #[test]
+    fn above_the_glass_transition_the_squeeze_is_the_rubbery_one() {
+        // identical (to rounding) to α_r ΔT when the temperature stays above T_g
+        let ring = SealGeometry::ORing {
+            cross_section: 3.53e-3,
+            mean_diameter: 0.05,
+            squeeze: 0.25,
+        };
+        let th = glassy(296.15);
+        let plain = ThermalStrain {
+            glassy_expansion: None,
+            glass_transition: None,
+            ..th
+        };
+        for t in [240.0, 260.0, 296.15, 350.0, 420.0] {
+            let dt = t - 296.15;
+            let today = 1.0 - 0.75 * (1.0 + 1.2e-5 * dt) / (1.0 + 1.65e-4 * dt);
+            assert!((ring.squeeze_at(Some(&th), t) - today).abs() < 1e-15, "{t}");
+            assert_eq!(ring.squeeze_at(Some(&plain), t), today, "{t}");
+        }
     }
 
     #[test]

@@ -134,6 +134,7 @@ pub fn fitted_material(name: String, fit: &Fit, source: &str, terms_per_decade: 
         shift: Shift::None,
         glass_transition: None,
         thermal_expansion: None,
+        glassy_thermal_expansion: None,
         ageing: None,
         ageing_basis: None,
         provenance,

@@ -31,7 +31,7 @@ pub struct MaterialsArgs {
 /// The subcommands of `sealsim materials`.
 #[derive(Debug, Clone, Subcommand)]
 pub enum MaterialsCommand {
-    /// Table of the library's compounds: id, name, status, E0, E∞, T_g.
+    /// Table of the library's compounds: id, name, status, E0, E∞, T_g, T10 (low-temperature limit).
     List,
     /// Every parameter of a compound with its units and where it comes from.
     Show(ShowArgs),

@@ -18,6 +18,7 @@
 //! prony = [ { modulus = "6 MPa", tau = "1000 h" }, { modulus = 1.5e6, tau = 3600 } ]   # E_i > 0, τ_i > 0 (time)
 //! glass_transition = "-30 C"                # optional, absolute temperature (parse_temperature)
 //! thermal_expansion = "2.3e-4 1/K"          # optional, linear CTE, > 0 (Dimension::THERMAL_EXPANSION)
+//! glassy_thermal_expansion = "7.7e-5 1/K"   # optional, linear CTE below glass_transition, > 0; absent = thermal_expansion
 //! [material.shift]                          # optional; absent = no temperature dependence
 //! kind = "wlf"                              # "wlf" | "arrhenius"
 //! reference_temperature = "23 C"            # absolute temperature
@@ -33,11 +34,13 @@
 //! criterion = "80 % compression set"        # the end-of-life criterion; required in library files
 //! [material.provenance]                     # string per parameter; REQUIRED in library files for every
 //! poisson_ratio = "..."                     # parameter present: poisson_ratio, long_term_modulus (or youngs_modulus),
-//! long_term_modulus = "..."                 # prony, shift, glass_transition, thermal_expansion, ageing
+//! long_term_modulus = "..."                 # prony, shift, glass_transition, thermal_expansion,
+//!                                           # glassy_thermal_expansion, ageing
 //! prony = "..."
 //! shift = "..."
 //! glass_transition = "..."
 //! thermal_expansion = "..."
+//! glassy_thermal_expansion = "..."
 //! ageing = "..."
 //! ```
 //! Rules: exactly one of `youngs_modulus` or (`long_term_modulus` with optional `prony`) [prony without
@@ -50,6 +53,17 @@
 //! `provenance: Vec<(String, String)>`.
 
 use super::{Prony, Shift};
+
+/// Time after applying the torque at which a Gehman reading is taken \[s\] (ASTM D1053 /
+/// ISO 1432; see [`Material::low_temperature_limit`]).
+pub const GEHMAN_READING_TIME: f64 = 10.0;
+
+/// The room temperature of the Gehman test's reference reading, 23 °C \[K\].
+pub const GEHMAN_ROOM_TEMPERATURE: f64 = 296.15;
+
+/// The stiffening ratio that defines the low-temperature limit T10 (modulus 10 × its value at
+/// 23 °C).
+pub const T10_RATIO: f64 = 10.0;
 
 /// Whether a compound's data are measured and published, or estimated.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -113,8 +127,11 @@ pub struct Material {
     pub shift: Shift,
     /// Glass transition temperature T_g \[K\].
     pub glass_transition: Option<f64>,
-    /// Linear thermal expansion coefficient \[1/K\].
+    /// Linear thermal expansion coefficient \[1/K\] (rubbery: above `glass_transition`).
     pub thermal_expansion: Option<f64>,
+    /// Linear thermal expansion coefficient below `glass_transition` (glassy) \[1/K\]; `None`:
+    /// `thermal_expansion` at every temperature ([`crate::seal::ThermalStrain`]).
+    pub glassy_thermal_expansion: Option<f64>,
     pub ageing: Option<Ageing>,
     /// What the ageing constants were measured on (library files require it with `ageing`).
     pub ageing_basis: Option<AgeingBasis>,
@@ -137,10 +154,68 @@ impl Material {
             shift: Shift::None,
             glass_transition: None,
             thermal_expansion: None,
+            glassy_thermal_expansion: None,
             ageing: None,
             ageing_basis: None,
             provenance: Vec::new(),
         })
+    }
+
+    /// The TR-10-like low-temperature limit T10 \[K\]: the temperature at which the modulus read
+    /// at the time scale of a Gehman test is [`T10_RATIO`] = 10 times its value at 23 °C,
+    ///
+    /// `E(t_G / a_T(T10)) = 10 · E(t_G / a_T(23 °C))`, t_G = [`GEHMAN_READING_TIME`] = 10 s,
+    ///
+    /// with E the relaxation modulus in reduced time (the apparent torsional modulus of the
+    /// test is a shear modulus, G = E/3 for an incompressible rubber: the ratio is the same).
+    /// The Gehman test (ASTM D1053, ISO 1432) measures the relative torsional stiffness of a
+    /// rubber strip from low temperatures up to room temperature, and T2, T5, T10, T100 are
+    /// the temperatures at which it is 2, 5, 10, 100 times the 23 °C value. Only the scope of
+    /// ISO 1432 (a torsional relative-stiffness test from room temperature to about −120 °C)
+    /// and of ASTM D1053 (stiffening at low temperatures) could be read here; the 10 s
+    /// reading time and the ratio definition are recalled, not confirmed from the standards.
+    ///
+    /// Found by bisection on T between the WLF frozen limit `Tref − C2` (1 K for an Arrhenius
+    /// shift) and 23 °C: E(t_G/a_T(T)) decreases monotonically with T there. `None` when the
+    /// material has no shift, when 23 °C is at or below the frozen limit, or when the modulus
+    /// never reaches 10 × (E0 < 10 E(23 °C), e.g. a series without a glassy plateau).
+    pub fn low_temperature_limit(&self) -> Option<f64> {
+        let room = GEHMAN_ROOM_TEMPERATURE;
+        let lower = match self.shift {
+            Shift::None => return None,
+            Shift::Wlf { .. } => self.shift.frozen_below()?,
+            Shift::Arrhenius { .. } => 1.0,
+        };
+        if lower >= room {
+            return None;
+        }
+        let target = T10_RATIO * self.gehman_modulus(room);
+        // the modulus at the frozen limit is E0, the largest value it takes
+        let top = self.gehman_modulus(lower);
+        if top.is_nan() || target.is_nan() || top < target {
+            return None;
+        }
+        // invariant: E(lo) ≥ target > E(hi)
+        let (mut lo, mut hi) = (lower, room);
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
+            }
+            if self.gehman_modulus(mid) >= target {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        Some(0.5 * (lo + hi))
+    }
+
+    /// The modulus read at the Gehman time scale at temperature `t` \[K\]:
+    /// `E(t_G / a_T(t))` \[Pa\] (E0 when frozen).
+    pub fn gehman_modulus(&self, t: f64) -> f64 {
+        let xi = GEHMAN_READING_TIME * self.shift.ln_rate(t).exp();
+        self.prony.relaxation(xi)
     }
 
     /// The provenance of `key`, if recorded.
@@ -149,5 +224,89 @@ impl Material {
             .iter()
             .find(|(k, _)| k == key)
             .map(|(_, v)| v.as_str())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::material::PronyTerm;
+
+    /// E∞ = 1 MPa and one term of 999 MPa at τ = 1 ms (E0 = 1 GPa), WLF at 23 °C.
+    fn one_term(shift: Shift) -> Material {
+        let mut m = Material::elastic("one term", 1e6, 0.5).unwrap();
+        m.prony = Prony::new(
+            1e6,
+            &[PronyTerm {
+                modulus: 999e6,
+                tau: 1e-3,
+            }],
+        )
+        .unwrap();
+        m.shift = shift;
+        m
+    }
+
+    #[test]
+    fn t10_of_a_single_term_series_is_the_closed_form() {
+        let (c1, c2) = (8.86, 101.6);
+        let m = one_term(Shift::Wlf {
+            reference: GEHMAN_ROOM_TEMPERATURE,
+            c1,
+            c2,
+        });
+        // E(ξ) = E∞ + E1 exp(−ξ/τ): the target 10 E(10 s) is reached at
+        // ξ* = −τ ln((10 E(10 s) − E∞)/E1), i.e. a_T = 10 s/ξ*, and WLF inverted:
+        // log10 a_T = L = −C1 ΔT/(C2 + ΔT) ⇒ ΔT = −C2 L/(C1 + L)
+        let e10 = 1e6 + 999e6 * (-1e4_f64).exp();
+        let xi = -1e-3 * ((10.0 * e10 - 1e6) / 999e6).ln();
+        let l = (10.0 / xi).log10();
+        let by_hand = GEHMAN_ROOM_TEMPERATURE - c2 * l / (c1 + l);
+        let t10 = m.low_temperature_limit().unwrap();
+        assert!((t10 - by_hand).abs() < 1e-9, "{t10} vs {by_hand}");
+    }
+
+    #[test]
+    fn t10_needs_a_shift_and_a_glassy_rise() {
+        assert_eq!(one_term(Shift::None).low_temperature_limit(), None);
+        // an elastic material never stiffens
+        let mut elastic = Material::elastic("e", 5e6, 0.5).unwrap();
+        elastic.shift = Shift::Wlf {
+            reference: GEHMAN_ROOM_TEMPERATURE,
+            c1: 8.86,
+            c2: 101.6,
+        };
+        assert_eq!(elastic.low_temperature_limit(), None);
+        // Arrhenius: bisected down to 1 K, the equation holds there too
+        let m = one_term(Shift::Arrhenius {
+            reference: GEHMAN_ROOM_TEMPERATURE,
+            activation_energy: 1e5,
+        });
+        let t10 = m.low_temperature_limit().unwrap();
+        let ratio = m.gehman_modulus(t10) / m.gehman_modulus(GEHMAN_ROOM_TEMPERATURE);
+        assert!((ratio / T10_RATIO - 1.0).abs() < 1e-9, "{ratio}");
+        assert!(t10 < GEHMAN_ROOM_TEMPERATURE);
+    }
+
+    #[test]
+    fn library_t10_solves_its_equation_and_follows_t_g() {
+        let t10 = |id: &str| {
+            let m = crate::scenario::library::get(id).unwrap().load().unwrap();
+            let t = m.low_temperature_limit().unwrap();
+            let ratio = m.gehman_modulus(t) / m.gehman_modulus(GEHMAN_ROOM_TEMPERATURE);
+            assert!((ratio / T10_RATIO - 1.0).abs() < 1e-9, "{id}: {ratio}");
+            // above the WLF frozen limit and the glass transition, below room temperature
+            let tg = m.glass_transition.unwrap();
+            assert!(
+                t > tg && t > m.shift.frozen_below().unwrap() && t < 296.15,
+                "{id}"
+            );
+            t
+        };
+        let [vmq, epdm, nbr, fkm] = ["vmq-70", "epdm-70", "nbr-70", "fkm-75"].map(t10);
+        assert!(
+            vmq < epdm && epdm < nbr && nbr < fkm,
+            "{vmq} {epdm} {nbr} {fkm}"
+        );
     }
 }

@@ -230,6 +230,7 @@ mod tests {
             },
             glass_transition: None,
             thermal_expansion: None,
+            glassy_thermal_expansion: None,
             ageing: None,
             ageing_basis: None,
             provenance: Vec::new(),

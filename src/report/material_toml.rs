@@ -55,6 +55,13 @@ pub fn material_toml(m: &Material) -> String {
     if let Some(alpha) = m.thermal_expansion {
         line(&mut out, "thermal_expansion", &quantity(alpha, "1/K"));
     }
+    if let Some(alpha) = m.glassy_thermal_expansion {
+        line(
+            &mut out,
+            "glassy_thermal_expansion",
+            &quantity(alpha, "1/K"),
+        );
+    }
     match m.shift {
         Shift::None => {}
         Shift::Wlf { reference, c1, c2 } => {
@@ -175,6 +182,7 @@ mod tests {
             shift: Shift::None,
             glass_transition: None,
             thermal_expansion: None,
+            glassy_thermal_expansion: None,
             ageing: None,
             ageing_basis: None,
             provenance: vec![
@@ -221,6 +229,7 @@ mod tests {
         };
         m.glass_transition = Some(243.15);
         m.thermal_expansion = Some(2.3e-4);
+        m.glassy_thermal_expansion = Some(7.7e-5);
         m.ageing = Some(Ageing {
             activation_energy: 9e4,
             rate: 1e-9,
@@ -237,6 +246,7 @@ mod tests {
             "status = \"illustrative\"\n",
             "glass_transition = \"2.4315e2 K\"\n",
             "thermal_expansion = \"2.3e-4 1/K\"\n",
+            "glassy_thermal_expansion = \"7.7e-5 1/K\"\n",
             "[material.shift]\nkind = \"wlf\"\nreference_temperature = \"2.9615e2 K\"\nc1 = 8.86\nc2 = \"1.016e2 K\"\n",
             "[material.ageing]\nactivation_energy = \"9e4 J/mol\"\nrate = \"1e-9 1/s\"\nreference_temperature = \"3.7315e2 K\"\ncrosslinking = 0.5\nproperty = \"compression set\"\ncriterion = \"80 % \\\"set\\\"\"\n",
             "\"odd key\" = \"x\"\n",

@@ -68,10 +68,19 @@ fn status_meaning(status: Status) -> &'static str {
     }
 }
 
-/// The library table of `sealsim materials list`: id, name, status, E0 and E∞ \[MPa\], T_g \[°C\].
+/// The library table of `sealsim materials list`: id, name, status, E0 and E∞ \[MPa\], T_g and
+/// the low-temperature limit T10 ([`Material::low_temperature_limit`]) \[°C\].
 pub fn library_table(rows: &[(&str, &Material)]) -> String {
-    let header = ["id", "name", "status", "E0 [MPa]", "E∞ [MPa]", "T_g [°C]"];
-    let cells: Vec<[String; 6]> = rows
+    let header = [
+        "id",
+        "name",
+        "status",
+        "E0 [MPa]",
+        "E∞ [MPa]",
+        "T_g [°C]",
+        "T10 [°C]",
+    ];
+    let cells: Vec<[String; 7]> = rows
         .iter()
         .map(|(id, m)| {
             [
@@ -81,6 +90,8 @@ pub fn library_table(rows: &[(&str, &Material)]) -> String {
                 human(m.prony.instantaneous() / 1e6, 4),
                 human(m.prony.long_term() / 1e6, 4),
                 m.glass_transition
+                    .map_or_else(|| "-".to_owned(), |t| human(t - ZERO_CELSIUS, 4)),
+                m.low_temperature_limit()
                     .map_or_else(|| "-".to_owned(), |t| human(t - ZERO_CELSIUS, 4)),
             ]
         })
@@ -94,7 +105,7 @@ pub fn library_table(rows: &[(&str, &Material)]) -> String {
             .unwrap_or(0)
     };
     let widths: Vec<usize> = (0..header.len()).map(width).collect();
-    let line = |row: [&str; 6]| {
+    let line = |row: [&str; 7]| {
         let mut out = String::new();
         for (i, cell) in row.iter().enumerate() {
             let pad = widths[i].saturating_sub(cell.chars().count());
@@ -117,7 +128,7 @@ pub fn library_table(rows: &[(&str, &Material)]) -> String {
     };
     let mut out = line(header);
     for r in &cells {
-        out.push_str(&line([&r[0], &r[1], &r[2], &r[3], &r[4], &r[5]]));
+        out.push_str(&line([&r[0], &r[1], &r[2], &r[3], &r[4], &r[5], &r[6]]));
     }
     out
 }
@@ -132,7 +143,7 @@ pub fn describe(id: &str, m: &Material) -> String {
         status_meaning(m.status)
     );
     let mut param = |key: &str, value: String, extra: &[String]| {
-        out += &format!("{key:<20}{value}\n");
+        out += &format!("{key:<19} {value}\n");
         for line in extra {
             out += &format!("{INDENT}{line}\n");
         }
@@ -238,6 +249,13 @@ pub fn describe(id: &str, m: &Material) -> String {
             &[],
         );
     }
+    if let Some(alpha) = m.glassy_thermal_expansion {
+        param(
+            "glassy_thermal_expansion",
+            format!("α_g = {} 1/K (linear, below T_g)", human(alpha, 6)),
+            &[],
+        );
+    }
     if let Some(a) = m.ageing {
         param(
             "ageing",
@@ -248,6 +266,17 @@ pub fn describe(id: &str, m: &Material) -> String {
                 human(a.activation_energy / 1e3, 6)
             ),
             &[],
+        );
+    }
+    if let Some(t10) = m.low_temperature_limit() {
+        out += &format!(
+            "{:<19} T10 = {} (derived, not a parameter)\n",
+            "low_temperature",
+            temperature(t10)
+        );
+        out += &format!(
+            "{INDENT}where E(10 s/a_T(T)) = 10 × E(10 s/a_T(23 °C)): the stiffening limit of a \
+             Gehman test (ASTM D1053, ISO 1432) computed from the Prony series and the shift\n"
         );
     }
     out

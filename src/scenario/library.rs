@@ -124,6 +124,7 @@ mod tests {
                     "shift" => m.shift != crate::material::Shift::None,
                     "glass_transition" => m.glass_transition.is_some(),
                     "thermal_expansion" => m.thermal_expansion.is_some(),
+                    "glassy_thermal_expansion" => m.glassy_thermal_expansion.is_some(),
                     "ageing" => m.ageing.is_some(),
                     _ => false,
                 })

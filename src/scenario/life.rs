@@ -112,7 +112,7 @@ const INSTALLATION_TIME: Field = field(
 /// force (docs/model.md §8).
 pub const DEFAULT_RETAINED_FORCE_REFERENCE: f64 = 1800.0;
 /// An O-ring is pressed into its gland, or a flange bolted up, within seconds: the squeeze's
-/// ramp at installation (docs/model.md §5.1).
+/// ramp at installation (docs/model.md §5.2).
 pub const DEFAULT_INSTALLATION_TIME: f64 = 1.0;
 const AGEING_ACTIVATION_ENERGY: Field = field(
     "ageing.activation_energy",
@@ -477,6 +477,8 @@ impl Source<'_> {
             installation_temperature: seal
                 .installation_temperature
                 .unwrap_or_else(|| environment.at(0.0)),
+            glassy_expansion: material.glassy_thermal_expansion,
+            glass_transition: material.glass_transition,
         }))
     }
 

@@ -38,7 +38,7 @@ use toml::Spanned;
 
 /// The parameters that carry a provenance, in schema order (the keys of
 /// `[material.provenance]`).
-pub const PARAMETERS: [&str; 8] = [
+pub const PARAMETERS: [&str; 9] = [
     "poisson_ratio",
     "youngs_modulus",
     "long_term_modulus",
@@ -46,6 +46,7 @@ pub const PARAMETERS: [&str; 8] = [
     "shift",
     "glass_transition",
     "thermal_expansion",
+    "glassy_thermal_expansion",
     "ageing",
 ];
 
@@ -83,6 +84,13 @@ const TERM_TAU: Field = field(
 );
 const THERMAL_EXPANSION: Field = field(
     "material.thermal_expansion",
+    Dimension::THERMAL_EXPANSION,
+    "1/K",
+    Bound::Range(1e-8, 1e-2),
+);
+/// The linear CTE below T_g (glassy); used by the O-ring thermal strain below `glass_transition`.
+const GLASSY_THERMAL_EXPANSION: Field = field(
+    "material.glassy_thermal_expansion",
     Dimension::THERMAL_EXPANSION,
     "1/K",
     Bound::Range(1e-8, 1e-2),
@@ -342,6 +350,11 @@ impl Source<'_> {
             .as_ref()
             .map(|q| self.quantity(q, &THERMAL_EXPANSION))
             .transpose()?;
+        let glassy_thermal_expansion = raw
+            .glassy_thermal_expansion
+            .as_ref()
+            .map(|q| self.quantity(q, &GLASSY_THERMAL_EXPANSION))
+            .transpose()?;
         let shift = match &raw.shift {
             Some(shift) => self.shift(shift)?,
             None => Shift::None,
@@ -363,6 +376,7 @@ impl Source<'_> {
             shift,
             glass_transition,
             thermal_expansion,
+            glassy_thermal_expansion,
             ageing,
             ageing_basis,
             provenance,
@@ -729,6 +743,10 @@ fn present_keys(raw: &RawMaterial) -> Vec<(&'static str, Range<usize>)> {
         ("shift", raw.shift.as_ref().map(Spanned::span)),
         ("glass_transition", quantity(&raw.glass_transition)),
         ("thermal_expansion", quantity(&raw.thermal_expansion)),
+        (
+            "glassy_thermal_expansion",
+            quantity(&raw.glassy_thermal_expansion),
+        ),
         ("ageing", raw.ageing.as_ref().map(Spanned::span)),
         ("provenance", raw.provenance.as_ref().map(Spanned::span)),
         ("asperity_modulus", quantity(&raw.asperity_modulus)),
@@ -784,6 +802,57 @@ ageing = "test: ageing"
             .to_string()
     }
 
+    /// `TEST_RUBBER` with a glassy CTE `value` (and its provenance) after the rubbery one, on
+    /// line 9 (the lines after it move down by one; the provenance goes on line 26).
+    fn with_glassy(value: &str) -> String {
+        with(
+            "thermal_expansion = \"2.3e-4 1/K\"\n",
+            &format!("thermal_expansion = \"2.3e-4 1/K\"\nglassy_thermal_expansion = {value}\n"),
+        )
+        .replacen(
+            "thermal_expansion = \"test: CTE\"\n",
+            "thermal_expansion = \"test: CTE\"\nglassy_thermal_expansion = \"test: glassy CTE\"\n",
+            1,
+        )
+    }
+
+    #[test]
+    fn glassy_thermal_expansion_is_parsed_and_checked_like_the_rubbery_one() {
+        let m = parse(&with_glassy("\"7.7e-5 1/K\"")).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(m.glassy_thermal_expansion, Some(7.7e-5));
+        assert_eq!(m.thermal_expansion, Some(2.3e-4));
+        assert_eq!(
+            m.provenance_of("glassy_thermal_expansion"),
+            Some("test: glassy CTE")
+        );
+        for (value, message) in [
+            (
+                "\"-7.7e-5 1/K\"",
+                ":9: material.glassy_thermal_expansion: must be positive",
+            ),
+            (
+                "\"0 1/K\"",
+                ":9: material.glassy_thermal_expansion: must be positive",
+            ),
+            ("\"7.7e-5 K\"", ":9: material.glassy_thermal_expansion: "),
+            ("\"1 1/K\"", ":9: material.glassy_thermal_expansion: "),
+        ] {
+            let e = error(&with_glassy(value));
+            assert!(e.contains(message), "{value}: {e}");
+        }
+        // a library file must say where it comes from
+        let bare = with_glassy("\"7.7e-5 1/K\"").replacen(
+            "glassy_thermal_expansion = \"test: glassy CTE\"\n",
+            "",
+            1,
+        );
+        let e = error(&bare);
+        assert!(
+            e.contains(":9: material.glassy_thermal_expansion: missing provenance"),
+            "{e}"
+        );
+    }
+
     /// `TEST_RUBBER` with `from` replaced by `to` (which must occur).
     fn with(from: &str, to: &str) -> String {
         assert!(TEST_RUBBER.contains(from), "{from}");
@@ -822,10 +891,11 @@ ageing = "test: ageing"
             keys,
             PARAMETERS
                 .iter()
-                .filter(|k| **k != "youngs_modulus")
+                .filter(|k| **k != "youngs_modulus" && **k != "glassy_thermal_expansion")
                 .copied()
                 .collect::<Vec<_>>()
         );
+        assert_eq!(m.glassy_thermal_expansion, None);
         assert_eq!(m.provenance_of("prony"), Some("test: one term"));
         // C2 is a temperature difference: "101.6 C" is 101.6 K, not 374.75 K
         let m = parse(&with("c2 = \"101.6 K\"", "c2 = \"101.6 C\"")).unwrap();

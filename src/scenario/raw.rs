@@ -107,6 +107,7 @@ pub(super) struct RawMaterial {
     pub prony: Option<Spanned<Vec<Spanned<RawPronyTerm>>>>,
     pub glass_transition: Option<Quantity>,
     pub thermal_expansion: Option<Quantity>,
+    pub glassy_thermal_expansion: Option<Quantity>,
     pub shift: Option<Spanned<RawShift>>,
     pub ageing: Option<Spanned<RawAgeing>>,
     /// Parameter key → where its value came from.

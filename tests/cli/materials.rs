@@ -173,18 +173,20 @@ fn list_shows_every_library_compound() {
             row.contains(&m.name) && row.contains(m.status.as_str()),
             "{row}"
         );
-        // E0 and E∞ in MPa to four significant digits
+        // E0 and E∞ in MPa, T_g and T10 in °C, to four significant digits
         let numbers: Vec<f64> = row
             .split_whitespace()
             .rev()
-            .take(3)
+            .take(4)
             .filter_map(|c| c.parse().ok())
             .collect();
         assert!(
-            close(numbers[2], m.prony.instantaneous() / 1e6, 1e-3),
+            close(numbers[3], m.prony.instantaneous() / 1e6, 1e-3),
             "{row}"
         );
-        assert!(close(numbers[1], m.prony.long_term() / 1e6, 1e-3), "{row}");
+        assert!(close(numbers[2], m.prony.long_term() / 1e6, 1e-3), "{row}");
+        let t10 = m.low_temperature_limit().unwrap() - 273.15;
+        assert!(close(numbers[0], t10, 1e-3), "{row}");
     }
 }
 
@@ -195,6 +197,8 @@ fn show_gives_every_parameter_with_units_and_provenance() {
         let (out, _) = ok(&["materials", "show", id]);
         assert!(out.starts_with(&format!("{id}: {}", m.name)), "{out}");
         assert!(out.contains(&format!("status: {}", m.status.as_str())));
+        // the derived low-temperature limit, every library series reaching its glassy plateau
+        assert!(out.contains("low_temperature     T10 = "), "{id}: {out}");
         for (key, source) in &m.provenance {
             assert!(out.contains(&format!("{key:<20}")), "{id}: {key} missing");
             assert!(

@@ -481,6 +481,7 @@ fn material_toml_round_trips_through_the_parser() {
         },
         glass_transition: Some(243.15),
         thermal_expansion: Some(2.3e-4),
+        glassy_thermal_expansion: Some(7.7e-5),
         ageing: Some(Ageing {
             activation_energy: 9e4,
             rate: 1e-9,
@@ -498,6 +499,7 @@ fn material_toml_round_trips_through_the_parser() {
             "shift",
             "glass_transition",
             "thermal_expansion",
+            "glassy_thermal_expansion",
             "ageing",
         ]
         .iter()

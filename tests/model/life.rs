@@ -34,6 +34,7 @@ fn material(long_term: f64, terms: &[(f64, f64)], shift: Shift) -> Material {
         shift,
         glass_transition: None,
         thermal_expansion: None,
+        glassy_thermal_expansion: None,
         ageing: None,
         ageing_basis: None,
         provenance: Vec::new(),
@@ -324,6 +325,8 @@ fn a_cold_snap_inside_one_step_is_resolved() {
         rubber_expansion: 1.65e-4,
         housing_expansion: 1.2e-5,
         installation_temperature: TREF,
+        glassy_expansion: None,
+        glass_transition: None,
     });
     p.time = TimeGrid {
         start: 1.0,
