@@ -263,6 +263,27 @@ impl Creep {
         self.instantaneous + self.fluidity * xi + delayed
     }
 
+    /// The strain at ξ after a stress ramped linearly to 1 Pa over the reduced time `ramp` and
+    /// held since, per pascal: the mean of J over [ξ, ξ + ramp] \[1/Pa\]
+    /// (`1/E0 + (ξ + ramp/2)/η0 + Σ B_j (1 − λ_j e^{−ξ/λ_j} (1 − e^{−ramp/λ_j})/ramp)`); J(ξ) at
+    /// ramp = 0.
+    pub fn ramp_compliance(&self, xi: f64, ramp: f64) -> f64 {
+        if ramp <= 0.0 {
+            return self.compliance(xi);
+        }
+        let delayed: f64 = self
+            .retardation
+            .iter()
+            .map(|r| {
+                let x = ramp / r.tau;
+                // (1 − e^{−x})/x, accurate for small x
+                let phi = if x < 1e-8 { 1.0 - 0.5 * x } else { -(-x).exp_m1() / x };
+                r.modulus * (1.0 - (-xi / r.tau).exp() * phi)
+            })
+            .sum();
+        self.instantaneous + self.fluidity * (xi + 0.5 * ramp) + delayed
+    }
+
     /// 1/η0 \[1/(Pa·s)\] of the steady-flow term (zero when E∞ > 0).
     pub fn fluidity(&self) -> f64 {
         self.fluidity
@@ -500,6 +521,24 @@ mod tests {
             )
             .is_err()
         );
+    }
+
+    #[test]
+    fn ramp_compliance_is_the_mean_of_j_over_the_ramp() {
+        let p = wide();
+        let c = p.creep();
+        for (xi, ramp) in [(0.0, 1.0), (10.0, 1e-3), (1e3, 1e6), (1e20, 5.0)] {
+            // midpoint rule with 200 000 panels on [ξ, ξ + ramp]
+            let n = 200_000;
+            let h = ramp / n as f64;
+            let mean: f64 = (0..n)
+                .map(|k| c.compliance(xi + (k as f64 + 0.5) * h))
+                .sum::<f64>()
+                / n as f64;
+            let rel = (c.ramp_compliance(xi, ramp) / mean - 1.0).abs();
+            assert!(rel < 1e-8, "ξ = {xi}, ramp = {ramp}: {rel:e}");
+        }
+        assert_eq!(c.ramp_compliance(3.0, 0.0), c.compliance(3.0));
     }
 
     #[test]

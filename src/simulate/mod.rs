@@ -854,7 +854,8 @@ impl<'a> Simulator<'a> {
     /// of the contact pressure is held by displacement, so its modulus is the stress response to
     /// the installation alone per unit load (P0/E* then stays as installed at a fixed squeeze,
     /// ageing included); the fluid's part (and all of a force-loaded seal's) is a load held
-    /// since t = 0, so its modulus is 1/J, the creep compliance J(ξ) with the two-network
+    /// since the installation (ramped with the squeeze), so its modulus is 1/J, the creep
+    /// compliance J(ξ) (its mean over the ramp, [`crate::material::Creep::ramp_compliance`]) with the two-network
     /// ageing's chemical creep: `J_aged = J(ξ) − 1/E∞ + (1/E∞ + y)/c` (y = `creep_set`, c the
     /// crosslink fraction; J(ξ) unaged). The other options use one fixed modulus for both.
     fn asperity_moduli(&self, state: &Mechanics) -> AsperityModuli {
@@ -868,7 +869,10 @@ impl<'a> Simulator<'a> {
             AsperityModulus::Instantaneous => one(prony.instantaneous()),
             AsperityModulus::Fixed(e) => one(e),
             AsperityModulus::Follow => {
-                let compliance = self.creep.compliance(state.reduced_time);
+                // the fluid pressure is applied with the squeeze, ramped over the installation
+                let compliance = self
+                    .creep
+                    .ramp_compliance(state.reduced_time, self.problem.installation_reduced_time());
                 let e_inf = prony.long_term();
                 let c = state.relaxation.network();
                 let aged = if e_inf > 0.0 && (c != 1.0 || state.creep_set != 0.0) {
