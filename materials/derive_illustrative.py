@@ -109,6 +109,24 @@ HANDBOOK = ("Handbook of Plastics Technologies: The Complete Guide to Properties
 KOMMLING = ("A. Kömmling, M. Jaunich, D. Wolff, 'Ageing and lifetime prediction of O-ring seals made of "
             "HNBR, EPDM and FKM', Fall Rubber Colloquium (Kautschuk Herbst Kolloquium), Hanover, 2016 "
             "(BAM OPUS4-38480)")
+YEAR = 365.25 * 86400
+R_GAS = 8.314462618
+
+
+def rate_to_set(years, set_fraction):
+    """The scission rate k [1/s] that reaches a compression set `set_fraction` in `years` with
+    the two-network model's CS = 1 - exp(-k t) (balanced crosslinking, docs/model.md 6.5)."""
+    return -math.log(1 - set_fraction) / (years * YEAR)
+
+
+def ten_degree_doubling(tref_c):
+    """Ea [J/mol] of the rule 'rates double for 10 K' at tref_c: R ln2 / (1/T - 1/(T + 10))."""
+    t = tref_c + 273.15
+    return R_GAS * math.log(2) / (1 / t - 1 / (t + 10))
+
+
+PSP_RULE = ("the 10 K doubling rule ('chemical reactions typically double with a 10 C increase in "
+            "temperature': Problem Solving Products Inc., 'Seal Thermal Stability', pspglobal.com)")
 CTE_ASSUMED = ("assumed 160e-6 1/K, of the order of the sourced NBR and EPDM values; no source found for "
                "this polymer; illustrative")
 
@@ -120,33 +138,73 @@ COMPOUNDS = [
          tg=-34, tg_src=f"{HANDBOOK}, Table 4.2: nitrile rubber, medium nitrile, T_g = -34 C",
          cte=165e-6, cte_src="midpoint of the 150-180e-6 1/K given for NBR by NETZSCH (Polymers, "
          "NBR material page, analyzing-testing.netzsch.com); illustrative for a given compound",
-         ageing=None),
+         ageing=dict(ea=57.5e3, rate=rate_to_set(15, 0.5), tref=23.0,
+                     prop="tensile elongation of NBR O-rings aged in hydraulic fluid (with hardness, "
+                     "compression set and crosslink density)",
+                     crit="50 % loss of elongation at break (about 50 % compression set)",
+                     src="R.J. Pazur, J.G. Cormier, K. Korhan-Tayma, 'Service life determination of "
+                     "nitrile O-rings in hydraulic fluid', ACS Rubber Division 182nd meeting, "
+                     "Cincinnati, 2012, paper 8 (abstract read): Ea = 50-65 kJ/mol (midpoint 57.5 "
+                     "taken), 20-30 kJ/mol below NBR aged in air (a Sandia study gives 92 kJ/mol on "
+                     "elongation in air: 'A critical assessment of the Arrhenius oven-aging "
+                     "methodology', 1993, abstract); service life 15 years at 23 C (the abstract "
+                     "prints '230C', read as 23 C); k_ref from CS = 1 - exp(-k t) = 0.5 at 15 years "
+                     "(elongation criterion taken as a set criterion, an assumption); illustrative")),
     dict(id="hnbr-75", name="HNBR (hydrogenated nitrile rubber), 75 Shore A", shore=75,
          tg=-30, tg_src=f"{HANDBOOK}, Table 4.2: hydrogenated nitrile, T_g = -30 C",
-         cte=160e-6, cte_src=CTE_ASSUMED, ageing=None),
+         cte=160e-6, cte_src=CTE_ASSUMED,
+         ageing=dict(ea=ten_degree_doubling(60.0), rate=rate_to_set(5, 0.85), tref=60.0,
+                     prop="compression set of O-rings aged at 25 % compression (75-150 C, up to 2 "
+                     "years; extrapolated)",
+                     crit="85 % compression set",
+                     src=f"k_ref at 60 C from {KOMMLING} (abstract read): about 5 years to 85 % "
+                     "compression set at 60 C, converted with CS = 1 - exp(-k t); no activation "
+                     f"energy was found for HNBR: Ea from {PSP_RULE} at 60 C; illustrative")),
     dict(id="fkm-75", name="FKM (fluoroelastomer), 75 Shore A", shore=75,
          tg=-10, tg_src="Encyclopaedia Britannica, 'elastomer', table of elastomers: fluoroelastomer, "
          "T_g = -10 C (copolymer/terpolymer grades differ)",
          cte=160e-6, cte_src=CTE_ASSUMED,
-         ageing=dict(ea=38e3, rate=-math.log(1 - 0.65) / (40 * 365.25 * 86400), tref=60.0,
+         ageing=dict(ea=38e3, rate=rate_to_set(40, 0.65), tref=60.0,
+                     prop="compression stress relaxation (Ea); compression set of O-rings (k_ref)",
+                     crit="50 % force retained (Ea); 65 % compression set (k_ref)",
                      src="Ea = 38 kJ/mol: compression stress relaxation of FKM 75 Shore A, European "
                      "Sealing Association / Cetim round robin, Valve World (August 2023) p. 53; "
                      f"k_ref at 60 C from {KOMMLING}: about 40 years to 65 % compression set at 60 C, "
                      "converted with CS = 1 - exp(-k t) (an assumption); the two numbers come from "
-                     "different studies and properties: illustrative")),
+                     "different studies and properties (the same round robin gives 62-170 kJ/mol on "
+                     "compression set at a 50 % criterion, by laboratory: Table 2): illustrative")),
     dict(id="epdm-70", name="EPDM (ethylene propylene diene rubber), 70 Shore A", shore=70,
          tg=-55, tg_src=f"{HANDBOOK}, Table 4.2: EPDM, T_g = -55 C",
          cte=160e-6, cte_src="Wikipedia, 'EPDM rubber', properties table: linear thermal expansion "
-         "160 um/(m K) (read from a mirror); illustrative for a given compound", ageing=None),
+         "160 um/(m K) (read from a mirror); illustrative for a given compound",
+         ageing=dict(ea=72e3, rate=rate_to_set(64, 0.85), tref=60.0,
+                     prop="compression set of O-rings aged at 25 % compression (k_ref); tensile "
+                     "strength x elongation of EPDM compounds (Ea)",
+                     crit="85 % compression set (k_ref); Arrhenius slope of the property (Ea)",
+                     src=f"k_ref at 60 C from {KOMMLING} (abstract read): about 64 years to 85 % "
+                     "compression set at 60 C, converted with CS = 1 - exp(-k t); Ea = 72 kJ/mol, "
+                     "the midpoint of the 68.7 and 75.8 kJ/mol of two EPDM recipes (China "
+                     "Rubber/Plastics Technology & Equipment, English edition, January 2026, p. 87, "
+                     "Table 7); different studies and properties: illustrative")),
     dict(id="vmq-70", name="VMQ (silicone rubber), 70 Shore A", shore=70,
          tg=-127, tg_src=f"{HANDBOOK}, Table 4.1: silicone rubber, T_g = -127 C",
          cte=200e-6, cte_src="estimated: an unfilled silicone rubber can exceed 300e-6 1/K and fillers "
          "reduce the CTE by 30-50 % (engineeringniche.com, 'Designing rubber and elastomeric materials "
          "to accommodate thermal expansion'); 200e-6 1/K taken for a filled compound, illustrative",
-         ageing=None),
+         ageing=None,
+         no_ageing="no ageing constants: an activation energy was found (67.7 kJ/mol on "
+         "compression set, 75.3 on creep, 88.5 on elongation: K. Xiang et al., 'Accelerated thermal "
+         "ageing studies of polydimethylsiloxane (PDMS) rubber', J. Polym. Res. 19 (2012) 9869, "
+         "abstract) but no rate or lifetime at a stated temperature, which the model needs; give "
+         "[ageing] with your compound's data"),
     dict(id="cr-70", name="CR (polychloroprene), 70 Shore A", shore=70,
          tg=-45, tg_src=f"{HANDBOOK}, Table 4.2: polychloroprene, T_g = -45 C",
-         cte=160e-6, cte_src=CTE_ASSUMED, ageing=None),
+         cte=160e-6, cte_src=CTE_ASSUMED, ageing=None,
+         no_ageing="no ageing constants: an activation energy was found (about 80 kJ/mol for the "
+         "modulus, hardness and elongation of neoprenes aged at 70-90 C: R. Bouaziz et al., 'Elastic "
+         "properties of polychloroprene rubbers in tension and compression during ageing', Polymers "
+         "12 (2020) 2354, abstract) but no rate or lifetime at a stated temperature, which the model "
+         "needs; give [ageing] with your compound's data"),
 ]
 
 
@@ -178,8 +236,10 @@ def toml_for(c):
     ]
     if c["ageing"]:
         a = c["ageing"]
-        lines += ["", "[material.ageing]", f'activation_energy = "{a["ea"] / 1e3:g} kJ/mol"',
-                  f'rate = "{a["rate"]:.3e} 1/s"', f'reference_temperature = "{a["tref"]:g} C"']
+        lines += ["", "[material.ageing]", f'activation_energy = "{a["ea"] / 1e3:.4g} kJ/mol"',
+                  f'rate = "{a["rate"]:.3e} 1/s"', f'reference_temperature = "{a["tref"]:g} C"',
+                  "crosslinking = 1.0",
+                  f'property = "{a["prop"]}"', f'criterion = "{a["crit"]}"']
     gent_src = (f"E(3 s, 23 C) = {d['e_test'] / 1e6:.4f} MPa from Gent's relation at {c['shore']} Shore A "
                 "(A.N. Gent 1958, 'On the relation between indentation hardness and Young's modulus', "
                 "form as commonly quoted; the grade is nominal)")
@@ -211,7 +271,10 @@ def toml_for(c):
                                     "(the CTE of amorphous polymers drops at T_g); illustrative",
     }
     if c["ageing"]:
-        prov["ageing"] = c["ageing"]["src"]
+        prov["ageing"] = (c["ageing"]["src"] + "; crosslinking = 1 (balanced: the new network forms "
+                          "as fast as the old one breaks, Andrews, Tobolsky & Hanson 1946), assumed")
+    elif c.get("no_ageing"):
+        prov["ageing"] = c["no_ageing"]
     lines += ["", "[material.provenance]"]
     lines += [f'{k} = "{v}"' for k, v in prov.items()]
     return "\n".join(lines) + "\n", d

@@ -181,8 +181,8 @@ impl Limit {
             }
             Limit::Squeeze => "outside the squeeze for which Lindley's O-ring relations are used",
             Limit::GlassTransition => {
-                "below the glass transition: the rubbery Prony series does not describe glassy \
-                 rubber"
+                "below the glass transition: the rubber turns glassy; WLF is extrapolated below its \
+                 range, and a series that stops at the rubbery plateau is far too soft here"
             }
             Limit::Frozen => {
                 "at or below the WLF singularity: the rubber is treated as frozen (no relaxation)"

@@ -370,10 +370,12 @@ impl RelaxationState {
         let d_k = chem.scission;
         let r = chem.crosslinking;
         let decay = exp_neg(d_k);
-        let network_end = decay * self.network + r * (1.0 - decay);
+        // 1 − e^{−ΔK} without cancellation: ΔK of a step is often 1e-12 or less
+        let formed = -(-d_k).exp_m1();
+        let network_end = decay * self.network + r * formed;
         let network_mid = if d_k > 0.0 {
-            let half = exp_neg(0.5 * d_k);
-            half * self.network + r * (1.0 - half)
+            let half = -(-0.5 * d_k).exp_m1();
+            (1.0 - half) * self.network + r * half
         } else {
             self.network
         };
@@ -383,7 +385,7 @@ impl RelaxationState {
         }
         if d_k > 0.0 {
             self.set_reference = decay * self.set_reference
-                + r * (self.strain * (1.0 - decay) + d_strain * (1.0 - phi(d_k)));
+                + r * (self.strain * formed + d_strain * (1.0 - phi(d_k)));
         }
         self.network = network_end;
         self.strain += d_strain;
@@ -521,6 +523,66 @@ mod tests {
             )
             .is_err()
         );
+    }
+
+    #[test]
+    fn two_networks_at_constant_strain_match_their_closed_forms() {
+        // constant scission rate k, strain x0 from t = 0: for any r, σ = x0 E(t) e^{−kt} and
+        // c = e^{−K} + r(1 − e^{−K}), set y/c = x0 r(1 − e^{−K})/c, K = kt
+        let p = wide();
+        let (x0, k) = (0.1, 3e-9);
+        for r in [0.0, 0.5, 1.0, 2.0] {
+            let mut s = RelaxationState::new(&p);
+            s.step(&p, 0.0, x0);
+            let mut t = 0.0;
+            let mut worst: f64 = 0.0;
+            for n in 0..=220 {
+                let next = 10f64.powf(-2.0 + n as f64 / 20.0);
+                let chem = ChemicalStep {
+                    scission: k * (next - t),
+                    crosslinking: r,
+                };
+                s.step_aged(&p, next - t, 0.0, chem);
+                t = next;
+                let big_k = k * t;
+                let stress = x0 * p.relaxation(t) * (-big_k).exp();
+                let c = (-big_k).exp() + r * -(-big_k).exp_m1();
+                let set = x0 * r * -(-big_k).exp_m1() / c;
+                worst = worst
+                    .max((s.stress(&p) / stress - 1.0).abs())
+                    .max((s.network() / c - 1.0).abs());
+                if set > 0.0 {
+                    worst = worst.max((s.set_strain() / set - 1.0).abs());
+                } else {
+                    assert_eq!(s.set_strain(), 0.0);
+                }
+            }
+            assert!(worst <= 1e-9, "r = {r}: worst relative error {worst:e}");
+        }
+    }
+
+    #[test]
+    fn a_strain_change_after_ageing_meets_the_whole_network() {
+        // after K = 1 at x0: an instantaneous Δx changes the stress by c E0 Δx — E0 Δx for r = 1,
+        // e^{−K} E0 Δx for scission alone (r = 0), which is the plain multiplier's
+        let p = wide();
+        let (x0, dx) = (0.1, -0.02);
+        for (r, factor) in [(1.0, 1.0), (0.0, (-1.0f64).exp())] {
+            let mut s = RelaxationState::new(&p);
+            s.step(&p, 0.0, x0);
+            for _ in 0..10 {
+                let chem = ChemicalStep {
+                    scission: 0.1,
+                    crosslinking: r,
+                };
+                s.step_aged(&p, 1e3, 0.0, chem);
+            }
+            let before = s.stress(&p);
+            s.step(&p, 0.0, dx);
+            let change = s.stress(&p) - before;
+            let hand = factor * p.instantaneous() * dx;
+            assert!((change / hand - 1.0).abs() < 1e-12, "r = {r}: {change} vs {hand}");
+        }
     }
 
     #[test]

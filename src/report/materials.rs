@@ -256,17 +256,40 @@ pub fn describe(id: &str, m: &Material) -> String {
             &[],
         );
     }
-    if let Some(a) = m.ageing {
-        param(
-            "ageing",
-            format!(
-                "Arrhenius chemical stress relaxation: k_ref = {} 1/s at {}, Ea = {} kJ/mol",
-                human(a.rate, 6),
-                temperature(a.reference_temperature),
-                human(a.activation_energy / 1e3, 6)
-            ),
-            &[],
-        );
+    match m.ageing {
+        Some(a) => {
+            let mut extra = vec![format!(
+                "two networks (docs/model.md §6.5): a new network forms at {} × k in the \
+                 compressed state{}",
+                human(a.crosslinking, 4),
+                if a.crosslinking == 1.0 {
+                    ": compression set = 1 − F/F0 at a constant squeeze"
+                } else {
+                    ""
+                }
+            )];
+            if let Some(b) = &m.ageing_basis {
+                extra.push(format!("property: {}", b.property));
+                extra.push(format!("criterion: {}", b.criterion));
+            }
+            param(
+                "ageing",
+                format!(
+                    "scission k_ref = {} 1/s at {}, Ea = {} kJ/mol (Arrhenius)",
+                    human(a.rate, 6),
+                    temperature(a.reference_temperature),
+                    human(a.activation_energy / 1e3, 6)
+                ),
+                &extra,
+            );
+        }
+        None => {
+            if let Some(why) = m.provenance_of("ageing") {
+                out += &format!("{:<19} none
+{INDENT}source: {why}
+", "ageing");
+            }
+        }
     }
     if let Some(t10) = m.low_temperature_limit() {
         out += &format!(

@@ -268,6 +268,31 @@ impl Source<'_> {
             contamination,
             motion,
         };
+        let mut warnings = seal.warnings;
+        if let (None, Some(own)) = (&life.ageing, &material.ageing) {
+            // the compound's data say it ages: an engineer should see that this run does not
+            warnings.push(
+                self.error(
+                    raw.material.span(),
+                    "ageing",
+                    format!(
+                        "{} has ageing constants (Ea = {} kJ/mol, k = {} 1/s at {} K{}) but the \
+                         scenario has no [ageing] table: chemical ageing and compression set are \
+                         off in this run; add an empty `[ageing]` to use the compound's \
+                         [docs/model.md §6.5]",
+                        material.name,
+                        show(own.activation_energy / 1e3),
+                        show(own.rate),
+                        show(own.reference_temperature),
+                        material
+                            .ageing_basis
+                            .as_ref()
+                            .map_or(String::new(), |b| format!(", from {}", b.property)),
+                    ),
+                )
+                .to_string(),
+            );
+        }
         let static_seal = static_seal(&life);
         Ok(Scenario {
             name,
@@ -285,7 +310,7 @@ impl Source<'_> {
             height_map,
             numerical,
             gland: seal.design,
-            warnings: seal.warnings,
+            warnings,
         })
     }
 

@@ -722,11 +722,13 @@ impl<'a> Simulator<'a> {
             let c = 0.5 * (network_before + state.relaxation.network());
             let (a, b) = (r / (e_inf * c), r / c - 1.0);
             let y = state.creep_set;
-            state.creep_set = if (b * d_k).abs() < 1e-12 {
-                y + a * d_k
+            // y + (a + b y)(e^{b ΔK} − 1)/b, without cancellation for small b ΔK
+            let growth = if (b * d_k).abs() < 1e-12 {
+                d_k
             } else {
-                (y + a / b) * (b * d_k).exp() - a / b
+                (b * d_k).exp_m1() / b
             };
+            state.creep_set = y + (a + b * y) * growth;
         }
     }
 
