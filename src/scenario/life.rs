@@ -1212,20 +1212,21 @@ squeeze = 0.2
             load(&fkm).unwrap().life.ageing.is_none(),
             "modelled only when present"
         );
-        // NBR has no ageing constants
-        let e = error(&with("[ageing]\n"));
+        // VMQ has no ageing constants
+        let vmq = |extra: &str| with(extra).replace("\"nbr-70\"", "\"vmq-70\"");
+        let e = error(&vmq("[ageing]\n"));
         assert!(
-            e.contains(":17: ageing.activation_energy: missing key `activation_energy` in [ageing], and the material (NBR"),
+            e.contains(":17: ageing.activation_energy: missing key `activation_energy` in [ageing], and the material (VMQ"),
             "{e}"
         );
-        let e = error(&with(
+        let e = error(&vmq(
             "[ageing]\nactivation_energy = \"80 kJ/mol\"\nrate = \"1e-9 1/s\"\n",
         ));
         assert!(
             e.contains("ageing.reference_temperature: missing key"),
             "{e}"
         );
-        let s = load(&with(
+        let s = load(&vmq(
             "[ageing]\nactivation_energy = \"80 kJ/mol\"\nrate = \"1e-9 1/s\"\nreference_temperature = \"100 C\"\n",
         ))
         .unwrap();
@@ -1298,8 +1299,8 @@ squeeze = 0.2
     #[test]
     fn a_replacement_material_is_validated_in_place() {
         let fkm = library::get("fkm-75").unwrap().load().unwrap();
-        let text = with("[ageing]\n");
-        // NBR alone fails ([ageing] without constants); with FKM in its place it loads
+        let text = with("[ageing]\n").replace("\"nbr-70\"", "\"vmq-70\"");
+        // VMQ alone fails ([ageing] without constants); with FKM in its place it loads
         assert!(load(&text).is_err());
         let s = Scenario::from_str_with_material(&text, Path::new("s.toml"), &fkm).unwrap();
         assert_eq!(s.material, fkm);
