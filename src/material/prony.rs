@@ -313,15 +313,19 @@ impl Creep {
 /// strain changes after its formation. With K = ∫k_s dt, the crosslink fraction
 /// c (`c' = k_s (r − c)`, c(0) = 1) and the set reference y (`y' = k_s (r ε − y)`, y(0) = 0):
 /// `σ = E∞ (c ε − y) + Σ h_i`, and every branch decays with the network,
-/// `h_i ← e^{−x − ΔK} h_i + E_i c φ(x + ΔK) Δε`.
+/// `h_i ← e^{−x − ΔK} h_i + E_i c φ(x + ΔK) Δε`. The equilibrium strain z = c ε − y obeys
+/// `dz/dK = −z + c dε/dK` — a branch with τ = ∞ — and is carried besides y: the stress from z
+/// keeps its relative precision however far it has decayed (z → ε e^{−K}), the set from y
+/// however little has formed (y → r ε K).
 #[derive(Debug, Clone, PartialEq)]
 pub struct RelaxationState {
     strain: f64,
     branches: Vec<f64>,
     /// c, the crosslink density relative to the original network's.
     network: f64,
-    /// y, the equilibrium strain the later networks hold, times their fraction (E∞ y is the
-    /// stress the set takes off the equilibrium spring).
+    /// z = c ε − y, the strain the equilibrium spring E∞ carries (ε unaged).
+    equilibrium: f64,
+    /// y, the strain the later networks hold at rest, times their fraction (0 unaged).
     set_reference: f64,
 }
 
@@ -342,6 +346,7 @@ impl RelaxationState {
             strain: 0.0,
             branches: vec![0.0; prony.terms().len()],
             network: 1.0,
+            equilibrium: 0.0,
             set_reference: 0.0,
         }
     }
@@ -361,11 +366,11 @@ impl RelaxationState {
     }
 
     /// [`Self::step`] with chemical ageing over the step (two-network model; Andrews,
-    /// Tobolsky & Hanson, J. Appl. Phys. 17 (1946) 352): the branches as in the type's doc
-    /// with c at the step's middle; c and y exactly for the strain linear in K within the
-    /// step: `c ← e^{−ΔK} c + r (1 − e^{−ΔK})`,
-    /// `y ← e^{−ΔK} y + r [ε_a (1 − e^{−ΔK}) + Δε (1 − φ(ΔK))]`. Exact at constant strain
-    /// for any step; with ΔK = 0 it is [`Self::step`] bit for bit.
+    /// Tobolsky & Hanson, J. Appl. Phys. 17 (1946) 352): the branches and z as in the type's doc
+    /// with c at the step's middle (`z ← e^{−ΔK} z + c φ(ΔK) Δε`); c and y exactly for the
+    /// strain linear in K within the step: `c ← e^{−ΔK} c + r (1 − e^{−ΔK})`,
+    /// `y ← e^{−ΔK} y + r [ε_a (1 − e^{−ΔK}) + Δε (1 − φ(ΔK))]`. Exact at constant strain for
+    /// any step; with ΔK = 0 it is [`Self::step`] bit for bit.
     pub fn step_aged(&mut self, prony: &Prony, d_xi: f64, d_strain: f64, chem: ChemicalStep) {
         let d_k = chem.scission;
         let r = chem.crosslinking;
@@ -383,6 +388,7 @@ impl RelaxationState {
             let x = d_xi / t.tau + d_k;
             *h = exp_neg(x) * *h + t.modulus * network_mid * phi(x) * d_strain;
         }
+        self.equilibrium = decay * self.equilibrium + network_mid * phi(d_k) * d_strain;
         if d_k > 0.0 {
             self.set_reference = decay * self.set_reference
                 + r * (self.strain * formed + d_strain * (1.0 - phi(d_k)));
@@ -391,10 +397,9 @@ impl RelaxationState {
         self.strain += d_strain;
     }
 
-    /// Current stress σ = E∞ (c ε − y) + Σ h_i \[Pa\].
+    /// Current stress σ = E∞ z + Σ h_i \[Pa\] (z = ε unaged).
     pub fn stress(&self, prony: &Prony) -> f64 {
-        prony.long_term() * (self.network * self.strain - self.set_reference)
-            + self.branches.iter().sum::<f64>()
+        prony.long_term() * self.equilibrium + self.branches.iter().sum::<f64>()
     }
 
     /// Current strain.

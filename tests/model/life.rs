@@ -4,7 +4,7 @@ use sealsim::contact::ContactSettings;
 use sealsim::fluid::Fluid;
 use sealsim::leak::Fidelity;
 use sealsim::material::shift::Cycle;
-use sealsim::material::{Material, Prony, PronyTerm, Shift, Status, TemperatureHistory};
+use sealsim::material::{Ageing, Material, Prony, PronyTerm, Shift, Status, TemperatureHistory};
 use sealsim::seal::SealGeometry;
 use sealsim::simulate::{
     AsperityModulus, FailureCriteria, FailureMode, GrooveInterface, LifeProblem, Loading,
@@ -343,4 +343,180 @@ fn a_cold_snap_inside_one_step_is_resolved() {
     assert!((c / f - 1.0).abs() < 2e-3, "{c} vs {f}");
     // and the cold unloading is stiff: more force lost than the relaxed modulus would give
     assert!(c < 0.9 * coarse.rows[coarse.rows.len() - 3].sealing_force);
+}
+
+/// An elastic O-ring (E = 5 MPa, no relaxation, no shift) with two-network ageing: Ea, k at T1.
+fn aged_elastic(crosslinking: f64) -> LifeProblem {
+    let mut p = oring_problem(material(5e6, &[], Shift::None));
+    p.ageing = Some(Ageing {
+        activation_energy: AGED_EA,
+        rate: AGED_RATE,
+        reference_temperature: AGED_T1,
+        crosslinking,
+    });
+    p.environment = TemperatureHistory::constant(AGED_T1);
+    p.fluid.pressure_difference = 1e-3;
+    p
+}
+
+const AGED_EA: f64 = 300e3;
+const AGED_RATE: f64 = 3e-8;
+const AGED_T1: f64 = 373.15;
+
+/// k(T) of [`aged_elastic`] \[1/s\].
+fn aged_rate(t: f64) -> f64 {
+    AGED_RATE * (-(AGED_EA / 8.314462618) * (1.0 / t - 1.0 / AGED_T1)).exp()
+}
+
+#[test]
+fn follow_keeps_the_leak_constant_through_ageing_at_a_fixed_squeeze() {
+    // with ageing too, P0 and the squeeze's asperity modulus decay alike: the gap field stays as
+    // installed (ΔP negligible), for balanced and unbalanced crosslinking
+    for r in [1.0, 0.3] {
+        let mut p = oring_problem(nbr_like());
+        p.asperity_modulus = AsperityModulus::Follow;
+        // ΔP ≤ 1e-8 of the contact pressure all along (the force falls to 1e-4 of its start)
+        p.fluid.pressure_difference = 1e-7;
+        p.ageing = Some(Ageing {
+            activation_energy: 80e3,
+            rate: 1e-8,
+            reference_temperature: TREF,
+            crosslinking: r,
+        });
+        let res = simulate(&p);
+        let q0 = res.initial_leak_rate();
+        assert!(q0 > 0.0);
+        for row in &res.rows {
+            assert!(
+                (row.leak_rate / q0 - 1.0).abs() < 1e-9,
+                "r = {r}, t = {}: {} vs {q0}",
+                row.time,
+                row.leak_rate
+            );
+        }
+        // the force has aged away (K = 9.5 after 30 years)
+        assert!(res.rows.last().unwrap().sealing_force < 1e-3 * res.rows[0].sealing_force);
+    }
+}
+
+#[test]
+fn compression_set_and_force_at_constant_temperature_follow_the_closed_forms() {
+    // elastic ring, constant T: F = d E g(ε0) e^{−kt} for any r; CS on the squeeze through g:
+    // ε_set = g⁻¹(g(ε0) r(1 − e^{−K})/c), c = e^{−K} + r(1 − e^{−K})
+    use sealsim::seal::{squeeze_from_load, squeeze_function};
+    for r in [1.0, 0.5] {
+        let p = aged_elastic(r);
+        let res = simulate(&p);
+        let (eps0, d) = (0.2, 3.53e-3);
+        let g0 = squeeze_function(eps0);
+        let mut worst: f64 = 0.0;
+        for row in res.rows.iter().skip(1) {
+            let big_k = AGED_RATE * row.time;
+            let force = d * 5e6 * g0 * (-big_k).exp();
+            let formed = -(-big_k).exp_m1();
+            let c = (-big_k).exp() + r * formed;
+            let set = squeeze_from_load(g0 * r * formed / c) / eps0;
+            let got = row.compression_set.unwrap();
+            worst = worst.max((row.sealing_force / force - 1.0).abs());
+            worst = worst.max((got / set - 1.0).abs());
+        }
+        assert!(worst < 1e-9, "r = {r}: {worst:e}");
+        // flat-seal form, r = 1: CS on the load variable is 1 − F/F0 — here through g
+        let last = res.rows.last().unwrap();
+        assert!(last.compression_set.unwrap() > 0.99, "{last:?}");
+    }
+}
+
+#[test]
+fn an_aged_ring_loses_more_force_on_cooling_than_a_multiplier_says() {
+    // age 1 year at 100 °C (K = k t1 ≈ 0.95), then cool to 23 °C within 1 ms (k falls 1e11-fold:
+    // no further ageing), hold 100 s; the squeeze drops by the thermal strain Δx on g.
+    // Hand values: balanced (r = 1) F = d E (x1 − x0 (1 − e^{−K})); scission alone (r = 0, the
+    // plain multiplier of earlier versions) F = d E e^{−K} x1
+    use sealsim::seal::{ThermalStrain, squeeze_function};
+    let (t1, t2) = (YEAR, 296.15);
+    let thermal = ThermalStrain {
+        rubber_expansion: 2.3e-4,
+        housing_expansion: 1.2e-5,
+        installation_temperature: AGED_T1,
+        glassy_expansion: None,
+        glass_transition: None,
+    };
+    let d = 3.53e-3;
+    let geometry = SealGeometry::ORing {
+        cross_section: d,
+        mean_diameter: 0.05,
+        squeeze: 0.2,
+    };
+    let x0 = squeeze_function(geometry.squeeze_at(Some(&thermal), AGED_T1));
+    let x1 = squeeze_function(geometry.squeeze_at(Some(&thermal), t2));
+    assert!(x1 < 0.95 * x0, "{x0} → {x1}");
+    // K over the year, the 1 ms ramp (Simpson) and the 100 s cold hold
+    let ramp = 1e-3;
+    let n = 2000;
+    let h = ramp / n as f64;
+    let temp = |s: f64| AGED_T1 + (t2 - AGED_T1) * s / ramp;
+    let simpson: f64 = (0..=n)
+        .map(|i| {
+            let w = if i == 0 || i == n {
+                1.0
+            } else if i % 2 == 1 {
+                4.0
+            } else {
+                2.0
+            };
+            w * aged_rate(temp(i as f64 * h))
+        })
+        .sum::<f64>()
+        * h
+        / 3.0;
+    let big_k = AGED_RATE * t1 + simpson + aged_rate(t2) * 100.0;
+    let mut forces = Vec::new();
+    for r in [1.0, 0.0] {
+        let mut p = aged_elastic(r);
+        p.geometry = geometry;
+        p.thermal_strain = Some(thermal);
+        p.environment =
+            TemperatureHistory::table(vec![(0.0, AGED_T1), (t1, AGED_T1), (t1 + ramp, t2)]);
+        p.time.duration = t1 + ramp + 100.0;
+        let last = *simulate(&p).rows.last().unwrap();
+        let hand = if r == 1.0 {
+            d * 5e6 * (x1 - x0 * -(-big_k).exp_m1())
+        } else {
+            d * 5e6 * (-big_k).exp() * x1
+        };
+        assert!(
+            (last.sealing_force / hand - 1.0).abs() < 1e-8,
+            "r = {r}: {} vs {hand}",
+            last.sealing_force
+        );
+        forces.push(last.sealing_force);
+    }
+    // the set ring keeps less: (x0 e^{−K} − |Δx|) against e^{−K}(x0 − |Δx|)
+    assert!(forces[0] < 0.9 * forces[1], "{forces:?}");
+}
+
+#[test]
+fn time_to_a_compression_set_scales_with_arrhenius() {
+    // elastic ring, max_compression_set = 0.5 at two temperatures: t = −ln(1 − s_x)/k(T) with
+    // s_x = g(ε0/2)/g(ε0) the set on g (r = 1), so t1/t2 = k(T2)/k(T1)
+    use sealsim::seal::squeeze_function;
+    let s_x = squeeze_function(0.1) / squeeze_function(0.2);
+    let mut times = Vec::new();
+    for t in [AGED_T1, AGED_T1 - 15.0] {
+        let mut p = aged_elastic(1.0);
+        p.environment = TemperatureHistory::constant(t);
+        p.time.duration = 1e4 * YEAR;
+        p.failure = FailureCriteria {
+            max_compression_set: Some(0.5),
+            ..FailureCriteria::default()
+        };
+        let f = simulate(&p).failure.expect("reaches the set");
+        assert_eq!(f.mode, FailureMode::CompressionSet);
+        let closed = -(-s_x).ln_1p() / aged_rate(t);
+        assert!((f.time / closed - 1.0).abs() < 1e-9, "{t} K: {} vs {closed}", f.time);
+        times.push(f.time);
+    }
+    let ratio = aged_rate(AGED_T1) / aged_rate(AGED_T1 - 15.0);
+    assert!((times[1] / times[0] / ratio - 1.0).abs() < 1e-9);
 }
