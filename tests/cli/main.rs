@@ -23,6 +23,7 @@ mod leak;
 mod materials;
 mod motion;
 mod ranges;
+mod rubber;
 mod run;
 mod small_defects;
 mod tradeoff;

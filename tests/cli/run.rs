@@ -240,13 +240,13 @@ fn shipped_life_scenarios_show_their_point() {
     let t = nbr["time_to_failure_s"].as_f64().unwrap();
     assert!((30.0 * 3600.0..46.0 * 3600.0).contains(&t), "{t}");
     assert_eq!(vmq["failure_mode"], "none");
-    // the spring-loaded seal: the leak rate falls
+    // the spring-loaded seal: the asperities creep under the held load, the leak rate falls
     let (_, spring) = run("spring-loaded-face-seal.toml");
     let (q0, q1) = (
         spring["initial_leak_rate_m3_per_s"].as_f64().unwrap(),
         spring["final_leak_rate_m3_per_s"].as_f64().unwrap(),
     );
-    assert!(q1 < q0 / 10.0, "{q0} → {q1}");
+    assert!(q1 < q0 / 3.0, "{q0} → {q1}");
 }
 
 /// A flat seal of a one-term Prony rubber: E(t) = E∞ + E1 e^(−t/τ), WLF at T_ref = 23 °C,
@@ -444,10 +444,8 @@ fn bad_scenarios_exit_2_and_write_nothing() {
         ),
         (
             "[failure]",
-            "[ageing]\n[failure]",
-            &[
-                "s.toml:40: ageing.activation_energy: missing key `activation_energy` in [ageing], and the material",
-            ],
+            "[ageing]\ncrosslinking = 20\n[failure]",
+            &["s.toml:41: ageing.crosslinking: "],
         ),
         (
             "library = \"nbr-70\"",
@@ -634,7 +632,7 @@ fn compare_rejects_unknown_ids() {
     cargo_bin_cmd!("sealsim")
         .arg("compare")
         .arg(&scenario)
-        .args(["--materials", "fkm-75,nbr-70"])
+        .args(["--materials", "fkm-75,vmq-70"])
         .assert()
         .code(2)
         .stderr(predicate::str::contains(
