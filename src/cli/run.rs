@@ -117,3 +117,4 @@ fn plot(
         .map(Some)
         .map_err(|e| CliError::Internal(e.to_string()))
 }
+
