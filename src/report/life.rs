@@ -603,8 +603,11 @@ pub fn human_summary(
         );
         if let Some(set) = last.compression_set {
             line(
-                "compression set",
-                format!("{} % after {duration}", human(100.0 * set, 3)),
+                "set",
+                format!(
+                    "compression set {} % after {duration} (ASTM D395 definition)",
+                    human(100.0 * set, 3)
+                ),
             );
         }
     }
