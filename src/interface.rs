@@ -312,7 +312,7 @@ pub struct HertzMemo {
     /// Node spacing in ln ΔP̂ (`None`: ΔP̂ is the same in every call, one node row).
     pressure_spacing: Option<f64>,
     /// `(i, j) → (ln(q b η), p_f(centre)/ΔP)` (`None`: not conducting there).
-    nodes: std::cell::RefCell<std::collections::HashMap<(i64, i64), Option<(f64, f64)>>>,
+    nodes: std::cell::RefCell<std::collections::HashMap<(i64, i64), Option<Node>>>,
     /// The node solved last (the start of the next, a neighbour usually) and the one before.
     previous: std::cell::Cell<Option<Solved>>,
     warm: std::cell::Cell<Option<Solved>>,
@@ -320,6 +320,9 @@ pub struct HertzMemo {
     /// call had that p̂ (nodes in one column, key [`COLUMN`]), `Some(None)` once one did not.
     column: std::cell::Cell<Option<Option<f64>>>,
 }
+
+/// A memoised node: `(ln(q b η), p_f(centre)/ΔP)`.
+type Node = (f64, f64);
 
 /// A node solution as the start of the next node's shooting.
 #[derive(Debug, Clone, Copy, PartialEq)]

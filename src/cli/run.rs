@@ -117,4 +117,3 @@ fn plot(
         .map(Some)
         .map_err(|e| CliError::Internal(e.to_string()))
 }
-

@@ -277,7 +277,11 @@ impl Creep {
             .map(|r| {
                 let x = ramp / r.tau;
                 // (1 − e^{−x})/x, accurate for small x
-                let phi = if x < 1e-8 { 1.0 - 0.5 * x } else { -(-x).exp_m1() / x };
+                let phi = if x < 1e-8 {
+                    1.0 - 0.5 * x
+                } else {
+                    -(-x).exp_m1() / x
+                };
                 r.modulus * (1.0 - (-xi / r.tau).exp() * phi)
             })
             .sum();
@@ -586,7 +590,10 @@ mod tests {
             s.step(&p, 0.0, dx);
             let change = s.stress(&p) - before;
             let hand = factor * p.instantaneous() * dx;
-            assert!((change / hand - 1.0).abs() < 1e-12, "r = {r}: {change} vs {hand}");
+            assert!(
+                (change / hand - 1.0).abs() < 1e-12,
+                "r = {r}: {change} vs {hand}"
+            );
         }
     }
 

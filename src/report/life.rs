@@ -433,7 +433,10 @@ impl Summary {
             ),
             ("duration_s", self.duration_s),
             ("final_open_fraction", self.final_open_fraction),
-            ("retained_force_reference_s", self.retained_force_reference_s),
+            (
+                "retained_force_reference_s",
+                self.retained_force_reference_s,
+            ),
             (
                 "reference_sealing_force_N_per_m",
                 self.reference_sealing_force_n_per_m,

@@ -285,9 +285,12 @@ pub fn describe(id: &str, m: &Material) -> String {
         }
         None => {
             if let Some(why) = m.provenance_of("ageing") {
-                out += &format!("{:<19} none
+                out += &format!(
+                    "{:<19} none
 {INDENT}source: {why}
-", "ageing");
+",
+                    "ageing"
+                );
             }
         }
     }

@@ -610,7 +610,10 @@ impl Source<'_> {
     /// `seal.installation_time` (default [`DEFAULT_INSTALLATION_TIME`]).
     pub(super) fn installation_time(&self, table: &Spanned<RawSeal>) -> Result<f64, ScenarioError> {
         Ok(self
-            .optional(table.get_ref().installation_time.as_ref(), &INSTALLATION_TIME)?
+            .optional(
+                table.get_ref().installation_time.as_ref(),
+                &INSTALLATION_TIME,
+            )?
             .unwrap_or(DEFAULT_INSTALLATION_TIME))
     }
 

@@ -80,14 +80,23 @@ fn a_glassy_ring_loses_contact_in_the_cold_and_a_rubbery_one_holds() {
         let (summary, _) = run(dir.path(), &cold_start(library));
         let mode = summary["failure_mode"].as_str().unwrap();
         if fails {
-            assert!(["lift_off", "leak_rate"].contains(&mode), "{library}: {summary}");
+            assert!(
+                ["lift_off", "leak_rate"].contains(&mode),
+                "{library}: {summary}"
+            );
             // during the cooling (24–30 h), not before it
             let t = summary["time_to_failure_s"].as_f64().unwrap();
-            assert!((24.0 * 3600.0..30.0 * 3600.0).contains(&t), "{library}: {t}");
+            assert!(
+                (24.0 * 3600.0..30.0 * 3600.0).contains(&t),
+                "{library}: {t}"
+            );
             assert!(summary["final_sealing_force_N_per_m"].as_f64().unwrap() < 1.0);
         } else {
             assert_eq!(mode, "none", "{library}: {summary}");
-            assert!(summary["final_retained_force"].as_f64().unwrap() > 0.7, "{summary}");
+            assert!(
+                summary["final_retained_force"].as_f64().unwrap() > 0.7,
+                "{summary}"
+            );
         }
     }
 }
@@ -101,7 +110,10 @@ fn the_retained_force_is_referred_to_thirty_minutes_and_reported() {
     let initial = summary["initial_sealing_force_N_per_m"].as_f64().unwrap();
     let last = summary["final_sealing_force_N_per_m"].as_f64().unwrap();
     // the force relaxes in the first half hour: the reference lies below the installed force
-    assert!(reference < initial && reference > 0.5 * initial, "{summary}");
+    assert!(
+        reference < initial && reference > 0.5 * initial,
+        "{summary}"
+    );
     let fraction = summary["final_retained_force"].as_f64().unwrap();
     assert!((fraction - last / reference).abs() < 1e-12, "{summary}");
     assert!(summary.get("final_compression_set").is_none(), "{summary}");
@@ -132,18 +144,26 @@ fn a_compound_with_ageing_data_warns_when_ageing_is_off_and_sets_when_on() {
 #[test]
 fn every_library_compound_shows_its_ageing_basis_or_why_it_has_none() {
     for id in ["nbr-70", "hnbr-75", "fkm-75", "epdm-70", "vmq-70", "cr-70"] {
-        let out = sealsim()
-            .args(["materials", "show", id])
-            .output()
-            .unwrap();
+        let out = sealsim().args(["materials", "show", id]).output().unwrap();
         assert!(out.status.success());
         let text = String::from_utf8(out.stdout).unwrap();
-        let at = text.find("\nageing ").unwrap_or_else(|| panic!("{id}: {text}"));
+        let at = text
+            .find("\nageing ")
+            .unwrap_or_else(|| panic!("{id}: {text}"));
         let block = &text[at..];
         if block.starts_with("\nageing              none") {
-            assert!(block.contains("source: no ageing constants"), "{id}: {block}");
+            assert!(
+                block.contains("source: no ageing constants"),
+                "{id}: {block}"
+            );
         } else {
-            for needle in ["scission k_ref", "Ea =", "property: ", "criterion: ", "source: "] {
+            for needle in [
+                "scission k_ref",
+                "Ea =",
+                "property: ",
+                "criterion: ",
+                "source: ",
+            ] {
                 assert!(block.contains(needle), "{id}: no {needle:?} in {block}");
             }
         }

@@ -295,7 +295,11 @@ fn one_term_prony_fails_at_the_closed_form_time() {
     // referred to 30 min (the default), then to 0.5 and 1 day: E(t) = r E(t_ref) ⇔
     // t = τ ln(E1 / (r E(t_ref) − E∞)) (a_T = 1 at 23 °C); then "0 s", below
     let (e_inf, e1, tau): (f64, f64, f64) = (2e6, 6e6, 1e5);
-    for (reference, t_ref) in [("30 min", 1800.0_f64), ("0.5 day", 43200.0), ("1 day", 86400.0)] {
+    for (reference, t_ref) in [
+        ("30 min", 1800.0_f64),
+        ("0.5 day", 43200.0),
+        ("1 day", 86400.0),
+    ] {
         let out = Outputs::new();
         let scenario = out.write("one.toml", &one_term_referred("23 C", reference));
         out.run_ok(&scenario, &[]);
@@ -303,10 +307,16 @@ fn one_term_prony_fails_at_the_closed_form_time() {
         let e_ref = e_inf + e1 * (-t_ref / tau).exp();
         let closed = tau * (e1 / (0.5 * e_ref - e_inf)).ln();
         let t = json["time_to_failure_s"].as_f64().unwrap();
-        assert!((t / closed - 1.0).abs() < 1e-6, "{reference}: {t} vs {closed}");
+        assert!(
+            (t / closed - 1.0).abs() < 1e-6,
+            "{reference}: {t} vs {closed}"
+        );
         let f_ref = json["reference_sealing_force_N_per_m"].as_f64().unwrap();
         let f0 = json["initial_sealing_force_N_per_m"].as_f64().unwrap();
-        assert!((f_ref / f0 - e_ref / (e_inf + e1)).abs() < 1e-12, "{reference}");
+        assert!(
+            (f_ref / f0 - e_ref / (e_inf + e1)).abs() < 1e-12,
+            "{reference}"
+        );
     }
     // "0 s": the installation's force, E(t) = 0.5 E0 ⇔ t = τ ln(E1 / (0.5 E0 − E∞)) = 1e5 ln 3
     let closed = 1e5 * 3f64.ln();

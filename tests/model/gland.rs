@@ -10,7 +10,8 @@ use sealsim::seal::SealGeometry;
 use std::f64::consts::PI;
 use std::path::Path;
 
-/// A scenario whose `[seal]` is `seal` (the `[seal]` header is line 12).
+/// A scenario whose `[seal]` is `seal` (the `[seal]` header is line 12), with the compound's
+/// ageing on (so that the only warnings are the gland's).
 fn scenario(seal: &str) -> String {
     format!(
         r#"name = "gland"
@@ -26,7 +27,9 @@ viscosity = "1 mPa*s"
 pressure_difference = "2 bar"
 [seal]
 kind = "o-ring"
-{seal}"#
+{seal}
+[ageing]
+"#
     )
 }
 

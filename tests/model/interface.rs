@@ -267,11 +267,12 @@ fn the_memo_interpolates_the_direct_solutions() {
             };
             let sigma = |e: f64| sigma_hat(e / e_star);
             let direct = resistance(hertz(&sigma, contact, dp, &set, None));
-            let memoised =
-                resistance(memo.solve(&sigma_hat, e_star, contact, viscosity, dp, &set));
+            let memoised = resistance(memo.solve(&sigma_hat, e_star, contact, viscosity, dp, &set));
             worst = worst.max((memoised / direct - 1.0).abs());
         }
-        eprintln!("memo vs direct, k_e = {k_e}, E* varying {varying}, p̂ varying {peak_varies}: {worst:e}");
+        eprintln!(
+            "memo vs direct, k_e = {k_e}, E* varying {varying}, p̂ varying {peak_varies}: {worst:e}"
+        );
         assert!(worst < 1e-6, "k_e = {k_e}, E* varying {varying}: {worst:e}");
     }
 }

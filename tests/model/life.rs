@@ -514,7 +514,11 @@ fn time_to_a_compression_set_scales_with_arrhenius() {
         let f = simulate(&p).failure.expect("reaches the set");
         assert_eq!(f.mode, FailureMode::CompressionSet);
         let closed = -(-s_x).ln_1p() / aged_rate(t);
-        assert!((f.time / closed - 1.0).abs() < 1e-9, "{t} K: {} vs {closed}", f.time);
+        assert!(
+            (f.time / closed - 1.0).abs() < 1e-9,
+            "{t} K: {} vs {closed}",
+            f.time
+        );
         times.push(f.time);
     }
     let ratio = aged_rate(AGED_T1) / aged_rate(AGED_T1 - 15.0);
