@@ -138,6 +138,10 @@ pub struct Summary {
     pub material: String,
     /// `published`, `illustrative` or `user`.
     pub material_status: String,
+    /// The compound's low-temperature limit T10 \[K\] (docs/model.md §5.1; absent without a
+    /// shift, or when the modulus never rises tenfold).
+    #[serde(rename = "low_temperature_limit_K", skip_serializing_if = "Option::is_none")]
+    pub low_temperature_limit_k: Option<f64>,
     /// `flat` or `o-ring`.
     pub seal: String,
     /// `displacement` or `force`.
@@ -374,6 +378,7 @@ impl Summary {
             scenario_file: file.to_owned(),
             material: problem.material.name.clone(),
             material_status: problem.material.status.as_str().to_owned(),
+            low_temperature_limit_k: problem.material.low_temperature_limit(),
             seal: seal_kind(&problem.geometry).to_owned(),
             loading: loading_name(problem.loading).to_owned(),
             fidelity: problem.fidelity.name().to_owned(),
@@ -527,7 +532,16 @@ pub fn human_summary(
     };
     line("scenario", format!("{scenario} ({file})"));
     let m: &Material = &problem.material;
-    line("material", format!("{} [{}]", m.name, m.status.as_str()));
+    let t10 = m.low_temperature_limit().map_or(String::new(), |t| {
+        format!(
+            "; low-temperature limit T10 = {} (modulus at 10 s ten times its 23 °C value)",
+            celsius(t)
+        )
+    });
+    line(
+        "material",
+        format!("{} [{}]{t10}", m.name, m.status.as_str()),
+    );
     if m.status == Status::Illustrative {
         line(
             "",

@@ -294,6 +294,12 @@ impl Source<'_> {
             );
         }
         let static_seal = static_seal(&life);
+        // the static problem sees the asperity modulus of the installed state, as the first row
+        // of a life run does
+        let elastic = crate::contact::Elastic {
+            youngs_modulus: life.installed_asperity_modulus(),
+            ..elastic
+        };
         Ok(Scenario {
             name,
             path: self.path.to_path_buf(),

@@ -144,6 +144,26 @@ impl LifeProblem {
         }
     }
 
+    /// The modulus the asperity contact sees right after installation (docs/model.md §6.1): with
+    /// `follow`, the installed modulus under displacement loading, 1/J over the ramp under force
+    /// loading; E∞, E0 or the fixed value otherwise \[Pa\]. The static leak problem's modulus.
+    pub fn installed_asperity_modulus(&self) -> f64 {
+        let prony = &self.material.prony;
+        match self.asperity_modulus {
+            AsperityModulus::Relaxed => prony.long_term(),
+            AsperityModulus::Instantaneous => prony.instantaneous(),
+            AsperityModulus::Fixed(e) => e,
+            AsperityModulus::Follow => match self.loading {
+                Loading::Displacement => self.installed_modulus(),
+                Loading::Force => {
+                    1.0 / prony
+                        .creep()
+                        .ramp_compliance(0.0, self.installation_reduced_time())
+                }
+            },
+        }
+    }
+
     /// The stress at the end of the installation ramp per unit load \[Pa\]:
     /// `E∞ + Σ E_i φ(ξ_r/τ_i)`, ξ_r the ramp in reduced time, φ(x) = (1 − e^{−x})/x (E0 for an
     /// instantaneous installation). A flat seal's `nominal_pressure` is the pressure then.
