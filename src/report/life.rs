@@ -140,7 +140,10 @@ pub struct Summary {
     pub material_status: String,
     /// The compound's low-temperature limit T10 \[K\] (docs/model.md §5.1; absent without a
     /// shift, or when the modulus never rises tenfold).
-    #[serde(rename = "low_temperature_limit_K", skip_serializing_if = "Option::is_none")]
+    #[serde(
+        rename = "low_temperature_limit_K",
+        skip_serializing_if = "Option::is_none"
+    )]
     pub low_temperature_limit_k: Option<f64>,
     /// `flat` or `o-ring`.
     pub seal: String,

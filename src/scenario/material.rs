@@ -1290,7 +1290,8 @@ ageing = "test: ageing"
         assert_eq!(s.material.status, Status::User);
         assert_eq!(s.material.name, "Persson & Yang 2008, section 3");
         assert_eq!(s.problem.material.youngs_modulus, 1e7);
-        // inline viscoelastic: the static problem takes E∞ and ν
+        // inline viscoelastic: the static problem takes the asperity modulus at the end of the
+        // 1 s installation ramp (`follow`), E∞ + E1 τ (1 − e^{−1 s/τ})/1 s, and ν
         let s = scenario(&scenario_with_material(
             "[material]\nname = \"inline\"\npoisson_ratio = 0.49\nlong_term_modulus = \"4 MPa\"\n\
              prony = [ { modulus = \"6 MPa\", tau = \"1000 h\" } ]\n\
@@ -1299,7 +1300,9 @@ ageing = "test: ageing"
         .unwrap();
         assert_eq!(s.material.name, "inline");
         assert_eq!(s.material.prony.instantaneous(), 1e7);
-        assert_eq!(s.problem.material.youngs_modulus, 4e6);
+        let tau: f64 = 3.6e6;
+        let installed = 4e6 + 6e6 * tau * -(-1.0 / tau).exp_m1();
+        assert!((s.problem.material.youngs_modulus / installed - 1.0).abs() < 1e-12);
         assert_eq!(s.problem.material.poisson_ratio, 0.49);
         assert_eq!(s.problem.seal.nominal_pressure, 2e5);
         // a library compound by id
@@ -1309,7 +1312,13 @@ ageing = "test: ageing"
         .unwrap();
         let nbr = library::get("nbr-70").unwrap().load().unwrap();
         assert_eq!(s.material, nbr);
-        assert_eq!(s.problem.material.youngs_modulus, nbr.prony.long_term());
+        assert_eq!(
+            s.problem.material.youngs_modulus,
+            s.life.installed_asperity_modulus()
+        );
+        // between the relaxed and the glassy modulus: the rubbery modulus after 1 s
+        let e = s.problem.material.youngs_modulus;
+        assert!(e > 1.2 * nbr.prony.long_term() && e < 0.01 * nbr.prony.instantaneous());
         assert_eq!(s.problem.material.poisson_ratio, nbr.poisson_ratio);
     }
 

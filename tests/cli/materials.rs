@@ -664,21 +664,27 @@ fn paper_with_material(material: &str) -> String {
 }
 
 #[test]
-fn leak_takes_the_relaxed_modulus_of_a_viscoelastic_material() {
+fn leak_takes_the_installed_asperity_modulus_of_a_viscoelastic_material() {
+    // the static problem's E is the asperity modulus of the installed state: with `relaxed` E∞;
+    // with `follow` (the default) the modulus at the end of the 1 s installation ramp — either
+    // way the same leak as an elastic rubber of that modulus
     let dir = Dir::new();
     let elastic = dir.write(
         "elastic.toml",
         &paper_with_material("[material]\nyoungs_modulus = \"4 MPa\"\npoisson_ratio = 0.5\n"),
     );
-    let viscoelastic = dir.write(
-        "viscoelastic.toml",
-        &paper_with_material(
-            "[material]\nname = \"inline test rubber\"\npoisson_ratio = 0.5\n\
+    let rubber = "[material]\nname = \"inline test rubber\"\npoisson_ratio = 0.5\n\
              long_term_modulus = \"4 MPa\"\nprony = [ { modulus = \"6 MPa\", tau = \"1000 h\" } ]\n\
              [material.shift]\nkind = \"wlf\"\nreference_temperature = \"23 C\"\nc1 = 8.86\n\
-             c2 = \"101.6 K\"\n",
-        ),
+             c2 = \"101.6 K\"\n";
+    let viscoelastic = dir.write(
+        "viscoelastic.toml",
+        &paper_with_material(&rubber.replace(
+            "poisson_ratio = 0.5\n",
+            "poisson_ratio = 0.5\nasperity_modulus = \"relaxed\"\n",
+        )),
     );
+    let following = dir.write("following.toml", &paper_with_material(rubber));
     let sweep = ["--sweep", "0.05MPa..1MPa", "--points", "7"];
     let run = |path: &Path| {
         let mut args = vec!["leak", s(path)];
@@ -688,21 +694,49 @@ fn leak_takes_the_relaxed_modulus_of_a_viscoelastic_material() {
     let (a, b) = (run(&elastic), run(&viscoelastic));
     assert_eq!(a, b);
     assert_eq!(a.lines().count(), 8);
-    // a library compound: the same as an elastic rubber with its E∞ and ν
+    let elastic_at = |name: &str, e: f64, nu: f64| {
+        dir.write(
+            name,
+            &paper_with_material(&format!(
+                "[material]\nyoungs_modulus = {e:e}\npoisson_ratio = {nu:e}\n"
+            )),
+        )
+    };
+    let installed = |path: &Path| {
+        sealsim::scenario::Scenario::load(path)
+            .unwrap()
+            .life
+            .installed_asperity_modulus()
+    };
+    // follow: E∞ + E1 τ (1 − e^{−1 s/τ})/1 s
+    let e = installed(&following);
+    let tau: f64 = 3.6e6;
+    assert!((e / (4e6 + 6e6 * tau * -(-1.0 / tau).exp_m1()) - 1.0).abs() < 1e-12);
+    assert_eq!(run(&following), run(&elastic_at("f.toml", e, 0.5)));
+    // a library compound: the same as an elastic rubber with its installed modulus and ν, or
+    // with E∞ under `relaxed`
     let nbr = library::get("nbr-70").unwrap().load().unwrap();
     let by_id = dir.write(
         "nbr.toml",
         &paper_with_material("[material]\nlibrary = \"nbr-70\"\n"),
     );
-    let by_value = dir.write(
-        "nbr-elastic.toml",
-        &paper_with_material(&format!(
-            "[material]\nyoungs_modulus = {:e}\npoisson_ratio = {:e}\n",
+    let e = installed(&by_id);
+    assert_eq!(
+        run(&by_id),
+        run(&elastic_at("nbr-elastic.toml", e, nbr.poisson_ratio))
+    );
+    let relaxed = dir.write(
+        "nbr-relaxed.toml",
+        &paper_with_material("[material]\nlibrary = \"nbr-70\"\nasperity_modulus = \"relaxed\"\n"),
+    );
+    assert_eq!(
+        run(&relaxed),
+        run(&elastic_at(
+            "nbr-e-inf.toml",
             nbr.prony.long_term(),
             nbr.poisson_ratio
-        )),
+        ))
     );
-    assert_eq!(run(&by_id), run(&by_value));
     // E∞ = 0 cannot give a static leak problem
     let fluid = dir.write(
         "fluid.toml",
