@@ -85,29 +85,6 @@ fn nbr_like() -> Material {
 }
 
 #[test]
-fn follow_modulus_keeps_the_leak_rate_constant() {
-    // Linear-viscoelastic invariance (docs/model.md §6): P0 and the asperity modulus relax alike
-    // — as long as the fluid pressure in the interface, which does not relax, is negligible
-    // (ΔP/p_max ≈ 1e-9: the strips in series at the contact pressure, §3.6)
-    let mut p = oring_problem(nbr_like());
-    p.asperity_modulus = AsperityModulus::Follow;
-    p.fluid.pressure_difference = 1e-3;
-    let r = simulate(&p);
-    let q0 = r.initial_leak_rate();
-    assert!(q0 > 0.0);
-    for row in &r.rows {
-        assert!(
-            (row.leak_rate / q0 - 1.0).abs() < 1e-9,
-            "t = {}: {} vs {q0}",
-            row.time,
-            row.leak_rate
-        );
-    }
-    // while the sealing force itself relaxes
-    assert!(r.rows.last().unwrap().sealing_force < 0.8 * r.rows[0].sealing_force);
-}
-
-#[test]
 fn fluid_pressure_that_does_not_relax_raises_the_leak_as_the_contact_relaxes() {
     // With ΔP = 1 bar in the interface, the asperities carry p_c(t) − p_f: p_c relaxes with the
     // modulus, p_f does not, so under `follow` the leak rate rises monotonically over the life
@@ -369,15 +346,16 @@ fn aged_rate(t: f64) -> f64 {
 }
 
 #[test]
-fn follow_keeps_the_leak_constant_through_ageing_at_a_fixed_squeeze() {
-    // with ageing too, P0 and the squeeze's asperity modulus decay alike: the gap field stays as
-    // installed (ΔP negligible), for balanced and unbalanced crosslinking
-    for r in [1.0, 0.3] {
+fn follow_modulus_keeps_the_leak_rate_constant() {
+    // Linear-viscoelastic invariance (docs/model.md §6.1): P0 and the squeeze's asperity modulus
+    // relax alike, and with ageing decay alike too (balanced and unbalanced crosslinking) — as
+    // long as the fluid pressure in the interface, which does not relax, is negligible (ΔP ≤ 1e-8
+    // of the contact pressure all along: the strips in series, §3.6)
+    for crosslinking in [None, Some(1.0), Some(0.3)] {
         let mut p = oring_problem(nbr_like());
         p.asperity_modulus = AsperityModulus::Follow;
-        // ΔP ≤ 1e-8 of the contact pressure all along (the force falls to 1e-4 of its start)
         p.fluid.pressure_difference = 1e-7;
-        p.ageing = Some(Ageing {
+        p.ageing = crosslinking.map(|r| Ageing {
             activation_energy: 80e3,
             rate: 1e-8,
             reference_temperature: TREF,
@@ -389,13 +367,18 @@ fn follow_keeps_the_leak_constant_through_ageing_at_a_fixed_squeeze() {
         for row in &res.rows {
             assert!(
                 (row.leak_rate / q0 - 1.0).abs() < 1e-9,
-                "r = {r}, t = {}: {} vs {q0}",
+                "r = {crosslinking:?}, t = {}: {} vs {q0}",
                 row.time,
                 row.leak_rate
             );
         }
-        // the force has aged away (K = 9.5 after 30 years)
-        assert!(res.rows.last().unwrap().sealing_force < 1e-3 * res.rows[0].sealing_force);
+        // while the sealing force relaxes (and with ageing, K = 9.5 after 30 years, decays away)
+        let (first, last) = (
+            res.rows[0].sealing_force,
+            res.rows.last().unwrap().sealing_force,
+        );
+        let bound = if crosslinking.is_some() { 1e-3 } else { 0.8 };
+        assert!(last < bound * first, "{first} → {last}");
     }
 }
 
