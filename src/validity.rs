@@ -75,11 +75,15 @@ pub enum Limit {
     /// Pressure or hardness outside the extrusion chart: its nearest row or band was used
     /// (§9.12).
     ExtrusionChart,
+    /// Reduced time beyond the window of the data the series was fitted to (§9.13).
+    DataTime,
+    /// Temperature outside the window of the material's data (§9.13).
+    DataTemperature,
 }
 
 impl Limit {
     /// Every limit, in the order of docs/model.md.
-    pub const ALL: [Limit; 15] = [
+    pub const ALL: [Limit; 17] = [
         Limit::PressureRatio,
         Limit::AspectRatio,
         Limit::MolecularGap,
@@ -95,6 +99,8 @@ impl Limit {
         Limit::NoFailureCriterion,
         Limit::Extrusion,
         Limit::ExtrusionChart,
+        Limit::DataTime,
+        Limit::DataTemperature,
     ];
 
     /// The limit's identifier in JSON summaries.
@@ -115,6 +121,8 @@ impl Limit {
             Limit::NoFailureCriterion => "no_failure_criterion",
             Limit::Extrusion => "extrusion",
             Limit::ExtrusionChart => "extrusion_chart",
+            Limit::DataTime => "beyond_data_time",
+            Limit::DataTemperature => "beyond_data_temperature",
         }
     }
 
@@ -133,6 +141,7 @@ impl Limit {
             Limit::BandLimited | Limit::NumericalFailure => "§9.10",
             Limit::NoFailureCriterion => "§8",
             Limit::Extrusion | Limit::ExtrusionChart => "§9.12",
+            Limit::DataTime | Limit::DataTemperature => "§9.13",
         }
     }
 
@@ -152,6 +161,8 @@ impl Limit {
             Limit::NumericalFailure => Some(("P0/E*", "")),
             Limit::NoFailureCriterion | Limit::ExtrusionChart => None,
             Limit::Extrusion => Some(("clearance/limit", "")),
+            Limit::DataTime => Some(("reduced time", "s")),
+            Limit::DataTemperature => Some(("T", "K")),
         }
     }
 
@@ -212,6 +223,14 @@ impl Limit {
             Limit::ExtrusionChart => {
                 "outside the extrusion chart (70–90 Shore A ± 2, up to 3000 psi): its nearest row \
                  or band was used"
+            }
+            Limit::DataTime => {
+                "beyond the reduced times of the data the material's series was fitted to: the \
+                 relaxation there is an extrapolation"
+            }
+            Limit::DataTemperature => {
+                "outside the temperatures of the material's data: the shift (or, without one, the \
+                 series itself) is extrapolated"
             }
         }
     }
@@ -478,6 +497,31 @@ pub fn temperature(
     }
     if let Some(tg) = glass_transition {
         out.check(Limit::GlassTransition, t < tg, t, tg, at);
+    }
+}
+
+/// A life state's reduced time `xi` \[s\] and temperature `t` \[K\] against the windows of the
+/// material's data, when it gives them (docs/model.md §9.13).
+pub fn data_window(
+    xi: f64,
+    t: f64,
+    reduced_time: Option<(f64, f64)>,
+    temperature: Option<(f64, f64)>,
+    at: At,
+    out: &mut Findings,
+) {
+    if let Some((_, hi)) = reduced_time {
+        out.check(Limit::DataTime, xi > hi, xi, hi, at);
+    }
+    if let Some((lo, hi)) = temperature {
+        let bound = if t < lo { lo } else { hi };
+        out.check(
+            Limit::DataTemperature,
+            !(lo..=hi).contains(&t),
+            t,
+            bound,
+            at,
+        );
     }
 }
 

@@ -137,6 +137,8 @@ pub fn fitted_material(name: String, fit: &Fit, source: &str, terms_per_decade: 
         glassy_thermal_expansion: None,
         ageing: None,
         ageing_basis: None,
+        data_reduced_time: Some(fit.window),
+        data_temperature: None,
         provenance,
     }
 }

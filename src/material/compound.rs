@@ -19,6 +19,8 @@
 //! glass_transition = "-30 C"                # optional, absolute temperature (parse_temperature)
 //! thermal_expansion = "2.3e-4 1/K"          # optional, linear CTE, > 0 (Dimension::THERMAL_EXPANSION)
 //! glassy_thermal_expansion = "7.7e-5 1/K"   # optional, linear CTE below glass_transition, > 0; absent = thermal_expansion
+//! data_reduced_time = ["1 s", "1000 h"]     # optional: the reduced-time window of the data (fit-prony writes it)
+//! data_temperature = ["23 C", "23 C"]        # optional: the temperature window of the data
 //! [material.shift]                          # optional; absent = no temperature dependence
 //! kind = "wlf"                              # "wlf" | "arrhenius"
 //! reference_temperature = "23 C"            # absolute temperature
@@ -135,6 +137,12 @@ pub struct Material {
     pub ageing: Option<Ageing>,
     /// What the ageing constants were measured on (library files require it with `ageing`).
     pub ageing_basis: Option<AgeingBasis>,
+    /// The reduced-time window \[s\] (at the shift's reference temperature) of the data the
+    /// series was fitted to (`data_reduced_time`; `sealsim fit-prony` writes it): a life run
+    /// warns when it goes beyond (docs/model.md §9.13).
+    pub data_reduced_time: Option<(f64, f64)>,
+    /// The temperature window \[K\] of the data (`data_temperature`): a run outside it warns.
+    pub data_temperature: Option<(f64, f64)>,
     /// (parameter key, where its value came from), in file order.
     pub provenance: Vec<(String, String)>,
 }
@@ -157,6 +165,8 @@ impl Material {
             glassy_thermal_expansion: None,
             ageing: None,
             ageing_basis: None,
+            data_reduced_time: None,
+            data_temperature: None,
             provenance: Vec::new(),
         })
     }

@@ -233,6 +233,8 @@ mod tests {
             glassy_thermal_expansion: None,
             ageing: None,
             ageing_basis: None,
+            data_reduced_time: None,
+            data_temperature: None,
             provenance: Vec::new(),
         }
     }

@@ -81,6 +81,9 @@ pub struct Fit {
     pub rms_relative_residual: f64,
     /// Largest `|model/datum − 1|`.
     pub max_relative_residual: f64,
+    /// The time window of the data \[s\] (for DMA data, 1/ω_max to 1/ω_min): where the series
+    /// is backed by data.
+    pub window: (f64, f64),
 }
 
 /// Why data could not be fitted. Indices are 1-based positions in the data arrays.
@@ -217,6 +220,7 @@ pub fn fit_relaxation(
         grid_terms: taus.len(),
         rms_relative_residual: rms,
         max_relative_residual: max,
+        window: (first, last),
     })
 }
 
@@ -261,6 +265,7 @@ pub fn fit_dma(
         grid_terms: taus.len(),
         rms_relative_residual: rms,
         max_relative_residual: max,
+        window: (1.0 / last, 1.0 / first),
     })
 }
 

@@ -62,6 +62,20 @@ pub fn material_toml(m: &Material) -> String {
             &quantity(alpha, "1/K"),
         );
     }
+    if let Some((lo, hi)) = m.data_reduced_time {
+        line(
+            &mut out,
+            "data_reduced_time",
+            &format!("[{}, {}]", quantity(lo, "s"), quantity(hi, "s")),
+        );
+    }
+    if let Some((lo, hi)) = m.data_temperature {
+        line(
+            &mut out,
+            "data_temperature",
+            &format!("[{}, {}]", quantity(lo, "K"), quantity(hi, "K")),
+        );
+    }
     match m.shift {
         Shift::None => {}
         Shift::Wlf { reference, c1, c2 } => {
@@ -185,6 +199,8 @@ mod tests {
             glassy_thermal_expansion: None,
             ageing: None,
             ageing_basis: None,
+            data_reduced_time: None,
+            data_temperature: None,
             provenance: vec![
                 ("poisson_ratio".into(), "assumed".into()),
                 ("prony".into(), "fitted\nby sealsim".into()),

@@ -82,6 +82,12 @@ const TERM_TAU: Field = field(
     "s",
     Bound::Range(1e-20, 1e20),
 );
+const DATA_REDUCED_TIME: Field = field(
+    "material.data_reduced_time",
+    Dimension::TIME,
+    "s",
+    Bound::Range(1e-20, 1e30),
+);
 const THERMAL_EXPANSION: Field = field(
     "material.thermal_expansion",
     Dimension::THERMAL_EXPANSION,
@@ -224,29 +230,58 @@ impl Source<'_> {
     ) -> Result<(Material, Elastic, AsperityModulus), ScenarioError> {
         let raw = table.get_ref();
         let asperity = self.asperity_modulus(raw)?;
-        let (material, span, key) = match (&raw.library, replacement) {
+        if let (Some(_), Some(file)) = (&raw.library, &raw.file) {
+            return Err(self.error(
+                file.span(),
+                "material.file",
+                "give either `library` or `file`, not both".to_owned(),
+            ));
+        }
+        let (material, span, key) = match (raw.library.as_ref().or(raw.file.as_ref()), replacement)
+        {
             (Some(id), _) => {
+                let by_file = raw.file.is_some();
+                let what = if by_file { "file" } else { "library" };
                 if let Some((other, span)) = present_keys(raw)
                     .into_iter()
-                    .find(|(key, _)| !matches!(*key, "library" | "asperity_modulus"))
+                    .find(|(key, _)| !matches!(*key, "library" | "file" | "asperity_modulus"))
                 {
                     return Err(self.error(
                         span,
                         &format!("material.{other}"),
                         format!(
-                            "a library material takes no other keys (except the scenario option \
-                             `asperity_modulus`): remove `{other}`, or remove `library` and give \
+                            "a {what} material takes no other keys (except the scenario option \
+                             `asperity_modulus`): remove `{other}`, or remove `{what}` and give \
                              the whole material inline"
                         ),
                     ));
                 }
-                let material = match replacement {
-                    Some(m) => m.clone(),
-                    None => library::get(id.get_ref())
-                        .map_err(|e| self.error(id.span(), "material.library", e.to_string()))?
+                let key = if by_file {
+                    "material.file"
+                } else {
+                    "material.library"
+                };
+                let material = match (replacement, by_file) {
+                    (Some(m), _) => m.clone(),
+                    (None, true) => {
+                        let path = self.relative_path(id.get_ref());
+                        if !path.is_file() {
+                            return Err(self.error(
+                                id.span(),
+                                key,
+                                format!(
+                                    "no material file {} (relative to the scenario's directory)",
+                                    path.display()
+                                ),
+                            ));
+                        }
+                        load_material_file(&path)?
+                    }
+                    (None, false) => library::get(id.get_ref())
+                        .map_err(|e| self.error(id.span(), key, e.to_string()))?
                         .load()?,
                 };
-                (material, id.span(), "material.library")
+                (material, id.span(), key)
             }
             (None, replacement) => {
                 let inline = self.material(table, Origin::Inline { default_name })?;
@@ -319,6 +354,13 @@ impl Source<'_> {
                 "a material file cannot refer to a library material; `library` is for scenarios",
             ));
         }
+        if let Some(file) = &raw.file {
+            return Err(self.error(
+                file.span(),
+                "material.file",
+                "a material file cannot refer to another material file; `file` is for scenarios",
+            ));
+        }
         if let (Some(q), Origin::Library | Origin::File { .. }) = (&raw.asperity_modulus, origin) {
             return Err(self.error(
                 q.span(),
@@ -360,6 +402,24 @@ impl Source<'_> {
             None => Shift::None,
         };
         let ageing = raw.ageing.as_ref().map(|a| self.ageing(a)).transpose()?;
+        let data_reduced_time = raw
+            .data_reduced_time
+            .as_ref()
+            .map(|w| {
+                self.window(w, "material.data_reduced_time", |q| {
+                    self.quantity(q, &DATA_REDUCED_TIME)
+                })
+            })
+            .transpose()?;
+        let data_temperature = raw
+            .data_temperature
+            .as_ref()
+            .map(|w| {
+                self.window(w, "material.data_temperature", |q| {
+                    self.absolute_temperature(q, "material.data_temperature")
+                })
+            })
+            .transpose()?;
         let ageing_basis = raw
             .ageing
             .as_ref()
@@ -379,8 +439,38 @@ impl Source<'_> {
             glassy_thermal_expansion,
             ageing,
             ageing_basis,
+            data_reduced_time,
+            data_temperature,
             provenance,
         })
+    }
+
+    /// A `[lo, hi]` window of two values, each read by `value`, with lo ≤ hi.
+    fn window(
+        &self,
+        raw: &Spanned<Vec<Quantity>>,
+        key: &str,
+        value: impl Fn(&Quantity) -> Result<f64, ScenarioError>,
+    ) -> Result<(f64, f64), ScenarioError> {
+        let [lo, hi] = raw.get_ref().as_slice() else {
+            return Err(self.error(
+                raw.span(),
+                key,
+                format!(
+                    "must be a window of two values [low, high], got {}",
+                    raw.get_ref().len()
+                ),
+            ));
+        };
+        let (lo, hi) = (value(lo)?, value(hi)?);
+        if lo > hi {
+            return Err(self.error(
+                raw.span(),
+                key,
+                "the window's low end is above its high end".to_owned(),
+            ));
+        }
+        Ok((lo, hi))
     }
 
     fn material_name(
@@ -735,6 +825,7 @@ fn present_keys(raw: &RawMaterial) -> Vec<(&'static str, Range<usize>)> {
     let quantity = |q: &Option<Quantity>| q.as_ref().map(Spanned::span);
     [
         ("library", raw.library.as_ref().map(Spanned::span)),
+        ("file", raw.file.as_ref().map(Spanned::span)),
         ("name", raw.name.as_ref().map(Spanned::span)),
         ("status", raw.status.as_ref().map(Spanned::span)),
         ("poisson_ratio", quantity(&raw.poisson_ratio)),
@@ -743,6 +834,14 @@ fn present_keys(raw: &RawMaterial) -> Vec<(&'static str, Range<usize>)> {
         ("prony", raw.prony.as_ref().map(Spanned::span)),
         ("shift", raw.shift.as_ref().map(Spanned::span)),
         ("glass_transition", quantity(&raw.glass_transition)),
+        (
+            "data_reduced_time",
+            raw.data_reduced_time.as_ref().map(Spanned::span),
+        ),
+        (
+            "data_temperature",
+            raw.data_temperature.as_ref().map(Spanned::span),
+        ),
         ("thermal_expansion", quantity(&raw.thermal_expansion)),
         (
             "glassy_thermal_expansion",

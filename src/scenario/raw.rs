@@ -99,6 +99,8 @@ impl RawScenario {
 #[serde(deny_unknown_fields)]
 pub(super) struct RawMaterial {
     pub library: Option<Spanned<String>>,
+    /// A material file (e.g. `sealsim fit-prony` output), relative to the scenario file.
+    pub file: Option<Spanned<String>>,
     pub name: Option<Spanned<String>>,
     pub status: Option<Spanned<String>>,
     pub poisson_ratio: Option<Quantity>,
@@ -108,6 +110,10 @@ pub(super) struct RawMaterial {
     pub glass_transition: Option<Quantity>,
     pub thermal_expansion: Option<Quantity>,
     pub glassy_thermal_expansion: Option<Quantity>,
+    /// `[lo, hi]`: the reduced-time window of the data the series was fitted to.
+    pub data_reduced_time: Option<Spanned<Vec<Quantity>>>,
+    /// `[lo, hi]`: the temperature window of the data.
+    pub data_temperature: Option<Spanned<Vec<Quantity>>>,
     pub shift: Option<Spanned<RawShift>>,
     pub ageing: Option<Spanned<RawAgeing>>,
     /// Parameter key → where its value came from.

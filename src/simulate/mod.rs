@@ -967,6 +967,14 @@ impl<'a> Simulator<'a> {
         let p = self.problem;
         let at = At::Time(state.time);
         p.assess_rubber(snap.temperature, at, findings);
+        validity::data_window(
+            state.reduced_time,
+            snap.temperature,
+            p.material.data_reduced_time,
+            p.material.data_temperature,
+            at,
+            findings,
+        );
         validity::contact(
             &ContactState {
                 nominal_pressure: self.contact_peak(&snap.profile),

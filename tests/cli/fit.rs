@@ -413,3 +413,73 @@ fn output_reads_back_as_a_user_material() {
             .contains("(NNLS, 3 terms per decade)")
     );
 }
+
+#[test]
+fn a_fitted_material_runs_by_path_and_warns_beyond_its_data() {
+    // fit-prony writes the data's window (1e-4 … 1e8 s) into the material; a scenario names the
+    // file by path (relative to itself); a 30-year run at the reference temperature (no shift:
+    // reduced time = time) goes 9.5× beyond the data, and says so once, with how far and when
+    let dir = TempDir::new().unwrap();
+    let data = write(&dir, "data.csv", &relaxation_csv(false));
+    let fitted = dir.path().join("fitted.toml");
+    fit_ok(&[
+        data.to_str().unwrap(),
+        "--kind",
+        "relaxation",
+        "-o",
+        fitted.to_str().unwrap(),
+    ]);
+    let text = fs::read_to_string(&fitted).unwrap();
+    assert!(
+        text.contains("data_reduced_time = [\"1e-4 s\", \"1e8 s\"]"),
+        "{text}"
+    );
+    let scenario = write(
+        &dir,
+        "s.toml",
+        "name = \"fitted\"\n[material]\nfile = \"fitted.toml\"\n\
+         [surface]\nrms_roughness = \"1 um\"\nhurst_exponent = 0.8\nq0 = \"1e4 1/m\"\nq1 = \"1e9 1/m\"\n\
+         [fluid]\nviscosity = \"1 mPa*s\"\npressure_difference = \"0.1 bar\"\n\
+         [seal]\nnominal_pressure = \"1 MPa\"\nwidth = \"1 mm\"\nlength = \"0.1 m\"\n",
+    );
+    let out = cargo_bin_cmd!("sealsim")
+        .arg("run")
+        .arg(&scenario)
+        .arg("--summary")
+        .arg(dir.path().join("s.json"))
+        .assert()
+        .success();
+    let stderr = String::from_utf8(out.get_output().stderr.clone()).unwrap();
+    let stdout = String::from_utf8(out.get_output().stdout.clone()).unwrap();
+    assert!(stdout.contains("material       data [user]"), "{stdout}");
+    let line = stderr
+        .lines()
+        .find(|l| l.contains("reduced time = "))
+        .unwrap_or_else(|| panic!("no data-window warning in {stderr}"));
+    assert!(
+        line.contains("is above 1e8 s")
+            && line.contains("worst at t = 9.467e8 s (30 years)")
+            && line.contains("docs/model.md §9.13"),
+        "{line}"
+    );
+    assert_eq!(stderr.matches("reduced time = ").count(), 1, "{stderr}");
+    // a missing file is a located scenario error, nothing written
+    let missing = write(
+        &dir,
+        "m.toml",
+        &fs::read_to_string(&scenario)
+            .unwrap()
+            .replace("fitted.toml", "nope.toml"),
+    );
+    cargo_bin_cmd!("sealsim")
+        .arg("run")
+        .arg(&missing)
+        .arg("--summary")
+        .arg(dir.path().join("m.json"))
+        .assert()
+        .code(2)
+        .stderr(predicates::str::contains(
+            "m.toml:3: material.file: no material file",
+        ));
+    assert!(!dir.path().join("m.json").exists());
+}

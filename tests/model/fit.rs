@@ -492,6 +492,8 @@ fn material_toml_round_trips_through_the_parser() {
             property: "compression stress relaxation".into(),
             criterion: "50 % force retained".into(),
         }),
+        data_reduced_time: Some((1e-3, 3.6e6)),
+        data_temperature: Some((253.15, 373.15)),
         provenance: [
             "poisson_ratio",
             "long_term_modulus",

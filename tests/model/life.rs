@@ -37,6 +37,8 @@ fn material(long_term: f64, terms: &[(f64, f64)], shift: Shift) -> Material {
         glassy_thermal_expansion: None,
         ageing: None,
         ageing_basis: None,
+        data_reduced_time: None,
+        data_temperature: None,
         provenance: Vec::new(),
     }
 }
