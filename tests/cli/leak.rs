@@ -668,3 +668,23 @@ fn a_library_water_is_the_static_leak_at_its_own_viscosity() {
         "{constant} / {water}"
     );
 }
+
+#[test]
+fn water_below_freezing_is_a_located_warning() {
+    let text = format!(
+        "{}[environment]\ntemperature = \"-5 C\"\n",
+        PAPER.replacen("viscosity = \"1e-3 Pa*s\"\n", "library = \"water\"\n", 1)
+    );
+    let case = Case::new(&text);
+    cargo_bin_cmd!("sealsim")
+        .arg("leak")
+        .arg(case.scenario())
+        .arg("-o")
+        .arg(case.output())
+        .assert()
+        .success()
+        .stderr(predicate::str::contains(
+            "scenario.toml:11: fluid.library: the temperature reaches 268.15–268.15 K, but \
+             water is liquid at 1 atm only from 273.15 to 373.15 K",
+        ));
+}
