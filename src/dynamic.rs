@@ -306,6 +306,7 @@ impl DragCoefficients {
         let fluid = Fluid {
             viscosity: self.viscosity,
             pressure_difference,
+            law: crate::fluid::ViscosityLaw::Constant,
         };
         fluid.leak_rate(
             self.geometry,

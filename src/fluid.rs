@@ -11,10 +11,214 @@
 /// A Newtonian, incompressible fluid and the pressure it pushes across the seal.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Fluid {
-    /// Dynamic viscosity η \[Pa·s\].
+    /// Dynamic viscosity η \[Pa·s\] at the reference (installation) temperature T(0): the
+    /// static problem's.
     pub viscosity: f64,
     /// ΔP = P_a − P_b across the seal \[Pa\] (≥ 0).
     pub pressure_difference: f64,
+    /// How η follows the temperature (docs/model.md §3.7); the life loop evaluates it at T(t).
+    pub law: ViscosityLaw,
+}
+
+/// How a fluid's dynamic viscosity follows the temperature (docs/model.md §3.7).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ViscosityLaw {
+    /// η does not depend on T: [`Fluid::viscosity`] at every temperature.
+    Constant,
+    /// Liquid water at 0.1 MPa ([`water_viscosity`]).
+    Water,
+    /// A mineral oil by ASTM D341 (Walther) with a linear density ([`Walther`]).
+    Walther(Walther),
+}
+
+/// ASTM D341 (Walther) kinematic viscosity with a linear density: `log10 log10(ν + 0.7) =
+/// A − B log10 T` (ν in mm²/s = cSt, T in K), A and B through the kinematic viscosities at 40 °C
+/// and 100 °C; `η = ρ(T) ν` with `ρ(T) = ρ15 (1 − α (T − 288.15 K))` (docs/model.md §3.7).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Walther {
+    /// A of ASTM D341 (dimensionless).
+    pub a: f64,
+    /// B of ASTM D341 (dimensionless, per log10 K).
+    pub b: f64,
+    /// ρ15, the density at 15 °C \[kg/m³\].
+    pub density_15c: f64,
+    /// α, the volumetric thermal expansion of the density \[1/K\].
+    pub expansion: f64,
+    /// Where the numbers come from, short (the run summary's fluid line).
+    pub source: &'static str,
+}
+
+/// 40 °C \[K\] (the ISO 3448 grade temperature).
+pub const T40: f64 = 313.15;
+/// 100 °C \[K\].
+pub const T100: f64 = 373.15;
+/// 15 °C \[K\] (the density reference of ASTM D1250 / ISO 91).
+pub const T15: f64 = 288.15;
+
+impl Walther {
+    /// The law through the kinematic viscosities `nu40` at 40 °C and `nu100` at 100 °C
+    /// \[m²/s\] (ASTM D341 §A1: two points fix A and B), with density `density_15c`
+    /// \[kg/m³\] at 15 °C and volumetric expansion `expansion` \[1/K\]. `None` unless
+    /// ν40 > ν100 > 0 (an oil thins when heated) and the density is positive.
+    pub fn through(
+        nu40: f64,
+        nu100: f64,
+        density_15c: f64,
+        expansion: f64,
+        source: &'static str,
+    ) -> Option<Walther> {
+        let z = |nu: f64| (nu * 1e6 + 0.7).log10().log10();
+        if !(nu100 > 0.0 && nu40 > nu100 && density_15c > 0.0 && expansion.is_finite()) {
+            return None;
+        }
+        let (z40, z100) = (z(nu40), z(nu100));
+        let b = (z40 - z100) / (T100.log10() - T40.log10());
+        let a = z40 + b * T40.log10();
+        (a.is_finite() && b.is_finite()).then_some(Walther {
+            a,
+            b,
+            density_15c,
+            expansion,
+            source,
+        })
+    }
+
+    /// Kinematic viscosity ν(T) \[m²/s\]: `ν = 10^(10^(A − B log10 T)) − 0.7` cSt.
+    pub fn kinematic(&self, temperature: f64) -> f64 {
+        let z = self.a - self.b * temperature.log10();
+        (10f64.powf(10f64.powf(z)) - 0.7) * 1e-6
+    }
+
+    /// Density ρ(T) = ρ15 (1 − α (T − 15 °C)) \[kg/m³\].
+    pub fn density(&self, temperature: f64) -> f64 {
+        self.density_15c * (1.0 - self.expansion * (temperature - T15))
+    }
+
+    /// Dynamic viscosity η(T) = ρ(T) ν(T) \[Pa·s\].
+    pub fn dynamic(&self, temperature: f64) -> f64 {
+        self.density(temperature) * self.kinematic(temperature)
+    }
+}
+
+/// The viscosity of liquid water at 0.1 MPa \[Pa·s\] at `temperature` \[K\]: the
+/// correlation of Huber et al., J. Phys. Chem. Ref. Data 38 (2009) 101, §3.7 (the IAPWS 2008
+/// formulation's companion for liquid water at 0.1 MPa, 253.15–383.15 K),
+/// `η = Σ a_i (T/300 K)^b_i µPa·s` with a = (280.68, 511.45, 61.131, 0.45903),
+/// b = (−1.9, −7.7, −19.6, −40). Outside 0–100 °C at 1 atm the water is ice or steam: the
+/// scenario warns ([`WATER_LIQUID`]).
+pub fn water_viscosity(temperature: f64) -> f64 {
+    const TERMS: [(f64, f64); 4] = [
+        (280.68, -1.9),
+        (511.45, -7.7),
+        (61.131, -19.6),
+        (0.45903, -40.0),
+    ];
+    let t = temperature / 300.0;
+    TERMS.iter().map(|&(a, b)| a * t.powf(b)).sum::<f64>() * 1e-6
+}
+
+/// Liquid water at 1 atm: from the melting to the boiling point \[K\].
+pub const WATER_LIQUID: (f64, f64) = (273.15, 373.15);
+
+impl ViscosityLaw {
+    /// η at `temperature` \[K\] \[Pa·s\]; `None` for [`ViscosityLaw::Constant`] (the
+    /// fluid's own value).
+    fn at(&self, temperature: f64) -> Option<f64> {
+        match self {
+            ViscosityLaw::Constant => None,
+            ViscosityLaw::Water => Some(water_viscosity(temperature)),
+            ViscosityLaw::Walther(w) => Some(w.dynamic(temperature)),
+        }
+    }
+
+    /// Where the law's numbers come from, short; `None` for a constant.
+    pub fn source(&self) -> Option<&'static str> {
+        match self {
+            ViscosityLaw::Constant => None,
+            ViscosityLaw::Water => Some(WATER_SOURCE),
+            ViscosityLaw::Walther(w) => Some(w.source),
+        }
+    }
+}
+
+/// The water law's provenance.
+const WATER_SOURCE: &str = "water, Huber et al. 2009 (IAPWS 2008) at 0.1 MPa";
+
+/// A fluid of the library (`[fluid] library = "…"`): its law and where the numbers come from.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LibraryFluid {
+    pub id: &'static str,
+    pub law: ViscosityLaw,
+    /// Short provenance for the run summary.
+    pub source: &'static str,
+}
+
+/// Density of a typical mineral oil at 15 °C \[kg/m³\] (illustrative: ISO VG 32–100 hydraulic
+/// oils' data sheets give 0.86–0.89 g/cm³).
+pub const MINERAL_OIL_DENSITY_15C: f64 = 870.0;
+/// Volumetric expansion of a typical mineral oil \[1/K\] (illustrative, the usual 6.4e-4 1/K of
+/// petroleum oils near 870 kg/m³).
+pub const MINERAL_OIL_EXPANSION: f64 = 6.4e-4;
+
+/// The ISO VG grades of the library: id, ν40 = the grade's midpoint (ISO 3448) \[mm²/s\], and
+/// ν100 \[mm²/s\] of a typical VI ≈ 100 mineral hydraulic oil (illustrative data-sheet values),
+/// with a short provenance.
+const ISO_VG: [(&str, f64, f64, &str); 4] = [
+    (
+        "iso-vg-32",
+        32.0,
+        5.4,
+        "ISO VG 32 mineral oil, ASTM D341; ν100 and density illustrative",
+    ),
+    (
+        "iso-vg-46",
+        46.0,
+        6.8,
+        "ISO VG 46 mineral oil, ASTM D341; ν100 and density illustrative",
+    ),
+    (
+        "iso-vg-68",
+        68.0,
+        8.7,
+        "ISO VG 68 mineral oil, ASTM D341; ν100 and density illustrative",
+    ),
+    (
+        "iso-vg-100",
+        100.0,
+        11.1,
+        "ISO VG 100 mineral oil, ASTM D341; ν100 and density illustrative",
+    ),
+];
+
+/// The ids of the library's fluids.
+pub fn library_ids() -> Vec<&'static str> {
+    std::iter::once("water")
+        .chain(ISO_VG.iter().map(|g| g.0))
+        .collect()
+}
+
+/// The library fluid `id` (`"water"`, `"iso-vg-46"`, …), `None` if unknown.
+pub fn library(id: &str) -> Option<LibraryFluid> {
+    if id == "water" {
+        return Some(LibraryFluid {
+            id: "water",
+            law: ViscosityLaw::Water,
+            source: WATER_SOURCE,
+        });
+    }
+    let &(id, nu40, nu100, source) = ISO_VG.iter().find(|g| g.0 == id)?;
+    let walther = Walther::through(
+        nu40 * 1e-6,
+        nu100 * 1e-6,
+        MINERAL_OIL_DENSITY_15C,
+        MINERAL_OIL_EXPANSION,
+        source,
+    )?;
+    Some(LibraryFluid {
+        id,
+        law: ViscosityLaw::Walther(walther),
+        source,
+    })
 }
 
 /// The seal's extent along and across the flow. Built with named fields only, so that the two
@@ -50,6 +254,20 @@ pub enum Conduction {
 }
 
 impl Fluid {
+    /// The dynamic viscosity at `temperature` \[K\] \[Pa·s\] by the fluid's law (its own
+    /// [`Fluid::viscosity`], bit for bit, under [`ViscosityLaw::Constant`]).
+    pub fn viscosity_at(&self, temperature: f64) -> f64 {
+        self.law.at(temperature).unwrap_or(self.viscosity)
+    }
+
+    /// The fluid at `temperature` \[K\]: its viscosity evaluated there (docs/model.md §3.7).
+    pub fn at(&self, temperature: f64) -> Fluid {
+        Fluid {
+            viscosity: self.viscosity_at(temperature),
+            ..*self
+        }
+    }
+
     /// The leak rate Q̇ \[m³/s\] through `conduction` over `geometry` (docs/model.md §3.1–§3.2):
     /// * uniform: `Q̇ = (L_y/L_x) σ ΔP` (PY08 eq. 3 with the conductance of eq. 2);
     /// * series: `Q̇ = L_y ΔP / ∫ dx/σ(x)` (the flux per unit width is the same through every
@@ -83,6 +301,7 @@ mod tests {
     const WATER: Fluid = Fluid {
         viscosity: 1e-3,
         pressure_difference: 1e5,
+        law: ViscosityLaw::Constant,
     };
 
     #[test]
@@ -131,6 +350,72 @@ mod tests {
             ),
             0.0
         );
+    }
+
+    /// Relative difference.
+    fn rel(a: f64, b: f64) -> f64 {
+        (a / b - 1.0).abs()
+    }
+
+    #[test]
+    fn water_matches_the_reference_tables_within_one_percent() {
+        // M. Chaplin, "Water structure and science: data", London South Bank University
+        // (www1.lsbu.ac.uk/water/data1.html), dynamic viscosity at 1 atm [cP = mPa·s]
+        for (celsius, cp) in [(0.0, 1.792), (20.0, 1.002), (40.0, 0.653), (80.0, 0.355)] {
+            let eta = water_viscosity(273.15 + celsius);
+            assert!(
+                rel(eta, cp * 1e-3) < 0.01,
+                "{celsius} °C: {eta} vs {cp} mPa·s"
+            );
+        }
+        // Perry's Chemical Engineers' Handbook, 9th ed., Table 2-135 (saturated liquid, from
+        // the IAPWS formulations) [µPa·s]: the pressure difference to 0.1 MPa changes η by
+        // far less than 0.1 % below 100 °C
+        for (kelvin, upas) in [
+            (273.16, 1791.2),
+            (300.0, 853.84),
+            (350.0, 368.77),
+            (370.0, 291.36),
+        ] {
+            let eta = water_viscosity(kelvin);
+            assert!(
+                rel(eta, upas * 1e-6) < 0.01,
+                "{kelvin} K: {eta} vs {upas} µPa·s"
+            );
+        }
+    }
+
+    #[test]
+    fn iso_vg_46_reproduces_its_grade_and_the_walther_line_between() {
+        let Some(LibraryFluid {
+            law: ViscosityLaw::Walther(w),
+            ..
+        }) = library("iso-vg-46")
+        else {
+            panic!("iso-vg-46 is a Walther oil");
+        };
+        // ISO 3448: VG 46 is 46 mm²/s at 40 °C; the library's 100 °C value 6.8 mm²/s
+        assert!(rel(w.kinematic(T40), 46e-6) < 1e-12);
+        assert!(rel(w.kinematic(T100), 6.8e-6) < 1e-12);
+        // ASTM D341 through those two points, evaluated by hand (log10 log10(ν + 0.7) linear in
+        // log10 T): 20.6227 mm²/s at 60 °C, 133.838 at 20 °C, 11.1026 at 80 °C
+        for (kelvin, cst) in [(333.15, 20.6227), (293.15, 133.838), (353.15, 11.1026)] {
+            assert!(rel(w.kinematic(kelvin), cst * 1e-6) < 1e-5, "{kelvin} K");
+        }
+        // η = ρ ν with ρ(40 °C) = 870 (1 − 6.4e-4 · 25) kg/m³
+        assert!(rel(w.dynamic(T40), 870.0 * (1.0 - 6.4e-4 * 25.0) * 46e-6) < 1e-12);
+    }
+
+    #[test]
+    fn a_constant_law_is_the_fluid_itself_and_the_library_is_complete() {
+        assert_eq!(WATER.viscosity_at(400.0), WATER.viscosity);
+        assert_eq!(WATER.at(250.0), WATER);
+        for id in library_ids() {
+            assert_eq!(library(id).map(|f| f.id), Some(id));
+        }
+        assert!(library("iso-vg-47").is_none());
+        // an oil that thickens when heated is refused
+        assert!(Walther::through(6.8e-6, 46e-6, 870.0, 6.4e-4, "").is_none());
     }
 
     #[test]

@@ -317,6 +317,7 @@ mod tests {
         let fluid = Fluid {
             viscosity: 1e-3,
             pressure_difference,
+            law: crate::fluid::ViscosityLaw::Constant,
         };
         let resistance = profile.series_resistance(rule, conductance);
         fluid.leak_rate(

@@ -36,6 +36,7 @@
 //! | `K` | kelvin | yes |
 //! | `L`, `l` | litre (10⁻³ m³) | yes |
 //! | `P` | poise (0.1 Pa·s; `cP` = mPa·s) | yes |
+//! | `St` | stokes (10⁻⁴ m²/s; `cSt` = mm²/s) | yes |
 //! | `Hz` | hertz | yes |
 //!
 //! SI prefixes: `P` `T` `G` `M` `k` `c` `m` `u` `µ` (U+00B5) `μ` (U+03BC) `n` `p` `f`.
@@ -96,6 +97,10 @@ impl Dimension {
     pub const PRESSURE: Dimension = Dimension::new(-1, 1, -2, 0, 0);
     /// Pa·s.
     pub const VISCOSITY: Dimension = Dimension::new(-1, 1, -1, 0, 0);
+    /// m²/s (ν = η/ρ).
+    pub const KINEMATIC_VISCOSITY: Dimension = Dimension::new(2, 0, -1, 0, 0);
+    /// kg/m³.
+    pub const DENSITY: Dimension = Dimension::new(-3, 1, 0, 0, 0);
     /// 1/K.
     pub const THERMAL_EXPANSION: Dimension = Dimension::new(0, 0, 0, -1, 0);
     /// m³/s.
@@ -254,6 +259,12 @@ const NAMED_DIMENSIONS: &[NamedDimension] = &[
     named(Dimension::PRESSURE, "pressure", "10 MPa"),
     named(Dimension::VISCOSITY, "dynamic viscosity", "1 mPa*s"),
     named(
+        Dimension::KINEMATIC_VISCOSITY,
+        "kinematic viscosity",
+        "46 cSt",
+    ),
+    named(Dimension::DENSITY, "density", "870 kg/m^3"),
+    named(
         Dimension::THERMAL_EXPANSION,
         "thermal expansion coefficient (1/temperature)",
         "1.2e-5 1/K",
@@ -344,8 +355,9 @@ pub enum UnitError {
 }
 
 const KNOWN_UNITS_HINT: &str = "known units: m, g, s, min, h, hr, d, day, week, year, yr, \
-     Pa, bar, psi, atm, N, J, W, mol, K, L, l, P (poise), Hz, and C/F for temperatures; \
-     SI prefixes P T G M k c m u µ μ n p f apply to m, g, s, Pa, bar, N, J, W, mol, K, L, l, P, Hz";
+     Pa, bar, psi, atm, N, J, W, mol, K, L, l, P (poise), St (stokes), Hz, and C/F for \
+     temperatures; SI prefixes P T G M k c m u µ μ n p f apply to m, g, s, Pa, bar, N, J, W, mol, \
+     K, L, l, P, St, Hz";
 
 impl fmt::Display for UnitError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -837,6 +849,7 @@ const UNITS: &[UnitDef] = &[
     unit("L", 1e-3, Dimension::VOLUME, true),
     unit("l", 1e-3, Dimension::VOLUME, true),
     unit("P", 0.1, Dimension::VISCOSITY, true),
+    unit("St", 1e-4, Dimension::KINEMATIC_VISCOSITY, true),
     unit("Hz", 1.0, Dimension::FREQUENCY, true),
 ];
 
@@ -1306,6 +1319,9 @@ mod tests {
         ("year", 31_557_600.0, Dimension::TIME),
         ("mPa*s", 1e-3, Dimension::VISCOSITY),
         ("cP", 1e-3, Dimension::VISCOSITY),
+        ("cSt", 1e-6, Dimension::KINEMATIC_VISCOSITY),
+        ("mm^2/s", 1e-6, Dimension::KINEMATIC_VISCOSITY),
+        ("kg/m^3", 1.0, Dimension::DENSITY),
         ("m^3/s", 1.0, Dimension::VOLUME_FLOW),
         ("L/min", 1.0 / 60_000.0, Dimension::VOLUME_FLOW),
         ("kJ/mol", 1e3, Dimension::MOLAR_ENERGY),

@@ -855,6 +855,7 @@ mod tests {
         let fluid = crate::fluid::Fluid {
             viscosity: ETA,
             pressure_difference: 1e6,
+            law: crate::fluid::ViscosityLaw::Constant,
         };
         let geometry = crate::fluid::FlowGeometry {
             along_flow: 1e-3,

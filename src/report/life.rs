@@ -556,11 +556,18 @@ pub fn human_summary(
     line("seal", seal_description(problem));
     line(
         "fluid",
-        format!(
-            "η = {} Pa·s, ΔP = {} MPa",
-            human(problem.fluid.viscosity, 3),
-            human(problem.fluid.pressure_difference / 1e6, 4)
-        ),
+        match problem.fluid.law.source() {
+            None => format!(
+                "η = {} Pa·s, ΔP = {} MPa",
+                human(problem.fluid.viscosity, 3),
+                human(problem.fluid.pressure_difference / 1e6, 4)
+            ),
+            Some(source) => format!(
+                "η = {} Pa·s at installation, following T(t) ({source}), ΔP = {} MPa",
+                human(problem.fluid.viscosity, 3),
+                human(problem.fluid.pressure_difference / 1e6, 4)
+            ),
+        },
     );
     let env = &problem.environment;
     line(

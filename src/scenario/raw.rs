@@ -182,11 +182,19 @@ pub(super) struct RawSurface {
     pub height_unit: Option<Spanned<String>>,
 }
 
-/// `[fluid]`: Newtonian fluid and the pressure across the seal.
+/// `[fluid]`: Newtonian fluid and the pressure across the seal; its viscosity one of
+/// `viscosity` (constant), `library` (a fluid of [`crate::fluid::library`]) or the inline
+/// ASTM D341 law `viscosity_40c`, `viscosity_100c` with `density` (and optional
+/// `thermal_expansion`); which combinations are allowed is checked in validation.
 #[derive(Debug, serde::Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct RawFluid {
-    pub viscosity: Quantity,
+    pub viscosity: Option<Quantity>,
+    pub library: Option<Spanned<String>>,
+    pub viscosity_40c: Option<Quantity>,
+    pub viscosity_100c: Option<Quantity>,
+    pub density: Option<Quantity>,
+    pub thermal_expansion: Option<Quantity>,
     pub pressure_difference: Quantity,
 }
 

@@ -11,7 +11,7 @@ use super::raw::{
 };
 use super::{height_map, psd};
 use crate::contact::ContactSettings;
-use crate::fluid::Fluid;
+use crate::fluid::{Fluid, MINERAL_OIL_EXPANSION, ViscosityLaw, WATER_LIQUID, Walther};
 use crate::leak::{FlatSeal, StaticProblem};
 use crate::material::Material;
 use crate::numerical::reference::NumericalSettings;
@@ -153,6 +153,30 @@ const VISCOSITY: Field = field(
     "Pa·s",
     Bound::Range(1e-7, 1e6),
 );
+const VISCOSITY_40C: Field = field(
+    "fluid.viscosity_40c",
+    Dimension::KINEMATIC_VISCOSITY,
+    "m²/s",
+    Bound::Range(1e-7, 1e-1),
+);
+const VISCOSITY_100C: Field = field(
+    "fluid.viscosity_100c",
+    Dimension::KINEMATIC_VISCOSITY,
+    "m²/s",
+    Bound::Range(1e-7, 1e-1),
+);
+const DENSITY: Field = field(
+    "fluid.density",
+    Dimension::DENSITY,
+    "kg/m³",
+    Bound::Range(100.0, 3e4),
+);
+const FLUID_EXPANSION: Field = field(
+    "fluid.thermal_expansion",
+    Dimension::THERMAL_EXPANSION,
+    "1/K",
+    Bound::Range(0.0, 1e-2),
+);
 const PRESSURE_DIFFERENCE: Field = field(
     "fluid.pressure_difference",
     Dimension::PRESSURE,
@@ -203,6 +227,10 @@ const NUMERICAL_SEED: Field = field(
     Bound::Closed(0.0, 9_007_199_254_740_992.0),
 );
 
+/// 20 °C \[K\]: where a law's viscosity is first evaluated (the installation temperature
+/// replaces it once the environment is known).
+const ROOM_TEMPERATURE: f64 = 293.15;
+
 /// Default of `model.shape_factor` (α ≈ 1, PY08 eq. 2).
 const DEFAULT_SHAPE_FACTOR: f64 = 1.0;
 
@@ -222,7 +250,7 @@ impl Source<'_> {
         let (material, elastic, asperity_modulus) =
             self.scenario_material(&raw.material, &name, replacement)?;
         let (spectrum, height_map) = self.surface(&raw.surface)?;
-        let fluid = self.fluid(raw.fluid.get_ref())?;
+        let fluid = self.fluid(&raw.fluid)?;
         let seal = self.seal(&raw.seal)?;
         let installation_time = self.installation_time(&raw.seal)?;
         let groove = self.groove_surface(raw.groove_surface.as_ref(), seal.gland.is_some())?;
@@ -231,6 +259,8 @@ impl Source<'_> {
             None => (ContactSettings::default(), DEFAULT_SHAPE_FACTOR),
         };
         let environment = self.environment(raw.environment.as_ref(), &material)?;
+        // the static problem's viscosity is the law's at the installation temperature
+        let fluid = fluid.at(environment.at(0.0));
         let thermal_strain = self.thermal_strain(&seal, &material, &environment)?;
         let ageing = self.scenario_ageing(raw.ageing.as_ref(), &material)?;
         let failure = self.failure(raw.failure.as_ref())?;
@@ -269,6 +299,28 @@ impl Source<'_> {
             motion,
         };
         let mut warnings = seal.warnings;
+        if let (ViscosityLaw::Water, Some(library)) = (&fluid.law, &raw.fluid.get_ref().library) {
+            let (lo, hi) = life.environment.range();
+            let (melting, boiling) = WATER_LIQUID;
+            if lo < melting || hi > boiling {
+                warnings.push(
+                    self.error(
+                        library.span(),
+                        "fluid.library",
+                        format!(
+                            "the temperature reaches {}–{} K, but water is liquid at 1 atm only \
+                             from {} to {} K (it freezes or boils): the water viscosity there is \
+                             an extrapolation [docs/model.md §3.7]",
+                            show(lo),
+                            show(hi),
+                            show(melting),
+                            show(boiling)
+                        ),
+                    )
+                    .to_string(),
+                );
+            }
+        }
         if let (None, Some(own)) = (&life.ageing, &material.ageing) {
             // the compound's data say it ages: an engineer should see that this run does not
             warnings.push(
@@ -381,11 +433,130 @@ impl Source<'_> {
         raw.map(|q| self.quantity(q, field)).transpose()
     }
 
-    fn fluid(&self, raw: &RawFluid) -> Result<Fluid, ScenarioError> {
-        Ok(Fluid {
-            viscosity: self.quantity(&raw.viscosity, &VISCOSITY)?,
-            pressure_difference: self.quantity(&raw.pressure_difference, &PRESSURE_DIFFERENCE)?,
-        })
+    /// `[fluid]`: the pressure difference and the viscosity, one of `viscosity` (constant),
+    /// `library` (water, ISO VG grades) or the inline ASTM D341 law (`viscosity_40c`,
+    /// `viscosity_100c`, `density`, optional `thermal_expansion`); docs/model.md §3.7. The
+    /// viscosity returned is the constant's (or, for a law, the one at 20 °C: the caller
+    /// evaluates it at the installation temperature).
+    fn fluid(&self, table: &Spanned<RawFluid>) -> Result<Fluid, ScenarioError> {
+        let raw = table.get_ref();
+        let pressure_difference = self.quantity(&raw.pressure_difference, &PRESSURE_DIFFERENCE)?;
+        let inline = raw.viscosity_40c.as_ref().or(raw.viscosity_100c.as_ref());
+        let given: Vec<(&str, std::ops::Range<usize>)> = [
+            raw.viscosity.as_ref().map(|q| ("viscosity", q.span())),
+            raw.library.as_ref().map(|l| ("library", l.span())),
+            inline.map(|q| ("viscosity_40c/viscosity_100c", q.span())),
+        ]
+        .into_iter()
+        .flatten()
+        .collect();
+        if given.len() > 1 {
+            let (key, span) = given[1].clone();
+            return Err(self.error(
+                span,
+                &format!("fluid.{}", key.split('/').next().unwrap_or(key)),
+                format!(
+                    "{} and {key} are mutually exclusive: give a constant `viscosity`, a \
+                     `library` fluid, or the inline law `viscosity_40c`, `viscosity_100c` with \
+                     `density`",
+                    given[0].0
+                ),
+            ));
+        }
+        if inline.is_none() {
+            let stray = [
+                (&raw.density, DENSITY.key),
+                (&raw.thermal_expansion, FLUID_EXPANSION.key),
+            ];
+            if let Some((Some(q), key)) = stray.into_iter().find(|(q, _)| q.is_some()) {
+                return Err(self.error(
+                    q.span(),
+                    key,
+                    "only goes with the inline law `viscosity_40c`, `viscosity_100c` (a \
+                     constant `viscosity` is dynamic; a `library` fluid has its own density)",
+                ));
+            }
+        }
+        let constant = |viscosity: f64| Fluid {
+            viscosity,
+            pressure_difference,
+            law: ViscosityLaw::Constant,
+        };
+        let with_law = |law: ViscosityLaw| {
+            let fluid = Fluid {
+                viscosity: 0.0,
+                pressure_difference,
+                law,
+            };
+            fluid.at(ROOM_TEMPERATURE)
+        };
+        if let Some(q) = &raw.viscosity {
+            return Ok(constant(self.quantity(q, &VISCOSITY)?));
+        }
+        if let Some(id) = &raw.library {
+            return match crate::fluid::library(id.get_ref()) {
+                Some(known) => Ok(with_law(known.law)),
+                None => Err(self.error(
+                    id.span(),
+                    "fluid.library",
+                    format!(
+                        "unknown fluid \"{}\"; known: {}",
+                        id.get_ref(),
+                        crate::fluid::library_ids().join(", ")
+                    ),
+                )),
+            };
+        }
+        let Some(first) = inline else {
+            return Err(self.error(
+                table.span(),
+                VISCOSITY.key,
+                "missing key `viscosity` in [fluid] (or `library`, or `viscosity_40c` and \
+                 `viscosity_100c` with `density`)",
+            ));
+        };
+        let required = |q: &Option<Quantity>, f: &Field, why: &str| match q {
+            Some(q) => self.quantity(q, f),
+            None => Err(self.error(
+                first.span(),
+                f.key,
+                format!(
+                    "missing key `{}` in [fluid]: {why}",
+                    f.key.trim_start_matches("fluid.")
+                ),
+            )),
+        };
+        let both = "the ASTM D341 law needs the kinematic viscosities at 40 °C and 100 °C";
+        let nu40 = required(&raw.viscosity_40c, &VISCOSITY_40C, both)?;
+        let nu100 = required(&raw.viscosity_100c, &VISCOSITY_100C, both)?;
+        let density = required(
+            &raw.density,
+            &DENSITY,
+            "a kinematic viscosity (cSt) needs the density at 15 °C to give η = ρ ν",
+        )?;
+        let expansion = self
+            .optional(raw.thermal_expansion.as_ref(), &FLUID_EXPANSION)?
+            .unwrap_or(MINERAL_OIL_EXPANSION);
+        match Walther::through(
+            nu40,
+            nu100,
+            density,
+            expansion,
+            "inline ASTM D341 through ν40, ν100",
+        ) {
+            Some(w) => Ok(with_law(ViscosityLaw::Walther(w))),
+            None => Err(self.error(
+                raw.viscosity_100c
+                    .as_ref()
+                    .map_or(first.span(), |q| q.span()),
+                VISCOSITY_100C.key,
+                format!(
+                    "must be below viscosity_40c ({} m²/s): an oil thins when heated, got {} m²/s",
+                    show(nu40),
+                    show(nu100)
+                ),
+            )),
+        }
     }
 
     fn model(&self, raw: &RawModel) -> Result<(ContactSettings, f64), ScenarioError> {

@@ -430,7 +430,9 @@ impl<'a> Simulator<'a> {
         } else {
             installed.scaled((peak - (energised - own)).max(0.0) / own)
         };
-        let leak = self.profile_leak(&profile, moduli);
+        let p = self.problem;
+        let viscosity = p.fluid.viscosity_at(p.environment.at(0.0));
+        let leak = self.profile_leak(&profile, moduli, viscosity);
         (
             leak.leak_rate,
             leak.junction,
@@ -488,14 +490,20 @@ impl<'a> Simulator<'a> {
     /// its own, `e/E* = p_sq/E*_sq + (k_e ΔP − p_f)/E*_fl` (docs/model.md §6.1): solved as one
     /// interface at E*_fl with the squeeze's profile scaled by E_fl/E_sq. Whether the fluid
     /// lifts the ring off is a balance of stresses, `ΔP ≥ p_max + k_e ΔP`, on the profile itself.
-    fn profile_leak(&self, profile: &Profile, moduli: AsperityModuli) -> InterfaceLeak {
+    /// The fluid's `viscosity` \[Pa·s\] is the one at the state's temperature (§3.7).
+    fn profile_leak(
+        &self,
+        profile: &Profile,
+        moduli: AsperityModuli,
+        viscosity: f64,
+    ) -> InterfaceLeak {
         let p = self.problem;
         let e_star = moduli.fluid / (1.0 - p.material.poisson_ratio.powi(2));
         let equivalent = moduli.equivalent(profile);
         let lifted = p.fluid.pressure_difference > 0.0
             && p.fluid.pressure_difference >= self.contact_peak(profile);
         let interface = |path: &ContactPath, solver: &InterfaceSolver| {
-            self.interface_leak(path, solver, &equivalent, e_star, lifted)
+            self.interface_leak(path, solver, &equivalent, e_star, lifted, viscosity)
         };
         let counterface = interface(&self.path, &self.counterface);
         let groove = match (&self.problem.groove, &self.groove) {
@@ -522,11 +530,12 @@ impl<'a> Simulator<'a> {
         profile: &Profile,
         e_star: f64,
         lifted: bool,
+        viscosity: f64,
     ) -> InterfaceLeak {
         let p = self.problem;
         let dp = p.fluid.pressure_difference;
         let offset = p.energisation_factor * dp;
-        let sigma_hat = |s: f64| path.conductance(s, p.shape_factor, p.fluid.viscosity);
+        let sigma_hat = |s: f64| path.conductance(s, p.shape_factor, viscosity);
         let sigma = |e: f64| sigma_hat(e / e_star);
         let geometry = profile.geometry(p.geometry.sealing_length());
         let series = || {
@@ -557,7 +566,7 @@ impl<'a> Simulator<'a> {
                     offset,
                     width,
                 };
-                let solved = solver.solve(&sigma_hat, e_star, contact, p.fluid.viscosity, dp);
+                let solved = solver.solve(&sigma_hat, e_star, contact, viscosity, dp);
                 (solved.flow, junction_at(top - solved.centre_fluid_pressure))
             }
         };
@@ -775,7 +784,8 @@ impl<'a> Simulator<'a> {
         let moduli = self.asperity_moduli(state);
         let e_asperity = moduli.fluid;
         let e_star = e_asperity / (1.0 - p.material.poisson_ratio.powi(2));
-        let leak = self.profile_leak(&profile, moduli);
+        let viscosity = p.fluid.viscosity_at(temperature);
+        let leak = self.profile_leak(&profile, moduli, viscosity);
         let equivalent = moduli.equivalent(&profile);
         let (leak_rate, peak_junction) = (leak.leak_rate, leak.junction);
         // the junction's own reduced pressure (the energised peak less the fluid pressure there)
@@ -805,7 +815,7 @@ impl<'a> Simulator<'a> {
                         width: profile.width(),
                         length: p.geometry.sealing_length(),
                     },
-                    p.fluid.viscosity,
+                    viscosity,
                     p.shape_factor,
                 );
                 let point = spec.evaluate(&table.coefficients(s, &junction, &seal), static_rate);

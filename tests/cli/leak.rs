@@ -596,3 +596,95 @@ fn unwritable_output_exits_1() {
         .code(1)
         .stderr(predicate::str::contains("error: cannot write"));
 }
+
+#[test]
+fn a_kinematic_viscosity_without_density_is_located() {
+    // issue 15: a cSt value gives η only with the density
+    let case = Case::paper_with(
+        "viscosity = \"1e-3 Pa*s\"\n",
+        "viscosity_40c = \"46 cSt\"\nviscosity_100c = \"6.8 mm^2/s\"\n",
+    );
+    case.rejects(
+        &[],
+        &["scenario.toml:11: fluid.density: missing key `density` in [fluid]"],
+    );
+}
+
+#[test]
+fn an_unknown_library_fluid_lists_the_known_ones() {
+    let case = Case::paper_with("viscosity = \"1e-3 Pa*s\"\n", "library = \"iso-vg-47\"\n");
+    case.rejects(
+        &[],
+        &[
+            "scenario.toml:11: fluid.library: unknown fluid \"iso-vg-47\"",
+            "water, iso-vg-32, iso-vg-46, iso-vg-68, iso-vg-100",
+        ],
+    );
+}
+
+#[test]
+fn viscosity_and_library_are_mutually_exclusive() {
+    let case = Case::paper_with(
+        "viscosity = \"1e-3 Pa*s\"\n",
+        "viscosity = \"1e-3 Pa*s\"\nlibrary = \"water\"\n",
+    );
+    case.rejects(
+        &[],
+        &["scenario.toml:12: fluid.library: viscosity and library are mutually exclusive"],
+    );
+}
+
+#[test]
+fn a_library_water_is_the_static_leak_at_its_own_viscosity() {
+    // the paper's scenario has no [environment]: an elastic material is at 23 °C, where the
+    // water correlation of Huber et al. (2009), evaluated by hand, gives 0.932098 mPa·s (the
+    // tables: 1.002 at 20 °C, 0.797 at 30 °C): the leak is the 1 mPa·s one over 0.932098
+    let leak = |fluid: &str| {
+        let case = Case::paper_with("viscosity = \"1e-3 Pa*s\"\n", fluid);
+        cargo_bin_cmd!("sealsim")
+            .arg("leak")
+            .arg(case.scenario())
+            .arg("-o")
+            .arg(case.output())
+            .assert()
+            .success();
+        let text = fs::read_to_string(case.output()).unwrap();
+        let mut reader = csv::Reader::from_reader(text.as_bytes());
+        let column = reader
+            .headers()
+            .unwrap()
+            .iter()
+            .position(|h| h.starts_with("leak_rate"))
+            .unwrap();
+        let record = reader.records().next().unwrap().unwrap();
+        record[column].parse::<f64>().unwrap()
+    };
+    let (constant, water) = (
+        leak("viscosity = \"1e-3 Pa*s\"\n"),
+        leak("library = \"water\"\n"),
+    );
+    assert!(
+        (constant / water / 0.932098 - 1.0).abs() < 1e-5,
+        "{constant} / {water}"
+    );
+}
+
+#[test]
+fn water_below_freezing_is_a_located_warning() {
+    let text = format!(
+        "{}[environment]\ntemperature = \"-5 C\"\n",
+        PAPER.replacen("viscosity = \"1e-3 Pa*s\"\n", "library = \"water\"\n", 1)
+    );
+    let case = Case::new(&text);
+    cargo_bin_cmd!("sealsim")
+        .arg("leak")
+        .arg(case.scenario())
+        .arg("-o")
+        .arg(case.output())
+        .assert()
+        .success()
+        .stderr(predicate::str::contains(
+            "scenario.toml:11: fluid.library: the temperature reaches 268.15–268.15 K, but \
+             water is liquid at 1 atm only from 273.15 to 373.15 K",
+        ));
+}

@@ -204,6 +204,7 @@ fn leak_rates_of_both_levels_are_positive_and_finite_on_the_paper_case() {
         fluid: Fluid {
             viscosity: 1e-3,
             pressure_difference: 0.01e6,
+            law: sealsim::fluid::ViscosityLaw::Constant,
         },
         seal: FlatSeal {
             nominal_pressure: 0.2e6,

@@ -53,6 +53,7 @@ fn oring_problem(material: Material) -> LifeProblem {
         fluid: Fluid {
             viscosity: 1e-3,
             pressure_difference: 1e5,
+            law: sealsim::fluid::ViscosityLaw::Constant,
         },
         geometry: SealGeometry::ORing {
             cross_section: 3.53e-3,

@@ -18,6 +18,7 @@ mod dynamic;
 mod effective_medium;
 mod fit;
 mod flow;
+mod fluid;
 mod gland;
 mod height_map;
 mod interface;

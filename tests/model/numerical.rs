@@ -174,6 +174,7 @@ fn analytic(sp: &Spectrum, e_star: f64, p0: f64) -> Analytic {
         fluid: Fluid {
             viscosity: VISCOSITY,
             pressure_difference: 1.0,
+            law: sealsim::fluid::ViscosityLaw::Constant,
         },
         seal: FlatSeal {
             nominal_pressure: p0,

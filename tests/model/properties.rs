@@ -51,6 +51,7 @@ fn solver(p: Params, fidelity: Fidelity) -> StaticSolver {
         fluid: Fluid {
             viscosity: 1e-3,
             pressure_difference: 1e4,
+            law: sealsim::fluid::ViscosityLaw::Constant,
         },
         seal: FlatSeal {
             nominal_pressure: 1e5,
