@@ -4,7 +4,7 @@
 use sealsim::contact::ContactSettings;
 use sealsim::fluid::{Fluid, ViscosityLaw};
 use sealsim::leak::Fidelity;
-use sealsim::material::{Material, Prony, Shift, Status, TemperatureHistory};
+use sealsim::material::{Material, TemperatureHistory};
 use sealsim::seal::SealGeometry;
 use sealsim::simulate::{
     AsperityModulus, FailureCriteria, GrooveInterface, LifeProblem, Loading, TimeGrid, simulate,
@@ -17,19 +17,7 @@ const STEP: f64 = 1e5;
 /// An elastic O-ring (no relaxation, no shift, no thermal strain): only η changes with T.
 fn problem(law: ViscosityLaw, environment: TemperatureHistory) -> LifeProblem {
     LifeProblem {
-        material: Material {
-            name: "elastic".into(),
-            status: Status::User,
-            prony: Prony::new(5e6, &[]).unwrap(),
-            poisson_ratio: 0.5,
-            shift: Shift::None,
-            glass_transition: None,
-            thermal_expansion: None,
-            glassy_thermal_expansion: None,
-            ageing: None,
-            ageing_basis: None,
-            provenance: Vec::new(),
-        },
+        material: Material::elastic("elastic", 5e6, 0.5).unwrap(),
         asperity_modulus: AsperityModulus::Relaxed,
         spectrum: Spectrum::self_affine(10e-6, 0.8, 1e4, 1e9, None).unwrap(),
         contact: ContactSettings::default(),
