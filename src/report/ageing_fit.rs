@@ -24,12 +24,15 @@ pub struct AgeingFitReport {
     pub service_temperature: Option<f64>,
 }
 
+/// (life \[s\], 95 % confidence interval, 95 % prediction interval).
+type Life = (f64, (f64, f64), (f64, f64));
+
 const INTERVAL_NOTE: &str = "95 % confidence interval of the regression line (ISO 11346); \
     the 95 % prediction interval of one new determination is wider";
 
 impl AgeingFitReport {
     /// (life \[s\], confidence interval, prediction interval) at the service temperature.
-    fn life(&self) -> Option<(f64, (f64, f64), (f64, f64))> {
+    fn life(&self) -> Option<Life> {
         self.service_temperature.map(|t| {
             (
                 self.fit.time_at(t),
