@@ -5,6 +5,7 @@
 //! [`run()`]. Exit status: 0 success, 2 bad input (usage, flag values, scenario files), 1 failure
 //! to write the output or an internal error.
 
+pub mod ageing_fit;
 pub mod compare;
 pub mod figures;
 pub mod fit_prony;
@@ -110,6 +111,9 @@ pub enum Command {
     Figures(figures::FiguresArgs),
     /// Prony series fitted to relaxation or DMA data, written as a material TOML file.
     FitProny(fit_prony::FitPronyArgs),
+    /// Lifetime from accelerated-ageing data (ISO 11346): Arrhenius fit of the times to a
+    /// compression-set or retained-force criterion, extrapolated to a service temperature.
+    AgeingFit(ageing_fit::AgeingFitArgs),
     /// The material library: list, show, response curves, Abaqus/ANSYS export.
     Materials(materials::MaterialsArgs),
     /// AS568 O-ring sizes: one size's dimensions (inch and mm, tolerances, source), or all.
@@ -191,6 +195,7 @@ pub fn run(command: Command) -> Result<(), CliError> {
         Command::Tradeoff(args) => tradeoff::run(args),
         Command::Figures(args) => figures::run(args),
         Command::FitProny(args) => fit_prony::run(args),
+        Command::AgeingFit(args) => ageing_fit::run(args),
         Command::Materials(args) => materials::run(args),
         Command::Sizes(args) => sizes::run(args),
     }

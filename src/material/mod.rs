@@ -1,6 +1,7 @@
 //! Viscoelastic rubber: Prony series in reduced time, time–temperature shift, fitting, and
 //! the material library's model types (docs/model.md §5).
 
+pub mod ageing_fit;
 pub mod compound;
 pub mod curve;
 pub mod fit;

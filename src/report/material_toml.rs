@@ -8,7 +8,7 @@
 //! ageing, provenance) are written only when present; `status` is omitted for
 //! [`Status::User`], which is what a file without it means.
 
-use crate::material::{Material, Shift, Status};
+use crate::material::{Ageing, AgeingBasis, Material, Shift, Status};
 use std::fmt::Write;
 
 /// The material TOML text of `m`: one `[material]` table with its sub-tables.
@@ -100,29 +100,38 @@ pub fn material_toml(m: &Material) -> String {
         }
     }
     if let Some(a) = m.ageing {
-        out.push_str("\n[material.ageing]\n");
-        line(
-            &mut out,
-            "activation_energy",
-            &quantity(a.activation_energy, "J/mol"),
-        );
-        line(&mut out, "rate", &quantity(a.rate, "1/s"));
-        line(
-            &mut out,
-            "reference_temperature",
-            &quantity(a.reference_temperature, "K"),
-        );
-        line(&mut out, "crosslinking", &float(a.crosslinking));
-        if let Some(b) = &m.ageing_basis {
-            line(&mut out, "property", &string(&b.property));
-            line(&mut out, "criterion", &string(&b.criterion));
-        }
+        out.push('\n');
+        out.push_str(&ageing_toml(&a, m.ageing_basis.as_ref()));
     }
     if !m.provenance.is_empty() {
         out.push_str("\n[material.provenance]\n");
         for (key, text) in &m.provenance {
             line(&mut out, &bare_or_quoted_key(key), &string(text));
         }
+    }
+    out
+}
+
+/// The `[material.ageing]` table of `a` (with `property` and `criterion` when `basis` is
+/// given): Ea in J/mol, k_ref in 1/s, T_ref in K, crosslinking a bare float (docs/model.md
+/// §6.5), e.g. the output of `sealsim ageing-fit --write-material-ageing`.
+pub fn ageing_toml(a: &Ageing, basis: Option<&AgeingBasis>) -> String {
+    let mut out = String::from("[material.ageing]\n");
+    line(
+        &mut out,
+        "activation_energy",
+        &quantity(a.activation_energy, "J/mol"),
+    );
+    line(&mut out, "rate", &quantity(a.rate, "1/s"));
+    line(
+        &mut out,
+        "reference_temperature",
+        &quantity(a.reference_temperature, "K"),
+    );
+    line(&mut out, "crosslinking", &float(a.crosslinking));
+    if let Some(b) = basis {
+        line(&mut out, "property", &string(&b.property));
+        line(&mut out, "criterion", &string(&b.criterion));
     }
     out
 }

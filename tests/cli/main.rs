@@ -13,6 +13,7 @@
 mod common;
 mod support;
 
+mod ageing_fit;
 mod engineering_units;
 mod figures;
 mod fit;
