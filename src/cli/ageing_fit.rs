@@ -3,11 +3,11 @@
 
 use super::{CliError, write_output};
 use crate::material::ageing_fit::{
-    AgeingKind, Crossing, ageing_constants, fit_arrhenius, read_ageing_data, resolve_kind,
-    time_to_criterion,
+    AgeingKind, Crossing, ageing_constants, fit_arrhenius, resolve_kind, time_to_criterion,
 };
 use crate::report::ageing_fit::AgeingFitReport;
 use crate::report::material_toml::ageing_toml;
+use crate::scenario::ageing_data::read_ageing_data;
 use crate::units::parse_temperature;
 use clap::{Args, ValueEnum};
 use std::path::PathBuf;

@@ -2,7 +2,7 @@
 //! end-of-life criterion at each ageing temperature, an Arrhenius fit of those times, and the
 //! life extrapolated to a service temperature.
 //!
-//! * **Data** ([`parse_ageing_data`]): a CSV file `temperature,time,value` with a units row
+//! * **Data** ([`crate::scenario::ageing_data::parse_ageing_data`], read at the input boundary): a CSV file `temperature,time,value` with a units row
 //!   (`C,h,1`: an absolute temperature unit, a time unit, `1` or `%` for the value). The value
 //!   is a compression set (rising with time) or a retained-force fraction F/F0 (falling).
 //! * **Time to criterion** ([`time_to_criterion`]): the first pair of consecutive points
@@ -24,10 +24,8 @@
 //!   F/F0 = exp(−k t) → `k = −ln(c)/t*`.
 
 use crate::material::{Ageing, AgeingBasis, BALANCED_CROSSLINKING};
-use crate::units::{self, Dimension, show};
+use crate::units::show;
 use statrs::distribution::{ContinuousCDF, StudentsT};
-use std::fmt;
-use std::path::{Path, PathBuf};
 
 /// Molar gas constant R \[J/(mol K)\] (CODATA 2018, exact).
 pub const GAS_CONSTANT: f64 = 8.314_462_618;
@@ -101,192 +99,6 @@ impl AgeingSeries {
             _ => 0,
         }
     }
-}
-
-/// A data file or fit that cannot be used: the file, the 1-based line when the problem is on
-/// one line, and what is wrong. Displayed as `path:line: message`.
-#[derive(Debug, Clone, PartialEq)]
-pub struct AgeingFitError {
-    pub path: PathBuf,
-    pub line: Option<usize>,
-    pub message: String,
-}
-
-impl fmt::Display for AgeingFitError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}", self.path.display())?;
-        if let Some(line) = self.line {
-            write!(f, ":{line}")?;
-        }
-        write!(f, ": {}", self.message)
-    }
-}
-
-impl std::error::Error for AgeingFitError {}
-
-type Located = (Option<usize>, String);
-
-fn cells(row: &str) -> Vec<&str> {
-    row.split(',').map(str::trim).collect()
-}
-
-/// Reads the ageing data file at `path` ([`parse_ageing_data`]).
-pub fn read_ageing_data(path: &Path) -> Result<Vec<AgeingSeries>, AgeingFitError> {
-    let text = std::fs::read_to_string(path).map_err(|e| AgeingFitError {
-        path: path.to_path_buf(),
-        line: None,
-        message: format!("cannot read the data file: {e}"),
-    })?;
-    parse_ageing_data(&text, path)
-}
-
-/// Parses ageing-data `text` (as if read from `path`, used only in messages) into one series
-/// per temperature, in order of first appearance.
-///
-/// Header `temperature,time,value` (case-insensitive; `T`, `t` accepted), then a units row:
-/// an absolute temperature unit (`C`, `K`, `F`, …), a time unit (`s`, `h`, `d`, …), `1` or `%`.
-/// Values in SI (K, s, fraction). Times ≥ 0 and, within one temperature, strictly increasing;
-/// values finite and ≥ 0. `#` lines and blank lines are skipped.
-pub fn parse_ageing_data(text: &str, path: &Path) -> Result<Vec<AgeingSeries>, AgeingFitError> {
-    parse(text).map_err(|(line, message)| AgeingFitError {
-        path: path.to_path_buf(),
-        line,
-        message,
-    })
-}
-
-fn parse(text: &str) -> Result<Vec<AgeingSeries>, Located> {
-    let mut rows = crate::scenario::data_lines(text);
-    let Some((header_line, header)) = rows.next() else {
-        return Err((
-            None,
-            "no data: expected a header row temperature,time,value".into(),
-        ));
-    };
-    let names: Vec<String> = cells(header).iter().map(|c| c.to_lowercase()).collect();
-    let expected = [
-        ["temperature", "t"].as_slice(),
-        ["time", "t"].as_slice(),
-        ["value"].as_slice(),
-    ];
-    if names.len() != 3
-        || names
-            .iter()
-            .zip(expected)
-            .any(|(n, e)| !e.contains(&n.as_str()))
-    {
-        return Err((
-            Some(header_line),
-            format!("expected the header row temperature,time,value, found {header:?}"),
-        ));
-    }
-    let Some((units_line, units_row)) = rows.next() else {
-        return Err((
-            Some(header_line),
-            "no units row: expected e.g. C,h,1 after the header".into(),
-        ));
-    };
-    let units_cells = cells(units_row);
-    if units_cells.len() != 3 {
-        return Err((
-            Some(units_line),
-            format!(
-                "the units row has {} cells, expected 3 (e.g. C,h,1)",
-                units_cells.len()
-            ),
-        ));
-    }
-    let temperature_unit = units_cells[0];
-    units::absolute_temperature(300.0, temperature_unit).map_err(|e| {
-        (
-            Some(units_line),
-            format!("temperature: unit {temperature_unit:?}: {e} (expected C, K or F)"),
-        )
-    })?;
-    let time_unit = units_cells[1];
-    let time_factor = match units::parse_unit(time_unit) {
-        Ok((factor, Dimension::TIME)) => factor,
-        Ok((_, dimension)) => {
-            return Err((
-                Some(units_line),
-                format!("time: unit {time_unit:?} is {dimension}, expected a time (e.g. h)"),
-            ));
-        }
-        Err(e) => return Err((Some(units_line), format!("time: {e}"))),
-    };
-    let value_factor = match units_cells[2] {
-        "1" | "" => 1.0,
-        "%" => 0.01,
-        other => {
-            return Err((
-                Some(units_line),
-                format!("value: unit {other:?}, expected 1 (a fraction) or %"),
-            ));
-        }
-    };
-    let mut series: Vec<AgeingSeries> = Vec::new();
-    for (line, row) in rows {
-        let row_cells = cells(row);
-        if row_cells.len() != 3 {
-            return Err((
-                Some(line),
-                format!(
-                    "expected 3 comma-separated columns (temperature, time, value), found {}",
-                    row_cells.len()
-                ),
-            ));
-        }
-        let number = |k: usize, name: &str| -> Result<f64, Located> {
-            match row_cells[k].parse::<f64>() {
-                Ok(v) if v.is_finite() => Ok(v),
-                _ => Err((
-                    Some(line),
-                    format!("{name}: not a finite number: {:?}", row_cells[k]),
-                )),
-            }
-        };
-        let temperature = units::absolute_temperature(number(0, "temperature")?, temperature_unit)
-            .map_err(|e| (Some(line), format!("temperature: {e}")))?;
-        let time = number(1, "time")? * time_factor;
-        let value = number(2, "value")? * value_factor;
-        if time < 0.0 {
-            return Err((
-                Some(line),
-                format!("time: must be ≥ 0, got {}", row_cells[1]),
-            ));
-        }
-        if value < 0.0 {
-            return Err((
-                Some(line),
-                format!("value: must be ≥ 0, got {}", row_cells[2]),
-            ));
-        }
-        let point = AgeingPoint { line, time, value };
-        match series.iter_mut().find(|s| s.temperature == temperature) {
-            Some(s) => {
-                if let Some(previous) = s.points.last()
-                    && time <= previous.time
-                {
-                    return Err((
-                        Some(line),
-                        format!(
-                            "time: must increase strictly within one temperature, got {} after line {}",
-                            row_cells[1], previous.line
-                        ),
-                    ));
-                }
-                s.points.push(point);
-            }
-            None => series.push(AgeingSeries {
-                temperature,
-                points: vec![point],
-            }),
-        }
-    }
-    if series.is_empty() {
-        return Err((Some(units_line), "no data rows".into()));
-    }
-    Ok(series)
 }
 
 /// The kind of the data: `given`, checked against every series' net direction (first to last
@@ -506,6 +318,9 @@ pub fn ageing_constants(
 #[cfg(test)]
 mod tests {
     use super::*;
+    // the data file is read at the input boundary; these tests feed the fit from text
+    use crate::scenario::ageing_data::parse_ageing_data;
+    use std::path::Path;
 
     fn error(text: &str) -> String {
         parse_ageing_data(text, Path::new("a.csv"))

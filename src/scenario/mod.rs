@@ -16,6 +16,7 @@
 //! [`leak::StaticProblem`]: crate::leak::StaticProblem
 //! [`simulate::LifeProblem`]: crate::simulate::LifeProblem
 
+pub mod ageing_data;
 pub mod as568;
 mod contamination;
 mod error;
