@@ -1,55 +1,26 @@
 //! A fluid whose viscosity follows the temperature in the life loop (issue 15, item 5;
 //! docs/model.md §3.7).
 
-use sealsim::contact::ContactSettings;
 use sealsim::fluid::{Fluid, ViscosityLaw};
-use sealsim::leak::Fidelity;
 use sealsim::material::{Material, TemperatureHistory};
-use sealsim::seal::SealGeometry;
-use sealsim::simulate::{
-    AsperityModulus, FailureCriteria, GrooveInterface, LifeProblem, Loading, TimeGrid, simulate,
-};
-use sealsim::surface::Spectrum;
+use sealsim::simulate::{LifeProblem, TimeGrid, simulate};
 
 /// The hot phase starts here \[s\].
 const STEP: f64 = 1e5;
 
-/// An elastic O-ring (no relaxation, no shift, no thermal strain): only η changes with T.
+/// An elastic O-ring (no relaxation, no shift, no thermal strain): only η changes with T —
+/// the life tests' O-ring with the viscosity `law`, `environment` and a short time grid.
 fn problem(law: ViscosityLaw, environment: TemperatureHistory) -> LifeProblem {
+    let base = crate::life::oring_problem(Material::elastic("elastic", 5e6, 0.5).unwrap());
     LifeProblem {
-        material: Material::elastic("elastic", 5e6, 0.5).unwrap(),
-        asperity_modulus: AsperityModulus::Relaxed,
-        spectrum: Spectrum::self_affine(10e-6, 0.8, 1e4, 1e9, None).unwrap(),
-        contact: ContactSettings::default(),
-        shape_factor: 1.0,
-        fluid: Fluid {
-            viscosity: 1e-3,
-            pressure_difference: 1e5,
-            law,
-        },
-        geometry: SealGeometry::ORing {
-            cross_section: 3.53e-3,
-            mean_diameter: 0.05,
-            squeeze: 0.2,
-        },
-        gland: None,
-        groove: GrooveInterface::None,
-        energisation_factor: 0.0,
-        loading: Loading::Displacement,
-        installation_time: 0.0,
+        fluid: Fluid { law, ..base.fluid },
         environment,
-        thermal_strain: None,
-        ageing: None,
-        failure: FailureCriteria::default(),
         time: TimeGrid {
             start: 1.0,
             duration: 1e6,
             points_per_decade: 4.0,
         },
-        fidelity: Fidelity::Table,
-        strips: 16,
-        contamination: None,
-        motion: None,
+        ..base
     }
 }
 

@@ -43,7 +43,7 @@ fn material(long_term: f64, terms: &[(f64, f64)], shift: Shift) -> Material {
     }
 }
 
-fn oring_problem(material: Material) -> LifeProblem {
+pub(crate) fn oring_problem(material: Material) -> LifeProblem {
     LifeProblem {
         material,
         asperity_modulus: AsperityModulus::Relaxed,
