@@ -3,10 +3,12 @@
 //! ([`crate::report::material_toml`]).
 
 use super::{CliError, write_output};
+use crate::material::csr::{Normalisation, TestPiece};
 use crate::material::fit::{Fit, FitError, FitSettings, fit_dma, fit_relaxation};
 use crate::material::{Material, Shift, Status};
 use crate::report::material_toml::material_toml;
-use crate::scenario::fit_data::{FitData, FitKind, read_fit_data};
+use crate::scenario::fit_data::{FitData, FitKind, Isotherm, Measured, read_fit_data, show_kelvin};
+use crate::units::{Dimension, parse_quantity, parse_temperature, show};
 use clap::builder::NonEmptyStringValueParser;
 use clap::{Args, ValueEnum};
 use std::path::{Path, PathBuf};
@@ -51,6 +53,64 @@ pub struct FitPronyArgs {
     /// Material name \[default: the data file's name without extension\].
     #[arg(long, value_name = "NAME", value_parser = NonEmptyStringValueParser::new())]
     pub name: Option<String>,
+
+    /// The test temperature of data without a temperature column (e.g. 23C): written as the
+    /// material's data temperature, so that a run far from it is warned about.
+    #[arg(long, value_name = "T")]
+    pub temperature: Option<String>,
+
+    #[command(flatten)]
+    pub csr: CsrArgs,
+}
+
+/// How a compression-stress-relaxation force (or retained force) becomes a modulus
+/// (`crate::material::csr`).
+#[derive(Debug, Clone, Default, Args)]
+#[command(next_help_heading = "Compression stress relaxation (force or retained columns)")]
+pub struct CsrArgs {
+    /// The CSR test piece: a ring (or O-ring: --cross-section, --mean-diameter) or a disc
+    /// (--diameter, optional --height) between lubricated plates.
+    #[arg(long, value_enum)]
+    pub test_piece: Option<PieceArg>,
+
+    /// The test's compression as a fraction or per cent of the cord diameter or disc height
+    /// (e.g. 25%).
+    #[arg(long, value_name = "SQUEEZE")]
+    pub squeeze: Option<String>,
+
+    /// Ring cord diameter (e.g. 3.53mm).
+    #[arg(long, value_name = "LENGTH")]
+    pub cross_section: Option<String>,
+
+    /// Ring mean diameter (e.g. 30mm).
+    #[arg(long, value_name = "LENGTH")]
+    pub mean_diameter: Option<String>,
+
+    /// Disc diameter (e.g. 13mm).
+    #[arg(long, value_name = "LENGTH")]
+    pub diameter: Option<String>,
+
+    /// Disc height before compression (e.g. 6.3mm): only to bound the effect of plate friction.
+    #[arg(long, value_name = "LENGTH")]
+    pub height: Option<String>,
+
+    /// The force at a retention of 1 (e.g. 180N), for retained data with a test piece.
+    #[arg(long, value_name = "FORCE")]
+    pub initial_force: Option<String>,
+
+    /// A stated normalisation instead of a test piece: the modulus at the first force reading,
+    /// or at a retention of 1 (e.g. 6MPa).
+    #[arg(long, value_name = "MODULUS")]
+    pub reference_modulus: Option<String>,
+}
+
+/// `--test-piece` values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum PieceArg {
+    /// A ring or O-ring compressed across its cord (Lindley's force law, as in the life run).
+    Ring,
+    /// A cylindrical disc between lubricated plates (neo-Hookean uniaxial compression).
+    Disc,
 }
 
 /// `--kind` values.
@@ -78,29 +138,357 @@ pub fn run(args: FitPronyArgs) -> Result<(), CliError> {
     let settings = FitSettings {
         terms_per_decade: args.terms_per_decade,
     };
-    let fit = match &data {
-        FitData::Relaxation { times, moduli } => fit_relaxation(times, moduli, &settings),
+    let source = args.data.display().to_string();
+    let stated_temperature = args
+        .temperature
+        .as_deref()
+        .map(parse_temperature)
+        .transpose()
+        .map_err(|e| CliError::Input(format!("--temperature: {e}")))?;
+    let (fit, data_temperature, normalisation) = match &data {
+        FitData::Relaxation {
+            measured,
+            isotherms,
+            temperature_column,
+        } => {
+            let normalisation = normalisation(&args.csr, *measured, isotherms)?;
+            let [isotherm] = isotherms.as_slice() else {
+                let (line, column) = temperature_column.unwrap_or((1, 1));
+                return Err(CliError::Input(format!(
+                    "{source}:{line}:{column}: {} temperatures: master curves (time–temperature \
+                     superposition) are not available yet; give one temperature",
+                    isotherms.len()
+                )));
+            };
+            if let (Some(t), Some(_)) = (isotherm.temperature, stated_temperature) {
+                return Err(CliError::Input(format!(
+                    "--temperature: the data give their temperature ({}) in a column",
+                    show_kelvin(t)
+                )));
+            }
+            let moduli = match &normalisation {
+                Some(n) => n.moduli(&isotherm.values),
+                None => isotherm.values.clone(),
+            };
+            let fit = fit_relaxation(&isotherm.times, &moduli, &settings)
+                .map_err(|e| fit_error(&args.data, e))?;
+            (
+                fit,
+                isotherm.temperature.or(stated_temperature),
+                normalisation.map(|n| (n, *measured)),
+            )
+        }
         FitData::Dma {
             omegas,
             storage,
             loss,
-        } => fit_dma(omegas, storage, loss, &settings),
-    }
-    .map_err(|e| fit_error(&args.data, e))?;
+        } => {
+            if csr_given(&args.csr) {
+                return Err(CliError::Input(
+                    "--test-piece, --squeeze, --reference-modulus etc. convert CSR forces; DMA \
+                     data give moduli"
+                        .into(),
+                ));
+            }
+            let fit =
+                fit_dma(omegas, storage, loss, &settings).map_err(|e| fit_error(&args.data, e))?;
+            (fit, stated_temperature, None)
+        }
+    };
 
-    let source = args.data.display().to_string();
     let name = args
         .name
         .clone()
         .unwrap_or_else(|| default_name(&args.data));
-    let material = fitted_material(name, &fit, &source, args.terms_per_decade);
+    let mut material = fitted_material(name, &fit, &source, args.terms_per_decade);
+    if let Some(t) = data_temperature {
+        material.data_temperature = Some((t, t));
+        material.provenance.push((
+            "data_temperature".into(),
+            format!("the test temperature of {source}"),
+        ));
+    }
+    if let Some((n, measured)) = &normalisation {
+        let note = format!(
+            "; moduli from the {} by {}",
+            measured.describe(),
+            describe(n)
+        );
+        for (key, text) in material.provenance.iter_mut() {
+            if key == "prony" || key == "long_term_modulus" {
+                text.push_str(&note);
+            }
+        }
+    }
     let text = format!(
         "{}{}",
         header(&source, kind, &fit),
         material_toml(&material)
     );
     print_summary(&source, &fit);
+    if let Some((n, _)) = &normalisation {
+        print_normalisation(&source, n);
+    }
+    if data_temperature.is_none() {
+        eprintln!(
+            "note: {source}: no test temperature (a temperature column or --temperature): a run \
+             at another temperature cannot be warned about"
+        );
+    }
     write_output(args.output.as_deref(), text.as_bytes())
+}
+
+/// Whether any CSR flag was given.
+fn csr_given(c: &CsrArgs) -> bool {
+    c.test_piece.is_some()
+        || c.squeeze.is_some()
+        || c.cross_section.is_some()
+        || c.mean_diameter.is_some()
+        || c.diameter.is_some()
+        || c.height.is_some()
+        || c.initial_force.is_some()
+        || c.reference_modulus.is_some()
+}
+
+/// A flag's quantity in SI, or a bad-input error naming the flag.
+fn flag(value: Option<&str>, name: &str, dimension: Dimension) -> Result<Option<f64>, CliError> {
+    value
+        .map(|text| {
+            let v = parse_quantity(text, dimension)
+                .map_err(|e| CliError::Input(format!("--{name}: {e}")))?;
+            if v.is_finite() && v > 0.0 {
+                Ok(v)
+            } else {
+                Err(CliError::Input(format!(
+                    "--{name}: must be positive, got {text}"
+                )))
+            }
+        })
+        .transpose()
+}
+
+fn required(value: Option<f64>, name: &str, piece: &str) -> Result<f64, CliError> {
+    value.ok_or_else(|| CliError::Input(format!("--test-piece {piece} needs --{name}")))
+}
+
+/// The test piece of the flags, when one is named.
+fn test_piece(c: &CsrArgs) -> Result<Option<TestPiece>, CliError> {
+    let Some(kind) = c.test_piece else {
+        for (given, name) in [
+            (&c.squeeze, "squeeze"),
+            (&c.cross_section, "cross-section"),
+            (&c.mean_diameter, "mean-diameter"),
+            (&c.diameter, "diameter"),
+            (&c.height, "height"),
+        ] {
+            if given.is_some() {
+                return Err(CliError::Input(format!(
+                    "--{name} describes a test piece: give --test-piece ring or disc"
+                )));
+            }
+        }
+        return Ok(None);
+    };
+    let length = |v: &Option<String>, name: &str| flag(v.as_deref(), name, Dimension::LENGTH);
+    let squeeze = flag(c.squeeze.as_deref(), "squeeze", Dimension::DIMENSIONLESS)?;
+    let piece = match kind {
+        PieceArg::Ring => {
+            for (given, name) in [(&c.diameter, "diameter"), (&c.height, "height")] {
+                if given.is_some() {
+                    return Err(CliError::Input(format!(
+                        "--{name} is a disc's: a ring takes --cross-section and --mean-diameter"
+                    )));
+                }
+            }
+            TestPiece::Ring {
+                cross_section: required(
+                    length(&c.cross_section, "cross-section")?,
+                    "cross-section",
+                    "ring",
+                )?,
+                mean_diameter: required(
+                    length(&c.mean_diameter, "mean-diameter")?,
+                    "mean-diameter",
+                    "ring",
+                )?,
+                squeeze: required(squeeze, "squeeze", "ring")?,
+            }
+        }
+        PieceArg::Disc => {
+            for (given, name) in [
+                (&c.cross_section, "cross-section"),
+                (&c.mean_diameter, "mean-diameter"),
+            ] {
+                if given.is_some() {
+                    return Err(CliError::Input(format!(
+                        "--{name} is a ring's: a disc takes --diameter (and --height)"
+                    )));
+                }
+            }
+            TestPiece::Disc {
+                diameter: required(length(&c.diameter, "diameter")?, "diameter", "disc")?,
+                height: length(&c.height, "height")?,
+                squeeze: required(squeeze, "squeeze", "disc")?,
+            }
+        }
+    };
+    piece
+        .check()
+        .map_err(|e| CliError::Input(format!("--test-piece: {e}")))?;
+    Ok(Some(piece))
+}
+
+/// How the measured column becomes moduli (`None`: it is one).
+fn normalisation(
+    c: &CsrArgs,
+    measured: Measured,
+    isotherms: &[Isotherm],
+) -> Result<Option<Normalisation>, CliError> {
+    let piece = test_piece(c)?;
+    let reference = flag(
+        c.reference_modulus.as_deref(),
+        "reference-modulus",
+        Dimension::PRESSURE,
+    )?;
+    let initial = flag(
+        c.initial_force.as_deref(),
+        "initial-force",
+        Dimension::FORCE,
+    )?;
+    if piece.is_some() && reference.is_some() {
+        return Err(CliError::Input(
+            "give either a test piece or --reference-modulus, not both".into(),
+        ));
+    }
+    let first_value = isotherms
+        .first()
+        .and_then(|i| i.values.first())
+        .copied()
+        .unwrap_or(1.0);
+    match measured {
+        Measured::Modulus => {
+            if csr_given(c) {
+                return Err(CliError::Input(
+                    "--test-piece, --squeeze, --reference-modulus etc. convert CSR forces; this \
+                     file gives the relaxation modulus itself"
+                        .into(),
+                ));
+            }
+            Ok(None)
+        }
+        Measured::Force => {
+            if initial.is_some() {
+                return Err(CliError::Input(
+                    "--initial-force is for retained-force data; this file gives forces".into(),
+                ));
+            }
+            match (piece, reference) {
+                (Some(piece), None) => Ok(Some(Normalisation::Piece(piece))),
+                (None, Some(modulus)) => Ok(Some(Normalisation::Modulus {
+                    modulus,
+                    reference_value: first_value,
+                })),
+                _ => Err(CliError::Input(
+                    "forces need a test piece (--test-piece ring|disc with its dimensions and \
+                     --squeeze) or a stated --reference-modulus at the first reading"
+                        .into(),
+                )),
+            }
+        }
+        Measured::Retained => {
+            if isotherms.len() > 1 {
+                return Err(CliError::Input(
+                    "retained force at several temperatures cannot be put on one curve: each \
+                     series is relative to its own initial force; give the forces (N) with the \
+                     test piece"
+                        .into(),
+                ));
+            }
+            match (piece, reference, initial) {
+                (Some(piece), None, Some(initial_force)) => Ok(Some(Normalisation::RetainedOf {
+                    piece,
+                    initial_force,
+                })),
+                (None, Some(modulus), None) => Ok(Some(Normalisation::Modulus {
+                    modulus,
+                    reference_value: 1.0,
+                })),
+                (None, Some(_), Some(_)) => Err(CliError::Input(
+                    "--initial-force goes with a test piece, not with --reference-modulus".into(),
+                )),
+                (Some(_), None, None) => Err(CliError::Input(
+                    "retained-force data with a test piece need --initial-force (the force at a \
+                     retention of 1)"
+                        .into(),
+                )),
+                _ => Err(CliError::Input(
+                    "retained-force data need --reference-modulus (the modulus at a retention of \
+                     1) or a test piece with --initial-force"
+                        .into(),
+                )),
+            }
+        }
+    }
+}
+
+/// The normalisation in words, for the provenance.
+fn describe(n: &Normalisation) -> String {
+    let piece = |p: &TestPiece| match *p {
+        TestPiece::Ring {
+            cross_section,
+            mean_diameter,
+            squeeze,
+        } => format!(
+            "a ring test piece (cord {} mm, mean diameter {} mm, squeeze {} %; Lindley's O-ring \
+             force law, as in the life run)",
+            show(cross_section * 1e3),
+            show(mean_diameter * 1e3),
+            show(squeeze * 100.0)
+        ),
+        TestPiece::Disc {
+            diameter, squeeze, ..
+        } => format!(
+            "a disc test piece (diameter {} mm, squeeze {} %; neo-Hookean compression between \
+             lubricated plates)",
+            show(diameter * 1e3),
+            show(squeeze * 100.0)
+        ),
+    };
+    match n {
+        Normalisation::Piece(p) => piece(p),
+        Normalisation::RetainedOf {
+            piece: p,
+            initial_force,
+        } => format!(
+            "{} with an initial force of {} N",
+            piece(p),
+            show(*initial_force)
+        ),
+        Normalisation::Modulus { modulus, .. } => format!(
+            "a stated modulus of {} MPa at the reference reading",
+            show(modulus * 1e-6)
+        ),
+    }
+}
+
+/// How forces were turned into moduli, and the plate-friction caveat for discs.
+fn print_normalisation(source: &str, n: &Normalisation) {
+    eprintln!(
+        "fit-prony: {source}: moduli = {} × the measured value, from {}",
+        show(n.factor()),
+        describe(n)
+    );
+    let piece = match n {
+        Normalisation::Piece(p) | Normalisation::RetainedOf { piece: p, .. } => Some(p),
+        Normalisation::Modulus { .. } => None,
+    };
+    if let Some(bound) = piece.and_then(TestPiece::friction_bound) {
+        eprintln!(
+            "note: {source}: if the plates were not lubricated, friction raises the force of \
+             this disc by up to ×{bound:.2} (fully bonded, 1 + 2S²): the moduli would be \
+             overstated by up to that factor"
+        );
+    }
 }
 
 /// The material of a fit: a user material, Poisson's ratio assumed, no temperature shift,

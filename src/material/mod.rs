@@ -3,6 +3,7 @@
 
 pub mod ageing_fit;
 pub mod compound;
+pub mod csr;
 pub mod curve;
 pub mod fit;
 pub mod prony;

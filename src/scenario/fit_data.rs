@@ -48,17 +48,58 @@ impl FitKind {
 
     fn columns(self) -> &'static str {
         match self {
-            FitKind::Relaxation => "t,E_relax",
+            FitKind::Relaxation => "t,E_relax (or t,force or t,retained; optionally temperature)",
             FitKind::Dma => "f,E_stor,E_loss (or omega,E_stor,E_loss)",
         }
     }
 }
 
+/// What the relaxation column of a file measured.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Measured {
+    /// The relaxation modulus E(t) \[Pa\] (column `E_relax` | `E` | `E_rel`).
+    Modulus,
+    /// The counterforce of a compression-stress-relaxation test (ISO 3384) \[N\] (column
+    /// `force` | `F`).
+    Force,
+    /// The force retained, F(t)/F0, as a fraction (column `retained` | `retention` |
+    /// `F/F0`; unit `1` or `%`).
+    Retained,
+}
+
+impl Measured {
+    /// The column's quantity in words.
+    pub fn describe(self) -> &'static str {
+        match self {
+            Measured::Modulus => "relaxation modulus",
+            Measured::Force => "compression-stress-relaxation force",
+            Measured::Retained => "force retained",
+        }
+    }
+}
+
+/// The points of one temperature (or of the whole file when it has no temperature column):
+/// times (s) strictly increasing, values in SI (Pa, N or a fraction).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Isotherm {
+    /// The test temperature \[K\], when the file has a `temperature` column.
+    pub temperature: Option<f64>,
+    pub times: Vec<f64>,
+    pub values: Vec<f64>,
+    /// The file line of the first point (for messages).
+    pub first_line: usize,
+}
+
 /// The data of a fit file in SI units, rows in file order.
 #[derive(Debug, Clone, PartialEq)]
 pub enum FitData {
-    /// Times (s) and relaxation moduli (Pa).
-    Relaxation { times: Vec<f64>, moduli: Vec<f64> },
+    /// Relaxation tests: one isotherm per temperature, in order of first appearance.
+    Relaxation {
+        measured: Measured,
+        isotherms: Vec<Isotherm>,
+        /// Line and 1-based column of the temperature column's header, when there is one.
+        temperature_column: Option<(usize, usize)>,
+    },
     /// Angular frequencies ω (rad/s), storage and loss moduli (Pa).
     Dma {
         omegas: Vec<f64>,
@@ -71,11 +112,19 @@ impl FitData {
     /// Number of data rows.
     pub fn points(&self) -> usize {
         match self {
-            FitData::Relaxation { times, .. } => times.len(),
+            FitData::Relaxation { isotherms, .. } => isotherms.iter().map(|i| i.times.len()).sum(),
             FitData::Dma { omegas, .. } => omegas.len(),
         }
     }
 }
+
+/// The largest rise a force or retention series may show above its running minimum, as a
+/// fraction of its first value, before the file is refused as not a relaxation test. Stress
+/// relaxation at a fixed deformation never raises the counterforce; rig noise is a fraction
+/// of a per cent (ISO 3384 asks for a force-measuring accuracy of about 1 % — recalled), so
+/// a rise of 5 % of the initial force means a mix-up (columns swapped, a re-loaded sample, a
+/// temperature step within one series) rather than scatter.
+pub const MONOTONIC_TOLERANCE: f64 = 0.05;
 
 /// A fit file that cannot be used: the file, the 1-based line when the problem is on one
 /// line, and what is wrong. Displayed as `path:line: message`.
@@ -126,24 +175,30 @@ enum Quantity {
     /// Angular frequency ω \[rad/s\].
     Omega,
     Relaxation,
+    Force,
+    Retained,
     Storage,
     Loss,
+    Temperature,
 }
 
 impl Quantity {
-    /// The quantity of a header cell (case-insensitive, except that a capital `T` is
-    /// pyvisco's temperature column, not the time).
+    /// The quantity of a header cell (case-insensitive, except that a capital `T` is the
+    /// temperature, as in pyvisco's raw files, and a lower-case `t` the time).
     fn from_name(name: &str) -> Option<Self> {
         if name == "T" {
-            return None;
+            return Some(Quantity::Temperature);
         }
         Some(match name.to_lowercase().as_str() {
             "t" | "time" => Quantity::Time,
             "f" | "freq" | "frequency" => Quantity::Frequency,
             "omega" | "ω" => Quantity::Omega,
             "e_relax" | "e" | "e_rel" => Quantity::Relaxation,
+            "force" | "f_n" => Quantity::Force,
+            "retained" | "retention" | "f/f0" | "f_f0" => Quantity::Retained,
             "e_stor" | "storage" | "e'" | "e′" => Quantity::Storage,
             "e_loss" | "loss" | "e''" | "e″" => Quantity::Loss,
+            "temperature" | "temp" => Quantity::Temperature,
             _ => return None,
         })
     }
@@ -152,10 +207,20 @@ impl Quantity {
         matches!(self, Quantity::Time | Quantity::Frequency | Quantity::Omega)
     }
 
+    fn is_relaxation(self) -> bool {
+        matches!(
+            self,
+            Quantity::Relaxation | Quantity::Force | Quantity::Retained
+        )
+    }
+
     fn dimension(self) -> Dimension {
         match self {
             Quantity::Time => Dimension::TIME,
             Quantity::Frequency | Quantity::Omega => Dimension::FREQUENCY,
+            Quantity::Force => Dimension::FORCE,
+            Quantity::Retained => Dimension::DIMENSIONLESS,
+            Quantity::Temperature => Dimension::TEMPERATURE,
             Quantity::Relaxation | Quantity::Storage | Quantity::Loss => Dimension::PRESSURE,
         }
     }
@@ -165,12 +230,16 @@ impl Quantity {
             Quantity::Time => "a time (e.g. s)",
             Quantity::Frequency => "a frequency in Hz",
             Quantity::Omega => "an angular frequency (rad/s)",
+            Quantity::Force => "a force (e.g. N)",
+            Quantity::Retained => "1 (a fraction) or %",
+            Quantity::Temperature => "an absolute temperature unit (C, K or F)",
             _ => "a modulus (e.g. MPa)",
         }
     }
 }
 
-/// One column: its header text, quantity and factor to SI.
+/// One column: its header text, quantity and factor to SI (for the temperature, the unit
+/// string, converted by [`units::absolute_temperature`]).
 struct Column<'a> {
     name: &'a str,
     quantity: Quantity,
@@ -200,6 +269,14 @@ fn is_number(cell: &str) -> bool {
     cell.parse::<f64>().is_ok()
 }
 
+/// A series being read: its isotherm, the last axis value with its line and text, and the
+/// running minimum of the force or retention (for the monotonicity check).
+struct Series<'a> {
+    isotherm: Isotherm,
+    last: Option<(usize, f64, &'a str)>,
+    minimum: Option<(usize, f64)>,
+}
+
 fn parse(text: &str, kind: FitKind) -> Result<FitData, Located> {
     let mut rows = super::data_lines(text).peekable();
     let Some((header_line, header)) = rows.next() else {
@@ -209,19 +286,20 @@ fn parse(text: &str, kind: FitKind) -> Result<FitData, Located> {
         ));
     };
     let mut columns = header_columns(header_line, header, kind)?;
-    // pyvisco style: a second header row of units (no cell is a number).
+    // pyvisco style: a second header row of units. Its first cell is never a number (a
+    // retention's unit may be `1`, so the other cells are not a test).
     if let Some(&(units_line, units_row)) = rows.peek()
-        && !cells(units_row).iter().any(|c| is_number(c))
+        && cells(units_row).first().is_some_and(|c| !is_number(c))
     {
         rows.next();
         read_units(units_line, units_row, &mut columns)?;
     }
     let width = columns.len();
-    let mut values: Vec<Vec<f64>> = vec![Vec::new(); width];
+    let position = |wanted: fn(Quantity) -> bool| columns.iter().position(|c| wanted(c.quantity));
+    let temperature_index = position(|q| q == Quantity::Temperature);
+    let mut series: Vec<Series> = Vec::new();
+    let mut dma: Vec<Vec<f64>> = vec![Vec::new(); width];
     let mut last_line = header_line;
-    // The axis value of the previous row (line, SI value) and its text.
-    let mut previous_axis: Option<(usize, f64)> = None;
-    let mut previous_cell = "";
     for (line, row) in rows {
         last_line = line;
         let row_cells = cells(row);
@@ -236,83 +314,179 @@ fn parse(text: &str, kind: FitKind) -> Result<FitData, Located> {
                 ),
             ));
         }
-        for (k, (cell, column)) in row_cells.iter().zip(&columns).enumerate() {
-            let value = match cell.parse::<f64>() {
-                Ok(v) if v.is_finite() => v * column.factor,
-                Ok(v) => {
-                    return Err(at(
-                        line,
-                        format!("{}: must be finite, got {}", column.name, show(v)),
-                    ));
-                }
-                Err(_) => {
-                    return Err(at(line, format!("{}: not a number: {cell:?}", column.name)));
-                }
-            };
-            if value <= 0.0 {
-                return Err(at(
-                    line,
-                    format!("{}: must be positive, got {cell}", column.name),
-                ));
+        let mut values = Vec::with_capacity(width);
+        for (cell, column) in row_cells.iter().zip(&columns) {
+            values.push(cell_value(line, cell, column)?);
+        }
+        let temperature = temperature_index.map(|k| values[k]);
+        let k = match series
+            .iter()
+            .position(|s| s.isotherm.temperature == temperature)
+        {
+            Some(k) => k,
+            None => {
+                series.push(Series {
+                    isotherm: Isotherm {
+                        temperature,
+                        times: Vec::new(),
+                        values: Vec::new(),
+                        first_line: line,
+                    },
+                    last: None,
+                    minimum: None,
+                });
+                series.len() - 1
             }
-            let value = if column.quantity == Quantity::Frequency {
-                TAU * value
-            } else {
-                value
-            };
+        };
+        let current = &mut series[k];
+        let mut axis = f64::NAN;
+        for (j, column) in columns.iter().enumerate() {
+            let value = values[j];
             if column.quantity.is_axis() {
-                if let Some(&(previous_line, previous)) = previous_axis.as_ref()
+                if let Some((previous_line, previous, previous_cell)) = current.last
                     && value <= previous
                 {
+                    let within = if temperature.is_some() {
+                        " within one temperature"
+                    } else {
+                        " from row to row"
+                    };
                     return Err(at(
                         line,
                         format!(
-                            "{}: must increase strictly from row to row, got {cell} after {} (line {previous_line})",
-                            column.name, previous_cell
+                            "{}: must increase strictly{within}, got {} after {previous_cell} (line {previous_line})",
+                            column.name, row_cells[j]
                         ),
                     ));
                 }
-                previous_axis = Some((line, value));
-                previous_cell = cell;
+                current.last = Some((line, value, row_cells[j]));
+                axis = value;
             }
-            values[k].push(value);
+            if matches!(column.quantity, Quantity::Force | Quantity::Retained) {
+                let first = current.isotherm.values.first().copied().unwrap_or(value);
+                match current.minimum {
+                    Some((min_line, min)) if value > min + MONOTONIC_TOLERANCE * first => {
+                        return Err(at(
+                            line,
+                            format!(
+                                "{}: the force rises from {} (line {min_line}) to {}, by {:.1} % of \
+                                 its first value: stress relaxation at a fixed deformation never \
+                                 raises the force (check the column order, a re-loaded test piece \
+                                 or a temperature step; rises up to {:.0} % are taken as scatter)",
+                                column.name,
+                                show(min / column.factor),
+                                row_cells[j],
+                                100.0 * (value - min) / first,
+                                100.0 * MONOTONIC_TOLERANCE
+                            ),
+                        ));
+                    }
+                    Some((_, min)) if value >= min => {}
+                    _ => current.minimum = Some((line, value)),
+                }
+            }
+        }
+        match kind {
+            FitKind::Relaxation => {
+                let v = position(Quantity::is_relaxation).map_or(f64::NAN, |k| values[k]);
+                current.isotherm.times.push(axis);
+                current.isotherm.values.push(v);
+            }
+            FitKind::Dma => {
+                current.isotherm.times.push(axis);
+                for (column, value) in dma.iter_mut().zip(values) {
+                    column.push(value);
+                }
+            }
         }
     }
-    let points = values.first().map_or(0, Vec::len);
-    if points < 3 {
+    if series.is_empty() {
         return Err(at(
             last_line,
-            format!("too few points: {points} data rows, a fit needs at least 3"),
+            "too few points: 0 data rows, a fit needs at least 3".to_string(),
         ));
     }
-    // The header check guarantees every column of `kind`.
-    let index = |wanted: fn(Quantity) -> bool| columns.iter().position(|c| wanted(c.quantity));
-    let (axis, first, second) = match kind {
-        FitKind::Relaxation => (
-            index(Quantity::is_axis),
-            index(|q| q == Quantity::Relaxation),
-            None,
-        ),
-        FitKind::Dma => (
-            index(Quantity::is_axis),
-            index(|q| q == Quantity::Storage),
-            index(|q| q == Quantity::Loss),
-        ),
-    };
-    let mut take = |k: Option<usize>| {
-        k.map(|k| std::mem::take(&mut values[k]))
-            .unwrap_or_default()
-    };
+    for s in &series {
+        let points = s.isotherm.times.len();
+        if points < 3 {
+            let which = match s.isotherm.temperature {
+                Some(t) if series.len() > 1 => {
+                    format!(
+                        " at {} (first on line {})",
+                        show_kelvin(t),
+                        s.isotherm.first_line
+                    )
+                }
+                _ => String::new(),
+            };
+            return Err(at(
+                last_line,
+                format!("too few points: {points} data rows{which}, a fit needs at least 3"),
+            ));
+        }
+    }
     Ok(match kind {
-        FitKind::Relaxation => FitData::Relaxation {
-            times: take(axis),
-            moduli: take(first),
-        },
-        FitKind::Dma => FitData::Dma {
-            omegas: take(axis),
-            storage: take(first),
-            loss: take(second),
-        },
+        FitKind::Relaxation => {
+            let measured = match position(Quantity::is_relaxation).map(|k| columns[k].quantity) {
+                Some(Quantity::Force) => Measured::Force,
+                Some(Quantity::Retained) => Measured::Retained,
+                _ => Measured::Modulus,
+            };
+            FitData::Relaxation {
+                measured,
+                isotherms: series.into_iter().map(|s| s.isotherm).collect(),
+                temperature_column: temperature_index.map(|k| (header_line, k + 1)),
+            }
+        }
+        FitKind::Dma => {
+            let mut take = |wanted: fn(Quantity) -> bool| {
+                position(wanted)
+                    .map(|k| std::mem::take(&mut dma[k]))
+                    .unwrap_or_default()
+            };
+            FitData::Dma {
+                omegas: take(Quantity::is_axis),
+                storage: take(|q| q == Quantity::Storage),
+                loss: take(|q| q == Quantity::Loss),
+            }
+        }
+    })
+}
+
+/// A temperature for messages: `296.15 K (23 °C)`.
+pub fn show_kelvin(t: f64) -> String {
+    format!("{} K ({:.4} °C)", show(t), t - 273.15).replace(".0000 °C", " °C")
+}
+
+/// One cell in SI: finite, positive (temperatures: above absolute zero); frequencies as ω.
+fn cell_value(line: usize, cell: &str, column: &Column) -> Result<f64, Located> {
+    let number = match cell.parse::<f64>() {
+        Ok(v) if v.is_finite() => v,
+        Ok(v) => {
+            return Err(at(
+                line,
+                format!("{}: must be finite, got {}", column.name, show(v)),
+            ));
+        }
+        Err(_) => {
+            return Err(at(line, format!("{}: not a number: {cell:?}", column.name)));
+        }
+    };
+    if column.quantity == Quantity::Temperature {
+        return units::absolute_temperature(number, column.unit.unwrap_or("K"))
+            .map_err(|e| at(line, format!("{}: {e}", column.name)));
+    }
+    let value = number * column.factor;
+    if value <= 0.0 {
+        return Err(at(
+            line,
+            format!("{}: must be positive, got {cell}", column.name),
+        ));
+    }
+    Ok(if column.quantity == Quantity::Frequency {
+        TAU * value
+    } else {
+        value
     })
 }
 
@@ -332,9 +506,9 @@ fn header_columns(line: usize, header: &str, kind: FitKind) -> Result<Vec<Column
     for name in names {
         let Some(quantity) = Quantity::from_name(name) else {
             let hint = match name {
-                "T" | "Set" | "RefT" | "log_aT" => {
-                    " (temperatures and measurement sets belong to raw DMA data: fit-prony \
-                     needs a master curve, shifted to one reference temperature)"
+                "Set" | "RefT" | "log_aT" => {
+                    " (measurement sets and shift factors belong to pyvisco's raw files: give \
+                     t, E_relax and temperature, and fit-prony shifts the data itself)"
                 }
                 _ if name.to_lowercase().starts_with('g') => {
                     " (shear moduli are not fitted: sealsim's Prony series is the tensile \
@@ -346,7 +520,8 @@ fn header_columns(line: usize, header: &str, kind: FitKind) -> Result<Vec<Column
                 line,
                 format!(
                     "unknown column {name:?}{hint}; expected t|time, f|freq|frequency|omega, \
-                     E_relax|E|E_rel, E_stor|storage|E', E_loss|loss|E''"
+                     E_relax|E|E_rel, force|F_N, retained|retention|F/F0, E_stor|storage|E', \
+                     E_loss|loss|E'', temperature|T"
                 ),
             ));
         };
@@ -378,16 +553,36 @@ fn header_columns(line: usize, header: &str, kind: FitKind) -> Result<Vec<Column
         });
     }
     let has = |q: Quantity| columns.iter().any(|c| c.quantity == q);
+    let relaxation_columns = columns
+        .iter()
+        .filter(|c| c.quantity.is_relaxation())
+        .count();
+    if relaxation_columns > 1 {
+        return Err(at(
+            line,
+            "give one of E_relax, force and retained: the fit uses one relaxation column".into(),
+        ));
+    }
+    let temperature = usize::from(has(Quantity::Temperature));
     let found = match (
         has(Quantity::Time),
         has(Quantity::Frequency) || has(Quantity::Omega),
-        has(Quantity::Relaxation),
+        relaxation_columns == 1,
         has(Quantity::Storage) && has(Quantity::Loss),
     ) {
-        (true, false, true, false) if columns.len() == 2 => Some(FitKind::Relaxation),
-        (false, true, false, true) if columns.len() == 3 => Some(FitKind::Dma),
+        (true, false, true, false) if columns.len() == 2 + temperature => Some(FitKind::Relaxation),
+        (false, true, false, true) if columns.len() == 3 + temperature => Some(FitKind::Dma),
         _ => None,
     };
+    if found == Some(FitKind::Dma) && temperature == 1 {
+        return Err(at(
+            line,
+            "a temperature column in DMA data: fit-prony shifts relaxation data (t, E_relax, \
+             temperature); for DMA sweeps at several temperatures give the master curve, \
+             shifted to one reference temperature"
+                .into(),
+        ));
+    }
     let header_text = columns.iter().map(|c| c.name).collect::<Vec<_>>().join(",");
     match found {
         Some(found) if found == kind => Ok(columns),
@@ -438,6 +633,20 @@ fn read_units<'a>(line: usize, row: &'a str, columns: &mut [Column<'a>]) -> Resu
                     column.quantity.what()
                 ),
             ));
+        }
+        if column.quantity == Quantity::Temperature {
+            units::absolute_temperature(300.0, unit).map_err(|e| {
+                at(
+                    line,
+                    format!("{}: unit {unit:?}: {e} (expected C, K or F)", column.name),
+                )
+            })?;
+            column.unit = Some(unit);
+            continue;
+        }
+        if column.quantity == Quantity::Retained && unit == "1" {
+            column.unit = Some(unit);
+            continue;
         }
         // "rad/s" is an angular frequency in 1/s; only the omega column may carry it.
         let radians = unit.strip_prefix("rad/");
@@ -512,8 +721,14 @@ mod tests {
         assert_eq!(
             d,
             FitData::Relaxation {
-                times: vec![0.1, 1.0, 10.0],
-                moduli: vec![1e7, 5e6, 2e6]
+                measured: Measured::Modulus,
+                isotherms: vec![Isotherm {
+                    temperature: None,
+                    times: vec![0.1, 1.0, 10.0],
+                    values: vec![1e7, 5e6, 2e6],
+                    first_line: 3,
+                }],
+                temperature_column: None,
             }
         );
         let d = parse_ok(
@@ -588,7 +803,15 @@ mod tests {
         let e = error("t,G_relax\ns,MPa\n", r);
         assert!(e.contains("shear moduli"), "{e}");
         let e = error("f,E_stor,E_loss,T\nHz,MPa,MPa,C\n", FitKind::Dma);
-        assert!(e.contains("unknown column \"T\" (temperatures"), "{e}");
+        assert!(
+            e.starts_with("d.csv:1: a temperature column in DMA data"),
+            "{e}"
+        );
+        let e = error("t,E,Set\n", r);
+        assert!(
+            e.contains("unknown column \"Set\" (measurement sets"),
+            "{e}"
+        );
         let e = error("", r);
         assert!(e.starts_with("d.csv: no data"), "{e}");
     }
@@ -617,5 +840,83 @@ mod tests {
         assert!(e.contains("only one time or frequency"), "{e}");
         let e = error("f,E_stor,storage\n", d);
         assert!(e.contains("the same quantity"), "{e}");
+    }
+
+    #[test]
+    fn forces_retention_and_temperatures() {
+        let r = FitKind::Relaxation;
+        // several temperatures, in blocks or interleaved; times increase within each
+        let d = parse_ok(
+            "t,force,temperature\nmin,N,C\n1,100,23\n1,90,70\n2,99,23\n3,98,23\n2,85,70\n4,80,70\n",
+            r,
+        );
+        let FitData::Relaxation {
+            measured,
+            isotherms,
+            temperature_column,
+        } = d
+        else {
+            panic!()
+        };
+        assert_eq!(measured, Measured::Force);
+        assert_eq!(temperature_column, Some((1, 3)));
+        assert_eq!(isotherms.len(), 2);
+        assert_eq!(isotherms[0].temperature, Some(296.15));
+        assert_eq!(isotherms[0].times, [60.0, 120.0, 180.0]);
+        assert_eq!(isotherms[1].values, [90.0, 85.0, 80.0]);
+        assert_eq!(isotherms[1].first_line, 4);
+        // retention in per cent; scatter below 5 % of the first value is accepted
+        let d = parse_ok("t,retained\nh,%\n1,100\n2,96\n3,97\n4,95\n", r);
+        let FitData::Relaxation {
+            isotherms,
+            measured,
+            ..
+        } = d
+        else {
+            panic!()
+        };
+        assert_eq!(measured, Measured::Retained);
+        let expected = [1.0, 0.96, 0.97, 0.95];
+        assert!(
+            isotherms[0]
+                .values
+                .iter()
+                .zip(expected)
+                .all(|(v, e)| (v - e).abs() < 1e-15)
+        );
+        assert!(parse_ok("t,F/F0\nh,1\n1,1\n2,0.9\n3,0.8\n", r).points() == 3);
+    }
+
+    #[test]
+    fn relaxation_checks() {
+        let r = FitKind::Relaxation;
+        let e = error("t,retained\nh,1\n1,1\n2,0.8\n3,0.9\n", r);
+        assert!(
+            e.starts_with("d.csv:5: retained: the force rises from 0.8 (line 4) to 0.9, by 10.0 %"),
+            "{e}"
+        );
+        let e = error("t,force,T\ns,N,C\n1,10,23\n2,9,23\n2,8,23\n", r);
+        assert!(
+            e.starts_with("d.csv:5: t: must increase strictly within one temperature"),
+            "{e}"
+        );
+        let e = error(
+            "t,force,T\ns,N,C\n1,10,23\n2,9,23\n3,8,23\n1,9,70\n2,8,70\n",
+            r,
+        );
+        assert!(
+            e.starts_with(
+                "d.csv:7: too few points: 2 data rows at 343.15 K (70 °C) (first on line 6)"
+            ),
+            "{e}"
+        );
+        let e = error("t,force,T\ns,N,Pa\n", r);
+        assert!(e.starts_with("d.csv:2: T: unit \"Pa\""), "{e}");
+        let e = error("t,force,T\ns,N,C\n1,10,-300\n", r);
+        assert!(e.starts_with("d.csv:3: T:"), "{e}");
+        let e = error("t,force\ns,MPa\n1,1\n2,1\n3,1\n", r);
+        assert!(e.starts_with("d.csv:2: force: unit \"MPa\" is"), "{e}");
+        let e = error("t,force,retained\n", r);
+        assert!(e.contains("one relaxation column"), "{e}");
     }
 }

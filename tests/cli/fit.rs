@@ -312,7 +312,7 @@ fn kind_must_match_the_columns() {
     rejected(
         &dma_csv(true),
         "relaxation",
-        ":1: --kind relaxation expects columns t,E_relax, but the header has f,E_stor,E_loss, which is DMA data (use --kind dma)",
+        ":1: --kind relaxation expects columns t,E_relax (or t,force or t,retained; optionally temperature), but the header has f,E_stor,E_loss, which is DMA data (use --kind dma)",
     );
     rejected(
         &relaxation_csv(true),
@@ -329,9 +329,9 @@ fn missing_header_and_unknown_columns_are_located() {
         ":1: expected a header row",
     );
     rejected(
-        "t,E,T\n1,5e6,20\n",
+        "t,E,Set\n1,5e6,20\n",
         "relaxation",
-        ":1: unknown column \"T\"",
+        ":1: unknown column \"Set\"",
     );
 }
 
@@ -482,4 +482,179 @@ fn a_fitted_material_runs_by_path_and_warns_beyond_its_data() {
             "m.toml:3: material.file: no material file",
         ));
     assert!(!dir.path().join("m.json").exists());
+}
+
+// ---------------------------------------------------------------------------------------
+// Compression stress relaxation (ISO 3384): forces and retained forces
+// ---------------------------------------------------------------------------------------
+
+/// CSR data of the true series: `value(E)` per time over 1e-4 … 1e8 s, header and units given.
+fn csr_csv(header: &str, value: impl Fn(f64) -> f64) -> String {
+    let p = truth();
+    let mut text = format!("{header}\n");
+    for t in log_spaced(1e-4, 1e8, 60) {
+        let _ = writeln!(text, "{t:e},{:.12e}", value(p.relaxation(t)));
+    }
+    text
+}
+
+/// Lindley's squeeze function, written out here so that the test does not borrow the code's.
+fn lindley(eps: f64) -> f64 {
+    1.25 * eps.powf(1.5) + 50.0 * eps.powi(6)
+}
+
+#[test]
+fn ring_forces_give_the_modulus_by_the_life_runs_force_law() {
+    use std::f64::consts::PI;
+    let dir = TempDir::new().unwrap();
+    // an AS568-214 ring (cord 3.53 mm, ID 24.99 mm → mean diameter 28.52 mm) at 25 %
+    let k = PI * 28.52e-3 * 3.53e-3 * lindley(0.25);
+    let data = write(&dir, "csr.csv", &csr_csv("t,force\ns,N", |e| e * k));
+    let (stdout, stderr) = fit_ok(&[
+        data.to_str().unwrap(),
+        "--kind",
+        "relaxation",
+        "--test-piece",
+        "ring",
+        "--cross-section",
+        "3.53 mm",
+        "--mean-diameter",
+        "28.52mm",
+        "--squeeze",
+        "25%",
+        "--temperature",
+        "23C",
+    ]);
+    let p = series_of(&stdout);
+    let w = worst(&p, Prony::relaxation, &log_spaced(1e-4, 1e8, 500));
+    assert!(w < 1e-5, "worst {w:e}");
+    assert!(stderr.contains("ring test piece"), "{stderr}");
+    let doc: toml::Table = toml::from_str(&stdout).unwrap();
+    let m = doc["material"].as_table().unwrap();
+    assert!(
+        m["provenance"]["prony"]
+            .as_str()
+            .unwrap()
+            .contains("moduli from the compression-stress-relaxation force by a ring test piece"),
+        "{stdout}"
+    );
+    // the test temperature is the material's data temperature
+    let window = m["data_temperature"].as_array().unwrap();
+    assert_eq!(window[0].as_str(), window[1].as_str());
+    let kelvin = parse_quantity(window[0].as_str().unwrap(), Dimension::TEMPERATURE).unwrap();
+    assert!((kelvin - 296.15).abs() < 1e-9, "{window:?}");
+}
+
+#[test]
+fn disc_forces_and_retained_forces_give_the_modulus() {
+    use std::f64::consts::PI;
+    let dir = TempDir::new().unwrap();
+    // ISO 3384 type B disc, 13 mm across, at 25 %: F = E (πD²/4)(λ⁻² − λ)/3, λ = 0.75
+    let lambda: f64 = 0.75;
+    let k = 0.25 * PI * 0.013 * 0.013 * (lambda.powi(-2) - lambda) / 3.0;
+    let data = write(
+        &dir,
+        "disc.csv",
+        &csr_csv("t,F_N\nmin,kN", |e| e * k / 60e3),
+    );
+    // minutes and kilonewtons: the same numbers, other units (times 60, forces 1/1000)
+    let text = fs::read_to_string(&data).unwrap();
+    let mut scaled = String::from("t,F_N\nmin,kN\n");
+    for line in text.lines().skip(2) {
+        let (t, f) = line.split_once(',').unwrap();
+        let t: f64 = t.parse().unwrap();
+        let f: f64 = f.parse().unwrap();
+        let _ = writeln!(scaled, "{:e},{:.12e}", t / 60.0, f * 60.0);
+    }
+    fs::write(&data, scaled).unwrap();
+    let (stdout, stderr) = fit_ok(&[
+        data.to_str().unwrap(),
+        "--kind",
+        "relaxation",
+        "--test-piece",
+        "disc",
+        "--diameter",
+        "13mm",
+        "--height",
+        "6.3mm",
+        "--squeeze",
+        "0.25",
+    ]);
+    let w = worst(
+        &series_of(&stdout),
+        Prony::relaxation,
+        &log_spaced(1e-4, 1e8, 500),
+    );
+    assert!(w < 1e-5, "worst {w:e}");
+    assert!(stderr.contains("up to ×1.53"), "{stderr}");
+
+    // retained force in per cent with the modulus at the first reading stated
+    let p = truth();
+    let e0 = p.relaxation(1e-4);
+    let data = write(
+        &dir,
+        "retained.csv",
+        &csr_csv("t,retained\ns,%", |e| 100.0 * e / e0),
+    );
+    let (stdout, _) = fit_ok(&[
+        data.to_str().unwrap(),
+        "--kind",
+        "relaxation",
+        "--reference-modulus",
+        &format!("{:.12e} Pa", e0),
+    ]);
+    let w = worst(
+        &series_of(&stdout),
+        Prony::relaxation,
+        &log_spaced(1e-4, 1e8, 500),
+    );
+    assert!(w < 1e-5, "worst {w:e}");
+}
+
+#[test]
+fn csr_bad_input_is_located_or_named() {
+    // a retention that rises by 10 % of its first value: not a relaxation test
+    rejected(
+        "t,retained\nh,1\n0.5,1\n1,0.9\n2,0.85\n4,0.95\n8,0.8\n",
+        "relaxation",
+        ":6: retained: the force rises from 0.85 (line 5) to 0.95",
+    );
+    let dir = TempDir::new().unwrap();
+    let data = write(&dir, "f.csv", "t,force\nh,N\n1,100\n2,90\n3,85\n");
+    let out = dir.path().join("out.toml");
+    for (flags, needle) in [
+        (vec![], "forces need a test piece"),
+        (
+            vec!["--test-piece", "ring", "--squeeze", "25%"],
+            "--test-piece ring needs --cross-section",
+        ),
+        (
+            vec![
+                "--test-piece",
+                "disc",
+                "--diameter",
+                "13mm",
+                "--squeeze",
+                "90%",
+            ],
+            "squeeze must be between 0 and 60 %",
+        ),
+        (vec!["--squeeze", "25%"], "--squeeze describes a test piece"),
+        (
+            vec!["--reference-modulus", "6MPa", "--initial-force", "100N"],
+            "--initial-force is for retained-force data",
+        ),
+        (vec!["--reference-modulus", "6 m"], "--reference-modulus:"),
+    ] {
+        cargo_bin_cmd!("sealsim")
+            .arg("fit-prony")
+            .arg(&data)
+            .args(["--kind", "relaxation", "-o"])
+            .arg(&out)
+            .args(&flags)
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains(needle));
+        assert!(!out.exists(), "{flags:?}: nothing written");
+    }
 }
