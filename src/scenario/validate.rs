@@ -345,6 +345,31 @@ impl Source<'_> {
                 .to_string(),
             );
         }
+        if material.shift == crate::material::Shift::None
+            && material.data_temperature.is_none()
+            && !material.prony.terms().is_empty()
+        {
+            // the series was measured at some temperature; without a shift or that temperature
+            // the run cannot tell how far from it it goes, so say so once
+            let (lo, hi) = life.environment.range();
+            warnings.push(
+                self.error(
+                    raw.material.span(),
+                    "material",
+                    format!(
+                        "{} has no temperature shift and no data temperature: its relaxation is \
+                         taken as measured, at every temperature of this run ({}–{} K); give \
+                         `data_temperature` (fit-prony --temperature) so that a run away from it \
+                         is warned about, or a [material.shift] (a master curve from data at \
+                         several temperatures) [docs/model.md §9.13]",
+                        material.name,
+                        show(lo),
+                        show(hi)
+                    ),
+                )
+                .to_string(),
+            );
+        }
         let static_seal = static_seal(&life);
         // the static problem sees the asperity modulus of the installed state, as the first row
         // of a life run does
