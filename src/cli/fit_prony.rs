@@ -25,6 +25,9 @@ const POOR_FIT: f64 = 0.05;
 #[derive(Debug, Clone, Args)]
 #[command(after_help = "Data files (CSV, '#' comments allowed):\n  \
     relaxation: t,E_relax  (also time; E, E_rel)\n  \
+    CSR (ISO 3384): t,force (N; also F_N) or t,retained (1 or %; also retention, F/F0), with \
+    --test-piece and --squeeze (forces; retained with --initial-force) or --reference-modulus\n  \
+    an optional temperature column (also T; unit C, K or F) gives the test temperature\n  \
     dma:        f,E_stor,E_loss  (f in Hz, or omega in rad/s; also storage/E', loss/E'')\n\
     Either a second header row of units (pyvisco style: \"s,MPa\" or \"Hz,MPa,MPa\"; E_stor and \
     E_loss in the same unit) or plain SI values (s, Pa, Hz).\n\
