@@ -19,13 +19,56 @@
 //!   of order one.
 //! * Terms that come out empty (exactly 0 from NNLS, or below 1e-12 of E0) are dropped.
 //!
+//! Regularisation (default [`Regularisation::Gcv`]): NNLS passes noise straight through to
+//! the moduli, so the default fit minimises, over x ≥ 0,
+//!
+//! `Σ_k (model_k/datum_k − 1)² + λ² Σ_i (x̃_{i−1} − 2 x̃_i + x̃_{i+1})²`, `x̃_i = E_i/E_ref(τ_i)`,
+//!
+//! a Tikhonov penalty on the second difference (in log τ: the grid is uniform there) of the
+//! *relative* spectrum. `E_ref(τ)` is the unregularised (pilot) fit's E(t) at t = τ, clamped to
+//! the data window: a smooth, positive local modulus level, so that λ is dimensionless and the
+//! penalty does not let the glassy GPa terms outweigh the rubbery MPa ones. E∞ is not
+//! penalised (it is one well-determined number, not part of the spectrum). The problem is
+//! NNLS on the stacked system `[A; λ L'] x = [1; 0]` (A compressed to its QR factor R first,
+//! which leaves the minimiser unchanged).
+//!
+//! λ is chosen by generalised cross-validation (G.H. Golub, M. Heath & G. Wahba,
+//! Technometrics 21 (1979) 215): the minimiser of `V(λ) = n RSS(λ)/(n − tr H(λ))²`, with
+//! `H = A_F (A_Fᵀ A_F + λ² L_Fᵀ L_F)⁻¹ A_Fᵀ` the influence matrix on the free (non-zero)
+//! unknowns F and n the number of fitted values; scanned over λ = 0 and 1e-6 … 1e3 (2 per
+//! decade), then refined by golden section. Why GCV: it needs no noise level (unknown for
+//! real data); it is invariant to rotations of the data, and asymptotically minimises the
+//! expected predictive error (Golub, Heath & Wahba; Craven & Wahba 1979, recalled). The
+//! L-curve is a heuristic without such a property; AIC/BIC need a parameter count, which
+//! the penalty blurs (edf below). `tr H = edf` is the effective number of parameters
+//! ([`Fit::effective_parameters`]). [`Regularisation::None`] is plain NNLS,
+//! [`Regularisation::Fixed`] a given λ.
+//!
+//! Uncertainty band: `σ̂² = RSS/(n − edf)`, and the Bayesian posterior covariance of the free
+//! unknowns `C = σ̂² (A_Fᵀ A_F + λ² L_Fᵀ L_F)⁻¹` (G. Wahba, J. R. Stat. Soc. B 45 (1983) 133,
+//! "Bayesian confidence intervals for the cross-validated smoothing spline": unlike the
+//! sandwich form it accounts, on average, for the smoothing bias). The pointwise relative
+//! standard deviation of E(t) is `√(gᵀ C g)/E(t)` with g the basis row at t. The band is
+//! simultaneous over the window: a Scheffé-type multiplier `√(χ²_{edf, 0.95})` (the bound
+//! `sup_g (gᵀ δ)²/(gᵀ C g) = δᵀ C⁻¹ δ` of a Gaussian δ, with the edf-dimensional space the
+//! data resolve in place of the number of free unknowns — a heuristic, checked by the
+//! coverage measured below). The free set is taken as fixed (the non-negativity
+//! constraints are not part of the band).
+//!
 //! Accuracy (measured in tests/model/fit.rs, data sampled from known series): when the true τ lie
-//! on the grid the fit is exact to rounding. Otherwise a sum of decaying exponentials with
-//! non-negative weights cannot shift a relaxation time between grid points, and the fit
-//! ripples: on a quasi-continuous 12-decade spectrum, 4 % in E(t) with one term per decade,
-//! 4e-4 with three. With noisy data an unregularised least-squares fit passes on about
-//! √(unknowns/points) of the noise (1 % noise, 100 points: ≈ 0.3 % rms error, ≈ 1 % at the
-//! window's ends).
+//! on the grid the fit is exact to rounding (GCV picks λ = 0 on such clean data). Otherwise a
+//! sum of decaying exponentials with non-negative weights cannot shift a relaxation time
+//! between grid points, and the fit ripples: on a quasi-continuous 12-decade spectrum, 4 % in
+//! E(t) with one term per decade, 4e-4 with three. With noisy data the worst error sits at the
+//! window's ends. Measured on 120 points over 14 decades with 1 % noise, 50 seeds, worst
+//! error of E(t) over the window: a rubber-like quasi-continuous spectrum, GCV median 0.85 %,
+//! max 1.65 % (plain NNLS 1.32 %, 2.50 %), edf ≈ 10–20 (median 11.6); a one-term-per-decade
+//! spectrum, GCV ≈ plain NNLS (median 1.2 %, max 2.5 %: little to smooth in isolated lines).
+//! A worst error of 0.5 % is not reached: a fit with edf effective parameters passes on about
+//! √(edf/n) of the noise (0.3 % rms for 11 of 120), more at the ends. Clean data: 7e-6
+//! (rubber-like) and 2e-14 (one per decade), λ ≈ 3e-4 and 0. The simultaneous 95 % band
+//! held the truth at all 2000 check points in 50/50 (rubber-like) and 49/50 (one per decade)
+//! of the noisy repeats.
 //!
 //! Fits of this family on one or two τ per decade are standard practice (S.W. Park &
 //! R.A. Schapery, Int. J. Solids Struct. 36 (1999) 1653; N.W. Tschoegl, *The
@@ -420,9 +463,9 @@ fn tau_grid(lo: f64, hi: f64, per_decade: u32) -> Vec<f64> {
 
 /// Lower and upper end of the GCV scan of λ, and its points per decade (module docs).
 const GCV_RANGE: (f64, f64) = (1e-6, 1e3);
-const GCV_PER_DECADE: usize = 3;
+const GCV_PER_DECADE: usize = 2;
 /// Golden-section steps refining the scan's best λ between its neighbours (0.618^8 of
-/// two thirds of a decade: well below the flatness of V(λ) near its minimum).
+/// one decade: well below the flatness of V(λ) near its minimum).
 const GCV_REFINE: usize = 8;
 
 /// The result of [`solve`].
@@ -674,12 +717,13 @@ fn band(chosen: &Candidate, taus: &[f64], scale: f64, n: usize) -> Band {
         scale,
         covariance,
         sigma: sigma2.sqrt(),
-        multiplier: multiplier(chosen.edf, dof),
+        multiplier: multiplier(chosen.edf),
     }
 }
 
-/// The simultaneous multiplier (module docs): `√(χ²_{edf}` quantile at [`BAND_LEVEL`]).
-fn multiplier(edf: f64, _dof: f64) -> f64 {
+/// The simultaneous multiplier (module docs): `√` of the χ² quantile at [`BAND_LEVEL`] with
+/// `edf` degrees of freedom (at least 1).
+fn multiplier(edf: f64) -> f64 {
     ChiSquared::new(edf.max(1.0))
         .map(|d| d.inverse_cdf(BAND_LEVEL).sqrt())
         .unwrap_or(f64::INFINITY)
