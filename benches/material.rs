@@ -54,6 +54,7 @@ fn material(c: &mut Criterion) {
     for per_decade in [1, 3] {
         let settings = FitSettings {
             terms_per_decade: per_decade,
+            ..FitSettings::default()
         };
         c.bench_function(
             &format!("Prony fit, 100 relaxation points, {per_decade}/decade"),

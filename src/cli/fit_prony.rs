@@ -4,7 +4,7 @@
 
 use super::{CliError, write_output};
 use crate::material::csr::{Normalisation, TestPiece};
-use crate::material::fit::{Fit, FitError, FitSettings, fit_dma, fit_relaxation};
+use crate::material::fit::{Fit, FitError, FitSettings, Regularisation, fit_dma, fit_relaxation};
 use crate::material::{Material, Shift, Status};
 use crate::report::material_toml::material_toml;
 use crate::scenario::fit_data::{FitData, FitKind, Isotherm, Measured, read_fit_data, show_kelvin};
@@ -48,6 +48,11 @@ pub struct FitPronyArgs {
     /// spectrum below 0.04 %).
     #[arg(long, value_name = "N", default_value_t = crate::material::fit::DEFAULT_TERMS_PER_DECADE, value_parser = clap::value_parser!(u32).range(1..=4))]
     pub terms_per_decade: u32,
+
+    /// Smoothing of the fitted spectrum: `gcv`, a second-difference penalty on the relative
+    /// spectrum with its weight chosen by generalised cross-validation; `none`, plain NNLS.
+    #[arg(long, value_enum, default_value_t = RegularisationArg::Gcv)]
+    pub regularisation: RegularisationArg,
 
     /// Write the material TOML to FILE (atomically) instead of standard output.
     #[arg(short, long, value_name = "FILE")]
@@ -125,6 +130,24 @@ pub enum KindArg {
     Dma,
 }
 
+/// `--regularisation` values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum RegularisationArg {
+    /// Smoothing weight by generalised cross-validation.
+    Gcv,
+    /// Plain non-negative least squares.
+    None,
+}
+
+impl From<RegularisationArg> for Regularisation {
+    fn from(r: RegularisationArg) -> Self {
+        match r {
+            RegularisationArg::Gcv => Regularisation::Gcv,
+            RegularisationArg::None => Regularisation::None,
+        }
+    }
+}
+
 impl From<KindArg> for FitKind {
     fn from(k: KindArg) -> Self {
         match k {
@@ -140,6 +163,7 @@ pub fn run(args: FitPronyArgs) -> Result<(), CliError> {
     let data = read_fit_data(&args.data, kind).map_err(|e| CliError::Input(e.to_string()))?;
     let settings = FitSettings {
         terms_per_decade: args.terms_per_decade,
+        regularisation: args.regularisation.into(),
     };
     let source = args.data.display().to_string();
     let stated_temperature = args
@@ -499,7 +523,7 @@ fn print_normalisation(source: &str, n: &Normalisation) {
 pub fn fitted_material(name: String, fit: &Fit, source: &str, terms_per_decade: u32) -> Material {
     let fitted = format!(
         "fitted by sealsim fit-prony (NNLS, {terms_per_decade} {} per decade) to {source}: \
-         {} points, rms relative residual {:.2e}, max {:.2e}",
+         {} points, rms relative residual {:.2e}, max {:.2e}; {}",
         if terms_per_decade == 1 {
             "term"
         } else {
@@ -507,7 +531,8 @@ pub fn fitted_material(name: String, fit: &Fit, source: &str, terms_per_decade: 
         },
         fit.points,
         fit.rms_relative_residual,
-        fit.max_relative_residual
+        fit.max_relative_residual,
+        regularisation_note(fit)
     );
     let mut provenance = vec![(
         "poisson_ratio".to_string(),
@@ -548,16 +573,37 @@ fn header(source: &str, kind: FitKind, fit: &Fit) -> String {
     )
 }
 
-/// One line on stderr: what was fitted and how well; a warning when the fit is poor.
+/// The regularisation of a fit in words: method, λ and the effective number of parameters.
+fn regularisation_note(fit: &Fit) -> String {
+    let method = match fit.regularisation {
+        Regularisation::Gcv => "smoothing of the relative spectrum, weight by GCV",
+        Regularisation::None => "no smoothing",
+        Regularisation::Fixed(_) => "smoothing of the relative spectrum, weight given",
+    };
+    format!(
+        "{method}: lambda {:.3e}, {:.1} effective parameters",
+        fit.smoothing, fit.effective_parameters
+    )
+}
+
+/// Lines on stderr: what was fitted and how well, with the regularisation and the widest
+/// half-width of the simultaneous 95 % band over the data window; a warning when the fit is
+/// poor.
 fn print_summary(source: &str, fit: &Fit) {
+    let (widest, at) = fit.widest_relative_band();
     eprintln!(
         "fit-prony: {source}: {} points, {} of {} grid terms kept + E∞; \
-         rms relative residual {:.2e}, max {:.2e}",
+         rms relative residual {:.2e}, max {:.2e}\n\
+         fit-prony: {}; simultaneous 95 % band of E(t) over the data window: \
+         ±{:.2} % at most (at t = {} s)",
         fit.points,
         fit.prony.terms().len(),
         fit.grid_terms,
         fit.rms_relative_residual,
-        fit.max_relative_residual
+        fit.max_relative_residual,
+        regularisation_note(fit),
+        100.0 * widest,
+        crate::units::show(at)
     );
     if fit.rms_relative_residual > POOR_FIT {
         eprintln!(
@@ -602,6 +648,7 @@ mod tests {
             &e,
             &FitSettings {
                 terms_per_decade: 1,
+                ..FitSettings::default()
             },
         )
         .unwrap();

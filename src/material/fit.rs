@@ -19,13 +19,56 @@
 //!   of order one.
 //! * Terms that come out empty (exactly 0 from NNLS, or below 1e-12 of E0) are dropped.
 //!
+//! Regularisation (default [`Regularisation::Gcv`]): NNLS passes noise straight through to
+//! the moduli, so the default fit minimises, over x ≥ 0,
+//!
+//! `Σ_k (model_k/datum_k − 1)² + λ² Σ_i (x̃_{i−1} − 2 x̃_i + x̃_{i+1})²`, `x̃_i = E_i/E_ref(τ_i)`,
+//!
+//! a Tikhonov penalty on the second difference (in log τ: the grid is uniform there) of the
+//! *relative* spectrum. `E_ref(τ)` is the unregularised (pilot) fit's E(t) at t = τ, clamped to
+//! the data window: a smooth, positive local modulus level, so that λ is dimensionless and the
+//! penalty does not let the glassy GPa terms outweigh the rubbery MPa ones. E∞ is not
+//! penalised (it is one well-determined number, not part of the spectrum). The problem is
+//! NNLS on the stacked system `[A; λ L'] x = [1; 0]` (A compressed to its QR factor R first,
+//! which leaves the minimiser unchanged).
+//!
+//! λ is chosen by generalised cross-validation (G.H. Golub, M. Heath & G. Wahba,
+//! Technometrics 21 (1979) 215): the minimiser of `V(λ) = n RSS(λ)/(n − tr H(λ))²`, with
+//! `H = A_F (A_Fᵀ A_F + λ² L_Fᵀ L_F)⁻¹ A_Fᵀ` the influence matrix on the free (non-zero)
+//! unknowns F and n the number of fitted values; scanned over λ = 0 and 1e-6 … 1e3 (2 per
+//! decade), then refined by golden section. Why GCV: it needs no noise level (unknown for
+//! real data); it is invariant to rotations of the data, and asymptotically minimises the
+//! expected predictive error (Golub, Heath & Wahba; Craven & Wahba 1979, recalled). The
+//! L-curve is a heuristic without such a property; AIC/BIC need a parameter count, which
+//! the penalty blurs (edf below). `tr H = edf` is the effective number of parameters
+//! ([`Fit::effective_parameters`]). [`Regularisation::None`] is plain NNLS,
+//! [`Regularisation::Fixed`] a given λ.
+//!
+//! Uncertainty band: `σ̂² = RSS/(n − edf)`, and the Bayesian posterior covariance of the free
+//! unknowns `C = σ̂² (A_Fᵀ A_F + λ² L_Fᵀ L_F)⁻¹` (G. Wahba, J. R. Stat. Soc. B 45 (1983) 133,
+//! "Bayesian confidence intervals for the cross-validated smoothing spline": unlike the
+//! sandwich form it accounts, on average, for the smoothing bias). The pointwise relative
+//! standard deviation of E(t) is `√(gᵀ C g)/E(t)` with g the basis row at t. The band is
+//! simultaneous over the window: a Scheffé-type multiplier `√(χ²_{edf, 0.95})` (the bound
+//! `sup_g (gᵀ δ)²/(gᵀ C g) = δᵀ C⁻¹ δ` of a Gaussian δ, with the edf-dimensional space the
+//! data resolve in place of the number of free unknowns — a heuristic, checked by the
+//! coverage measured below). The free set is taken as fixed (the non-negativity
+//! constraints are not part of the band).
+//!
 //! Accuracy (measured in tests/model/fit.rs, data sampled from known series): when the true τ lie
-//! on the grid the fit is exact to rounding. Otherwise a sum of decaying exponentials with
-//! non-negative weights cannot shift a relaxation time between grid points, and the fit
-//! ripples: on a quasi-continuous 12-decade spectrum, 4 % in E(t) with one term per decade,
-//! 4e-4 with three. With noisy data an unregularised least-squares fit passes on about
-//! √(unknowns/points) of the noise (1 % noise, 100 points: ≈ 0.3 % rms error, ≈ 1 % at the
-//! window's ends).
+//! on the grid the fit is exact to rounding (GCV picks λ = 0 on such clean data). Otherwise a
+//! sum of decaying exponentials with non-negative weights cannot shift a relaxation time
+//! between grid points, and the fit ripples: on a quasi-continuous 12-decade spectrum, 4 % in
+//! E(t) with one term per decade, 4e-4 with three. With noisy data the worst error sits at the
+//! window's ends. Measured on 120 points over 14 decades with 1 % noise, 50 seeds, worst
+//! error of E(t) over the window: a rubber-like quasi-continuous spectrum, GCV median 0.85 %,
+//! max 1.65 % (plain NNLS 1.32 %, 2.50 %), edf ≈ 10–20 (median 11.6); a one-term-per-decade
+//! spectrum, GCV ≈ plain NNLS (median 1.2 %, max 2.5 %: little to smooth in isolated lines).
+//! A worst error of 0.5 % is not reached: a fit with edf effective parameters passes on about
+//! √(edf/n) of the noise (0.3 % rms for 11 of 120), more at the ends. Clean data: 7e-6
+//! (rubber-like) and 2e-14 (one per decade), λ ≈ 3e-4 and 0. The simultaneous 95 % band
+//! held the truth at all 2000 check points in 50/50 (rubber-like) and 49/50 (one per decade)
+//! of the noisy repeats.
 //!
 //! Fits of this family on one or two τ per decade are standard practice (S.W. Park &
 //! R.A. Schapery, Int. J. Solids Struct. 36 (1999) 1653; N.W. Tschoegl, *The
@@ -36,6 +79,7 @@ use crate::math::log_spaced;
 use crate::math::nnls::{NnlsError, nnls};
 use crate::units::show;
 use nalgebra::{DMatrix, DVector};
+use statrs::distribution::{ChiSquared, ContinuousCDF};
 use std::fmt;
 
 /// Terms dropped as empty: below this fraction of E0 = E∞ + Σ E_i.
@@ -47,13 +91,27 @@ pub const TAU_DIGITS: usize = 4;
 /// Allowed range of [`FitSettings::terms_per_decade`].
 pub const TERMS_PER_DECADE: std::ops::RangeInclusive<u32> = 1..=4;
 
+/// How the spectrum is regularised (module docs, "Regularisation").
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum Regularisation {
+    /// Smoothing weight λ chosen by generalised cross-validation (the default).
+    #[default]
+    Gcv,
+    /// Plain NNLS, λ = 0.
+    None,
+    /// A given λ ≥ 0 (dimensionless; module docs).
+    Fixed(f64),
+}
+
 /// Settings of a Prony fit.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FitSettings {
     /// Relaxation times per decade of the grid, 1–4 (default 3: with one per decade a
     /// spectrum whose τ fall between grid points leaves a ≈4 % ripple in E(t); three bring it
     /// below 0.04 %, measured in tests/model/fit.rs).
     pub terms_per_decade: u32,
+    /// Smoothing of the relative spectrum (default: λ by GCV).
+    pub regularisation: Regularisation,
 }
 
 /// Default of [`FitSettings::terms_per_decade`].
@@ -63,6 +121,7 @@ impl Default for FitSettings {
     fn default() -> Self {
         FitSettings {
             terms_per_decade: DEFAULT_TERMS_PER_DECADE,
+            regularisation: Regularisation::Gcv,
         }
     }
 }
@@ -84,6 +143,77 @@ pub struct Fit {
     /// The time window of the data \[s\] (for DMA data, 1/ω_max to 1/ω_min): where the series
     /// is backed by data.
     pub window: (f64, f64),
+    /// The regularisation asked for.
+    pub regularisation: Regularisation,
+    /// The smoothing weight λ used (dimensionless, module docs); 0 when unregularised, or when
+    /// GCV found no smoothing better than none.
+    pub smoothing: f64,
+    /// Effective number of parameters `edf = tr H(λ)`, H the influence matrix on the free
+    /// (non-zero) unknowns (module docs); the number of free unknowns when λ = 0.
+    pub effective_parameters: f64,
+    /// The uncertainty band of E(t) over the window ([`Fit::relative_band`]).
+    pub band: Band,
+}
+
+/// What a simultaneous uncertainty band of E(t) needs (module docs, "Uncertainty band"):
+/// the grid, the posterior covariance of the scaled unknowns and the band's multiplier.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Band {
+    /// The τ grid \[s\], all terms (also those that came out empty).
+    pub taus: Vec<f64>,
+    /// Moduli are `scale · x` \[Pa\]: the largest datum.
+    pub scale: f64,
+    /// Posterior covariance of `x = (E∞, E_1, …, E_m)/scale`,
+    /// `σ̂² (A_Fᵀ A_F + λ² L_Fᵀ L_F)⁻¹` on the free unknowns, 0 on the others
+    /// (dimensionless; (m+1)×(m+1)).
+    pub covariance: DMatrix<f64>,
+    /// Estimated standard deviation of the relative residuals, `σ̂ = √(RSS/(n − edf))`.
+    pub sigma: f64,
+    /// The simultaneous multiplier `√(χ²_{edf, 0.95})` (module docs).
+    pub multiplier: f64,
+}
+
+/// Confidence level of [`Band`].
+pub const BAND_LEVEL: f64 = 0.95;
+
+impl Fit {
+    /// Pointwise relative standard deviation of the fitted E(t), `√(gᵀ C g) / (E(t)/scale)`
+    /// with `g = (1, e^{−t/τ_1}, …, e^{−t/τ_m})` (module docs).
+    pub fn relative_standard_deviation(&self, t: f64) -> f64 {
+        let b = &self.band;
+        let g: Vec<f64> = std::iter::once(1.0)
+            .chain(b.taus.iter().map(|&tau| (-t / tau).exp()))
+            .collect();
+        let n = g.len().min(b.covariance.nrows());
+        let mut variance = 0.0;
+        for i in 0..n {
+            let row: f64 = (0..n).map(|j| b.covariance[(i, j)] * g[j]).sum();
+            variance += g[i] * row;
+        }
+        variance.max(0.0).sqrt() / (self.prony.relaxation(t) / b.scale)
+    }
+
+    /// Relative half-width of the simultaneous 95 % band of E(t): the band is
+    /// `E(t) (1 ± relative_band(t))`; meant for t inside [`Fit::window`].
+    pub fn relative_band(&self, t: f64) -> f64 {
+        self.band.multiplier * self.relative_standard_deviation(t)
+    }
+
+    /// The simultaneous 95 % band of E(t) \[Pa\], `(lower, upper)`; the lower end is
+    /// clamped at 0.
+    pub fn band(&self, t: f64) -> (f64, f64) {
+        let (e, h) = (self.prony.relaxation(t), self.relative_band(t));
+        ((e * (1.0 - h)).max(0.0), e * (1.0 + h))
+    }
+
+    /// The widest relative half-width of the band over the window (200 log-spaced times)
+    /// and where it is \[s\].
+    pub fn widest_relative_band(&self) -> (f64, f64) {
+        log_spaced(self.window.0, self.window.1.max(self.window.0), 200)
+            .into_iter()
+            .map(|t| (self.relative_band(t), t))
+            .fold((0.0, self.window.0), |a, b| if b.0 > a.0 { b } else { a })
+    }
 }
 
 /// Why data could not be fitted. Indices are 1-based positions in the data arrays.
@@ -91,6 +221,8 @@ pub struct Fit {
 pub enum FitError {
     /// `terms_per_decade` outside 1–4.
     Settings { terms_per_decade: u32 },
+    /// A fixed smoothing weight λ that is negative or not finite.
+    Smoothing { value: f64 },
     /// Arrays of one data set differ in length.
     LengthMismatch {
         what: &'static str,
@@ -109,7 +241,16 @@ pub enum FitError {
         index: usize,
         value: f64,
     },
-    /// Times or frequencies do not increase strictly.
+    /// Times decrease (ties are allowed in relaxation times).
+    Decreasing {
+        what: &'static str,
+        index: usize,
+        previous: f64,
+        value: f64,
+    },
+    /// Every time is the same.
+    NoSpread { what: &'static str, value: f64 },
+    /// Frequencies do not increase strictly.
     NotIncreasing {
         what: &'static str,
         index: usize,
@@ -160,6 +301,27 @@ impl fmt::Display for FitError {
                 "{what} of point {index} must be positive and finite, got {}",
                 show(*value)
             ),
+            FitError::Smoothing { value } => write!(
+                f,
+                "the smoothing weight must be finite and not negative, got {}",
+                show(*value)
+            ),
+            FitError::Decreasing {
+                what,
+                index,
+                previous,
+                value,
+            } => write!(
+                f,
+                "{what} must not decrease: point {index} has {} after {}",
+                show(*value),
+                show(*previous)
+            ),
+            FitError::NoSpread { what, value } => write!(
+                f,
+                "every {what} is {}: the data must span an interval",
+                show(*value)
+            ),
             FitError::NotIncreasing {
                 what,
                 index,
@@ -185,15 +347,16 @@ impl From<NnlsError> for FitError {
     }
 }
 
-/// Fits `E(t) = E∞ + Σ E_i e^{−t/τ_i}` to relaxation data: `times` (s) strictly increasing
-/// and positive, `moduli` (Pa) positive (module docs).
+/// Fits `E(t) = E∞ + Σ E_i e^{−t/τ_i}` to relaxation data: `times` (s) positive and
+/// non-decreasing (repeated times, e.g. repeated tests or merged shifted data, are allowed),
+/// `moduli` (Pa) positive (module docs).
 pub fn fit_relaxation(
     times: &[f64],
     moduli: &[f64],
     settings: &FitSettings,
 ) -> Result<Fit, FitError> {
     check_settings(settings)?;
-    check_axis("time", times)?;
+    check_axis("time", times, false)?;
     check_values("relaxation modulus", moduli, times.len())?;
     let (first, last) = (times[0], times[times.len() - 1]);
     let taus = tau_grid(first / 10.0, last * 10.0, settings.terms_per_decade);
@@ -207,7 +370,9 @@ pub fn fit_relaxation(
             a[(k, i + 1)] = weight * (-t / tau).exp();
         }
     }
-    let prony = solve(&a, &taus, scale)?;
+    let window = (first, last);
+    let solved = solve(&a, &taus, scale, window, settings.regularisation)?;
+    let prony = solved.prony;
     let (rms, max) = statistics(
         times
             .iter()
@@ -220,7 +385,11 @@ pub fn fit_relaxation(
         grid_terms: taus.len(),
         rms_relative_residual: rms,
         max_relative_residual: max,
-        window: (first, last),
+        window,
+        regularisation: settings.regularisation,
+        smoothing: solved.smoothing,
+        effective_parameters: solved.effective_parameters,
+        band: solved.band,
     })
 }
 
@@ -233,7 +402,7 @@ pub fn fit_dma(
     settings: &FitSettings,
 ) -> Result<Fit, FitError> {
     check_settings(settings)?;
-    check_axis("angular frequency", omegas)?;
+    check_axis("angular frequency", omegas, true)?;
     check_values("storage modulus", storage, omegas.len())?;
     check_values("loss modulus", loss, omegas.len())?;
     let n = omegas.len();
@@ -252,7 +421,9 @@ pub fn fit_dma(
             a[(n + k, i + 1)] = wl * x / d;
         }
     }
-    let prony = solve(&a, &taus, scale)?;
+    let window = (1.0 / last, 1.0 / first);
+    let solved = solve(&a, &taus, scale, window, settings.regularisation)?;
+    let prony = solved.prony;
     let (rms, max) = statistics(omegas.iter().enumerate().flat_map(|(k, &omega)| {
         [
             prony.storage(omega) / storage[k] - 1.0,
@@ -265,7 +436,11 @@ pub fn fit_dma(
         grid_terms: taus.len(),
         rms_relative_residual: rms,
         max_relative_residual: max,
-        window: (1.0 / last, 1.0 / first),
+        window,
+        regularisation: settings.regularisation,
+        smoothing: solved.smoothing,
+        effective_parameters: solved.effective_parameters,
+        band: solved.band,
     })
 }
 
@@ -286,10 +461,276 @@ fn tau_grid(lo: f64, hi: f64, per_decade: u32) -> Vec<f64> {
         .collect()
 }
 
-/// NNLS with right-hand side 1 (relative rows); moduli are `scale · x`.
-fn solve(a: &DMatrix<f64>, taus: &[f64], scale: f64) -> Result<Prony, FitError> {
-    let b = DVector::from_element(a.nrows(), 1.0);
-    let x = nnls(a, &b)?.x;
+/// Lower and upper end of the GCV scan of λ, and its points per decade (module docs).
+const GCV_RANGE: (f64, f64) = (1e-6, 1e3);
+const GCV_PER_DECADE: usize = 2;
+/// Golden-section steps refining the scan's best λ between its neighbours (0.618^8 of
+/// one decade: well below the flatness of V(λ) near its minimum).
+const GCV_REFINE: usize = 8;
+
+/// The result of [`solve`].
+struct Solved {
+    prony: Prony,
+    smoothing: f64,
+    effective_parameters: f64,
+    band: Band,
+}
+
+/// The regularised problem of one data set (module docs), in the scaled unknowns
+/// `x = (E∞, E_1, …, E_m)/scale`.
+struct Problem<'a> {
+    /// Weighted data rows, n × p (right-hand side 1).
+    a: &'a DMatrix<f64>,
+    /// `R` and `c = Qᵀ 1` of the Householder QR of `a` (p × p, p): `‖a x − 1‖² =
+    /// ‖R x − c‖² + const`, so the stacked problems are p + m − 2 rows, not n + m − 2.
+    r: DMatrix<f64>,
+    c: DVector<f64>,
+    /// The penalty `L diag(scale/E_ref)` on the relative spectrum, (m − 2) × p, column 0
+    /// (E∞) zero.
+    penalty: DMatrix<f64>,
+    /// The unregularised NNLS solution (λ = 0).
+    pilot: DVector<f64>,
+}
+
+/// The solution at one λ with what GCV and the band need.
+struct Candidate {
+    lambda: f64,
+    x: DVector<f64>,
+    rss: f64,
+    edf: f64,
+    gcv: f64,
+    /// Free (non-zero) unknowns and the triangular factor `R̂` of
+    /// `[A_F; λ L_F] = Q̂ R̂` (so `A_Fᵀ A_F + λ² L_Fᵀ L_F = R̂ᵀ R̂`).
+    free: Vec<usize>,
+    r_hat: DMatrix<f64>,
+}
+
+impl Problem<'_> {
+    /// NNLS on `[R; λ L'] x = [c; 0]`, then RSS, `edf = tr H = ‖Q̂_top‖²_F` (the data rows'
+    /// part of the orthogonal factor of `[R_F; λ L'_F]`: `H = A_F (R̂ᵀR̂)⁻¹ A_Fᵀ` has the
+    /// same trace) and `V(λ) = n RSS/(n − edf)²`.
+    fn at(&self, lambda: f64) -> Result<Candidate, FitError> {
+        let p = self.r.ncols();
+        let q = self.penalty.nrows();
+        let x = if lambda == 0.0 {
+            self.pilot.clone()
+        } else {
+            let s = DMatrix::from_fn(p + q, p, |i, j| {
+                if i < p {
+                    self.r[(i, j)]
+                } else {
+                    lambda * self.penalty[(i - p, j)]
+                }
+            });
+            let rhs = DVector::from_fn(p + q, |i, _| if i < p { self.c[i] } else { 0.0 });
+            nnls(&s, &rhs)?.x
+        };
+        let rss = (self.a * &x).add_scalar(-1.0).norm_squared();
+        let free: Vec<usize> = (0..p).filter(|&j| x[j] > 0.0).collect();
+        let (edf, r_hat) = if free.is_empty() {
+            (0.0, DMatrix::zeros(0, 0))
+        } else {
+            let sf = DMatrix::from_fn(p + q, free.len(), |i, k| {
+                if i < p {
+                    self.r[(i, free[k])]
+                } else {
+                    lambda * self.penalty[(i - p, free[k])]
+                }
+            });
+            let qr = sf.qr();
+            let edf = qr.q().rows(0, p).norm_squared();
+            (edf, qr.r())
+        };
+        let n = self.a.nrows() as f64;
+        let gcv = if n - edf > 0.5 {
+            n * rss / ((n - edf) * (n - edf))
+        } else {
+            f64::INFINITY
+        };
+        Ok(Candidate {
+            lambda,
+            x,
+            rss,
+            edf,
+            gcv,
+            free,
+            r_hat,
+        })
+    }
+}
+
+/// The fit of relative rows `a x ≈ 1` with `x ≥ 0` under the regularisation asked for;
+/// moduli are `scale · x` (module docs).
+fn solve(
+    a: &DMatrix<f64>,
+    taus: &[f64],
+    scale: f64,
+    window: (f64, f64),
+    regularisation: Regularisation,
+) -> Result<Solved, FitError> {
+    let (n, p) = a.shape();
+    let m = taus.len();
+    let ones = DVector::from_element(n, 1.0);
+    let pilot = nnls(a, &ones)?.x;
+    // E_ref(τ_i): the pilot fit at τ_i clamped to the window, a smooth, positive local
+    // modulus level (a sum of decaying exponentials is monotone), so that the penalty acts
+    // on E_i/E_ref(τ_i) and weighs the rubbery MPa terms like the glassy GPa ones.
+    // E_ref(τ_i): the pilot fit at τ_i clamped to the window, a smooth, positive local
+    // modulus level (a sum of decaying exponentials is monotone), so that the penalty acts
+    // on E_i/E_ref(τ_i) and weighs the rubbery MPa terms like the glassy GPa ones.
+    let reference = |t: f64| {
+        pilot[0]
+            + taus
+                .iter()
+                .zip(pilot.iter().skip(1))
+                .map(|(&tau, &xi)| xi * (-t / tau).exp())
+                .sum::<f64>()
+    };
+    let weights: Vec<f64> = taus
+        .iter()
+        .map(|&tau| {
+            let level = reference(tau.clamp(window.0, window.1));
+            // guards a degenerate pilot (every modulus zero): the scale of the data
+            1.0 / if level.is_finite() && level > 1e-12 {
+                level
+            } else {
+                1.0
+            }
+        })
+        .collect();
+    let q = m.saturating_sub(2);
+    let mut penalty = DMatrix::zeros(q, p);
+    for row in 0..q {
+        // second difference of x̃ at τ index row + 1; column = τ index + 1
+        penalty[(row, row + 1)] = weights[row];
+        penalty[(row, row + 2)] = -2.0 * weights[row + 1];
+        penalty[(row, row + 3)] = weights[row + 2];
+    }
+    let qr = a.clone().qr();
+    let mut qtb = ones.clone();
+    qr.q_tr_mul(&mut qtb);
+    let problem = Problem {
+        a,
+        r: qr.r(),
+        c: qtb.rows(0, p).into_owned(),
+        penalty,
+        pilot,
+    };
+    let chosen = match regularisation {
+        Regularisation::None => problem.at(0.0)?,
+        Regularisation::Fixed(lambda) => problem.at(lambda)?,
+        Regularisation::Gcv => gcv(&problem)?,
+    };
+    let band = band(&chosen, taus, scale, n);
+    let prony = prony_of(&chosen.x, taus, scale)?;
+    Ok(Solved {
+        prony,
+        smoothing: chosen.lambda,
+        effective_parameters: chosen.edf,
+        band,
+    })
+}
+
+/// The λ minimising V(λ): λ = 0 and a log grid over [`GCV_RANGE`], then golden-section
+/// refinement (in log λ) between the best grid point's neighbours. A λ at which NNLS fails
+/// is skipped.
+fn gcv(problem: &Problem) -> Result<Candidate, FitError> {
+    let decades = (GCV_RANGE.1 / GCV_RANGE.0).log10();
+    let count = (decades * GCV_PER_DECADE as f64).round() as usize + 1;
+    let lambdas = log_spaced(GCV_RANGE.0, GCV_RANGE.1, count);
+    let mut best = problem.at(0.0)?;
+    let mut best_index = None;
+    for (k, &lambda) in lambdas.iter().enumerate() {
+        if let Ok(c) = problem.at(lambda)
+            && c.gcv < best.gcv
+        {
+            best = c;
+            best_index = Some(k);
+        }
+    }
+    let Some(k) = best_index else {
+        return Ok(best);
+    };
+    // golden section on s = log10 λ over the neighbours of the best grid point
+    let lo = lambdas[k.saturating_sub(1)].log10();
+    let hi = lambdas[(k + 1).min(count - 1)].log10();
+    let g = (5f64.sqrt() - 1.0) / 2.0;
+    let (mut a, mut b) = (lo, hi);
+    let mut s1 = b - g * (b - a);
+    let mut s2 = a + g * (b - a);
+    let eval = |s: f64| problem.at(10f64.powf(s)).ok();
+    let (mut c1, mut c2) = (eval(s1), eval(s2));
+    let v = |c: &Option<Candidate>| c.as_ref().map_or(f64::INFINITY, |c| c.gcv);
+    for _ in 0..GCV_REFINE {
+        if v(&c1) < v(&c2) {
+            b = s2;
+            (s2, c2) = (s1, c1);
+            s1 = b - g * (b - a);
+            c1 = eval(s1);
+        } else {
+            a = s1;
+            (s1, c1) = (s2, c2);
+            s2 = a + g * (b - a);
+            c2 = eval(s2);
+        }
+    }
+    for c in [c1, c2].into_iter().flatten() {
+        if c.gcv < best.gcv {
+            best = c;
+        }
+    }
+    Ok(best)
+}
+
+/// The band of a solution: `σ̂² = RSS/(n − edf)`, `C = σ̂² (R̂ᵀR̂)⁻¹` on the free unknowns
+/// (Wahba 1983), and the multiplier (module docs).
+fn band(chosen: &Candidate, taus: &[f64], scale: f64, n: usize) -> Band {
+    let p = taus.len() + 1;
+    let dof = n as f64 - chosen.edf;
+    let sigma2 = if dof > 0.0 {
+        chosen.rss / dof
+    } else {
+        f64::INFINITY
+    };
+    let f = chosen.free.len();
+    let mut covariance = DMatrix::zeros(p, p);
+    if f > 0 {
+        match chosen
+            .r_hat
+            .solve_upper_triangular(&DMatrix::identity(f, f))
+        {
+            Some(inv) => {
+                let c = &inv * inv.transpose() * sigma2;
+                for (i, &fi) in chosen.free.iter().enumerate() {
+                    for (j, &fj) in chosen.free.iter().enumerate() {
+                        covariance[(fi, fj)] = c[(i, j)];
+                    }
+                }
+            }
+            // a singular factor (not expected: NNLS keeps the free columns independent):
+            // no bound on the error
+            None => covariance.fill(f64::INFINITY),
+        }
+    }
+    Band {
+        taus: taus.to_vec(),
+        scale,
+        covariance,
+        sigma: sigma2.sqrt(),
+        multiplier: multiplier(chosen.edf),
+    }
+}
+
+/// The simultaneous multiplier (module docs): `√` of the χ² quantile at [`BAND_LEVEL`] with
+/// `edf` degrees of freedom (at least 1).
+fn multiplier(edf: f64) -> f64 {
+    ChiSquared::new(edf.max(1.0))
+        .map(|d| d.inverse_cdf(BAND_LEVEL).sqrt())
+        .unwrap_or(f64::INFINITY)
+}
+
+/// The Prony series of scaled unknowns `x` (empty terms dropped).
+fn prony_of(x: &DVector<f64>, taus: &[f64], scale: f64) -> Result<Prony, FitError> {
     let long_term = scale * x[0];
     let instantaneous = long_term + scale * x.iter().skip(1).sum::<f64>();
     let terms: Vec<PronyTerm> = taus
@@ -316,18 +757,22 @@ fn statistics(residuals: impl Iterator<Item = f64>) -> (f64, f64) {
 }
 
 fn check_settings(settings: &FitSettings) -> Result<(), FitError> {
-    if TERMS_PER_DECADE.contains(&settings.terms_per_decade) {
-        Ok(())
-    } else {
-        Err(FitError::Settings {
+    if !TERMS_PER_DECADE.contains(&settings.terms_per_decade) {
+        return Err(FitError::Settings {
             terms_per_decade: settings.terms_per_decade,
-        })
+        });
+    }
+    match settings.regularisation {
+        Regularisation::Fixed(value) if !(value.is_finite() && value >= 0.0) => {
+            Err(FitError::Smoothing { value })
+        }
+        _ => Ok(()),
     }
 }
 
 /// Times or frequencies: at least 3 (checked again against the unknowns later), positive,
-/// finite, strictly increasing.
-fn check_axis(what: &'static str, axis: &[f64]) -> Result<(), FitError> {
+/// finite, increasing (`strict`) or non-decreasing; the first and last must differ.
+fn check_axis(what: &'static str, axis: &[f64], strict: bool) -> Result<(), FitError> {
     if axis.len() < 3 {
         return Err(FitError::TooFewPoints {
             points: axis.len(),
@@ -337,14 +782,30 @@ fn check_axis(what: &'static str, axis: &[f64]) -> Result<(), FitError> {
     }
     check_positive(what, axis)?;
     for (k, w) in axis.windows(2).enumerate() {
-        if w[1] <= w[0] {
+        let (index, previous, value) = (k + 2, w[0], w[1]);
+        if strict && value <= previous {
             return Err(FitError::NotIncreasing {
                 what,
-                index: k + 2,
-                previous: w[0],
-                value: w[1],
+                index,
+                previous,
+                value,
             });
         }
+        if value < previous {
+            return Err(FitError::Decreasing {
+                what,
+                index,
+                previous,
+                value,
+            });
+        }
+    }
+    // all times equal: no window to fit a relaxation over
+    if axis[axis.len() - 1] <= axis[0] {
+        return Err(FitError::NoSpread {
+            what,
+            value: axis[0],
+        });
     }
     Ok(())
 }
@@ -401,6 +862,7 @@ mod tests {
     fn input_errors() {
         let s = FitSettings {
             terms_per_decade: 1,
+            ..FitSettings::default()
         };
         let t = [1.0, 2.0, 3.0, 4.0, 5.0];
         let e = [5.0, 4.0, 3.0, 2.0, 1.0];
@@ -410,7 +872,26 @@ mod tests {
         ));
         assert!(matches!(
             fit_relaxation(&[1.0, 3.0, 2.0], &e[..3], &s),
+            Err(FitError::Decreasing { index: 3, .. })
+        ));
+        assert!(matches!(
+            fit_relaxation(&[2.0, 2.0, 2.0], &e[..3], &s),
+            Err(FitError::NoSpread { .. })
+        ));
+        assert!(matches!(
+            fit_dma(&[1.0, 2.0, 2.0, 3.0, 4.0], &e, &e, &s),
             Err(FitError::NotIncreasing { index: 3, .. })
+        ));
+        assert!(matches!(
+            fit_relaxation(
+                &t,
+                &e,
+                &FitSettings {
+                    regularisation: Regularisation::Fixed(-1.0),
+                    ..s
+                }
+            ),
+            Err(FitError::Smoothing { .. })
         ));
         assert!(matches!(
             fit_relaxation(&t, &e[..4], &s),
@@ -430,6 +911,7 @@ mod tests {
         ));
         let bad = FitSettings {
             terms_per_decade: 5,
+            ..FitSettings::default()
         };
         assert_eq!(
             fit_relaxation(&t, &e, &bad),
@@ -461,5 +943,19 @@ mod tests {
         let fit = fit_relaxation(&t, &e, &FitSettings::default()).unwrap();
         assert!(fit.max_relative_residual < 1e-12, "{fit:?}");
         assert!((fit.prony.instantaneous() / 3e6 - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn repeated_times_are_accepted() {
+        // each time measured twice, the two values 1 % apart
+        let t: Vec<f64> = (0..40).map(|k| 10f64.powf((k / 2) as f64 / 4.0)).collect();
+        let e: Vec<f64> = t
+            .iter()
+            .enumerate()
+            .map(|(k, &x)| 2e6 * (1.0 + 1.0 / (1.0 + x)) * if k % 2 == 0 { 1.005 } else { 0.995 })
+            .collect();
+        let fit = fit_relaxation(&t, &e, &FitSettings::default()).unwrap();
+        assert_eq!(fit.points, 40);
+        assert!(fit.max_relative_residual < 0.01, "{fit:?}");
     }
 }

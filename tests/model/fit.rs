@@ -3,7 +3,7 @@
 //! All random numbers come from a seeded SplitMix64, so every run is identical.
 
 use nalgebra::{DMatrix, DVector};
-use sealsim::material::fit::{FitError, FitSettings, fit_dma, fit_relaxation};
+use sealsim::material::fit::{Fit, FitError, FitSettings, Regularisation, fit_dma, fit_relaxation};
 use sealsim::material::{Prony, PronyTerm};
 use sealsim::math::log_spaced;
 use sealsim::math::nnls::{NnlsSolution, nnls};
@@ -282,6 +282,7 @@ fn off_grid_spectrum_needs_three_terms_per_decade() {
             e,
             &FitSettings {
                 terms_per_decade: n,
+                ..FitSettings::default()
             },
         )
         .unwrap()
@@ -311,6 +312,7 @@ fn off_grid_spectrum_needs_three_terms_per_decade() {
     let loss: Vec<f64> = w.iter().map(|&x| truth.loss(x)).collect();
     let settings = FitSettings {
         terms_per_decade: 3,
+        ..FitSettings::default()
     };
     let fit = fit_dma(&w, &storage, &loss, &settings).unwrap();
     let (s_max, _) = errors(lo, hi, |x| fit.prony.storage(x), |x| truth.storage(x));
@@ -346,6 +348,7 @@ fn taus_on_the_grid_are_recovered() {
         &e,
         &FitSettings {
             terms_per_decade: 1,
+            ..FitSettings::default()
         },
     )
     .unwrap();
@@ -407,6 +410,7 @@ fn more_terms_per_decade_fit_a_power_law() {
             &e,
             &FitSettings {
                 terms_per_decade: per_decade,
+                ..FitSettings::default()
             },
         )
         .unwrap();
@@ -429,6 +433,7 @@ fn too_few_points_names_both_numbers() {
         &e,
         &FitSettings {
             terms_per_decade: 1,
+            ..FitSettings::default()
         },
     )
     .unwrap_err();
@@ -576,4 +581,186 @@ fn dense_noisy_dma_meets_the_worst_case_bound() {
         s_rms <= 2.5e-3 && l_rms <= 2.5e-3,
         "rms E' {s_rms:e}, E'' {l_rms:e}"
     );
+}
+
+// ---------------------------------------------------------------------------------------
+// Regularised fits (GCV) and the uncertainty band
+// ---------------------------------------------------------------------------------------
+
+/// A rubber-like quasi-continuous series for a 14-decade window (1e-5 … 1e9 s): 10 terms per
+/// decade, τ = 1e-7 … 1e11 s (the spectrum runs on beyond the window, as a real one does),
+/// moduli falling as τ^-0.4 with a ±30 % wave; over the window E(t) falls from ≈0.6 GPa to
+/// ≈3 MPa, E∞ = 3 MPa.
+fn rubber_14_decades() -> Prony {
+    let terms: Vec<PronyTerm> = log_spaced(1e-7, 1e11, 181)
+        .into_iter()
+        .map(|tau| {
+            let k = tau.log10();
+            PronyTerm {
+                modulus: 1.5e7 * 10f64.powf(-0.4 * (k + 5.0)) * (1.0 + 0.3 * k.sin()),
+                tau,
+            }
+        })
+        .collect();
+    Prony::new(3e6, &terms).unwrap()
+}
+
+/// [`one_per_decade`] extended to 14 decades: 15 terms, τ = 1e-5 … 1e9 s.
+fn one_per_decade_14() -> Prony {
+    let terms: Vec<PronyTerm> = (-5..=9)
+        .map(|k| PronyTerm {
+            modulus: 1e6 * (3.5 + 2.5 * (1.3 * k as f64).sin()),
+            tau: 10f64.powi(k),
+        })
+        .collect();
+    Prony::new(2e6, &terms).unwrap()
+}
+
+/// The hidden-style data: 120 log-spaced times over 1e-5 … 1e9 s, clean or with 1 %
+/// multiplicative noise from `seed`.
+fn hidden_style_data(truth: &Prony, seed: Option<u64>) -> (Vec<f64>, Vec<f64>) {
+    let t = log_spaced(1e-5, 1e9, 120);
+    let clean: Vec<f64> = t.iter().map(|&x| truth.relaxation(x)).collect();
+    let e = match seed {
+        Some(s) => with_noise(&mut SplitMix64(s), &clean),
+        None => clean,
+    };
+    (t, e)
+}
+
+/// Worst error of a fit to the hidden-style data over the window, and whether its band holds
+/// the truth at each of the 2000 points (simultaneously).
+fn hidden_style(truth: &Prony, seed: Option<u64>, settings: &FitSettings) -> (f64, bool, Fit) {
+    let (lo, hi) = (1e-5, 1e9);
+    let (t, e) = hidden_style_data(truth, seed);
+    let fit = fit_relaxation(&t, &e, settings).unwrap();
+    let (max, _) = errors(lo, hi, |x| fit.prony.relaxation(x), |x| truth.relaxation(x));
+    let covered = log_spaced(lo, hi, 2000).iter().all(|&x| {
+        let (l, u) = fit.band(x);
+        let e = truth.relaxation(x);
+        l <= e && e <= u
+    });
+    (max, covered, fit)
+}
+
+fn median_and_max(mut v: Vec<f64>) -> (f64, f64) {
+    v.sort_by(f64::total_cmp);
+    (v[v.len() / 2], v[v.len() - 1])
+}
+
+/// The hidden-style case: 14 decades, 120 points, 1 % noise, 50 seeds, for the two truths.
+///
+/// Measured (default settings, GCV; worst |fitted/true − 1| over the window per seed):
+/// * rubber-like spectrum: median 0.85 %, max 1.65 % over the 50 seeds (unregularised NNLS:
+///   1.32 % and 2.50 %); edf 9.8–20 (median 11.6);
+/// * one term per decade: median 1.21 %, max 2.54 % (unregularised: 1.22 %, 2.53 %): GCV
+///   finds little to smooth in a spectrum of isolated lines (λ median 4e-3, edf ≈ 26).
+///
+/// The 0.5 % worst-case target is NOT met: with 1 % noise on 120 points a fit with `edf`
+/// effective parameters has a pointwise error of about 1 % · √(edf/120) rms (0.3 % for
+/// edf = 11), larger at the window's ends where the worst point lies; 0.5 % everywhere
+/// would need edf ≈ 4, which biases the fit more than it saves (measured with fixed λ).
+/// The assertions are the measured figures with a margin.
+///
+/// The simultaneous 95 % band holds the truth at all 2000 points in 50/50 (rubber) and
+/// 49/50 (one per decade) repeats.
+#[test]
+fn hidden_style_case_rubber_like() {
+    hidden_style_case("rubber-like", &rubber_14_decades());
+}
+
+/// See [`hidden_style_case_rubber_like`].
+#[test]
+fn hidden_style_case_one_per_decade() {
+    hidden_style_case("one per decade", &one_per_decade_14());
+}
+
+fn hidden_style_case(name: &str, truth: &Prony) {
+    let settings = FitSettings::default();
+    let none = FitSettings {
+        regularisation: Regularisation::None,
+        ..settings
+    };
+    let (mut worst, mut worst_none, mut edf) = (Vec::new(), Vec::new(), Vec::new());
+    let mut covered = 0;
+    for seed in 0..50 {
+        let (max, inside, fit) = hidden_style(truth, Some(seed), &settings);
+        worst.push(max);
+        edf.push(fit.effective_parameters);
+        covered += usize::from(inside);
+        worst_none.push(hidden_style(truth, Some(seed), &none).0);
+    }
+    let (median, max) = median_and_max(worst);
+    let (median_none, max_none) = median_and_max(worst_none);
+    let (edf_median, _) = median_and_max(edf);
+    eprintln!(
+        "hidden-style, {name}, 1 % noise, 50 seeds: worst error median {median:.2e}, max \
+         {max:.2e} (unregularised {median_none:.2e}, {max_none:.2e}); edf median \
+         {edf_median:.1}; band covers the truth in {covered}/50"
+    );
+    assert!(covered >= 45, "{name}: band covers in {covered}/50");
+    assert!(
+        median <= 1.5e-2 && max <= 3e-2,
+        "{name}: worst median {median:e}, max {max:e}"
+    );
+    assert!(
+        median <= median_none * 1.05,
+        "{name}: {median:e} vs {median_none:e}"
+    );
+}
+
+/// Noise-free data: GCV picks a small λ and the fit stays as good as plain NNLS (measured
+/// worst 7.4e-6 rubber-like, 1.6e-14 one per decade).
+#[test]
+fn hidden_style_clean_data_are_not_spoiled() {
+    for (name, truth) in [
+        ("rubber-like", rubber_14_decades()),
+        ("one per decade", one_per_decade_14()),
+    ] {
+        let (max, _, fit) = hidden_style(&truth, None, &FitSettings::default());
+        eprintln!(
+            "hidden-style, {name}, noise-free: worst {max:.1e}, lambda {:.1e}, edf {:.1}",
+            fit.smoothing, fit.effective_parameters
+        );
+        assert!(max <= 1e-3, "{name}: worst {max:e}");
+    }
+}
+
+/// edf lies between 1 and the number of unknowns and falls as λ rises; GCV's λ is smaller
+/// on clean data than on noisy data.
+#[test]
+fn effective_parameters_fall_with_smoothing() {
+    let truth = rubber_14_decades();
+    let (t, e) = hidden_style_data(&truth, Some(3));
+    let mut previous = f64::INFINITY;
+    for lambda in [0.0, 1e-4, 1e-3, 1e-2, 0.1, 1.0, 10.0, 100.0] {
+        let fit = fit_relaxation(
+            &t,
+            &e,
+            &FitSettings {
+                regularisation: Regularisation::Fixed(lambda),
+                ..FitSettings::default()
+            },
+        )
+        .unwrap();
+        let edf = fit.effective_parameters;
+        let unknowns = (fit.grid_terms + 1) as f64;
+        eprintln!("lambda {lambda:.0e}: edf {edf:.2}");
+        assert!(edf >= 1.0 && edf <= unknowns, "λ {lambda}: edf {edf}");
+        assert!(
+            edf <= previous + 1e-9,
+            "λ {lambda}: edf {edf} after {previous}"
+        );
+        assert_eq!(fit.smoothing, lambda);
+        previous = edf;
+    }
+    let (_, _, noisy) = hidden_style(&truth, Some(3), &FitSettings::default());
+    let (_, _, clean) = hidden_style(&truth, None, &FitSettings::default());
+    assert!(
+        clean.smoothing < noisy.smoothing,
+        "λ clean {:e}, noisy {:e}",
+        clean.smoothing,
+        noisy.smoothing
+    );
+    assert!(noisy.effective_parameters < clean.effective_parameters);
 }
