@@ -764,3 +764,32 @@ fn effective_parameters_fall_with_smoothing() {
     );
     assert!(noisy.effective_parameters < clean.effective_parameters);
 }
+
+/// Why the 0.5 % worst-case target of the issue is not reachable on the one-per-decade truth:
+/// least squares on the *true* relaxation times (1 per decade, the grid holds them; no
+/// smoothing needed or possible) — the best an estimator can do without knowing more than
+/// the data — leaves a median worst error of 1.06 % (max 2.33 %) over the 50 seeds, because
+/// 17 free amplitudes on 120 points with 1 % noise give a pointwise error of about
+/// 1 % · √(17/120) ≈ 0.4 % rms, and the worst of 2000 correlated points is 2–3 times that.
+/// (On the rubber-like truth GCV is at its best: fixing λ at 0.3, 3 or 10 times GCV's choice
+/// gave median worst errors of 0.91 %, 1.28 % and 3.3 % against GCV's 0.85 %; 4 τ per decade
+/// 0.87 % — measured once, not asserted.)
+#[test]
+fn the_worst_case_floor_of_one_per_decade_data() {
+    let truth = one_per_decade_14();
+    let oracle = FitSettings {
+        terms_per_decade: 1,
+        regularisation: Regularisation::None,
+    };
+    let worst: Vec<f64> = (0..50)
+        .map(|seed| hidden_style(&truth, Some(seed), &oracle).0)
+        .collect();
+    let (median, max) = median_and_max(worst);
+    eprintln!(
+        "one per decade, least squares on the true τ: worst median {median:.2e}, max {max:.2e}"
+    );
+    assert!(
+        median > 5e-3,
+        "the floor is below the target after all: {median:e}"
+    );
+}
