@@ -185,15 +185,15 @@ impl From<NnlsError> for FitError {
     }
 }
 
-/// Fits `E(t) = E∞ + Σ E_i e^{−t/τ_i}` to relaxation data: `times` (s) strictly increasing
-/// and positive, `moduli` (Pa) positive (module docs).
+/// Fits `E(t) = E∞ + Σ E_i e^{−t/τ_i}` to relaxation data: `times` (s) non-decreasing (ties
+/// allowed: repeated measurements, merged isotherms) and positive, `moduli` (Pa) positive (module docs).
 pub fn fit_relaxation(
     times: &[f64],
     moduli: &[f64],
     settings: &FitSettings,
 ) -> Result<Fit, FitError> {
     check_settings(settings)?;
-    check_axis("time", times)?;
+    check_axis("time", times, true)?;
     check_values("relaxation modulus", moduli, times.len())?;
     let (first, last) = (times[0], times[times.len() - 1]);
     let taus = tau_grid(first / 10.0, last * 10.0, settings.terms_per_decade);
@@ -233,7 +233,7 @@ pub fn fit_dma(
     settings: &FitSettings,
 ) -> Result<Fit, FitError> {
     check_settings(settings)?;
-    check_axis("angular frequency", omegas)?;
+    check_axis("angular frequency", omegas, false)?;
     check_values("storage modulus", storage, omegas.len())?;
     check_values("loss modulus", loss, omegas.len())?;
     let n = omegas.len();
@@ -326,8 +326,8 @@ fn check_settings(settings: &FitSettings) -> Result<(), FitError> {
 }
 
 /// Times or frequencies: at least 3 (checked again against the unknowns later), positive,
-/// finite, strictly increasing.
-fn check_axis(what: &'static str, axis: &[f64]) -> Result<(), FitError> {
+/// finite, strictly increasing (non-decreasing when `ties`).
+fn check_axis(what: &'static str, axis: &[f64], ties: bool) -> Result<(), FitError> {
     if axis.len() < 3 {
         return Err(FitError::TooFewPoints {
             points: axis.len(),
@@ -337,7 +337,7 @@ fn check_axis(what: &'static str, axis: &[f64]) -> Result<(), FitError> {
     }
     check_positive(what, axis)?;
     for (k, w) in axis.windows(2).enumerate() {
-        if w[1] <= w[0] {
+        if w[1] < w[0] || (w[1] == w[0] && !ties) {
             return Err(FitError::NotIncreasing {
                 what,
                 index: k + 2,
