@@ -36,9 +36,17 @@
 //!    non-reference isotherm re-estimate log10 a_T by golden-section minimisation (Kiefer,
 //!    Proc. Amer. Math. Soc. 4 (1953) 502 — recalled) of its residual sum against that master
 //!    curve, over ±[`REFINE_BRACKET`] decades around the current value (re-centred if the
-//!    minimum lands on the bracket's edge). Repeat until no shift changes by more than
-//!    [`SHIFT_TOLERANCE`] decades, at most [`MAX_ITERATIONS`] times (the result says whether
-//!    it converged), then fit the master curve once more at the final shifts.
+//!    minimum lands on the bracket's edge). Alone, (a)–(b) converge linearly and slowly (the
+//!    master curve, fitted to an isotherm where it is, holds it back: with 1 % noise the
+//!    shifts still moved by 5e-5 decades per iteration after 20 iterations, ratio ≈ 0.86 per
+//!    iteration, measured). So each iteration also tries (c) a joint Gauss–Newton step on all
+//!    shifts with the master curve re-fitted (`Δ = −(ZᵀZ)⁻¹ Zᵀ r`, Z of step 5, each
+//!    component capped at ±[`REFINE_BRACKET`]) and keeps whichever of (b) and (c) gives the
+//!    smaller residual sum (for (c) after re-fitting, for (b) against the old master curve,
+//!    an upper bound of its re-fitted sum): the objective never increases. Repeat until no
+//!    shift changes by more than [`SHIFT_TOLERANCE`] decades, at most [`MAX_ITERATIONS`]
+//!    times (the result says whether it converged; 2–8 iterations in the tests), then fit
+//!    the master curve once more at the final shifts.
 //! 5. **Standard errors of the shifts** (Gauss–Newton linearisation at the optimum; e.g. Bates
 //!    & Watts, *Nonlinear Regression Analysis and Its Applications*, Wiley 1988 — recalled):
 //!    with J_s the derivatives of the relative residuals with respect to the shifts
@@ -82,7 +90,15 @@
 //!    freezing temperature.
 //!
 //! Accuracy (measured in tests/model/tts.rs on data synthesised from a known 16-decade
-//! spectrum, 5 temperatures, 25 points over 4 decades each): see the test module's docs.
+//! spectrum with log–log slopes −0.24 … −0.53, 5 temperatures 15 K apart, 30 points over
+//! 1–1e4 s each): noise-free, log10 a_T to 2e-6 decades (WLF) and 1e-7 (Arrhenius), C1, C2, Ea
+//! to 1e-5 relative, the master curve to 3e-4 of E over its 10-decade window. With 1 %
+//! multiplicative noise the standard errors of log10 a_T are 0.0023–0.0054 decades (0.5–1.3 %
+//! in a_T, largest at the end isotherms, which overlap one neighbour only); the errors stayed
+//! within 0.0074 decades (1.7 %) in 20 repeats; 79 of 80 estimates lay within 1.96 standard
+//! errors; the 95 % intervals of C1, C2 and Ea covered the truth in 20 of 20 repeats each
+//! (half-widths ≈ 1.4 % for C1 and C2, 0.3 % for Ea); the master curve ≈ 0.5 % rms, 2.5 % at
+//! worst at the window's ends.
 
 use super::fit::{Fit, FitError, FitSettings, fit_relaxation};
 use super::shift::{GAS_CONSTANT, Shift};
@@ -989,7 +1005,7 @@ impl RawLaw {
         let note = self.t_quantile.is_none().then(|| {
             format!(
                 "no intervals: {} points for {} parameters leave no degrees of freedom; the \
-                 standard errors are those propagated from the shifts' alone",
+                 standard errors are the shifts' errors propagated",
                 self.points,
                 self.points - self.dof
             )

@@ -580,3 +580,19 @@ fn shifts_that_curve_the_wrong_way_are_not_wlf() {
     assert!(activation_energy(&m).value > 0.0);
     let _ = GAS_CONSTANT;
 }
+
+#[test]
+fn repeated_isotherms_at_one_temperature_are_merged() {
+    // the same times twice: tied times in the isotherm and in the merged reduced data
+    let mut data = synthesise(&WLF, &WLF_TEMPERATURES, 0.0, &mut SplitMix64(0));
+    let mut repeat = data[1].clone();
+    for e in &mut repeat.moduli {
+        *e *= 1.001;
+    }
+    data.push(repeat);
+    let m = master_curve(&data, &TtsSettings::default()).unwrap();
+    assert_eq!(m.shifts.len(), 5);
+    assert_eq!(m.reduced.len(), 180);
+    let err = shift_error(&m, &WLF);
+    assert!(err < 1e-3, "{err}");
+}
