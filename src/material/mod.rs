@@ -8,6 +8,7 @@ pub mod curve;
 pub mod fit;
 pub mod prony;
 pub mod shift;
+pub mod tts;
 
 pub use compound::{Ageing, AgeingBasis, BALANCED_CROSSLINKING, Material, Status};
 pub use prony::{ChemicalStep, Creep, Prony, PronyError, PronyTerm, RelaxationState};

@@ -29,4 +29,5 @@ mod numerical;
 mod physics;
 mod properties;
 mod scenario;
+mod tts;
 mod viscoelastic;
