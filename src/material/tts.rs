@@ -32,7 +32,7 @@
 //! 4. **Refinement**, alternating (block coordinate descent on one objective, the sum of
 //!    squared relative residuals `E_master(ξ_k)/E_k − 1` over all points, which is also what
 //!    [`fit_relaxation`] minimises): (a) fit a Prony master curve to all shifted data
-//!    ([`fit_relaxation`], default [`FitSettings`], points sorted by reduced time); (b) for each
+//!    ([`fit_relaxation`] without smoothing, points sorted by reduced time); (b) for each
 //!    non-reference isotherm re-estimate log10 a_T by golden-section minimisation (Kiefer,
 //!    Proc. Amer. Math. Soc. 4 (1953) 502 — recalled) of its residual sum against that master
 //!    curve, over ±[`REFINE_BRACKET`] decades around the current value (re-centred if the
@@ -46,7 +46,8 @@
 //!    an upper bound of its re-fitted sum): the objective never increases. Repeat until no
 //!    shift changes by more than [`SHIFT_TOLERANCE`] decades, at most [`MAX_ITERATIONS`]
 //!    times (the result says whether it converged; 2–8 iterations in the tests), then fit
-//!    the master curve once more at the final shifts.
+//!    the master curve once more at the final shifts, with [`TtsSettings::fit`] (by default
+//!    regularised, λ by GCV: the series written to the material file).
 //! 5. **Standard errors of the shifts** (Gauss–Newton linearisation at the optimum; e.g. Bates
 //!    & Watts, *Nonlinear Regression Analysis and Its Applications*, Wiley 1988 — recalled):
 //!    with J_s the derivatives of the relative residuals with respect to the shifts
@@ -100,7 +101,7 @@
 //! (half-widths ≈ 1.4 % for C1 and C2, 0.3 % for Ea); the master curve ≈ 0.5 % rms, 2.5 % at
 //! worst at the window's ends.
 
-use super::fit::{Fit, FitError, FitSettings, fit_relaxation};
+use super::fit::{Fit, FitError, FitSettings, Regularisation, fit_relaxation};
 use super::shift::{GAS_CONSTANT, Shift};
 use super::{Prony, PronyTerm};
 use crate::units::show;
@@ -171,6 +172,9 @@ pub struct TtsSettings {
     /// Reference temperature \[K\]; default (`None`): the data temperature nearest the median
     /// of the data temperatures.
     pub reference: Option<f64>,
+    /// The settings of the final master-curve fit (default: regularised, λ by GCV). The shifts
+    /// themselves are estimated with the same grid but without smoothing (module docs, step 4).
+    pub fit: FitSettings,
 }
 
 /// The measured shift of one temperature.
@@ -446,9 +450,16 @@ pub fn master_curve(
     let td = curves[r].temperature;
     let mut shifts = initial_shifts(&curves, r)?;
 
+    // The shifts minimise one fixed objective, the plain least-squares misfit: a smoothing
+    // weight re-chosen by GCV at every iteration would move the objective under the search
+    // (and the variable-projection errors of step 5 assume the plain NNLS active set).
+    let plain = FitSettings {
+        regularisation: Regularisation::None,
+        ..settings.fit
+    };
     let mut iterations = 0;
     let mut converged = false;
-    let (mut fit, _) = fit_master(&curves, &shifts)?;
+    let (mut fit, _) = fit_master(&curves, &shifts, &plain)?;
     while iterations < MAX_ITERATIONS {
         iterations += 1;
         // (b) one isotherm at a time against the fixed master curve
@@ -463,13 +474,13 @@ pub fn master_curve(
         // (c) all shifts at once, the master curve re-fitted (Gauss–Newton, accepted when it
         // beats the sweep)
         let jump = Linearisation::new(&fit.prony, &curves, &shifts, r)?.step(&shifts);
-        let (jump_fit, _) = fit_master(&curves, &jump)?;
+        let (jump_fit, _) = fit_master(&curves, &jump, &plain)?;
         let jump_sse = total_misfit(&jump_fit.prony, &curves, &jump);
         let next = if jump_sse < swept_sse {
             fit = jump_fit;
             jump
         } else {
-            fit = fit_master(&curves, &swept)?.0;
+            fit = fit_master(&curves, &swept, &plain)?.0;
             swept
         };
         let change = next
@@ -483,8 +494,10 @@ pub fn master_curve(
             break;
         }
     }
-    let (mut fit, mut reduced) = fit_master(&curves, &shifts)?;
-    let errors = Linearisation::new(&fit.prony, &curves, &shifts, r)?.std_errors(curves.len());
+    let (plain_fit, mut reduced) = fit_master(&curves, &shifts, &plain)?;
+    let errors =
+        Linearisation::new(&plain_fit.prony, &curves, &shifts, r)?.std_errors(curves.len());
+    let (mut fit, _) = fit_master(&curves, &shifts, &settings.fit)?;
     if let Some(i) = errors.iter().position(|e| !e.is_finite()) {
         return Err(TtsError::Unidentifiable {
             temperature: curves[i].temperature,
@@ -734,7 +747,11 @@ fn relative_shift(fixed: &Curve, moving: &Curve) -> Result<f64, TtsError> {
 }
 
 /// Prony fit of all points at `shifts`, with the points sorted by reduced time.
-fn fit_master(curves: &[Curve], shifts: &[f64]) -> Result<(Fit, Vec<ReducedPoint>), TtsError> {
+fn fit_master(
+    curves: &[Curve],
+    shifts: &[f64],
+    settings: &FitSettings,
+) -> Result<(Fit, Vec<ReducedPoint>), TtsError> {
     let mut reduced: Vec<ReducedPoint> = curves
         .iter()
         .enumerate()
@@ -753,7 +770,7 @@ fn fit_master(curves: &[Curve], shifts: &[f64]) -> Result<(Fit, Vec<ReducedPoint
     reduced.sort_by(|a, b| a.reduced_time.total_cmp(&b.reduced_time));
     let xi: Vec<f64> = reduced.iter().map(|p| p.reduced_time).collect();
     let e: Vec<f64> = reduced.iter().map(|p| p.modulus).collect();
-    let fit = fit_relaxation(&xi, &e, &FitSettings::default())?;
+    let fit = fit_relaxation(&xi, &e, settings)?;
     Ok((fit, reduced))
 }
 

@@ -141,6 +141,7 @@ fn arrhenius_settings() -> TtsSettings {
     TtsSettings {
         law: ShiftLaw::Arrhenius,
         reference: None,
+        ..TtsSettings::default()
     }
 }
 
@@ -382,6 +383,7 @@ fn a_user_reference_gives_the_same_shift_function_and_master_curve() {
         &TtsSettings {
             law: ShiftLaw::Wlf,
             reference: Some(t0),
+            ..TtsSettings::default()
         },
     )
     .unwrap();
@@ -431,6 +433,7 @@ fn a_user_reference_gives_the_same_shift_function_and_master_curve() {
         &TtsSettings {
             law: ShiftLaw::Arrhenius,
             reference: Some(50.0 + C),
+            ..TtsSettings::default()
         },
     )
     .unwrap();
