@@ -376,23 +376,23 @@ impl Source<'_> {
                 );
             }
         }
-        if let Some((swell, span)) = &swell {
-            if swell.volume_change > SWELL_PRACTICE {
-                warnings.push(
-                    self.error(
-                        span.clone(),
-                        VOLUME_SWELL.key,
-                        format!(
-                            "{} % volume swell is beyond seal practice (≈ {} %: the compound is \
+        if let Some((swell, span)) = &swell
+            && swell.volume_change > SWELL_PRACTICE
+        {
+            warnings.push(
+                self.error(
+                    span.clone(),
+                    VOLUME_SWELL.key,
+                    format!(
+                        "{} % volume swell is beyond seal practice (≈ {} %: the compound is \
                              not compatible with this fluid); the swell relations are applied \
                              as given [docs/model.md §3.8]",
-                            show(100.0 * swell.volume_change),
-                            show(100.0 * SWELL_PRACTICE)
-                        ),
-                    )
-                    .to_string(),
-                );
-            }
+                        show(100.0 * swell.volume_change),
+                        show(100.0 * SWELL_PRACTICE)
+                    ),
+                )
+                .to_string(),
+            );
         }
         if let (None, Some(own)) = (&life.ageing, &material.ageing) {
             // the compound's data say it ages: an engineer should see that this run does not

@@ -49,13 +49,12 @@ fn run(swell: Option<&str>) -> (Option<i32>, String, String, Option<String>) {
         .arg(&csv)
         .output()
         .unwrap();
-    let stdout = String::from_utf8(out.stdout)
-        .unwrap()
-        .replace(&scenario.display().to_string(), "S");
+    let path = scenario.display().to_string();
+    let text = |b: Vec<u8>| String::from_utf8(b).unwrap().replace(&path, "s.toml");
     (
         out.status.code(),
-        stdout,
-        String::from_utf8(out.stderr).unwrap(),
+        text(out.stdout),
+        text(out.stderr),
         fs::read_to_string(&csv).ok(),
     )
 }
@@ -100,7 +99,7 @@ fn a_swell_that_overfills_the_gland_is_reported() {
     assert_eq!(code, Some(2), "{stdout}{stderr}");
     assert!(csv.is_none(), "nothing is written");
     assert!(
-        stderr.contains("s.toml:") && stderr.contains("seal.groove_width"),
+        stderr.contains("s.toml:1") && stderr.contains("seal.groove_width"),
         "{stderr}"
     );
     assert!(
