@@ -29,6 +29,31 @@ pub enum ViscosityLaw {
     Water,
     /// A mineral oil by ASTM D341 (Walther) with a linear density ([`Walther`]).
     Walther(Walther),
+    /// A dynamic viscosity by a Vogel fit to tabulated points ([`Vogel`]).
+    Vogel(Vogel),
+}
+
+/// The Vogel (Vogel–Fulcher–Tammann) equation for the dynamic viscosity,
+/// `η = exp(A + B/(T − C))` mPa·s (T in K), fitted to a table of η(T) (docs/model.md §3.7).
+/// Used where ASTM D341's double logarithm does not fit a fluid over its range (an aqueous
+/// glycol, whose η(T) curves like a glass-former's, not like an oil's).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Vogel {
+    /// A (dimensionless; ln of mPa·s).
+    pub a: f64,
+    /// B \[K\].
+    pub b: f64,
+    /// C \[K\] (below the fluid's range: the divergence temperature of the fit).
+    pub c: f64,
+    /// Where the numbers come from, short (the run summary's fluid line).
+    pub source: &'static str,
+}
+
+impl Vogel {
+    /// Dynamic viscosity η(T) = exp(A + B/(T − C)) · 1e-3 \[Pa·s\] at `temperature` \[K\] (> C).
+    pub fn dynamic(&self, temperature: f64) -> f64 {
+        (self.a + self.b / (temperature - self.c)).exp() * 1e-3
+    }
 }
 
 /// ASTM D341 (Walther) kinematic viscosity with a linear density: `log10 log10(ν + 0.7) =
@@ -129,6 +154,7 @@ impl ViscosityLaw {
             ViscosityLaw::Constant => None,
             ViscosityLaw::Water => Some(water_viscosity(temperature)),
             ViscosityLaw::Walther(w) => Some(w.dynamic(temperature)),
+            ViscosityLaw::Vogel(v) => Some(v.dynamic(temperature)),
         }
     }
 
@@ -138,6 +164,7 @@ impl ViscosityLaw {
             ViscosityLaw::Constant => None,
             ViscosityLaw::Water => Some(WATER_SOURCE),
             ViscosityLaw::Walther(w) => Some(w.source),
+            ViscosityLaw::Vogel(v) => Some(v.source),
         }
     }
 }
@@ -152,7 +179,40 @@ pub struct LibraryFluid {
     pub law: ViscosityLaw,
     /// Short provenance for the run summary.
     pub source: &'static str,
+    /// The fluid's liquid range at 1 atm \[K\] (freezing or pour point, boiling point) where
+    /// known: a run outside it warns (the law there is an extrapolation past a phase change).
+    pub liquid_range: Option<(f64, f64)>,
 }
+
+/// 50/50 (by volume) ethylene glycol–water: the Vogel fit ([`Vogel`]) to the dynamic viscosity
+/// table of "Ethylene Glycol Heat-Transfer Fluid" (The Engineering ToolBox, as copied at
+/// <https://www.scribd.com/document/671664902/Ethylene-Glycol-Heat>), 50 % by volume:
+/// 22, 6.5, 2.8, 1.5, 0.95, 0.7 cP at 0, 40, 80, 120, 160, 200 °F (−17.8 … 93.3 °C).
+/// Least-squares fit of ln η (fitted here): A = −3.2408, B = 579.11 K, C = 163.98 K; it
+/// reproduces the six points within 2.4 % ([`GLYCOL_WATER_POINTS`]).
+pub const GLYCOL_WATER_50: Vogel = Vogel {
+    a: -3.2408,
+    b: 579.11,
+    c: 163.98,
+    source: "50/50 vol ethylene glycol–water, Vogel fit to the Engineering ToolBox table (22–0.7 cP, −17.8–93.3 °C)",
+};
+
+/// The source points of [`GLYCOL_WATER_50`]: (T \[K\], η \[Pa·s\]).
+pub const GLYCOL_WATER_POINTS: [(f64, f64); 6] = [
+    (255.35, 22e-3),
+    (277.55, 6.5e-3),
+    (299.85, 2.8e-3),
+    (322.05, 1.5e-3),
+    (344.25, 0.95e-3),
+    (366.45, 0.7e-3),
+];
+
+/// Liquid range of 50/50 vol ethylene glycol–water at 1 atm \[K\]: freezing point −37 °C (the
+/// Engineering ToolBox freezing-point table above, 50 % by volume: −37 °C / −36 °F) to the
+/// boiling point ≈ 106 °C ("Around 106°C (222.8°F) at atmospheric pressure", ExcelCalcs,
+/// "50-50 Ethylene glycol-water and air properties",
+/// <https://www.excelcalcs.com/calcs/repository/Fluids/50-50-Ethylene-glycol-water--and--air-properties/>).
+pub const GLYCOL_WATER_LIQUID: (f64, f64) = (236.15, 379.15);
 
 /// Density of a typical mineral oil at 15 °C \[kg/m³\] (illustrative: ISO VG 32–100 hydraulic
 /// oils' data sheets give 0.86–0.89 g/cm³).
@@ -191,9 +251,13 @@ const ISO_VG: [(&str, f64, f64, &str); 4] = [
     ),
 ];
 
+/// Id of the glycol–water library fluid.
+const GLYCOL_WATER_ID: &str = "ethylene-glycol-water-50";
+
 /// The ids of the library's fluids.
 pub fn library_ids() -> Vec<&'static str> {
-    std::iter::once("water")
+    ["water", GLYCOL_WATER_ID]
+        .into_iter()
         .chain(ISO_VG.iter().map(|g| g.0))
         .collect()
 }
@@ -205,6 +269,15 @@ pub fn library(id: &str) -> Option<LibraryFluid> {
             id: "water",
             law: ViscosityLaw::Water,
             source: WATER_SOURCE,
+            liquid_range: Some(WATER_LIQUID),
+        });
+    }
+    if id == GLYCOL_WATER_ID {
+        return Some(LibraryFluid {
+            id: GLYCOL_WATER_ID,
+            law: ViscosityLaw::Vogel(GLYCOL_WATER_50),
+            source: GLYCOL_WATER_50.source,
+            liquid_range: Some(GLYCOL_WATER_LIQUID),
         });
     }
     let &(id, nu40, nu100, source) = ISO_VG.iter().find(|g| g.0 == id)?;
@@ -219,6 +292,8 @@ pub fn library(id: &str) -> Option<LibraryFluid> {
         id,
         law: ViscosityLaw::Walther(walther),
         source,
+        // a mineral oil's pour point is a property of the product, not of its grade
+        liquid_range: None,
     })
 }
 
@@ -417,6 +492,31 @@ mod tests {
         assert!(library("iso-vg-47").is_none());
         // an oil that thickens when heated is refused
         assert!(Walther::through(6.8e-6, 46e-6, 870.0, 6.4e-4, "").is_none());
+    }
+
+    #[test]
+    fn glycol_water_vogel_fit_reproduces_its_source_table() {
+        // the Engineering ToolBox table, 50 % by volume (GLYCOL_WATER_POINTS): the fit is
+        // within 2.4 % of every point (least squares in ln η; largest at 93.3 °C)
+        let mut worst: f64 = 0.0;
+        for (kelvin, eta) in GLYCOL_WATER_POINTS {
+            let e = rel(GLYCOL_WATER_50.dynamic(kelvin), eta);
+            assert!(e < 0.025, "{kelvin} K: {e}");
+            worst = worst.max(e);
+        }
+        assert!(worst > 0.02, "the stated error is the fit's: {worst}");
+        // the library fluid is that law, with its liquid range
+        let f = library("ethylene-glycol-water-50").unwrap();
+        assert_eq!(f.law, ViscosityLaw::Vogel(GLYCOL_WATER_50));
+        assert_eq!(f.liquid_range, Some((236.15, 379.15)));
+        assert_eq!(library("water").unwrap().liquid_range, Some(WATER_LIQUID));
+        // the law is monotone (thins when heated) over the liquid range
+        let mut last = f64::INFINITY;
+        for k in 0..=143 {
+            let eta = GLYCOL_WATER_50.dynamic(236.15 + k as f64);
+            assert!(eta < last);
+            last = eta;
+        }
     }
 
     #[test]

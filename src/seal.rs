@@ -146,6 +146,71 @@ impl SealGeometry {
     }
 }
 
+/// The rubber's equilibrium volume swell in the fluid: ΔV/V0 of ASTM D471 (the volume change of
+/// a specimen immersed in the fluid to equilibrium), −0.5 < ΔV/V0 (docs/model.md §3.8).
+///
+/// * Dimensions: the swell is isotropic, so every free length of the rubber is stretched by
+///   `λ_s = (1 + ΔV/V0)^{1/3}` — a free linear strain `λ_s − 1` like the thermal one
+///   ([`ThermalStrain`]): the cord d → λ_s d (and a groove-seated ring's inside diameter
+///   with it), and the squeeze at a fixed gland depth h = (1 − ε0) d becomes
+///   `ε_s = 1 − (1 − ε0)/λ_s` ([`VolumeSwell::squeeze`]).
+/// * Modulus: the shear modulus of a swollen network, referred to the swollen dimensions, is
+///   `G = G_dry v2^{1/3}`, `v2 = 1/(1 + ΔV/V0)` the polymer's volume fraction (Treloar, *The
+///   Physics of Rubber Elasticity*, 3rd ed., Oxford 1975, ch. 7: the swollen network's
+///   stress–strain relation; Flory, *Principles of Polymer Chemistry*, 1953, ch. XIII), so
+///   every Prony modulus is scaled by `(1 + ΔV/V0)^{−1/3} = 1/λ_s` ([`VolumeSwell::modulus_factor`]).
+///   For shrinkage (ΔV/V0 < 0: plasticiser extracted by the fluid) that relation does not
+///   apply — the lost volume is plasticiser, not a swelling liquid, and such a compound
+///   usually hardens by an amount the volume change does not fix — so only the dimensional
+///   change is applied and the modulus is left as it is (factor 1).
+///
+/// Applied from t = 0 (the equilibrium swell); real swell develops over hours to days.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct VolumeSwell {
+    /// ΔV/V0 (dimensionless; > −0.5).
+    pub volume_change: f64,
+}
+
+impl VolumeSwell {
+    /// The linear stretch `λ_s = (1 + ΔV/V0)^{1/3}`.
+    pub fn linear_stretch(&self) -> f64 {
+        (1.0 + self.volume_change).cbrt()
+    }
+
+    /// The factor on the moduli: `(1 + ΔV/V0)^{−1/3}` for a swell, 1 for a shrinkage.
+    pub fn modulus_factor(&self) -> f64 {
+        if self.volume_change > 0.0 {
+            1.0 / self.linear_stretch()
+        } else {
+            1.0
+        }
+    }
+
+    /// The squeeze of the swollen cord in the gland that squeezed the dry one by `squeeze`:
+    /// `ε_s = 1 − (1 − ε0)/λ_s`.
+    pub fn squeeze(&self, squeeze: f64) -> f64 {
+        1.0 - (1.0 - squeeze) / self.linear_stretch()
+    }
+
+    /// An O-ring squeezed between plates, swollen: cord λ_s d, squeeze [`VolumeSwell::squeeze`];
+    /// the mean diameter (where the ring sits) is kept. A flat seal is unchanged (its nominal
+    /// pressure is given).
+    pub fn geometry(&self, geometry: SealGeometry) -> SealGeometry {
+        match geometry {
+            SealGeometry::ORing {
+                cross_section,
+                mean_diameter,
+                squeeze,
+            } => SealGeometry::ORing {
+                cross_section: cross_section * self.linear_stretch(),
+                mean_diameter,
+                squeeze: self.squeeze(squeeze),
+            },
+            flat @ SealGeometry::Flat { .. } => flat,
+        }
+    }
+}
+
 /// Thermal strain of an O-ring: the cord expands with the rubber's free strain e_r(T), the
 /// groove depth with the housing's CTE: `ε(T) = 1 − (1 − ε0)(1 + α_h ΔT)/(1 + e_r(T))`,
 /// ΔT = T − T_install ([`SealGeometry::squeeze_at`]).
@@ -466,6 +531,46 @@ mod tests {
             assert!((ring.squeeze_at(Some(&th), t) - today).abs() < 1e-15, "{t}");
             assert_eq!(ring.squeeze_at(Some(&plain), t), today, "{t}");
         }
+    }
+
+    #[test]
+    fn volume_swell_stretches_the_cord_and_softens_the_network() {
+        // 20 % swell: λ_s = 1.2^{1/3} = 1.062659, moduli × 1/λ_s = 0.941036
+        let s = VolumeSwell { volume_change: 0.2 };
+        assert!((s.linear_stretch() - 1.062_659).abs() < 1e-6);
+        assert!((s.modulus_factor() - 0.941_036).abs() < 1e-6);
+        // a 20 % squeeze: h/d = 0.8 → ε = 1 − 0.8/1.062659 = 0.247172
+        let ring = SealGeometry::ORing {
+            cross_section: 3.53e-3,
+            mean_diameter: 0.05,
+            squeeze: 0.2,
+        };
+        let SealGeometry::ORing {
+            cross_section,
+            mean_diameter,
+            squeeze,
+        } = s.geometry(ring)
+        else {
+            panic!()
+        };
+        assert!((squeeze - 0.247_172).abs() < 1e-6, "{squeeze}");
+        assert!((cross_section / 3.53e-3 - 1.062_659).abs() < 1e-6);
+        assert_eq!(mean_diameter, 0.05);
+        // the gland depth is kept: (1 − ε) d is the dry one's
+        assert!(((1.0 - squeeze) * cross_section - 0.8 * 3.53e-3).abs() < 1e-15);
+        // shrinkage: the dimensions only
+        let shrink = VolumeSwell {
+            volume_change: -0.1,
+        };
+        assert_eq!(shrink.modulus_factor(), 1.0);
+        assert!(shrink.squeeze(0.2) < 0.2);
+        // a flat seal is unchanged
+        let flat = SealGeometry::Flat {
+            nominal_pressure: 1e6,
+            width: 1e-3,
+            length: 0.1,
+        };
+        assert_eq!(s.geometry(flat), flat);
     }
 
     #[test]

@@ -96,6 +96,26 @@ impl Prony {
         Prony::new(modulus, &[])
     }
 
+    /// The series with every modulus (E∞ and each E_i) multiplied by `factor` (> 0) and the
+    /// relaxation times kept: a uniformly softened or stiffened network (e.g. a swollen one,
+    /// [`crate::seal::VolumeSwell::modulus_factor`]).
+    pub fn scaled(&self, factor: f64) -> Prony {
+        let terms: Vec<PronyTerm> = self
+            .terms
+            .iter()
+            .map(|t| PronyTerm {
+                modulus: t.modulus * factor,
+                tau: t.tau,
+            })
+            .collect();
+        Prony {
+            long_term: self.long_term * factor,
+            moduli: terms.iter().map(|t| t.modulus).collect(),
+            rates: self.rates.clone(),
+            terms,
+        }
+    }
+
     /// Long-term (relaxed) modulus E∞ \[Pa\].
     pub fn long_term(&self) -> f64 {
         self.long_term

@@ -22,7 +22,7 @@ use super::life::{HousingExpansion, SealSpec};
 use super::raw::{Quantity, RawSeal};
 use super::validate::{Bound, Field, field};
 use crate::gland::{GlandDesign, GlandError, GlandKind, Locator, MAX_FILL_GUIDANCE, Ring};
-use crate::seal::SealGeometry;
+use crate::seal::{SealGeometry, VolumeSwell};
 use crate::simulate::Loading;
 use crate::units::{Dimension, show};
 use std::ops::Range;
@@ -108,6 +108,7 @@ impl Source<'_> {
         kind: GlandKind,
         gland_span: Range<usize>,
         loading: Loading,
+        swell: Option<&VolumeSwell>,
     ) -> Result<SealSpec, ScenarioError> {
         let raw = table.get_ref();
         let a_gland = format!("a {} gland", kind.name());
@@ -379,9 +380,37 @@ impl Source<'_> {
                 ),
             ));
         }
-        let installed = design
-            .installed()
-            .map_err(|e| self.gland_error(&e, depth_span.clone(), depth_key, table, locator_key))?;
+        // the fluid's volume swell (docs/model.md §3.8): the ring's free dimensions × λ_s in
+        // the gland designed for the dry ring (its depth, from groove_depth or the dry squeeze)
+        let swollen = swell.map_or(String::new(), |s| {
+            let l = s.linear_stretch();
+            design.ring.cross_section *= l;
+            design.ring.cross_section_tolerance *= l;
+            design.ring.inner_diameter *= l;
+            design.ring.inner_diameter_tolerance *= l;
+            format!(
+                " (the ring swollen by the fluid's volume_swell of {} %: its free dimensions × {})",
+                show(100.0 * s.volume_change),
+                show(l)
+            )
+        });
+        let with_swell = |e: ScenarioError| match e {
+            ScenarioError::Invalid {
+                path,
+                line,
+                key,
+                message,
+            } => ScenarioError::Invalid {
+                path,
+                line,
+                key,
+                message: format!("{message}{swollen}"),
+            },
+            other => other,
+        };
+        let installed = design.installed().map_err(|e| {
+            with_swell(self.gland_error(&e, depth_span.clone(), depth_key, table, locator_key))
+        })?;
 
         let mut warnings = Vec::new();
         let range = design
@@ -417,7 +446,7 @@ impl Source<'_> {
                     format!(
                         "gland fill {} % at maximum material condition (nominal {} %) is above \
                          the 90 % guidance (Parker, gland overfill): little room for thermal \
-                         expansion or swell [docs/model.md §6.2]",
+                         expansion or swell{swollen} [docs/model.md §6.2]",
                         show((1000.0 * fill).round() / 10.0),
                         show((1000.0 * installed.fill).round() / 10.0)
                     ),

@@ -12,7 +12,7 @@ use crate::gland::{Gland, GlandDesign, Housing};
 use crate::leak::Fidelity;
 use crate::material::shift::{Cycle, DAY, YEAR};
 use crate::material::{Ageing, BALANCED_CROSSLINKING, Material, Shift, TemperatureHistory};
-use crate::seal::SealGeometry;
+use crate::seal::{SealGeometry, VolumeSwell};
 use crate::simulate::{FailureCriteria, Loading, ThermalStrain, TimeGrid};
 use crate::units::{Dimension, show};
 use std::path::PathBuf;
@@ -216,8 +216,14 @@ const ORING_KEYS: &str = "cross_section, mean_diameter, squeeze, loading, housin
                           and groove keys";
 
 impl Source<'_> {
-    /// `[seal]`: `kind = "flat"` (default) or `"o-ring"`.
-    pub(super) fn seal(&self, table: &Spanned<RawSeal>) -> Result<SealSpec, ScenarioError> {
+    /// `[seal]`: `kind = "flat"` (default) or `"o-ring"`; an O-ring swollen by the fluid's
+    /// `swell` (docs/model.md §3.8): the cord (and a seated ring's inside diameter) × λ_s in the
+    /// same gland.
+    pub(super) fn seal(
+        &self,
+        table: &Spanned<RawSeal>,
+        swell: Option<&VolumeSwell>,
+    ) -> Result<SealSpec, ScenarioError> {
         let raw = table.get_ref();
         let kind = raw.kind.as_ref().map_or("flat", |k| k.get_ref().as_str());
         // the kind with its article, for the messages (the other kinds are rejected below)
@@ -322,7 +328,7 @@ impl Source<'_> {
                 )?;
                 if let Some(gland) = &raw.gland {
                     let kind = self.gland_kind(gland)?;
-                    return self.gland_seal(table, kind, gland.span(), loading);
+                    return self.gland_seal(table, kind, gland.span(), loading, swell);
                 }
                 for (key, span) in super::gland::gland_only_keys(raw) {
                     if let Some(span) = span {
@@ -368,12 +374,13 @@ impl Source<'_> {
                     Some(q) => Some(self.absolute_temperature(q, "seal.installation_temperature")?),
                     None => None,
                 };
+                let geometry = SealGeometry::ORing {
+                    cross_section,
+                    mean_diameter,
+                    squeeze,
+                };
                 Ok(SealSpec {
-                    geometry: SealGeometry::ORing {
-                        cross_section,
-                        mean_diameter,
-                        squeeze,
-                    },
+                    geometry: swell.map_or(geometry, |s| s.geometry(geometry)),
                     gland: None,
                     energisation_factor: 0.0,
                     loading,

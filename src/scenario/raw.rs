@@ -196,6 +196,8 @@ pub(super) struct RawFluid {
     pub density: Option<Quantity>,
     pub thermal_expansion: Option<Quantity>,
     pub pressure_difference: Quantity,
+    /// ASTM D471 equilibrium volume change ΔV/V0 of the compound in this fluid.
+    pub volume_swell: Option<Quantity>,
 }
 
 /// `[seal]`: a flat seal (`nominal_pressure`, `width`, `length`) or an O-ring

@@ -11,14 +11,14 @@ use super::raw::{
 };
 use super::{height_map, psd};
 use crate::contact::ContactSettings;
-use crate::fluid::{Fluid, MINERAL_OIL_EXPANSION, ViscosityLaw, WATER_LIQUID, Walther};
+use crate::fluid::{Fluid, LibraryFluid, MINERAL_OIL_EXPANSION, ViscosityLaw, Walther};
 use crate::leak::{FlatSeal, StaticProblem};
 use crate::material::Material;
 use crate::numerical::reference::NumericalSettings;
 use crate::numerical::{HeightMap, psd as map_psd};
-use crate::seal::{Profile, SealGeometry};
-use crate::simulate::GrooveInterface;
+use crate::seal::{Profile, SealGeometry, VolumeSwell};
 use crate::simulate::LifeProblem;
+use crate::simulate::{AsperityModulus, GrooveInterface};
 use crate::surface::Spectrum;
 use crate::units::{self, Dimension, show};
 use toml::Spanned;
@@ -177,6 +177,14 @@ const FLUID_EXPANSION: Field = field(
     "1/K",
     Bound::Range(0.0, 1e-2),
 );
+const VOLUME_SWELL: Field = field(
+    "fluid.volume_swell",
+    Dimension::DIMENSIONLESS,
+    "",
+    Bound::Open(-0.5, 2.0),
+);
+/// ΔV/V0 above which a swell is out of seal practice (a warning): ≈ +30 %.
+const SWELL_PRACTICE: f64 = 0.30;
 const PRESSURE_DIFFERENCE: Field = field(
     "fluid.pressure_difference",
     Dimension::PRESSURE,
@@ -227,6 +235,33 @@ const NUMERICAL_SEED: Field = field(
     Bound::Closed(0.0, 9_007_199_254_740_992.0),
 );
 
+/// The compound swollen by `swell` (docs/model.md §3.8): every Prony modulus, and a fixed
+/// asperity modulus, × [`VolumeSwell::modulus_factor`].
+fn swollen_material(
+    mut material: Material,
+    asperity: AsperityModulus,
+    swell: &VolumeSwell,
+) -> (Material, AsperityModulus) {
+    let factor = swell.modulus_factor();
+    if factor == 1.0 {
+        return (material, asperity);
+    }
+    material.prony = material.prony.scaled(factor);
+    material.provenance.push((
+        "prony".to_owned(),
+        format!(
+            "× {} for the fluid's {} % volume swell (G ∝ v2^(1/3), Treloar)",
+            show(factor),
+            show(100.0 * swell.volume_change)
+        ),
+    ));
+    let asperity = match asperity {
+        AsperityModulus::Fixed(e) => AsperityModulus::Fixed(e * factor),
+        other => other,
+    };
+    (material, asperity)
+}
+
 /// 20 °C \[K\]: where a law's viscosity is first evaluated (the installation temperature
 /// replaces it once the environment is known).
 const ROOM_TEMPERATURE: f64 = 293.15;
@@ -249,9 +284,14 @@ impl Source<'_> {
         // An inline material without a name is called after the scenario.
         let (material, elastic, asperity_modulus) =
             self.scenario_material(&raw.material, &name, replacement)?;
+        let swell = self.volume_swell(&raw.fluid)?;
+        let (material, asperity_modulus) = match &swell {
+            Some((s, _)) => swollen_material(material, asperity_modulus, s),
+            None => (material, asperity_modulus),
+        };
         let (spectrum, height_map) = self.surface(&raw.surface)?;
         let fluid = self.fluid(&raw.fluid)?;
-        let seal = self.seal(&raw.seal)?;
+        let seal = self.seal(&raw.seal, swell.as_ref().map(|s| &s.0))?;
         let installation_time = self.installation_time(&raw.seal)?;
         let groove = self.groove_surface(raw.groove_surface.as_ref(), seal.gland.is_some())?;
         let (contact, shape_factor) = match &raw.model {
@@ -299,27 +339,60 @@ impl Source<'_> {
             motion,
         };
         let mut warnings = seal.warnings;
-        if let (ViscosityLaw::Water, Some(library)) = (&fluid.law, &raw.fluid.get_ref().library) {
+        let known = raw
+            .fluid
+            .get_ref()
+            .library
+            .as_ref()
+            .and_then(|l| crate::fluid::library(l.get_ref()).map(|f| (l, f)));
+        if let Some((
+            library,
+            LibraryFluid {
+                id,
+                liquid_range: Some((melting, boiling)),
+                ..
+            },
+        )) = known
+        {
             let (lo, hi) = life.environment.range();
-            let (melting, boiling) = WATER_LIQUID;
             if lo < melting || hi > boiling {
                 warnings.push(
                     self.error(
                         library.span(),
                         "fluid.library",
                         format!(
-                            "the temperature reaches {}–{} K, but water is liquid at 1 atm only \
-                             from {} to {} K (it freezes or boils): the water viscosity there is \
-                             an extrapolation [docs/model.md §3.7]",
+                            "the temperature reaches {}–{} K, but {id} is liquid at 1 atm only \
+                             from {} to {} K (it freezes or boils): {} K below / {} K above; \
+                             the viscosity law there is an extrapolation [docs/model.md §3.7]",
                             show(lo),
                             show(hi),
                             show(melting),
-                            show(boiling)
+                            show(boiling),
+                            show((melting - lo).max(0.0)),
+                            show((hi - boiling).max(0.0)),
                         ),
                     )
                     .to_string(),
                 );
             }
+        }
+        if let Some((swell, span)) = &swell
+            && swell.volume_change > SWELL_PRACTICE
+        {
+            warnings.push(
+                self.error(
+                    span.clone(),
+                    VOLUME_SWELL.key,
+                    format!(
+                        "{} % volume swell is beyond seal practice (≈ {} %: the compound is \
+                             not compatible with this fluid); the swell relations are applied \
+                             as given [docs/model.md §3.8]",
+                        show(100.0 * swell.volume_change),
+                        show(100.0 * SWELL_PRACTICE)
+                    ),
+                )
+                .to_string(),
+            );
         }
         if let (None, Some(own)) = (&life.ageing, &material.ageing) {
             // the compound's data say it ages: an engineer should see that this run does not
@@ -456,6 +529,19 @@ impl Source<'_> {
         field: &Field,
     ) -> Result<Option<f64>, ScenarioError> {
         raw.map(|q| self.quantity(q, field)).transpose()
+    }
+
+    /// `[fluid] volume_swell`: the compound's ASTM D471 ΔV/V0 in this fluid (−50 % < ΔV/V0 <
+    /// 200 %), `None` when absent or zero (a zero swell changes nothing).
+    fn volume_swell(
+        &self,
+        table: &Spanned<RawFluid>,
+    ) -> Result<Option<(VolumeSwell, std::ops::Range<usize>)>, ScenarioError> {
+        let Some(q) = &table.get_ref().volume_swell else {
+            return Ok(None);
+        };
+        let volume_change = self.quantity(q, &VOLUME_SWELL)?;
+        Ok((volume_change != 0.0).then(|| (VolumeSwell { volume_change }, q.span())))
     }
 
     /// `[fluid]`: the pressure difference and the viscosity, one of `viscosity` (constant),

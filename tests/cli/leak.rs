@@ -617,7 +617,7 @@ fn an_unknown_library_fluid_lists_the_known_ones() {
         &[],
         &[
             "scenario.toml:11: fluid.library: unknown fluid \"iso-vg-47\"",
-            "water, iso-vg-32, iso-vg-46, iso-vg-68, iso-vg-100",
+            "water, ethylene-glycol-water-50, iso-vg-32, iso-vg-46, iso-vg-68, iso-vg-100",
         ],
     );
 }

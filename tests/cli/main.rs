@@ -12,6 +12,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 mod support;
+mod swell;
 
 mod ageing_fit;
 mod engineering_units;

@@ -1,0 +1,132 @@
+//! End-to-end: `[fluid] volume_swell` (docs/model.md §3.8) — zero swell changes nothing, a
+//! swell that overfills the gland is reported, bad input exits 2 naming file, line and key.
+
+use crate::support::sealsim;
+use std::fs;
+
+/// A piston-gland scenario; `[fluid]` at line 9, its last key at line 11.
+const PISTON: &str = r#"name = "piston gland"
+[material]
+library = "nbr-70"
+[surface]
+rms_roughness = "0.8 um"
+hurst_exponent = 0.7
+q0 = "3e5 1/m"
+q1 = "1e10 1/m"
+[fluid]
+viscosity = "1 mPa*s"
+pressure_difference = "2 bar"
+[seal]
+kind = "o-ring"
+gland = "piston"
+size = "AS568-214"
+bore_diameter = "31.75 mm"
+groove_depth = "2.85 mm"
+groove_width = "4.7 mm"
+diametral_clearance = "0.1 mm"
+[simulation]
+duration = "1 year"
+"#;
+
+/// `sealsim run` on `text` with `swell` added to `[fluid]`: (status, stdout, stderr, the
+/// history CSV if written).
+fn run(swell: Option<&str>) -> (Option<i32>, String, String, Option<String>) {
+    let text = match swell {
+        Some(s) => PISTON.replace(
+            "pressure_difference = \"2 bar\"",
+            &format!("pressure_difference = \"2 bar\"\nvolume_swell = {s}"),
+        ),
+        None => PISTON.to_owned(),
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let scenario = dir.path().join("s.toml");
+    fs::write(&scenario, text).unwrap();
+    let csv = dir.path().join("h.csv");
+    let out = sealsim()
+        .arg("run")
+        .arg(&scenario)
+        .arg("-o")
+        .arg(&csv)
+        .output()
+        .unwrap();
+    let path = scenario.display().to_string();
+    let text = |b: Vec<u8>| String::from_utf8(b).unwrap().replace(&path, "s.toml");
+    (
+        out.status.code(),
+        text(out.stdout),
+        text(out.stderr),
+        fs::read_to_string(&csv).ok(),
+    )
+}
+
+#[test]
+fn zero_swell_changes_nothing_bit_for_bit() {
+    let (code, stdout, stderr, csv) = run(None);
+    assert_eq!(code, Some(0), "{stderr}");
+    for zero in ["0", "\"0 %\""] {
+        let (c, s, e, h) = run(Some(zero));
+        assert_eq!(c, Some(0), "{e}");
+        assert_eq!(s, stdout);
+        assert_eq!(e, stderr);
+        assert_eq!(h, csv, "the history must be bit-identical");
+    }
+}
+
+#[test]
+fn a_swell_raises_the_squeeze_and_softens_the_ring() {
+    let (_, dry, _, _) = run(None);
+    let (code, swollen, stderr, _) = run(Some("\"8 %\""));
+    assert_eq!(code, Some(0), "{stderr}");
+    // dry: ε = 17.9 % (tests/cli/gland.rs); swollen by 8 %, the seated cord is larger
+    assert!(dry.contains("squeeze 17.9 %"), "{dry}");
+    assert!(!swollen.contains("squeeze 17.9 %"), "{swollen}");
+    // the leak changes (a bigger squeeze, a softer network)
+    let leak = |s: &str| {
+        s.lines()
+            .find(|l| l.starts_with("leak rate"))
+            .unwrap()
+            .to_owned()
+    };
+    assert_ne!(leak(&dry), leak(&swollen));
+}
+
+#[test]
+fn a_swell_that_overfills_the_gland_is_reported() {
+    // the dry ring fills the groove below the 90 % guidance; swollen by 40 % it does not fit
+    let (_, _, dry, _) = run(None);
+    assert!(!dry.contains("gland fill"), "{dry}");
+    let (code, stdout, stderr, csv) = run(Some("\"40 %\""));
+    assert_eq!(code, Some(2), "{stdout}{stderr}");
+    assert!(csv.is_none(), "nothing is written");
+    assert!(
+        stderr.contains("s.toml:1") && stderr.contains("seal.groove_width"),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains("does not fit") && stderr.contains("volume_swell of 40 %"),
+        "{stderr}"
+    );
+    // 20 %: it fits, above the 90 % guidance, warned with the swell named
+    let (code, _, stderr, _) = run(Some("0.2"));
+    assert_eq!(code, Some(0), "{stderr}");
+    assert!(
+        stderr.contains("gland fill") && stderr.contains("volume_swell of 20 %"),
+        "{stderr}"
+    );
+    // and beyond ≈ 30 % it is out of seal practice
+    assert!(!stderr.contains("beyond seal practice"), "{stderr}");
+}
+
+#[test]
+fn bad_swell_exits_2_with_file_line_and_key() {
+    for bad in ["\"-80 %\"", "\"500 %\"", "\"8 mm\"", "\"lots\""] {
+        let (code, stdout, stderr, csv) = run(Some(bad));
+        assert_eq!(code, Some(2), "{bad}: {stdout}{stderr}");
+        assert!(csv.is_none(), "{bad}: nothing is written");
+        assert!(
+            stderr.contains("s.toml:12") && stderr.contains("fluid.volume_swell"),
+            "{bad}: {stderr}"
+        );
+        assert!(!stderr.contains("panicked"), "{bad}: {stderr}");
+    }
+}
