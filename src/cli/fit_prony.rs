@@ -5,8 +5,13 @@
 use super::{CliError, write_output};
 use crate::material::csr::{Normalisation, TestPiece};
 use crate::material::fit::{Fit, FitError, FitSettings, Regularisation, fit_dma, fit_relaxation};
+use crate::material::tts::{
+    Isotherm as TtsIsotherm, MasterCurve, ShiftLaw, TtsError, TtsSettings, master_curve,
+};
 use crate::material::{Material, Shift, Status};
+use crate::report::master_curve::{law_text, master_chart, shift_chart, text as master_text};
 use crate::report::material_toml::material_toml;
+use crate::report::plot::LogLogChart;
 use crate::scenario::fit_data::{FitData, FitKind, Isotherm, Measured, read_fit_data, show_kelvin};
 use crate::units::{Dimension, parse_quantity, parse_temperature, show};
 use clap::builder::NonEmptyStringValueParser;
@@ -69,6 +74,42 @@ pub struct FitPronyArgs {
 
     #[command(flatten)]
     pub csr: CsrArgs,
+
+    #[command(flatten)]
+    pub tts: TtsArgs,
+}
+
+/// Time–temperature superposition of relaxation data at several temperatures
+/// (`crate::material::tts`).
+#[derive(Debug, Clone, Default, Args)]
+#[command(next_help_heading = "Master curves (data with a temperature column)")]
+pub struct TtsArgs {
+    /// The shift law fitted to the shift factors \[default: wlf when the data have several
+    /// temperatures\].
+    #[arg(long, value_enum)]
+    pub shift: Option<ShiftArg>,
+
+    /// Reference temperature of the master curve and the law (e.g. 23C) \[default: the data
+    /// temperature nearest their median\].
+    #[arg(long, value_name = "T")]
+    pub reference_temperature: Option<String>,
+
+    /// Write the shifted data on the master curve (SVG) to FILE.
+    #[arg(long, value_name = "FILE.svg")]
+    pub plot_master: Option<PathBuf>,
+
+    /// Write the shift factors a_T against T with the fitted law (SVG) to FILE.
+    #[arg(long, value_name = "FILE.svg")]
+    pub plot_shift: Option<PathBuf>,
+}
+
+/// `--shift` values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ShiftArg {
+    /// Williams–Landel–Ferry: log10 a_T = −C1 (T − Tref)/(C2 + T − Tref).
+    Wlf,
+    /// Arrhenius: ln a_T = (Ea/R)(1/T − 1/Tref).
+    Arrhenius,
 }
 
 /// How a compression-stress-relaxation force (or retained force) becomes a modulus
@@ -179,14 +220,30 @@ pub fn run(args: FitPronyArgs) -> Result<(), CliError> {
             temperature_column,
         } => {
             let normalisation = normalisation(&args.csr, *measured, isotherms)?;
+            if isotherms.len() > 1 {
+                return master(
+                    &args,
+                    &settings,
+                    isotherms,
+                    normalisation.as_ref(),
+                    *measured,
+                );
+            }
             let [isotherm] = isotherms.as_slice() else {
+                return Err(CliError::Internal("a data file without points".into()));
+            };
+            if tts_given(&args.tts) {
                 let (line, column) = temperature_column.unwrap_or((1, 1));
                 return Err(CliError::Input(format!(
-                    "{source}:{line}:{column}: {} temperatures: master curves (time–temperature \
-                     superposition) are not available yet; give one temperature",
-                    isotherms.len()
+                    "{source}:{line}:{column}: {}: --shift, --reference-temperature and the \
+                     master-curve plots need relaxation data at two or more temperatures (a \
+                     temperature column)",
+                    match isotherm.temperature {
+                        Some(t) => format!("one temperature ({})", show_kelvin(t)),
+                        None => "no temperature column".into(),
+                    }
                 )));
-            };
+            }
             if let (Some(t), Some(_)) = (isotherm.temperature, stated_temperature) {
                 return Err(CliError::Input(format!(
                     "--temperature: the data give their temperature ({}) in a column",
@@ -210,6 +267,14 @@ pub fn run(args: FitPronyArgs) -> Result<(), CliError> {
             storage,
             loss,
         } => {
+            if tts_given(&args.tts) {
+                return Err(CliError::Input(
+                    "--shift, --reference-temperature and the master-curve plots need \
+                     relaxation data at several temperatures; DMA data are fitted as a master \
+                     curve already shifted"
+                        .into(),
+                ));
+            }
             if csr_given(&args.csr) {
                 return Err(CliError::Input(
                     "--test-piece, --squeeze, --reference-modulus etc. convert CSR forces; DMA \
@@ -263,6 +328,172 @@ pub fn run(args: FitPronyArgs) -> Result<(), CliError> {
         );
     }
     write_output(args.output.as_deref(), text.as_bytes())
+}
+
+/// Whether any master-curve flag was given.
+fn tts_given(t: &TtsArgs) -> bool {
+    t.shift.is_some()
+        || t.reference_temperature.is_some()
+        || t.plot_master.is_some()
+        || t.plot_shift.is_some()
+}
+
+/// `fit-prony` on data at several temperatures: the master curve, its material file and
+/// plots (written only when everything has been computed).
+fn master(
+    args: &FitPronyArgs,
+    settings: &FitSettings,
+    isotherms: &[Isotherm],
+    normalisation: Option<&Normalisation>,
+    measured: Measured,
+) -> Result<(), CliError> {
+    let source = args.data.display().to_string();
+    if args.temperature.is_some() {
+        return Err(CliError::Input(
+            "--temperature: the data give their temperatures in a column".into(),
+        ));
+    }
+    let reference = args
+        .tts
+        .reference_temperature
+        .as_deref()
+        .map(parse_temperature)
+        .transpose()
+        .map_err(|e| CliError::Input(format!("--reference-temperature: {e}")))?;
+    let law = match args.tts.shift.unwrap_or(ShiftArg::Wlf) {
+        ShiftArg::Wlf => ShiftLaw::Wlf,
+        ShiftArg::Arrhenius => ShiftLaw::Arrhenius,
+    };
+    let data: Vec<TtsIsotherm> = isotherms
+        .iter()
+        .map(|i| TtsIsotherm {
+            temperature: i.temperature.unwrap_or(f64::NAN),
+            times: i.times.clone(),
+            moduli: match normalisation {
+                Some(n) => n.moduli(&i.values),
+                None => i.values.clone(),
+            },
+        })
+        .collect();
+    let m = master_curve(
+        &data,
+        &TtsSettings {
+            law,
+            reference,
+            fit: *settings,
+        },
+    )
+    .map_err(|e| match e {
+        TtsError::Fit(FitError::Solver(_) | FitError::Degenerate(_)) => {
+            CliError::Internal(format!("{source}: {e}"))
+        }
+        _ => CliError::Input(format!("{source}: {e}")),
+    })?;
+    let name = args
+        .name
+        .clone()
+        .unwrap_or_else(|| default_name(&args.data));
+    let mut material = fitted_material(name, &m.fit, &source, args.terms_per_decade);
+    material.shift = m.shift;
+    material.data_reduced_time = Some(m.window);
+    material.data_temperature = Some(m.temperature_range);
+    let superposition = format!(
+        "master curve at {:.2} K by time–temperature superposition of {} isotherms \
+         ({:.2}–{:.2} K, horizontal shifts only)",
+        m.reference,
+        m.shifts.len(),
+        m.temperature_range.0,
+        m.temperature_range.1
+    );
+    let mut note = format!("; {superposition}");
+    if let Some(n) = normalisation {
+        note.push_str(&format!(
+            "; moduli from the {} by {}",
+            measured.describe(),
+            describe(n)
+        ));
+    }
+    for (key, text) in material.provenance.iter_mut() {
+        if key == "prony" || key == "long_term_modulus" {
+            text.push_str(&note);
+        }
+    }
+    material.provenance.push((
+        "shift".into(),
+        format!(
+            "fitted by sealsim fit-prony on {} to the shift factors of {source}: {}",
+            fit_date(),
+            law_text(&m)
+        ),
+    ));
+    material.provenance.push((
+        "data_temperature".into(),
+        format!("the test temperatures of {source}"),
+    ));
+    let text = format!(
+        "# Prony series of the master curve fitted by sealsim fit-prony to relaxation data at \
+         {} temperatures in {source} ({} points).\n\
+         # E(t) = E∞ + Σ E_i exp(−ξ/τ_i) in reduced time ξ at the reference temperature of \
+         [material.shift].\n{}",
+        m.shifts.len(),
+        m.reduced.len(),
+        material_toml(&material)
+    );
+    let svg = |path: &Option<PathBuf>, chart: fn(&str, &MasterCurve) -> LogLogChart| {
+        path.as_ref()
+            .map(|_| {
+                chart(&source, &m)
+                    .to_svg()
+                    .map_err(|e| CliError::Internal(e.to_string()))
+            })
+            .transpose()
+    };
+    let master_svg = svg(&args.tts.plot_master, master_chart)?;
+    let shift_svg = svg(&args.tts.plot_shift, shift_chart)?;
+    eprint!("{}", master_text(&source, &m));
+    print_summary(&source, &m.fit);
+    if let Some(n) = normalisation {
+        print_normalisation(&source, n);
+    }
+    for (path, svg) in [
+        (&args.tts.plot_master, &master_svg),
+        (&args.tts.plot_shift, &shift_svg),
+    ] {
+        if let (Some(path), Some(svg)) = (path, svg) {
+            write_output(Some(path), svg.as_bytes())?;
+        }
+    }
+    write_output(args.output.as_deref(), text.as_bytes())
+}
+
+/// Today's date (UTC, `YYYY-MM-DD`) for provenance, or the date of `SOURCE_DATE_EPOCH` when
+/// set (the reproducible-builds convention), so that a pinned run writes the same bytes.
+fn fit_date() -> String {
+    let seconds = std::env::var("SOURCE_DATE_EPOCH")
+        .ok()
+        .and_then(|s| s.trim().parse::<i64>().ok())
+        .unwrap_or_else(|| {
+            std::time::SystemTime::now()
+                .duration_since(std::time::UNIX_EPOCH)
+                .map_or(0, |d| i64::try_from(d.as_secs()).unwrap_or(0))
+        });
+    let (y, m, d) = civil_from_days(seconds.div_euclid(86_400));
+    format!("{y:04}-{m:02}-{d:02}")
+}
+
+/// The proleptic Gregorian date of a day count from 1970-01-01 (H. Hinnant's
+/// `civil_from_days`, <http://howardhinnant.github.io/date_algorithms.html> — recalled).
+fn civil_from_days(days: i64) -> (i64, u32, u32) {
+    let z = days + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z - era * 146_097;
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let d = (doy - (153 * mp + 2) / 5 + 1) as u32;
+    let m = if mp < 10 { mp + 3 } else { mp - 9 } as u32;
+    let y = yoe + era * 400 + i64::from(m <= 2);
+    (y, m, d)
 }
 
 /// Whether any CSR flag was given.
@@ -665,5 +896,13 @@ mod tests {
         assert_eq!(m.provenance_of("long_term_modulus"), Some(p));
         assert_eq!(m.status, Status::User);
         assert_eq!(default_name(Path::new("dir/nbr-70.csv")), "nbr-70");
+    }
+
+    #[test]
+    fn civil_dates() {
+        assert_eq!(civil_from_days(0), (1970, 1, 1));
+        assert_eq!(civil_from_days(-1), (1969, 12, 31));
+        assert_eq!(civil_from_days(11_016), (2000, 2, 29));
+        assert_eq!(civil_from_days(20_781), (2026, 11, 24));
     }
 }

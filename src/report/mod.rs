@@ -6,6 +6,7 @@ pub mod ageing_fit;
 pub mod csv;
 pub mod findings;
 pub mod life;
+pub mod master_curve;
 pub mod material_toml;
 pub mod materials;
 pub mod plot;

@@ -63,6 +63,60 @@ mod svg {
         Some((10f64.powf(a), 10f64.powf(b)))
     }
 
+    /// Tick positions on a log x axis: the powers of 1, 2 and 5 in each decade when the range
+    /// spans a decade or more (thinned to at most 12); below a decade (a temperature axis,
+    /// 1/T of an Arrhenius chart) evenly spaced round values, which a log axis of plotters
+    /// would leave unlabelled.
+    fn x_ticks((lo, hi): (f64, f64)) -> Vec<f64> {
+        if !(lo > 0.0 && hi > lo) {
+            return vec![lo];
+        }
+        if hi / lo >= 10.0 {
+            let mut ticks = Vec::new();
+            let (a, b) = (lo.log10().floor() as i32, hi.log10().ceil() as i32);
+            let decades = (b - a).max(1) as usize;
+            let mantissas: &[f64] = if decades <= 3 {
+                &[1.0, 2.0, 5.0]
+            } else {
+                &[1.0]
+            };
+            let step = decades.div_ceil(12).max(1);
+            for k in (a..=b).step_by(step) {
+                for m in mantissas {
+                    let v = m * 10f64.powi(k);
+                    if v >= lo * (1.0 - 1e-12) && v <= hi * (1.0 + 1e-12) {
+                        ticks.push(v);
+                    }
+                }
+            }
+            return ticks;
+        }
+        // a round step giving 4–10 ticks
+        let raw = (hi - lo) / 6.0;
+        let magnitude = 10f64.powf(raw.log10().floor());
+        let step = [1.0, 2.0, 2.5, 5.0, 10.0]
+            .iter()
+            .map(|m| m * magnitude)
+            .find(|s| (hi - lo) / s <= 8.0)
+            .unwrap_or(10.0 * magnitude);
+        let first = (lo / step).ceil() * step;
+        (0..)
+            .map(|k| first + f64::from(k) * step)
+            .take_while(|v| *v <= hi * (1.0 + 1e-12))
+            .take(20)
+            .collect()
+    }
+
+    /// An x label: scientific over a decade or more, plain digits within one.
+    fn x_label(v: f64, (lo, hi): (f64, f64)) -> String {
+        if hi / lo >= 10.0 {
+            format!("{v:.0e}")
+        } else {
+            let digits = (-(((hi - lo) / 6.0).log10().floor()) as i32).clamp(0, 8) as usize;
+            format!("{v:.digits$}")
+        }
+    }
+
     /// Series with at most this many points get a marker at each point.
     const MARKED_POINTS: usize = 30;
 
@@ -124,7 +178,10 @@ mod svg {
                     .y_label_area_size(80)
                     // y is drawn as log10(y) on a linear axis: plotters' log-axis labels thin out
                     // over the 20+ decades a leak rate spans.
-                    .build_cartesian_2d((x.0..x.1).log_scale(), y_lo..y_hi)
+                    .build_cartesian_2d(
+                        (x.0..x.1).log_scale().with_key_points(x_ticks(x)),
+                        y_lo..y_hi,
+                    )
                     .map_err(err)?;
                 chart
                     .configure_mesh()
@@ -132,7 +189,7 @@ mod svg {
                     .y_desc(&self.y_label)
                     .x_labels(8)
                     .y_labels(y_ticks)
-                    .x_label_formatter(&|v| format!("{v:.1e}"))
+                    .x_label_formatter(&|v| x_label(*v, x))
                     .y_label_formatter(&|v| {
                         if (v - v.round()).abs() < 1e-9 {
                             format!("1e{}", v.round())

@@ -50,6 +50,10 @@ pub const PARAMETERS: [&str; 9] = [
     "ageing",
 ];
 
+/// Keys that may carry a provenance without requiring one: the windows of the data a series
+/// was fitted to (`fit-prony` says where its data temperature came from).
+pub const DATA_WINDOWS: [&str; 2] = ["data_reduced_time", "data_temperature"];
+
 const YOUNGS_MODULUS: Field = field(
     "material.youngs_modulus",
     Dimension::PRESSURE,
@@ -770,13 +774,15 @@ impl Source<'_> {
             entries.sort_by_key(|(_, value)| value.span().start);
             for (key, value) in entries {
                 let path = format!("material.provenance.{key}");
-                if !PARAMETERS.contains(&key.as_str()) {
+                if !PARAMETERS.contains(&key.as_str()) && !DATA_WINDOWS.contains(&key.as_str()) {
                     return Err(self.error(
                         value.span(),
                         &path,
                         format!(
-                            "unknown key `{key}`, expected one of the parameters {}",
-                            PARAMETERS.map(|p| format!("`{p}`")).join(", ")
+                            "unknown key `{key}`, expected one of the parameters {} (or the data \
+                             windows {})",
+                            PARAMETERS.map(|p| format!("`{p}`")).join(", "),
+                            DATA_WINDOWS.map(|p| format!("`{p}`")).join(", ")
                         ),
                     ));
                 }

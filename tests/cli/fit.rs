@@ -658,3 +658,153 @@ fn csr_bad_input_is_located_or_named() {
         assert!(!out.exists(), "{flags:?}: nothing written");
     }
 }
+
+// ---------------------------------------------------------------------------------------
+// Master curves: data at several temperatures
+// ---------------------------------------------------------------------------------------
+
+/// Relaxation forces of a ring (as in the ring test above) at −10 … 50 °C, 30 points over
+/// 1 s … 1e4 s each, from the rubber-like series of tests/model/tts.rs at 20 °C shifted by WLF
+/// (C1 = 8.86, C2 = 101.6 K at 20 °C); each line `t,force,temperature`.
+fn isotherm_csv(k: f64) -> String {
+    let terms: Vec<PronyTerm> = log_spaced(1e-4, 1e12, 161)
+        .into_iter()
+        .map(|tau| {
+            let x = tau.log10();
+            PronyTerm {
+                modulus: 1e8 * 10f64.powf(-0.45 * (x + 4.0)) * (1.0 + 0.3 * x.sin()),
+                tau,
+            }
+        })
+        .collect();
+    let truth = Prony::new(1e4, &terms).unwrap();
+    let mut text = "t,force,temperature\ns,N,C\n".to_string();
+    for celsius in [-10.0, 5.0, 20.0, 35.0, 50.0] {
+        let dt: f64 = celsius - 20.0;
+        let log_a = -8.86 * dt / (101.6 + dt);
+        for t in log_spaced(1.0, 1e4, 30) {
+            let e = truth.relaxation(t / 10f64.powf(log_a));
+            let _ = writeln!(text, "{t:e},{:.12e},{celsius}", e * k);
+        }
+    }
+    text
+}
+
+#[test]
+fn data_at_several_temperatures_give_a_master_curve_with_its_shift() {
+    use sealsim::material::Shift;
+    use sealsim::scenario::material_from_str;
+    use std::f64::consts::PI;
+    let dir = TempDir::new().unwrap();
+    let k = PI * 28.52e-3 * 3.53e-3 * lindley(0.25);
+    let data = write(&dir, "csr-5t.csv", &isotherm_csv(k));
+    let master = dir.path().join("master.svg");
+    let shift = dir.path().join("shift.svg");
+    let out = dir.path().join("fkm.toml");
+    let assert = cargo_bin_cmd!("sealsim")
+        .env("SOURCE_DATE_EPOCH", "1795478400")
+        .arg("fit-prony")
+        .arg(&data)
+        .args([
+            "--kind",
+            "relaxation",
+            "--test-piece",
+            "ring",
+            "--cross-section",
+            "3.53mm",
+            "--mean-diameter",
+            "28.52mm",
+            "--squeeze",
+            "25%",
+            "--reference-temperature",
+            "20C",
+            "-o",
+        ])
+        .arg(&out)
+        .arg("--plot-master")
+        .arg(&master)
+        .arg("--plot-shift")
+        .arg(&shift)
+        .assert()
+        .success();
+    let stderr = String::from_utf8(assert.get_output().stderr.clone()).unwrap();
+    assert!(
+        stderr.contains("master curve from 5 temperatures (150 points)"),
+        "{stderr}"
+    );
+    let text = fs::read_to_string(&out).unwrap();
+    let m = material_from_str(&text, &out).unwrap_or_else(|e| panic!("{e}\n{text}"));
+    // the WLF law at 20 °C comes back (noise-free data: to a fraction of a per cent)
+    let Shift::Wlf { reference, c1, c2 } = m.shift else {
+        panic!("{:?}", m.shift)
+    };
+    assert!((reference - 293.15).abs() < 1e-9);
+    assert!(
+        (c1 / 8.86 - 1.0).abs() < 1e-3 && (c2 / 101.6 - 1.0).abs() < 1e-3,
+        "{c1} {c2}"
+    );
+    assert_eq!(m.data_temperature, Some((263.15, 323.15)));
+    let provenance = m.provenance_of("shift").unwrap();
+    assert!(
+        provenance.starts_with("fitted by sealsim fit-prony on 2026-11-24 to the shift factors of"),
+        "{provenance}"
+    );
+    assert!(
+        m.provenance_of("prony")
+            .unwrap()
+            .contains("time–temperature superposition of 5 isotherms")
+    );
+    for svg in [&master, &shift] {
+        let s = fs::read_to_string(svg).unwrap();
+        assert!(
+            s.starts_with("<svg") && s.ends_with("</svg>\n"),
+            "{}",
+            svg.display()
+        );
+    }
+    // Arrhenius instead: a different law, the same data
+    let (stdout, _) = fit_ok(&[
+        data.to_str().unwrap(),
+        "--kind",
+        "relaxation",
+        "--reference-modulus",
+        "10MPa",
+        "--shift",
+        "arrhenius",
+    ]);
+    assert!(stdout.contains("kind = \"arrhenius\""), "{stdout}");
+}
+
+#[test]
+fn a_master_curve_needs_two_temperatures() {
+    // one temperature given to the superposition: located at the temperature column
+    rejected_with(
+        "t,E_relax,temperature\ns,MPa,C\n1,5,23\n2,4,23\n3,3,23\n",
+        &["--shift", "wlf"],
+        ":1:3: one temperature (296.15 K (23 °C))",
+    );
+    rejected_with(
+        "t,E_relax\ns,MPa\n1,5\n2,4\n3,3\n",
+        &["--reference-temperature", "23C"],
+        ":1:1: no temperature column",
+    );
+}
+
+fn rejected_with(text: &str, flags: &[&str], needle: &str) {
+    let dir = TempDir::new().unwrap();
+    let data = write(&dir, "data.csv", text);
+    let out = dir.path().join("out.toml");
+    cargo_bin_cmd!("sealsim")
+        .arg("fit-prony")
+        .arg(&data)
+        .args(["--kind", "relaxation", "-o"])
+        .arg(&out)
+        .args(flags)
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains(format!(
+            "{}{needle}",
+            data.display()
+        )));
+    assert!(!out.exists(), "no output file on bad input");
+}
