@@ -110,7 +110,7 @@ pub enum Command {
     /// Data and SVG charts of groups of scenarios over a pressure sweep (PY08 §3 figures).
     Figures(figures::FiguresArgs),
     /// Prony series fitted to relaxation or DMA data, written as a material TOML file.
-    FitProny(fit_prony::FitPronyArgs),
+    FitProny(Box<fit_prony::FitPronyArgs>),
     /// Lifetime from accelerated-ageing data (ISO 11346): Arrhenius fit of the times to a
     /// compression-set or retained-force criterion, extrapolated to a service temperature.
     AgeingFit(ageing_fit::AgeingFitArgs),
@@ -194,7 +194,7 @@ pub fn run(command: Command) -> Result<(), CliError> {
         Command::Leak(args) => leak::run(args),
         Command::Tradeoff(args) => tradeoff::run(args),
         Command::Figures(args) => figures::run(args),
-        Command::FitProny(args) => fit_prony::run(args),
+        Command::FitProny(args) => fit_prony::run(*args),
         Command::AgeingFit(args) => ageing_fit::run(args),
         Command::Materials(args) => materials::run(args),
         Command::Sizes(args) => sizes::run(args),
