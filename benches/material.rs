@@ -10,7 +10,7 @@
 )]
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use sealsim::material::fit::{FitSettings, fit_relaxation};
+use sealsim::material::fit::{FitSettings, Regularisation, fit_relaxation};
 use sealsim::material::{Prony, PronyTerm, RelaxationState};
 use sealsim::math::log_spaced;
 use std::hint::black_box;
@@ -51,13 +51,17 @@ fn material(c: &mut Criterion) {
     let (lo, hi) = (3e-5, 3e8);
     let times = log_spaced(lo, hi, 100);
     let moduli: Vec<f64> = times.iter().map(|&t| truth.relaxation(t)).collect();
-    for per_decade in [1, 3] {
+    for (per_decade, regularisation, label) in [
+        (3, Regularisation::None, "plain NNLS"),
+        (1, Regularisation::Gcv, "GCV"),
+        (3, Regularisation::Gcv, "GCV"),
+    ] {
         let settings = FitSettings {
             terms_per_decade: per_decade,
-            ..FitSettings::default()
+            regularisation,
         };
         c.bench_function(
-            &format!("Prony fit, 100 relaxation points, {per_decade}/decade"),
+            &format!("Prony fit, 100 relaxation points, {per_decade}/decade, {label}"),
             |b| b.iter(|| fit_relaxation(black_box(&times), black_box(&moduli), &settings)),
         );
     }
