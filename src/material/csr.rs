@@ -17,7 +17,7 @@
 //!   `k = (π D²/4) (λ⁻² − λ)/3`. Plates that grip the rubber raise the force: for a fully
 //!   bonded disc of shape factor S = D/(4h) the small-strain stiffness rises by about
 //!   `1 + 2S²` (A.N. Gent & P.B. Lindley, Proc. Inst. Mech. Eng. 173 (1959) 111 —
-//!   recalled); [`friction_bound`] gives that factor so that a report can say how much a
+//!   recalled); [`TestPiece::friction_bound`] gives that factor so that a report can say how much a
 //!   modulus from unlubricated plates may be overstated.
 //! * **A stated normalisation**: the modulus at the force's reference point (the first
 //!   reading, or F/F0 = 1 for retained-force data), `E(t) = E_ref · F(t)/F_ref`.
