@@ -109,6 +109,7 @@ pub mod leak;
 pub mod material;
 pub mod math;
 pub mod numerical;
+pub mod profile;
 pub mod report;
 pub mod scenario;
 pub mod seal;

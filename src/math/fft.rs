@@ -441,6 +441,44 @@ where
     });
 }
 
+/// Plans for 1-D forward real transforms of any length (line traces), cached by length.
+///
+/// `forward` returns `Ẑ(k) = Σ_j z_j e^{−2πi jk/N}` for `k = 0..=N/2` (unnormalised, as
+/// [`Fft2::forward`]).
+pub struct Fft1 {
+    planner: RealFftPlanner<f64>,
+}
+
+impl Default for Fft1 {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl Fft1 {
+    /// An empty planner.
+    pub fn new() -> Self {
+        Fft1 {
+            planner: RealFftPlanner::<f64>::new(),
+        }
+    }
+
+    /// Forward transform of `signal` (`N ≥ 1` points; used as scratch: its contents are
+    /// destroyed): the `N/2 + 1` coefficients `k = 0..=N/2`.
+    pub fn forward(&mut self, signal: &mut [f64]) -> Vec<Complex<f64>> {
+        let plan = self.planner.plan_fft_forward(signal.len());
+        let mut out = plan.make_output_vec();
+        #[expect(
+            clippy::expect_used,
+            reason = "the output comes from the plan itself and the input has the plan's length: \
+                      realfft's only errors"
+        )]
+        plan.process(signal, &mut out)
+            .expect("lengths match the plan");
+        out
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

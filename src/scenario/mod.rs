@@ -29,6 +29,7 @@ pub mod library;
 pub mod life;
 mod material;
 mod motion;
+pub mod profile;
 mod psd;
 mod raw;
 mod validate;

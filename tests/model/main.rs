@@ -27,6 +27,7 @@ mod model_reference;
 mod motion;
 mod numerical;
 mod physics;
+mod profile;
 mod properties;
 mod scenario;
 mod tts;

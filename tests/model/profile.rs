@@ -1,0 +1,163 @@
+//! Line traces → the isotropic 2-D spectrum (src/profile.rs) and the trace CSV reader.
+
+use sealsim::profile::{
+    ProfileOptions, Trace, abel_inverse, analyse, one_d_from_two_d, power_law_factor,
+    profile_parameters, synthesize_gaussian,
+};
+use sealsim::scenario::profile::parse_trace;
+use sealsim::surface::Spectrum;
+use std::f64::consts::PI;
+use std::path::Path;
+use std::time::Instant;
+
+const PIXEL: f64 = 0.5e-6;
+const N: usize = 2048;
+
+fn dq() -> f64 {
+    2.0 * PI / (N as f64 * PIXEL)
+}
+
+/// The known spectrum of the round trip: H = 0.8, roll-off at 32 · 2π/L of the surface.
+fn known() -> Spectrum {
+    Spectrum::self_affine(1e-6, 0.8, dq(), PI / PIXEL, Some(32.0 * dq())).unwrap()
+}
+
+/// Half-rows (1024 points, not periodic) of `surfaces` Gaussian surfaces, `rows` per surface.
+fn traces(surfaces: u64, rows: usize) -> Vec<Trace> {
+    let spectrum = known();
+    let mut out = Vec::new();
+    for seed in 0..surfaces {
+        let h = synthesize_gaussian(&spectrum, N, PIXEL, 1000 + seed);
+        for r in 0..rows {
+            let row = &h[r * (N / rows) * N..][..N];
+            for half in row.chunks_exact(N / 2) {
+                out.push(Trace {
+                    spacing: PIXEL,
+                    heights: half.to_vec(),
+                });
+            }
+        }
+    }
+    out
+}
+
+/// 8 Gaussian 2048² surfaces (H = 0.8, roll-off at 32 · 2π/L), 32 rows each cut in two
+/// halves: 512 traces of 1024 points.
+#[test]
+fn round_trip_recovers_the_known_spectrum() {
+    let start = Instant::now();
+    let traces = traces(8, 32);
+    let result = analyse(&traces, &ProfileOptions::default()).unwrap();
+    let spectrum = known();
+    let q_r = 32.0 * dq();
+    let (mut worst_all, mut worst_law): (f64, f64) = (0.0, 0.0);
+    for q in &result.psd_1d.q {
+        let e = (result.spectrum.c(*q) / spectrum.c(*q) - 1.0).abs();
+        eprintln!("q/q_r = {:.3}  C err = {e:.4}", q / q_r);
+        worst_all = worst_all.max(e);
+        if *q >= 2.0 * q_r {
+            worst_law = worst_law.max(e);
+        }
+    }
+    let band = spectrum.restricted(result.band.0, result.band.1).unwrap();
+    let e_h = result.h_rms / band.rms_roughness() - 1.0;
+    let e_s = result.rms_slope / band.rms_slope() - 1.0;
+    eprintln!(
+        "band {:?}; worst C error {worst_all:.3} (band), {worst_law:.3} (q ≥ 2 q_r); H {:?}; \
+         roll-off {:?} (true {q_r}); h_rms {e_h:+.4}; slope {e_s:+.4}; {:?}",
+        result.band,
+        result.hurst,
+        result.q0,
+        start.elapsed()
+    );
+    assert!(worst_law < 0.05, "{worst_law}");
+    assert!((result.hurst.0 - 0.8).abs() < 0.03, "{:?}", result.hurst);
+    assert!(e_h.abs() < 0.03 && e_s.abs() < 0.03, "{e_h} {e_s}");
+    assert!(result.q0.is_some());
+}
+
+/// The closed form C = C1D/q · Γ(1+H)/(√π Γ(H+½)) against the numerical Abel pair on exact power
+/// laws, both directions.
+#[test]
+fn abel_pair_matches_the_power_law_closed_form() {
+    for h in [0.3, 0.5, 0.8, 0.95] {
+        let spectrum = Spectrum::self_affine(1e-6, h, 1.0, 1e12, None).unwrap();
+        let q: Vec<f64> = (0..40).map(|i| 1e4 * 10f64.powf(i as f64 / 10.0)).collect();
+        let c1: Vec<f64> = q
+            .iter()
+            .map(|&q| q * spectrum.c(q) / power_law_factor(h))
+            .collect();
+        let c2 = abel_inverse(&q, &c1, -(1.0 + 2.0 * h));
+        for ((qq, a), b) in q.iter().zip(&c2).zip(&c1) {
+            assert!((a / spectrum.c(*qq) - 1.0).abs() < 1e-8, "H {h} q {qq}");
+            // forward: far below q1 the band edge does not matter
+            if *qq < 1e7 {
+                let f = one_d_from_two_d(&spectrum, *qq);
+                assert!((f / b - 1.0).abs() < 1e-6, "H {h} q {qq}: {f} vs {b}");
+            }
+        }
+    }
+}
+
+#[test]
+fn rz_of_a_cosine_with_the_gaussian_filter() {
+    // wavelength λc/10 passes the Gaussian filter; crests and troughs
+    // on samples: Rz = 2a
+    let a = 0.4e-6;
+    let dx = 1e-6;
+    let lc = 0.8e-3;
+    let period = 80;
+    let n = 6 * 800 + 1;
+    let heights: Vec<f64> = (0..n)
+        .map(|j| a * (2.0 * PI * j as f64 / period as f64).cos())
+        .collect();
+    let p = profile_parameters(
+        &Trace {
+            spacing: dx,
+            heights,
+        },
+        Some(lc),
+    )
+    .unwrap();
+    assert_eq!(p.sampling_lengths, 5);
+    // the truncated kernel (±λc/2, renormalised) leaves ~4e-4 of the cosine in the mean line
+    assert!((p.rz.unwrap() / (2.0 * a) - 1.0).abs() < 1e-3, "{p:?}");
+    assert!((p.rq / (a / 2f64.sqrt()) - 1.0).abs() < 1e-3, "{p:?}");
+}
+
+fn file(rows: usize, step: impl Fn(usize) -> f64, units: &str) -> String {
+    let mut s = format!("# synthetic\nx,z\n{units}");
+    let mut x = 0.0;
+    for i in 0..rows {
+        s.push_str(&format!("{x},{}\n", (i as f64).sin()));
+        x += step(i);
+    }
+    s
+}
+
+#[test]
+fn trace_reader_units_and_errors() {
+    let path = Path::new("t.csv");
+    let t = parse_trace(&file(300, |_| 0.5, "um,nm\n"), path).unwrap();
+    assert!((t.spacing - 0.5e-6).abs() < 1e-18);
+    assert!((t.heights[1] - 1f64.sin() * 1e-9).abs() < 1e-20);
+    // no units row: metres
+    let t = parse_trace(&file(300, |_| 0.5, ""), path).unwrap();
+    assert!((t.spacing - 0.5).abs() < 1e-15);
+
+    let err = |text: &str| parse_trace(text, path).unwrap_err().to_string();
+    // a gap at the 100th step: line 3 (units) + 101
+    let e = err(&file(300, |i| if i == 99 { 1.0 } else { 0.5 }, "mm,um\n"));
+    assert!(e.starts_with("t.csv:104: non-uniform spacing"), "{e}");
+    let e = err(&file(100, |_| 0.5, "mm,um\n"));
+    assert!(e.contains("at least 256"), "{e}");
+    let e = err(&file(300, |_| 0.5, "mm,s\n"));
+    assert!(e.starts_with("t.csv:3: unit \"s\""), "{e}");
+    assert!(e.contains("must be lengths"), "{e}");
+    let e = err(&file(300, |_| 0.5, "mm,um\n").replacen("0.5,", "abc,", 1));
+    assert!(e.starts_with("t.csv:5: x is not a number"), "{e}");
+    let e = err(&file(300, |_| 0.5, "mm,um\n").replacen("1,", "0.25,", 1));
+    assert!(e.contains("increase strictly"), "{e}");
+    let e = err("q,C\n1,2\n");
+    assert!(e.starts_with("t.csv:1: expected the header"), "{e}");
+}
