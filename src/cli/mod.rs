@@ -13,6 +13,7 @@ pub mod leak;
 pub mod materials;
 pub mod run;
 pub mod sizes;
+pub mod surface;
 pub mod tradeoff;
 
 use crate::report::{self, ReportError};
@@ -118,6 +119,9 @@ pub enum Command {
     Materials(materials::MaterialsArgs),
     /// AS568 O-ring sizes: one size's dimensions (inch and mm, tolerances, source), or all.
     Sizes(sizes::SizesArgs),
+    /// A roughness source (scenario, line traces, PSD file): Ra, Rq, Rz, h_rms, rms slope,
+    /// Hurst exponent, cut-offs and warnings, with an optional C(q) chart.
+    Surface(surface::SurfaceArgs),
 }
 
 /// Why a command failed; decides the exit status.
@@ -198,6 +202,7 @@ pub fn run(command: Command) -> Result<(), CliError> {
         Command::AgeingFit(args) => ageing_fit::run(args),
         Command::Materials(args) => materials::run(args),
         Command::Sizes(args) => sizes::run(args),
+        Command::Surface(args) => surface::run(args),
     }
 }
 

@@ -123,6 +123,40 @@ impl Scenario {
     }
 }
 
+/// A data file that cannot be used: the file, the 1-based line when the problem is on one
+/// line, and what is wrong. Displayed as `path:line: message`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DataFileError {
+    pub path: std::path::PathBuf,
+    pub line: Option<usize>,
+    pub message: String,
+}
+
+impl std::fmt::Display for DataFileError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}", self.path.display())?;
+        if let Some(line) = self.line {
+            write!(f, ":{line}")?;
+        }
+        write!(f, ": {}", self.message)
+    }
+}
+
+impl std::error::Error for DataFileError {}
+
+/// The spectrum of a PSD file (CSV of `q [1/m], C [m⁴]`, the format of `[surface] psd_file`),
+/// interpolated as a piecewise power law.
+pub fn read_psd_file(path: &Path) -> Result<crate::surface::Spectrum, DataFileError> {
+    let error = |line: Option<usize>, message: String| DataFileError {
+        path: path.to_path_buf(),
+        line,
+        message,
+    };
+    let text = read(path).map_err(|e| error(None, e.to_string()))?;
+    let (q, c) = psd::parse(&text).map_err(|e| error(e.line, e.message))?;
+    crate::surface::Spectrum::tabulated(&q, &c).map_err(|e| error(None, e.to_string()))
+}
+
 /// The data rows of a CSV-like text file with their 1-based line numbers: a leading byte-order
 /// mark (spreadsheet exports) is dropped, rows are trimmed, blank and `#` lines skipped.
 pub(crate) fn data_lines(text: &str) -> impl Iterator<Item = (usize, &str)> {

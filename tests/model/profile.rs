@@ -161,3 +161,98 @@ fn trace_reader_units_and_errors() {
     let e = err("q,C\n1,2\n");
     assert!(e.starts_with("t.csv:1: expected the header"), "{e}");
 }
+
+/// A line trace across an isotropic Gaussian surface of spectrum `c`: N points at `dx`, as a
+/// sum of N/2 − 1 Fourier modes with independent normal amplitudes of variance
+/// `2 C1D(q_k) Δq` (so that ⟨h²⟩ = 2 Σ C1D Δq, the 1-D convention of `sealsim::profile`),
+/// C1D the Abel transform of `c`; normals from SplitMix64 (Box–Muller).
+fn synthetic_trace(c: &Spectrum, n: usize, dx: f64, seed: u64) -> Vec<f64> {
+    let mut state = seed;
+    let mut uniform = || {
+        state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        (((z ^ (z >> 31)) >> 11) as f64 + 0.5) / (1u64 << 53) as f64
+    };
+    let length = n as f64 * dx;
+    let dq = 2.0 * PI / length;
+    let mut modes = Vec::new();
+    for k in 1..n / 2 {
+        let q = k as f64 * dq;
+        let sigma = (2.0 * one_d_from_two_d(c, q) * dq).sqrt();
+        let (u1, u2) = (uniform(), uniform());
+        let r = (-2.0 * u1.ln()).sqrt();
+        modes.push((
+            q,
+            sigma * r * (2.0 * PI * u2).cos(),
+            sigma * r * (2.0 * PI * u2).sin(),
+        ));
+    }
+    (0..n)
+        .map(|j| {
+            let x = j as f64 * dx;
+            modes
+                .iter()
+                .map(|&(q, a, b)| a * (q * x).cos() + b * (q * x).sin())
+                .sum()
+        })
+        .collect()
+}
+
+/// Writes the example traces of `scenarios/traces/` (run by hand:
+/// `cargo test --release --test model write_example_traces -- --ignored`): two synthetic
+/// stylus traces, 8192 points at 0.5 µm (4.1 mm, five sampling lengths of 0.8 mm), across
+/// isotropic self-affine surfaces scaled to a stated Rq over the callout band 2π/0.8 mm …
+/// 2π/2.5 µm.
+#[test]
+#[ignore]
+fn write_example_traces() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/traces");
+    std::fs::create_dir_all(&dir).unwrap();
+    let (n, dx) = (8192, 0.5e-6);
+    for (name, hurst, rolloff_um, rq_um, seed, what) in [
+        (
+            "ground-fine.csv",
+            0.8,
+            100.0,
+            0.5,
+            11,
+            "a fine ground counterface",
+        ),
+        (
+            "ground-coarse.csv",
+            0.7,
+            200.0,
+            2.0,
+            12,
+            "a coarse ground counterface",
+        ),
+    ] {
+        let (q0, q1) = (2.0 * PI / (n as f64 * dx), 2.0 * PI / 1e-6);
+        let q_r = 2.0 * PI / (rolloff_um * 1e-6);
+        let unit = Spectrum::self_affine(1.0, hurst, q0, q1, Some(q_r)).unwrap();
+        let band = unit
+            .restricted(2.0 * PI / 0.8e-3, 2.0 * PI / 2.5e-6)
+            .unwrap()
+            .rms_roughness();
+        let c = unit.with_rms_roughness(rq_um * 1e-6 / band);
+        let z = synthetic_trace(&c, n, dx, seed);
+        let mut text = format!(
+            "# SYNTHETIC line trace (not measured): {what}.\n\
+             # A line across an isotropic Gaussian self-affine surface: H = {hurst}, roll-off at \
+             wavelength {rolloff_um} um, spectrum from q0 = 2pi/(N dx) to q1 = 2pi/1um, scaled to \
+             Rq = {rq_um} um over the callout band 2pi/0.8mm ... 2pi/2.5um (Ra = Rq sqrt(2/pi)).\n\
+             # h_rms of the whole spectrum {:.4} um, rms slope {:.4}. Seed {seed}.\n\
+             # Made by: cargo test --release --test model write_example_traces -- --ignored\n\
+             x,z\nmm,um\n",
+            c.rms_roughness() * 1e6,
+            c.rms_slope()
+        );
+        for (j, h) in z.iter().enumerate() {
+            use std::fmt::Write;
+            let _ = writeln!(text, "{:.4},{:.5}", j as f64 * dx * 1e3, h * 1e6);
+        }
+        std::fs::write(dir.join(name), text).unwrap();
+    }
+}

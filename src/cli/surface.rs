@@ -1,0 +1,317 @@
+//! `sealsim surface`: what a roughness source gives the contact — a scenario's spectrum, one or
+//! more line traces ([`crate::profile`]) or a PSD file — with Ra, Rq, Rz, h_rms, rms slope, the
+//! Hurst exponent, the cut-offs and the warnings ([`crate::report::surface`]).
+
+use super::{CliError, write_output};
+use crate::profile::{ProfileOptions, analyse};
+use crate::report::surface::SurfaceReport;
+use crate::scenario::Scenario;
+use crate::scenario::profile::read_trace;
+use crate::surface::Spectrum;
+use crate::units::{Dimension, parse_quantity, show};
+use crate::validity::MAX_RMS_SLOPE;
+use clap::Args;
+use std::f64::consts::PI;
+use std::path::{Path, PathBuf};
+
+/// Default sampling length λc of a callout \[m\] (ISO 4288 for Ra 0.1–2 µm — recalled).
+pub const DEFAULT_CUTOFF: f64 = 0.8e-3;
+/// Default short-wavelength cut-off λs \[m\] (ISO 3274 for λc = 0.8 mm — recalled).
+pub const DEFAULT_SHORT_CUTOFF: f64 = 2.5e-6;
+
+/// Arguments of `sealsim surface`.
+#[derive(Debug, Clone, Args)]
+#[command(
+    after_help = "SOURCE: a scenario (.toml: its counterface spectrum as the contact \
+    sees it), one or more line traces (CSV with header x,z and an optional units row such as \
+    mm,um; several files are averaged), or a PSD file (CSV of q [1/m], C [m^4]).\n\
+    Traces: Ra, Rq, Rz measured on each trace (mean line: Gaussian filter with the cut-off when \
+    the trace holds at least one, else the least-squares line) and averaged; the isotropic 2-D \
+    spectrum from the averaged 1-D spectrum over the band the traces can be trusted in \
+    (docs/model.md §2).\n\
+    Spectra: Rq over the callout band 2π/λc … 2π/λs, Ra = Rq·√(2/π) for Gaussian heights."
+)]
+pub struct SurfaceArgs {
+    /// Scenario, trace(s) or PSD file.
+    #[arg(value_name = "SOURCE", required = true)]
+    pub sources: Vec<PathBuf>,
+
+    /// Sampling length λc of the profile parameters (e.g. 0.8mm).
+    #[arg(long, value_name = "LENGTH")]
+    pub cutoff: Option<String>,
+
+    /// Short-wavelength cut-off λs of the profile parameters of a spectrum (e.g. 2.5um).
+    #[arg(long, value_name = "LENGTH")]
+    pub short_cutoff: Option<String>,
+
+    /// Stylus tip radius of the traces (e.g. 2um): limits the trusted band.
+    #[arg(long, value_name = "LENGTH")]
+    pub tip_radius: Option<String>,
+
+    /// Write JSON instead of the text summary.
+    #[arg(long)]
+    pub json: bool,
+
+    /// Write the C(q) chart (SVG) to FILE.
+    #[arg(long, value_name = "FILE.svg")]
+    pub plot: Option<PathBuf>,
+
+    /// Write the summary to FILE (atomically) instead of standard output.
+    #[arg(short, long, value_name = "FILE")]
+    pub output: Option<PathBuf>,
+}
+
+/// A length flag in metres.
+fn length(value: Option<&str>, name: &str) -> Result<Option<f64>, CliError> {
+    value
+        .map(|text| {
+            let v = parse_quantity(text, Dimension::LENGTH)
+                .map_err(|e| CliError::Input(format!("--{name}: {e}")))?;
+            if v.is_finite() && v > 0.0 {
+                Ok(v)
+            } else {
+                Err(CliError::Input(format!(
+                    "--{name}: must be positive, got {text}"
+                )))
+            }
+        })
+        .transpose()
+}
+
+/// Runs `sealsim surface`.
+pub fn run(args: SurfaceArgs) -> Result<(), CliError> {
+    let cutoff = length(args.cutoff.as_deref(), "cutoff")?;
+    let short_cutoff = length(args.short_cutoff.as_deref(), "short-cutoff")?;
+    let tip_radius = length(args.tip_radius.as_deref(), "tip-radius")?;
+    let (lc, ls) = (
+        cutoff.unwrap_or(DEFAULT_CUTOFF),
+        short_cutoff.unwrap_or(DEFAULT_SHORT_CUTOFF),
+    );
+    if ls >= lc {
+        return Err(CliError::Input(format!(
+            "--short-cutoff ({} m) must be shorter than --cutoff ({} m)",
+            show(ls),
+            show(lc)
+        )));
+    }
+    let first = &args.sources[0];
+    let is_scenario = first.extension().is_some_and(|e| e == "toml");
+    let report = if is_scenario {
+        if args.sources.len() > 1 {
+            return Err(CliError::Input(
+                "give one scenario (several files are for traces)".into(),
+            ));
+        }
+        let scenario = Scenario::load(first)?;
+        spectrum_report(
+            first.display().to_string(),
+            "scenario",
+            &scenario.problem.spectrum,
+            (lc, ls),
+        )
+    } else if is_trace(first)? {
+        traces_report(&args.sources, cutoff, tip_radius)?
+    } else {
+        if args.sources.len() > 1 {
+            return Err(CliError::Input("give one PSD file".into()));
+        }
+        let spectrum =
+            crate::scenario::read_psd_file(first).map_err(|e| CliError::Input(e.to_string()))?;
+        spectrum_report(first.display().to_string(), "psd file", &spectrum, (lc, ls))
+    };
+    let main = if args.json {
+        report.json()?
+    } else {
+        report.text()
+    };
+    let svg = args
+        .plot
+        .as_ref()
+        .map(|_| {
+            report
+                .chart()
+                .to_svg()
+                .map_err(|e| CliError::Internal(e.to_string()))
+        })
+        .transpose()?;
+    if let (Some(path), Some(svg)) = (&args.plot, &svg) {
+        write_output(Some(path), svg.as_bytes())?;
+    }
+    write_output(args.output.as_deref(), main.as_bytes())
+}
+
+/// Whether a CSV file's header names `x,z` (a trace) rather than `q,C` (a PSD file).
+fn is_trace(path: &Path) -> Result<bool, CliError> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| CliError::Input(format!("{}: cannot read the file: {e}", path.display())))?;
+    let header = text
+        .lines()
+        .map(str::trim)
+        .find(|l| !l.is_empty() && !l.starts_with('#'))
+        .unwrap_or("");
+    let cells: Vec<String> = header
+        .split(',')
+        .map(|c| c.trim().trim_matches('"').to_lowercase())
+        .collect();
+    Ok(cells.first().is_some_and(|c| c == "x"))
+}
+
+/// The report of a spectrum (a scenario's or a PSD file's): Rq over the callout band
+/// `2π/λc … 2π/λs` (clipped to the spectrum), Ra = Rq √(2/π) for Gaussian heights.
+fn spectrum_report(
+    source: String,
+    kind: &str,
+    spectrum: &Spectrum,
+    (lc, ls): (f64, f64),
+) -> SurfaceReport {
+    let (q0, q1) = (spectrum.q0(), spectrum.q1());
+    let mut warnings = Vec::new();
+    let (lo, hi) = ((2.0 * PI / lc).max(q0), (2.0 * PI / ls).min(q1));
+    let rq = if lo < hi {
+        spectrum
+            .restricted(lo, hi)
+            .map_or(0.0, |s| s.rms_roughness())
+    } else {
+        0.0
+    };
+    if lo > 2.0 * PI / lc || hi < 2.0 * PI / ls {
+        warnings.push(format!(
+            "the spectrum covers only q = {} … {} 1/m of the callout band {} … {} 1/m: Ra and \
+             Rq miss the rest",
+            show(q0),
+            show(q1),
+            show(2.0 * PI / lc),
+            show(2.0 * PI / ls)
+        ));
+    }
+    let slope = spectrum.rms_slope();
+    if slope > MAX_RMS_SLOPE {
+        warnings.push(format!(
+            "rms slope {slope:.3} is above {MAX_RMS_SLOPE}: the small-slope contact theory is \
+             stretched [docs/model.md §9.8]"
+        ));
+    }
+    let points: Vec<(f64, f64)> = crate::math::log_spaced(q0, q1, 200)
+        .into_iter()
+        .map(|q| (q, spectrum.c(q)))
+        .collect();
+    SurfaceReport {
+        source,
+        kind: kind.into(),
+        ra: rq * (2.0 / PI).sqrt(),
+        rq,
+        rz: None,
+        parameters_basis: format!(
+            "from the spectrum over the callout band λc = {} mm, λs = {} µm; Ra = Rq·√(2/π) for \
+             Gaussian heights",
+            show(lc * 1e3),
+            show(ls * 1e6)
+        ),
+        h_rms: spectrum.rms_roughness(),
+        rms_slope: slope,
+        band: (q0, q1),
+        hurst: spectrum.hurst_exponent().map(|h| (h, None)),
+        q0,
+        q1,
+        rolloff: None,
+        warnings,
+        spectrum_points: points,
+        law_points: Vec::new(),
+    }
+}
+
+/// The report of line traces: profile parameters measured on each (averaged), the 2-D
+/// spectrum over the trusted band and its power-law fit.
+fn traces_report(
+    paths: &[PathBuf],
+    cutoff: Option<f64>,
+    tip_radius: Option<f64>,
+) -> Result<SurfaceReport, CliError> {
+    let traces = paths
+        .iter()
+        .map(|p| read_trace(p).map_err(|e| CliError::Input(e.to_string())))
+        .collect::<Result<Vec<_>, _>>()?;
+    // the Gaussian mean line needs at least one sampling length in the trace
+    let shortest = traces
+        .iter()
+        .map(crate::profile::Trace::length)
+        .fold(f64::INFINITY, f64::min);
+    let lc = cutoff.unwrap_or(DEFAULT_CUTOFF);
+    let options = ProfileOptions {
+        tip_radius,
+        cutoff: (shortest >= 2.0 * lc).then_some(lc),
+        ..ProfileOptions::default()
+    };
+    let source = paths
+        .iter()
+        .map(|p| p.display().to_string())
+        .collect::<Vec<_>>()
+        .join(", ");
+    let result =
+        analyse(&traces, &options).map_err(|e| CliError::Input(format!("{source}: {e}")))?;
+    let n = result.parameters.len().max(1) as f64;
+    let mean = |f: &dyn Fn(&crate::profile::ProfileParameters) -> f64| {
+        result.parameters.iter().map(f).sum::<f64>() / n
+    };
+    let rz: Vec<f64> = result.parameters.iter().filter_map(|p| p.rz).collect();
+    let mut warnings = Vec::new();
+    if options.cutoff.is_none() {
+        warnings.push(format!(
+            "the traces ({} mm) are shorter than two sampling lengths of {} mm: Ra, Rq, Rz are \
+             taken about the least-squares line over five equal parts, not per ISO 21920",
+            show(shortest * 1e3),
+            show(lc * 1e3)
+        ));
+    }
+    if result.rms_slope > MAX_RMS_SLOPE {
+        warnings.push(format!(
+            "rms slope {:.3} is above {MAX_RMS_SLOPE}: the small-slope contact theory is \
+             stretched [docs/model.md §9.8]",
+            result.rms_slope
+        ));
+    }
+    if result.replaced_points > 0 {
+        warnings.push(format!(
+            "{} points of the 2-D spectrum came out ≤ 0 from the noisy 1-D spectrum and were \
+             replaced by the local power law",
+            result.replaced_points
+        ));
+    }
+    let (h, interval) = result.hurst;
+    let (lo, hi) = result.band;
+    let spectrum_points: Vec<(f64, f64)> = result
+        .psd_1d
+        .q
+        .iter()
+        .filter(|q| **q >= lo && **q <= hi)
+        .map(|&q| (q, result.spectrum.c(q)))
+        .collect();
+    // the fitted power law, drawn through the spectrum at the band's geometric middle
+    let mid = (lo * hi).sqrt();
+    let c_mid = result.spectrum.c(mid);
+    let law_points: Vec<(f64, f64)> = crate::math::log_spaced(lo, hi, 50)
+        .into_iter()
+        .map(|q| {
+            let q_eff = result.q0.map_or(q, |r| q.max(r));
+            (q, c_mid * (q_eff / mid).powf(-2.0 * (1.0 + h)))
+        })
+        .collect();
+    Ok(SurfaceReport {
+        source,
+        kind: if traces.len() == 1 { "trace" } else { "traces" }.into(),
+        ra: mean(&|p| p.ra),
+        rq: mean(&|p| p.rq),
+        rz: (!rz.is_empty()).then(|| rz.iter().sum::<f64>() / rz.len() as f64),
+        parameters_basis: format!("measured on {} trace(s), averaged", traces.len()),
+        h_rms: result.h_rms,
+        rms_slope: result.rms_slope,
+        band: result.band,
+        hurst: Some((h, Some(interval))),
+        q0: lo,
+        q1: hi,
+        rolloff: result.q0,
+        warnings,
+        spectrum_points,
+        law_points,
+    })
+}

@@ -1,0 +1,164 @@
+//! The result of `sealsim surface`: what a roughness source says about the contact's input
+//! spectrum — profile parameters (Ra, Rq, Rz), h_rms and rms slope, the Hurst exponent with
+//! its interval, the cut-offs and roll-off — as text, JSON and a C(q) chart.
+
+use super::ReportError;
+use super::plot::{LogLogChart, Series};
+use crate::units::show;
+use serde_json::json;
+use std::fmt::Write;
+
+/// Everything `sealsim surface` reports; SI units (m, 1/m, m⁴).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SurfaceReport {
+    /// The source as given (file name(s)).
+    pub source: String,
+    /// What the source is: `trace`, `traces`, `scenario`, `psd file`.
+    pub kind: String,
+    /// Ra, Rq, Rz \[m\] and how they were obtained (measured on traces, or from the spectrum
+    /// over the callout band for Gaussian heights).
+    pub ra: f64,
+    pub rq: f64,
+    pub rz: Option<f64>,
+    pub parameters_basis: String,
+    /// rms roughness \[m\] and rms slope of the spectrum over `band`.
+    pub h_rms: f64,
+    pub rms_slope: f64,
+    /// The band of q the figures above cover \[1/m\] (for traces: the trusted band).
+    pub band: (f64, f64),
+    /// Hurst exponent with its 95 % interval when it was fitted.
+    pub hurst: Option<(f64, Option<(f64, f64)>)>,
+    /// Lower and upper cut-off of the spectrum \[1/m\].
+    pub q0: f64,
+    pub q1: f64,
+    /// Roll-off wavevector \[1/m\], when there is one.
+    pub rolloff: Option<f64>,
+    /// Warnings: validity of the small-slope theory, the band, the data.
+    pub warnings: Vec<String>,
+    /// The spectrum to plot: (q, C) points.
+    pub spectrum_points: Vec<(f64, f64)>,
+    /// The fitted or given law over its range: (q, C) points.
+    pub law_points: Vec<(f64, f64)>,
+}
+
+impl SurfaceReport {
+    /// The human-readable summary.
+    pub fn text(&self) -> String {
+        let mut out = String::new();
+        let um = |v: f64| format!("{:.4} µm", v * 1e6);
+        let _ = writeln!(out, "surface: {} ({})", self.source, self.kind);
+        let _ = writeln!(
+            out,
+            "Ra {}  Rq {}  Rz {}  ({})",
+            um(self.ra),
+            um(self.rq),
+            self.rz.map_or("–".to_string(), um),
+            self.parameters_basis
+        );
+        let _ = writeln!(
+            out,
+            "band q = {} … {} 1/m (wavelengths {} … {} µm): h_rms {}, rms slope {:.4}",
+            show(self.band.0),
+            show(self.band.1),
+            show(2e6 * std::f64::consts::PI / self.band.1),
+            show(2e6 * std::f64::consts::PI / self.band.0),
+            um(self.h_rms),
+            self.rms_slope
+        );
+        match self.hurst {
+            Some((h, Some((lo, hi)))) => {
+                let _ = writeln!(
+                    out,
+                    "Hurst exponent {h:.3} (95 % interval {lo:.3} – {hi:.3})"
+                );
+            }
+            Some((h, None)) => {
+                let _ = writeln!(out, "Hurst exponent {h:.3} (given)");
+            }
+            None => {
+                let _ = writeln!(out, "Hurst exponent: none (not a single power law)");
+            }
+        }
+        let _ = writeln!(
+            out,
+            "q0 {} 1/m, q1 {} 1/m, roll-off {}",
+            show(self.q0),
+            show(self.q1),
+            self.rolloff
+                .map_or("none".to_string(), |q| format!("{} 1/m", show(q)))
+        );
+        for w in &self.warnings {
+            let _ = writeln!(out, "warning: {w}");
+        }
+        out
+    }
+
+    /// The JSON object (keys named with their units).
+    pub fn json(&self) -> Result<String, ReportError> {
+        let (hurst, interval) = match self.hurst {
+            Some((h, i)) => (Some(h), i.map(|(a, b)| vec![a, b])),
+            None => (None, None),
+        };
+        let value = json!({
+            "source": self.source,
+            "kind": self.kind,
+            "ra_m": self.ra,
+            "rq_m": self.rq,
+            "rz_m": self.rz,
+            "parameters_basis": self.parameters_basis,
+            "h_rms_m": self.h_rms,
+            "rms_slope": self.rms_slope,
+            "band_per_m": [self.band.0, self.band.1],
+            "hurst_exponent": hurst,
+            "hurst_exponent_interval": interval,
+            "q0_per_m": self.q0,
+            "q1_per_m": self.q1,
+            "rolloff_per_m": self.rolloff,
+            "warnings": self.warnings,
+        });
+        serde_json::to_string_pretty(&value)
+            .map(|s| s + "\n")
+            .map_err(|e| ReportError::Csv(e.to_string()))
+    }
+
+    /// C(q) on log axes: the spectrum, the law, and the band's ends as vertical markers.
+    pub fn chart(&self) -> LogLogChart {
+        let c_lo = self
+            .spectrum_points
+            .iter()
+            .chain(&self.law_points)
+            .map(|p| p.1)
+            .filter(|c| *c > 0.0)
+            .fold(f64::INFINITY, f64::min);
+        let c_hi = self
+            .spectrum_points
+            .iter()
+            .chain(&self.law_points)
+            .map(|p| p.1)
+            .fold(0.0, f64::max);
+        let mut series = vec![
+            Series {
+                label: "C(q)".into(),
+                points: self.spectrum_points.clone(),
+            },
+            Series {
+                label: "fitted or given law".into(),
+                points: self.law_points.clone(),
+            },
+        ];
+        if c_hi > 0.0 && c_lo.is_finite() {
+            for (q, label) in [(self.band.0, "band start"), (self.band.1, "band end")] {
+                series.push(Series {
+                    label: label.into(),
+                    points: vec![(q, c_lo), (q, c_hi)],
+                });
+            }
+        }
+        LogLogChart {
+            title: format!("Power spectrum: {}", self.source),
+            x_label: "wavevector q [1/m]".into(),
+            y_label: "C(q) [m^4]".into(),
+            series,
+        }
+    }
+}
