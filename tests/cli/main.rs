@@ -12,7 +12,6 @@
 #[path = "../common/mod.rs"]
 mod common;
 mod support;
-mod swell;
 
 mod ageing_fit;
 mod engineering_units;
@@ -28,6 +27,8 @@ mod ranges;
 mod rubber;
 mod run;
 mod small_defects;
+mod surface;
+mod swell;
 mod tradeoff;
 mod validity;
 mod write_faults;
