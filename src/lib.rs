@@ -110,6 +110,7 @@ pub mod material;
 pub mod math;
 pub mod numerical;
 pub mod report;
+pub mod roughness;
 pub mod scenario;
 pub mod seal;
 pub mod simulate;
