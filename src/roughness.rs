@@ -1,7 +1,7 @@
 //! Drawing callouts (Ra, Rq, Rz with the cut-offs λc, λs) and the power spectra they imply.
 //!
 //! Physics only: the scenario boundary (`src/scenario/validate.rs`) reads the keys, checks them
-//! and calls these functions with SI numbers. docs/model.md §2.5 states every relation below.
+//! and calls these functions with SI numbers. docs/model.md §2.1 states every relation below.
 //!
 //! * **The measured band.** A roughness parameter of ISO 21920-2 (formerly ISO 4287/4288) is
 //!   evaluated on the profile filtered by the short-wave cut-off λs and the long-wave cut-off λc
@@ -9,7 +9,7 @@
 //!   (PY08 §2, `h_rms² = 2π ∫ q C dq`) the band's rms is `Rq = (2π ∫_{2π/λc}^{2π/λs} q C dq)^{1/2}`.
 //!   This takes the profile's band rms as the isotropic surface's band rms (a line through an
 //!   isotropic surface has the surface's height variance; the band-pass of a 1D profile mixes
-//!   in some 2D wavevectors above its own — an approximation, docs/model.md §2.5).
+//!   in some 2D wavevectors above its own — an approximation, docs/model.md §2.1).
 //! * **Ra → Rq.** For Gaussian heights of standard deviation σ, `E|h| = σ √(2/π)`, so
 //!   `Rq = √(π/2) Ra ≈ 1.2533 Ra` (the mean absolute deviation of a normal distribution; the
 //!   "RMS ≈ 1.11 Ra" of conversion charts is a shop rule that assumes no distribution).

@@ -16,10 +16,10 @@ use crate::leak::{FlatSeal, StaticProblem};
 use crate::material::Material;
 use crate::numerical::reference::NumericalSettings;
 use crate::numerical::{HeightMap, psd as map_psd};
+use crate::roughness::{self, Band, Callout, ShortWavelengths};
 use crate::seal::{Profile, SealGeometry, VolumeSwell};
 use crate::simulate::LifeProblem;
 use crate::simulate::{AsperityModulus, GrooveInterface};
-use crate::roughness::{self, Band, Callout, ShortWavelengths};
 use crate::surface::Spectrum;
 use crate::units::{self, Dimension, show};
 use toml::Spanned;
@@ -788,7 +788,7 @@ impl Source<'_> {
     /// `[rubber_surface]`: the rubber's own roughness, in the keys of `[surface]` but without a
     /// height map; refused when the counterface is a height map (the numerical level would see
     /// the map alone). The contact sees `C_counterface + C_rubber` ([`Spectrum::sum`],
-    /// docs/model.md §2.6). Messages name `rubber_surface.…`.
+    /// docs/model.md §2.2). Messages name `rubber_surface.…`.
     fn rubber_surface(
         &self,
         table: &Spanned<RawSurface>,
@@ -878,8 +878,14 @@ impl Source<'_> {
         }
         for (present, key) in [
             (raw.cutoff.as_ref().map(Spanned::span), CUTOFF.key),
-            (raw.short_cutoff.as_ref().map(Spanned::span), SHORT_CUTOFF.key),
-            (raw.short_wavelength.as_ref().map(Spanned::span), SHORT_WAVELENGTH),
+            (
+                raw.short_cutoff.as_ref().map(Spanned::span),
+                SHORT_CUTOFF.key,
+            ),
+            (
+                raw.short_wavelength.as_ref().map(Spanned::span),
+                SHORT_WAVELENGTH,
+            ),
         ] {
             if let Some(span) = present {
                 return Err(self.error(
@@ -927,7 +933,7 @@ impl Source<'_> {
     /// (default 0.8 mm), `short_cutoff` λs (default 2.5 µm), `hurst_exponent` (default 0.8),
     /// optional `q0` (< 2π/λc: a flat part) and the rule below λs (`short_wavelength =
     /// "extend"` (default) or `"stop"`, or `q1`): the spectrum of [`Callout::spectrum`] and a
-    /// note saying how it was built (docs/model.md §2.5).
+    /// note saying how it was built (docs/model.md §2.1).
     fn callout_surface(
         &self,
         table: &Spanned<RawSurface>,
@@ -1074,7 +1080,10 @@ impl Source<'_> {
                 "none: the spectrum stops at λs (short_wavelength = \"stop\")".to_owned()
             }
             ShortWavelengths::UpTo(q1) => {
-                format!("extended as the power law to the given q1 = {} 1/m", show(q1))
+                format!(
+                    "extended as the power law to the given q1 = {} 1/m",
+                    show(q1)
+                )
             }
         };
         let note = self.error(
@@ -1083,7 +1092,7 @@ impl Source<'_> {
             format!(
                 "note: callout {name} = {} m over λs = {} m … λc = {} m read as Rq = {} m ({how}), \
                  H = {}{}; roughness below λs: {rule}; the spectrum: q0 = {} 1/m, h_rms = {} m, \
-                 rms slope = {} [docs/model.md §2.5]",
+                 rms slope = {} [docs/model.md §2.1]",
                 show(given),
                 show(short_cutoff),
                 show(cutoff),

@@ -15,6 +15,7 @@ mod support;
 mod swell;
 
 mod ageing_fit;
+mod callout;
 mod engineering_units;
 mod figures;
 mod fit;
