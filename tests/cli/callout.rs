@@ -112,7 +112,7 @@ fn cutoff_not_longer_than_short_cutoff_is_refused() {
         "surface.cutoff",
         "must lie in [1e-5, 0.1] m, got 2e-6 m",
     );
-    let text = flat("[surface]\nra = \"0.4 um\"\ncutoff = \"20 um\"");
+    let text = flat("[surface]\nra = \"0.4 um\"\ncutoff = \"20 um\"\nshort_cutoff = \"30 um\"");
     refused(
         &text,
         line_of(&text, "cutoff"),
