@@ -170,7 +170,9 @@ impl Callout {
     /// `[2π/λc, q1]`, flat on `[q0, 2π/λc]` if `q0` is given (a roll-off at 2π/λc).
     pub fn spectrum(&self) -> Result<Spectrum, SpectrumError> {
         let (qc, qs) = (self.band.q_lo(), self.band.q_hi());
-        if !(self.band.cutoff > self.band.short_cutoff) {
+        if self.band.cutoff.partial_cmp(&self.band.short_cutoff)
+            != Some(std::cmp::Ordering::Greater)
+        {
             return Err(SpectrumError::Invalid(format!(
                 "the cut-off λc = {} m must be longer than the short cut-off λs = {} m",
                 self.band.cutoff, self.band.short_cutoff
