@@ -111,6 +111,7 @@ pub mod math;
 pub mod numerical;
 pub mod profile;
 pub mod report;
+pub mod roughness;
 pub mod scenario;
 pub mod seal;
 pub mod simulate;

@@ -59,6 +59,7 @@ pub(super) struct RawScenario {
     pub material: Spanned<RawMaterial>,
     pub surface: Spanned<RawSurface>,
     pub groove_surface: Option<Spanned<RawSurface>>,
+    pub rubber_surface: Option<Spanned<RawSurface>>,
     pub fluid: Spanned<RawFluid>,
     pub seal: Spanned<RawSeal>,
     pub model: Option<Spanned<RawModel>>,
@@ -77,6 +78,7 @@ impl RawScenario {
         "material",
         "surface",
         "groove_surface",
+        "rubber_surface",
         "fluid",
         "seal",
         "model",
@@ -165,9 +167,10 @@ pub(super) struct RawMaterialFile {
     pub material: Spanned<RawMaterial>,
 }
 
-/// `[surface]`: the self-affine parameters, `psd_file`, or `height_map` with its
-/// `pixel_size` and optional `height_unit` (which go together is checked in validation, so
-/// that the message can explain the options).
+/// `[surface]` (and `[groove_surface]`, `[rubber_surface]`): the self-affine parameters, a
+/// drawing callout (`ra`, `rq` or `rz` with `cutoff`, `short_cutoff`, `short_wavelength`),
+/// `psd_file`, or `height_map` with its `pixel_size` and optional `height_unit` (which go
+/// together is checked in validation, so that the message can explain the options).
 #[derive(Debug, serde::Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct RawSurface {
@@ -180,6 +183,18 @@ pub(super) struct RawSurface {
     pub height_map: Option<Spanned<String>>,
     pub pixel_size: Option<Quantity>,
     pub height_unit: Option<Spanned<String>>,
+    /// Callout: arithmetic mean roughness Ra over the band λs … λc.
+    pub ra: Option<Quantity>,
+    /// Callout: rms roughness Rq over the band.
+    pub rq: Option<Quantity>,
+    /// Callout: mean peak-to-valley height Rz over one sampling length λc.
+    pub rz: Option<Quantity>,
+    /// Callout: long-wave cut-off λc (the sampling length).
+    pub cutoff: Option<Quantity>,
+    /// Callout: short-wave cut-off λs.
+    pub short_cutoff: Option<Quantity>,
+    /// Callout: the rule below λs, `"extend"` or `"stop"`.
+    pub short_wavelength: Option<Spanned<String>>,
 }
 
 /// `[fluid]`: Newtonian fluid and the pressure across the seal; its viscosity one of

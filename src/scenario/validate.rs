@@ -16,6 +16,7 @@ use crate::leak::{FlatSeal, StaticProblem};
 use crate::material::Material;
 use crate::numerical::reference::NumericalSettings;
 use crate::numerical::{HeightMap, psd as map_psd};
+use crate::roughness::{self, Band, Callout, ShortWavelengths};
 use crate::seal::{Profile, SealGeometry, VolumeSwell};
 use crate::simulate::LifeProblem;
 use crate::simulate::{AsperityModulus, GrooveInterface};
@@ -143,6 +144,40 @@ const PIXEL_SIZE: Field = field(
     "m",
     Bound::Range(1e-10, 1e-2),
 );
+const RA: Field = field(
+    "surface.ra",
+    Dimension::LENGTH,
+    "m",
+    Bound::Range(1e-9, 1e-4),
+);
+const RQ: Field = field(
+    "surface.rq",
+    Dimension::LENGTH,
+    "m",
+    Bound::Range(1e-9, 1.25e-4),
+);
+const RZ: Field = field(
+    "surface.rz",
+    Dimension::LENGTH,
+    "m",
+    Bound::Range(5e-9, 1e-3),
+);
+/// λc: ISO 21920-3's sampling lengths run 0.08–8 mm; 10 µm – 100 mm is accepted.
+const CUTOFF: Field = field(
+    "surface.cutoff",
+    Dimension::LENGTH,
+    "m",
+    Bound::Range(1e-5, 0.1),
+);
+/// λs: ISO 3274's 0.8–25 µm; 10 nm (an AFM's reach) – 1 mm is accepted.
+const SHORT_CUTOFF: Field = field(
+    "surface.short_cutoff",
+    Dimension::LENGTH,
+    "m",
+    Bound::Range(1e-8, 1e-3),
+);
+/// Key of the rule below λs, in messages.
+const SHORT_WAVELENGTH: &str = "surface.short_wavelength";
 /// Key of the height map file, in messages.
 const HEIGHT_MAP: &str = "surface.height_map";
 /// Key of the height map's unit, in messages.
@@ -289,11 +324,29 @@ impl Source<'_> {
             Some((s, _)) => swollen_material(material, asperity_modulus, s),
             None => (material, asperity_modulus),
         };
-        let (spectrum, height_map) = self.surface(&raw.surface)?;
+        let (spectrum, height_map, mut notes) = self.surface(&raw.surface)?;
         let fluid = self.fluid(&raw.fluid)?;
         let seal = self.seal(&raw.seal, swell.as_ref().map(|s| &s.0))?;
         let installation_time = self.installation_time(&raw.seal)?;
-        let groove = self.groove_surface(raw.groove_surface.as_ref(), seal.gland.is_some())?;
+        let (groove, groove_notes) =
+            self.groove_surface(raw.groove_surface.as_ref(), seal.gland.is_some())?;
+        notes.extend(groove_notes);
+        let (spectrum, groove) = match &raw.rubber_surface {
+            None => (spectrum, groove),
+            Some(table) => {
+                let (rubber, rubber_notes) = self.rubber_surface(table, height_map.is_some())?;
+                notes.extend(rubber_notes);
+                let sum = |s: &Spectrum| {
+                    s.sum(&rubber)
+                        .map_err(|e| self.error(table.span(), "rubber_surface", e.to_string()))
+                };
+                let groove = match groove {
+                    GrooveInterface::Own(g) => GrooveInterface::Own(sum(&g)?),
+                    other => other,
+                };
+                (sum(&spectrum)?, groove)
+            }
+        };
         let (contact, shape_factor) = match &raw.model {
             Some(model) => self.model(model.get_ref())?,
             None => (ContactSettings::default(), DEFAULT_SHAPE_FACTOR),
@@ -339,6 +392,7 @@ impl Source<'_> {
             motion,
         };
         let mut warnings = seal.warnings;
+        warnings.extend(notes.iter().map(ToString::to_string));
         let known = raw
             .fluid
             .get_ref()
@@ -689,18 +743,19 @@ impl Source<'_> {
 
     /// `[groove_surface]`: the groove bottom's surface of a groove-seated ring, in the keys of
     /// `[surface]` but without a height map (absent: the counterface's surface); refused without a
-    /// gland. Messages name `groove_surface.…`.
+    /// gland. Messages name `groove_surface.…`. Also returns the notes of a callout.
     fn groove_surface(
         &self,
         table: Option<&Spanned<RawSurface>>,
         in_gland: bool,
-    ) -> Result<GrooveInterface, ScenarioError> {
+    ) -> Result<(GrooveInterface, Vec<ScenarioError>), ScenarioError> {
         let Some(table) = table else {
-            return Ok(if in_gland {
+            let groove = if in_gland {
                 GrooveInterface::Counterface
             } else {
                 GrooveInterface::None
-            });
+            };
+            return Ok((groove, Vec::new()));
         };
         if !in_gland {
             return Err(self.error(
@@ -715,40 +770,135 @@ impl Source<'_> {
                 map.span(),
                 "groove_surface.height_map",
                 "a height map describes the counterface for the numerical level; give the groove \
-                 bottom as a spectrum (self-affine keys or psd_file)",
+                 bottom as a spectrum (self-affine keys, a callout or psd_file)",
             ));
         }
-        let rename = |text: String| text.replace("surface.", "groove_surface.");
         match self.surface(table) {
-            Ok((spectrum, _)) => Ok(GrooveInterface::Own(spectrum)),
-            Err(ScenarioError::Invalid {
-                path,
-                line,
-                key,
-                message,
-            }) => Err(ScenarioError::Invalid {
-                path,
-                line,
-                key: key.map(|k| match k.strip_prefix("surface") {
-                    Some(rest) => format!("groove_surface{rest}"),
-                    None => k,
-                }),
-                message: rename(message),
-            }),
-            Err(other) => Err(other),
+            Ok((spectrum, _, notes)) => Ok((
+                GrooveInterface::Own(spectrum),
+                notes
+                    .into_iter()
+                    .map(|n| renamed(n, "groove_surface"))
+                    .collect(),
+            )),
+            Err(e) => Err(renamed(e, "groove_surface")),
+        }
+    }
+
+    /// `[rubber_surface]`: the rubber's own roughness, in the keys of `[surface]` but without a
+    /// height map; refused when the counterface is a height map (the numerical level would see
+    /// the map alone). The contact sees `C_counterface + C_rubber` ([`Spectrum::sum`],
+    /// docs/model.md §2.2). Messages name `rubber_surface.…`.
+    fn rubber_surface(
+        &self,
+        table: &Spanned<RawSurface>,
+        counterface_map: bool,
+    ) -> Result<(Spectrum, Vec<ScenarioError>), ScenarioError> {
+        if let Some(map) = &table.get_ref().height_map {
+            return Err(self.error(
+                map.span(),
+                "rubber_surface.height_map",
+                "a height map describes the counterface for the numerical level; give the \
+                 rubber's roughness as a spectrum (self-affine keys, a callout or psd_file)",
+            ));
+        }
+        if counterface_map {
+            return Err(self.error(
+                table.span(),
+                "rubber_surface",
+                "the counterface is a height map, which the numerical level uses as the whole \
+                 surface, without the rubber's roughness: give [surface] as a spectrum \
+                 (psd_file, a callout or self-affine keys) or remove [rubber_surface]",
+            ));
+        }
+        match self.surface(table) {
+            Ok((spectrum, _, notes)) => Ok((
+                spectrum,
+                notes
+                    .into_iter()
+                    .map(|n| renamed(n, "rubber_surface"))
+                    .collect(),
+            )),
+            Err(e) => Err(renamed(e, "rubber_surface")),
         }
     }
 
     /// `[surface]`: a self-affine spectrum, a tabulated one from `psd_file`, or the spectrum
     /// estimated from `height_map` (which is also returned, for the numerical level).
+    /// The notes returned say how a callout became a spectrum (printed with the warnings).
     fn surface(
         &self,
         table: &Spanned<RawSurface>,
-    ) -> Result<(Spectrum, Option<HeightMap>), ScenarioError> {
+    ) -> Result<(Spectrum, Option<HeightMap>, Vec<ScenarioError>), ScenarioError> {
         let raw = table.get_ref();
+        let callout: Vec<(&Quantity, &Field)> = [(&raw.ra, &RA), (&raw.rq, &RQ), (&raw.rz, &RZ)]
+            .into_iter()
+            .filter_map(|(q, f)| q.as_ref().map(|q| (q, f)))
+            .collect();
+        if let Some(&(value, field)) = callout.first() {
+            let name = field.key.trim_start_matches("surface.");
+            if let Some(&(other, other_field)) = callout.get(1) {
+                return Err(self.error(
+                    other.span(),
+                    other_field.key,
+                    format!(
+                        "{name} and {} are mutually exclusive: a drawing callout gives one of \
+                         ra, rq or rz",
+                        other_field.key.trim_start_matches("surface.")
+                    ),
+                ));
+            }
+            for (present, key) in [
+                (
+                    raw.rms_roughness.as_ref().map(Spanned::span),
+                    RMS_ROUGHNESS.key,
+                ),
+                (raw.psd_file.as_ref().map(Spanned::span), "surface.psd_file"),
+                (raw.height_map.as_ref().map(Spanned::span), HEIGHT_MAP),
+                (raw.pixel_size.as_ref().map(Spanned::span), PIXEL_SIZE.key),
+                (raw.height_unit.as_ref().map(Spanned::span), HEIGHT_UNIT),
+                (raw.rolloff.as_ref().map(Spanned::span), ROLLOFF.key),
+            ] {
+                if let Some(span) = present {
+                    let short = key.trim_start_matches("surface.");
+                    let why = if key == ROLLOFF.key {
+                        "the callout's spectrum rolls off at 2π/cutoff".to_owned()
+                    } else {
+                        format!("the callout gives the spectrum; remove {short} or {name}")
+                    };
+                    return Err(self.error(
+                        span,
+                        key,
+                        format!("{short} and {name} are mutually exclusive: {why}"),
+                    ));
+                }
+            }
+            let (spectrum, note) = self.callout_surface(table, value, field)?;
+            return Ok((spectrum, None, vec![note]));
+        }
+        for (present, key) in [
+            (raw.cutoff.as_ref().map(Spanned::span), CUTOFF.key),
+            (
+                raw.short_cutoff.as_ref().map(Spanned::span),
+                SHORT_CUTOFF.key,
+            ),
+            (
+                raw.short_wavelength.as_ref().map(Spanned::span),
+                SHORT_WAVELENGTH,
+            ),
+        ] {
+            if let Some(span) = present {
+                return Err(self.error(
+                    span,
+                    key,
+                    "only applies to a drawing callout: give ra, rq or rz with it, or remove \
+                     this key",
+                ));
+            }
+        }
         if let Some(file) = &raw.height_map {
             let (spectrum, map) = self.height_map_surface(raw, file)?;
-            return Ok((spectrum, Some(map)));
+            return Ok((spectrum, Some(map), Vec::new()));
         }
         for (present, key) in [
             (raw.pixel_size.as_ref().map(Spanned::span), PIXEL_SIZE.key),
@@ -776,7 +926,185 @@ impl Source<'_> {
             }
             None => self.self_affine_surface(table)?,
         };
-        Ok((spectrum, None))
+        Ok((spectrum, None, Vec::new()))
+    }
+
+    /// A drawing callout (`ra`, `rq` or `rz`, given as `value` of `field`) with `cutoff` λc
+    /// (default 0.8 mm), `short_cutoff` λs (default 2.5 µm), `hurst_exponent` (default 0.8),
+    /// optional `q0` (< 2π/λc: a flat part) and the rule below λs (`short_wavelength =
+    /// "extend"` (default) or `"stop"`, or `q1`): the spectrum of [`Callout::spectrum`] and a
+    /// note saying how it was built (docs/model.md §2.1).
+    fn callout_surface(
+        &self,
+        table: &Spanned<RawSurface>,
+        value: &Quantity,
+        field: &Field,
+    ) -> Result<(Spectrum, ScenarioError), ScenarioError> {
+        let raw = table.get_ref();
+        let given = self.quantity(value, field)?;
+        let hurst = self.optional(raw.hurst_exponent.as_ref(), &HURST_EXPONENT)?;
+        let cutoff = self
+            .optional(raw.cutoff.as_ref(), &CUTOFF)?
+            .unwrap_or(roughness::DEFAULT_CUTOFF);
+        let short_cutoff = self
+            .optional(raw.short_cutoff.as_ref(), &SHORT_CUTOFF)?
+            .unwrap_or(roughness::DEFAULT_SHORT_CUTOFF);
+        if cutoff <= short_cutoff {
+            let (span, key) = match (&raw.cutoff, &raw.short_cutoff) {
+                (Some(q), _) => (q.span(), CUTOFF.key),
+                (None, Some(q)) => (q.span(), SHORT_CUTOFF.key),
+                (None, None) => (table.span(), CUTOFF.key),
+            };
+            return Err(self.error(
+                span,
+                key,
+                format!(
+                    "the cut-off λc (cutoff = {} m) must be longer than the short cut-off λs \
+                     (short_cutoff = {} m): the measured band is λs … λc",
+                    show(cutoff),
+                    show(short_cutoff)
+                ),
+            ));
+        }
+        let band = Band {
+            cutoff,
+            short_cutoff,
+        };
+        let q1 = self.optional(raw.q1.as_ref(), &Q1)?;
+        let short = match (&raw.short_wavelength, q1) {
+            (Some(rule), Some(_)) => {
+                return Err(self.error(
+                    rule.span(),
+                    SHORT_WAVELENGTH,
+                    "short_wavelength and q1 are mutually exclusive: q1 already says where the \
+                     roughness below λs ends",
+                ));
+            }
+            (None, Some(q1)) => {
+                if q1 < band.q_hi() {
+                    return Err(self.error(
+                        raw.q1.as_ref().map_or(table.span(), Spanned::span),
+                        Q1.key,
+                        format!(
+                            "must be at least 2π/short_cutoff = {} 1/m (the measured band ends \
+                             there), got {} 1/m",
+                            show(band.q_hi()),
+                            show(q1)
+                        ),
+                    ));
+                }
+                ShortWavelengths::UpTo(q1)
+            }
+            (Some(rule), None) => match rule.get_ref().trim() {
+                "extend" => ShortWavelengths::Extend,
+                "stop" => ShortWavelengths::Stop,
+                other => {
+                    return Err(self.error(
+                        rule.span(),
+                        SHORT_WAVELENGTH,
+                        format!(
+                            "expected \"extend\" (the power law continues to 10 nm) or \"stop\" \
+                             (no roughness below short_cutoff), got {other:?}"
+                        ),
+                    ));
+                }
+            },
+            (None, None) => ShortWavelengths::Extend,
+        };
+        let q0 = self.optional(raw.q0.as_ref(), &Q0)?;
+        if let (Some(q0), Some(raw_q0)) = (q0, &raw.q0)
+            && q0 > band.q_lo()
+        {
+            return Err(self.error(
+                raw_q0.span(),
+                Q0.key,
+                format!(
+                    "must not exceed 2π/cutoff = {} 1/m (it would cut the measured band), got \
+                     {} 1/m",
+                    show(band.q_lo()),
+                    show(q0)
+                ),
+            ));
+        }
+        let name = field.key.trim_start_matches("surface.");
+        let (rq, how) = if field.key == RA.key {
+            (
+                roughness::rq_from_ra(given),
+                "Gaussian heights: Rq = √(π/2) Ra".to_owned(),
+            )
+        } else if field.key == RZ.key {
+            let n = cutoff / short_cutoff;
+            if n < 2.0 {
+                return Err(self.error(
+                    value.span(),
+                    RZ.key,
+                    format!(
+                        "needs cutoff/short_cutoff ≥ 2 (Rz is a peak-to-valley height over \
+                         cutoff/short_cutoff independent samples), got {}",
+                        show(n)
+                    ),
+                ));
+            }
+            let ratio = roughness::rz_over_rq(cutoff, short_cutoff);
+            (
+                given / ratio,
+                format!(
+                    "Gaussian heights, N = λc/λs = {} independent samples per λc: Rz = 2 m(N) Rq \
+                     = {} Rq; practice's Rz/Ra ratios spread 4–7 and more, so Rq is uncertain \
+                     by up to ≈ ×2",
+                    show(n),
+                    show(ratio)
+                ),
+            )
+        } else {
+            (given, "Rq given".to_owned())
+        };
+        let callout = Callout {
+            rq,
+            hurst: hurst.unwrap_or(roughness::DEFAULT_HURST),
+            band,
+            q0,
+            short,
+        };
+        let spectrum = callout
+            .spectrum()
+            .map_err(|e| self.error(value.span(), field.key, e.to_string()))?;
+        let rule = match short {
+            ShortWavelengths::Extend => format!(
+                "extended as the power law to {} m (q1 = {} 1/m; short_wavelength = \"extend\", \
+                 the default; \"stop\" ends it at λs)",
+                show(roughness::EXTEND_TO_WAVELENGTH),
+                show(spectrum.q1())
+            ),
+            ShortWavelengths::Stop => {
+                "none: the spectrum stops at λs (short_wavelength = \"stop\")".to_owned()
+            }
+            ShortWavelengths::UpTo(q1) => {
+                format!(
+                    "extended as the power law to the given q1 = {} 1/m",
+                    show(q1)
+                )
+            }
+        };
+        let note = self.error(
+            value.span(),
+            field.key,
+            format!(
+                "note: callout {name} = {} m over λs = {} m … λc = {} m read as Rq = {} m ({how}), \
+                 H = {}{}; roughness below λs: {rule}; the spectrum: q0 = {} 1/m, h_rms = {} m, \
+                 rms slope = {} [docs/model.md §2.1]",
+                show(given),
+                show(short_cutoff),
+                show(cutoff),
+                show(rq),
+                show(callout.hurst),
+                if hurst.is_none() { " (default)" } else { "" },
+                show(spectrum.q0()),
+                show(spectrum.rms_roughness()),
+                show(spectrum.rms_slope()),
+            ),
+        );
+        Ok((spectrum, note))
     }
 
     /// `height_map` (relative to the scenario's directory) with `pixel_size` and the optional
@@ -988,6 +1316,28 @@ impl Source<'_> {
         spectrum
             .restricted(lo, hi)
             .map_err(|e| self.error(span, key, e.to_string()))
+    }
+}
+
+/// `error` (or note) of a `[surface]`-keyed table re-addressed to `[table]` (`groove_surface`,
+/// `rubber_surface`): its key and the `surface.` keys its message names.
+fn renamed(error: ScenarioError, table: &str) -> ScenarioError {
+    match error {
+        ScenarioError::Invalid {
+            path,
+            line,
+            key,
+            message,
+        } => ScenarioError::Invalid {
+            path,
+            line,
+            key: key.map(|k| match k.strip_prefix("surface") {
+                Some(rest) => format!("{table}{rest}"),
+                None => k,
+            }),
+            message: message.replace("surface.", &format!("{table}.")),
+        },
+        other => other,
     }
 }
 

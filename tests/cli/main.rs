@@ -14,6 +14,7 @@ mod common;
 mod support;
 
 mod ageing_fit;
+mod callout;
 mod engineering_units;
 mod figures;
 mod fit;
