@@ -5,19 +5,14 @@
 use super::{CliError, write_output};
 use crate::profile::{ProfileOptions, analyse};
 use crate::report::surface::SurfaceReport;
+use crate::roughness::{Band, DEFAULT_CUTOFF, DEFAULT_SHORT_CUTOFF, ra_from_rq, rz_over_rq};
 use crate::scenario::Scenario;
 use crate::scenario::profile::read_trace;
 use crate::surface::Spectrum;
 use crate::units::{Dimension, parse_quantity, show};
 use crate::validity::MAX_RMS_SLOPE;
 use clap::Args;
-use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
-
-/// Default sampling length λc of a callout \[m\] (ISO 4288 for Ra 0.1–2 µm — recalled).
-pub const DEFAULT_CUTOFF: f64 = 0.8e-3;
-/// Default short-wavelength cut-off λs \[m\] (ISO 3274 for λc = 0.8 mm — recalled).
-pub const DEFAULT_SHORT_CUTOFF: f64 = 2.5e-6;
 
 /// Arguments of `sealsim surface`.
 #[derive(Debug, Clone, Args)]
@@ -166,22 +161,19 @@ fn spectrum_report(
 ) -> SurfaceReport {
     let (q0, q1) = (spectrum.q0(), spectrum.q1());
     let mut warnings = Vec::new();
-    let (lo, hi) = ((2.0 * PI / lc).max(q0), (2.0 * PI / ls).min(q1));
-    let rq = if lo < hi {
-        spectrum
-            .restricted(lo, hi)
-            .map_or(0.0, |s| s.rms_roughness())
-    } else {
-        0.0
+    let band = Band {
+        cutoff: lc,
+        short_cutoff: ls,
     };
-    if lo > 2.0 * PI / lc || hi < 2.0 * PI / ls {
+    let rq = band.rms(spectrum);
+    if q0 > band.q_lo() || q1 < band.q_hi() {
         warnings.push(format!(
-            "the spectrum covers only q = {} … {} 1/m of the callout band {} … {} 1/m: Ra and \
-             Rq miss the rest",
+            "the spectrum covers only q = {} … {} 1/m of the callout band {} … {} 1/m: Ra, Rq \
+             and Rz miss the rest",
             show(q0),
             show(q1),
-            show(2.0 * PI / lc),
-            show(2.0 * PI / ls)
+            show(band.q_lo()),
+            show(band.q_hi())
         ));
     }
     let slope = spectrum.rms_slope();
@@ -198,14 +190,15 @@ fn spectrum_report(
     SurfaceReport {
         source,
         kind: kind.into(),
-        ra: rq * (2.0 / PI).sqrt(),
+        ra: ra_from_rq(rq),
         rq,
-        rz: None,
+        rz: Some(rq * rz_over_rq(lc, ls)),
         parameters_basis: format!(
-            "from the spectrum over the callout band λc = {} mm, λs = {} µm; Ra = Rq·√(2/π) for \
-             Gaussian heights",
+            "from the spectrum over the callout band λc = {} mm, λs = {} µm for Gaussian heights: \
+             Ra = Rq·√(2/π), Rz = {:.2} Rq (docs/model.md §2.1)",
             show(lc * 1e3),
-            show(ls * 1e6)
+            show(ls * 1e6),
+            rz_over_rq(lc, ls)
         ),
         h_rms: spectrum.rms_roughness(),
         rms_slope: slope,

@@ -57,6 +57,17 @@ pub enum ScenarioError {
     },
     /// The temperature history named by `environment.history` was read but its contents are
     /// invalid.
+    /// A line trace named by `surface.profile` cannot be read or used.
+    TraceFormat {
+        /// The trace file, as resolved against the scenario's directory.
+        trace: PathBuf,
+        /// 1-based line in the trace file, when the problem is on one line.
+        trace_line: Option<usize>,
+        /// The scenario file and the line of its `profile` key.
+        scenario: PathBuf,
+        line: usize,
+        message: String,
+    },
     HistoryFormat {
         /// The history file, as resolved against the scenario's directory.
         history: PathBuf,
@@ -78,6 +89,7 @@ impl ScenarioError {
             ScenarioError::PsdFormat { psd, .. } => psd,
             ScenarioError::HistoryFormat { history, .. } => history,
             ScenarioError::HeightMapFormat { map, .. } => map,
+            ScenarioError::TraceFormat { trace, .. } => trace,
         }
     }
 }
@@ -128,6 +140,23 @@ impl fmt::Display for ScenarioError {
                 write!(
                     f,
                     ": {message} (PSD file named by surface.psd_file at {}:{line})",
+                    scenario.display()
+                )
+            }
+            ScenarioError::TraceFormat {
+                trace,
+                trace_line,
+                scenario,
+                line,
+                message,
+            } => {
+                write!(f, "{}", trace.display())?;
+                if let Some(l) = trace_line {
+                    write!(f, ":{l}")?;
+                }
+                write!(
+                    f,
+                    ": {message} (line trace named by surface.profile at {}:{line})",
                     scenario.display()
                 )
             }

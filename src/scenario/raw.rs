@@ -195,6 +195,26 @@ pub(super) struct RawSurface {
     pub short_cutoff: Option<Quantity>,
     /// Callout: the rule below λs, `"extend"` or `"stop"`.
     pub short_wavelength: Option<Spanned<String>>,
+    /// Line traces (CSV `x,z`): one file or a list, relative to the scenario.
+    pub profile: Option<Spanned<Files>>,
+}
+
+/// One file name or a list of them.
+#[derive(Debug, serde::Deserialize)]
+#[serde(untagged)]
+pub(super) enum Files {
+    One(String),
+    Many(Vec<String>),
+}
+
+impl Files {
+    /// The names, in order.
+    pub fn names(&self) -> Vec<&str> {
+        match self {
+            Files::One(f) => vec![f.as_str()],
+            Files::Many(v) => v.iter().map(String::as_str).collect(),
+        }
+    }
 }
 
 /// `[fluid]`: Newtonian fluid and the pressure across the seal; its viscosity one of

@@ -858,6 +858,7 @@ impl Source<'_> {
                 (raw.pixel_size.as_ref().map(Spanned::span), PIXEL_SIZE.key),
                 (raw.height_unit.as_ref().map(Spanned::span), HEIGHT_UNIT),
                 (raw.rolloff.as_ref().map(Spanned::span), ROLLOFF.key),
+                (raw.profile.as_ref().map(Spanned::span), "surface.profile"),
             ] {
                 if let Some(span) = present {
                     let short = key.trim_start_matches("surface.");
@@ -896,6 +897,10 @@ impl Source<'_> {
                 ));
             }
         }
+        if let Some(files) = &raw.profile {
+            let (spectrum, note) = self.profile_surface(raw, files)?;
+            return Ok((spectrum, None, vec![note]));
+        }
         if let Some(file) = &raw.height_map {
             let (spectrum, map) = self.height_map_surface(raw, file)?;
             return Ok((spectrum, Some(map), Vec::new()));
@@ -919,7 +924,8 @@ impl Source<'_> {
                 return Err(self.error(
                     table.span(),
                     "surface",
-                    "no spectrum given: set either the self-affine parameters (rms_roughness, \
+                    "no spectrum given: set either a drawing callout (ra, rq or rz), line \
+                     traces (profile), the self-affine parameters (rms_roughness, \
                      hurst_exponent, q0, q1, optional rolloff), psd_file (a CSV of q, C) or \
                      height_map (a CSV grid of heights, with pixel_size)",
                 ));
@@ -927,6 +933,135 @@ impl Source<'_> {
             None => self.self_affine_surface(table)?,
         };
         Ok((spectrum, None, Vec::new()))
+    }
+
+    /// `profile`: line traces (CSV `x,z`, relative to the scenario's directory) → the isotropic
+    /// 2-D spectrum over the band the traces can be trusted in ([`crate::profile::analyse`]),
+    /// continued above the band by the fitted power law up to `q1` (default 2π/10 nm, the rule
+    /// of the callouts, docs/model.md §2.1) and stopped below it (longer waves than the traces
+    /// see are left out); with a note saying how it was built (docs/model.md §2.3).
+    fn profile_surface(
+        &self,
+        raw: &RawSurface,
+        files: &Spanned<crate::scenario::raw::Files>,
+    ) -> Result<(Spectrum, ScenarioError), ScenarioError> {
+        for (present, key) in [
+            (
+                raw.rms_roughness.as_ref().map(Spanned::span),
+                RMS_ROUGHNESS.key,
+            ),
+            (
+                raw.hurst_exponent.as_ref().map(Spanned::span),
+                HURST_EXPONENT.key,
+            ),
+            (raw.q0.as_ref().map(Spanned::span), "surface.q0"),
+            (raw.rolloff.as_ref().map(Spanned::span), ROLLOFF.key),
+            (raw.psd_file.as_ref().map(Spanned::span), "surface.psd_file"),
+            (raw.height_map.as_ref().map(Spanned::span), HEIGHT_MAP),
+            (raw.pixel_size.as_ref().map(Spanned::span), PIXEL_SIZE.key),
+            (raw.height_unit.as_ref().map(Spanned::span), HEIGHT_UNIT),
+        ] {
+            if let Some(span) = present {
+                let short = key.trim_start_matches("surface.");
+                return Err(self.error(
+                    span,
+                    key,
+                    format!(
+                        "{short} and profile are mutually exclusive: the traces give the spectrum \
+                         (and its Hurst exponent); only q1, where the fitted power law ends, may \
+                         go with them"
+                    ),
+                ));
+            }
+        }
+        let line = self.line(files.span().start);
+        let names = files.get_ref().names();
+        if names.is_empty() {
+            return Err(self.error(files.span(), "surface.profile", "names no trace file"));
+        }
+        let mut traces = Vec::with_capacity(names.len());
+        for name in &names {
+            let path = self.relative_path(name);
+            let trace = crate::scenario::profile::read_trace(&path).map_err(|e| {
+                ScenarioError::TraceFormat {
+                    trace: path.clone(),
+                    trace_line: e.line,
+                    scenario: self.path.to_path_buf(),
+                    line,
+                    message: e.message,
+                }
+            })?;
+            traces.push(trace);
+        }
+        let first = self.relative_path(names[0]);
+        let error = |message: String| ScenarioError::TraceFormat {
+            trace: first.clone(),
+            trace_line: None,
+            scenario: self.path.to_path_buf(),
+            line,
+            message,
+        };
+        let result = crate::profile::analyse(&traces, &crate::profile::ProfileOptions::default())
+            .map_err(|e| error(e.to_string()))?;
+        let (q_lo, q_hi) = result.band;
+        let hurst = result.hurst.0;
+        let q1 = match &raw.q1 {
+            Some(q) => {
+                let q1 = self.quantity(q, &Q1)?;
+                if q1 < q_hi {
+                    return Err(self.error(
+                        q.span(),
+                        Q1.key,
+                        format!(
+                            "below the traces' band (which ends at {} 1/m): q1 continues the \
+                             fitted power law beyond it",
+                            show(q_hi)
+                        ),
+                    ));
+                }
+                q1
+            }
+            None => 2.0 * std::f64::consts::PI / roughness::EXTEND_TO_WAVELENGTH,
+        };
+        let mut q: Vec<f64> = result
+            .psd_1d
+            .q
+            .iter()
+            .copied()
+            .filter(|&x| x >= q_lo && x <= q_hi)
+            .collect();
+        let mut c: Vec<f64> = q.iter().map(|&x| result.spectrum.c(x)).collect();
+        if q1 > q_hi * (1.0 + 1e-9) {
+            let c_hi = result.spectrum.c(q_hi);
+            if q.last().is_some_and(|&last| last < q_hi) {
+                q.push(q_hi);
+                c.push(c_hi);
+            }
+            q.push(q1);
+            c.push(c_hi * (q1 / q_hi).powf(-2.0 * (1.0 + hurst)));
+        }
+        let spectrum = Spectrum::tabulated(&q, &c).map_err(|e| error(e.to_string()))?;
+        let note = self.error(
+            files.span(),
+            "surface.profile",
+            format!(
+                "note: {} trace(s): band {} … {} 1/m (h_rms {} µm, rms slope {:.3}), fitted H = \
+                 {:.3} ({:.3} – {:.3}), continued as a power law to q1 = {} 1/m: h_rms {} µm, \
+                 rms slope {:.3} [docs/model.md §2.3]",
+                traces.len(),
+                show(q_lo),
+                show(q_hi),
+                show(result.h_rms * 1e6),
+                result.rms_slope,
+                hurst,
+                result.hurst.1.0,
+                result.hurst.1.1,
+                show(q1),
+                show(spectrum.rms_roughness() * 1e6),
+                spectrum.rms_slope()
+            ),
+        );
+        Ok((spectrum, note))
     }
 
     /// A drawing callout (`ra`, `rq` or `rz`, given as `value` of `field`) with `cutoff` λc

@@ -126,3 +126,91 @@ fn bad_traces_are_located_and_nothing_is_written() {
         assert!(!out.exists() && !plot.exists(), "{name}: nothing written");
     }
 }
+
+/// The shipped trace scenario with its `[surface]` replaced by `surface` (written next to a
+/// copy of the traces directory).
+fn trace_scenario(dir: &TempDir, surface: &str) -> std::path::PathBuf {
+    let manifest = env!("CARGO_MANIFEST_DIR");
+    let text = fs::read_to_string(format!(
+        "{manifest}/scenarios/oring-nbr-water-80c-trace.toml"
+    ))
+    .unwrap();
+    let start = text.find("[surface]").unwrap();
+    let end = text.find("[fluid]").unwrap();
+    let text = format!("{}{surface}\n\n{}", &text[..start], &text[end..]);
+    fs::create_dir_all(dir.path().join("traces")).unwrap();
+    fs::copy(
+        format!("{manifest}/scenarios/traces/ground-fine.csv"),
+        dir.path().join("traces/ground-fine.csv"),
+    )
+    .unwrap();
+    let path = dir.path().join("s.toml");
+    fs::write(&path, text).unwrap();
+    path
+}
+
+#[test]
+fn a_scenario_reads_its_face_from_a_line_trace() {
+    let manifest = env!("CARGO_MANIFEST_DIR");
+    let out = cargo_bin_cmd!("sealsim")
+        .arg("leak")
+        .arg(format!(
+            "{manifest}/scenarios/oring-nbr-water-80c-trace.toml"
+        ))
+        .assert()
+        .success();
+    let stderr = String::from_utf8(out.get_output().stderr.clone()).unwrap();
+    assert!(
+        stderr.contains("surface.profile: note: 1 trace(s): band") && stderr.contains("fitted H"),
+        "{stderr}"
+    );
+    // the spectrum the contact sees is the traces' (its Hurst exponent is the fitted one)
+    let j = json_of(&[&format!(
+        "{manifest}/scenarios/oring-nbr-water-80c-trace.toml"
+    )]);
+    assert!(j["hurst_exponent"].is_null(), "a tabulated spectrum: {j}");
+    let slope = j["rms_slope"].as_f64().unwrap();
+    assert!(slope > 0.1 && slope < 0.5, "{slope}");
+}
+
+#[test]
+fn trace_scenario_bad_input() {
+    let dir = TempDir::new().unwrap();
+    // a callout and a trace at once
+    let path = trace_scenario(
+        &dir,
+        "[surface]\nprofile = \"traces/ground-fine.csv\"\nra = \"0.4 um\"",
+    );
+    cargo_bin_cmd!("sealsim")
+        .arg("leak")
+        .arg(&path)
+        .assert()
+        .code(2)
+        .stderr(
+            predicate::str::contains("s.toml:").and(predicate::str::contains(
+                "surface.profile: profile and ra are mutually exclusive",
+            )),
+        );
+    // a trace with a gap: the trace's line and the scenario's key
+    let mut gap = "x,z\nmm,um\n".to_string();
+    for j in 0..300 {
+        let x = if j < 150 { j as f64 } else { j as f64 + 0.5 } * 1e-3;
+        let _ = writeln!(gap, "{x},{}", (j as f64).sin());
+    }
+    fs::write(dir.path().join("traces/gap.csv"), gap).unwrap();
+    let path = trace_scenario(&dir, "[surface]\nprofile = [\"traces/gap.csv\"]");
+    let out = dir.path().join("out.csv");
+    cargo_bin_cmd!("sealsim")
+        .arg("run")
+        .arg(&path)
+        .arg("-o")
+        .arg(&out)
+        .assert()
+        .code(2)
+        .stderr(
+            predicate::str::contains("gap.csv:153:").and(predicate::str::contains(
+                "(line trace named by surface.profile at",
+            )),
+        );
+    assert!(!out.exists());
+}
