@@ -14,6 +14,10 @@ use crate::validity::MAX_RMS_SLOPE;
 use clap::Args;
 use std::path::{Path, PathBuf};
 
+/// The fewest samples a trace's cut-off λc may span (ISO 3274 asks for far more: λc/λs = 300
+/// at λc = 0.8 mm, with several samples per λs — recalled).
+pub const MIN_SAMPLES_PER_CUTOFF: f64 = 10.0;
+
 /// Arguments of `sealsim surface`.
 #[derive(Debug, Clone, Args)]
 #[command(
@@ -224,6 +228,20 @@ fn traces_report(
         .iter()
         .map(|p| read_trace(p).map_err(|e| CliError::Input(e.to_string())))
         .collect::<Result<Vec<_>, _>>()?;
+    // a cut-off must span many samples: the Gaussian filter over a few samples is no filter
+    if let Some(lc) = cutoff {
+        for (path, trace) in paths.iter().zip(&traces) {
+            if lc < MIN_SAMPLES_PER_CUTOFF * trace.spacing {
+                return Err(CliError::Input(format!(
+                    "--cutoff: {} mm is shorter than {MIN_SAMPLES_PER_CUTOFF} samples of {} \
+                     (spacing {} µm): the mean line cannot be resolved",
+                    show(lc * 1e3),
+                    path.display(),
+                    show(trace.spacing * 1e6)
+                )));
+            }
+        }
+    }
     // the Gaussian mean line needs at least one sampling length in the trace
     let shortest = traces
         .iter()

@@ -10,9 +10,25 @@ pub fn sealsim() -> assert_cmd::Command {
     assert_cmd::cargo::cargo_bin_cmd!("sealsim")
 }
 
-/// Asserts that `text` (named `what` in the message) has no NaN or infinity.
+/// Asserts that `text` (named `what` in the message) has no NaN or infinity: as a whole word,
+/// so that a temporary directory named like `/tmp/.tmpdKmNaN` is not taken for one.
 pub fn no_nan(text: &str, what: &str) {
-    for bad in ["NaN", "nan", "inf"] {
-        assert!(!text.contains(bad), "{what} contains {bad}:\n{text}");
+    let bad = text
+        .split(|c: char| !c.is_ascii_alphanumeric())
+        .find(|w| matches!(*w, "NaN" | "nan" | "inf" | "Inf" | "infinity" | "Infinity"));
+    assert!(bad.is_none(), "{what} contains {bad:?}:\n{text}");
+}
+
+#[test]
+fn no_nan_looks_at_words() {
+    no_nan(
+        "{\"file\": \"/tmp/.tmpdKmNaN/one.toml\", \"x\": 1e-3, \"info\": 2}",
+        "t",
+    );
+    for bad in ["1,NaN,2", "x: nan", "-inf", "[inf]"] {
+        assert!(
+            std::panic::catch_unwind(|| no_nan(bad, "t")).is_err(),
+            "{bad}"
+        );
     }
 }

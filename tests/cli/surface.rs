@@ -214,3 +214,22 @@ fn trace_scenario_bad_input() {
         );
     assert!(!out.exists());
 }
+
+#[test]
+fn a_cutoff_shorter_than_the_sampling_is_refused() {
+    let manifest = env!("CARGO_MANIFEST_DIR");
+    let dir = TempDir::new().unwrap();
+    let out = dir.path().join("out.txt");
+    // the shipped traces are sampled every 0.5 µm: a 4 µm cut-off spans 8 samples
+    cargo_bin_cmd!("sealsim")
+        .arg("surface")
+        .arg(format!("{manifest}/scenarios/traces/ground-fine.csv"))
+        .args(["--cutoff", "4um", "--short-cutoff", "1um", "-o"])
+        .arg(&out)
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains(
+            "--cutoff: 0.004 mm is shorter than 10 samples",
+        ));
+    assert!(!out.exists());
+}
