@@ -2,7 +2,7 @@
 //! ([`crate::material::fit`]), written as a material TOML file
 //! ([`crate::report::material_toml`]).
 
-use super::{CliError, write_output};
+use super::{CliError, positive_flag, write_output};
 use crate::material::csr::{Normalisation, TestPiece};
 use crate::material::fit::{Fit, FitError, FitSettings, Regularisation, fit_dma, fit_relaxation};
 use crate::material::tts::{
@@ -13,7 +13,7 @@ use crate::report::master_curve::{law_text, master_chart, shift_chart, text as m
 use crate::report::material_toml::material_toml;
 use crate::report::plot::LogLogChart;
 use crate::scenario::fit_data::{FitData, FitKind, Isotherm, Measured, read_fit_data, show_kelvin};
-use crate::units::{Dimension, parse_quantity, parse_temperature, show};
+use crate::units::{Dimension, parse_temperature, show};
 use clap::builder::NonEmptyStringValueParser;
 use clap::{Args, ValueEnum};
 use std::path::{Path, PathBuf};
@@ -508,23 +508,6 @@ fn csr_given(c: &CsrArgs) -> bool {
         || c.reference_modulus.is_some()
 }
 
-/// A flag's quantity in SI, or a bad-input error naming the flag.
-fn flag(value: Option<&str>, name: &str, dimension: Dimension) -> Result<Option<f64>, CliError> {
-    value
-        .map(|text| {
-            let v = parse_quantity(text, dimension)
-                .map_err(|e| CliError::Input(format!("--{name}: {e}")))?;
-            if v.is_finite() && v > 0.0 {
-                Ok(v)
-            } else {
-                Err(CliError::Input(format!(
-                    "--{name}: must be positive, got {text}"
-                )))
-            }
-        })
-        .transpose()
-}
-
 fn required(value: Option<f64>, name: &str, piece: &str) -> Result<f64, CliError> {
     value.ok_or_else(|| CliError::Input(format!("--test-piece {piece} needs --{name}")))
 }
@@ -547,8 +530,9 @@ fn test_piece(c: &CsrArgs) -> Result<Option<TestPiece>, CliError> {
         }
         return Ok(None);
     };
-    let length = |v: &Option<String>, name: &str| flag(v.as_deref(), name, Dimension::LENGTH);
-    let squeeze = flag(c.squeeze.as_deref(), "squeeze", Dimension::DIMENSIONLESS)?;
+    let length =
+        |v: &Option<String>, name: &str| positive_flag(v.as_deref(), name, Dimension::LENGTH);
+    let squeeze = positive_flag(c.squeeze.as_deref(), "squeeze", Dimension::DIMENSIONLESS)?;
     let piece = match kind {
         PieceArg::Ring => {
             for (given, name) in [(&c.diameter, "diameter"), (&c.height, "height")] {
@@ -603,12 +587,12 @@ fn normalisation(
     isotherms: &[Isotherm],
 ) -> Result<Option<Normalisation>, CliError> {
     let piece = test_piece(c)?;
-    let reference = flag(
+    let reference = positive_flag(
         c.reference_modulus.as_deref(),
         "reference-modulus",
         Dimension::PRESSURE,
     )?;
-    let initial = flag(
+    let initial = positive_flag(
         c.initial_force.as_deref(),
         "initial-force",
         Dimension::FORCE,

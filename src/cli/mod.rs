@@ -206,6 +206,28 @@ pub fn run(command: Command) -> Result<(), CliError> {
     }
 }
 
+/// A flag's positive quantity in SI (`None` when the flag is absent), or a bad-input error
+/// naming the flag: `--name: …`.
+pub(crate) fn positive_flag(
+    value: Option<&str>,
+    name: &str,
+    dimension: crate::units::Dimension,
+) -> Result<Option<f64>, CliError> {
+    value
+        .map(|text| {
+            let v = crate::units::parse_quantity(text, dimension)
+                .map_err(|e| CliError::Input(format!("--{name}: {e}")))?;
+            if v.is_finite() && v > 0.0 {
+                Ok(v)
+            } else {
+                Err(CliError::Input(format!(
+                    "--{name}: must be positive, got {text}"
+                )))
+            }
+        })
+        .transpose()
+}
+
 /// Writes a finished output: atomically to `path`, or to stdout.
 pub(crate) fn write_output(path: Option<&Path>, bytes: &[u8]) -> Result<(), CliError> {
     match path {

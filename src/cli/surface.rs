@@ -2,14 +2,14 @@
 //! more line traces ([`crate::profile`]) or a PSD file — with Ra, Rq, Rz, h_rms, rms slope, the
 //! Hurst exponent, the cut-offs and the warnings ([`crate::report::surface`]).
 
-use super::{CliError, write_output};
+use super::{CliError, positive_flag, write_output};
 use crate::profile::{ProfileOptions, analyse};
 use crate::report::surface::SurfaceReport;
 use crate::roughness::{Band, DEFAULT_CUTOFF, DEFAULT_SHORT_CUTOFF, ra_from_rq, rz_over_rq};
 use crate::scenario::Scenario;
 use crate::scenario::profile::read_trace;
 use crate::surface::Spectrum;
-use crate::units::{Dimension, parse_quantity, show};
+use crate::units::{Dimension, show};
 use crate::validity::MAX_RMS_SLOPE;
 use clap::Args;
 use std::path::{Path, PathBuf};
@@ -62,19 +62,7 @@ pub struct SurfaceArgs {
 
 /// A length flag in metres.
 fn length(value: Option<&str>, name: &str) -> Result<Option<f64>, CliError> {
-    value
-        .map(|text| {
-            let v = parse_quantity(text, Dimension::LENGTH)
-                .map_err(|e| CliError::Input(format!("--{name}: {e}")))?;
-            if v.is_finite() && v > 0.0 {
-                Ok(v)
-            } else {
-                Err(CliError::Input(format!(
-                    "--{name}: must be positive, got {text}"
-                )))
-            }
-        })
-        .transpose()
+    positive_flag(value, name, Dimension::LENGTH)
 }
 
 /// Runs `sealsim surface`.
