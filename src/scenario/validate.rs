@@ -1023,13 +1023,18 @@ impl Source<'_> {
             }
             None => 2.0 * std::f64::consts::PI / roughness::EXTEND_TO_WAVELENGTH,
         };
+        // the knots of the traces' spectrum: the bin points and, when a roll-off was fitted,
+        // its corner
         let mut q: Vec<f64> = result
             .psd_1d
             .q
             .iter()
             .copied()
+            .chain(result.q0)
             .filter(|&x| x >= q_lo && x <= q_hi)
             .collect();
+        q.sort_by(f64::total_cmp);
+        q.dedup_by(|a, b| (*a / *b - 1.0).abs() < 1e-12);
         let mut c: Vec<f64> = q.iter().map(|&x| result.spectrum.c(x)).collect();
         if q1 > q_hi * (1.0 + 1e-9) {
             let c_hi = result.spectrum.c(q_hi);
