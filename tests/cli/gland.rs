@@ -7,7 +7,7 @@ use std::fs;
 use std::path::Path;
 
 /// A piston-gland scenario (`[seal]` at line 12; the gland keys from line 14).
-const PISTON: &str = r#"name = "piston gland"
+pub(crate) const PISTON: &str = r#"name = "piston gland"
 [material]
 library = "nbr-70"
 [surface]

@@ -4,29 +4,8 @@
 use crate::support::sealsim;
 use std::fs;
 
-/// A piston-gland scenario; `[fluid]` at line 9, its last key at line 11.
-const PISTON: &str = r#"name = "piston gland"
-[material]
-library = "nbr-70"
-[surface]
-rms_roughness = "0.8 um"
-hurst_exponent = 0.7
-q0 = "3e5 1/m"
-q1 = "1e10 1/m"
-[fluid]
-viscosity = "1 mPa*s"
-pressure_difference = "2 bar"
-[seal]
-kind = "o-ring"
-gland = "piston"
-size = "AS568-214"
-bore_diameter = "31.75 mm"
-groove_depth = "2.85 mm"
-groove_width = "4.7 mm"
-diametral_clearance = "0.1 mm"
-[simulation]
-duration = "1 year"
-"#;
+// The piston-gland scenario of the gland tests: `[fluid]` at line 9, its last key at line 11.
+use super::gland::PISTON;
 
 /// `sealsim run` on `text` with `swell` added to `[fluid]`: (status, stdout, stderr, the
 /// history CSV if written).

@@ -29,6 +29,7 @@ mod numerical;
 mod physics;
 mod profile;
 mod properties;
+mod rng;
 mod scenario;
 mod tts;
 mod viscoelastic;
