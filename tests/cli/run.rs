@@ -559,18 +559,7 @@ fn compare_runs_each_compound() {
     // below the ring's contact pressure), so the comparison of leak rates runs on the rough
     // face the scenario had before (0.8 µm rms, H 0.7, q1 1e10 1/m), which leaks
     let text = fs::read_to_string(scenarios_dir().join("oring-nbr-water-80c.toml")).unwrap();
-    let text: String = text
-        .lines()
-        .filter(|l| !["cutoff", "short_cutoff", "short_wavelength"].iter().any(|k| l.starts_with(k)))
-        .map(|l| {
-            if l.starts_with("ra = ") {
-                "rms_roughness = \"0.8 um\"\nhurst_exponent = 0.7\nq0 = \"3e5 1/m\"\nq1 = \"1e10 1/m\"\n"
-                    .to_owned()
-            } else {
-                format!("{l}\n")
-            }
-        })
-        .collect();
+    let text = crate::common::on_former_rough_face(&text);
     let scenario = out.write("s.toml", &text.replace("\n[ageing]", "\n# no ageing"));
     let materials = format!("nbr-70,fkm-75,{}", file.display());
     let assert = cargo_bin_cmd!("sealsim")

@@ -20,3 +20,25 @@ pub fn scenario_path(name: &str) -> PathBuf {
 pub fn rel(a: f64, b: f64) -> f64 {
     (a - b).abs() / b.abs().max(f64::MIN_POSITIVE)
 }
+
+/// A scenario text on the rough face the main scenario had before its callout (0.8 µm rms,
+/// H 0.7, q0 3e5 1/m, q1 1e10 1/m: a face that leaks from the start): the `ra = …` line replaced
+/// by those self-affine keys and the callout's cut-off keys dropped. For tests that need a leak
+/// (on the ground face the ring seals).
+pub fn on_former_rough_face(text: &str) -> String {
+    text.lines()
+        .filter(|l| {
+            !["cutoff", "short_cutoff", "short_wavelength"]
+                .iter()
+                .any(|k| l.starts_with(k))
+        })
+        .map(|l| {
+            if l.starts_with("ra = ") {
+                "rms_roughness = \"0.8 um\"\nhurst_exponent = 0.7\nq0 = \"3e5 1/m\"\nq1 = \"1e10 1/m\"\n"
+                    .to_owned()
+            } else {
+                format!("{l}\n")
+            }
+        })
+        .collect()
+}

@@ -157,18 +157,7 @@ fn small_particles_pass_large_ones_clog_fastest_and_concentration_scales_tau() {
 fn ode_result_is_converged() {
     // the shipped ring seals on its ground face (Ra 0.4 µm: no leak to clog for 21 years);
     // clogging needs a leak, so the ring sits on the rough face the scenario had before
-    let rough: String = NBR
-        .lines()
-        .filter(|l| !["cutoff", "short_cutoff", "short_wavelength"].iter().any(|k| l.starts_with(k)))
-        .map(|l| {
-            if l.starts_with("ra = ") {
-                "rms_roughness = \"0.8 um\"\nhurst_exponent = 0.7\nq0 = \"3e5 1/m\"\nq1 = \"1e10 1/m\"\n"
-                    .to_owned()
-            } else {
-                format!("{l}\n")
-            }
-        })
-        .collect();
+    let rough = crate::common::on_former_rough_face(NBR);
     let base = Scenario::from_str(&rough, Path::new("nbr.toml"))
         .unwrap()
         .life;

@@ -146,21 +146,34 @@ fn one_per_decade() -> Prony {
     Prony::new(2e6, &terms).unwrap()
 }
 
-/// A rubber-like series with a quasi-continuous spectrum: 10 terms per decade over the same
-/// 12 decades, the moduli falling as τ^-0.45 with a ±30 % wave, so that E(t) drops from
-/// 1 GPa (glassy) to 2 MPa (rubbery), E∞ = 2 MPa.
-fn quasi_continuous() -> Prony {
-    let terms: Vec<PronyTerm> = log_spaced(1e-4, 1e8, 121)
+/// A rubber-like quasi-continuous series: `n` log-spaced τ over `[lo, hi]` \[s\], moduli
+/// `level · 10^(slope (log10 τ + offset)) · (1 + 0.3 sin log10 τ)` \[Pa\] (a power-law
+/// spectrum with a ±30 % wave), E∞ = `long_term` \[Pa\]. Shared by the fit and TTS tests.
+pub(crate) fn wavy_series(
+    (lo, hi, n): (f64, f64, usize),
+    level: f64,
+    slope: f64,
+    offset: f64,
+    long_term: f64,
+) -> Prony {
+    let terms: Vec<PronyTerm> = log_spaced(lo, hi, n)
         .into_iter()
         .map(|tau| {
             let k = tau.log10();
             PronyTerm {
-                modulus: 1e8 * 10f64.powf(-0.45 * (k + 4.0)) * (1.0 + 0.3 * k.sin()),
+                modulus: level * 10f64.powf(slope * (k + offset)) * (1.0 + 0.3 * k.sin()),
                 tau,
             }
         })
         .collect();
-    Prony::new(2e6, &terms).unwrap()
+    Prony::new(long_term, &terms).unwrap()
+}
+
+/// A rubber-like series with a quasi-continuous spectrum: 10 terms per decade over the same
+/// 12 decades, the moduli falling as τ^-0.45 with a ±30 % wave, so that E(t) drops from
+/// 1 GPa (glassy) to 2 MPa (rubbery), E∞ = 2 MPa.
+fn quasi_continuous() -> Prony {
+    wavy_series((1e-4, 1e8, 121), 1e8, -0.45, 4.0, 2e6)
 }
 
 /// Largest and root-mean-square `|fitted/true − 1|` over 2000 log-spaced points of [lo, hi]
@@ -570,17 +583,7 @@ fn dense_noisy_dma_meets_the_worst_case_bound() {
 /// moduli falling as τ^-0.4 with a ±30 % wave; over the window E(t) falls from ≈0.6 GPa to
 /// ≈3 MPa, E∞ = 3 MPa.
 fn rubber_14_decades() -> Prony {
-    let terms: Vec<PronyTerm> = log_spaced(1e-7, 1e11, 181)
-        .into_iter()
-        .map(|tau| {
-            let k = tau.log10();
-            PronyTerm {
-                modulus: 1.5e7 * 10f64.powf(-0.4 * (k + 5.0)) * (1.0 + 0.3 * k.sin()),
-                tau,
-            }
-        })
-        .collect();
-    Prony::new(3e6, &terms).unwrap()
+    wavy_series((1e-7, 1e11, 181), 1.5e7, -0.4, 5.0, 3e6)
 }
 
 /// [`one_per_decade`] extended to 14 decades: 15 terms, τ = 1e-5 … 1e9 s.

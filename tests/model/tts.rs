@@ -12,24 +12,14 @@ use sealsim::material::shift::{GAS_CONSTANT, Shift};
 use sealsim::material::tts::{
     FittedLaw, Isotherm, MasterCurve, Parameter, ShiftLaw, TtsError, TtsSettings, master_curve,
 };
-use sealsim::material::{Prony, PronyTerm};
+use sealsim::material::Prony;
 use sealsim::math::log_spaced;
 
 use crate::rng::SplitMix64;
 
 /// The true master curve at the true law's reference temperature.
 fn spectrum() -> Prony {
-    let terms: Vec<PronyTerm> = log_spaced(1e-4, 1e12, 161)
-        .into_iter()
-        .map(|tau| {
-            let k = tau.log10();
-            PronyTerm {
-                modulus: 1e8 * 10f64.powf(-0.45 * (k + 4.0)) * (1.0 + 0.3 * k.sin()),
-                tau,
-            }
-        })
-        .collect();
-    Prony::new(1e4, &terms).unwrap()
+    crate::fit::wavy_series((1e-4, 1e12, 161), 1e8, -0.45, 4.0, 1e4)
 }
 
 const C: f64 = 273.15;
