@@ -8,11 +8,11 @@
 //! log–log slope of −0.23 … −0.36 over the reduced window, so every isotherm carries time
 //! information (on a flat rubbery plateau no method can find a shift).
 
+use sealsim::material::Prony;
 use sealsim::material::shift::{GAS_CONSTANT, Shift};
 use sealsim::material::tts::{
     FittedLaw, Isotherm, MasterCurve, Parameter, ShiftLaw, TtsError, TtsSettings, master_curve,
 };
-use sealsim::material::Prony;
 use sealsim::math::log_spaced;
 
 use crate::rng::SplitMix64;
