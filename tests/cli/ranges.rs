@@ -27,6 +27,25 @@ fn mutated(shipped: &str, key: &str, value: &str) -> String {
     lines.join("\n") + "\n"
 }
 
+/// The shipped hot-oil FKM scenario with its callout face replaced by a self-affine surface
+/// (`rms_roughness`, H 0.7, q0 3e5 1/m, `q1`), each key on its own line.
+fn self_affine_fkm(rms: &str, q1: &str) -> String {
+    let text = mutated("oring-fkm-hot-oil-ageing.toml", "ra", "\"0.8 um\"");
+    let mut out = String::new();
+    for l in text.lines() {
+        if l.starts_with("ra =") {
+            out += &format!("rms_roughness = {rms}\nhurst_exponent = 0.7\nq0 = 3e5\nq1 = {q1}\n");
+        } else if !(l.starts_with("cutoff =")
+            || l.starts_with("short_cutoff =")
+            || l.starts_with("short_wavelength ="))
+        {
+            out += l;
+            out.push('\n');
+        }
+    }
+    out
+}
+
 /// 1-based line of `key = ` in `text`.
 fn line_of(text: &str, key: &str) -> usize {
     text.lines()
@@ -103,14 +122,19 @@ fn a_huge_oring_diameter_between_plates_is_refused_with_its_range() {
 
 #[test]
 fn a_huge_roughness_with_daily_cycles_is_refused_not_run_for_minutes() {
-    let text = mutated("oring-epdm-outdoor-cycles.toml", "rms_roughness", "1e308");
-    let line = line_of(&text, "rms_roughness");
-    refused(&text, line, "surface.rms_roughness", "[1e-10, 0.001] m");
+    // the scenario's face is a callout: its `ra` has the range of a drawing's Ra
+    let text = mutated("oring-epdm-outdoor-cycles.toml", "ra", "1e308");
+    let line = line_of(&text, "ra");
+    refused(&text, line, "surface.ra", "[1e-9, 1e-4] m");
 }
 
 #[test]
 fn a_huge_roughness_with_ageing_in_hot_oil_is_refused_not_run_for_minutes() {
-    let text = mutated("oring-fkm-hot-oil-ageing.toml", "rms_roughness", "1e308");
+    let text = mutated("oring-fkm-hot-oil-ageing.toml", "ra", "1e308");
+    let line = line_of(&text, "ra");
+    refused(&text, line, "surface.ra", "[1e-9, 1e-4] m");
+    // … and so does a self-affine surface's rms roughness in the same scenario
+    let text = self_affine_fkm("1e308", "1e10");
     let line = line_of(&text, "rms_roughness");
     refused(&text, line, "surface.rms_roughness", "[1e-10, 0.001] m");
 }
@@ -136,11 +160,16 @@ fn too_many_daily_cycles_are_refused_with_the_step_budget() {
 
 #[test]
 fn the_edges_of_the_ranges_still_run() {
-    // the largest roughness and q1 accepted finish (quickly) without an internal error
-    for (key, value) in [("rms_roughness", "\"1 mm\""), ("q1", "1e12")] {
-        let text = mutated("oring-fkm-hot-oil-ageing.toml", key, value);
+    // the largest roughness and q1 accepted finish (quickly) without an internal error: a
+    // self-affine surface at its edges, and the largest callout
+    for (rms, q1) in [("\"1 mm\"", "1e10"), ("\"0.8 um\"", "1e12")] {
+        let text = self_affine_fkm(rms, q1);
         let (code, stderr, written) = run_text(&text, 60);
-        assert_eq!(code, Some(0), "{key} = {value}: {stderr}");
+        assert_eq!(code, Some(0), "rms_roughness = {rms}, q1 = {q1}: {stderr}");
         assert!(written);
     }
+    let text = mutated("oring-fkm-hot-oil-ageing.toml", "ra", "\"100 um\"");
+    let (code, stderr, written) = run_text(&text, 60);
+    assert_eq!(code, Some(0), "ra = 100 um: {stderr}");
+    assert!(written);
 }

@@ -738,8 +738,9 @@ fn bad_contamination_exits_2() {
     }
 }
 
-/// The clogging scenario's leak rate falls over the first weeks while its clean twin's rises;
-/// the open fraction is in the history and the summary.
+/// The clogging scenario's leak rate falls over the first weeks below that of its clean twin
+/// (the same scenario without `[contamination]`); the open fraction is in the history and the
+/// summary. The shipped clean scenario clogs nothing.
 #[test]
 fn clogging_scenario_against_its_clean_twin() {
     let out = Outputs::new();
@@ -747,8 +748,27 @@ fn clogging_scenario_against_its_clean_twin() {
         &scenarios_dir().join("oring-nbr-hydraulic-oil-clean.toml"),
         &[],
     );
+    assert_eq!(out.summary()["final_open_fraction"].as_f64(), Some(1.0));
+    // the clean twin: the clogging scenario with its [contamination] table removed
+    let dirty_text =
+        fs::read_to_string(scenarios_dir().join("oring-nbr-hydraulic-oil-clogging.toml")).unwrap();
+    let mut clean_text = String::new();
+    let mut skip = false;
+    for l in dirty_text.lines() {
+        if l.starts_with('[') {
+            skip = l.starts_with("[contamination");
+        }
+        if !skip {
+            clean_text += l;
+            clean_text.push('\n');
+        }
+    }
+    assert_ne!(clean_text, dirty_text, "no [contamination] table found");
+    let twin = out.write("twin.toml", &clean_text);
+    out.run_ok(&twin, &[]);
     let clean = out.summary();
     assert_eq!(clean["final_open_fraction"].as_f64(), Some(1.0));
+    assert!(clean["final_leak_rate_m3_per_s"].as_f64().unwrap() > 0.0);
     out.run_ok(
         &scenarios_dir().join("oring-nbr-hydraulic-oil-clogging.toml"),
         &[],

@@ -467,12 +467,16 @@ fn two_interfaces_leak_in_parallel() {
     )
     .unwrap();
     let mut mixed = s.life.clone();
-    // a bore that leaks too (the shipped honed bore seals at installation): 0.8 µm rms, smoother
-    // than the 1.6 µm groove bottom
+    // the drawn finishes (honed bore Ra 0.2 µm, turned groove bottom Ra 1.6 µm) both seal; two
+    // rough surfaces that leak stand in for them: a bore of 0.8 µm rms, smoother than a groove
+    // bottom of 1.6 µm rms (H 0.7, q1 = 1e10 1/m: rms slopes 8.3 and 16.7, beyond machined faces)
+    assert!(
+        matches!(mixed.groove, GrooveInterface::Own(_)),
+        "the piston scenario has its own groove surface"
+    );
     mixed.spectrum = sealsim::surface::Spectrum::self_affine(0.8e-6, 0.7, 3e5, 1e10, None).unwrap();
-    let GrooveInterface::Own(groove) = mixed.groove.clone() else {
-        panic!("the piston scenario has its own groove surface")
-    };
+    let groove = sealsim::surface::Spectrum::self_affine(1.6e-6, 0.7, 3e5, 1e10, None).unwrap();
+    mixed.groove = GrooveInterface::Own(groove.clone());
     let mut bore_bore = mixed.clone();
     bore_bore.groove = GrooveInterface::Counterface;
     let mut groove_groove = mixed.clone();
