@@ -115,7 +115,7 @@ impl SizeDistribution {
     /// monodisperse d^k if d > x; log-normal (ln d ~ N(μ, s²))
     /// `e^{kμ + k²s²/2} Φ((μ + k s² − ln x)/s)`; Weibull `λ^k Γ(1 + k/m) Q(1 + k/m, (x/λ)^m)`
     /// (Q the regularised upper incomplete gamma); a table exactly for its piecewise-linear CDF
-    /// (uniform density in each interval, truncated at x) [derived].
+    /// (uniform density in each interval, truncated at x) \[derived\].
     pub fn partial_moment(&self, k: i32, x: f64) -> f64 {
         let x = if x.is_nan() { 0.0 } else { x.max(0.0) };
         let kf = f64::from(k);
@@ -166,7 +166,7 @@ impl SizeDistribution {
 }
 
 /// Default porosity φ of the filter cake at the contact's entry: 0.4, random packing of
-/// equal spheres (≈ 0.36–0.40 [recalled]); a looser cake (larger φ) is more permeable, so
+/// equal spheres (≈ 0.36–0.40 \[recalled\]); a looser cake (larger φ) is more permeable, so
 /// 0.4 leans towards the larger cake resistance.
 pub const CAKE_POROSITY: f64 = 0.4;
 
@@ -183,7 +183,7 @@ pub fn kozeny_carman_permeability(d: f64, phi: f64) -> f64 {
 /// Hydraulic resistance of the cake \[Pa·s/m³\]: Darcy's law through a plug of cross-section
 /// `area` \[m²\] and length V_bulk/area, `R = μ V_solid / ((1 − φ) k area²)`, with the solid
 /// volume `solid_volume` \[m³\] of the deposited particles, the viscosity `viscosity` \[Pa·s\],
-/// the Sauter mean diameter `d32` \[m\] and porosity `phi` [derived from Darcy's law].
+/// the Sauter mean diameter `d32` \[m\] and porosity `phi` \[derived from Darcy's law\].
 pub fn cake_resistance(viscosity: f64, solid_volume: f64, d32: f64, phi: f64, area: f64) -> f64 {
     let k = kozeny_carman_permeability(d32, phi);
     if !(solid_volume > 0.0 && k > 0.0 && area > 0.0) {
@@ -226,7 +226,11 @@ impl Contamination {
     pub fn cake_diameter(&self, reach: f64) -> f64 {
         let f = &self.size_distribution;
         let (m3, m2) = (f.partial_moment(3, reach), f.partial_moment(2, reach));
-        if m2 > 0.0 && m3.is_finite() { m3 / m2 } else { 0.0 }
+        if m2 > 0.0 && m3.is_finite() {
+            m3 / m2
+        } else {
+            0.0
+        }
     }
 }
 
@@ -276,6 +280,41 @@ mod tests {
         assert!((t.cdf(2e-6) - 0.5).abs() < 1e-12);
         assert_eq!(t.cdf(4e-6), 1.0);
         assert_eq!(ln.cdf(f64::NAN), 0.0);
+    }
+
+    #[test]
+    fn partial_moments_from_zero_are_the_full_moments() {
+        let all = [
+            SizeDistribution::Monodisperse { diameter: 2e-6 },
+            SizeDistribution::LogNormal {
+                median: 1e-6,
+                geometric_std: 2.0,
+            },
+            SizeDistribution::Weibull {
+                scale: 1e-6,
+                shape: 2.0,
+            },
+            SizeDistribution::Table {
+                diameter: vec![1e-6, 3e-6],
+                cdf: vec![0.0, 1.0],
+            },
+        ];
+        for d in &all {
+            assert!(
+                (d.partial_moment(3, 0.0) / d.mean_cube() - 1.0).abs() < 1e-10,
+                "{d:?}"
+            );
+        }
+        // log-normal: above x = median e^{3 s²} exactly half of E[d³] (Φ(0) = ½)
+        let s2 = 2f64.ln().powi(2);
+        let x = 1e-6 * (3.0 * s2).exp();
+        assert!((all[1].partial_moment(3, x) / all[1].mean_cube() - 0.5).abs() < 1e-12);
+        // uniform on [1, 3] µm above 2 µm: ½ (3⁴ − 2⁴)/(4·1) µm³ … with density ½ per µm
+        let t = &all[3];
+        assert!(
+            (t.partial_moment(3, 2e-6) / (0.5 * (81.0 - 16.0) / 4.0 * 1e-18) - 1.0).abs() < 1e-12
+        );
+        assert_eq!(all[0].partial_moment(3, 2e-6), 0.0);
     }
 
     #[test]

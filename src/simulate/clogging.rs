@@ -21,10 +21,18 @@ impl Simulator<'_> {
         let u1c = exact.separation(j.zeta_c, s).u1();
         let u1r = exact.separation((0.5 * j.zeta_c).max(1.0), s).u1();
         let ratio = u1r / u1c;
-        let ratio = if ratio.is_finite() { ratio.max(1.0) } else { 1.0 };
+        let ratio = if ratio.is_finite() {
+            ratio.max(1.0)
+        } else {
+            1.0
+        };
         snap.reach = snap.open_u_c * ratio;
         let entry = exact.separation(1.0, s).mean;
-        snap.entry_gap = if entry.is_finite() { entry.max(0.0) } else { 0.0 };
+        snap.entry_gap = if entry.is_finite() {
+            entry.max(0.0)
+        } else {
+            0.0
+        };
         snap
     }
 
@@ -49,12 +57,20 @@ impl Simulator<'_> {
         if f >= 1.0 && state.cake_volume <= 0.0 {
             return snap;
         }
-        let reroute = self.problem.contamination.as_ref().is_some_and(|c| c.reroute);
+        let reroute = self
+            .problem
+            .contamination
+            .as_ref()
+            .is_some_and(|c| c.reroute);
         let (scale, drag_scale) = if f >= 1.0 {
             (1.0, 1.0)
         } else if reroute {
             let (r, _) = self.reroute_ratio(snap.peak_reduced_pressure, f);
-            let r = if r.is_finite() { r.clamp(0.0, 1.0) } else { 0.0 };
+            let r = if r.is_finite() {
+                r.clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
             (f + (1.0 - f) * r, f + (1.0 - f) * r.cbrt())
         } else {
             (f, f)

@@ -296,12 +296,12 @@ impl<'a> Simulator<'a> {
             .load_variable(problem.thermal_strain.as_ref(), problem.environment.at(0.0));
         let initial_profile = problem.initial_profile();
         let clogging_contact = problem.contamination.as_ref().map(|_| {
-                let settings = ContactSettings {
-                    quadrature: REROUTE_QUADRATURE,
-                    ..problem.contact
-                };
-                PerssonContact::new(problem.spectrum.clone(), settings)
-            });
+            let settings = ContactSettings {
+                quadrature: REROUTE_QUADRATURE,
+                ..problem.contact
+            };
+            PerssonContact::new(problem.spectrum.clone(), settings)
+        });
         let drag = problem.motion.map(|spec| {
             (
                 spec,

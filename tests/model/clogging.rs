@@ -324,7 +324,10 @@ fn particles_thirty_times_u_c_only_cake() {
         let eps = cake_bound(&q, q.contamination.as_ref().unwrap(), v_clean, q0, d);
         eprintln!("30 u_c: V {v:.6e} vs clean {v_clean:.6e}; cake bound ε ≤ {eps:.3e}");
         assert!(v <= v_clean * (1.0 + 1e-12), "{v} vs {v_clean}");
-        assert!(v_clean - v <= eps * v_clean + 1e-12 * v_clean, "{v} vs {v_clean}, ε {eps}");
+        assert!(
+            v_clean - v <= eps * v_clean + 1e-12 * v_clean,
+            "{v} vs {v_clean}, ε {eps}"
+        );
     }
 }
 
