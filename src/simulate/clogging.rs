@@ -1,22 +1,52 @@
-//! Particle clogging inside the life loop (docs/model.md §7): the open fraction of the critical
-//! channels applied to a snapshot, the re-routing junctions, and the open-fraction ODE of one
-//! internal step.
+//! Particle clogging inside the life loop (docs/model.md §7): the reach of the particles and
+//! the entry gap of a snapshot, the open fraction, the detours and the entry cake applied to a
+//! snapshot, and the open-fraction ODE of one internal step.
 
-use super::{Mechanics, REROUTE_NODE_SPACING, SealState, Simulator, Snapshot, events};
-use crate::clogging::{Contamination, effective_threshold};
-use crate::contact::{CriticalJunction, Junction, PerssonContact};
-use std::cell::RefCell;
+use super::{Mechanics, SealState, Simulator, Snapshot, events};
+use crate::clogging::{CAKE_POROSITY, Contamination, cake_resistance, effective_threshold};
+use crate::contact::{Junction, PerssonContact};
 
 impl Simulator<'_> {
-    /// The leak rate of `open` (all channels open) with the state's open fraction f:
-    /// * without re-routing the blocked channels carry nothing, the rest are unchanged:
-    ///   `Q̇ = f Q̇_open`;
-    /// * with re-routing the blocked channels count as contact, the effective threshold is
-    ///   `a_eff = 1 − (1 − a_c)/f` and the next, narrower constriction takes over. The
-    ///   strips-in-series open leak rate is scaled by the *peak strip's* ratio
-    ///   `(u_c(s_peak, a_eff)/u_c(s_peak, a_c))³` (an approximation: the peak strip dominates
-    ///   the series resistance), both junctions by the exact path; 0 when a_eff ≤ 0 or the
-    ///   peak strip seals at a_eff.
+    /// Sets the reach `d_reach = u_c · u1(ζ_r)/u1(ζc)` with ζ_r = max(ζc/2, 1) (the constriction
+    /// of the next-coarser octave of the path, which every particle must pass before it meets
+    /// the critical one; at least u_c) and the entry gap ū(1), both at the peak strip's reduced
+    /// pressure on the clogging contact path (docs/model.md §7). The ratio keeps d_reach on the
+    /// fidelity's own u_c.
+    pub(super) fn with_reach(&self, mut snap: Snapshot) -> Snapshot {
+        let (Some(exact), Junction::Leaking(j)) = (&self.clogging_contact, snap.peak_junction)
+        else {
+            return snap;
+        };
+        let s = snap.peak_reduced_pressure;
+        let u1c = exact.separation(j.zeta_c, s).u1();
+        let u1r = exact.separation((0.5 * j.zeta_c).max(1.0), s).u1();
+        let ratio = u1r / u1c;
+        let ratio = if ratio.is_finite() {
+            ratio.max(1.0)
+        } else {
+            1.0
+        };
+        snap.reach = snap.open_u_c * ratio;
+        let entry = exact.separation(1.0, s).mean;
+        snap.entry_gap = if entry.is_finite() {
+            entry.max(0.0)
+        } else {
+            0.0
+        };
+        snap
+    }
+
+    /// The leak rate of `open` (all channels open) with the state's open fraction f and cake:
+    /// * the seal: without re-routing the blocked channels carry nothing and the rest are
+    ///   unchanged, `Q̇_s = f Q̇_open`; with re-routing each blocked channel detours through
+    ///   the next-narrowest constriction u_c(a_eff) ≤ u_c, `Q̇_s = Q̇_open [f + (1 − f) r]`,
+    ///   `r = (u_c(s_peak, a_eff)/u_c(s_peak, a_c))³ ∈ [0, 1]` ([`effective_threshold`]), so
+    ///   `f Q̇_open ≤ Q̇_s ≤ Q̇_open` by construction;
+    /// * the cake in series: `Q̇ = Q̇_s/(1 + ε)`, `ε = R_cake Q̇_s/ΔP`
+    ///   ([`cake_resistance`] over the entry slit L_y ū(1)), on the pressure-driven part.
+    ///
+    /// The drag flows through the same channels: × f without re-routing, × f + (1 − f) r^{1/3}
+    /// with it (the film scaling with the constriction height, d = β u_c).
     pub(super) fn clogged(&self, mut snap: Snapshot, state: &Mechanics) -> Snapshot {
         let f = if state.clogged_shut {
             0.0
@@ -24,42 +54,45 @@ impl Simulator<'_> {
             state.log_open_fraction.exp().clamp(0.0, 1.0)
         };
         snap.open_fraction = f;
-        if f >= 1.0 {
+        if f >= 1.0 && state.cake_volume <= 0.0 {
             return snap;
         }
-        let (scale, u_c) = match &self.rerouting {
-            None => (f, snap.u_c),
-            Some(_) if state.clogged_shut => (0.0, None),
-            Some(_) => {
-                let (ratio, u_eff) = self.reroute_ratio(snap.peak_reduced_pressure, f);
-                (ratio, u_eff)
-            }
-        };
-        snap.u_c = u_c;
-        snap.peak_junction = match (snap.peak_junction, u_c) {
-            (Junction::Leaking(j), Some(u_c)) => Junction::Leaking(CriticalJunction { u_c, ..j }),
-            _ => Junction::Sealed,
-        };
-        // The drag flows through the same channels: without re-routing the blocked ones carry
-        // none of it (× f); with re-routing the film is taken to scale with the constriction
-        // height, d = β u_c at fixed β (× the cube root of the u_c³ ratio).
-        let drag_scale = if self.rerouting.is_some() {
-            scale.cbrt()
+        let reroute = self
+            .problem
+            .contamination
+            .as_ref()
+            .is_some_and(|c| c.reroute);
+        let (scale, drag_scale) = if f >= 1.0 {
+            (1.0, 1.0)
+        } else if reroute {
+            let (r, _) = self.reroute_ratio(snap.peak_reduced_pressure, f);
+            let r = if r.is_finite() {
+                r.clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            (f + (1.0 - f) * r, f + (1.0 - f) * r.cbrt())
         } else {
-            scale
+            (f, f)
         };
+        if scale <= 0.0 {
+            snap.u_c = None;
+            snap.peak_junction = Junction::Sealed;
+        }
+        let open_static = snap.open_static_leak_rate.unwrap_or(snap.open_leak_rate);
+        let seal_static = (open_static * scale).max(0.0);
+        snap.cake_factor = 1.0 + self.cake_ratio(&snap, state, seal_static);
+        let static_rate = seal_static / snap.cake_factor;
         snap.leak_rate = match (snap.open_static_leak_rate, snap.motion) {
-            (Some(static_rate), Some(m)) => {
-                (static_rate * scale + m.drag_leak_rate * drag_scale).max(0.0)
-            }
-            _ => (snap.open_leak_rate * scale).max(0.0),
+            (Some(_), Some(m)) => (static_rate + m.drag_leak_rate * drag_scale).max(0.0),
+            _ => static_rate,
         };
         if !snap.leak_rate.is_finite() {
             snap.leak_rate = 0.0;
         }
         if let (Some((spec, _)), Some(m)) = (&self.drag, snap.motion) {
             let static_rate = match snap.open_static_leak_rate {
-                Some(static_rate) => (static_rate * scale).max(0.0),
+                Some(_) => static_rate,
                 None => snap.leak_rate,
             };
             snap.motion = Some(spec.rescale(m, static_rate, drag_scale));
@@ -70,10 +103,33 @@ impl Simulator<'_> {
         snap
     }
 
+    /// ε = R_cake/R_seal = R_cake Q̇_s/ΔP for the seal's pressure-driven leak `seal_static`
+    /// (0 without a cake, a pressure difference or an entry gap).
+    fn cake_ratio(&self, snap: &Snapshot, state: &Mechanics, seal_static: f64) -> f64 {
+        let p = self.problem;
+        let (Some(c), dp) = (&p.contamination, p.fluid.pressure_difference) else {
+            return 0.0;
+        };
+        if !(state.cake_volume > 0.0 && dp > 0.0 && snap.entry_gap > 0.0 && seal_static > 0.0) {
+            return 0.0;
+        }
+        let area = p.geometry.sealing_length() * snap.entry_gap;
+        let viscosity = p.fluid.viscosity_at(snap.temperature);
+        let r = cake_resistance(
+            viscosity,
+            state.cake_volume,
+            c.cake_diameter(snap.reach),
+            CAKE_POROSITY,
+            area,
+        );
+        let eps = r * seal_static / dp;
+        if eps.is_finite() { eps.max(0.0) } else { 0.0 }
+    }
+
     /// `((u_c(s, a_eff)/u_c(s, a_c))³, u_c(s, a_eff))` at the peak reduced pressure `s` and
     /// open fraction `f` (re-routing only; `(0, None)` when the junction seals).
     pub(super) fn reroute_ratio(&self, s: f64, f: f64) -> (f64, Option<f64>) {
-        let Some(exact) = &self.rerouting else {
+        let Some(exact) = &self.clogging_contact else {
             return (f, None);
         };
         let a_c = self.problem.contact.percolation_threshold;
@@ -120,19 +176,18 @@ impl Simulator<'_> {
     ///
     /// The state is `y = ln f` (so f = e^y can never overshoot below 0, and a huge
     /// concentration drives y to −∞, f to 0, within the step), with
-    /// `dy/dt = −n_p [1 − F(u)] Q̇ / (N_ch f)`, N_ch = L_y/λ_c (λ_c of the critical junction
-    /// at the peak strip with all channels open: the channels that carry the flow), and
-    /// * without re-routing `Q̇ = f Q̇_open`, u = u_c: `dy/dt = −n_p [1 − F(u_c)] Q̇_open/N_ch`;
-    /// * with re-routing `Q̇ = Q̇_open (u_c(a_eff)/u_c(a_c))³` and u = u_c(a_eff) (see
-    ///   [`Self::clogged`]); the right side vanishes where the seal closes.
+    /// `dy/dt = −n_p [F(d_reach) − F(u_c)] Q̇_open / (N_ch (1 + ε))`: the sieved particles
+    /// arrive with the flow of the open critical channels, f Q̇_open/(1 + ε) (detours carry
+    /// their own particles past the critical constrictions, not into them), N_ch = L_y/λ_c
+    /// (λ_c of the critical junction at the peak strip with all channels open), ε the cake's
+    /// series ratio at the step's start. The right side does not depend on f, with or without
+    /// re-routing.
     ///
-    /// Inside the step u_c, Q̇_open, λ_c and the peak reduced pressure are interpolated as
-    /// power laws in time between the step's ends ([`events::interpolate_power_law`]).
-    /// Dopri5 (ode_solvers) with sparse output (only the end state is used; its dense output
-    /// extrapolates the last point), rtol = atol = the clogging tolerance on ln f (an
-    /// absolute error in ln f is a relative error in f). If the integration fails (a stiff
-    /// closure under re-routing, which the explicit method cannot follow) the seal is taken
-    /// as clogged shut from there on.
+    /// Inside the step u_c, d_reach, Q̇_open and λ_c are interpolated as power laws in time
+    /// between the step's ends ([`events::interpolate_power_law`]). Dopri5 (ode_solvers) with
+    /// sparse output (only the end state is used), rtol = atol = the clogging tolerance on
+    /// ln f (an absolute error in ln f is a relative error in f). If the integration fails
+    /// every channel is taken as blocked from there on.
     pub(super) fn integrate_clogging(
         &self,
         c: &Contamination,
@@ -147,14 +202,12 @@ impl Simulator<'_> {
         }
         let length = self.problem.geometry.sealing_length();
         let system = CloggingOde {
-            simulator: self,
             contamination: c,
             a,
             b,
             before,
             after,
             length,
-            ratios: RefCell::new(Vec::new()),
         };
         // Nothing captured at the ends: nothing in between either (u_c(t) is a power law,
         // hence monotone, and so is F(u_c(t))), the clean case costs no integration; the
@@ -184,21 +237,14 @@ impl Simulator<'_> {
                 };
             }
             Some(y) if y == f64::NEG_INFINITY => state.log_open_fraction = y,
-            _ => {
-                if c.reroute {
-                    state.clogged_shut = true;
-                } else {
-                    state.log_open_fraction = f64::NEG_INFINITY;
-                }
-            }
+            _ => state.clogged_shut = true,
         }
     }
 }
 
 /// The clogging ODE of one internal step, `d(ln f)/dt` (see
 /// [`Simulator::integrate_clogging`]).
-struct CloggingOde<'s, 'a> {
-    simulator: &'s Simulator<'a>,
+struct CloggingOde<'s> {
     contamination: &'s Contamination,
     a: f64,
     b: f64,
@@ -206,17 +252,11 @@ struct CloggingOde<'s, 'a> {
     after: &'s Snapshot,
     /// L_y \[m\].
     length: f64,
-    /// Re-routing ratios `(k, ratio, u_eff)` at `ln f = k h` ([`REROUTE_NODE_SPACING`]) and the
-    /// step's end peak pressure, computed on demand and interpolated linearly in
-    /// ln f: the right side is then a fixed, smooth function of f within the step (independent
-    /// of where the solver samples it), at a few exact junctions per step instead of two per
-    /// evaluation.
-    ratios: RefCell<Vec<(i64, f64, Option<f64>)>>,
 }
 
-impl CloggingOde<'_, '_> {
-    /// `−d(ln f)/dt` \[1/s\] at time `t` and `y = ln f` (≥ 0, finite).
-    fn rate(&self, t: f64, y: f64) -> f64 {
+impl CloggingOde<'_> {
+    /// `−d(ln f)/dt` \[1/s\] at time `t` (≥ 0, finite; independent of f).
+    fn rate(&self, t: f64, _y: f64) -> f64 {
         let (a, b) = (self.a, self.b);
         let t = t.clamp(a, b);
         let at = |qa: f64, qb: f64| events::interpolate_power_law(a, qa, b, qb, t).max(0.0);
@@ -227,27 +267,11 @@ impl CloggingOde<'_, '_> {
         }
         let channels = self.length / lambda_c;
         let n_p = self.contamination.number_concentration;
-        let rate = match &self.simulator.rerouting {
-            None => {
-                let u_c = at(self.before.open_u_c, self.after.open_u_c);
-                n_p * self.contamination.captured_fraction(u_c) * q_open / channels
-            }
-            Some(_) => {
-                let f = y.exp().min(1.0);
-                if f <= 0.0 {
-                    return 0.0;
-                }
-                let (ratio, u_eff) = if f >= 1.0 {
-                    (1.0, Some(at(self.before.open_u_c, self.after.open_u_c)))
-                } else {
-                    self.interpolated_ratio(y)
-                };
-                let Some(u_eff) = u_eff else {
-                    return 0.0;
-                };
-                n_p * self.contamination.captured_fraction(u_eff) * q_open * ratio / (channels * f)
-            }
-        };
+        let u_c = at(self.before.open_u_c, self.after.open_u_c);
+        let reach = at(self.before.reach, self.after.reach);
+        let cake = self.before.cake_factor.max(1.0);
+        let rate =
+            n_p * self.contamination.captured_fraction(u_c, reach) * q_open / (channels * cake);
         if rate.is_nan() {
             0.0
         } else {
@@ -256,61 +280,7 @@ impl CloggingOde<'_, '_> {
     }
 }
 
-impl CloggingOde<'_, '_> {
-    /// The step's peak reduced pressure for the re-routing ratio: the end's, the pressure its
-    /// end snapshot uses, so the ratio integrated and the ratio reported agree at the end.
-    fn step_pressure(&self) -> f64 {
-        self.after.peak_reduced_pressure
-    }
-
-    /// The re-routing ratio at node `k` (`ln f = k h`), cached.
-    fn node(&self, k: i64) -> (f64, Option<f64>) {
-        if let Some(&(_, r, u)) = self.ratios.borrow().iter().find(|n| n.0 == k) {
-            return (r, u);
-        }
-        let f = (k as f64 * REROUTE_NODE_SPACING).exp().min(1.0);
-        let (r, u) = match &self.simulator.rerouting {
-            Some(exact) => {
-                let s = self.step_pressure();
-                let a_c = self.simulator.problem.contact.percolation_threshold;
-                let reference = self.simulator.reference_junction(exact, s);
-                let a_eff = effective_threshold(a_c, f);
-                if f >= 1.0 {
-                    (1.0, reference)
-                } else if a_eff.is_nan() || a_eff <= 0.0 {
-                    (0.0, None)
-                } else {
-                    Simulator::ratio_against(exact, s, a_eff, reference)
-                }
-            }
-            None => (f, None),
-        };
-        self.ratios.borrow_mut().push((k, r, u));
-        (r, u)
-    }
-
-    /// `(ratio, u_eff)` at `y = ln f`, linear in ln f between the two nearest nodes.
-    fn interpolated_ratio(&self, y: f64) -> (f64, Option<f64>) {
-        let x = y / REROUTE_NODE_SPACING;
-        let k = x.floor();
-        let w = x - k;
-        let (k, w) = if k.is_finite() {
-            (k as i64, w)
-        } else {
-            return (0.0, None);
-        };
-        let (r0, u0) = self.node(k);
-        let (r1, u1) = self.node(k + 1);
-        match (u0, u1) {
-            (Some(u0), Some(u1)) => (r0 + w * (r1 - r0), Some(u0 + w * (u1 - u0))),
-            // one node sealed: take the nearer one
-            _ if w < 0.5 => (r0, u0),
-            _ => (r1, u1),
-        }
-    }
-}
-
-impl ode_solvers::System<f64, ode_solvers::Vector1<f64>> for CloggingOde<'_, '_> {
+impl ode_solvers::System<f64, ode_solvers::Vector1<f64>> for CloggingOde<'_> {
     fn system(&self, t: f64, y: &ode_solvers::Vector1<f64>, dy: &mut ode_solvers::Vector1<f64>) {
         dy[0] = -self.rate(t, y[0]);
     }

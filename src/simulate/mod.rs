@@ -75,17 +75,14 @@ const INTERFACE: InterfaceSettings = InterfaceSettings {
     tolerance: 1e-9,
 };
 
-/// Quadrature of the re-routing junctions: both u_c(a_eff) and u_c(a_c) of the ratio
-/// `(u_c(a_eff)/u_c(a_c))³` use it, so its error (≈ 6e-5 in u_c, measured against the default
+/// Quadrature of the clogging contact path (the detour junctions and the reach): both
+/// u_c(a_eff) and u_c(a_c) of the detour ratio `(u_c(a_eff)/u_c(a_c))³`, and both u1 of the reach
+/// ratio u1(ζc/2)/u1(ζc), use it, so its error (≈ 6e-5 in u_c, measured against the default
 /// rule on the paper's surface) largely cancels, at a third of the cost.
 const REROUTE_QUADRATURE: crate::contact::QuadratureSettings = crate::contact::QuadratureSettings {
     panel_width: 2.0,
     order: 4,
 };
-
-/// Spacing in ln f of the nodes at which the re-routing ratio is computed within one step
-/// (linear interpolation between them: error ≈ h²/8 · R″, below 1e-6 relative).
-const REROUTE_NODE_SPACING: f64 = 1e-3;
 
 /// Largest temperature change within one internal step when the squeeze depends on the
 /// temperature \[K\].
@@ -120,6 +117,13 @@ struct Snapshot {
     lambda_c: f64,
     /// Peak reduced pressure P_peak/E*.
     peak_reduced_pressure: f64,
+    /// Under clogging: d_reach, the largest particle that reaches the critical constriction
+    /// \[m\] (docs/model.md §7; 0 when clean or sealed).
+    reach: f64,
+    /// Under clogging: ū(ζ = 1) at the peak, the slit the cake sits in \[m\] (0 otherwise).
+    entry_gap: f64,
+    /// Under clogging: 1 + R_cake/R_seal, the cake's series factor on the static leak (1 clean).
+    cake_factor: f64,
     /// Open fraction f the leak rate was evaluated with.
     open_fraction: f64,
     /// `[motion]`: the motion quantities at the peak strip (all channels open until
@@ -238,6 +242,8 @@ struct Mechanics {
     /// ln f, the log of the open fraction of the critical channels (0 when clean; −∞ when
     /// every channel is blocked).
     log_open_fraction: f64,
+    /// Solid volume of the particles caked at the entry (d > d_reach) \[m³\] (0 when clean).
+    cake_volume: f64,
     /// The clogging ODE could not follow a stiff closure within a step: the seal is taken
     /// as closed from then on.
     clogged_shut: bool,
@@ -254,9 +260,10 @@ pub struct Simulator<'a> {
     /// The sealing force per unit length at the retained-force reference time \[N/m\].
     reference_force: f64,
     creep: crate::material::Creep,
-    /// The exact contact path for re-routed clogging (junctions at other thresholds), on a
-    /// coarser quadrature ([`REROUTE_QUADRATURE`]).
-    rerouting: Option<PerssonContact>,
+    /// The exact contact path under clogging (the reach u1(ζc/2), the entry gap and, with
+    /// re-routing, the detour junctions at other thresholds), on a coarser quadrature
+    /// ([`REROUTE_QUADRATURE`]).
+    clogging_contact: Option<PerssonContact>,
     /// The last `(s, u_c(s, a_c))` of the re-routing reference junction: a step's ratio nodes
     /// and its end snapshot share one pressure, hence one reference evaluation.
     reference_memo: std::cell::Cell<Option<(f64, Option<f64>)>>,
@@ -288,17 +295,13 @@ impl<'a> Simulator<'a> {
             .geometry
             .load_variable(problem.thermal_strain.as_ref(), problem.environment.at(0.0));
         let initial_profile = problem.initial_profile();
-        let rerouting = problem
-            .contamination
-            .as_ref()
-            .filter(|c| c.reroute)
-            .map(|_| {
-                let settings = ContactSettings {
-                    quadrature: REROUTE_QUADRATURE,
-                    ..problem.contact
-                };
-                PerssonContact::new(problem.spectrum.clone(), settings)
-            });
+        let clogging_contact = problem.contamination.as_ref().map(|_| {
+            let settings = ContactSettings {
+                quadrature: REROUTE_QUADRATURE,
+                ..problem.contact
+            };
+            PerssonContact::new(problem.spectrum.clone(), settings)
+        });
         let drag = problem.motion.map(|spec| {
             (
                 spec,
@@ -313,7 +316,7 @@ impl<'a> Simulator<'a> {
             initial_profile,
             reference_force: initial_profile.force_per_length(),
             creep: problem.material.prony.creep(),
-            rerouting,
+            clogging_contact,
             reference_memo: std::cell::Cell::new(None),
             counterface: InterfaceSolver::new(problem),
             groove: match &problem.groove {
@@ -405,6 +408,7 @@ impl<'a> Simulator<'a> {
             creep_set: 0.0,
             leaked_volume: 0.0,
             log_open_fraction: 0.0,
+            cake_volume: 0.0,
             clogged_shut: false,
         };
         let ramp = p.installation_reduced_time();
@@ -751,12 +755,18 @@ impl<'a> Simulator<'a> {
         let after = match &p.contamination {
             None => self.snapshot_at(state, b),
             Some(c) => {
-                let open = self.open_snapshot_at(state, b);
+                let open = self.with_reach(self.open_snapshot_at(state, b));
                 self.integrate_clogging(c, state, b, before, &open);
                 self.clogged(open, state)
             }
         };
-        state.leaked_volume += events::integrate_power_law(a, before.leak_rate, b, after.leak_rate);
+        let volume = events::integrate_power_law(a, before.leak_rate, b, after.leak_rate);
+        state.leaked_volume += volume;
+        if let Some(c) = &p.contamination {
+            // the cake grows with the fluid that carried its particles (explicit: the step's
+            // end snapshot used the cake at the step's start)
+            state.cake_volume += c.cake_volume_fraction(after.reach) * volume;
+        }
         state.time = b;
         after
     }
@@ -771,7 +781,7 @@ impl<'a> Simulator<'a> {
         if self.problem.contamination.is_none() {
             return open;
         }
-        self.clogged(open, state)
+        self.clogged(self.with_reach(open), state)
     }
 
     /// Profile, asperity modulus, junctions and leak rate at the state's time `t`, with all
@@ -850,6 +860,9 @@ impl<'a> Simulator<'a> {
             open_u_c: u_c.unwrap_or(0.0),
             lambda_c,
             peak_reduced_pressure: junction_s,
+            reach: 0.0,
+            entry_gap: 0.0,
+            cake_factor: 1.0,
             extrusion: p.extrusion_at(temperature),
             open_fraction: 1.0,
             motion,

@@ -686,7 +686,7 @@ fn bad_contamination_exits_2() {
     let line = |needle: &str| good.lines().position(|l| l.contains(needle)).unwrap() + 1;
     let conc = line("number_concentration =");
     let sizes = line("size_distribution =");
-    let lognormal = "{ kind = \"lognormal\", median = \"1.5 um\", geometric_std = 1.8 }";
+    let lognormal = "{ kind = \"lognormal\", median = \"80 nm\", geometric_std = 2.5 }";
     let cases: Vec<(String, String, String)> = vec![
         (
             "\"1e12 1/m^3\"".into(),
@@ -694,7 +694,7 @@ fn bad_contamination_exits_2() {
             format!("s.toml:{conc}: contamination.number_concentration: must not be negative"),
         ),
         (
-            "geometric_std = 1.8".into(),
+            "geometric_std = 2.5".into(),
             "geometric_std = 1.0".into(),
             format!("s.toml:{sizes}: contamination.size_distribution.geometric_std: must exceed 1"),
         ),
@@ -782,4 +782,30 @@ fn clogging_scenario_against_its_clean_twin() {
     );
     let history = fs::read_to_string(out.path("h.csv")).unwrap();
     assert!(history.starts_with(HISTORY_HEADER));
+    // issue 17, row by row against the clean twin's history (the same time grid): the open
+    // fraction never rises and the leak stays within f Q̇_open ≤ Q̇ ≤ Q̇_open, the lower bound
+    // loosened by the entry cake's series term (< 1e-3 here)
+    let column = |text: &str, name: &str| -> Vec<f64> {
+        let mut lines = text.lines();
+        let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+        let k = header.iter().position(|h| *h == name).unwrap();
+        lines
+            .map(|l| l.split(',').nth(k).unwrap().parse().unwrap())
+            .collect()
+    };
+    let dirty_q = column(&history, "leak_rate_m3_per_s");
+    let f = column(&history, "open_fraction");
+    out.run_ok(
+        &scenarios_dir().join("oring-nbr-hydraulic-oil-clean.toml"),
+        &[],
+    );
+    let clean_history = fs::read_to_string(out.path("h.csv")).unwrap();
+    let clean_q = column(&clean_history, "leak_rate_m3_per_s");
+    assert_eq!(clean_q.len(), dirty_q.len());
+    for i in 0..f.len() {
+        assert!(i == 0 || f[i] <= f[i - 1], "row {i}: f rises");
+        assert!(dirty_q[i] <= clean_q[i] * (1.0 + 1e-9), "row {i}");
+        assert!(dirty_q[i] >= f[i] * clean_q[i] * (1.0 - 1e-3), "row {i}");
+    }
+    assert!(f[f.len() - 1] < 0.5, "clogging acts within the run");
 }
