@@ -681,16 +681,15 @@ fn leak_takes_the_central_strip_of_an_oring() {
 /// `[contamination]` errors (issue 5): located, exit 2, nothing written.
 #[test]
 fn bad_contamination_exits_2() {
-    let good =
-        fs::read_to_string(scenarios_dir().join("oring-nbr-hydraulic-oil-clogging.toml")).unwrap();
+    let good = fs::read_to_string(scenarios_dir().join("gasket-nbr-dirty-oil.toml")).unwrap();
     let line = |needle: &str| good.lines().position(|l| l.contains(needle)).unwrap() + 1;
     let conc = line("number_concentration =");
     let sizes = line("size_distribution =");
-    let lognormal = "{ kind = \"lognormal\", median = \"80 nm\", geometric_std = 2.5 }";
+    let lognormal = "{ kind = \"lognormal\", median = \"150 nm\", geometric_std = 2.5 }";
     let cases: Vec<(String, String, String)> = vec![
         (
-            "\"1e12 1/m^3\"".into(),
-            "\"-1e12 1/m^3\"".into(),
+            "\"5e10 1/m^3\"".into(),
+            "\"-5e10 1/m^3\"".into(),
             format!("s.toml:{conc}: contamination.number_concentration: must not be negative"),
         ),
         (
@@ -709,12 +708,12 @@ fn bad_contamination_exits_2() {
             format!("s.toml:{sizes}: contamination.size_distribution.file: "),
         ),
         (
-            "number_concentration = \"1e12 1/m^3\"".into(),
-            "number_concentration = \"1e12 1/m^3\"\nvolume_fraction = 1e-6".into(),
+            "number_concentration = \"5e10 1/m^3\"".into(),
+            "number_concentration = \"5e10 1/m^3\"\nvolume_fraction = 1e-6".into(),
             "contamination.volume_fraction: number_concentration and volume_fraction are mutually exclusive".into(),
         ),
         (
-            "number_concentration = \"1e12 1/m^3\"\n".into(),
+            "number_concentration = \"5e10 1/m^3\"\n".into(),
             "".into(),
             "contamination.number_concentration: missing key".into(),
         ),
@@ -738,9 +737,9 @@ fn bad_contamination_exits_2() {
     }
 }
 
-/// The clogging scenario's leak rate falls over the first weeks below that of its clean twin
-/// (the same scenario without `[contamination]`); the open fraction is in the history and the
-/// summary. The shipped clean scenario clogs nothing.
+/// The clogging scenario's leak rate falls below that of its clean twin (the same scenario
+/// without `[contamination]`); the open fraction is in the history and the summary. The shipped
+/// clean-oil O-ring clogs nothing.
 #[test]
 fn clogging_scenario_against_its_clean_twin() {
     let out = Outputs::new();
@@ -750,8 +749,7 @@ fn clogging_scenario_against_its_clean_twin() {
     );
     assert_eq!(out.summary()["final_open_fraction"].as_f64(), Some(1.0));
     // the clean twin: the clogging scenario with its [contamination] table removed
-    let dirty_text =
-        fs::read_to_string(scenarios_dir().join("oring-nbr-hydraulic-oil-clogging.toml")).unwrap();
+    let dirty_text = fs::read_to_string(scenarios_dir().join("gasket-nbr-dirty-oil.toml")).unwrap();
     let mut clean_text = String::new();
     let mut skip = false;
     for l in dirty_text.lines() {
@@ -767,12 +765,10 @@ fn clogging_scenario_against_its_clean_twin() {
     let twin = out.write("twin.toml", &clean_text);
     out.run_ok(&twin, &[]);
     let clean = out.summary();
+    let clean_history = fs::read_to_string(out.path("h.csv")).unwrap();
     assert_eq!(clean["final_open_fraction"].as_f64(), Some(1.0));
     assert!(clean["final_leak_rate_m3_per_s"].as_f64().unwrap() > 0.0);
-    out.run_ok(
-        &scenarios_dir().join("oring-nbr-hydraulic-oil-clogging.toml"),
-        &[],
-    );
+    out.run_ok(&scenarios_dir().join("gasket-nbr-dirty-oil.toml"), &[]);
     let dirty = out.summary();
     let f = dirty["final_open_fraction"].as_f64().unwrap();
     assert!(f > 0.0 && f < 0.9, "{f}");
@@ -795,11 +791,6 @@ fn clogging_scenario_against_its_clean_twin() {
     };
     let dirty_q = column(&history, "leak_rate_m3_per_s");
     let f = column(&history, "open_fraction");
-    out.run_ok(
-        &scenarios_dir().join("oring-nbr-hydraulic-oil-clean.toml"),
-        &[],
-    );
-    let clean_history = fs::read_to_string(out.path("h.csv")).unwrap();
     let clean_q = column(&clean_history, "leak_rate_m3_per_s");
     assert_eq!(clean_q.len(), dirty_q.len());
     for i in 0..f.len() {

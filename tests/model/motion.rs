@@ -111,7 +111,7 @@ fn zero_speed_is_the_static_run_bit_for_bit() {
         "hydraulic-rod-seal.toml",
         "wiper-blade-water.toml",
         "oring-nbr-water-80c.toml",
-        "oring-nbr-hydraulic-oil-clogging.toml",
+        "gasket-nbr-dirty-oil.toml",
     ] {
         let p = load(name).life;
         let bare = LifeProblem {
@@ -228,7 +228,7 @@ fn a_stroke_cycle_leaves_the_leak_static_and_carries_the_film_out_and_back() {
 
 #[test]
 fn motion_under_clogging_stays_finite_and_scales_with_the_open_channels() {
-    let p = load("oring-nbr-hydraulic-oil-clogging.toml").life;
+    let p = load("gasket-nbr-dirty-oil.toml").life;
     for reroute in [false, true] {
         let mut q = with_motion(&p, Motion::Steady { speed: 1e-7 });
         q.contamination.as_mut().unwrap().reroute = reroute;
