@@ -23,6 +23,7 @@ mod error;
 pub mod figure_set;
 pub mod fit_data;
 mod gland;
+pub mod gsf;
 mod height_map;
 mod history;
 pub mod library;
@@ -155,6 +156,46 @@ pub fn read_psd_file(path: &Path) -> Result<crate::surface::Spectrum, DataFileEr
     let text = read(path).map_err(|e| error(None, e.to_string()))?;
     let (q, c) = psd::parse(&text).map_err(|e| error(e.line, e.message))?;
     crate::surface::Spectrum::tabulated(&q, &c).map_err(|e| error(None, e.to_string()))
+}
+
+/// Whether `path` names a Gwyddion Simple Field file (extension `.gsf`, any case).
+pub fn is_gsf(path: &Path) -> bool {
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("gsf"))
+}
+
+/// A height map file as a [`crate::numerical::Topography`] (SI units): a `.gsf` file
+/// ([`gsf`], self-describing; `pixel` must then be `None` and `unit` 1) or a CSV grid
+/// (`height_map` format, heights times `unit`, spacing `pixel`, which is then required).
+pub fn read_height_map(
+    path: &Path,
+    pixel: Option<f64>,
+    unit: f64,
+) -> Result<crate::numerical::Topography, DataFileError> {
+    let error = |line: Option<usize>, message: String| DataFileError {
+        path: path.to_path_buf(),
+        line,
+        message,
+    };
+    if is_gsf(path) {
+        let bytes = std::fs::read(path)
+            .map_err(|e| error(None, format!("cannot read the file: {e}")))?;
+        return gsf::parse(&bytes).map_err(|e| error(e.line, e.message));
+    }
+    let Some(pixel) = pixel else {
+        return Err(error(
+            None,
+            "a CSV height grid needs its pixel size (the spacing of the samples)".into(),
+        ));
+    };
+    let text = read(path).map_err(|e| error(None, e.to_string()))?;
+    let (nx, ny, heights) = height_map::parse(&text, unit).map_err(|e| error(e.line, e.message))?;
+    Ok(crate::numerical::Topography {
+        nx,
+        ny,
+        pixel,
+        heights,
+    })
 }
 
 /// The data rows of a CSV-like text file with their 1-based line numbers: a leading byte-order
