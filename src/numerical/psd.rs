@@ -73,8 +73,8 @@
 
 use super::{HeightMap, Topography};
 use crate::math::fft::{Complex, signed_index};
-use rustfft::FftPlanner;
 use crate::surface::{Spectrum, SpectrumError};
+use rustfft::FftPlanner;
 use std::f64::consts::PI;
 
 /// The taper applied to the map before the FFT.
@@ -817,7 +817,10 @@ mod tests {
                 .map(|(c, m)| c * *m as f64 * cell)
                 .sum();
             assert!(rel(total, amplitude * amplitude / 2.0) < 1e-9, "{window:?}");
-            assert!(rel(psd.q0, 2.0 * PI / ly) < 1e-12, "q0 from the shorter side");
+            assert!(
+                rel(psd.q0, 2.0 * PI / ly) < 1e-12,
+                "q0 from the shorter side"
+            );
         }
         assert!(topography_is_periodic(&map));
     }
@@ -839,12 +842,19 @@ mod tests {
             for &q in psd.q.iter().filter(|&&q| (lo..=hi).contains(&q)) {
                 let r = estimated.c(q) / truth.c(q);
                 // ≈ 3 % of averaging a power law over a bin, as for square maps
-                assert!((0.99..1.05).contains(&r), "seed {seed}: C ratio {r} at q = {q}");
+                assert!(
+                    (0.99..1.05).contains(&r),
+                    "seed {seed}: C ratio {r} at q = {q}"
+                );
                 n_bins += 1;
             }
             assert!(n_bins >= 5, "{n_bins}");
             let fit = fit_psd(&psd).unwrap();
-            assert!((fit.hurst - 0.8).abs() < 0.03, "seed {seed}: H {}", fit.hurst);
+            assert!(
+                (fit.hurst - 0.8).abs() < 0.03,
+                "seed {seed}: H {}",
+                fit.hurst
+            );
             assert!(fit.interval.0 < fit.hurst && fit.hurst < fit.interval.1);
             assert!(rel(estimated.rms_roughness(), map.rms()) < 1e-9);
         }
@@ -884,12 +894,11 @@ mod tests {
             let hs = hs.map(|h| h.spectrum().unwrap());
             // geometric means over the trusted band 8 q0 … π/(4a) of rectangle/truth and
             // rectangle/(mean of the halves)
-            let band: Vec<f64> = r
-                .q
-                .iter()
-                .copied()
-                .filter(|&q| (8.0 * r.q0..=PI / (4.0 * pixel)).contains(&q))
-                .collect();
+            let band: Vec<f64> =
+                r.q.iter()
+                    .copied()
+                    .filter(|&q| (8.0 * r.q0..=PI / (4.0 * pixel)).contains(&q))
+                    .collect();
             let geometric = |f: &dyn Fn(f64) -> f64| {
                 (band.iter().map(|&q| f(q).ln()).sum::<f64>() / band.len() as f64).exp()
             };

@@ -91,7 +91,9 @@ pub(super) fn parse(bytes: &[u8]) -> Result<Topography, HeightMapError> {
             Ok(v) if v >= MIN_SIZE => Ok(v),
             Ok(v) => Err(HeightMapError {
                 line: Some(line),
-                message: format!("{name} = {v}: a height map needs at least {MIN_SIZE} × {MIN_SIZE}"),
+                message: format!(
+                    "{name} = {v}: a height map needs at least {MIN_SIZE} × {MIN_SIZE}"
+                ),
             }),
             Err(_) => Err(HeightMapError {
                 line: Some(line),
@@ -219,7 +221,9 @@ mod tests {
     #[test]
     fn units_and_padding() {
         // header length ≡ 0 (mod 4) needs four NULs; units scale sizes and heights
-        let mut text = format!("{MAGIC}\nXRes = 8\nYRes = 8\nXReal = 4\nYReal = 4\nXYUnits = um\nZUnits = nm\n");
+        let mut text = format!(
+            "{MAGIC}\nXRes = 8\nYRes = 8\nXReal = 4\nYReal = 4\nXYUnits = um\nZUnits = nm\n"
+        );
         while !text.len().is_multiple_of(4) {
             text.insert(text.len() - 1, ' ');
         }

@@ -178,8 +178,8 @@ pub fn read_height_map(
         message,
     };
     if is_gsf(path) {
-        let bytes = std::fs::read(path)
-            .map_err(|e| error(None, format!("cannot read the file: {e}")))?;
+        let bytes =
+            std::fs::read(path).map_err(|e| error(None, format!("cannot read the file: {e}")))?;
         return gsf::parse(&bytes).map_err(|e| error(e.line, e.message));
     }
     let Some(pixel) = pixel else {

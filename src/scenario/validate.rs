@@ -6,10 +6,10 @@
 
 use super::Scenario;
 use super::error::{ScenarioError, Source};
+use super::psd;
 use super::raw::{
     Quantity, RawFluid, RawModel, RawNumerical, RawQuantity, RawScenario, RawSurface,
 };
-use super::psd;
 use crate::contact::ContactSettings;
 use crate::fluid::{Fluid, LibraryFluid, MINERAL_OIL_EXPANSION, ViscosityLaw, Walther};
 use crate::leak::{FlatSeal, StaticProblem};
@@ -1348,9 +1348,8 @@ impl Source<'_> {
             };
         let topography = super::read_height_map(&path, pixel, unit)
             .map_err(|e| format_error(e.line, e.message))?;
-        let spectrum =
-            map_psd::estimate_topography(&topography, &map_psd::PsdOptions::default())
-                .map_err(|e| format_error(None, e.to_string()))?;
+        let spectrum = map_psd::estimate_topography(&topography, &map_psd::PsdOptions::default())
+            .map_err(|e| format_error(None, e.to_string()))?;
         // the numerical level needs a square periodic grid of even side: the centred crop
         let (map, (x0, y0)) = topography.square_crop();
         let note = (!topography.is_square_even()).then(|| {
