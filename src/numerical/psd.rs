@@ -13,7 +13,7 @@
 //!    `q^{−2(1+H)}` tail; none for a periodic map (a synthesized surface, a numerical result),
 //!    whose periodogram is then exact mode by mode. [`Window::Auto`] (the default) decides with
 //!    [`is_periodic`];
-//! 3. periodogram from the 2-D FFT ([`Fft2`], `ĥ(k) = Σ_x h(x) w(x) e^{−2πi k·x/n}`);
+//! 3. periodogram from the 2-D FFT (rustfft, `ĥ(k) = Σ_x h(x) w(x) e^{−2πi k·x/n}`);
 //! 4. average radially in log-spaced bins of |q|.
 //!
 //! **Rectangular grids** (`nx × ny`, [`Topography`], square pixels `a`). The same steps with

@@ -20,7 +20,7 @@
 //! * the units default to metres and must be lengths (`m`, `um`, `µm`, `nm`, …);
 //! * the pixels must be square (`XReal/XRes = YReal/YRes` within 1e-6, relative): the
 //!   spectrum estimate and the numerical level assume one spacing;
-//! * each side at least [`super::height_map::MIN_SIZE`], every value finite, and exactly
+//! * each side at least 8 pixels, every value finite, and exactly
 //!   `XRes · YRes` values after the padding (a short file is truncated, a longer one is
 //!   refused too: it is not what the header says).
 //!
