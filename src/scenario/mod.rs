@@ -65,10 +65,12 @@ pub struct Scenario {
     /// The seal-life problem (`sealsim run`): O-ring or flat seal, loading, environment,
     /// ageing, failure criteria and time grid; 16 strips across an O-ring's profile.
     pub life: LifeProblem,
-    /// The measured surface of `surface.height_map` (heights and pixel in m), for the numerical
-    /// level; `None` for a spectrum given by parameters or `psd_file`. When present,
-    /// `problem.spectrum` and `life.spectrum` are its PSD estimate
-    /// ([`crate::numerical::psd::estimate`], restricted to `q0`, `q1` if given).
+    /// The measured surface of `surface.height_map` (heights and pixel in m) for the numerical
+    /// level: the map itself, or for a map that is not square with an even side its largest
+    /// centred even square crop ([`crate::numerical::Topography::square_crop`]); `None` for a
+    /// spectrum given by parameters or `psd_file`. When present, `problem.spectrum` and
+    /// `life.spectrum` are the PSD estimate of the whole map
+    /// ([`crate::numerical::psd::estimate_topography`], restricted to `q0`, `q1` if given).
     pub height_map: Option<HeightMap>,
     /// `[numerical]`: grid, band, realisations and seed of the numerical level (defaults:
     /// [`NumericalSettings::default`]).
