@@ -789,7 +789,7 @@ fn line_fit(x: &[f64], y: &[f64]) -> (f64, f64, f64, f64) {
 }
 
 /// Student t quantile t_{0.975,ν}, or ∞ when undefined.
-fn t975(dof: usize) -> f64 {
+pub(crate) fn t975(dof: usize) -> f64 {
     StudentsT::new(0.0, 1.0, dof as f64)
         .map(|t| t.inverse_cdf(0.975))
         .ok()

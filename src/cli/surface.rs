@@ -3,7 +3,9 @@
 //! Hurst exponent, the cut-offs and the warnings ([`crate::report::surface`]).
 
 use super::{CliError, positive_flag, write_output};
-use crate::profile::{ProfileOptions, analyse};
+use crate::numerical::Topography;
+use crate::numerical::psd::{PsdOptions, fit_psd, radial_psd_topography};
+use crate::profile::{ProfileOptions, analyse, profile_parameters};
 use crate::report::surface::SurfaceReport;
 use crate::roughness::{Band, DEFAULT_CUTOFF, DEFAULT_SHORT_CUTOFF, ra_from_rq, rz_over_rq};
 use crate::scenario::Scenario;
@@ -23,7 +25,12 @@ pub const MIN_SAMPLES_PER_CUTOFF: f64 = 10.0;
 #[command(
     after_help = "SOURCE: a scenario (.toml: its counterface spectrum as the contact \
     sees it), one or more line traces (CSV with header x,z and an optional units row such as \
-    mm,um; several files are averaged), or a PSD file (CSV of q [1/m], C [m^4]).\n\
+    mm,um; several files are averaged), a height map (a Gwyddion Simple Field .gsf file, or a \
+    CSV grid of heights — one row per line, no header — when --pixel-size is given), or a PSD \
+    file (CSV of q [1/m], C [m^4]).\n\
+    Height maps: Ra, Rq, Rz measured on every row as a profile along x (same mean-line rule as \
+    traces) and averaged; h_rms and rms slope both from the map and from its radially averaged \
+    spectrum; H fitted over the map's trusted band (q0 from the shorter side).\n\
     Traces: Ra, Rq, Rz measured on each trace (mean line: Gaussian filter with the cut-off when \
     the trace holds at least one, else the least-squares line) and averaged; the isotropic 2-D \
     spectrum from the averaged 1-D spectrum over the band the traces can be trusted in \
@@ -46,6 +53,14 @@ pub struct SurfaceArgs {
     /// Stylus tip radius of the traces (e.g. 2um): limits the trusted band.
     #[arg(long, value_name = "LENGTH")]
     pub tip_radius: Option<String>,
+
+    /// Pixel size of a CSV height grid (e.g. 0.5um): makes a CSV SOURCE a height map.
+    #[arg(long, value_name = "LENGTH")]
+    pub pixel_size: Option<String>,
+
+    /// Unit of the heights of a CSV height grid (default m; e.g. um, nm).
+    #[arg(long, value_name = "UNIT")]
+    pub height_unit: Option<String>,
 
     /// Write JSON instead of the text summary.
     #[arg(long)]
@@ -83,7 +98,40 @@ pub fn run(args: SurfaceArgs) -> Result<(), CliError> {
     }
     let first = &args.sources[0];
     let is_scenario = first.extension().is_some_and(|e| e == "toml");
-    let report = if is_scenario {
+    let pixel = length(args.pixel_size.as_deref(), "pixel-size")?;
+    let is_map = crate::scenario::is_gsf(first) || (pixel.is_some() && !is_scenario);
+    if !is_map || crate::scenario::is_gsf(first) {
+        for (given, flag) in [
+            (args.pixel_size.is_some(), "--pixel-size"),
+            (args.height_unit.is_some(), "--height-unit"),
+        ] {
+            if given {
+                return Err(CliError::Input(format!(
+                    "{flag} only applies to a CSV height grid (a .gsf file states its own pixel \
+                     size and units)"
+                )));
+            }
+        }
+    }
+    let report = if is_map {
+        if args.sources.len() > 1 {
+            return Err(CliError::Input("give one height map".into()));
+        }
+        let unit = match args.height_unit.as_deref() {
+            None => 1.0,
+            Some(text) => match crate::units::parse_unit(text.trim()) {
+                Ok((factor, dimension)) if dimension == Dimension::LENGTH => factor,
+                _ => {
+                    return Err(CliError::Input(format!(
+                        "--height-unit: expected a length unit such as m, um or nm, got {text:?}"
+                    )));
+                }
+            },
+        };
+        let map = crate::scenario::read_height_map(first, pixel, unit)
+            .map_err(|e| CliError::Input(e.to_string()))?;
+        map_report(first, &map, cutoff)?
+    } else if is_scenario {
         if args.sources.len() > 1 {
             return Err(CliError::Input(
                 "give one scenario (several files are for traces)".into(),
@@ -196,6 +244,8 @@ fn spectrum_report(
         rms_slope: slope,
         band: (q0, q1),
         hurst: spectrum.hurst_exponent().map(|h| (h, None)),
+        fit_band: None,
+        map_figures: None,
         q0,
         q1,
         rolloff: None,
@@ -306,9 +356,114 @@ fn traces_report(
         rms_slope: result.rms_slope,
         band: result.band,
         hurst: Some((h, Some(interval))),
+        fit_band: None,
+        map_figures: None,
         q0: lo,
         q1: hi,
         rolloff: result.q0,
+        warnings,
+        spectrum_points,
+        law_points,
+    })
+}
+
+/// The report of a height map (module docs of [`crate::numerical::psd`] for the spectrum):
+/// Ra, Rq, Rz on every row as a profile along x ([`crate::profile::profile_parameters`]:
+/// Gaussian mean line of cut-off λc when a row holds two, else the least-squares line), averaged
+/// over the rows; h_rms and rms slope from the map and from its spectrum; H fitted over the
+/// trusted band ([`crate::numerical::psd::fit_psd`]).
+fn map_report(
+    path: &Path,
+    map: &Topography,
+    cutoff: Option<f64>,
+) -> Result<SurfaceReport, CliError> {
+    let source = path.display().to_string();
+    let input = |e: String| CliError::Input(format!("{source}: {e}"));
+    let psd =
+        radial_psd_topography(map, &PsdOptions::default()).map_err(|e| input(e.to_string()))?;
+    let spectrum = psd.spectrum().map_err(|e| input(e.to_string()))?;
+    let lc = cutoff.unwrap_or(DEFAULT_CUTOFF);
+    let row_length = map.nx as f64 * map.pixel;
+    let row_cutoff = (row_length >= 2.0 * lc).then_some(lc);
+    if map.nx < 10 {
+        return Err(input(format!(
+            "{} pixels per row: Ra, Rq, Rz need rows of at least 10",
+            map.nx
+        )));
+    }
+    let mut rows = Vec::with_capacity(map.ny);
+    for iy in 0..map.ny {
+        let trace = crate::profile::Trace {
+            spacing: map.pixel,
+            heights: map.heights[iy * map.nx..(iy + 1) * map.nx].to_vec(),
+        };
+        rows.push(profile_parameters(&trace, row_cutoff).map_err(|e| input(e.to_string()))?);
+    }
+    let n = rows.len() as f64;
+    let rz: Vec<f64> = rows.iter().filter_map(|p| p.rz).collect();
+    let mut warnings = Vec::new();
+    if row_cutoff.is_none() {
+        warnings.push(format!(
+            "the rows ({} mm) are shorter than two sampling lengths of {} mm: Ra, Rq, Rz are \
+             taken about the least-squares line over five equal parts, not per ISO 21920",
+            show(row_length * 1e3),
+            show(lc * 1e3)
+        ));
+    }
+    let map_slope = map.rms_slope();
+    let slope = spectrum.rms_slope();
+    for (what, s) in [("of the spectrum", slope), ("of the map", map_slope)] {
+        if s > MAX_RMS_SLOPE {
+            warnings.push(format!(
+                "rms slope {what} {s:.3} is above {MAX_RMS_SLOPE}: the small-slope contact \
+                 theory is stretched [docs/model.md §9.8]"
+            ));
+        }
+    }
+    if map.nx != map.ny {
+        warnings.push(format!(
+            "the map is {} × {} pixels: q0 of the trusted band is 2π over the shorter side; \
+             the bins below it hold modes along the longer side only",
+            map.nx, map.ny
+        ));
+    }
+    let fit = fit_psd(&psd);
+    if fit.is_none() {
+        warnings.push(
+            "too few spectrum bins in the trusted band to fit a Hurst exponent (the map is too \
+             small)"
+                .into(),
+        );
+    }
+    let spectrum_points: Vec<(f64, f64)> = psd.q.iter().map(|&q| (q, spectrum.c(q))).collect();
+    let law_points = fit.map_or_else(Vec::new, |f| {
+        let (lo, hi) = f.band;
+        let mid = (lo * hi).sqrt();
+        let c_mid = spectrum.c(mid);
+        crate::math::log_spaced(lo, hi, 50)
+            .into_iter()
+            .map(|q| (q, c_mid * (q / mid).powf(-2.0 * (1.0 + f.hurst))))
+            .collect()
+    });
+    Ok(SurfaceReport {
+        source,
+        kind: "height map".into(),
+        ra: rows.iter().map(|p| p.ra).sum::<f64>() / n,
+        rq: rows.iter().map(|p| p.rq).sum::<f64>() / n,
+        rz: (!rz.is_empty()).then(|| rz.iter().sum::<f64>() / rz.len() as f64),
+        parameters_basis: format!(
+            "measured on the {} rows as profiles along x, averaged",
+            map.ny
+        ),
+        h_rms: spectrum.rms_roughness(),
+        rms_slope: slope,
+        band: (spectrum.q0(), spectrum.q1()),
+        hurst: fit.map(|f| (f.hurst, Some(f.interval))),
+        fit_band: fit.map(|f| f.band),
+        map_figures: Some((psd.rms, map_slope)),
+        q0: psd.q0,
+        q1: psd.q_high,
+        rolloff: None,
         warnings,
         spectrum_points,
         law_points,

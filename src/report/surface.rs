@@ -13,7 +13,7 @@ use std::fmt::Write;
 pub struct SurfaceReport {
     /// The source as given (file name(s)).
     pub source: String,
-    /// What the source is: `trace`, `traces`, `scenario`, `psd file`.
+    /// What the source is: `trace`, `traces`, `scenario`, `psd file`, `height map`.
     pub kind: String,
     /// Ra, Rq, Rz \[m\] and how they were obtained (measured on traces, or from the spectrum
     /// over the callout band for Gaussian heights).
@@ -28,6 +28,12 @@ pub struct SurfaceReport {
     pub band: (f64, f64),
     /// Hurst exponent with its 95 % interval when it was fitted.
     pub hurst: Option<(f64, Option<(f64, f64)>)>,
+    /// The band of q the Hurst exponent was fitted over \[1/m\], when it is not `band`
+    /// (height maps).
+    pub fit_band: Option<(f64, f64)>,
+    /// For a height map: its rms height about its mean (or best-fit plane) \[m\] and its rms
+    /// slope from finite differences, measured on the map directly (beside the spectrum's).
+    pub map_figures: Option<(f64, f64)>,
     /// Lower and upper cut-off of the spectrum \[1/m\].
     pub q0: f64,
     pub q1: f64,
@@ -65,11 +71,21 @@ impl SurfaceReport {
             um(self.h_rms),
             self.rms_slope
         );
+        if let Some((h_rms, slope)) = self.map_figures {
+            let _ = writeln!(
+                out,
+                "on the map itself: h_rms {}, rms slope {slope:.4} (finite differences)",
+                um(h_rms)
+            );
+        }
+        let fitted_over = self.fit_band.map_or(String::new(), |(a, b)| {
+            format!(", fitted over q = {} … {} 1/m", show(a), show(b))
+        });
         match self.hurst {
             Some((h, Some((lo, hi)))) => {
                 let _ = writeln!(
                     out,
-                    "Hurst exponent {h:.3} (95 % interval {lo:.3} – {hi:.3})"
+                    "Hurst exponent {h:.3} (95 % interval {lo:.3} – {hi:.3}{fitted_over})"
                 );
             }
             Some((h, None)) => {
@@ -111,6 +127,9 @@ impl SurfaceReport {
             "band_per_m": [self.band.0, self.band.1],
             "hurst_exponent": hurst,
             "hurst_exponent_interval": interval,
+            "hurst_fit_band_per_m": self.fit_band.map(|(a, b)| vec![a, b]),
+            "map_h_rms_m": self.map_figures.map(|f| f.0),
+            "map_rms_slope": self.map_figures.map(|f| f.1),
             "q0_per_m": self.q0,
             "q1_per_m": self.q1,
             "rolloff_per_m": self.rolloff,

@@ -1,20 +1,22 @@
-//! Height maps: a CSV file of a square grid of heights (`surface.height_map`).
+//! Height maps: a CSV file of a rectangular grid of heights (`surface.height_map`; a `.gsf`
+//! file is read by [`super::gsf`]).
 //!
 //! Format: one grid row per line (row `iy`, increasing y), comma-separated heights (column `ix`,
 //! increasing x, the flow direction), in metres unless the scenario's `height_unit` says
-//! otherwise. Blank lines and lines starting with `#` are ignored; no header row. The grid must
-//! be square, `n × n` with `n` even (the FFT of the PSD estimate and the numerical level need an
-//! even size) and at least [`MIN_SIZE`]; every cell a finite number. Parsed by hand so that
-//! every error names the real line of the file.
+//! otherwise. Blank lines and lines starting with `#` are ignored; no header row. The grid is
+//! `nx × ny` (every row the same length), each side at least [`MIN_SIZE`], any parity: the PSD
+//! estimate takes any size, and the numerical level runs on the largest centred even square
+//! ([`crate::numerical::Topography::square_crop`]). Every cell a finite number. Parsed by hand
+//! so that every error names the real line of the file.
 
 use crate::units::show;
 
 /// Smallest accepted grid side.
-pub(super) const MIN_SIZE: usize = 8;
+pub const MIN_SIZE: usize = 8;
 
 /// A malformed height map: what is wrong and, when it is on one row, the 1-based line.
 #[derive(Debug, Clone, PartialEq)]
-pub(super) struct HeightMapError {
+pub(crate) struct HeightMapError {
     pub line: Option<usize>,
     pub message: String,
 }
@@ -26,9 +28,9 @@ fn at(line: usize, message: String) -> HeightMapError {
     }
 }
 
-/// The grid of a height map file's text: `(n, heights)` with `heights[iy * n + ix]` in metres
-/// (each cell multiplied by `unit`, the SI factor of the file's height unit).
-pub(super) fn parse(text: &str, unit: f64) -> Result<(usize, Vec<f64>), HeightMapError> {
+/// The grid of a height map file's text: `(nx, ny, heights)` with `heights[iy * nx + ix]` in
+/// metres (each cell multiplied by `unit`, the SI factor of the file's height unit).
+pub(super) fn parse(text: &str, unit: f64) -> Result<(usize, usize, Vec<f64>), HeightMapError> {
     let mut heights = Vec::new();
     // (line, column count) of the first row, and the line of every row.
     let mut first: Option<(usize, usize)> = None;
@@ -42,7 +44,7 @@ pub(super) fn parse(text: &str, unit: f64) -> Result<(usize, Vec<f64>), HeightMa
                     line,
                     format!(
                         "ragged row: {} values, but the first row (line {first_line}) has \
-                         {columns}; the grid must be square",
+                         {columns}; every row of the grid must have the same length",
                         cells.len()
                     ),
                 ));
@@ -57,7 +59,7 @@ pub(super) fn parse(text: &str, unit: f64) -> Result<(usize, Vec<f64>), HeightMa
     let Some((first_line, columns)) = first else {
         return Err(HeightMapError {
             line: None,
-            message: "no data rows: expected a square grid of comma-separated heights".into(),
+            message: "no data rows: expected a grid of comma-separated heights".into(),
         });
     };
     let rows = lines.len();
@@ -69,35 +71,16 @@ pub(super) fn parse(text: &str, unit: f64) -> Result<(usize, Vec<f64>), HeightMa
             ),
         ));
     }
-    if rows > columns {
-        return Err(at(
-            lines[columns],
-            format!(
-                "not square: {rows} rows of {columns} values (this is row {}); the grid must \
-                 be n × n",
-                columns + 1
-            ),
-        ));
-    }
-    if rows < columns {
+    if rows < MIN_SIZE {
         return Err(at(
             lines[rows - 1],
             format!(
-                "not square: the grid ends after {rows} rows of {columns} values; it must be \
-                 n × n"
+                "the grid ends after {rows} row(s): a height map needs at least {MIN_SIZE} rows \
+                 of at least {MIN_SIZE} values"
             ),
         ));
     }
-    if !columns.is_multiple_of(2) {
-        return Err(at(
-            first_line,
-            format!(
-                "the grid is {columns} × {columns}: its side must be even (the FFT needs it); \
-                 drop one row and one column"
-            ),
-        ));
-    }
-    Ok((columns, heights))
+    Ok((columns, rows, heights))
 }
 
 /// A finite height (m) from one cell.
@@ -131,14 +114,30 @@ mod tests {
             .collect()
     }
 
+    fn rect(nx: usize, ny: usize) -> String {
+        (0..ny)
+            .map(|iy| {
+                (0..nx)
+                    .map(|ix| format!("{}e-7", ix + 2 * iy))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+                    + "\n"
+            })
+            .collect()
+    }
+
     #[test]
     fn rows_are_read_in_order_with_comments_and_units() {
         let text = format!("# a map\n\n{}", grid(8));
-        let (n, h) = parse(&text, 1.0).unwrap();
-        assert_eq!(n, 8);
+        let (nx, ny, h) = parse(&text, 1.0).unwrap();
+        assert_eq!((nx, ny), (8, 8));
         assert_eq!(h[8 + 3], 5e-7);
-        let (_, um) = parse(&text, 1e-6).unwrap();
+        let (_, _, um) = parse(&text, 1e-6).unwrap();
         assert!((um[8 + 3] - 5e-13).abs() < 1e-25);
+        // rectangular and odd sides are accepted
+        let (nx, ny, h) = parse(&rect(12, 9), 1.0).unwrap();
+        assert_eq!((nx, ny, h.len()), (12, 9, 108));
+        assert_eq!(h[12 + 3], 5e-7);
     }
 
     #[test]
@@ -157,18 +156,13 @@ mod tests {
         assert_eq!(e.line, Some(6));
         assert!(e.message.contains("ragged row: 9 values"), "{e:?}");
 
-        let e = err(&format!("{good}{}", good.lines().next().unwrap()));
-        assert_eq!(e.line, Some(9));
-        assert!(e.message.contains("not square"), "{e:?}");
         let e = err(&good.lines().take(7).collect::<Vec<_>>().join("\n"));
         assert_eq!(e.line, Some(7));
-        assert!(e.message.contains("not square"), "{e:?}");
+        assert!(e.message.contains("at least 8 rows"), "{e:?}");
 
         let e = err(&grid(6));
         assert_eq!(e.line, Some(1));
         assert!(e.message.contains("at least 8 × 8"), "{e:?}");
-        let e = err(&grid(9));
-        assert!(e.message.contains("must be even"), "{e:?}");
 
         let e = err(&good.replacen("0e-7,", "inf,", 1));
         assert_eq!(e.line, Some(1));

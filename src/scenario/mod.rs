@@ -23,6 +23,7 @@ mod error;
 pub mod figure_set;
 pub mod fit_data;
 mod gland;
+pub mod gsf;
 mod height_map;
 mod history;
 pub mod library;
@@ -64,10 +65,12 @@ pub struct Scenario {
     /// The seal-life problem (`sealsim run`): O-ring or flat seal, loading, environment,
     /// ageing, failure criteria and time grid; 16 strips across an O-ring's profile.
     pub life: LifeProblem,
-    /// The measured surface of `surface.height_map` (heights and pixel in m), for the numerical
-    /// level; `None` for a spectrum given by parameters or `psd_file`. When present,
-    /// `problem.spectrum` and `life.spectrum` are its PSD estimate
-    /// ([`crate::numerical::psd::estimate`], restricted to `q0`, `q1` if given).
+    /// The measured surface of `surface.height_map` (heights and pixel in m) for the numerical
+    /// level: the map itself, or for a map that is not square with an even side its largest
+    /// centred even square crop ([`crate::numerical::Topography::square_crop`]); `None` for a
+    /// spectrum given by parameters or `psd_file`. When present, `problem.spectrum` and
+    /// `life.spectrum` are the PSD estimate of the whole map
+    /// ([`crate::numerical::psd::estimate_topography`], restricted to `q0`, `q1` if given).
     pub height_map: Option<HeightMap>,
     /// `[numerical]`: grid, band, realisations and seed of the numerical level (defaults:
     /// [`NumericalSettings::default`]).
@@ -155,6 +158,46 @@ pub fn read_psd_file(path: &Path) -> Result<crate::surface::Spectrum, DataFileEr
     let text = read(path).map_err(|e| error(None, e.to_string()))?;
     let (q, c) = psd::parse(&text).map_err(|e| error(e.line, e.message))?;
     crate::surface::Spectrum::tabulated(&q, &c).map_err(|e| error(None, e.to_string()))
+}
+
+/// Whether `path` names a Gwyddion Simple Field file (extension `.gsf`, any case).
+pub fn is_gsf(path: &Path) -> bool {
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("gsf"))
+}
+
+/// A height map file as a [`crate::numerical::Topography`] (SI units): a `.gsf` file
+/// ([`gsf`], self-describing; `pixel` must then be `None` and `unit` 1) or a CSV grid
+/// (`height_map` format, heights times `unit`, spacing `pixel`, which is then required).
+pub fn read_height_map(
+    path: &Path,
+    pixel: Option<f64>,
+    unit: f64,
+) -> Result<crate::numerical::Topography, DataFileError> {
+    let error = |line: Option<usize>, message: String| DataFileError {
+        path: path.to_path_buf(),
+        line,
+        message,
+    };
+    if is_gsf(path) {
+        let bytes =
+            std::fs::read(path).map_err(|e| error(None, format!("cannot read the file: {e}")))?;
+        return gsf::parse(&bytes).map_err(|e| error(e.line, e.message));
+    }
+    let Some(pixel) = pixel else {
+        return Err(error(
+            None,
+            "a CSV height grid needs its pixel size (the spacing of the samples)".into(),
+        ));
+    };
+    let text = read(path).map_err(|e| error(None, e.to_string()))?;
+    let (nx, ny, heights) = height_map::parse(&text, unit).map_err(|e| error(e.line, e.message))?;
+    Ok(crate::numerical::Topography {
+        nx,
+        ny,
+        pixel,
+        heights,
+    })
 }
 
 /// The data rows of a CSV-like text file with their 1-based line numbers: a leading byte-order

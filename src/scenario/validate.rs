@@ -6,10 +6,10 @@
 
 use super::Scenario;
 use super::error::{ScenarioError, Source};
+use super::psd;
 use super::raw::{
     Quantity, RawFluid, RawModel, RawNumerical, RawQuantity, RawScenario, RawSurface,
 };
-use super::{height_map, psd};
 use crate::contact::ContactSettings;
 use crate::fluid::{Fluid, LibraryFluid, MINERAL_OIL_EXPANSION, ViscosityLaw, Walther};
 use crate::leak::{FlatSeal, StaticProblem};
@@ -902,8 +902,8 @@ impl Source<'_> {
             return Ok((spectrum, None, vec![note]));
         }
         if let Some(file) = &raw.height_map {
-            let (spectrum, map) = self.height_map_surface(raw, file)?;
-            return Ok((spectrum, Some(map), Vec::new()));
+            let (spectrum, map, note) = self.height_map_surface(raw, file)?;
+            return Ok((spectrum, Some(map), note.into_iter().collect()));
         }
         for (present, key) in [
             (raw.pixel_size.as_ref().map(Spanned::span), PIXEL_SIZE.key),
@@ -927,7 +927,7 @@ impl Source<'_> {
                     "no spectrum given: set either a drawing callout (ra, rq or rz), line \
                      traces (profile), the self-affine parameters (rms_roughness, \
                      hurst_exponent, q0, q1, optional rolloff), psd_file (a CSV of q, C) or \
-                     height_map (a CSV grid of heights, with pixel_size)",
+                     height_map (a CSV grid of heights with pixel_size, or a .gsf file)",
                 ));
             }
             None => self.self_affine_surface(table)?,
@@ -1247,16 +1247,20 @@ impl Source<'_> {
         Ok((spectrum, note))
     }
 
-    /// `height_map` (relative to the scenario's directory) with `pixel_size` and the optional
-    /// `height_unit`: the grid in SI units and its PSD estimate (default options: Hann window
+    /// `height_map` (relative to the scenario's directory): a CSV grid with `pixel_size` and the
+    /// optional `height_unit`, or a `.gsf` file that states both (the keys are then refused);
+    /// rectangular grids accepted. The grid in SI units and its PSD estimate over the whole map
+    /// ([`map_psd::estimate_topography`], q0 from the shorter side) (default options: Hann window
     /// unless the map is periodic, 10 bins per decade, h_rms equal to the detrended map's rms,
     /// band `2π/(L√π)` … `π/pixel_size`; [`crate::numerical::psd`]), restricted to the optional
-    /// `q0`, `q1`.
+    /// `q0`, `q1`. The map returned for the numerical level is the largest centred even square
+    /// ([`crate::numerical::Topography::square_crop`]), with a note when that is not the whole
+    /// map.
     fn height_map_surface(
         &self,
         raw: &RawSurface,
         file: &Spanned<String>,
-    ) -> Result<(Spectrum, HeightMap), ScenarioError> {
+    ) -> Result<(Spectrum, HeightMap, Option<ScenarioError>), ScenarioError> {
         for (present, key) in [
             (
                 raw.rms_roughness.as_ref().map(Spanned::span),
@@ -1279,40 +1283,61 @@ impl Source<'_> {
                 ));
             }
         }
-        let Some(pixel_size) = &raw.pixel_size else {
+        let path = self.relative_path(file.get_ref());
+        let gsf = super::is_gsf(&path);
+        let (pixel, unit) = if gsf {
+            // the file states its pixel size and units (scenario/gsf.rs)
+            for (present, key) in [
+                (raw.pixel_size.as_ref().map(Spanned::span), PIXEL_SIZE.key),
+                (raw.height_unit.as_ref().map(Spanned::span), HEIGHT_UNIT),
+            ] {
+                if let Some(span) = present {
+                    return Err(self.error(
+                        span,
+                        key,
+                        "a .gsf height map states its pixel size (XReal/XRes) and height unit \
+                         (ZUnits) itself: remove this key",
+                    ));
+                }
+            }
+            (None, 1.0)
+        } else {
+            let Some(pixel_size) = &raw.pixel_size else {
+                return Err(self.error(
+                    file.span(),
+                    HEIGHT_MAP,
+                    "needs pixel_size, the spacing of the grid's samples (e.g. pixel_size = \
+                     \"0.5 um\")",
+                ));
+            };
+            let pixel = self.quantity(pixel_size, &PIXEL_SIZE)?;
+            let unit = match &raw.height_unit {
+                None => 1.0,
+                Some(text) => match units::parse_unit(text.get_ref().trim()) {
+                    Ok((factor, dimension)) if dimension == Dimension::LENGTH => factor,
+                    Ok(_) | Err(_) => {
+                        return Err(self.error(
+                            text.span(),
+                            HEIGHT_UNIT,
+                            format!(
+                                "expected a length unit for the heights, such as \"m\", \"um\" \
+                                 or \"nm\", got {:?}",
+                                text.get_ref()
+                            ),
+                        ));
+                    }
+                },
+            };
+            (Some(pixel), unit)
+        };
+        let line = self.line(file.span().start);
+        if !path.is_file() {
             return Err(self.error(
                 file.span(),
                 HEIGHT_MAP,
-                "needs pixel_size, the spacing of the grid's samples (e.g. pixel_size = \"0.5 um\")",
+                format!("cannot read height map {}: no such file", path.display()),
             ));
-        };
-        let pixel = self.quantity(pixel_size, &PIXEL_SIZE)?;
-        let unit = match &raw.height_unit {
-            None => 1.0,
-            Some(text) => match units::parse_unit(text.get_ref().trim()) {
-                Ok((factor, dimension)) if dimension == Dimension::LENGTH => factor,
-                Ok(_) | Err(_) => {
-                    return Err(self.error(
-                        text.span(),
-                        HEIGHT_UNIT,
-                        format!(
-                            "expected a length unit for the heights, such as \"m\", \"um\" or \
-                             \"nm\", got {:?}",
-                            text.get_ref()
-                        ),
-                    ));
-                }
-            },
-        };
-        let line = self.line(file.span().start);
-        let path = self.relative_path(file.get_ref());
-        let text = std::fs::read_to_string(&path).map_err(|e| {
-            self.error(
-                file.span(),
-                HEIGHT_MAP,
-                format!("cannot read height map {}: {e}", path.display()),
-            )
-        })?;
+        }
         let format_error =
             |map_line: Option<usize>, message: String| ScenarioError::HeightMapFormat {
                 map: path.clone(),
@@ -1321,18 +1346,39 @@ impl Source<'_> {
                 line,
                 message,
             };
-        let (n, heights) =
-            height_map::parse(&text, unit).map_err(|e| format_error(e.line, e.message))?;
-        let map = HeightMap { n, pixel, heights };
-        let spectrum = map_psd::estimate(&map, &map_psd::PsdOptions::default())
+        let topography = super::read_height_map(&path, pixel, unit)
+            .map_err(|e| format_error(e.line, e.message))?;
+        let spectrum = map_psd::estimate_topography(&topography, &map_psd::PsdOptions::default())
             .map_err(|e| format_error(None, e.to_string()))?;
+        // the numerical level needs a square periodic grid of even side: the centred crop
+        let (map, (x0, y0)) = topography.square_crop();
+        let note = (!topography.is_square_even()).then(|| {
+            self.error(
+                file.span(),
+                HEIGHT_MAP,
+                format!(
+                    "the map is {} × {} pixels: its spectrum uses the whole map (q0 from the \
+                     shorter side); the numerical level (fidelity = \"numerical\") runs on its \
+                     centred {} × {} crop (columns {}–{}, rows {}–{})",
+                    topography.nx,
+                    topography.ny,
+                    map.n,
+                    map.n,
+                    x0 + 1,
+                    x0 + map.n,
+                    y0 + 1,
+                    y0 + map.n
+                ),
+            )
+        });
+        let short_side = topography.nx.min(topography.ny) as f64 * topography.pixel;
 
         let q0 = self.optional(raw.q0.as_ref(), &Q0)?;
         let q1 = self.optional(raw.q1.as_ref(), &Q1)?;
         let (span, key) = match (&raw.q0, &raw.q1) {
             (Some(q), _) => (q.span(), Q0.key),
             (None, Some(q)) => (q.span(), Q1.key),
-            (None, None) => return Ok((spectrum, map)),
+            (None, None) => return Ok((spectrum, map, note)),
         };
         let (lo, hi) = (q0.unwrap_or(spectrum.q0()), q1.unwrap_or(spectrum.q1()));
         let spectrum = spectrum.restricted(lo, hi).map_err(|e| {
@@ -1341,12 +1387,12 @@ impl Source<'_> {
                 key,
                 format!(
                     "{e} (the height map's spectrum covers 2π/(L√π) … π/pixel_size, \
-                     L = {} m its side)",
-                    show(map.side())
+                     L = {} m its shorter side)",
+                    show(short_side)
                 ),
             )
         })?;
-        Ok((spectrum, map))
+        Ok((spectrum, map, note))
     }
 
     fn self_affine_surface(&self, table: &Spanned<RawSurface>) -> Result<Spectrum, ScenarioError> {

@@ -233,3 +233,197 @@ fn a_cutoff_shorter_than_the_sampling_is_refused() {
         ));
     assert!(!out.exists());
 }
+
+/// A periodic 256² surface of H = 0.8, h_rms = 1 µm over q0 … π/a, pixel 0.5 µm.
+fn synthetic_map(seed: u64) -> sealsim::numerical::HeightMap {
+    let (n, pixel) = (256usize, 0.5e-6);
+    let q0 = 2.0 * std::f64::consts::PI / (n as f64 * pixel);
+    let spectrum =
+        sealsim::surface::Spectrum::self_affine(1e-6, 0.8, q0, std::f64::consts::PI / pixel, None)
+            .unwrap();
+    sealsim::numerical::surface::synthesize(&spectrum, n, seed)
+}
+
+/// The first `rows` rows of `map` as a CSV grid, heights in µm.
+fn grid_csv(map: &sealsim::numerical::HeightMap, rows: usize) -> String {
+    let mut text = String::new();
+    for row in map.heights.chunks(map.n).take(rows) {
+        let cells: Vec<String> = row.iter().map(|h| format!("{:e}", h * 1e6)).collect();
+        let _ = writeln!(text, "{}", cells.join(","));
+    }
+    text
+}
+
+#[test]
+fn a_gsf_height_map_gives_the_surface_summary() {
+    let dir = TempDir::new().unwrap();
+    let map = synthetic_map(3);
+    let side = map.n as f64 * map.pixel;
+    let gsf = dir.path().join("map.gsf");
+    fs::write(
+        &gsf,
+        sealsim::scenario::gsf::write(map.n, map.n, side, side, &map.heights),
+    )
+    .unwrap();
+    let plot = dir.path().join("psd.svg");
+    let j = json_of(&[gsf.to_str().unwrap(), "--plot", plot.to_str().unwrap()]);
+    assert_eq!(j["kind"], "height map");
+    for key in [
+        "ra_m",
+        "rq_m",
+        "rz_m",
+        "rms_slope",
+        "hurst_exponent",
+        "q0_per_m",
+        "q1_per_m",
+        "map_h_rms_m",
+        "map_rms_slope",
+    ] {
+        assert!(j[key].is_number(), "{key} in {j}");
+    }
+    let f = |k: &str| j[k].as_f64().unwrap();
+    // a periodic map: H within 0.03, q0 = 2π/L, q1 = π/a
+    assert!((f("hurst_exponent") - 0.8).abs() < 0.03, "{j}");
+    assert!((f("q0_per_m") * side / (2.0 * std::f64::consts::PI) - 1.0).abs() < 1e-9);
+    assert!((f("q1_per_m") * map.pixel / std::f64::consts::PI - 1.0).abs() < 1e-9);
+    // h_rms: the spectrum's equals the map's (Parseval), which is the synthesized map's rms
+    assert!((f("h_rms_m") / f("map_h_rms_m") - 1.0).abs() < 1e-6);
+    assert!((f("map_h_rms_m") / map.rms() - 1.0).abs() < 1e-6);
+    // rms slope: the spectrum's 2π∫q³C dq against the map's finite differences, which see
+    // the modes near π/a attenuated (|2 sin(qa/2)/a|² < q²): measured 0.93
+    let ratio = f("map_rms_slope") / f("rms_slope");
+    assert!((0.8..1.0).contains(&ratio), "{ratio}");
+    // rows as profiles: Rq/Ra between a single sinusoid's π/(2√2) = 1.111 and Gaussian
+    // heights' √(π/2) = 1.253 (each 128 µm row is dominated by a few long random-phase modes;
+    // measured 1.167)
+    let r = f("rq_m") / f("ra_m");
+    assert!((1.11..1.26).contains(&r), "Rq/Ra {r}");
+    // each row's Rq is at most the map's rms (a row's mean line removes part of the long waves)
+    assert!(f("rq_m") < f("map_h_rms_m"), "{j}");
+    // Rz: mean peak-to-valley of the five parts of each row (the trace rule), positive
+    assert!(f("rz_m") > f("ra_m"), "{j}");
+    let svg = fs::read_to_string(&plot).unwrap();
+    assert!(svg.contains("<svg") && svg.contains("fitted or given law"));
+}
+
+#[test]
+fn a_csv_grid_needs_its_pixel_size_and_may_be_rectangular() {
+    let dir = TempDir::new().unwrap();
+    let map = synthetic_map(4);
+    let square = dir.path().join("square.csv");
+    let rect = dir.path().join("rect.csv");
+    fs::write(&square, grid_csv(&map, 256)).unwrap();
+    fs::write(&rect, grid_csv(&map, 128)).unwrap();
+    let args = |p: &std::path::Path| {
+        json_of(&[
+            p.to_str().unwrap(),
+            "--pixel-size",
+            "0.5um",
+            "--height-unit",
+            "um",
+        ])
+    };
+    let (s, r) = (args(&square), args(&rect));
+    assert!((s["map_h_rms_m"].as_f64().unwrap() / map.rms() - 1.0).abs() < 1e-6);
+    // the rectangle: q0 from its shorter side (128 rows), a warning naming its shape
+    let q0 = r["q0_per_m"].as_f64().unwrap();
+    assert!((q0 * 128.0 * 0.5e-6 / (2.0 * std::f64::consts::PI) - 1.0).abs() < 1e-9);
+    assert!(
+        r["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|w| w.as_str().unwrap().contains("256 × 128 pixels")),
+        "{r}"
+    );
+    // the same surface: H and the rows' parameters agree between the square and its half
+    let h = |j: &serde_json::Value| j["hurst_exponent"].as_f64().unwrap();
+    assert!((h(&s) - h(&r)).abs() < 0.05, "{} vs {}", h(&s), h(&r));
+    let ra = |j: &serde_json::Value| j["ra_m"].as_f64().unwrap();
+    assert!(
+        (ra(&s) / ra(&r) - 1.0).abs() < 0.1,
+        "{} vs {}",
+        ra(&s),
+        ra(&r)
+    );
+    // without --pixel-size the grid is not a map (read as a PSD file, which it is not)
+    cargo_bin_cmd!("sealsim")
+        .arg("surface")
+        .arg(&square)
+        .assert()
+        .code(2);
+}
+
+#[test]
+fn bad_height_maps_are_refused_and_nothing_is_written() {
+    let dir = TempDir::new().unwrap();
+    let out = dir.path().join("out.json");
+    let plot = dir.path().join("psd.svg");
+    let map = synthetic_map(1);
+    let side = map.n as f64 * map.pixel;
+    let good = sealsim::scenario::gsf::write(map.n, map.n, side, side, &map.heights);
+    let mut wrong = good.clone();
+    wrong[0] = b'X';
+    let no_xres = String::from_utf8_lossy(&good)
+        .replace("XRes = 256\n", "")
+        .into_bytes();
+    let mut ragged = grid_csv(&map, 20);
+    ragged = ragged.replacen('\n', ",1\n", 4); // the 4th row gains a value
+    let ragged = ragged.replacen(",1\n", "\n", 3);
+    let cases: Vec<(&str, Vec<u8>, Vec<&str>, &str)> = vec![
+        (
+            "truncated.gsf",
+            good[..good.len() - 6].to_vec(),
+            vec![],
+            "truncated",
+        ),
+        (
+            "magic.gsf",
+            wrong,
+            vec![],
+            "magic.gsf:1: not a Gwyddion Simple Field",
+        ),
+        ("noxres.gsf", no_xres, vec![], "missing header field XRes"),
+        (
+            "ragged.csv",
+            ragged.into_bytes(),
+            vec!["--pixel-size", "0.5um"],
+            "ragged.csv:4: ragged row",
+        ),
+        (
+            "small.csv",
+            grid_csv(&map, 5).into_bytes(),
+            vec!["--pixel-size", "0.5um"],
+            "small.csv:5: the grid ends after 5 row(s)",
+        ),
+        (
+            "unit.csv",
+            grid_csv(&map, 20).into_bytes(),
+            vec!["--pixel-size", "0.5um", "--height-unit", "bar"],
+            "--height-unit",
+        ),
+        (
+            "pixel.gsf",
+            good.clone(),
+            vec!["--pixel-size", "0.5um"],
+            "--pixel-size only applies to a CSV height grid",
+        ),
+    ];
+    for (name, bytes, flags, needle) in cases {
+        let path = dir.path().join(name);
+        fs::write(&path, bytes).unwrap();
+        cargo_bin_cmd!("sealsim")
+            .arg("surface")
+            .arg(&path)
+            .args(flags)
+            .arg("-o")
+            .arg(&out)
+            .arg("--plot")
+            .arg(&plot)
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains(needle))
+            .stderr(predicate::str::contains("panicked").not());
+        assert!(!out.exists() && !plot.exists(), "{name}: nothing written");
+    }
+}

@@ -203,17 +203,93 @@ fn a_ragged_row_is_located() {
 }
 
 #[test]
-fn a_non_square_grid_is_located() {
+fn a_rectangular_grid_is_accepted_and_too_few_rows_are_located() {
     let map = synthetic_map(1);
+    // the first 100 rows of 128: a 128 × 100 map (its spectrum from the whole map; the
+    // numerical level's crop named in a note)
     let text: String = csv(&map, 1.0)
         .lines()
-        .take(100)
+        .take(101)
         .map(|l| format!("{l}\n"))
         .collect();
     let case = Case::with_map(&text);
-    case.rejects(&[
-        "map.csv:100: surface.height_map: not square: the grid ends after 99 rows of 128 values",
+    let scenario = Scenario::load(&case.scenario()).unwrap();
+    let crop = scenario.height_map.as_ref().unwrap();
+    assert_eq!(crop.n, 100, "the centred even square crop");
+    assert_eq!(
+        crop.heights[0], map.heights[14],
+        "starts at column 15 of row 1"
+    );
+    let out = cargo_bin_cmd!("sealsim")
+        .arg("leak")
+        .arg(case.scenario())
+        .assert()
+        .success();
+    let stderr = String::from_utf8(out.get_output().stderr.clone()).unwrap();
+    assert!(
+        stderr.contains("the map is 128 × 100 pixels")
+            && stderr.contains("centred 100 × 100 crop (columns 15–114, rows 1–100)"),
+        "{stderr}"
+    );
+    // h_rms of the spectrum is the (levelled) rectangle's own, close to the whole map's
+    let h = scenario.problem.spectrum.rms_roughness();
+    assert!((h / map.rms() - 1.0).abs() < 0.3, "{h} vs {}", map.rms());
+
+    let text: String = csv(&map, 1.0)
+        .lines()
+        .take(8)
+        .map(|l| format!("{l}\n"))
+        .collect();
+    Case::with_map(&text).rejects(&[
+        "map.csv:8: surface.height_map: the grid ends after 7 row(s)",
+        "scenario.toml:6",
     ]);
+}
+
+/// The map as a Gwyddion Simple Field file (heights rounded to f32 by the format).
+fn gsf(map: &HeightMap) -> Vec<u8> {
+    let side = map.n as f64 * map.pixel;
+    sealsim::scenario::gsf::write(map.n, map.n, side, side, &map.heights)
+}
+
+#[test]
+fn a_gsf_map_gives_the_same_spectrum_as_its_csv() {
+    let map = synthetic_map(2);
+    let case = Case::with_map(&csv(&map, 1.0));
+    fs::write(case.dir.path().join("map.gsf"), gsf(&map)).unwrap();
+    let from_csv = Scenario::load(&case.scenario()).unwrap();
+    fs::write(case.scenario(), scenario_text("height_map = \"map.gsf\"")).unwrap();
+    let from_gsf = Scenario::load(&case.scenario()).unwrap();
+    let (a, b) = (&from_csv.problem.spectrum, &from_gsf.problem.spectrum);
+    assert!((a.q0() / b.q0() - 1.0).abs() < 1e-12 && (a.q1() / b.q1() - 1.0).abs() < 1e-12);
+    // f32 rounding of the heights only
+    assert!((a.rms_roughness() / b.rms_roughness() - 1.0).abs() < 1e-6);
+    assert_eq!(from_gsf.height_map.as_ref().unwrap().n, N);
+}
+
+#[test]
+fn bad_gsf_maps_are_named() {
+    let map = synthetic_map(1);
+    let good = gsf(&map);
+    let with = |surface: &str, bytes: &[u8]| {
+        let case = Case::new(surface, "");
+        fs::write(case.dir.path().join("map.gsf"), bytes).unwrap();
+        case
+    };
+    let plain = "height_map = \"map.gsf\"";
+    with(plain, &good[..good.len() - 10]).rejects(&[
+        "map.gsf: surface.height_map: XRes × YRes = 128 × 128 needs 65536 bytes",
+        "truncated",
+        "scenario.toml:6",
+    ]);
+    let mut wrong = good.clone();
+    wrong[..8].copy_from_slice(b"Gwiddion");
+    with(plain, &wrong).rejects(&["map.gsf:1: surface.height_map: not a Gwyddion Simple Field"]);
+    let text = String::from_utf8_lossy(&good).replace("XRes = 128\n", "");
+    with(plain, text.as_bytes())
+        .rejects(&["map.gsf: surface.height_map: missing header field XRes"]);
+    with("height_map = \"map.gsf\"\npixel_size = \"0.5 um\"", &good)
+        .rejects(&["scenario.toml:7: surface.pixel_size: a .gsf height map states its pixel size"]);
 }
 
 #[test]
