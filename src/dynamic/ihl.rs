@@ -256,7 +256,7 @@ pub fn transition_onset(speed_bound: f64, film_onset: f64) -> f64 {
 /// onset, linear in `log v` between (continuous in v). An infinite onset gives 0, a zero onset
 /// 1 (for v > 0).
 pub fn ihl_weight(speed: f64, onset: f64) -> f64 {
-    if !(speed > 0.0) || onset.is_nan() || onset == f64::INFINITY {
+    if speed.is_nan() || speed <= 0.0 || onset.is_nan() || onset == f64::INFINITY {
         return 0.0;
     }
     if onset <= 0.0 {
@@ -439,7 +439,10 @@ mod tests {
     fn profiles_are_checked() {
         let bad = |x: Vec<f64>, p: Vec<f64>| ContactProfile::new(x, p).unwrap_err();
         assert_eq!(bad(vec![0.0, 2.0, 1.0], vec![0.0, 1.0, 0.0]).index, Some(2));
-        assert_eq!(bad(vec![0.0, 1.0, 2.0], vec![0.0, -1.0, 0.0]).index, Some(1));
+        assert_eq!(
+            bad(vec![0.0, 1.0, 2.0], vec![0.0, -1.0, 0.0]).index,
+            Some(1)
+        );
         assert_eq!(bad(vec![0.0, 1.0, 2.0], vec![0.0, 1.0, 2.0]).index, Some(2));
         assert_eq!(bad(vec![0.0, 1.0], vec![0.0, 1.0]).index, None);
     }

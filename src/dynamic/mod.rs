@@ -72,9 +72,11 @@
 //! **Sealed.** Without a percolating channel every coefficient is exactly 0 (and the speed
 //! bound is +∞: no constriction to open) — never NaN.
 //!
-//! **Not modelled** (also absent from PY08 §8): hydrodynamic lift above the speed bound,
-//! speed-dependent or viscoelastic contact, starvation (a dry low-pressure side that cannot
-//! supply the in-stroke), the `C` terms of eq. 13.
+//! **Not modelled here** (also absent from PY08 §8): speed-dependent or viscoelastic contact,
+//! the `C` terms of eq. 13. Hydrodynamic lift of a rod seal above the speed bound, with the
+//! starvation of the in-stroke, is [`ihl`] (docs/model.md §3.4.1): a stroke cycle with inlet
+//! pressure gradients blends this theory's volumes into the inverse-hydrodynamic ones above the
+//! onset `min(v_b, v_Λ)`.
 //!
 //! **In scenarios** (`[motion]`, [`MotionSpec`]): constant sliding ([`Motion::Steady`], the
 //! out-stroke direction) or a stroke cycle ([`Motion::Stroke`]). [`MotionSpec::evaluate`]
@@ -90,9 +92,6 @@
 pub mod ihl;
 
 use crate::contact::table::{logistic, logit};
-use ihl::{
-    GradientSource, IhlCycle, InletGradients, SpeedRegime, ihl_weight, transition_onset,
-};
 use crate::contact::{
     CriticalJunction, EffectiveMediumSettings, Elastic, Junction, PerssonContact,
     SeparationDistribution,
@@ -102,6 +101,7 @@ use crate::leak::FlatSeal;
 use crate::math::interp::UniformCubic;
 use crate::math::quadrature::gauss_legendre;
 use crate::math::special::erfc;
+use ihl::{GradientSource, IhlCycle, InletGradients, SpeedRegime, ihl_weight, transition_onset};
 use std::f64::consts::{FRAC_1_SQRT_2, PI};
 
 /// Half-width, in standard deviations, of the u-range kept for each Gaussian component of

@@ -332,7 +332,8 @@ mod tests {
             format!("{},{}", LEAK_COLUMNS.join(","), MOTION_COLUMNS.join(","))
         );
         assert!(
-            lines[1].ends_with(",4e-11,8e-9,6e-3,1e-12,-5e-13,5e-13,2.5e-13,,,,low_speed_no_profile,"),
+            lines[1]
+                .ends_with(",4e-11,8e-9,6e-3,1e-12,-5e-13,5e-13,2.5e-13,,,,low_speed_no_profile,"),
             "{}",
             lines[1]
         );

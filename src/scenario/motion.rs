@@ -217,7 +217,10 @@ impl Source<'_> {
             self.error(
                 file.span(),
                 CONTACT_PROFILE,
-                format!("cannot read the contact-pressure profile {}: {e}", path.display()),
+                format!(
+                    "cannot read the contact-pressure profile {}: {e}",
+                    path.display()
+                ),
             )
         })?;
         let profile = parse_contact_profile(&text).map_err(|(line, message)| {
@@ -238,7 +241,8 @@ impl Source<'_> {
 /// contact pressure p (≥ 0). `#` lines and blank lines are skipped. Errors carry the 1-based
 /// line.
 pub fn parse_contact_profile(text: &str) -> Result<ContactProfile, (Option<usize>, String)> {
-    let cells = |row: &str| -> Vec<String> { row.split(',').map(|c| c.trim().to_owned()).collect() };
+    let cells =
+        |row: &str| -> Vec<String> { row.split(',').map(|c| c.trim().to_owned()).collect() };
     let mut rows = super::data_lines(text);
     let Some((header_line, header)) = rows.next() else {
         return Err((None, "no data: expected a header row x,p".into()));
@@ -260,17 +264,18 @@ pub fn parse_contact_profile(text: &str) -> Result<ContactProfile, (Option<usize
         ));
     };
     let units_cells = cells(units_row);
-    let unit = |k: usize, dimension: Dimension, what: &str| -> Result<f64, (Option<usize>, String)> {
-        let u = units_cells.get(k).map_or("", String::as_str);
-        match units::parse_unit(u) {
-            Ok((factor, d)) if d == dimension => Ok(factor),
-            Ok((_, d)) => Err((
-                Some(units_line),
-                format!("unit {u:?} is {d}, expected {what}"),
-            )),
-            Err(e) => Err((Some(units_line), format!("{what}: {e}"))),
-        }
-    };
+    let unit =
+        |k: usize, dimension: Dimension, what: &str| -> Result<f64, (Option<usize>, String)> {
+            let u = units_cells.get(k).map_or("", String::as_str);
+            match units::parse_unit(u) {
+                Ok((factor, d)) if d == dimension => Ok(factor),
+                Ok((_, d)) => Err((
+                    Some(units_line),
+                    format!("unit {u:?} is {d}, expected {what}"),
+                )),
+                Err(e) => Err((Some(units_line), format!("{what}: {e}"))),
+            }
+        };
     if units_cells.len() != 2 {
         return Err((
             Some(units_line),
@@ -288,12 +293,18 @@ pub fn parse_contact_profile(text: &str) -> Result<ContactProfile, (Option<usize
         if c.len() != 2 {
             return Err((
                 Some(line),
-                format!("expected 2 comma-separated columns (x, p), found {}", c.len()),
+                format!(
+                    "expected 2 comma-separated columns (x, p), found {}",
+                    c.len()
+                ),
             ));
         }
         let number = |k: usize, name: &str| match c[k].parse::<f64>() {
             Ok(v) if v.is_finite() => Ok(v),
-            _ => Err((Some(line), format!("{name}: not a finite number: {:?}", c[k]))),
+            _ => Err((
+                Some(line),
+                format!("{name}: not a finite number: {:?}", c[k]),
+            )),
         };
         x.push(number(0, "x")? * x_factor);
         p.push(number(1, "p")? * p_factor);
@@ -303,7 +314,6 @@ pub fn parse_contact_profile(text: &str) -> Result<ContactProfile, (Option<usize
 }
 
 impl Source<'_> {
-
     /// The speeds of a stroke cycle of length `stroke`: from `frequency`, or `out_speed` and
     /// `in_speed`.
     fn stroke_cycle(

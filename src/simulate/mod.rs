@@ -818,8 +818,8 @@ impl<'a> Simulator<'a> {
                     viscosity,
                     p.shape_factor,
                 );
-                let oring = matches!(p.geometry, crate::seal::SealGeometry::ORing { .. })
-                    .then(|| {
+                let oring =
+                    matches!(p.geometry, crate::seal::SealGeometry::ORing { .. }).then(|| {
                         (
                             seal.seal.nominal_pressure,
                             profile.width(),

@@ -161,13 +161,11 @@ fn motion_point(
         pb.shape_factor,
     );
     let coeffs = DragCoefficients::compute(solver.path().exact(), &seal, &DragSettings::default());
-    let oring = oring.then(|| {
-        (
-            point.nominal_pressure,
-            pb.seal.width,
-            pb.fluid.pressure_difference,
-        )
-    });
+    let oring = oring.then_some((
+        point.nominal_pressure,
+        pb.seal.width,
+        pb.fluid.pressure_difference,
+    ));
     let ihl = IhlInput {
         gradients: spec.gradients_for(oring),
         viscosity: pb.fluid.viscosity,

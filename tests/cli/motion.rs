@@ -23,8 +23,7 @@ const STROKE_COLUMNS: &str = "out_stroke_volume_m3,in_stroke_volume_m3,net_volum
      film_regime";
 
 /// The rod scenario's profile line, replaced by the bad-input cases.
-const ROD_PROFILE: &str =
-    "contact_profile = \"hydraulic-rod-seal-profile.csv\"   # x, p across the contact (illustrative)";
+const ROD_PROFILE: &str = "contact_profile = \"hydraulic-rod-seal-profile.csv\"   # x, p across the contact (illustrative)";
 
 /// The wiper's sliding-speed line, replaced by the bad-input cases.
 const WIPER_SPEED: &str = "sliding_speed = \"1 cm/s\"        # PY08 §8's example speed";
@@ -206,17 +205,20 @@ fn rod_seal_leak_reports_the_inverse_hydrodynamic_films() {
     let r = &rows[0];
     let get = |name: &str| num(&r[column(&header, name)]);
     let s = sealsim::scenario::Scenario::load(&scenario_path("hydraulic-rod-seal.toml")).unwrap();
-    let (eta, l_y) = (
-        s.problem.fluid.viscosity,
-        s.life.geometry.sealing_length(),
-    );
+    let (eta, l_y) = (s.problem.fluid.viscosity, s.life.geometry.sealing_length());
     // the films against the closed form with the profile's analytic flanks (the table's secants
     // sit within 0.5 % of them: films within 0.3 %)
     let (w_out, w_in) = rod_profile_gradients();
     let (h_out, h_in) = (get("out_stroke_film_m"), get("in_stroke_film_m"));
     eprintln!("rod: h_out {h_out:.4e} m, h_in {h_in:.4e} m, η {eta} Pa·s");
-    assert!(rel(h_out, (8.0 * eta * 0.2 / (9.0 * w_out)).sqrt()) < 3e-3, "{h_out}");
-    assert!(rel(h_in, (8.0 * eta * 0.2 / (9.0 * w_in)).sqrt()) < 3e-3, "{h_in}");
+    assert!(
+        rel(h_out, (8.0 * eta * 0.2 / (9.0 * w_out)).sqrt()) < 3e-3,
+        "{h_out}"
+    );
+    assert!(
+        rel(h_in, (8.0 * eta * 0.2 / (9.0 * w_in)).sqrt()) < 3e-3,
+        "{h_in}"
+    );
     assert!(h_out > h_in, "the pressurised flank is the gentler");
     // volumes: L_y S h/2 out, back; net = L_y S (h_out − h_in)/2; 1 s cycle
     let (out, back, net) = (
@@ -306,7 +308,10 @@ fn rod_seal_run_reports_the_films_and_leaks_the_cycle_mean() {
     let (w_out, w_in) = rod_profile_gradients();
     let g_out = i["inlet_gradient_out_pa_per_m"].as_f64().unwrap();
     let g_in = i["inlet_gradient_in_pa_per_m"].as_f64().unwrap();
-    assert!(g_out < w_out && rel(g_out, w_out) < 5e-3, "{g_out} vs {w_out}");
+    assert!(
+        g_out < w_out && rel(g_out, w_out) < 5e-3,
+        "{g_out} vs {w_out}"
+    );
     assert!(g_in < w_in && rel(g_in, w_in) < 5e-3, "{g_in} vs {w_in}");
     let net = c["net_volume_per_cycle_m3"].as_f64().unwrap();
     let carried = i["out_stroke_carried_m3"].as_f64().unwrap();
@@ -388,7 +393,10 @@ fn bad_rod_profile_exits_2_naming_the_key() {
             );
             // the data file's own line: the unsorted row is line 6, the negative one line 4
             match k {
-                3 => assert!(stderr.contains("p.csv:6: x must increase strictly"), "{stderr}"),
+                3 => assert!(
+                    stderr.contains("p.csv:6: x must increase strictly"),
+                    "{stderr}"
+                ),
                 4 => assert!(
                     stderr.contains("p.csv:4: the contact pressure must not be negative"),
                     "{stderr}"

@@ -110,10 +110,19 @@ fn net_volume_per_cycle_against_a_hand_calculation() {
     assert!(rel(c.out_film, 2.98142e-6) < 2e-6, "{}", c.out_film);
     assert!(rel(c.in_film, 1.49071e-6) < 2e-6, "{}", c.in_film);
     assert!(rel(c.out_volume, 2.341605e-8) < 5e-6, "{}", c.out_volume);
-    assert!(rel(c.net_volume(), 1.170802e-8) < 5e-6, "{}", c.net_volume());
+    assert!(
+        rel(c.net_volume(), 1.170802e-8) < 5e-6,
+        "{}",
+        c.net_volume()
+    );
     assert!(!c.starved);
     // the exact form used: π D S (h_out − h_in)/2
-    assert!(rel(c.net_volume(), PI * 0.05 * 0.1 * (c.out_film - c.in_film) / 2.0) < 1e-14);
+    assert!(
+        rel(
+            c.net_volume(),
+            PI * 0.05 * 0.1 * (c.out_film - c.in_film) / 2.0
+        ) < 1e-14
+    );
     // film parameter: the thinner film over σ = 0.2 µm
     assert!(rel(c.film_parameter, 1.49071e-6 / 0.2e-6) < 2e-6);
 }
@@ -169,7 +178,11 @@ fn the_oring_estimate_is_the_hertz_slope_at_half_rise_with_the_fluid_pressure() 
     let p = |x: f64| peak * (1.0 - (2.0 * x / b).powi(2)).sqrt();
     let dx = 1e-9;
     let slope = (p(x_half - dx) - p(x_half + dx)) / (2.0 * dx);
-    assert!(rel(g.out_stroke, slope) < 1e-6, "{} vs {slope}", g.out_stroke);
+    assert!(
+        rel(g.out_stroke, slope) < 1e-6,
+        "{} vs {slope}",
+        g.out_stroke
+    );
     assert_eq!(g.out_stroke, g.in_stroke);
     // ΔP: the pressurised flank rises from ΔP only, the air flank from 0
     let e = InletGradients::oring_estimate(peak, b, 0.5e6).unwrap();
@@ -266,7 +279,10 @@ fn the_stroke_volumes_are_continuous_across_the_transition() {
         for k in 0..60 {
             let v = v_b * 10f64.powf(-1.0 + 3.0 * k as f64 / 59.0);
             let c = at(v).cycle.unwrap();
-            assert!(c.in_volume >= -c.out_volume && c.net_volume >= 0.0, "{v}: {c:?}");
+            assert!(
+                c.in_volume >= -c.out_volume && c.net_volume >= 0.0,
+                "{v}: {c:?}"
+            );
         }
     }
 }
@@ -286,5 +302,8 @@ fn a_film_thicker_than_the_roughness_starts_the_transition_below_the_speed_bound
     let at_onset = at(i.film_onset_speeds.1).ihl.unwrap();
     assert!(rel(at_onset.in_film, ihl.roughness) < 1e-12);
     assert_eq!(at(0.9 * v_lambda).regime, SpeedRegime::LowSpeed);
-    assert_ne!(at(1.1 * i.film_onset_speeds.0).regime, SpeedRegime::LowSpeed);
+    assert_ne!(
+        at(1.1 * i.film_onset_speeds.0).regime,
+        SpeedRegime::LowSpeed
+    );
 }
