@@ -310,7 +310,8 @@ pub enum SpeedRegime {
     Transition,
     /// Both strokes above the band: IHL alone (weight 1).
     Ihl,
-    /// No inlet gradients (a flat seal without a profile): the low-speed theory at any speed.
+    /// No inlet gradients (a flat seal without a profile), or constant sliding (which stays
+    /// with the low-speed theory): the low-speed theory at any speed.
     NoProfile,
 }
 

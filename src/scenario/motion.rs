@@ -434,9 +434,40 @@ mod tests {
         assert_eq!(m.drag_speed(), 0.2);
         assert_eq!(m.fastest_speed(), 0.2);
         assert!(motion("sliding_speed = 0\n").unwrap().is_some());
+        let m = motion(
+            "stroke = \"0.1 m\"\nfrequency = 1\ninlet_gradient_out = \"2 MPa/mm\"\n\
+             inlet_gradient_in = \"3e9 Pa/m\"\n",
+        )
+        .unwrap()
+        .unwrap();
+        let (g, source) = m.gradients.unwrap();
+        assert_eq!(source, crate::dynamic::ihl::GradientSource::Given);
+        assert!((g.out_stroke / 2e9 - 1.0).abs() < 1e-12 && g.in_stroke == 3e9);
+        assert_eq!(
+            motion("sliding_speed = 0\n").unwrap().unwrap().gradients,
+            None
+        );
         let none = Scenario::from_str(PAPER, Path::new("x.toml")).unwrap();
         assert_eq!(none.life.motion, None);
         assert_eq!(none.life.motion, None);
+    }
+
+    #[test]
+    fn contact_profiles_are_read_in_si_and_errors_name_their_line() {
+        let ok = super::parse_contact_profile("# c\nx,p\nmm,MPa\n0,0.2\n0.5,1.2\n1.5,0\n").unwrap();
+        let g = ok.inlet_gradients();
+        // 1 MPa over 0.5 mm and 1.2 MPa over 1 mm
+        assert!((g.out_stroke / 2e9 - 1.0).abs() < 1e-12, "{g:?}");
+        assert!((g.in_stroke / 1.2e9 - 1.0).abs() < 1e-12, "{g:?}");
+        let line = |text: &str| super::parse_contact_profile(text).unwrap_err().0;
+        assert_eq!(line("x,q\nmm,MPa\n0,0\n1,1\n2,0\n"), Some(1));
+        assert_eq!(line("x,p\nMPa,MPa\n0,0\n1,1\n2,0\n"), Some(2));
+        assert_eq!(line("x,p\nmm,mm\n0,0\n1,1\n2,0\n"), Some(2));
+        assert_eq!(line("x,p\nmm,MPa\n0,0\n1,abc\n2,0\n"), Some(4));
+        assert_eq!(line("x,p\nmm,MPa\n\n0,0\n# c\n1,1\n1,0\n"), Some(7));
+        assert_eq!(line("x,p\nmm,MPa\n0,0\n1,1\n"), None);
+        // the maximum on an edge: no rise on one side
+        assert_eq!(line("x,p\nmm,MPa\n0,0\n1,1\n2,2\n"), Some(5));
     }
 
     #[test]
