@@ -79,11 +79,16 @@ pub enum Limit {
     DataTime,
     /// Temperature outside the window of the material's data (§9.13).
     DataTemperature,
+    /// A stroke speed between PY08's speed bound and the inverse-hydrodynamic regime: the
+    /// stroke volumes are blended (§9.9).
+    IhlTransition,
+    /// An O-ring's inlet pressure gradients estimated from its Hertz profile (§9.9).
+    GradientEstimate,
 }
 
 impl Limit {
     /// Every limit, in the order of docs/model.md.
-    pub const ALL: [Limit; 17] = [
+    pub const ALL: [Limit; 19] = [
         Limit::PressureRatio,
         Limit::AspectRatio,
         Limit::MolecularGap,
@@ -101,6 +106,8 @@ impl Limit {
         Limit::ExtrusionChart,
         Limit::DataTime,
         Limit::DataTemperature,
+        Limit::IhlTransition,
+        Limit::GradientEstimate,
     ];
 
     /// The limit's identifier in JSON summaries.
@@ -123,6 +130,8 @@ impl Limit {
             Limit::ExtrusionChart => "extrusion_chart",
             Limit::DataTime => "beyond_data_time",
             Limit::DataTemperature => "beyond_data_temperature",
+            Limit::IhlTransition => "speed_in_ihl_transition",
+            Limit::GradientEstimate => "estimated_pressure_gradients",
         }
     }
 
@@ -137,7 +146,7 @@ impl Limit {
             Limit::Squeeze => "§9.6",
             Limit::GlassTransition | Limit::Frozen => "§9.7",
             Limit::RmsSlope => "§9.8",
-            Limit::SpeedBound => "§9.9",
+            Limit::SpeedBound | Limit::IhlTransition | Limit::GradientEstimate => "§9.9",
             Limit::BandLimited | Limit::NumericalFailure => "§9.10",
             Limit::NoFailureCriterion => "§8",
             Limit::Extrusion | Limit::ExtrusionChart => "§9.12",
@@ -156,7 +165,8 @@ impl Limit {
             Limit::Squeeze => Some(("squeeze", "")),
             Limit::GlassTransition | Limit::Frozen => Some(("T", "K")),
             Limit::RmsSlope => Some(("rms slope", "")),
-            Limit::SpeedBound => Some(("sliding speed", "m/s")),
+            Limit::SpeedBound | Limit::IhlTransition => Some(("sliding speed", "m/s")),
+            Limit::GradientEstimate => None,
             Limit::BandLimited => Some(("q1/q0", "")),
             Limit::NumericalFailure => Some(("P0/E*", "")),
             Limit::NoFailureCriterion | Limit::ExtrusionChart => None,
@@ -205,6 +215,18 @@ impl Limit {
             Limit::SpeedBound => {
                 "the drag pressure opens the critical constriction; hydrodynamic lift-off is not \
                  modelled (the drag leak rate is likely underestimated)"
+            }
+            Limit::IhlTransition => {
+                "between the end of the low-speed theory (the lower of PY08's speed bound and the \
+                 speed at which the inverse-hydrodynamic film reaches the rms roughness) and the \
+                 inverse-hydrodynamic regime (10× that speed): the stroke volumes are a log-speed blend of the low-speed and the \
+                 inverse-hydrodynamic values"
+            }
+            Limit::GradientEstimate => {
+                "no contact-pressure profile given: the O-ring's inlet pressure gradients are \
+                 estimated from its Hertz profile (slope at half rise), so the \
+                 inverse-hydrodynamic films are estimates; give [motion] contact_profile or \
+                 inlet_gradient_out/inlet_gradient_in"
             }
             Limit::BandLimited => {
                 "the numerical level resolved only part of the spectrum; its answer is for the \
@@ -535,6 +557,28 @@ pub fn squeeze(eps: f64, at: At, out: &mut Findings) {
 /// A sliding `speed` \[m/s\] against the PY08 §8 bound `bound` \[m/s\] (docs/model.md §9.9).
 pub fn speed(speed: f64, bound: f64, at: At, out: &mut Findings) {
     out.check(Limit::SpeedBound, speed > bound, speed, bound, at);
+}
+
+/// The findings of a stroke cycle or sliding motion at one state (docs/model.md §9.9): with
+/// inverse-hydrodynamic films (`point.ihl`) a speed inside the blend band and an estimated
+/// gradient; without, the PY08 speed bound as [`speed`].
+pub fn motion(fastest: f64, point: &crate::dynamic::MotionPoint, at: At, out: &mut Findings) {
+    use crate::dynamic::ihl::{GradientSource, SpeedRegime};
+    match point.ihl {
+        None => speed(fastest, point.speed_bound, at, out),
+        Some(ihl) => {
+            if point.regime == SpeedRegime::Transition {
+                let onset = point
+                    .speed_bound
+                    .min(ihl.film_onset_speeds.0)
+                    .min(ihl.film_onset_speeds.1);
+                out.check(Limit::IhlTransition, true, fastest, onset, at);
+            }
+            if ihl.source == GradientSource::ORingEstimate {
+                out.record(Finding::new(Limit::GradientEstimate, 0.0, 0.0, at));
+            }
+        }
+    }
 }
 
 /// The extrusion check of a groove-seated ring (docs/model.md §9.12): the diametral clearance

@@ -36,9 +36,12 @@ const MAX_SWEEP_POINTS: i64 = 1_000_000;
     (the film d = β u_c the countersurface carries out, PY08 eq. 16) and speed_bound_m_per_s (the \
     validity bound of PY08's second eq. 17; blank when sealed) follow state, and for a stroke \
     cycle out_stroke_volume_m3, in_stroke_volume_m3 and net_volume_per_cycle_m3 (one cycle's \
-    volumes, positive from the pressurised side to the outside). With constant sliding \
-    leak_rate_m3_per_s is static + drag; with a stroke cycle it stays the static rate (the drag \
-    volumes cancel over a cycle in the linear theory). The drag always uses the exact critical \
+    volumes, positive from the pressurised side to the outside), cycle_mean_leak_rate_m3_per_s, \
+    out_stroke_film_m and in_stroke_film_m (the inverse-hydrodynamic films h* = √(8ηv/(9w)) of \
+    a rod seal, docs/model.md §3.4.1), film_parameter (h*/σ), speed_regime and film_regime. With \
+    constant sliding leak_rate_m3_per_s is static + drag; with a stroke cycle it stays the static \
+    rate in the low-speed regime (the drag volumes cancel over a cycle in the linear theory) and \
+    is the cycle-averaged net leak once the inverse-hydrodynamic film has weight. The drag always uses the exact critical \
     junction and Persson's P(u) (the theory of PY08 §8 is built on the critical junction), \
     whatever --fidelity; a warning reports a speed above the bound (hydrodynamic lift-off is not \
     modelled)."

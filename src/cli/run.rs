@@ -30,11 +30,15 @@ use std::path::PathBuf;
     drag L_y d v of the peak strip's film d = β u_c (the most compressed strip holds the critical \
     junction): with constant sliding it is included in leak_rate_m3_per_s (hence in the leaked \
     volume and the failure criteria); with a stroke cycle it is the out-stroke's drag and the \
-    leak rate stays static (the drag volumes cancel over a cycle in the linear theory), and \
-    net_volume_per_cycle_m3 follows. The summary JSON gets a \"motion\" object (drag and film at \
+    leak rate stays static in the low-speed regime (the drag volumes cancel over a cycle in the \
+    linear theory) and is the cycle-averaged net leak once a rod seal's inverse-hydrodynamic \
+    film has weight (docs/model.md §3.4.1); net_volume_per_cycle_m3, out_stroke_film_m, \
+    in_stroke_film_m and speed_regime follow. The summary JSON gets a \"motion\" object (drag and film at \
     installation and at the end, the lowest speed bound of PY08 eq. 17, speed_above_bound, and \
-    for a stroke cycle the volumes of one cycle at installation and at the end); a speed above \
-    the bound is a warning (hydrodynamic lift-off is not modelled)."
+    for a stroke cycle the volumes of one cycle at installation and at the end, with an \"ihl\" \
+    object: gradients, films, carried and returned volumes, starvation, film parameter); a \
+    speed above the bound without inlet gradients is a warning (lift-off not modelled), a speed \
+    in the blend band too."
 )]
 pub struct RunArgs {
     /// Scenario file (TOML).

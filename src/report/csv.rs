@@ -32,14 +32,27 @@ pub const LEAK_COLUMNS: [&str; 8] = [
 /// * `speed_bound_m_per_s`: the validity bound of PY08's second eq. 17 (blank when sealed:
 ///   no constriction to open);
 /// * `out_stroke_volume_m3`, `in_stroke_volume_m3`, `net_volume_per_cycle_m3`: the volumes
-///   of one cycle, positive from the pressurised side a to the outside b.
-pub const MOTION_COLUMNS: [&str; 6] = [
+///   of one cycle, positive from the pressurised side a to the outside b (blended between the
+///   low-speed and the inverse-hydrodynamic values, docs/model.md §3.4.1);
+/// * `cycle_mean_leak_rate_m3_per_s`: `net_volume_per_cycle_m3` over the cycle time;
+/// * `out_stroke_film_m`, `in_stroke_film_m`: the inverse-hydrodynamic films h* under the
+///   pressure maximum (blank without inlet gradients: a flat seal without a profile);
+/// * `film_parameter`: the thinner h* over the rms roughness (blank likewise);
+/// * `speed_regime`: `low_speed`, `transition`, `inverse_hydrodynamic` or
+///   `low_speed_no_profile`; `film_regime`: `boundary`, `mixed` or `full_film` (blank likewise).
+pub const MOTION_COLUMNS: [&str; 12] = [
     "drag_leak_rate_m3_per_s",
     "film_thickness_m",
     "speed_bound_m_per_s",
     "out_stroke_volume_m3",
     "in_stroke_volume_m3",
     "net_volume_per_cycle_m3",
+    "cycle_mean_leak_rate_m3_per_s",
+    "out_stroke_film_m",
+    "in_stroke_film_m",
+    "film_parameter",
+    "speed_regime",
+    "film_regime",
 ];
 
 /// The leak table of `points` (header plus one row per point), as CSV text.
@@ -61,7 +74,7 @@ pub fn motion_leak_table(
             motion.len()
         )));
     }
-    let columns = if stroke { 6 } else { 3 };
+    let columns = if stroke { MOTION_COLUMNS.len() } else { 3 };
     table(
         None,
         &MOTION_COLUMNS[..columns],
@@ -85,14 +98,37 @@ fn motion_cells(row: usize, m: &MotionPoint, columns: usize) -> Result<Vec<Strin
             String::new()
         },
     ];
-    if columns == 6 {
+    if columns == MOTION_COLUMNS.len() {
         match &m.cycle {
             Some(c) => {
                 cells.push(cell(3, c.out_volume)?);
                 cells.push(cell(4, c.in_volume)?);
                 cells.push(cell(5, c.net_volume)?);
+                cells.push(if c.period > 0.0 {
+                    cell(6, c.net_volume / c.period)?
+                } else {
+                    String::new()
+                });
             }
-            None => cells.extend([String::new(), String::new(), String::new()]),
+            None => cells.extend([String::new(), String::new(), String::new(), String::new()]),
+        }
+        match &m.ihl {
+            Some(ihl) => {
+                cells.push(cell(7, ihl.out_film)?);
+                cells.push(cell(8, ihl.in_film)?);
+                cells.push(if ihl.film_parameter.is_finite() {
+                    cell(9, ihl.film_parameter)?
+                } else {
+                    String::new()
+                });
+                cells.push(m.regime.id().to_owned());
+                cells.push(ihl.film_regime().id().to_owned());
+            }
+            None => {
+                cells.extend([String::new(), String::new(), String::new()]);
+                cells.push(m.regime.id().to_owned());
+                cells.push(String::new());
+            }
         }
     }
     Ok(cells)
@@ -245,6 +281,9 @@ mod tests {
             speed_bound: 6e-3,
             above_bound: true,
             cycle: None,
+            ihl: None,
+            ihl_weights: (0.0, 0.0),
+            regime: crate::dynamic::ihl::SpeedRegime::NoProfile,
         };
         let still = MotionPoint {
             drag_leak_rate: 0.0,
@@ -252,6 +291,9 @@ mod tests {
             speed_bound: f64::INFINITY,
             above_bound: false,
             cycle: None,
+            ihl: None,
+            ihl_weights: (0.0, 0.0),
+            regime: crate::dynamic::ihl::SpeedRegime::NoProfile,
         };
         let points = [leaking(2e5, 0.1), sealed];
         let text = motion_leak_table(&points, &[moving, still], false).unwrap();
@@ -290,7 +332,8 @@ mod tests {
             format!("{},{}", LEAK_COLUMNS.join(","), MOTION_COLUMNS.join(","))
         );
         assert!(
-            lines[1].ends_with(",4e-11,8e-9,6e-3,1e-12,-5e-13,5e-13"),
+            lines[1]
+                .ends_with(",4e-11,8e-9,6e-3,1e-12,-5e-13,5e-13,2.5e-13,,,,low_speed_no_profile,"),
             "{}",
             lines[1]
         );

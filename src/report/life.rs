@@ -58,9 +58,19 @@ pub const HISTORY_COLUMNS: [&str; 14] = [
 ///   out-stroke speed (the instantaneous drag while the rod moves out), *not* included (the
 ///   drag volumes cancel over a cycle in the linear theory, the leak rate is the static one);
 /// * `net_volume_per_cycle_m3`: out-stroke volume + in-stroke volume of one cycle
-///   (= the static leak rate × the cycle time in the linear theory).
-pub const MOTION_HISTORY_COLUMNS: [&str; 2] =
-    ["drag_leak_rate_m3_per_s", "net_volume_per_cycle_m3"];
+///   (= the static leak rate × the cycle time in the linear theory; with inverse-hydrodynamic
+///   films, docs/model.md §3.4.1, their blend, and then `leak_rate_m3_per_s` is this over the
+///   cycle time);
+/// * `out_stroke_film_m`, `in_stroke_film_m`: the inverse-hydrodynamic films h* (blank
+///   without inlet gradients); `speed_regime`: `low_speed`, `transition`,
+///   `inverse_hydrodynamic` or `low_speed_no_profile`.
+pub const MOTION_HISTORY_COLUMNS: [&str; 5] = [
+    "drag_leak_rate_m3_per_s",
+    "net_volume_per_cycle_m3",
+    "out_stroke_film_m",
+    "in_stroke_film_m",
+    "speed_regime",
+];
 
 /// The history of a life run as CSV: the header and one row per output time (t = 0, the
 /// installation, first). With `[motion]` the rows carry [`MOTION_HISTORY_COLUMNS`] too.
@@ -73,7 +83,7 @@ pub fn history_table(result: &LifeResult) -> Result<String, ReportError> {
     let extra = match (motion, stroke) {
         (false, _) => 0,
         (true, false) => 1,
-        (true, true) => 2,
+        (true, true) => MOTION_HISTORY_COLUMNS.len(),
     };
     let mut writer = ::csv::Writer::from_writer(Vec::new());
     writer
@@ -91,11 +101,19 @@ pub fn history_table(result: &LifeResult) -> Result<String, ReportError> {
             None => vec![String::new(); extra],
             Some(m) => {
                 let mut cells = vec![number(row, MOTION_HISTORY_COLUMNS[0], m.drag_leak_rate)?];
-                if extra == 2 {
+                if extra == MOTION_HISTORY_COLUMNS.len() {
                     cells.push(match m.cycle {
                         Some(c) => number(row, MOTION_HISTORY_COLUMNS[1], c.net_volume)?,
                         None => String::new(),
                     });
+                    match m.ihl {
+                        Some(ihl) => {
+                            cells.push(number(row, MOTION_HISTORY_COLUMNS[2], ihl.out_film)?);
+                            cells.push(number(row, MOTION_HISTORY_COLUMNS[3], ihl.in_film)?);
+                        }
+                        None => cells.extend([String::new(), String::new()]),
+                    }
+                    cells.push(m.regime.id().to_owned());
                 }
                 cells
             }
@@ -257,9 +275,17 @@ pub struct MotionSummary {
     pub final_cycle: Option<CycleSummary>,
 }
 
-/// One stroke cycle's volumes \[m³\], counted positive from the pressurised side to the outside.
+/// One stroke cycle's volumes \[m³\], counted positive from the pressurised side to the outside
+/// (blended between the low-speed and the inverse-hydrodynamic values, docs/model.md §3.4.1).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct CycleSummary {
+    /// `low_speed`, `transition`, `inverse_hydrodynamic` or `low_speed_no_profile`.
+    pub speed_regime: &'static str,
+    /// `net_volume_per_cycle_m3` over the cycle time \[m³/s\].
+    pub cycle_mean_leak_rate_m3_per_s: f64,
+    /// The inverse-hydrodynamic cycle (absent without inlet gradients).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ihl: Option<IhlSummary>,
     /// Passed out during the out-stroke: static leak over its duration + the dragged film
     /// `L_y d S`.
     pub out_stroke_volume_m3: f64,
@@ -273,23 +299,91 @@ pub struct CycleSummary {
     pub drag_volume_per_stroke_m3: f64,
 }
 
+/// The inverse-hydrodynamic part of a cycle (docs/model.md §3.4.1), SI.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct IhlSummary {
+    /// `given`, `profile` or `oring_estimate`.
+    pub gradient_source: &'static str,
+    /// Steepest inlet gradient of the out-stroke (pressurised side) \[Pa/m\].
+    pub inlet_gradient_out_pa_per_m: f64,
+    /// Steepest inlet gradient of the in-stroke (air side) \[Pa/m\].
+    pub inlet_gradient_in_pa_per_m: f64,
+    /// `h_out = √(8ηv_out/(9 w_out))` \[m\].
+    pub out_stroke_film_m: f64,
+    /// `h_in = √(8ηv_in/(9 w_in))` \[m\].
+    pub in_stroke_film_m: f64,
+    /// `L_y S h_out/2` \[m³\].
+    pub out_stroke_carried_m3: f64,
+    /// `min(L_y S h_in/2, out)` \[m³\].
+    pub in_stroke_returned_m3: f64,
+    /// The starvation cap acted (the seal pumps back all it let out).
+    pub starved: bool,
+    /// The IHL weights of the out- and in-stroke (0: low-speed theory, 1: IHL).
+    pub weight_out: f64,
+    pub weight_in: f64,
+    /// min(h_out, h_in)/σ.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub film_parameter: Option<f64>,
+    /// `boundary`, `mixed` or `full_film`.
+    pub film_regime: &'static str,
+}
+
 impl CycleSummary {
-    fn new(c: &StrokeCycle) -> Self {
-        CycleSummary {
+    fn new(m: &MotionPoint) -> Option<Self> {
+        let c: &StrokeCycle = m.cycle.as_ref()?;
+        Some(CycleSummary {
+            speed_regime: m.regime.id(),
+            cycle_mean_leak_rate_m3_per_s: if c.period > 0.0 {
+                c.net_volume / c.period
+            } else {
+                0.0
+            },
+            ihl: m.ihl.map(|i| IhlSummary {
+                gradient_source: i.source.id(),
+                inlet_gradient_out_pa_per_m: i.gradients.out_stroke,
+                inlet_gradient_in_pa_per_m: i.gradients.in_stroke,
+                out_stroke_film_m: i.out_film,
+                in_stroke_film_m: i.in_film,
+                out_stroke_carried_m3: i.out_volume,
+                in_stroke_returned_m3: i.back_volume,
+                starved: i.starved,
+                weight_out: m.ihl_weights.0,
+                weight_in: m.ihl_weights.1,
+                film_parameter: i.film_parameter.is_finite().then_some(i.film_parameter),
+                film_regime: i.film_regime().id(),
+            }),
             out_stroke_volume_m3: c.out_volume,
             in_stroke_volume_m3: c.in_volume,
             net_volume_per_cycle_m3: c.net_volume,
             drag_volume_per_stroke_m3: c.drag_volume,
-        }
+        })
     }
 
-    fn values(&self) -> [(&'static str, f64); 4] {
-        [
+    fn values(&self) -> Vec<(&'static str, f64)> {
+        let mut v = vec![
             ("out_stroke_volume_m3", self.out_stroke_volume_m3),
             ("in_stroke_volume_m3", self.in_stroke_volume_m3),
             ("net_volume_per_cycle_m3", self.net_volume_per_cycle_m3),
             ("drag_volume_per_stroke_m3", self.drag_volume_per_stroke_m3),
-        ]
+            (
+                "cycle_mean_leak_rate_m3_per_s",
+                self.cycle_mean_leak_rate_m3_per_s,
+            ),
+        ];
+        if let Some(i) = &self.ihl {
+            v.extend([
+                ("inlet_gradient_out_pa_per_m", i.inlet_gradient_out_pa_per_m),
+                ("inlet_gradient_in_pa_per_m", i.inlet_gradient_in_pa_per_m),
+                ("out_stroke_film_m", i.out_stroke_film_m),
+                ("in_stroke_film_m", i.in_stroke_film_m),
+                ("out_stroke_carried_m3", i.out_stroke_carried_m3),
+                ("in_stroke_returned_m3", i.in_stroke_returned_m3),
+                ("weight_out", i.weight_out),
+                ("weight_in", i.weight_in),
+            ]);
+            v.extend(i.film_parameter.map(|x| ("film_parameter", x)));
+        }
+        v
     }
 }
 
@@ -331,8 +425,8 @@ impl MotionSummary {
                     .rows
                     .iter()
                     .any(|r| r.motion.is_some_and(|m| m.above_bound)),
-            initial_cycle: first.cycle.as_ref().map(CycleSummary::new),
-            final_cycle: last.cycle.as_ref().map(CycleSummary::new),
+            initial_cycle: CycleSummary::new(&first),
+            final_cycle: CycleSummary::new(&last),
         })
     }
 
@@ -723,6 +817,40 @@ fn motion_description(spec: &MotionSpec, m: &MotionSummary, duration: &str) -> S
                 out_speed,
                 in_speed,
             },
+            Some(first @ CycleSummary { ihl: Some(a), .. }),
+            Some(last @ CycleSummary { ihl: Some(b), .. }),
+        ) => format!(
+            "stroke {} mm, out at {}, in at {} (cycle {}), {} at installation: \
+             inverse-hydrodynamic films h_out {} µm, h_in {} µm ({} gradients {}/{} MPa/mm, {}{}) \
+             at installation, {} µm, {} µm after {duration}; net leak per cycle {} m³ at \
+             installation, {} m³ after {duration}",
+            human(stroke * 1e3, 4),
+            speed(out_speed),
+            speed(in_speed),
+            human_time(spec.period().unwrap_or(0.0)),
+            first.speed_regime,
+            human(a.out_stroke_film_m * 1e6, 3),
+            human(a.in_stroke_film_m * 1e6, 3),
+            a.gradient_source,
+            human(a.inlet_gradient_out_pa_per_m * 1e-9, 3),
+            human(a.inlet_gradient_in_pa_per_m * 1e-9, 3),
+            a.film_regime,
+            if a.starved {
+                ", in-stroke starved: all carried out is pumped back"
+            } else {
+                ""
+            },
+            human(b.out_stroke_film_m * 1e6, 3),
+            human(b.in_stroke_film_m * 1e6, 3),
+            human(first.net_volume_per_cycle_m3, 3),
+            human(last.net_volume_per_cycle_m3, 3),
+        ),
+        (
+            Motion::Stroke {
+                stroke,
+                out_speed,
+                in_speed,
+            },
             Some(first),
             Some(last),
         ) => format!(
@@ -1034,6 +1162,9 @@ mod tests {
             speed_bound: 6e-3,
             above_bound: false,
             cycle: None,
+            ihl: None,
+            ihl_weights: (0.0, 0.0),
+            regime: crate::dynamic::ihl::SpeedRegime::NoProfile,
         };
         let mut rows = vec![
             row(0.0, 1e-12, 0.1, Some(2e-7)),
@@ -1075,7 +1206,7 @@ mod tests {
             )
         );
         assert!(
-            lines[2].ends_with(",leaking,1e0,,4e-11,5e-13"),
+            lines[2].ends_with(",leaking,1e0,,4e-11,5e-13,,,low_speed_no_profile"),
             "{}",
             lines[2]
         );

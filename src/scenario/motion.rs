@@ -4,13 +4,36 @@
 //! cycle takes `frequency` (> 0; then `out_speed = in_speed = 2 · stroke · frequency`) XOR both
 //! `out_speed` and `in_speed` (> 0); `junction_position` (strictly between 0 and 1, default
 //! ½) in either case. Every combination that does not fit is an error naming the key.
+//!
+//! A rod seal's inverse-hydrodynamic films ([`crate::dynamic::ihl`]) take the steepest inlet
+//! gradients of its contact-pressure profile: `inlet_gradient_out` and `inlet_gradient_in`
+//! (a pressure per length, > 0, e.g. "5 MPa/mm"; both or neither) XOR `contact_profile` (a CSV
+//! of x, p with a units row, [`parse_contact_profile`]); neither: an O-ring's are estimated
+//! from its Hertz profile, a flat seal has none.
 
 use super::error::{ScenarioError, Source};
 use super::raw::RawMotion;
 use super::validate::{Bound, Field, field};
+use crate::dynamic::ihl::{ContactProfile, GradientSource, InletGradients};
 use crate::dynamic::{Motion, MotionSpec};
-use crate::units::{Dimension, show};
+use crate::units::{self, Dimension, show};
 use toml::Spanned;
+
+/// Pressure per length \[Pa/m\].
+const PRESSURE_GRADIENT: Dimension = Dimension::new(-2, 1, -2, 0, 0);
+const INLET_GRADIENT_OUT: Field = field(
+    "motion.inlet_gradient_out",
+    PRESSURE_GRADIENT,
+    "Pa/m",
+    Bound::Range(1.0, 1e15),
+);
+const INLET_GRADIENT_IN: Field = field(
+    "motion.inlet_gradient_in",
+    PRESSURE_GRADIENT,
+    "Pa/m",
+    Bound::Range(1.0, 1e15),
+);
+const CONTACT_PROFILE: &str = "motion.contact_profile";
 
 const SLIDING_SPEED: Field = field(
     "motion.sliding_speed",
@@ -124,12 +147,173 @@ impl Source<'_> {
                 self.stroke_cycle(raw, stroke, frequency, out_speed, in_speed)?
             }
         };
+        let gradients = self.inlet_gradients(raw, table)?;
         Ok(Some(MotionSpec {
             motion,
             junction_position,
+            gradients,
         }))
     }
 
+    /// `inlet_gradient_out`/`_in` or `contact_profile` (module docs).
+    fn inlet_gradients(
+        &self,
+        raw: &RawMotion,
+        table: &Spanned<RawMotion>,
+    ) -> Result<Option<(InletGradients, GradientSource)>, ScenarioError> {
+        let out = self.optional(raw.inlet_gradient_out.as_ref(), &INLET_GRADIENT_OUT)?;
+        let back = self.optional(raw.inlet_gradient_in.as_ref(), &INLET_GRADIENT_IN)?;
+        if let (Some(_), Some(q)) = (
+            &raw.contact_profile,
+            raw.inlet_gradient_out
+                .as_ref()
+                .or(raw.inlet_gradient_in.as_ref()),
+        ) {
+            return Err(self.error(
+                q.span(),
+                if raw.inlet_gradient_out.is_some() {
+                    INLET_GRADIENT_OUT.key
+                } else {
+                    INLET_GRADIENT_IN.key
+                },
+                "contact_profile gives the gradients; remove inlet_gradient_out/inlet_gradient_in \
+                 (or remove contact_profile)",
+            ));
+        }
+        match (out, back) {
+            (Some(out_stroke), Some(in_stroke)) => {
+                return Ok(Some((
+                    InletGradients {
+                        out_stroke,
+                        in_stroke,
+                    },
+                    GradientSource::Given,
+                )));
+            }
+            (Some(_), None) | (None, Some(_)) => {
+                let (span, missing) = match &raw.inlet_gradient_out {
+                    Some(q) => (q.span(), INLET_GRADIENT_IN.key),
+                    None => (
+                        raw.inlet_gradient_in
+                            .as_ref()
+                            .map_or(table.span(), Spanned::span),
+                        INLET_GRADIENT_OUT.key,
+                    ),
+                };
+                return Err(self.error(
+                    span,
+                    missing,
+                    "missing key: the inlet gradients go in pairs (inlet_gradient_out for the \
+                     pressurised side, inlet_gradient_in for the air side, e.g. \"5 MPa/mm\")",
+                ));
+            }
+            (None, None) => {}
+        }
+        let Some(file) = &raw.contact_profile else {
+            return Ok(None);
+        };
+        let path = self.relative_path(file.get_ref());
+        let text = std::fs::read_to_string(&path).map_err(|e| {
+            self.error(
+                file.span(),
+                CONTACT_PROFILE,
+                format!(
+                    "cannot read the contact-pressure profile {}: {e}",
+                    path.display()
+                ),
+            )
+        })?;
+        let profile = parse_contact_profile(&text).map_err(|(line, message)| {
+            let at = line.map_or(String::new(), |l| format!(":{l}"));
+            self.error(
+                file.span(),
+                CONTACT_PROFILE,
+                format!("{}{at}: {message}", path.display()),
+            )
+        })?;
+        Ok(Some((profile.inlet_gradients(), GradientSource::Profile)))
+    }
+}
+
+/// A contact-pressure profile CSV: a header row `x,p` (case-insensitive; `x,pressure` or
+/// `x,contact_pressure` accepted), a units row (a length and a pressure unit, e.g. `mm,MPa`),
+/// then rows of x (from the pressurised side to the air side, strictly increasing) and the
+/// contact pressure p (≥ 0). `#` lines and blank lines are skipped. Errors carry the 1-based
+/// line.
+pub fn parse_contact_profile(text: &str) -> Result<ContactProfile, (Option<usize>, String)> {
+    let cells =
+        |row: &str| -> Vec<String> { row.split(',').map(|c| c.trim().to_owned()).collect() };
+    let mut rows = super::data_lines(text);
+    let Some((header_line, header)) = rows.next() else {
+        return Err((None, "no data: expected a header row x,p".into()));
+    };
+    let names: Vec<String> = cells(header).iter().map(|c| c.to_lowercase()).collect();
+    if names.len() != 2
+        || names[0] != "x"
+        || !["p", "pressure", "contact_pressure"].contains(&names[1].as_str())
+    {
+        return Err((
+            Some(header_line),
+            format!("expected the header row x,p, found {header:?}"),
+        ));
+    }
+    let Some((units_line, units_row)) = rows.next() else {
+        return Err((
+            Some(header_line),
+            "no units row: expected e.g. mm,MPa after the header".into(),
+        ));
+    };
+    let units_cells = cells(units_row);
+    let unit =
+        |k: usize, dimension: Dimension, what: &str| -> Result<f64, (Option<usize>, String)> {
+            let u = units_cells.get(k).map_or("", String::as_str);
+            match units::parse_unit(u) {
+                Ok((factor, d)) if d == dimension => Ok(factor),
+                Ok((_, d)) => Err((
+                    Some(units_line),
+                    format!("unit {u:?} is {d}, expected {what}"),
+                )),
+                Err(e) => Err((Some(units_line), format!("{what}: {e}"))),
+            }
+        };
+    if units_cells.len() != 2 {
+        return Err((
+            Some(units_line),
+            format!(
+                "the units row has {} cells, expected 2 (e.g. mm,MPa)",
+                units_cells.len()
+            ),
+        ));
+    }
+    let x_factor = unit(0, Dimension::LENGTH, "a length (e.g. mm)")?;
+    let p_factor = unit(1, Dimension::PRESSURE, "a pressure (e.g. MPa)")?;
+    let (mut x, mut p, mut lines) = (Vec::new(), Vec::new(), Vec::new());
+    for (line, row) in rows {
+        let c = cells(row);
+        if c.len() != 2 {
+            return Err((
+                Some(line),
+                format!(
+                    "expected 2 comma-separated columns (x, p), found {}",
+                    c.len()
+                ),
+            ));
+        }
+        let number = |k: usize, name: &str| match c[k].parse::<f64>() {
+            Ok(v) if v.is_finite() => Ok(v),
+            _ => Err((
+                Some(line),
+                format!("{name}: not a finite number: {:?}", c[k]),
+            )),
+        };
+        x.push(number(0, "x")? * x_factor);
+        p.push(number(1, "p")? * p_factor);
+        lines.push(line);
+    }
+    ContactProfile::new(x, p).map_err(|e| (e.index.and_then(|i| lines.get(i).copied()), e.message))
+}
+
+impl Source<'_> {
     /// The speeds of a stroke cycle of length `stroke`: from `frequency`, or `out_speed` and
     /// `in_speed`.
     fn stroke_cycle(
@@ -250,9 +434,40 @@ mod tests {
         assert_eq!(m.drag_speed(), 0.2);
         assert_eq!(m.fastest_speed(), 0.2);
         assert!(motion("sliding_speed = 0\n").unwrap().is_some());
+        let m = motion(
+            "stroke = \"0.1 m\"\nfrequency = 1\ninlet_gradient_out = \"2 MPa/mm\"\n\
+             inlet_gradient_in = \"3e9 Pa/m\"\n",
+        )
+        .unwrap()
+        .unwrap();
+        let (g, source) = m.gradients.unwrap();
+        assert_eq!(source, crate::dynamic::ihl::GradientSource::Given);
+        assert!((g.out_stroke / 2e9 - 1.0).abs() < 1e-12 && g.in_stroke == 3e9);
+        assert_eq!(
+            motion("sliding_speed = 0\n").unwrap().unwrap().gradients,
+            None
+        );
         let none = Scenario::from_str(PAPER, Path::new("x.toml")).unwrap();
         assert_eq!(none.life.motion, None);
         assert_eq!(none.life.motion, None);
+    }
+
+    #[test]
+    fn contact_profiles_are_read_in_si_and_errors_name_their_line() {
+        let ok = super::parse_contact_profile("# c\nx,p\nmm,MPa\n0,0.2\n0.5,1.2\n1.5,0\n").unwrap();
+        let g = ok.inlet_gradients();
+        // 1 MPa over 0.5 mm and 1.2 MPa over 1 mm
+        assert!((g.out_stroke / 2e9 - 1.0).abs() < 1e-12, "{g:?}");
+        assert!((g.in_stroke / 1.2e9 - 1.0).abs() < 1e-12, "{g:?}");
+        let line = |text: &str| super::parse_contact_profile(text).unwrap_err().0;
+        assert_eq!(line("x,q\nmm,MPa\n0,0\n1,1\n2,0\n"), Some(1));
+        assert_eq!(line("x,p\nMPa,MPa\n0,0\n1,1\n2,0\n"), Some(2));
+        assert_eq!(line("x,p\nmm,mm\n0,0\n1,1\n2,0\n"), Some(2));
+        assert_eq!(line("x,p\nmm,MPa\n0,0\n1,abc\n2,0\n"), Some(4));
+        assert_eq!(line("x,p\nmm,MPa\n\n0,0\n# c\n1,1\n1,0\n"), Some(7));
+        assert_eq!(line("x,p\nmm,MPa\n0,0\n1,1\n"), None);
+        // the maximum on an edge: no rise on one side
+        assert_eq!(line("x,p\nmm,MPa\n0,0\n1,1\n2,2\n"), Some(5));
     }
 
     #[test]

@@ -364,6 +364,9 @@ pub(super) struct RawMotion {
     pub out_speed: Option<Quantity>,
     pub in_speed: Option<Quantity>,
     pub junction_position: Option<Quantity>,
+    pub inlet_gradient_out: Option<Quantity>,
+    pub inlet_gradient_in: Option<Quantity>,
+    pub contact_profile: Option<Spanned<String>>,
 }
 
 /// `[model]`: optional settings of the critical-junction theory.

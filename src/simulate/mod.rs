@@ -828,9 +828,26 @@ impl<'a> Simulator<'a> {
                     viscosity,
                     p.shape_factor,
                 );
-                let point = spec.evaluate(&table.coefficients(s, &junction, &seal), static_rate);
+                let oring =
+                    matches!(p.geometry, crate::seal::SealGeometry::ORing { .. }).then(|| {
+                        (
+                            seal.seal.nominal_pressure,
+                            profile.width(),
+                            p.fluid.pressure_difference,
+                        )
+                    });
+                let ihl = crate::dynamic::IhlInput {
+                    gradients: spec.gradients_for(oring),
+                    viscosity,
+                    sealing_length: p.geometry.sealing_length(),
+                    roughness: p.spectrum.rms_roughness(),
+                };
+                let point =
+                    spec.evaluate(&table.coefficients(s, &junction, &seal), static_rate, &ihl);
                 if spec.is_stroke() {
-                    (Some(point), None, leak_rate)
+                    // the cycle-averaged leak once the IHL film has weight (docs/model.md §3.4.1)
+                    let mean = point.cycle_mean_leak_rate().unwrap_or(leak_rate);
+                    (Some(point), None, mean)
                 } else {
                     (
                         Some(point),
@@ -1017,7 +1034,7 @@ impl<'a> Simulator<'a> {
             validity::extrusion(*ratio, limit, at, findings);
         }
         if let (Some((spec, _)), Some(m)) = (&self.drag, snap.motion) {
-            validity::speed(spec.fastest_speed(), m.speed_bound, at, findings);
+            validity::motion(spec.fastest_speed(), &m, at, findings);
         }
     }
 }

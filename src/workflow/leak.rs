@@ -2,7 +2,7 @@
 //! pressures, with the drag of a sliding countersurface when the scenario has `[motion]`.
 
 use super::{Progress, scenario_path};
-use crate::dynamic::{DragCoefficients, DragSettings, MotionPoint, MotionSpec};
+use crate::dynamic::{DragCoefficients, DragSettings, IhlInput, MotionPoint, MotionSpec};
 use crate::leak::{ContactPath, Fidelity, FlatSeal, LeakPoint, StaticSolver};
 use crate::scenario::Scenario;
 use crate::seal::SealGeometry;
@@ -13,7 +13,9 @@ use crate::validity::{self, At, Findings};
 #[derive(Debug, Clone)]
 pub struct LeakOutcome {
     /// One point per pressure asked for. With constant sliding the drag is included in each
-    /// point's leak rate; with a stroke cycle the leak rate is the static one.
+    /// point's leak rate; with a stroke cycle the leak rate is the static one in the low-speed
+    /// regime and the cycle-averaged net leak once the inverse-hydrodynamic film has weight
+    /// (docs/model.md §3.4.1).
     pub points: Vec<LeakPoint>,
     /// `[motion]`: the motion quantities at each point (`None` for a static seal).
     pub motion: Option<Vec<MotionPoint>>,
@@ -86,10 +88,11 @@ pub fn evaluate_on(
     for point in &points {
         solver.assess(point, &mut findings);
     }
+    let oring = matches!(scenario.life.geometry, SealGeometry::ORing { .. });
     let motion = scenario.life.motion.as_ref().map(|spec| {
         points
             .iter_mut()
-            .map(|point| motion_point(&solver, spec, point, &mut findings))
+            .map(|point| motion_point(&solver, spec, point, oring, &mut findings))
             .collect()
     });
     LeakOutcome {
@@ -144,6 +147,7 @@ fn motion_point(
     solver: &StaticSolver,
     spec: &MotionSpec,
     point: &mut LeakPoint,
+    oring: bool,
     findings: &mut Findings,
 ) -> MotionPoint {
     let pb = solver.problem();
@@ -157,13 +161,30 @@ fn motion_point(
         pb.shape_factor,
     );
     let coeffs = DragCoefficients::compute(solver.path().exact(), &seal, &DragSettings::default());
-    let m = spec.evaluate(&coeffs, point.leak_rate);
+    let oring = oring.then_some((
+        point.nominal_pressure,
+        pb.seal.width,
+        pb.fluid.pressure_difference,
+    ));
+    let ihl = IhlInput {
+        gradients: spec.gradients_for(oring),
+        viscosity: pb.fluid.viscosity,
+        sealing_length: pb.seal.length,
+        roughness: pb.spectrum.rms_roughness(),
+    };
+    let m = spec.evaluate(&coeffs, point.leak_rate, &ihl);
     if !spec.is_stroke() {
         point.leak_rate += m.drag_leak_rate;
+    } else if let Some(mean) = m.cycle_mean_leak_rate() {
+        // the cycle-averaged leak once the IHL film has weight, as `sealsim run` reports it
+        point.leak_rate = mean;
+        if mean > 0.0 && point.state == crate::leak::SealState::Sealed {
+            point.state = crate::leak::SealState::Leaking;
+        }
     }
-    validity::speed(
+    validity::motion(
         spec.fastest_speed(),
-        m.speed_bound,
+        &m,
         At::Pressure(point.nominal_pressure),
         findings,
     );

@@ -18,7 +18,12 @@ const ROD: &str = include_str!("../../scenarios/hydraulic-rod-seal.toml");
 const LEAK_HEADER: &str =
     "nominal_pressure_Pa,zeta_c,lambda_c_m,u_c_m,ubar_c_m,hrms_c_m,leak_rate_m3_per_s,state";
 const DRAG_COLUMNS: &str = "drag_leak_rate_m3_per_s,film_thickness_m,speed_bound_m_per_s";
-const STROKE_COLUMNS: &str = "out_stroke_volume_m3,in_stroke_volume_m3,net_volume_per_cycle_m3";
+const STROKE_COLUMNS: &str = "out_stroke_volume_m3,in_stroke_volume_m3,net_volume_per_cycle_m3,\
+     cycle_mean_leak_rate_m3_per_s,out_stroke_film_m,in_stroke_film_m,film_parameter,speed_regime,\
+     film_regime";
+
+/// The rod scenario's profile line, replaced by the bad-input cases.
+const ROD_PROFILE: &str = "contact_profile = \"hydraulic-rod-seal-profile.csv\"   # x, p across the contact (illustrative)";
 
 /// The wiper's sliding-speed line, replaced by the bad-input cases.
 const WIPER_SPEED: &str = "sliding_speed = \"1 cm/s\"        # PY08 §8's example speed";
@@ -174,38 +179,73 @@ fn drag_is_linear_in_speed_and_adds_to_the_static_leak() {
     }
 }
 
+/// The column `name` of a CSV header.
+fn column(header: &str, name: &str) -> usize {
+    header
+        .split(',')
+        .position(|c| c == name)
+        .unwrap_or_else(|| panic!("no column {name} in {header}"))
+}
+
+/// The rod scenario's profile flanks are `rise · (1 − ξ²)^{3/2}` over the half width a
+/// (hydraulic-rod-seal-profile.csv): steepest `1.5 rise/a`; the fluid flank rises from ΔP =
+/// 0.2 MPa to the 1.866 MPa peak, the air flank from 0; a = 2.435 mm/2.
+fn rod_profile_gradients() -> (f64, f64) {
+    let a = 2.435e-3 / 2.0;
+    (1.5 * (1.866e6 - 0.2e6) / a, 1.5 * 1.866e6 / a)
+}
+
 #[test]
-fn stroke_cycle_leak_has_the_volumes_per_stroke() {
+fn rod_seal_leak_reports_the_inverse_hydrodynamic_films() {
     let (header, rows, stderr) = leak(&scenario_path("hydraulic-rod-seal.toml"), &[]);
     assert_eq!(
         header,
         format!("{LEAK_HEADER},{DRAG_COLUMNS},{STROKE_COLUMNS}")
     );
     let r = &rows[0];
-    let (leak_rate, drag, film) = (num(&r[6]), num(&r[8]), num(&r[9]));
-    let (out, back, net) = (num(&r[11]), num(&r[12]), num(&r[13]));
-    // L_y = π D′ (the ring as installed on the rod), S = 100 mm, v_out = v_in = 0.1 m/s (1 s
-    // per stroke)
-    let l_y = sealsim::scenario::Scenario::load(&scenario_path("hydraulic-rod-seal.toml"))
-        .unwrap()
-        .life
-        .geometry
-        .sealing_length();
-    let film_volume = l_y * film * 0.1;
-    assert!(rel(drag, l_y * film * 0.1) < 1e-9);
-    assert!(rel(out, leak_rate * 1.0 + film_volume) < 1e-9);
-    assert!(rel(back, leak_rate * 1.0 - film_volume) < 1e-9);
-    assert!(rel(net, out + back) < 1e-12);
-    // the stroke leaves the leak rate static; net = static × cycle time (to rounding)
-    assert!((net - 2.0 * leak_rate).abs() <= 1e-9 * film_volume, "{net}");
+    let get = |name: &str| num(&r[column(&header, name)]);
+    let s = sealsim::scenario::Scenario::load(&scenario_path("hydraulic-rod-seal.toml")).unwrap();
+    let (eta, l_y) = (s.problem.fluid.viscosity, s.life.geometry.sealing_length());
+    // the films against the closed form with the profile's analytic flanks (the table's secants
+    // sit within 0.5 % of them: films within 0.3 %)
+    let (w_out, w_in) = rod_profile_gradients();
+    let (h_out, h_in) = (get("out_stroke_film_m"), get("in_stroke_film_m"));
+    eprintln!("rod: h_out {h_out:.4e} m, h_in {h_in:.4e} m, η {eta} Pa·s");
     assert!(
-        stderr.contains("hydrodynamic lift-off is not modelled"),
-        "{stderr}"
+        rel(h_out, (8.0 * eta * 0.2 / (9.0 * w_out)).sqrt()) < 3e-3,
+        "{h_out}"
     );
+    assert!(
+        rel(h_in, (8.0 * eta * 0.2 / (9.0 * w_in)).sqrt()) < 3e-3,
+        "{h_in}"
+    );
+    assert!(h_out > h_in, "the pressurised flank is the gentler");
+    // volumes: L_y S h/2 out, back; net = L_y S (h_out − h_in)/2; 1 s cycle
+    let (out, back, net) = (
+        get("out_stroke_volume_m3"),
+        get("in_stroke_volume_m3"),
+        get("net_volume_per_cycle_m3"),
+    );
+    assert!(rel(out, l_y * 0.1 * h_out / 2.0) < 1e-12);
+    assert!(rel(back, -l_y * 0.1 * h_in / 2.0) < 1e-12);
+    assert!(rel(net, l_y * 0.1 * (h_out - h_in) / 2.0) < 1e-9);
+    assert_eq!(get("cycle_mean_leak_rate_m3_per_s"), net);
+    // the leak rate is the cycle mean; the static contact is sealed on the Ra 0.2 µm rod
+    assert_eq!(get("leak_rate_m3_per_s"), net);
+    assert_eq!(r[column(&header, "u_c_m")], "");
+    assert_eq!(r[column(&header, "speed_regime")], "inverse_hydrodynamic");
+    assert_eq!(r[column(&header, "film_regime")], "full_film");
+    // Λ = h_in/σ with σ = Rq = √(π/2) · 0.2 µm (the callout's band; the extension adds ≈ 0)
+    let sigma = (std::f64::consts::PI / 2.0).sqrt() * 0.2e-6;
+    assert!(rel(get("film_parameter"), h_in / sigma) < 1e-3);
+    // a profile is given: no estimate, no lift-off, no transition warning
+    for w in ["lift-off", "estimated", "blend"] {
+        assert!(!stderr.contains(w), "{stderr}");
+    }
 }
 
 #[test]
-fn rod_seal_run_reports_the_stroke_volumes() {
+fn rod_seal_run_reports_the_films_and_leaks_the_cycle_mean() {
     let case = Case::new(ROD);
     let (h, s) = (case.path("h.csv"), case.path("s.json"));
     let start = std::time::Instant::now();
@@ -223,63 +263,149 @@ fn rod_seal_run_reports_the_stroke_volumes() {
     let stderr = String::from_utf8(out.get_output().stderr.clone()).unwrap();
     no_nan(&stdout, "summary");
     assert!(
-        stdout.contains("motion") && stdout.contains("stroke 100 mm"),
+        stdout.contains("stroke 100 mm") && stdout.contains("inverse-hydrodynamic films"),
         "{stdout}"
     );
     assert!(
         stderr.lines().all(|l| l.starts_with("warning: ")),
         "{stderr}"
     );
-    assert_eq!(
-        stderr.matches("lift-off is not modelled").count(),
-        1,
-        "{stderr}"
-    );
+    assert!(!stderr.contains("lift-off"), "{stderr}");
     let csv = fs::read_to_string(&h).unwrap();
     no_nan(&csv, "history");
     let mut lines = csv.lines();
+    let header = lines.next().unwrap().to_owned();
     assert_eq!(
-        lines.next().unwrap(),
-        format!("{HISTORY_HEADER},drag_leak_rate_m3_per_s,net_volume_per_cycle_m3")
+        header,
+        format!(
+            "{HISTORY_HEADER},drag_leak_rate_m3_per_s,net_volume_per_cycle_m3,out_stroke_film_m,\
+             in_stroke_film_m,speed_regime"
+        )
     );
+    let mut rows = 0;
     for line in lines {
         let cells: Vec<&str> = line.split(',').collect();
-        assert_eq!(cells.len(), 16, "{line}");
-        let (leak_rate, drag, net) = (num(cells[9]), num(cells[14]), num(cells[15]));
-        assert!(drag > 0.0, "{line}");
-        assert!(rel(net, 2.0 * leak_rate) < 1e-9 || net == 0.0, "{line}");
+        assert_eq!(cells.len(), 19, "{line}");
+        let (leak_rate, net) = (num(cells[9]), num(cells[15]));
+        // a 1 s cycle: the leak rate is the net volume per cycle per second
+        assert_eq!(leak_rate, net, "{line}");
+        assert!(num(cells[16]) > num(cells[17]), "{line}");
+        assert_eq!(cells[18], "inverse_hydrodynamic");
+        rows += 1;
     }
-    let text = fs::read_to_string(&s).unwrap();
-    no_nan(&text, "summary JSON");
-    let json: Value = serde_json::from_str(&text).unwrap();
+    assert!(rows > 10);
+    let json: Value = serde_json::from_str(&fs::read_to_string(&s).unwrap()).unwrap();
     let m = &json["motion"];
     assert_eq!(m["kind"], "stroke");
-    assert_eq!(m["stroke_m"], 0.1);
-    assert_eq!(m["cycle_period_s"], 2.0);
-    assert_eq!(m["speed_above_bound"], true);
-    assert!(m["speed_bound_m_per_s"].as_f64().unwrap() < 1e-3);
-    for key in ["initial_cycle", "final_cycle"] {
-        let c = &m[key];
-        let (o, i, n, d) = (
-            c["out_stroke_volume_m3"].as_f64().unwrap(),
-            c["in_stroke_volume_m3"].as_f64().unwrap(),
-            c["net_volume_per_cycle_m3"].as_f64().unwrap(),
-            c["drag_volume_per_stroke_m3"].as_f64().unwrap(),
-        );
-        eprintln!("{key}: out {o:.4e} m³, in {i:.4e} m³, net {n:.4e} m³, film {d:.4e} m³");
-        // out ≈ back (the linear theory): the film dominates one stroke's static leak
-        assert!(o > 0.0 && i < 0.0 && d > 0.0);
-        assert!(rel(-i, o) < 1e-3, "{c}");
-        assert!(rel(n, o + i) < 1e-9);
-    }
-    let life = json["time_to_failure_s"].clone();
-    eprintln!(
-        "rod seal: failure {} ({life}), leaked {} m³, leak rate {} → {} m³/s",
-        json["failure_mode"],
-        json["leaked_volume_m3"],
-        json["initial_leak_rate_m3_per_s"],
-        json["final_leak_rate_m3_per_s"]
+    assert_eq!(m["cycle_period_s"], 1.0);
+    assert_eq!(m["speed_above_bound"], false);
+    let c = &m["initial_cycle"];
+    assert_eq!(c["speed_regime"], "inverse_hydrodynamic");
+    let i = &c["ihl"];
+    assert_eq!(i["gradient_source"], "profile");
+    assert_eq!(i["starved"], false);
+    assert_eq!(i["film_regime"], "full_film");
+    let (w_out, w_in) = rod_profile_gradients();
+    let g_out = i["inlet_gradient_out_pa_per_m"].as_f64().unwrap();
+    let g_in = i["inlet_gradient_in_pa_per_m"].as_f64().unwrap();
+    assert!(
+        g_out < w_out && rel(g_out, w_out) < 5e-3,
+        "{g_out} vs {w_out}"
     );
+    assert!(g_in < w_in && rel(g_in, w_in) < 5e-3, "{g_in} vs {w_in}");
+    let net = c["net_volume_per_cycle_m3"].as_f64().unwrap();
+    let carried = i["out_stroke_carried_m3"].as_f64().unwrap();
+    let returned = i["in_stroke_returned_m3"].as_f64().unwrap();
+    assert!(rel(net, carried - returned) < 1e-12);
+    // constant leak rate: failure by the 0.5 L criterion at 0.5 L/(net per second)
+    let t = json["time_to_failure_s"].as_f64().unwrap();
+    assert_eq!(json["failure_mode"], "leaked_volume");
+    assert!(rel(t, 0.5e-3 / net) < 1e-3, "{t} vs {}", 0.5e-3 / net);
+    eprintln!(
+        "rod seal: net {net:.4e} m³/cycle, carried {carried:.4e} m³, failure after {t:.4e} s"
+    );
+}
+
+#[test]
+fn bad_rod_profile_exits_2_naming_the_key() {
+    let line = line_of(ROD, ROD_PROFILE);
+    let unsorted = "# x out of order\nx,p\nmm,MPa\n0,0.2\n0.5,1\n0.4,2\n1.0,0\n";
+    let negative = "x,p\nmm,MPa\n0,0.2\n0.5,-1\n1.0,0\n";
+    let cases: [(&str, Option<&str>, usize, &str); 6] = [
+        (
+            "inlet_gradient_out = \"-2 MPa/mm\"\ninlet_gradient_in = \"2 MPa/mm\"",
+            None,
+            line,
+            "motion.inlet_gradient_out: must be positive, got -2e9 Pa/m",
+        ),
+        (
+            "inlet_gradient_out = \"2 MPa/mm\"\ninlet_gradient_in = \"0 MPa/mm\"",
+            None,
+            line + 1,
+            "motion.inlet_gradient_in: must be positive",
+        ),
+        (
+            "inlet_gradient_out = \"2 MPa/mm\"",
+            None,
+            line,
+            "motion.inlet_gradient_in: missing key",
+        ),
+        (
+            "contact_profile = \"p.csv\"",
+            Some(unsorted),
+            line,
+            "motion.contact_profile: ",
+        ),
+        (
+            "contact_profile = \"p.csv\"",
+            Some(negative),
+            line,
+            "motion.contact_profile: ",
+        ),
+        (
+            "inlet_gradient_in = \"2 MPa/mm\"\ncontact_profile = \"p.csv\"",
+            Some(unsorted),
+            line,
+            "motion.inlet_gradient_in: contact_profile gives the gradients",
+        ),
+    ];
+    for (k, (replacement, profile, line, message)) in cases.into_iter().enumerate() {
+        let case = Case::new(&ROD.replace(ROD_PROFILE, replacement));
+        if let Some(text) = profile {
+            fs::write(case.path("p.csv"), text).unwrap();
+        }
+        let expected = format!("s.toml:{line}: {message}");
+        for command in ["leak", "run"] {
+            let output = case.path("out.csv");
+            let out = cargo_bin_cmd!("sealsim")
+                .arg(command)
+                .arg(case.scenario())
+                .arg("-o")
+                .arg(&output)
+                .assert()
+                .code(2)
+                .stdout(predicate::str::is_empty())
+                .stderr(predicate::str::contains("panicked").not());
+            let stderr = String::from_utf8(out.get_output().stderr.clone()).unwrap();
+            assert!(
+                stderr.contains(&expected),
+                "{command} {replacement:?}:\n{stderr}\nexpected {expected}"
+            );
+            // the data file's own line: the unsorted row is line 6, the negative one line 4
+            match k {
+                3 => assert!(
+                    stderr.contains("p.csv:6: x must increase strictly"),
+                    "{stderr}"
+                ),
+                4 => assert!(
+                    stderr.contains("p.csv:4: the contact pressure must not be negative"),
+                    "{stderr}"
+                ),
+                _ => {}
+            }
+            assert!(!output.exists(), "something was written");
+        }
+    }
 }
 
 #[test]

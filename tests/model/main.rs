@@ -21,6 +21,7 @@ mod flow;
 mod fluid;
 mod gland;
 mod height_map;
+mod ihl;
 mod interface;
 mod life;
 mod model_reference;

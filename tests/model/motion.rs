@@ -4,6 +4,7 @@
 
 use crate::common::{rel, scenario_path};
 use sealsim::contact::{Junction, PerssonContact};
+use sealsim::dynamic::ihl::SpeedRegime;
 use sealsim::dynamic::{
     DragCoefficients, DragSettings, DragTable, Motion, MotionSpec, separation_integral,
 };
@@ -14,6 +15,22 @@ use sealsim::validity::{Finding, Limit};
 
 fn load(name: &str) -> Scenario {
     Scenario::load(&scenario_path(name)).unwrap()
+}
+
+/// The shipped rod scenario's ring on the rough face it had before issue 17 (0.8 µm rms,
+/// H 0.7), without its profile table: a leaking static contact whose PY08 §8 speed bound
+/// (≈ 2e-7 m/s) the low-speed tests stay below.
+fn low_speed_rod() -> Scenario {
+    let text = include_str!("../../scenarios/hydraulic-rod-seal.toml");
+    let callout = "ra = \"0.2 um\"\n";
+    let profile = "contact_profile = \"hydraulic-rod-seal-profile.csv\"";
+    assert!(text.contains(callout) && text.contains(profile));
+    let text = text.replace(
+        callout,
+        "rms_roughness = \"0.8 um\"\nhurst_exponent = 0.7\nq0 = \"3e5 1/m\"\nq1 = \"1e10 1/m\"\n",
+    );
+    let text = text.replace(profile, "");
+    Scenario::from_str(&text, &scenario_path("hydraulic-rod-seal.toml")).unwrap()
 }
 
 /// Everything of a row except the motion.
@@ -32,7 +49,14 @@ fn assert_same_static_run(a: &LifeResult, b: &LifeResult) {
     let static_warnings = |r: &LifeResult| -> Vec<Finding> {
         r.findings
             .iter()
-            .filter(|w| w.limit != Limit::SpeedBound)
+            .filter(|w| {
+                ![
+                    Limit::SpeedBound,
+                    Limit::IhlTransition,
+                    Limit::GradientEstimate,
+                ]
+                .contains(&w.limit)
+            })
             .cloned()
             .collect()
     };
@@ -44,6 +68,7 @@ fn with_motion(p: &LifeProblem, motion: Motion) -> LifeProblem {
         motion: Some(MotionSpec {
             motion,
             junction_position: 0.5,
+            gradients: None,
         }),
         ..p.clone()
     }
@@ -52,8 +77,12 @@ fn with_motion(p: &LifeProblem, motion: Motion) -> LifeProblem {
 #[test]
 fn tabulated_integral_matches_the_direct_evaluation() {
     let settings = DragSettings::default();
-    for name in ["wiper-blade-water.toml", "hydraulic-rod-seal.toml"] {
-        let s = load(name);
+    for name in ["wiper-blade-water.toml", "the former rod"] {
+        let s = if name == "the former rod" {
+            low_speed_rod()
+        } else {
+            load(name)
+        };
         let contact = PerssonContact::new(s.problem.spectrum.clone(), s.problem.contact);
         let start = std::time::Instant::now();
         let table = DragTable::build(&contact, settings);
@@ -112,8 +141,13 @@ fn zero_speed_is_the_static_run_bit_for_bit() {
         "wiper-blade-water.toml",
         "oring-nbr-water-80c.toml",
         "gasket-nbr-dirty-oil.toml",
+        "the former rod",
     ] {
-        let p = load(name).life;
+        let p = if name == "the former rod" {
+            low_speed_rod().life
+        } else {
+            load(name).life
+        };
         let bare = LifeProblem {
             motion: None,
             ..p.clone()
@@ -134,7 +168,7 @@ fn zero_speed_is_the_static_run_bit_for_bit() {
 
 #[test]
 fn steady_drag_is_linear_in_speed_and_included_in_the_leak() {
-    let p = load("hydraulic-rod-seal.toml").life;
+    let p = low_speed_rod().life;
     let bare = simulate(&LifeProblem {
         motion: None,
         ..p.clone()
@@ -164,7 +198,7 @@ fn steady_drag_is_linear_in_speed_and_included_in_the_leak() {
     assert!(fast.leaked_volume() - bare.leaked_volume() > 1.99 * extra);
     assert!(slow.findings.get(Limit::SpeedBound).is_none());
     // B_a, B_b > 0 at the peak strip of the installed O-ring
-    let s = Scenario::load(&scenario_path("hydraulic-rod-seal.toml")).unwrap();
+    let s = low_speed_rod();
     let seal = MotionSpec::steady(v).seal(
         s.problem.material,
         s.problem.seal,
@@ -177,33 +211,35 @@ fn steady_drag_is_linear_in_speed_and_included_in_the_leak() {
 }
 
 #[test]
-fn a_stroke_cycle_leaves_the_leak_static_and_carries_the_film_out_and_back() {
-    let s = load("hydraulic-rod-seal.toml");
-    let p = &s.life;
-    let Some(MotionSpec {
-        motion:
-            Motion::Stroke {
-                stroke,
-                out_speed,
-                in_speed,
-            },
-        ..
-    }) = p.motion
-    else {
-        panic!("the rod scenario is a stroke cycle: {:?}", p.motion)
-    };
+fn a_slow_stroke_cycle_leaves_the_leak_static_and_carries_the_film_out_and_back() {
+    // the former rod below its PY08 §8 speed bound (≈ 1.8e-7 m/s over the run): the
+    // low-speed regime, although the O-ring's inverse-hydrodynamic films are estimated
+    let s = low_speed_rod();
+    let (stroke, out_speed, in_speed) = (0.1, 1e-7, 0.5e-7);
+    let p = with_motion(
+        &s.life,
+        Motion::Stroke {
+            stroke,
+            out_speed,
+            in_speed,
+        },
+    );
     let bare = simulate(&LifeProblem {
         motion: None,
         ..p.clone()
     });
-    let r = simulate(p);
+    let r = simulate(&p);
     assert_same_static_run(&bare, &r);
     let l_y = p.geometry.sealing_length();
     for row in &r.rows {
         let m = row.motion.unwrap();
+        assert_eq!(m.regime, SpeedRegime::LowSpeed);
+        assert_eq!(m.ihl_weights, (0.0, 0.0));
+        assert!(m.ihl.is_some(), "an O-ring's films are estimated");
         let c = m.cycle.expect("cycle volumes");
         assert_eq!(c.period, stroke / out_speed + stroke / in_speed);
         assert!(rel(c.drag_volume, l_y * m.film_thickness * stroke) < 1e-12);
+        // the linear theory: net = static × cycle time; out and in carry the film
         assert!(rel(c.net_volume, row.leak_rate * c.period) < 1e-9 || c.net_volume == 0.0);
         assert!(
             rel(
@@ -211,19 +247,19 @@ fn a_stroke_cycle_leaves_the_leak_static_and_carries_the_film_out_and_back() {
                 row.leak_rate * stroke / out_speed + c.drag_volume
             ) < 1e-12
         );
-        // out ≈ back: the film dominates the static leak of one stroke by orders of magnitude
-        assert!(c.out_volume > 0.0 && c.in_volume < 0.0);
-        assert!(rel(-c.in_volume, c.out_volume) < 1e-3, "{c:?}");
-        // the out-stroke's drag
+        assert!(
+            rel(
+                c.in_volume,
+                row.leak_rate * stroke / in_speed - c.drag_volume
+            ) < 1e-9
+        );
+        assert!(c.drag_volume > 0.0);
         assert!(rel(m.drag_leak_rate, l_y * m.film_thickness * out_speed) < 1e-12);
     }
-    // 0.1 m/s is far above the bound of an O-ring in oil: warned once
-    let above: Vec<_> = r
-        .findings
-        .iter()
-        .filter(|w| w.to_string().contains("lift-off"))
-        .collect();
-    assert_eq!(above.len(), 1, "{:?}", r.findings);
+    // below the bound: no lift-off, no transition; the estimate is said
+    assert!(r.findings.get(Limit::SpeedBound).is_none());
+    assert!(r.findings.get(Limit::IhlTransition).is_none());
+    assert!(r.findings.get(Limit::GradientEstimate).is_some());
 }
 
 #[test]

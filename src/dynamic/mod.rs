@@ -72,9 +72,11 @@
 //! **Sealed.** Without a percolating channel every coefficient is exactly 0 (and the speed
 //! bound is +∞: no constriction to open) — never NaN.
 //!
-//! **Not modelled** (also absent from PY08 §8): hydrodynamic lift above the speed bound,
-//! speed-dependent or viscoelastic contact, starvation (a dry low-pressure side that cannot
-//! supply the in-stroke), the `C` terms of eq. 13.
+//! **Not modelled here** (also absent from PY08 §8): speed-dependent or viscoelastic contact,
+//! the `C` terms of eq. 13. Hydrodynamic lift of a rod seal above the speed bound, with the
+//! starvation of the in-stroke, is [`ihl`] (docs/model.md §3.4.1): a stroke cycle with inlet
+//! pressure gradients blends this theory's volumes into the inverse-hydrodynamic ones above the
+//! onset `min(v_b, v_Λ)`.
 //!
 //! **In scenarios** (`[motion]`, [`MotionSpec`]): constant sliding ([`Motion::Steady`], the
 //! out-stroke direction) or a stroke cycle ([`Motion::Stroke`]). [`MotionSpec::evaluate`]
@@ -87,6 +89,8 @@
 //! [`DragCoefficients::compute`] at every pressure; the life run looks I up in a
 //! [`DragTable`] built once per run.
 
+pub mod ihl;
+
 use crate::contact::table::{logistic, logit};
 use crate::contact::{
     CriticalJunction, EffectiveMediumSettings, Elastic, Junction, PerssonContact,
@@ -97,6 +101,7 @@ use crate::leak::FlatSeal;
 use crate::math::interp::UniformCubic;
 use crate::math::quadrature::gauss_legendre;
 use crate::math::special::erfc;
+use ihl::{GradientSource, IhlCycle, InletGradients, SpeedRegime, ihl_weight, transition_onset};
 use std::f64::consts::{FRAC_1_SQRT_2, PI};
 
 /// Half-width, in standard deviations, of the u-range kept for each Gaussian component of
@@ -517,13 +522,32 @@ pub enum Motion {
     },
 }
 
-/// A scenario's `[motion]`: the motion and where along the width the critical junction sits
-/// ([`ReciprocatingSeal::junction_position`]).
+/// A scenario's `[motion]`: the motion, where along the width the critical junction sits
+/// ([`ReciprocatingSeal::junction_position`]) and the inlet pressure gradients of a rod seal
+/// ([`ihl`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct MotionSpec {
     pub motion: Motion,
     /// `L_a/L_x` ∈ (0, 1) (½ for a symmetric seal); changes only the split `B_a`/`B_b`.
     pub junction_position: f64,
+    /// The inlet gradients given in the scenario (`inlet_gradient_out`/`_in`, or the steepest
+    /// flanks of `contact_profile`); `None`: an O-ring's are estimated at each state
+    /// ([`InletGradients::oring_estimate`]), a flat seal has none (low-speed theory only).
+    pub gradients: Option<(InletGradients, GradientSource)>,
+}
+
+/// What the inverse-hydrodynamic part of [`MotionSpec::evaluate`] needs of a state, all SI.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct IhlInput {
+    /// The inlet gradients and their source (`None`: no IHL, the low-speed theory at any
+    /// speed). [`MotionSpec::gradients_for`] picks them.
+    pub gradients: Option<(InletGradients, GradientSource)>,
+    /// Viscosity η \[Pa·s\].
+    pub viscosity: f64,
+    /// Sealing length L_y = π D \[m\].
+    pub sealing_length: f64,
+    /// rms roughness σ of the contact \[m\] (film parameter Λ = h*/σ).
+    pub roughness: f64,
 }
 
 /// The motion quantities of one seal state (one pressure of `sealsim leak`, one time of
@@ -540,8 +564,50 @@ pub struct MotionPoint {
     /// [`MotionSpec::fastest_speed`] exceeds [`Self::speed_bound`]: the drag pressure would open
     /// the critical constriction (hydrodynamic lift-off), which is not modelled.
     pub above_bound: bool,
-    /// A stroke cycle's volumes; `None` for constant sliding.
+    /// A stroke cycle's volumes (blended between the low-speed and IHL values, [`ihl`]);
+    /// `None` for constant sliding.
     pub cycle: Option<StrokeCycle>,
+    /// A stroke cycle with inlet gradients: the inverse-hydrodynamic films and volumes.
+    pub ihl: Option<IhlCycle>,
+    /// The IHL weights of the out- and in-stroke ([`ihl_weight`] at the onset
+    /// `min(v_b, v_Λ)`; 0 without `ihl`).
+    pub ihl_weights: (f64, f64),
+    /// The speed regime (constant sliding: [`SpeedRegime::NoProfile`], the low-speed theory).
+    pub regime: SpeedRegime,
+}
+
+impl MotionPoint {
+    /// The cycle-averaged leak rate `net_volume/period` \[m³/s\] of a stroke cycle in which the
+    /// IHL has weight; `None` otherwise (constant sliding, or the low-speed regime, where it
+    /// is the static leak rate).
+    pub fn cycle_mean_leak_rate(&self) -> Option<f64> {
+        let c = self.cycle?;
+        let (a, b) = self.ihl_weights;
+        (self.ihl.is_some() && (a > 0.0 || b > 0.0) && c.period > 0.0)
+            .then(|| c.net_volume / c.period)
+    }
+}
+
+/// The low-speed cycle `low` blended with the IHL cycle: per stroke
+/// `V = (1 − w) V_low + w V_ihl` (out: `V_ihl = out_volume`; in: `−back_volume`), then the
+/// starvation cap `in ≥ −out` (the in-stroke cannot return more than the out-stroke carried;
+/// never active in the low-speed cycle, where `out + in = Q̇_s · period ≥ 0`).
+fn blend(low: StrokeCycle, ihl: Option<&IhlCycle>, weights: (f64, f64)) -> StrokeCycle {
+    let Some(ihl) = ihl else {
+        return low;
+    };
+    let (w_out, w_in) = weights;
+    if w_out == 0.0 && w_in == 0.0 {
+        return low;
+    }
+    let out_volume = (1.0 - w_out) * low.out_volume + w_out * ihl.out_volume;
+    let in_volume = ((1.0 - w_in) * low.in_volume - w_in * ihl.back_volume).max(-out_volume);
+    StrokeCycle {
+        out_volume,
+        in_volume,
+        net_volume: out_volume + in_volume,
+        ..low
+    }
 }
 
 impl MotionSpec {
@@ -550,7 +616,21 @@ impl MotionSpec {
         MotionSpec {
             motion: Motion::Steady { speed },
             junction_position: 0.5,
+            gradients: None,
         }
+    }
+
+    /// The inlet gradients of a state: the scenario's, else an O-ring's estimate from its
+    /// energised peak `peak` \[Pa\], contact width \[m\] and ΔP \[Pa\] (`oring`), else none.
+    pub fn gradients_for(
+        &self,
+        oring: Option<(f64, f64, f64)>,
+    ) -> Option<(InletGradients, GradientSource)> {
+        self.gradients.or_else(|| {
+            let (peak, width, dp) = oring?;
+            InletGradients::oring_estimate(peak, width, dp)
+                .map(|g| (g, GradientSource::ORingEstimate))
+        })
     }
 
     /// The speed the drag term is evaluated at \[m/s\]: the sliding speed, or a cycle's
@@ -622,14 +702,57 @@ impl MotionSpec {
     /// (pressure-driven) leak rate `static_leak_rate` \[m³/s\]. The stroke volumes take the
     /// given static leak rate (the level's, or an O-ring's strips in series) and the drag of
     /// `coeffs` ([`stroke_cycle_from`]).
-    pub fn evaluate(&self, coeffs: &DragCoefficients, static_leak_rate: f64) -> MotionPoint {
-        let cycle = match self.motion {
-            Motion::Steady { .. } => None,
+    ///
+    /// A stroke cycle with inlet gradients (`ihl.gradients`) also gets the IHL cycle
+    /// ([`IhlCycle`]) and its volumes blended with the low-speed ones by the weights
+    /// [`ihl_weight`] of each stroke's speed against the speed bound (docs/model.md §3.4.1).
+    /// Constant sliding stays with the low-speed theory.
+    pub fn evaluate(
+        &self,
+        coeffs: &DragCoefficients,
+        static_leak_rate: f64,
+        ihl: &IhlInput,
+    ) -> MotionPoint {
+        let (cycle, ihl_cycle, weights, regime) = match self.motion {
+            Motion::Steady { .. } => (None, None, (0.0, 0.0), SpeedRegime::NoProfile),
             Motion::Stroke {
                 stroke,
                 out_speed,
                 in_speed,
-            } => stroke_cycle_from(static_leak_rate, coeffs, out_speed, in_speed, stroke),
+            } => {
+                let low = stroke_cycle_from(static_leak_rate, coeffs, out_speed, in_speed, stroke);
+                match ihl.gradients {
+                    None => (low, None, (0.0, 0.0), SpeedRegime::NoProfile),
+                    Some((gradients, source)) => {
+                        let cycle = IhlCycle::new(
+                            gradients,
+                            source,
+                            ihl.viscosity,
+                            ihl.sealing_length,
+                            stroke,
+                            out_speed,
+                            in_speed,
+                            ihl.roughness,
+                        );
+                        let (v_out, v_in) = cycle.film_onset_speeds;
+                        let weights = (
+                            ihl_weight(out_speed, transition_onset(coeffs.speed_bound, v_out)),
+                            ihl_weight(in_speed, transition_onset(coeffs.speed_bound, v_in)),
+                        );
+                        let regime = match weights {
+                            (a, b) if a == 0.0 && b == 0.0 => SpeedRegime::LowSpeed,
+                            (a, b) if a == 1.0 && b == 1.0 => SpeedRegime::Ihl,
+                            _ => SpeedRegime::Transition,
+                        };
+                        (
+                            low.map(|c| blend(c, Some(&cycle), weights)),
+                            Some(cycle),
+                            weights,
+                            regime,
+                        )
+                    }
+                }
+            }
         };
         MotionPoint {
             drag_leak_rate: drag_leak_rate(coeffs, self.drag_speed()),
@@ -637,13 +760,17 @@ impl MotionSpec {
             speed_bound: coeffs.speed_bound,
             above_bound: self.fastest_speed() > coeffs.speed_bound,
             cycle,
+            ihl: ihl_cycle,
+            ihl_weights: weights,
+            regime,
         }
     }
 
     /// `point` with only a fraction of its channels carrying flow: the drag (rate, film,
     /// stroke volume) scaled by `drag_scale` and the stroke volumes rebuilt on the static leak
     /// rate `static_leak_rate` (used under particle clogging, [`crate::simulate`]). The speed
-    /// bound is unchanged.
+    /// bound, the IHL films (which do not flow through the channels) and the weights are
+    /// unchanged; the volumes are blended again.
     pub fn rescale(
         &self,
         point: MotionPoint,
@@ -658,12 +785,16 @@ impl MotionSpec {
                     in_speed,
                 },
                 Some(c),
-            ) => Some(assemble_cycle(
-                static_leak_rate,
-                c.drag_volume * drag_scale,
-                stroke / out_speed,
-                stroke / in_speed,
-                c.within_speed_bound,
+            ) => Some(blend(
+                assemble_cycle(
+                    static_leak_rate,
+                    c.drag_volume * drag_scale,
+                    stroke / out_speed,
+                    stroke / in_speed,
+                    c.within_speed_bound,
+                ),
+                point.ihl.as_ref(),
+                point.ihl_weights,
             )),
             _ => None,
         };
