@@ -83,20 +83,24 @@ impl Simulator<'_> {
         let seal_static = (open_static * scale).max(0.0);
         snap.cake_factor = 1.0 + self.cake_ratio(&snap, state, seal_static);
         let static_rate = seal_static / snap.cake_factor;
-        snap.leak_rate = match (snap.open_static_leak_rate, snap.motion) {
-            (Some(_), Some(m)) => (static_rate + m.drag_leak_rate * drag_scale).max(0.0),
-            _ => static_rate,
+        // The drag of constant sliding flows through the channels and scales with them; a
+        // stroke cycle's film rides over the contact and does not (docs/model.md §7).
+        let motion = match (&self.drag, snap.motion) {
+            (Some((spec, _)), Some(m)) => {
+                Some((spec.is_stroke(), spec.rescale(m, static_rate, drag_scale)))
+            }
+            _ => None,
         };
+        snap.leak_rate = match motion {
+            None => static_rate,
+            Some((true, m)) => m.cycle_mean_leak_rate().unwrap_or(static_rate),
+            Some((false, m)) => static_rate + m.drag_leak_rate,
+        }
+        .max(0.0);
         if !snap.leak_rate.is_finite() {
             snap.leak_rate = 0.0;
         }
-        if let (Some((spec, _)), Some(m)) = (&self.drag, snap.motion) {
-            let static_rate = match snap.open_static_leak_rate {
-                Some(_) => static_rate,
-                None => snap.leak_rate,
-            };
-            snap.motion = Some(spec.rescale(m, static_rate, drag_scale));
-        }
+        snap.motion = motion.map(|(_, m)| m);
         if snap.state == SealState::Leaking && snap.leak_rate <= 0.0 {
             snap.state = SealState::Sealed;
         }

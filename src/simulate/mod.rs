@@ -109,7 +109,9 @@ struct Snapshot {
     retained: f64,
     /// Compression set (ASTM D395 definition) with ageing on.
     compression_set: Option<f64>,
-    /// Leak rate with all critical channels open \[m³/s\] (= `leak_rate` when clean).
+    /// Flow through the critical channels with all of them open \[m³/s\]: `leak_rate` when
+    /// clean, except for a stroke cycle with an inverse-hydrodynamic film, whose film rides over
+    /// the contact and whose channels carry the static leak alone.
     open_leak_rate: f64,
     /// u_c at the peak strip with all channels open \[m\] (0 when sealed there).
     open_u_c: f64,
@@ -132,8 +134,9 @@ struct Snapshot {
     /// A groove-seated ring: its diametral clearance over the extrusion chart's limit at the
     /// state's temperature, and the limit (`None` without a gland).
     extrusion: Option<(f64, ExtrusionLimit)>,
-    /// `[motion]`, constant sliding: the pressure-driven part of `open_leak_rate` \[m³/s\]
-    /// (`open_leak_rate` = this + the drag); `None` otherwise.
+    /// `[motion]`: the pressure-driven part of `open_leak_rate` \[m³/s\] (constant sliding:
+    /// `open_leak_rate` = this + the drag; a stroke cycle: = `open_leak_rate`); `None` without
+    /// motion.
     open_static_leak_rate: Option<f64>,
 }
 
@@ -802,8 +805,9 @@ impl<'a> Simulator<'a> {
         let junction_s = leak.junction_pressure / e_star;
         let u_c = peak_junction.leaking().map(|j| j.u_c);
         let lambda_c = peak_junction.leaking().map_or(0.0, |j| j.lambda_c);
-        let (motion, open_static_leak_rate, leak_rate) = match &self.drag {
-            None => (None, None, leak_rate),
+        // (motion, the open static leak, the leak rate, the flow through the critical channels)
+        let (motion, open_static_leak_rate, leak_rate, channel_rate) = match &self.drag {
+            None => (None, None, leak_rate, leak_rate),
             Some((spec, table)) => {
                 let static_rate = if leak_rate.is_finite() {
                     leak_rate
@@ -846,14 +850,13 @@ impl<'a> Simulator<'a> {
                     spec.evaluate(&table.coefficients(s, &junction, &seal), static_rate, &ihl);
                 if spec.is_stroke() {
                     // the cycle-averaged leak once the IHL film has weight (docs/model.md §3.4.1)
+                    // The film rides over the whole contact, not through the critical
+                    // channels: those carry the static leak (and the particles to clog them).
                     let mean = point.cycle_mean_leak_rate().unwrap_or(leak_rate);
-                    (Some(point), None, mean)
+                    (Some(point), Some(static_rate), mean, static_rate)
                 } else {
-                    (
-                        Some(point),
-                        Some(static_rate),
-                        static_rate + point.drag_leak_rate,
-                    )
+                    let total = static_rate + point.drag_leak_rate;
+                    (Some(point), Some(static_rate), total, total)
                 }
             }
         };
@@ -873,7 +876,11 @@ impl<'a> Simulator<'a> {
             state,
             retained,
             compression_set,
-            open_leak_rate: leak_rate,
+            open_leak_rate: if channel_rate.is_finite() {
+                channel_rate
+            } else {
+                0.0
+            },
             open_u_c: u_c.unwrap_or(0.0),
             lambda_c,
             peak_reduced_pressure: junction_s,

@@ -286,6 +286,39 @@ fn motion_under_clogging_stays_finite_and_scales_with_the_open_channels() {
     }
 }
 
+/// A rod riding on its inverse-hydrodynamic film (docs/model.md §3.4.1) over a face whose
+/// static channels leak: dirt clogs the channels (f falls, carried by the static leak), but the
+/// film rides over the whole contact, so the cycle's leak is the clean one, row by row.
+#[test]
+fn dirt_clogs_the_channels_but_not_the_film_of_a_fast_rod() {
+    let text = include_str!("../../scenarios/hydraulic-rod-seal.toml");
+    let callout = "ra = \"0.2 um\"\n";
+    assert!(text.contains(callout));
+    let text = text.replace(
+        callout,
+        "rms_roughness = \"0.8 um\"\nhurst_exponent = 0.7\nq0 = \"3e5 1/m\"\nq1 = \"1e10 1/m\"\n",
+    ) + "\n[contamination]\nnumber_concentration = \"1e15 1/m^3\"\n\
+         size_distribution = { kind = \"lognormal\", median = \"60 nm\", geometric_std = 2.0 }\n";
+    let dirty = Scenario::from_str(&text, &scenario_path("hydraulic-rod-seal.toml"))
+        .unwrap()
+        .life;
+    let mut clean = dirty.clone();
+    clean.contamination = None;
+    let (r, c) = (simulate(&dirty), simulate(&clean));
+    assert!(c.rows.iter().all(|row| row.leak_rate > 0.0));
+    assert!(
+        r.final_open_fraction() < 0.5,
+        "the static channels clog: f = {}",
+        r.final_open_fraction()
+    );
+    assert_eq!(r.rows.len(), c.rows.len());
+    for (row, open) in r.rows.iter().zip(&c.rows) {
+        let m = row.motion.unwrap();
+        assert_eq!(m.ihl_weights, (1.0, 1.0), "full film at 0.2 m/s");
+        assert!(rel(row.leak_rate, open.leak_rate) < 1e-12, "{row:?}");
+    }
+}
+
 #[test]
 fn steady_film_of_the_flat_wiper_matches_the_direct_coefficients() {
     // the life run of a flat elastic seal: the peak strip is the seal; the tabulated I and the
