@@ -19,7 +19,8 @@ use crate::math::special::erf_inv;
 pub struct TableSettings {
     /// Grid points per unit `log10` of `r/(1−r)` (≈ per decade of P0/E* at low pressure).
     pub points_per_decade: f64,
-    /// The table starts at `r = 10^-decades` below the sealing pressure.
+    /// The table starts at `r = 10^-decades` below the sealing pressure (16 by default: a glassy
+    /// ring at lift-off reaches far below the rubbery range, docs/model.md §2).
     pub decades: f64,
     /// The table ends at `r = 1 − upper_gap`; closer to sealing the exact path answers.
     pub upper_gap: f64,
@@ -53,7 +54,7 @@ impl Default for TableSettings {
     fn default() -> Self {
         TableSettings {
             points_per_decade: 12.0,
-            decades: 8.0,
+            decades: 16.0,
             upper_gap: 0.03,
         }
     }
