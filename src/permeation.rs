@@ -28,7 +28,7 @@
 //!   (upstream face at C1 = S p_a from t = 0, downstream face held at 0):
 //!   `Q(t)/(ℓ C1) = τ − 1/6 − (2/π²) Σ (−1)ⁿ/n² exp(−n²π²τ)`, τ = D t/ℓ². Derived in
 //!   docs/model.md §13.2 by separation of variables (the form is Crank's, *The Mathematics of
-//!   Diffusion*, eq. 4.24a [recalled]); at long times it is the line τ − 1/6, whose intercept on
+//!   Diffusion*, eq. 4.24a \[recalled\]); at long times it is the line τ − 1/6, whose intercept on
 //!   the time axis is the time lag.
 
 use std::f64::consts::PI;
@@ -235,7 +235,10 @@ impl PermeationPath {
             return Err(PathError::Squeeze(squeeze));
         }
         let (h, w) = squeezed_cord(d, squeeze);
-        Ok(PermeationPath { area: PI * diameter * h, length: w })
+        Ok(PermeationPath {
+            area: PI * diameter * h,
+            length: w,
+        })
     }
 
     /// A flat gasket: the exposed inner edge of thickness `thickness` \[m\] (compressed) around the
@@ -271,7 +274,9 @@ impl PermeationPath {
     ) -> f64 {
         let steady = self.steady_molar_flow(permeability, p_high, p_low);
         match diffusivity {
-            Some(d) if d > 0.0 => steady * transient_flux_ratio(d * time / (self.length * self.length)),
+            Some(d) if d > 0.0 => {
+                steady * transient_flux_ratio(d * time / (self.length * self.length))
+            }
             _ => steady,
         }
     }
@@ -335,19 +340,28 @@ impl PermeationData {
     /// Π at T \[K\] by Arrhenius.
     pub fn permeability_at(&self, temperature: f64) -> f64 {
         self.permeability
-            * arrhenius_factor(self.permeability_activation, temperature, self.reference_temperature)
+            * arrhenius_factor(
+                self.permeability_activation,
+                temperature,
+                self.reference_temperature,
+            )
     }
 
     /// D at T \[K\] by Arrhenius, when known.
     pub fn diffusivity_at(&self, temperature: f64) -> Option<f64> {
         self.diffusivity.map(|d| {
-            d * arrhenius_factor(self.diffusivity_activation, temperature, self.reference_temperature)
+            d * arrhenius_factor(
+                self.diffusivity_activation,
+                temperature,
+                self.reference_temperature,
+            )
         })
     }
 
     /// Henry solubility S = Π/D at T \[mol/(m³·Pa)\], when D is known.
     pub fn solubility_at(&self, temperature: f64) -> Option<f64> {
-        self.diffusivity_at(temperature).map(|d| self.permeability_at(temperature) / d)
+        self.diffusivity_at(temperature)
+            .map(|d| self.permeability_at(temperature) / d)
     }
 }
 
@@ -372,7 +386,7 @@ pub const TABLE_REFERENCE_TEMPERATURE: f64 = 296.15;
 /// Silex "(6.1) Gas Permeability" table for VMQ, relative values (its units and temperature were
 /// not in the text read; only the ratios between gases are used): air 0.382, N2 0.307,
 /// O2 0.660, H2 0.729, CO2 3.87, He 0.436. Methane is not in it: CH4/N2 = 3 is an
-/// ILLUSTRATIVE ratio [recalled for silicone, not verified].
+/// ILLUSTRATIVE ratio \[recalled for silicone, not verified\].
 fn silicone_relative(gas: &str) -> Option<f64> {
     Some(match gas {
         "air" => 0.382,
@@ -412,9 +426,9 @@ fn family_factor(family: &str) -> Option<f64> {
 
 /// E_P \[J/mol\]. H2 in NBR: 36 kJ/mol, the middle of the 33–39 kJ/mol of Gim et al., Polymers
 /// 16 (2024) 280 (abstract). Every other value ILLUSTRATIVE: inside the 18–51 kJ/mol range
-/// reported for O2 and H2O through FKM/FFKM O-rings (J. IEST 38(2) 43, abstract), larger for
-/// larger molecules; silicone's small values [recalled: its permeability depends weakly on
-/// temperature].
+/// reported for O2 and H2O through polymer O-rings — Kalrez, Viton, … — (J. IEST 38(2) 43,
+/// abstract), larger for larger molecules; silicone's small values \[recalled: its permeability depends weakly on
+/// temperature\].
 fn activation_energy(family: &str, gas: &str) -> f64 {
     let kj = if family == "vmq" {
         match gas {
@@ -536,11 +550,19 @@ mod tests {
 
     #[test]
     fn data_follow_their_sources_rankings() {
-        let he = |f| data(f, "helium").map(|r| r.permeability).unwrap_or(f64::NAN);
+        let he = |f| {
+            data(f, "helium")
+                .map(|r| r.permeability)
+                .unwrap_or(f64::NAN)
+        };
         // Hennig: NBR < EPDM < FKM for helium; silicone far above
         assert!(he("nbr") < he("epdm") && he("epdm") < he("fkm") && he("fkm") * 10.0 < he("vmq"));
         // silicone ≈ 30× NR, NBR = NR/3 … NR/8 → VMQ/NBR in [90, 240] for H2
-        let h2 = |f| data(f, "hydrogen").map(|r| r.permeability).unwrap_or(f64::NAN);
+        let h2 = |f| {
+            data(f, "hydrogen")
+                .map(|r| r.permeability)
+                .unwrap_or(f64::NAN)
+        };
         let ratio = h2("vmq") / h2("nbr");
         assert!((90.0..=240.0).contains(&ratio), "{ratio}");
     }
@@ -568,7 +590,8 @@ mod tests {
                 let nf = n as f64;
                 let sign = if n % 2 == 1 { -1.0 } else { 1.0 };
                 fourier_flux += 2.0 * sign * (-nf * nf * PI * PI * tau).exp();
-                fourier_amount -= 2.0 / (PI * PI) * sign / (nf * nf) * (-nf * nf * PI * PI * tau).exp();
+                fourier_amount -=
+                    2.0 / (PI * PI) * sign / (nf * nf) * (-nf * nf * PI * PI * tau).exp();
             }
             for m in 0..50 {
                 let k = (2 * m + 1) as f64;
@@ -576,7 +599,10 @@ mod tests {
                 image_amount += 4.0 * tau.sqrt() * ierfc(k / (2.0 * tau.sqrt()));
             }
             assert!((fourier_flux - image_flux).abs() < 1e-12, "flux at {tau}");
-            assert!((fourier_amount - image_amount).abs() < 1e-12, "amount at {tau}");
+            assert!(
+                (fourier_amount - image_amount).abs() < 1e-12,
+                "amount at {tau}"
+            );
             assert!((transient_flux_ratio(tau) - image_flux).abs() < 1e-12);
             assert!((transient_amount(tau) - image_amount).abs() < 1e-12);
         }

@@ -92,7 +92,10 @@ fn series_converges_term_by_term() {
         sum -= 2.0 / (PI * PI) * sign / (nf * nf) * (-nf * nf * PI * PI * tau).exp();
         let next = (n + 1) as f64;
         let bound = 2.0 / (PI * PI) / (next * next) * (-next * next * PI * PI * tau).exp();
-        assert!((sum - exact).abs() <= bound * (1.0 + 1e-9) + 1e-15, "N = {n}");
+        assert!(
+            (sum - exact).abs() <= bound * (1.0 + 1e-9) + 1e-15,
+            "N = {n}"
+        );
     }
 }
 
@@ -115,14 +118,21 @@ fn long_time_amount_is_the_line_with_the_time_lag_intercept() {
         // the remainder is the first exponential term: steady·(ℓ²/D)·(2/π²)·exp(−π²τ)
         let tau = d * t / (3.7e-3 * 3.7e-3);
         let bound = steady * 3.7e-3 * 3.7e-3 / d * 2.0 / (PI * PI) * (-PI * PI * tau).exp();
-        assert!((moles - line).abs() <= bound * (1.0 + 1e-6), "{moles} vs {line}");
+        assert!(
+            (moles - line).abs() <= bound * (1.0 + 1e-6),
+            "{moles} vs {line}"
+        );
         // the n = 1 term, −(2/π²)(−1)exp(−π²τ), is positive: the curve approaches from above
         assert!(moles >= line * (1.0 - 1e-12));
     }
     // and the flow at time t tends to the steady flow, from below
     let steady = path.steady_molar_flow(pi, 1e5, 0.0);
     assert!(path.molar_flow_at(pi, Some(d), 1e5, 0.0, 0.1 * t_lag) < 1e-3 * steady);
-    assert!(close(path.molar_flow_at(pi, Some(d), 1e5, 0.0, 20.0 * t_lag), steady, 1e-9));
+    assert!(close(
+        path.molar_flow_at(pi, Some(d), 1e5, 0.0, 20.0 * t_lag),
+        steady,
+        1e-9
+    ));
     assert_eq!(path.molar_flow_at(pi, None, 1e5, 0.0, 1.0), steady);
 }
 
@@ -136,7 +146,11 @@ fn arrhenius_scaling_is_exact() {
     // a data row: the ratio at two temperatures is the factor between them, whatever T_ref
     let row = permeation::data("nbr", "hydrogen").expect("row");
     let ratio = row.permeability_at(353.15) / row.permeability_at(263.15);
-    assert!(close(ratio, arrhenius_factor(row.permeability_activation, 353.15, 263.15), 1e-12));
+    assert!(close(
+        ratio,
+        arrhenius_factor(row.permeability_activation, 353.15, 263.15),
+        1e-12
+    ));
     // 36 kJ/mol from 23 °C to 80 °C: exp(36000/8.3145 · (1/296.15 − 1/353.15)) = exp(2.3599) ≈ 10.59
     let hot = row.permeability_at(353.15) / row.permeability;
     assert!((hot - 10.59).abs() < 0.01, "{hot}");
@@ -174,11 +188,19 @@ fn squeezed_cord_conserves_area_and_has_the_round_limit() {
         let bigger = PermeationPath::o_ring(2.0 * d, mean, eps).expect("ring");
         assert!(close(bigger.steady_molar_flow(pi, dp, 0.0), expect, 1e-12));
         // but the time lag grows with the path: w² ∝ d²
-        assert!(close(bigger.time_lag(3e-10), 4.0 * ring.time_lag(3e-10), 1e-12));
+        assert!(close(
+            bigger.time_lag(3e-10),
+            4.0 * ring.time_lag(3e-10),
+            1e-12
+        ));
     }
     // a flat gasket: 2 mm edge around 0.3 m, across a 10 mm land: Π·(6e-4 m²)·Δp/0.01 m
     let gasket = PermeationPath::gasket(2e-3, 10e-3, 0.3).expect("gasket");
-    assert!(close(gasket.steady_molar_flow(pi, dp, 0.0), pi * 6e-4 * dp / 0.01, 1e-12));
+    assert!(close(
+        gasket.steady_molar_flow(pi, dp, 0.0),
+        pi * 6e-4 * dp / 0.01,
+        1e-12
+    ));
 }
 
 #[test]
