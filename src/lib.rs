@@ -11,7 +11,8 @@
 //!   junction, effective medium, contact tables), [`fluid`] (the leak law), [`leak`] (the
 //!   fidelity ladder of a flat seal), [`material`] (Prony series, shift, fits), [`seal`]
 //!   (pressure profiles), [`dynamic`] (reciprocating seals), [`clogging`], [`numerical`] (the
-//!   numerical reference), [`validity`] (the model's limits), on [`math`] (quadrature, solvers);
+//!   numerical reference), [`permeation`] (gas permeation through the rubber), [`validity`]
+//!   (the model's limits), on [`math`] (quadrature, solvers);
 //! * [`simulate`] (the life loop) and [`workflow`] (what each command does: leak, life,
 //!   compare, figures, trade-off);
 //! * output boundary: [`report`] (CSV, JSON, charts, atomic files) and, with the default `cli`
@@ -109,6 +110,7 @@ pub mod leak;
 pub mod material;
 pub mod math;
 pub mod numerical;
+pub mod permeation;
 pub mod profile;
 pub mod report;
 pub mod roughness;

@@ -27,6 +27,7 @@ mod life;
 mod model_reference;
 mod motion;
 mod numerical;
+mod permeation;
 mod physics;
 mod profile;
 mod properties;
