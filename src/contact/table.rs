@@ -13,15 +13,19 @@
 use super::{EffectiveMedium, EffectiveMediumSettings, Junction, PerssonContact};
 use crate::math::interp::UniformCubic;
 use crate::math::special::erf_inv;
+use std::sync::OnceLock;
 
 /// How the table is laid out.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TableSettings {
     /// Grid points per unit `log10` of `r/(1−r)` (≈ per decade of P0/E* at low pressure).
     pub points_per_decade: f64,
-    /// The table starts at `r = 10^-decades` below the sealing pressure (16 by default: a glassy
-    /// ring at lift-off reaches far below the rubbery range, docs/model.md §2).
+    /// The table starts at `r = 10^-decades` below the sealing pressure.
     pub decades: f64,
+    /// Further decades below `decades`, tabulated with the same spacing on the first lookup
+    /// there (0: none). A glassy ring at lift-off reaches far below the rubbery range
+    /// (docs/model.md §2); most runs never go there and do not pay for it.
+    pub extension: f64,
     /// The table ends at `r = 1 − upper_gap`; closer to sealing the exact path answers.
     pub upper_gap: f64,
 }
@@ -46,6 +50,7 @@ impl TableSettings {
             points_per_decade: 8.0,
             decades: 6.0,
             upper_gap: 0.03,
+            extension: 0.0,
         }
     }
 }
@@ -54,8 +59,9 @@ impl Default for TableSettings {
     fn default() -> Self {
         TableSettings {
             points_per_decade: 12.0,
-            decades: 16.0,
+            decades: 8.0,
             upper_gap: 0.03,
+            extension: 8.0,
         }
     }
 }
@@ -68,6 +74,10 @@ pub struct ContactTable {
     ln_h: f64,
     /// `None` if the surface left fewer than four tabulable nodes: every lookup is exact.
     grid: Option<Grid>,
+    /// The lazily built extension below `grid` (same spacing, ending at its first node), and
+    /// the grid variable where it starts (`+∞`: no extension).
+    low: OnceLock<Option<Grid>>,
+    low_start: f64,
 }
 
 #[derive(Debug, Clone, PartialEq)]
@@ -102,11 +112,59 @@ impl ContactTable {
             u_c: UniformCubic::new(lo, h, u),
             ubar_c: UniformCubic::new(lo, h, ub),
         });
+        // the extension: whole steps of h below lo, at least four nodes
+        let steps = (settings.extension * std::f64::consts::LN_10 / h).ceil();
+        let low_start = if grid.is_some() && steps >= 3.0 {
+            lo - h * steps
+        } else {
+            f64::INFINITY
+        };
         ContactTable {
             exact,
             s_seal,
             ln_h,
             grid,
+            low: OnceLock::new(),
+            low_start,
+        }
+    }
+
+    /// The extension grid from `low_start` to the main grid's first node (built on first use).
+    fn low_grid(&self) -> Option<&Grid> {
+        self.low
+            .get_or_init(|| {
+                let main = self.grid.as_ref()?;
+                let (lo, _) = main.u_c.range();
+                let h = main.u_c.spacing();
+                let n = ((lo - self.low_start) / h).round() as usize + 1;
+                let mut u = Vec::with_capacity(n);
+                let mut ub = Vec::with_capacity(n);
+                for i in 0..n {
+                    let s = self.s_seal * logistic(self.low_start + h * i as f64);
+                    let Junction::Leaking(j) = self.exact.critical_junction(s) else {
+                        return None;
+                    };
+                    u.push(j.u_c.ln() - self.ln_h);
+                    ub.push(j.ubar_c.ln() - self.ln_h);
+                }
+                Some(Grid {
+                    u_c: UniformCubic::new(self.low_start, h, u),
+                    ubar_c: UniformCubic::new(self.low_start, h, ub),
+                })
+            })
+            .as_ref()
+    }
+
+    /// The grid that covers the grid variable `v`, if any.
+    fn grid_at(&self, v: f64) -> Option<&Grid> {
+        let g = self.grid.as_ref()?;
+        let (lo, hi) = g.u_c.range();
+        if v >= lo && v <= hi {
+            Some(g)
+        } else if v < lo && v >= self.low_start {
+            self.low_grid()
+        } else {
+            None
         }
     }
 
@@ -115,10 +173,14 @@ impl ContactTable {
         &self.exact
     }
 
-    /// Range of `P0/E*` the table covers (`None`: no table); outside it lookups are exact.
+    /// Range of `P0/E*` the table covers, its extension included (`None`: no table); outside
+    /// it lookups are exact.
     pub fn range(&self) -> Option<(f64, f64)> {
         let (a, b) = self.grid.as_ref()?.u_c.range();
-        Some((self.s_seal * logistic(a), self.s_seal * logistic(b)))
+        Some((
+            self.s_seal * logistic(a.min(self.low_start)),
+            self.s_seal * logistic(b),
+        ))
     }
 
     /// u_c at `s = P0/E*` \[m\] (`None` when sealed): the same number as
@@ -126,22 +188,18 @@ impl ContactTable {
     /// conductance needs u_c alone, and the interface-pressure solutions ask for it thousands of
     /// times per state.
     pub fn critical_gap(&self, s: f64) -> Option<f64> {
-        let v = logit(s / self.s_seal);
-        match &self.grid {
-            // inside the grid r ≤ 1 − upper_gap < 1: below the sealing pressure, leaking
-            Some(g) if v >= g.u_c.range().0 && v <= g.u_c.range().1 => {
-                Some((g.u_c.eval(v) + self.ln_h).exp())
-            }
-            _ => self.exact.critical_junction(s).leaking().map(|j| j.u_c),
+        // inside a grid r ≤ 1 − upper_gap < 1: below the sealing pressure, leaking
+        match self.grid_at(logit(s / self.s_seal)) {
+            Some(g) => Some((g.u_c.eval(logit(s / self.s_seal)) + self.ln_h).exp()),
+            None => self.exact.critical_junction(s).leaking().map(|j| j.u_c),
         }
     }
 
     /// The critical junction at `s = P0/E*`: ζc exact, u_c and ū_c interpolated.
     pub fn critical_junction(&self, s: f64) -> Junction {
         let v = logit(s / self.s_seal);
-        let grid = match &self.grid {
-            Some(g) if v >= g.u_c.range().0 && v <= g.u_c.range().1 => g,
-            _ => return self.exact.critical_junction(s),
+        let Some(grid) = self.grid_at(v) else {
+            return self.exact.critical_junction(s);
         };
         let Some(ln_a) = self.exact.critical_ln_q(s) else {
             return Junction::Sealed;

@@ -20,6 +20,11 @@ impl UniformCubic {
         UniformCubic { x0, h, y }
     }
 
+    /// The grid spacing h.
+    pub fn spacing(&self) -> f64 {
+        self.h
+    }
+
     /// First and last abscissa.
     pub fn range(&self) -> (f64, f64) {
         (self.x0, self.x0 + self.h * (self.y.len() - 1) as f64)
