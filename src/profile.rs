@@ -144,6 +144,7 @@
 
 use crate::math::fft::{Complex, Fft1, Fft2, signed_index};
 use crate::math::quadrature::gauss_legendre;
+use crate::math::rng::SplitMix64;
 use crate::surface::{Spectrum, SpectrumError};
 use statrs::distribution::{ContinuousCDF, StudentsT};
 use std::collections::BTreeMap;
@@ -1148,31 +1149,6 @@ pub fn profile_parameters(
         evaluation_length: len * dx,
         mean_line,
     })
-}
-
-/// SplitMix64 (Steele, Lea & Flood, OOPSLA 2014): seeded, portable.
-struct SplitMix64(u64);
-
-impl SplitMix64 {
-    fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    }
-
-    /// Uniform in (0, 1].
-    fn uniform(&mut self) -> f64 {
-        ((self.next_u64() >> 11) + 1) as f64 * (1.0 / (1u64 << 53) as f64)
-    }
-
-    /// Two independent standard normals (Box–Muller).
-    fn normal_pair(&mut self) -> (f64, f64) {
-        let r = (-2.0 * self.uniform().ln()).sqrt();
-        let phi = 2.0 * PI * self.uniform();
-        (r * libm::cos(phi), r * libm::sin(phi))
-    }
 }
 
 /// A periodic Gaussian random isotropic surface of the 2-D spectrum `spectrum` on `n × n`

@@ -735,14 +735,8 @@ mod tests {
             2.0 * PI / (nx as f64 * pixel),
             2.0 * PI / (ny as f64 * pixel),
         );
-        let mut state = seed;
-        let mut uniform = || {
-            state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
-            let mut z = state;
-            z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-            z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-            ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rng = crate::math::rng::SplitMix64(seed);
+        let mut uniform = || rng.uniform();
         let mut spec = vec![Complex::new(0.0, 0.0); nx * ny];
         let index = |kx: i64, ky: i64| {
             (ky.rem_euclid(ny as i64) as usize) * nx + kx.rem_euclid(nx as i64) as usize

@@ -220,14 +220,8 @@ fn trace_reader_units_and_errors() {
 /// `2 C1D(q_k) Δq` (so that ⟨h²⟩ = 2 Σ C1D Δq, the 1-D convention of `sealsim::profile`),
 /// C1D the Abel transform of `c`; normals from SplitMix64 (Box–Muller).
 fn synthetic_trace(c: &Spectrum, n: usize, dx: f64, seed: u64) -> Vec<f64> {
-    let mut state = seed;
-    let mut uniform = || {
-        state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = state;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        (((z ^ (z >> 31)) >> 11) as f64 + 0.5) / (1u64 << 53) as f64
-    };
+    let mut rng = crate::rng::SplitMix64(seed);
+    let mut uniform = || rng.uniform();
     let length = n as f64 * dx;
     let dq = 2.0 * PI / length;
     let mut modes = Vec::new();
