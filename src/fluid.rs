@@ -6,7 +6,7 @@
 //! the reciprocating seal's pressure-driven part and the clogged interface — hands the fluid a
 //! [`FlowGeometry`] and a [`Conduction`] and gets the leak rate back from [`Fluid::leak_rate`].
 //! It is the fluid that decides how the boundary pressures drive the flow: an incompressible
-//! liquid linearly in ΔP, a gas ([`GasService`], docs/model.md §3.8) as an isothermal ideal gas
+//! liquid linearly in ΔP, a gas ([`GasService`], docs/model.md §3.9) as an isothermal ideal gas
 //! with its mass flux conserved, so that its throughput goes with P_a² − P_b².
 
 use crate::gas::Gas;
@@ -22,7 +22,7 @@ pub struct Fluid {
     pub pressure_difference: f64,
     /// How η follows the temperature (docs/model.md §3.7); the life loop evaluates it at T(t).
     pub law: ViscosityLaw,
-    /// `Some` for a gas: the gas and the absolute outlet pressure (docs/model.md §3.8).
+    /// `Some` for a gas: the gas and the absolute outlet pressure (docs/model.md §3.9).
     pub gas: Option<GasService>,
 }
 
@@ -33,6 +33,9 @@ pub struct GasService {
     pub gas: Gas,
     /// P_b, absolute \[Pa\].
     pub outlet_pressure: f64,
+    /// The gas temperature T \[K\] the fluid was last evaluated at ([`Fluid::at`]): the
+    /// temperature of its throughput and of its mean free path.
+    pub temperature: f64,
 }
 
 /// How a fluid's dynamic viscosity follows the temperature (docs/model.md §3.7).
@@ -46,7 +49,7 @@ pub enum ViscosityLaw {
     Walther(Walther),
     /// A dynamic viscosity by a Vogel fit to tabulated points ([`Vogel`]).
     Vogel(Vogel),
-    /// A gas's law (Sutherland, or a constant; docs/model.md §3.8).
+    /// A gas's law (Sutherland, or a constant; docs/model.md §3.9).
     Gas(Gas),
 }
 
@@ -359,6 +362,7 @@ impl Fluid {
     pub fn at(&self, temperature: f64) -> Fluid {
         Fluid {
             viscosity: self.viscosity_at(temperature),
+            gas: self.gas.map(|g| GasService { temperature, ..g }),
             ..*self
         }
     }
@@ -372,7 +376,7 @@ impl Fluid {
     /// **at the mean pressure** p̄ = (P_a + P_b)/2: the throughput ([`Fluid::throughput`])
     /// divided by p̄, which is the same expression (σ (P_a² − P_b²)/2 = σ ΔP p̄): the gas's
     /// continuum leak is the liquid law with the gas's viscosity, carried at the mean density
-    /// (docs/model.md §3.8). A sealed interface (σ = 0 or R = ∞) gives 0.
+    /// (docs/model.md §3.9). A sealed interface (σ = 0 or R = ∞) gives 0.
     pub fn leak_rate(&self, geometry: FlowGeometry, conduction: Conduction) -> f64 {
         if let (Some(q), Some(p)) = (self.throughput(geometry, conduction), self.mean_pressure()) {
             return q / p;
@@ -388,7 +392,7 @@ impl Fluid {
     }
 
     /// The throughput (pV flow) of a gas \[Pa·m³/s\] at the gas temperature through
-    /// `conduction` over `geometry`; `None` for a liquid (docs/model.md §3.8). Isothermal ideal
+    /// `conduction` over `geometry`; `None` for a liquid (docs/model.md §3.9). Isothermal ideal
     /// gas, mass flux conserved: per unit width `p q = −σ p dp/dx = −(σ/2) d(p²)/dx`, so
     /// * uniform: `Q = (L_y/L_x) σ (P_a² − P_b²)/2`;
     /// * series: `Q = L_y (P_a² − P_b²)/(2 ∫ dx/σ(x))`.
@@ -420,16 +424,17 @@ impl Fluid {
             .map(|g| g.outlet_pressure + 0.5 * self.pressure_difference)
     }
 
-    /// The Knudsen number `Kn = λ(p̄, T)/u` of a gas at a constriction of height `gap` \[m\]
-    /// and temperature `temperature` \[K\], with the hard-sphere mean free path at the mean
-    /// pressure p̄ ([`crate::gas::Gas::mean_free_path`]); `None` for a liquid.
-    pub fn knudsen(&self, gap: f64, temperature: f64) -> Option<f64> {
+    /// The Knudsen number `Kn = λ(p̄, T)/u` of a gas at a constriction of height `gap` \[m\],
+    /// with the hard-sphere mean free path ([`crate::gas::Gas::mean_free_path`]) at the mean
+    /// pressure p̄ = (P_a + P_b)/2 and the gas temperature T ([`GasService::temperature`]);
+    /// `None` for a liquid.
+    pub fn knudsen(&self, gap: f64) -> Option<f64> {
         let g = self.gas?;
         let p = self.mean_pressure()?;
-        Some(g.gas.mean_free_path(temperature, p) / gap)
+        Some(g.gas.mean_free_path(g.temperature, p) / gap)
     }
 
-    /// For the interface-pressure model (docs/model.md §3.6, §3.8): the weight by which a gas's
+    /// For the interface-pressure model (docs/model.md §3.6, §3.9): the weight by which a gas's
     /// local conductance at gauge fluid pressure `gauge` \[Pa\] over the outlet enters an
     /// effective conductance, `(P_b + gauge)/p̄` (the mass flux carries the local density);
     /// 1 for a liquid.

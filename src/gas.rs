@@ -1,5 +1,5 @@
 //! Gases: molar mass, viscosity against temperature, molecular diameter and mean free path
-//! (docs/model.md §3.8).
+//! (docs/model.md §3.9).
 //!
 //! A gas is a compressible fluid: sealsim treats it as an isothermal ideal gas whose mass flux
 //! is conserved along the interface ([`crate::fluid::Fluid::throughput`]). Its viscosity follows

@@ -314,7 +314,7 @@ const NUMERICAL_SEED: Field = field(
     Bound::Closed(0.0, 9_007_199_254_740_992.0),
 );
 
-/// The compound swollen by `swell` (docs/model.md §3.8): every Prony modulus, and a fixed
+/// The compound swollen by `swell` (docs/model.md §3.9): every Prony modulus, and a fixed
 /// asperity modulus, × [`VolumeSwell::modulus_factor`].
 fn swollen_material(
     mut material: Material,
@@ -400,7 +400,7 @@ impl Source<'_> {
         let fluid = fluid.at(environment.at(0.0));
         let thermal_strain = self.thermal_strain(&seal, &material, &environment)?;
         let ageing = self.scenario_ageing(raw.ageing.as_ref(), &material)?;
-        let failure = self.failure(raw.failure.as_ref())?;
+        let failure = self.failure(raw.failure.as_ref(), &fluid)?;
         let (time, fidelity) = self.simulation(raw.simulation.as_ref())?;
         self.cycle_budget(
             raw.simulation.as_ref(),
@@ -412,6 +412,26 @@ impl Source<'_> {
         let contamination = self.contamination(raw.contamination.as_ref(), clogging_tolerance)?;
         let numerical = self.numerical(raw.numerical.as_ref())?;
         let motion = self.motion(raw.motion.as_ref())?;
+        if fluid.gas.is_some() {
+            // a gas's interface flow is modelled for a static seal only (docs/model.md §3.9)
+            let stray = [
+                raw.motion.as_ref().map(|m| (m.span(), "motion")),
+                raw.contamination
+                    .as_ref()
+                    .map(|c| (c.span(), "contamination")),
+            ];
+            if let Some((span, key)) = stray.into_iter().flatten().next() {
+                return Err(self.error(
+                    span,
+                    key,
+                    format!(
+                        "[{key}] is modelled for a liquid only, but [fluid] is a gas (the \
+                         drag films of a reciprocating seal and particle clogging are liquid \
+                         models): remove [{key}] or give a liquid"
+                    ),
+                ));
+            }
+        }
         let life = LifeProblem {
             material: material.clone(),
             asperity_modulus,
@@ -484,7 +504,7 @@ impl Source<'_> {
                     format!(
                         "{} % volume swell is beyond seal practice (≈ {} %: the compound is \
                              not compatible with this fluid); the swell relations are applied \
-                             as given [docs/model.md §3.8]",
+                             as given [docs/model.md §3.9]",
                         show(100.0 * swell.volume_change),
                         show(100.0 * SWELL_PRACTICE)
                     ),
@@ -629,7 +649,7 @@ impl Source<'_> {
         raw.map(|q| self.quantity(q, field)).transpose()
     }
 
-    /// `[fluid] gas = "…"` (docs/model.md §3.8): a library gas or `"custom"` (with
+    /// `[fluid] gas = "…"` (docs/model.md §3.9): a library gas or `"custom"` (with
     /// `molar_mass`, `molecular_diameter` and either a constant `viscosity` or the Sutherland
     /// constants `sutherland_viscosity`, `sutherland_temperature`, `sutherland_constant`); the
     /// absolute `inlet_pressure` and `outlet_pressure`, or `pressure_difference` with the
@@ -755,6 +775,7 @@ impl Source<'_> {
             gas: Some(GasService {
                 gas,
                 outlet_pressure: outlet.unwrap_or(ATMOSPHERE),
+                temperature: ROOM_TEMPERATURE,
             }),
         }
         .at(ROOM_TEMPERATURE))
