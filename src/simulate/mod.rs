@@ -1055,12 +1055,12 @@ impl<'a> Simulator<'a> {
             if let Some(kn) = p.fluid.at(snap.temperature).knudsen(j.u_c) {
                 validity::knudsen(kn, at, findings);
             }
-        }
-        if p.fluid.gas.is_some()
-            && p.fluid.pressure_difference > 0.0
-            && matches!(snap.profile, Profile::Hertz { .. })
-        {
-            validity::gas_hertz_profile(at, findings);
+            if p.fluid.gas.is_some()
+                && p.fluid.pressure_difference > 0.0
+                && matches!(snap.profile, Profile::Hertz { .. })
+            {
+                validity::gas_hertz_profile(at, findings);
+            }
         }
         if let Some((ratio, limit)) = &snap.extrusion {
             validity::extrusion(*ratio, limit, at, findings);
