@@ -485,10 +485,9 @@ impl StaticSolver {
             out,
         );
         if let (Junction::Leaking(j), false) = (&point.junction, point.state == SealState::LiftOff)
+            && let Some(kn) = self.problem.fluid.knudsen(j.u_c)
         {
-            if let Some(kn) = self.problem.fluid.knudsen(j.u_c) {
-                validity::knudsen(kn, At::Pressure(point.nominal_pressure), out);
-            }
+            validity::knudsen(kn, At::Pressure(point.nominal_pressure), out);
         }
     }
 }

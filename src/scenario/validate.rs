@@ -718,6 +718,25 @@ impl Source<'_> {
             }
             known
         };
+        // a gauge unit on an absolute pressure is a mistake, not a conversion
+        for (q, key) in [
+            (&raw.inlet_pressure, INLET_PRESSURE.key),
+            (&raw.outlet_pressure, OUTLET_PRESSURE.key),
+        ] {
+            if let Some(q) = q
+                && let super::raw::RawQuantity::Text(t) = q.get_ref()
+                && (t.contains("barg") || t.contains("psig"))
+            {
+                return Err(self.error(
+                    q.span(),
+                    key,
+                    format!(
+                        "\"{t}\" is a gauge pressure, but {key} is absolute: write it in bar, Pa \
+                         or psi (absolute), or give pressure_difference"
+                    ),
+                ));
+            }
+        }
         let outlet = self.optional(raw.outlet_pressure.as_ref(), &OUTLET_PRESSURE)?;
         let pressure_difference = match (&raw.inlet_pressure, &raw.pressure_difference) {
             (Some(_), Some(dp)) => {
