@@ -219,6 +219,32 @@ fn bad_gas_input_exits_2_with_file_line_and_key() {
         "failure.max_leak_rate",
         "is a volume flow, but [fluid] is a gas",
     );
+    // a gauge unit on an absolute pressure
+    refused(
+        &FLAT_GAS.replace("inlet_pressure = \"2 bar\"", "inlet_pressure = \"1 barg\""),
+        12,
+        "fluid.inlet_pressure",
+        "is a gauge pressure",
+    );
+    // a library gas with a custom key; a custom gas without its molar mass
+    refused(
+        &FLAT_GAS.replace(
+            "gas = \"nitrogen\"",
+            "gas = \"nitrogen\"\nmolar_mass = \"28 g/mol\"",
+        ),
+        12,
+        "fluid.molar_mass",
+        "only goes with gas = \"custom\"",
+    );
+    refused(
+        &FLAT_GAS.replace(
+            "gas = \"nitrogen\"",
+            "gas = \"custom\"\nviscosity = \"17 uPa*s\"",
+        ),
+        10,
+        "fluid.molar_mass",
+        "missing key `molar_mass`",
+    );
     // absolute pressures on a liquid
     refused(
         &liquid.replace(
@@ -246,4 +272,18 @@ fn a_throughput_criterion_fails_a_leaking_gas_seal() {
     assert!(!fails("1e-4 mbar*L/s"));
     assert!(!fails("60 sccm"));
     assert!(fails("1e-3 sccm"));
+}
+
+#[test]
+fn a_custom_gas_with_nitrogens_constants_is_nitrogen() {
+    let custom = FLAT_GAS.replace(
+        "gas = \"nitrogen\"",
+        "gas = \"custom\"\nmolar_mass = \"28.014 g/mol\"\nmolecular_diameter = \"0.37 nm\"\n\
+         sutherland_viscosity = \"1.663e-5 Pa*s\"\nsutherland_temperature = \"273 K\"\n\
+         sutherland_constant = \"107 K\"",
+    );
+    let (c1, _, e1, h1, _) = run(FLAT_GAS);
+    let (c2, _, e2, h2, _) = run(&custom);
+    assert_eq!((c1, c2), (Some(0), Some(0)), "{e1}{e2}");
+    assert_eq!(h1, h2, "the same gas must give the same history");
 }
