@@ -5,10 +5,14 @@
 //! the static leak of a flat seal, the strips in series of a life run, the numerical reference,
 //! the reciprocating seal's pressure-driven part and the clogged interface — hands the fluid a
 //! [`FlowGeometry`] and a [`Conduction`] and gets the leak rate back from [`Fluid::leak_rate`].
-//! A compressible gas will plug in here: it is the fluid that decides how the boundary
-//! pressures drive the flow (for an incompressible liquid, linearly in ΔP).
+//! It is the fluid that decides how the boundary pressures drive the flow: an incompressible
+//! liquid linearly in ΔP, a gas ([`GasService`], docs/model.md §3.9) as an isothermal ideal gas
+//! with its mass flux conserved, so that its throughput goes with P_a² − P_b².
 
-/// A Newtonian, incompressible fluid and the pressure it pushes across the seal.
+use crate::gas::Gas;
+
+/// A Newtonian fluid and the pressure it pushes across the seal: an incompressible liquid, or
+/// (with [`Fluid::gas`]) an isothermal ideal gas.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Fluid {
     /// Dynamic viscosity η \[Pa·s\] at the reference (installation) temperature T(0): the
@@ -18,6 +22,20 @@ pub struct Fluid {
     pub pressure_difference: f64,
     /// How η follows the temperature (docs/model.md §3.7); the life loop evaluates it at T(t).
     pub law: ViscosityLaw,
+    /// `Some` for a gas: the gas and the absolute outlet pressure (docs/model.md §3.9).
+    pub gas: Option<GasService>,
+}
+
+/// A gas on the pressurised side of the seal: which gas, and the absolute pressure P_b \[Pa\]
+/// on the outlet side (≥ 0; vacuum is 0). The inlet pressure is P_a = P_b + ΔP.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GasService {
+    pub gas: Gas,
+    /// P_b, absolute \[Pa\].
+    pub outlet_pressure: f64,
+    /// The gas temperature T \[K\] the fluid was last evaluated at ([`Fluid::at`]): the
+    /// temperature of its throughput and of its mean free path.
+    pub temperature: f64,
 }
 
 /// How a fluid's dynamic viscosity follows the temperature (docs/model.md §3.7).
@@ -31,6 +49,8 @@ pub enum ViscosityLaw {
     Walther(Walther),
     /// A dynamic viscosity by a Vogel fit to tabulated points ([`Vogel`]).
     Vogel(Vogel),
+    /// A gas's law (Sutherland, or a constant; docs/model.md §3.9).
+    Gas(Gas),
 }
 
 /// The Vogel (Vogel–Fulcher–Tammann) equation for the dynamic viscosity,
@@ -155,6 +175,7 @@ impl ViscosityLaw {
             ViscosityLaw::Water => Some(water_viscosity(temperature)),
             ViscosityLaw::Walther(w) => Some(w.dynamic(temperature)),
             ViscosityLaw::Vogel(v) => Some(v.dynamic(temperature)),
+            ViscosityLaw::Gas(g) => Some(g.viscosity.at(temperature)),
         }
     }
 
@@ -165,6 +186,7 @@ impl ViscosityLaw {
             ViscosityLaw::Water => Some(WATER_SOURCE),
             ViscosityLaw::Walther(w) => Some(w.source),
             ViscosityLaw::Vogel(v) => Some(v.source),
+            ViscosityLaw::Gas(g) => Some(g.source),
         }
     }
 }
@@ -340,6 +362,7 @@ impl Fluid {
     pub fn at(&self, temperature: f64) -> Fluid {
         Fluid {
             viscosity: self.viscosity_at(temperature),
+            gas: self.gas.map(|g| GasService { temperature, ..g }),
             ..*self
         }
     }
@@ -349,9 +372,15 @@ impl Fluid {
     /// * series: `Q̇ = L_y ΔP / ∫ dx/σ(x)` (the flux per unit width is the same through every
     ///   strip; with σ uniform it is the uniform law).
     ///
-    /// An incompressible fluid's volume flow is linear in ΔP. A sealed interface (σ = 0 or
-    /// R = ∞) gives 0.
+    /// An incompressible fluid's volume flow is linear in ΔP. For a gas this is the volume flow
+    /// **at the mean pressure** p̄ = (P_a + P_b)/2: the throughput ([`Fluid::throughput`])
+    /// divided by p̄, which is the same expression (σ (P_a² − P_b²)/2 = σ ΔP p̄): the gas's
+    /// continuum leak is the liquid law with the gas's viscosity, carried at the mean density
+    /// (docs/model.md §3.9). A sealed interface (σ = 0 or R = ∞) gives 0.
     pub fn leak_rate(&self, geometry: FlowGeometry, conduction: Conduction) -> f64 {
+        if let (Some(q), Some(p)) = (self.throughput(geometry, conduction), self.mean_pressure()) {
+            return q / p;
+        }
         match conduction {
             Conduction::Uniform { conductance } => {
                 geometry.cells() * conductance * self.pressure_difference
@@ -359,6 +388,60 @@ impl Fluid {
             Conduction::Series { resistance } => {
                 geometry.across_flow * self.pressure_difference / resistance
             }
+        }
+    }
+
+    /// The throughput (pV flow) of a gas \[Pa·m³/s\] at the gas temperature through
+    /// `conduction` over `geometry`; `None` for a liquid (docs/model.md §3.9). Isothermal ideal
+    /// gas, mass flux conserved: per unit width `p q = −σ p dp/dx = −(σ/2) d(p²)/dx`, so
+    /// * uniform: `Q = (L_y/L_x) σ (P_a² − P_b²)/2`;
+    /// * series: `Q = L_y (P_a² − P_b²)/(2 ∫ dx/σ(x))`.
+    ///
+    /// The continuum law; rarefaction (Kn = λ/u_c not small) is only warned about.
+    pub fn throughput(&self, geometry: FlowGeometry, conduction: Conduction) -> Option<f64> {
+        let gas = self.gas?;
+        let (pa, pb) = (
+            gas.outlet_pressure + self.pressure_difference,
+            gas.outlet_pressure,
+        );
+        let half_squares = 0.5 * (pa * pa - pb * pb);
+        Some(match conduction {
+            Conduction::Uniform { conductance } => geometry.cells() * conductance * half_squares,
+            Conduction::Series { resistance } => geometry.across_flow * half_squares / resistance,
+        })
+    }
+
+    /// The throughput \[Pa·m³/s\] that goes with a leak rate `leak_rate` \[m³/s\] of
+    /// [`Fluid::leak_rate`] (the volume flow at the mean pressure): `Q = p̄ Q̇`; `None` for a
+    /// liquid.
+    pub fn throughput_of(&self, leak_rate: f64) -> Option<f64> {
+        self.mean_pressure().map(|p| p * leak_rate)
+    }
+
+    /// The mean absolute pressure p̄ = (P_a + P_b)/2 \[Pa\] of a gas; `None` for a liquid.
+    pub fn mean_pressure(&self) -> Option<f64> {
+        self.gas
+            .map(|g| g.outlet_pressure + 0.5 * self.pressure_difference)
+    }
+
+    /// The Knudsen number `Kn = λ(p̄, T)/u` of a gas at a constriction of height `gap` \[m\],
+    /// with the hard-sphere mean free path ([`crate::gas::Gas::mean_free_path`]) at the mean
+    /// pressure p̄ = (P_a + P_b)/2 and the gas temperature T ([`GasService::temperature`]);
+    /// `None` for a liquid.
+    pub fn knudsen(&self, gap: f64) -> Option<f64> {
+        let g = self.gas?;
+        let p = self.mean_pressure()?;
+        Some(g.gas.mean_free_path(g.temperature, p) / gap)
+    }
+
+    /// For the interface-pressure model (docs/model.md §3.6, §3.9): the weight by which a gas's
+    /// local conductance at gauge fluid pressure `gauge` \[Pa\] over the outlet enters an
+    /// effective conductance, `(P_b + gauge)/p̄` (the mass flux carries the local density);
+    /// 1 for a liquid.
+    pub fn density_weight(&self, gauge: f64) -> f64 {
+        match (self.gas, self.mean_pressure()) {
+            (Some(g), Some(p)) => (g.outlet_pressure + gauge) / p,
+            _ => 1.0,
         }
     }
 }
@@ -378,6 +461,7 @@ mod tests {
         viscosity: 1e-3,
         pressure_difference: 1e5,
         law: ViscosityLaw::Constant,
+        gas: None,
     };
 
     #[test]

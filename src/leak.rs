@@ -427,9 +427,12 @@ impl StaticSolver {
         let pb = &self.problem;
         let e_star = pb.material.effective_modulus();
         let junction = self.path.critical_junction(p0 / e_star);
+        // a gas: σ(e) weighed by the local density (P_b + p_f)/p̄, p_f = P0 − e (docs/model.md
+        // §3.9); 1 for a liquid
         let sigma = |e: f64| {
             self.path
                 .conductance(e / e_star, pb.shape_factor, pb.fluid.viscosity)
+                * pb.fluid.density_weight(p0 - e)
         };
         let (leak_rate, state) = match interface::uniform(
             &sigma,
@@ -481,5 +484,10 @@ impl StaticSolver {
             At::Pressure(point.nominal_pressure),
             out,
         );
+        if let (Junction::Leaking(j), false) = (&point.junction, point.state == SealState::LiftOff)
+            && let Some(kn) = self.problem.fluid.knudsen(j.u_c)
+        {
+            validity::knudsen(kn, At::Pressure(point.nominal_pressure), out);
+        }
     }
 }

@@ -81,7 +81,7 @@
 //!     material: Elastic { youngs_modulus: 10e6, poisson_ratio: 0.5 },
 //!     // h_rms = 2 µm, H = 0.8, q0 = 1e4 1/m, q1 = 7.8e9 1/m
 //!     spectrum: Spectrum::self_affine(2e-6, 0.8, 1e4, 7.8e9, None)?,
-//!     fluid: Fluid { viscosity: 1e-3, pressure_difference: 0.01e6, law: ViscosityLaw::Constant },
+//!     fluid: Fluid { viscosity: 1e-3, pressure_difference: 0.01e6, law: ViscosityLaw::Constant, gas: None },
 //!     seal: FlatSeal { nominal_pressure: 0.2e6, width: 1e-3, length: 1e-3 },
 //!     contact: ContactSettings::default(),
 //!     shape_factor: 1.0,
@@ -104,6 +104,7 @@ pub mod contact;
 pub mod dynamic;
 pub mod extrusion;
 pub mod fluid;
+pub mod gas;
 pub mod gland;
 pub mod interface;
 pub mod leak;

@@ -383,6 +383,7 @@ mod tests {
             viscosity: 1e-3,
             pressure_difference,
             law: crate::fluid::ViscosityLaw::Constant,
+            gas: None,
         };
         let resistance = profile.series_resistance(rule, conductance);
         fluid.leak_rate(

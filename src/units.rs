@@ -31,6 +31,7 @@
 //! | `year`, `yr` | Julian year, 365.25 d | no |
 //! | `Pa`, `bar` | pascal, bar (10⁵ Pa) | yes |
 //! | `psi`, `atm` | 6894.757293168 Pa, 101325 Pa | no |
+//! | `Torr` | 101325/760 Pa | yes |
 //! | `N`, `J`, `W` | newton, joule, watt | yes |
 //! | `mol` | mole | yes |
 //! | `K` | kelvin | yes |
@@ -117,8 +118,11 @@ impl Dimension {
     pub const FORCE: Dimension = Dimension::new(1, 1, -2, 0, 0);
     /// J.
     pub const ENERGY: Dimension = Dimension::new(2, 1, -2, 0, 0);
-    /// W.
+    /// W. Also the dimension of a gas throughput (pressure × volume / time, Pa·m³/s): which
+    /// one a key means is the key's ([`parse_throughput`]).
     pub const POWER: Dimension = Dimension::new(2, 1, -3, 0, 0);
+    /// mol/s.
+    pub const MOLAR_FLOW: Dimension = Dimension::new(0, 0, -1, 0, 1);
 
     /// Human name, e.g. "pressure", "length", "wavevector (1/length)"; for an unnamed
     /// combination a formula like "m^-1·kg·s^-2".
@@ -281,6 +285,7 @@ const NAMED_DIMENSIONS: &[NamedDimension] = &[
     named(Dimension::FORCE, "force", "1 N"),
     named(Dimension::ENERGY, "energy", "1 J"),
     named(Dimension::POWER, "power", "1 W"),
+    named(Dimension::MOLAR_FLOW, "molar flow", "1e-9 mol/s"),
 ];
 
 fn article(noun: &str) -> &'static str {
@@ -349,14 +354,16 @@ pub enum UnitError {
     AffineInCompound { unit: String },
     /// An absolute temperature below 0 K.
     BelowAbsoluteZero { kelvin: f64 },
+    /// A gas throughput was expected (pV flow, standard volume flow or molar flow).
+    NotAThroughput { unit: String, found: Dimension },
     /// The unit expression does not follow the grammar ("m^", "m//s", "m**s") or its
     /// exponents or conversion factor are out of range ("m^999").
     MalformedUnit { unit: String, reason: &'static str },
 }
 
 const KNOWN_UNITS_HINT: &str = "known units: m, g, s, min, h, hr, d, day, week, year, yr, \
-     Pa, bar, psi, atm, N, J, W, mol, K, L, l, P (poise), St (stokes), Hz, and C/F for \
-     temperatures; SI prefixes P T G M k c m u µ μ n p f apply to m, g, s, Pa, bar, N, J, W, mol, \
+     Pa, bar, psi, atm, Torr, N, J, W, mol, K, L, l, P (poise), St (stokes), Hz, and C/F for \
+     temperatures; SI prefixes P T G M k c m u µ μ n p f apply to m, g, s, Pa, bar, Torr, N, J, W, mol, \
      K, L, l, P, St, Hz";
 
 impl fmt::Display for UnitError {
@@ -396,6 +403,12 @@ impl fmt::Display for UnitError {
                 "\"{unit}\": Celsius and Fahrenheit (C, °C, degC, F, °F, degF) can only be \
                  used as the whole unit (e.g. \"80 C\") or as \"1/C\"; use K inside compound units"
             ),
+            UnitError::NotAThroughput { unit, found } => write!(
+                f,
+                "expected a gas throughput (pressure × volume / time: Pa*m^3/s, mbar*L/s, \
+                 Torr*L/s; or sccm, slm, mol/s), but \"{unit}\" {}",
+                found.found_phrase()
+            ),
             UnitError::BelowAbsoluteZero { kelvin } => {
                 write!(f, "temperature {} K is below absolute zero", show(*kelvin))
             }
@@ -432,6 +445,54 @@ pub fn parse_quantity(text: &str, expected: Dimension) -> Result<f64, UnitError>
             expected,
         });
     }
+    finite(si, text)
+}
+
+/// A gas throughput \[Pa·m³/s\] at the gas temperature `temperature` \[K\] (docs/model.md
+/// §3.9, §11):
+/// * a pV flow, any unit of pressure × volume / time (`Pa*m^3/s`, `mbar*L/s` = 0.1 Pa·m³/s
+///   exactly, `Torr*L/s`): taken as is (a pV flow has the dimension of a power, W; the key,
+///   not the unit, says it is a throughput);
+/// * `sccm`, `slm` (standard cm³ or litres per minute at the SEMI reference state, 273.15 K
+///   and 101325 Pa): `n × 101325 Pa × 1e-6 m³/60 s` (× 1e3 for slm) is the throughput at
+///   273.15 K; at T the same moles carry `× T/273.15`;
+/// * a molar flow (`mol/s`, `umol/s`): `ṅ R T`.
+pub fn parse_throughput(text: &str, temperature: f64) -> Result<f64, UnitError> {
+    let (value, unit) = split_quantity(text)?;
+    let standard = match unit {
+        "sccm" => Some(crate::gas::SCCM),
+        "slm" => Some(crate::gas::SLM),
+        _ => None,
+    };
+    if let Some(per_unit) = standard {
+        return finite(
+            value * per_unit * temperature / crate::gas::STANDARD_TEMPERATURE,
+            text,
+        );
+    }
+    if unit.is_empty() {
+        return Err(UnitError::MissingUnit {
+            expected: Dimension::POWER,
+        });
+    }
+    let si = match resolve_unit(unit)? {
+        Resolved::Linear(factor, Dimension::POWER) => value * factor,
+        Resolved::Linear(factor, Dimension::MOLAR_FLOW) => {
+            value * factor * crate::gas::GAS_CONSTANT * temperature
+        }
+        Resolved::Linear(_, found) => {
+            return Err(UnitError::NotAThroughput {
+                unit: unit.to_string(),
+                found,
+            });
+        }
+        Resolved::Affine(_) => {
+            return Err(UnitError::NotAThroughput {
+                unit: unit.to_string(),
+                found: Dimension::TEMPERATURE,
+            });
+        }
+    };
     finite(si, text)
 }
 
@@ -841,6 +902,8 @@ const UNITS: &[UnitDef] = &[
     unit("psig", 6894.757293168, Dimension::PRESSURE, false),
     unit("barg", 1e5, Dimension::PRESSURE, false),
     unit("atm", 101_325.0, Dimension::PRESSURE, false),
+    // 1 Torr = 101325/760 Pa (exact by definition; mTorr is the vacuum gauges' unit)
+    unit("Torr", 101_325.0 / 760.0, Dimension::PRESSURE, true),
     unit("N", 1.0, Dimension::FORCE, true),
     unit("J", 1.0, Dimension::ENERGY, true),
     unit("W", 1.0, Dimension::POWER, true),

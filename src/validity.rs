@@ -84,11 +84,27 @@ pub enum Limit {
     IhlTransition,
     /// An O-ring's inlet pressure gradients estimated from its Hertz profile (§9.9).
     GradientEstimate,
+    /// A gas at the critical constriction with Kn > [`KNUDSEN_SLIP`]: slip flow (§9.14).
+    KnudsenSlip,
+    /// Kn > [`KNUDSEN_TRANSITION`]: transition flow (§9.14).
+    KnudsenTransition,
+    /// Kn > [`KNUDSEN_FREE_MOLECULAR`]: free-molecular flow (§9.14).
+    KnudsenFreeMolecular,
+    /// A gas in a Hertz contact: the fluid pressure that loads the asperities follows the
+    /// liquid's profile (§9.14).
+    GasHertzProfile,
 }
+
+/// Knudsen number above which a gas slips at the walls (docs/model.md §9.14).
+pub const KNUDSEN_SLIP: f64 = 0.01;
+/// Knudsen number above which a gas is in the transition regime (docs/model.md §9.14).
+pub const KNUDSEN_TRANSITION: f64 = 0.1;
+/// Knudsen number above which a gas flows free-molecularly (docs/model.md §9.14).
+pub const KNUDSEN_FREE_MOLECULAR: f64 = 10.0;
 
 impl Limit {
     /// Every limit, in the order of docs/model.md.
-    pub const ALL: [Limit; 19] = [
+    pub const ALL: [Limit; 23] = [
         Limit::PressureRatio,
         Limit::AspectRatio,
         Limit::MolecularGap,
@@ -108,6 +124,10 @@ impl Limit {
         Limit::DataTemperature,
         Limit::IhlTransition,
         Limit::GradientEstimate,
+        Limit::KnudsenSlip,
+        Limit::KnudsenTransition,
+        Limit::KnudsenFreeMolecular,
+        Limit::GasHertzProfile,
     ];
 
     /// The limit's identifier in JSON summaries.
@@ -132,6 +152,10 @@ impl Limit {
             Limit::DataTemperature => "beyond_data_temperature",
             Limit::IhlTransition => "speed_in_ihl_transition",
             Limit::GradientEstimate => "estimated_pressure_gradients",
+            Limit::KnudsenSlip => "knudsen_slip",
+            Limit::KnudsenTransition => "knudsen_transition",
+            Limit::KnudsenFreeMolecular => "knudsen_free_molecular",
+            Limit::GasHertzProfile => "gas_hertz_profile",
         }
     }
 
@@ -151,6 +175,10 @@ impl Limit {
             Limit::NoFailureCriterion => "§8",
             Limit::Extrusion | Limit::ExtrusionChart => "§9.12",
             Limit::DataTime | Limit::DataTemperature => "§9.13",
+            Limit::KnudsenSlip
+            | Limit::KnudsenTransition
+            | Limit::KnudsenFreeMolecular
+            | Limit::GasHertzProfile => "§9.14",
         }
     }
 
@@ -173,6 +201,10 @@ impl Limit {
             Limit::Extrusion => Some(("clearance/limit", "")),
             Limit::DataTime => Some(("reduced time", "s")),
             Limit::DataTemperature => Some(("T", "K")),
+            Limit::KnudsenSlip | Limit::KnudsenTransition | Limit::KnudsenFreeMolecular => {
+                Some(("Kn = λ(p̄)/u_c", ""))
+            }
+            Limit::GasHertzProfile => None,
         }
     }
 
@@ -253,6 +285,24 @@ impl Limit {
             Limit::DataTemperature => {
                 "outside the temperatures of the material's data: the shift (or, without one, the \
                  series itself) is extrapolated"
+            }
+            Limit::KnudsenSlip => {
+                "slip regime (Kn > 0.01) at the critical constriction: the continuum law is used; \
+                 rarefied flow not modelled yet (slip raises the flow by a few to tens of %)"
+            }
+            Limit::KnudsenTransition => {
+                "transition regime (Kn > 0.1) at the critical constriction: the continuum law is \
+                 used; rarefied flow not modelled yet (the leak can be off by a factor of several)"
+            }
+            Limit::KnudsenFreeMolecular => {
+                "free-molecular regime (Kn > 10) at the critical constriction: the continuum law \
+                 is used; rarefied flow not modelled yet (the leak can be off by orders of \
+                 magnitude)"
+            }
+            Limit::GasHertzProfile => {
+                "a gas in a Hertz contact: the fluid pressure loading the asperities follows the \
+                 liquid's profile (linear along the resistance), not the gas's (p² linear); the \
+                 throughput is the gas law"
             }
         }
     }
@@ -479,6 +529,24 @@ pub fn contact(state: &ContactState<'_>, at: At, out: &mut Findings) {
         let near = NEAR_CUTOFF_FRACTION * state.cutoff;
         out.check(Limit::NearCutoff, j.zeta_c > near, j.zeta_c, near, at);
     }
+}
+
+/// The Knudsen number `kn` of a gas at the critical constriction (docs/model.md §9.14):
+/// slip, transition and free-molecular regimes, each past its threshold.
+pub fn knudsen(kn: f64, at: At, out: &mut Findings) {
+    for (limit, bound) in [
+        (Limit::KnudsenSlip, KNUDSEN_SLIP),
+        (Limit::KnudsenTransition, KNUDSEN_TRANSITION),
+        (Limit::KnudsenFreeMolecular, KNUDSEN_FREE_MOLECULAR),
+    ] {
+        out.check(limit, kn > bound, kn, bound, at);
+    }
+}
+
+/// A gas in a Hertz contact: its interface pressure follows the liquid's profile
+/// (docs/model.md §9.14).
+pub fn gas_hertz_profile(at: At, out: &mut Findings) {
+    out.check(Limit::GasHertzProfile, true, 0.0, 0.0, at);
 }
 
 /// Hurst exponent (self-affine spectra) and rms slope of the surface (docs/model.md §9.5,

@@ -9,7 +9,7 @@
 use super::{CliError, print_findings, print_scenario_warnings, progress_bar, write_output};
 use crate::leak::Fidelity;
 use crate::report::life::{
-    Summary, has_positive_leak_rate, history_table, human_summary, leak_rate_chart,
+    Summary, has_positive_leak_rate, history_table_for, human_summary, leak_rate_chart,
 };
 use crate::scenario::Scenario;
 use crate::simulate::LifeResult;
@@ -75,7 +75,7 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
     let csv = args
         .output
         .as_ref()
-        .map(|_| history_table(&result))
+        .map(|_| history_table_for(&result, &scenario.life.fluid))
         .transpose()?;
     let json = args
         .summary

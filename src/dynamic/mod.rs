@@ -312,6 +312,7 @@ impl DragCoefficients {
             viscosity: self.viscosity,
             pressure_difference,
             law: crate::fluid::ViscosityLaw::Constant,
+            gas: None,
         };
         fluid.leak_rate(
             self.geometry,

@@ -856,6 +856,7 @@ mod tests {
             viscosity: ETA,
             pressure_difference: 1e6,
             law: crate::fluid::ViscosityLaw::Constant,
+            gas: None,
         };
         let geometry = crate::fluid::FlowGeometry {
             along_flow: 1e-3,

@@ -10,6 +10,7 @@ use super::ReportError;
 use super::csv::{csv_error, finish, number};
 use super::plot::{LogLogChart, Series};
 use crate::dynamic::{Motion, MotionPoint, MotionSpec, StrokeCycle};
+use crate::fluid::Fluid;
 use crate::material::shift::{DAY, YEAR};
 use crate::material::{Material, Status};
 use crate::report::findings::{FindingRecord, records};
@@ -72,9 +73,27 @@ pub const MOTION_HISTORY_COLUMNS: [&str; 5] = [
     "speed_regime",
 ];
 
+/// Column the history gets after [`HISTORY_COLUMNS`] for a gas (docs/model.md §3.9): the
+/// throughput (pV flow) at the gas temperature \[Pa·m³/s\], `p̄ × leak_rate_m3_per_s`, where
+/// a gas's `leak_rate_m3_per_s` is its volume flow at the mean pressure p̄ = (P_a + P_b)/2.
+pub const GAS_HISTORY_COLUMN: &str = "throughput_Pa_m3_per_s";
+
 /// The history of a life run as CSV: the header and one row per output time (t = 0, the
 /// installation, first). With `[motion]` the rows carry [`MOTION_HISTORY_COLUMNS`] too.
 pub fn history_table(result: &LifeResult) -> Result<String, ReportError> {
+    history_table_with(result, None)
+}
+
+/// [`history_table`] of a run whose fluid is `fluid`: a gas adds [`GAS_HISTORY_COLUMN`].
+pub fn history_table_for(result: &LifeResult, fluid: &Fluid) -> Result<String, ReportError> {
+    history_table_with(result, fluid.mean_pressure())
+}
+
+/// The history with the throughput column when `mean_pressure` p̄ \[Pa\] is given (a gas).
+fn history_table_with(
+    result: &LifeResult,
+    mean_pressure: Option<f64>,
+) -> Result<String, ReportError> {
     let motion = result.rows.iter().any(|r| r.motion.is_some());
     let stroke = result
         .rows
@@ -90,6 +109,7 @@ pub fn history_table(result: &LifeResult) -> Result<String, ReportError> {
         .write_record(
             HISTORY_COLUMNS
                 .iter()
+                .chain(mean_pressure.map(|_| &GAS_HISTORY_COLUMN))
                 .chain(&MOTION_HISTORY_COLUMNS[..extra]),
         )
         .map_err(csv_error)?;
@@ -138,8 +158,12 @@ pub fn history_table(result: &LifeResult) -> Result<String, ReportError> {
             cell(12, r.open_fraction)?,
             optional(13, r.compression_set)?,
         ];
+        let gas_cell = match mean_pressure {
+            Some(p) => Some(number(row, GAS_HISTORY_COLUMN, p * r.leak_rate)?),
+            None => None,
+        };
         writer
-            .write_record(record.into_iter().chain(motion_cells))
+            .write_record(record.into_iter().chain(gas_cell).chain(motion_cells))
             .map_err(csv_error)?;
     }
     finish(writer)
@@ -209,6 +233,71 @@ pub struct Summary {
     /// A groove-seated O-ring's gland (absent otherwise).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub gland: Option<GlandSummary>,
+    /// A gas's pressures and throughputs (absent for a liquid; docs/model.md §3.9).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub gas: Option<GasSummary>,
+}
+
+/// The `gas` object of the summary: the throughput (pV flow at the gas temperature) that goes
+/// with the leak rates above, which for a gas are volume flows at the mean pressure.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct GasSummary {
+    /// Library id or `custom`.
+    pub gas: String,
+    /// P_a, absolute \[Pa\].
+    #[serde(rename = "inlet_pressure_Pa")]
+    pub inlet_pressure_pa: f64,
+    /// P_b, absolute \[Pa\].
+    #[serde(rename = "outlet_pressure_Pa")]
+    pub outlet_pressure_pa: f64,
+    /// p̄ = (P_a + P_b)/2 \[Pa\], at which the leak rates are volume flows.
+    #[serde(rename = "mean_pressure_Pa")]
+    pub mean_pressure_pa: f64,
+    /// Throughput at installation \[Pa·m³/s\].
+    #[serde(rename = "initial_throughput_Pa_m3_per_s")]
+    pub initial_throughput: f64,
+    /// Throughput at the end \[Pa·m³/s\].
+    #[serde(rename = "final_throughput_Pa_m3_per_s")]
+    pub final_throughput: f64,
+    /// The same in mbar·L/s (1 mbar·L/s = 0.1 Pa·m³/s), the helium-leak-test form.
+    #[serde(rename = "initial_throughput_mbar_L_per_s")]
+    pub initial_throughput_mbar_l: f64,
+    #[serde(rename = "final_throughput_mbar_L_per_s")]
+    pub final_throughput_mbar_l: f64,
+}
+
+impl GasSummary {
+    fn new(fluid: &Fluid, result: &LifeResult) -> Option<Self> {
+        let gas = fluid.gas?;
+        let p = fluid.mean_pressure()?;
+        let (first, last) = (p * result.initial_leak_rate(), p * result.final_leak_rate());
+        Some(GasSummary {
+            gas: gas.gas.id.to_owned(),
+            inlet_pressure_pa: gas.outlet_pressure + fluid.pressure_difference,
+            outlet_pressure_pa: gas.outlet_pressure,
+            mean_pressure_pa: p,
+            initial_throughput: first,
+            final_throughput: last,
+            initial_throughput_mbar_l: first * 10.0,
+            final_throughput_mbar_l: last * 10.0,
+        })
+    }
+
+    fn values(&self) -> Vec<(&'static str, f64)> {
+        vec![
+            ("initial_throughput_Pa_m3_per_s", self.initial_throughput),
+            ("final_throughput_Pa_m3_per_s", self.final_throughput),
+        ]
+    }
+}
+
+/// A throughput \[Pa·m³/s\] in SI and in the helium-leak-test form:
+/// `"1.2e-9 Pa·m³/s (1.2e-8 mbar·L/s)"`.
+fn throughput(q: f64) -> String {
+    if q == 0.0 {
+        return "0 Pa·m³/s".to_owned();
+    }
+    format!("{} Pa·m³/s ({} mbar·L/s)", human(q, 3), human(q * 10.0, 3))
 }
 
 /// The `gland` object of the summary.
@@ -511,6 +600,7 @@ impl Summary {
                 energisation_factor: problem.energisation_factor,
                 extrusion_gap_m: g.extrusion_gap,
             }),
+            gas: GasSummary::new(&problem.fluid, result),
         }
     }
 
@@ -550,7 +640,12 @@ impl Summary {
             ),
         ];
         let motion = self.motion.as_ref().map(MotionSummary::values);
-        for (column, value) in values.into_iter().chain(motion.into_iter().flatten()) {
+        let gas = self.gas.as_ref().map(GasSummary::values);
+        for (column, value) in values
+            .into_iter()
+            .chain(motion.into_iter().flatten())
+            .chain(gas.into_iter().flatten())
+        {
             if !value.is_finite() {
                 return Err(ReportError::NonFinite {
                     row: 1,
@@ -648,21 +743,37 @@ pub fn human_summary(
         );
     }
     line("seal", seal_description(problem));
-    line(
-        "fluid",
-        match problem.fluid.law.source() {
-            None => format!(
-                "η = {} Pa·s, ΔP = {} MPa",
+    if let (Some(gas), Some(p_mean)) = (problem.fluid.gas, problem.fluid.mean_pressure()) {
+        line(
+            "fluid",
+            format!(
+                "gas {} (μ = {} Pa·s at installation, following T(t); {}), P_a = {} Pa, P_b = {} \
+                 Pa absolute; leak rates below are volume flows at the mean pressure p̄ = {} Pa",
+                gas.gas.id,
                 human(problem.fluid.viscosity, 3),
-                human(problem.fluid.pressure_difference / 1e6, 4)
+                gas.gas.source,
+                human(gas.outlet_pressure + problem.fluid.pressure_difference, 4),
+                human(gas.outlet_pressure, 4),
+                human(p_mean, 4)
             ),
-            Some(source) => format!(
-                "η = {} Pa·s at installation, following T(t) ({source}), ΔP = {} MPa",
-                human(problem.fluid.viscosity, 3),
-                human(problem.fluid.pressure_difference / 1e6, 4)
-            ),
-        },
-    );
+        );
+    } else {
+        line(
+            "fluid",
+            match problem.fluid.law.source() {
+                None => format!(
+                    "η = {} Pa·s, ΔP = {} MPa",
+                    human(problem.fluid.viscosity, 3),
+                    human(problem.fluid.pressure_difference / 1e6, 4)
+                ),
+                Some(source) => format!(
+                    "η = {} Pa·s at installation, following T(t) ({source}), ΔP = {} MPa",
+                    human(problem.fluid.viscosity, 3),
+                    human(problem.fluid.pressure_difference / 1e6, 4)
+                ),
+            },
+        );
+    }
     let env = &problem.environment;
     line(
         "temperature",
@@ -740,6 +851,17 @@ pub fn human_summary(
             flow(result.final_leak_rate())
         ),
     );
+    if let Some(p) = problem.fluid.mean_pressure() {
+        line(
+            "throughput",
+            format!(
+                "{} at installation, {} after {duration} (continuum law; see the Knudsen \
+                 warnings)",
+                throughput(p * result.initial_leak_rate()),
+                throughput(p * result.final_leak_rate())
+            ),
+        );
+    }
     line(
         "leaked volume",
         format!(

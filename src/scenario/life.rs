@@ -585,6 +585,7 @@ impl Source<'_> {
     pub(super) fn failure(
         &self,
         table: Option<&Spanned<RawFailure>>,
+        fluid: &crate::fluid::Fluid,
     ) -> Result<FailureCriteria, ScenarioError> {
         let Some(table) = table else {
             // the extrusion check is a property of a groove-seated ring: on unless switched off
@@ -596,7 +597,11 @@ impl Source<'_> {
         };
         let raw = table.get_ref();
         Ok(FailureCriteria {
-            max_leak_rate: self.optional(raw.max_leak_rate.as_ref(), &MAX_LEAK_RATE)?,
+            max_leak_rate: raw
+                .max_leak_rate
+                .as_ref()
+                .map(|q| self.max_leak_rate(q, fluid))
+                .transpose()?,
             max_leaked_volume: self.optional(raw.max_leaked_volume.as_ref(), &MAX_LEAKED_VOLUME)?,
             min_retained_force: self
                 .optional(raw.min_retained_force.as_ref(), &MIN_RETAINED_FORCE)?,
@@ -612,6 +617,67 @@ impl Source<'_> {
             // on unless switched off: it applies to groove-seated rings only
             extrusion: raw.extrusion.as_ref().is_none_or(|b| *b.get_ref()),
         })
+    }
+
+    /// `[failure] max_leak_rate` as the leak rate the run compares it with: a liquid's volume
+    /// flow \[m³/s\]; for a gas a throughput ([`crate::units::parse_throughput`] at the gas
+    /// temperature T(0): Pa·m³/s, mbar·L/s, Torr·L/s, sccm, slm, mol/s), returned as the
+    /// volume flow at the mean pressure it stands for, `Q/p̄` (docs/model.md §3.9). A
+    /// throughput for a liquid and a volume flow for a gas are refused: a gas's volume flow
+    /// depends on the pressure it is counted at.
+    fn max_leak_rate(
+        &self,
+        raw: &super::raw::Quantity,
+        fluid: &crate::fluid::Fluid,
+    ) -> Result<f64, ScenarioError> {
+        let text = match raw.get_ref() {
+            super::raw::RawQuantity::Text(t) => Some(t.as_str()),
+            super::raw::RawQuantity::Number(_) => None,
+        };
+        let (Some(gas), Some(p_mean)) = (fluid.gas, fluid.mean_pressure()) else {
+            if let Some(t) = text
+                && crate::units::parse_throughput(t, 293.15).is_ok()
+            {
+                return Err(self.error(
+                    raw.span(),
+                    MAX_LEAK_RATE.key,
+                    format!(
+                        "\"{t}\" is a gas throughput, but [fluid] is a liquid: give a volume flow \
+                         (e.g. \"1e-9 m^3/s\"), or make [fluid] a gas (`gas = \"helium\"`)"
+                    ),
+                ));
+            }
+            return self.quantity(raw, &MAX_LEAK_RATE);
+        };
+        let Some(t) = text else {
+            return Err(self.error(
+                raw.span(),
+                MAX_LEAK_RATE.key,
+                "a gas's leak-rate criterion needs its unit: a throughput such as \
+                 \"1e-9 mbar*L/s\", \"1e-10 Pa*m^3/s\", \"1e-4 sccm\" or \"1e-12 mol/s\"",
+            ));
+        };
+        if crate::units::parse_quantity(t, Dimension::VOLUME_FLOW).is_ok() {
+            return Err(self.error(
+                raw.span(),
+                MAX_LEAK_RATE.key,
+                format!(
+                    "\"{t}\" is a volume flow, but [fluid] is a gas, whose volume flow depends \
+                     on the pressure it is counted at: give a throughput (Pa*m^3/s, mbar*L/s, \
+                     Torr*L/s, sccm, slm or mol/s)"
+                ),
+            ));
+        }
+        let q = crate::units::parse_throughput(t, gas.temperature)
+            .map_err(|e| self.error(raw.span(), MAX_LEAK_RATE.key, e.to_string()))?;
+        if !(1e-30..=1e6).contains(&q) {
+            return Err(self.error(
+                raw.span(),
+                MAX_LEAK_RATE.key,
+                format!("must lie in [1e-30, 1e6] Pa·m³/s, got {} Pa·m³/s", show(q)),
+            ));
+        }
+        Ok(q / p_mean)
     }
 
     /// `seal.installation_time` (default [`DEFAULT_INSTALLATION_TIME`]).

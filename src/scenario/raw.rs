@@ -230,7 +230,19 @@ pub(super) struct RawFluid {
     pub viscosity_100c: Option<Quantity>,
     pub density: Option<Quantity>,
     pub thermal_expansion: Option<Quantity>,
-    pub pressure_difference: Quantity,
+    /// ΔP (for a gas: with the outlet at `outlet_pressure`, default 1 atm).
+    pub pressure_difference: Option<Quantity>,
+    /// A gas of [`crate::gas::library`] or `"custom"` (docs/model.md §3.8).
+    pub gas: Option<Spanned<String>>,
+    /// Custom gas: molar mass, hard-sphere diameter, Sutherland μ0, T0, S.
+    pub molar_mass: Option<Quantity>,
+    pub molecular_diameter: Option<Quantity>,
+    pub sutherland_viscosity: Option<Quantity>,
+    pub sutherland_temperature: Option<Quantity>,
+    pub sutherland_constant: Option<Quantity>,
+    /// Gas: absolute pressures on the pressurised and the outlet side.
+    pub inlet_pressure: Option<Quantity>,
+    pub outlet_pressure: Option<Quantity>,
     /// ASTM D471 equilibrium volume change ΔV/V0 of the compound in this fluid.
     pub volume_swell: Option<Quantity>,
 }

@@ -11,7 +11,7 @@ use super::raw::{
     Quantity, RawFluid, RawModel, RawNumerical, RawQuantity, RawScenario, RawSurface,
 };
 use crate::contact::ContactSettings;
-use crate::fluid::{Fluid, LibraryFluid, MINERAL_OIL_EXPANSION, ViscosityLaw, Walther};
+use crate::fluid::{Fluid, GasService, LibraryFluid, MINERAL_OIL_EXPANSION, ViscosityLaw, Walther};
 use crate::leak::{FlatSeal, StaticProblem};
 use crate::material::Material;
 use crate::numerical::reference::NumericalSettings;
@@ -226,6 +226,50 @@ const PRESSURE_DIFFERENCE: Field = field(
     "Pa",
     Bound::Range(0.0, 1e10),
 );
+const INLET_PRESSURE: Field = field(
+    "fluid.inlet_pressure",
+    Dimension::PRESSURE,
+    "Pa",
+    Bound::Range(0.0, 1e10),
+);
+const OUTLET_PRESSURE: Field = field(
+    "fluid.outlet_pressure",
+    Dimension::PRESSURE,
+    "Pa",
+    Bound::Range(0.0, 1e10),
+);
+const MOLAR_MASS: Field = field(
+    "fluid.molar_mass",
+    Dimension::new(0, 1, 0, 0, -1),
+    "kg/mol",
+    Bound::Range(1e-3, 1.0),
+);
+const MOLECULAR_DIAMETER: Field = field(
+    "fluid.molecular_diameter",
+    Dimension::LENGTH,
+    "m",
+    Bound::Range(1e-11, 1e-8),
+);
+const GAS_VISCOSITY: Field = field(
+    "fluid.viscosity",
+    Dimension::VISCOSITY,
+    "Pa·s",
+    Bound::Range(1e-7, 1e-3),
+);
+const SUTHERLAND_VISCOSITY: Field = field(
+    "fluid.sutherland_viscosity",
+    Dimension::VISCOSITY,
+    "Pa·s",
+    Bound::Range(1e-7, 1e-3),
+);
+const SUTHERLAND_CONSTANT: Field = field(
+    "fluid.sutherland_constant",
+    Dimension::TEMPERATURE,
+    "K",
+    Bound::Range(0.0, 5000.0),
+);
+/// Outlet pressure of a gas given only `pressure_difference`: 1 atm \[Pa\].
+const ATMOSPHERE: f64 = 101_325.0;
 const PERCOLATION_THRESHOLD: Field = field(
     "model.percolation_threshold",
     Dimension::DIMENSIONLESS,
@@ -270,7 +314,7 @@ const NUMERICAL_SEED: Field = field(
     Bound::Closed(0.0, 9_007_199_254_740_992.0),
 );
 
-/// The compound swollen by `swell` (docs/model.md §3.8): every Prony modulus, and a fixed
+/// The compound swollen by `swell` (docs/model.md §3.9): every Prony modulus, and a fixed
 /// asperity modulus, × [`VolumeSwell::modulus_factor`].
 fn swollen_material(
     mut material: Material,
@@ -356,7 +400,7 @@ impl Source<'_> {
         let fluid = fluid.at(environment.at(0.0));
         let thermal_strain = self.thermal_strain(&seal, &material, &environment)?;
         let ageing = self.scenario_ageing(raw.ageing.as_ref(), &material)?;
-        let failure = self.failure(raw.failure.as_ref())?;
+        let failure = self.failure(raw.failure.as_ref(), &fluid)?;
         let (time, fidelity) = self.simulation(raw.simulation.as_ref())?;
         self.cycle_budget(
             raw.simulation.as_ref(),
@@ -368,6 +412,26 @@ impl Source<'_> {
         let contamination = self.contamination(raw.contamination.as_ref(), clogging_tolerance)?;
         let numerical = self.numerical(raw.numerical.as_ref())?;
         let motion = self.motion(raw.motion.as_ref())?;
+        if fluid.gas.is_some() {
+            // a gas's interface flow is modelled for a static seal only (docs/model.md §3.9)
+            let stray = [
+                raw.motion.as_ref().map(|m| (m.span(), "motion")),
+                raw.contamination
+                    .as_ref()
+                    .map(|c| (c.span(), "contamination")),
+            ];
+            if let Some((span, key)) = stray.into_iter().flatten().next() {
+                return Err(self.error(
+                    span,
+                    key,
+                    format!(
+                        "[{key}] is modelled for a liquid only, but [fluid] is a gas (the \
+                         drag films of a reciprocating seal and particle clogging are liquid \
+                         models): remove [{key}] or give a liquid"
+                    ),
+                ));
+            }
+        }
         let life = LifeProblem {
             material: material.clone(),
             asperity_modulus,
@@ -440,7 +504,7 @@ impl Source<'_> {
                     format!(
                         "{} % volume swell is beyond seal practice (≈ {} %: the compound is \
                              not compatible with this fluid); the swell relations are applied \
-                             as given [docs/model.md §3.8]",
+                             as given [docs/model.md §3.9]",
                         show(100.0 * swell.volume_change),
                         show(100.0 * SWELL_PRACTICE)
                     ),
@@ -585,6 +649,223 @@ impl Source<'_> {
         raw.map(|q| self.quantity(q, field)).transpose()
     }
 
+    /// `[fluid] gas = "…"` (docs/model.md §3.9): a library gas or `"custom"` (with
+    /// `molar_mass`, `molecular_diameter` and either a constant `viscosity` or the Sutherland
+    /// constants `sutherland_viscosity`, `sutherland_temperature`, `sutherland_constant`); the
+    /// absolute `inlet_pressure` and `outlet_pressure`, or `pressure_difference` with the
+    /// outlet at `outlet_pressure` (default 1 atm). Liquid keys are refused.
+    fn gas(&self, table: &Spanned<RawFluid>, id: &Spanned<String>) -> Result<Fluid, ScenarioError> {
+        let raw = table.get_ref();
+        let liquid = [
+            (raw.library.as_ref().map(|l| l.span()), "fluid.library"),
+            (
+                raw.viscosity_40c.as_ref().map(|q| q.span()),
+                VISCOSITY_40C.key,
+            ),
+            (
+                raw.viscosity_100c.as_ref().map(|q| q.span()),
+                VISCOSITY_100C.key,
+            ),
+            (raw.density.as_ref().map(|q| q.span()), DENSITY.key),
+            (
+                raw.thermal_expansion.as_ref().map(|q| q.span()),
+                FLUID_EXPANSION.key,
+            ),
+        ];
+        if let Some((Some(span), key)) = liquid.into_iter().find(|(s, _)| s.is_some()) {
+            return Err(self.error(
+                span,
+                key,
+                format!(
+                    "a liquid's viscosity key, but [fluid] is the gas \"{}\": a gas takes its \
+                     viscosity from the gas library, or (gas = \"custom\") a constant \
+                     `viscosity` or the Sutherland constants",
+                    id.get_ref()
+                ),
+            ));
+        }
+        let custom_keys = [
+            (&raw.viscosity, "fluid.viscosity"),
+            (&raw.molar_mass, MOLAR_MASS.key),
+            (&raw.molecular_diameter, MOLECULAR_DIAMETER.key),
+            (&raw.sutherland_viscosity, SUTHERLAND_VISCOSITY.key),
+            (&raw.sutherland_temperature, "fluid.sutherland_temperature"),
+            (&raw.sutherland_constant, SUTHERLAND_CONSTANT.key),
+        ];
+        let gas = if id.get_ref() == "custom" {
+            self.custom_gas(table)?
+        } else {
+            let Some(known) = crate::gas::library(id.get_ref()) else {
+                return Err(self.error(
+                    id.span(),
+                    "fluid.gas",
+                    format!(
+                        "unknown gas \"{}\"; known: {}, or \"custom\"",
+                        id.get_ref(),
+                        crate::gas::library_ids().join(", ")
+                    ),
+                ));
+            };
+            if let Some((Some(q), key)) = custom_keys.into_iter().find(|(q, _)| q.is_some()) {
+                return Err(self.error(
+                    q.span(),
+                    key,
+                    format!(
+                        "only goes with gas = \"custom\": the library gas \"{}\" has its own",
+                        id.get_ref()
+                    ),
+                ));
+            }
+            known
+        };
+        // a gauge unit on an absolute pressure is a mistake, not a conversion
+        for (q, key) in [
+            (&raw.inlet_pressure, INLET_PRESSURE.key),
+            (&raw.outlet_pressure, OUTLET_PRESSURE.key),
+        ] {
+            if let Some(q) = q
+                && let super::raw::RawQuantity::Text(t) = q.get_ref()
+                && (t.contains("barg") || t.contains("psig"))
+            {
+                return Err(self.error(
+                    q.span(),
+                    key,
+                    format!(
+                        "\"{t}\" is a gauge pressure, but {key} is absolute: write it in bar, Pa \
+                         or psi (absolute), or give pressure_difference"
+                    ),
+                ));
+            }
+        }
+        let outlet = self.optional(raw.outlet_pressure.as_ref(), &OUTLET_PRESSURE)?;
+        let pressure_difference = match (&raw.inlet_pressure, &raw.pressure_difference) {
+            (Some(_), Some(dp)) => {
+                return Err(self.error(
+                    dp.span(),
+                    PRESSURE_DIFFERENCE.key,
+                    "inlet_pressure and pressure_difference are mutually exclusive: give the \
+                     absolute inlet_pressure and outlet_pressure, or pressure_difference (with \
+                     the outlet at outlet_pressure, default 1 atm)",
+                ));
+            }
+            (Some(inlet), None) => {
+                let Some(outlet) = outlet else {
+                    return Err(self.error(
+                        inlet.span(),
+                        OUTLET_PRESSURE.key,
+                        "missing key `outlet_pressure` in [fluid]: an absolute inlet_pressure \
+                         needs the absolute outlet pressure (0 for vacuum)",
+                    ));
+                };
+                let pa = self.quantity(inlet, &INLET_PRESSURE)?;
+                if outlet > pa {
+                    let span = raw
+                        .outlet_pressure
+                        .as_ref()
+                        .map_or(inlet.span(), |q| q.span());
+                    return Err(self.error(
+                        span,
+                        OUTLET_PRESSURE.key,
+                        format!(
+                            "the outlet pressure {} Pa is above the inlet pressure {} Pa: the \
+                             inlet is the pressurised side",
+                            show(outlet),
+                            show(pa)
+                        ),
+                    ));
+                }
+                pa - outlet
+            }
+            (None, Some(dp)) => self.quantity(dp, &PRESSURE_DIFFERENCE)?,
+            (None, None) => {
+                return Err(self.error(
+                    table.span(),
+                    INLET_PRESSURE.key,
+                    "missing key `inlet_pressure` in [fluid] (a gas takes the absolute \
+                     inlet_pressure and outlet_pressure, or pressure_difference)",
+                ));
+            }
+        };
+        let law = ViscosityLaw::Gas(gas);
+        Ok(Fluid {
+            viscosity: 0.0,
+            pressure_difference,
+            law,
+            gas: Some(GasService {
+                gas,
+                outlet_pressure: outlet.unwrap_or(ATMOSPHERE),
+                temperature: ROOM_TEMPERATURE,
+            }),
+        }
+        .at(ROOM_TEMPERATURE))
+    }
+
+    /// `gas = "custom"`: its molar mass, molecular diameter and viscosity (a constant, or the
+    /// three Sutherland constants together).
+    fn custom_gas(&self, table: &Spanned<RawFluid>) -> Result<crate::gas::Gas, ScenarioError> {
+        let raw = table.get_ref();
+        let required = |q: &Option<Quantity>, f: &Field| match q {
+            Some(q) => self.quantity(q, f),
+            None => Err(self.error(
+                table.span(),
+                f.key,
+                format!(
+                    "missing key `{}` in [fluid] for gas = \"custom\"",
+                    f.key.trim_start_matches("fluid.")
+                ),
+            )),
+        };
+        let molar_mass = required(&raw.molar_mass, &MOLAR_MASS)?;
+        let molecular_diameter = required(&raw.molecular_diameter, &MOLECULAR_DIAMETER)?;
+        let sutherland = [
+            &raw.sutherland_viscosity,
+            &raw.sutherland_temperature,
+            &raw.sutherland_constant,
+        ];
+        let viscosity = match (&raw.viscosity, sutherland.iter().find_map(|q| q.as_ref())) {
+            (Some(_), Some(q)) => {
+                return Err(self.error(
+                    q.span(),
+                    "fluid.viscosity",
+                    "a constant `viscosity` and the Sutherland constants are mutually exclusive",
+                ));
+            }
+            (Some(q), None) => {
+                crate::gas::GasViscosity::Constant(self.quantity(q, &GAS_VISCOSITY)?)
+            }
+            (None, Some(_)) => {
+                let mu0 = required(&raw.sutherland_viscosity, &SUTHERLAND_VISCOSITY)?;
+                let Some(t0) = &raw.sutherland_temperature else {
+                    return Err(self.error(
+                        table.span(),
+                        "fluid.sutherland_temperature",
+                        "missing key `sutherland_temperature` in [fluid]: μ0 and S belong to \
+                         their own reference temperature T0",
+                    ));
+                };
+                let t0 = self.absolute_temperature(t0, "fluid.sutherland_temperature")?;
+                let s = required(&raw.sutherland_constant, &SUTHERLAND_CONSTANT)?;
+                crate::gas::GasViscosity::Sutherland(crate::gas::Sutherland { mu0, t0, s })
+            }
+            (None, None) => {
+                return Err(self.error(
+                    table.span(),
+                    "fluid.viscosity",
+                    "missing key `viscosity` in [fluid] for gas = \"custom\" (or the Sutherland \
+                     constants sutherland_viscosity, sutherland_temperature, \
+                     sutherland_constant)",
+                ));
+            }
+        };
+        Ok(crate::gas::Gas {
+            id: "custom",
+            molar_mass,
+            viscosity,
+            molecular_diameter,
+            source: "custom gas (scenario)",
+        })
+    }
+
     /// `[fluid] volume_swell`: the compound's ASTM D471 ΔV/V0 in this fluid (−50 % < ΔV/V0 <
     /// 200 %), `None` when absent or zero (a zero swell changes nothing).
     fn volume_swell(
@@ -605,7 +886,36 @@ impl Source<'_> {
     /// evaluates it at the installation temperature).
     fn fluid(&self, table: &Spanned<RawFluid>) -> Result<Fluid, ScenarioError> {
         let raw = table.get_ref();
-        let pressure_difference = self.quantity(&raw.pressure_difference, &PRESSURE_DIFFERENCE)?;
+        if let Some(id) = &raw.gas {
+            return self.gas(table, id);
+        }
+        if let Some(q) = [&raw.inlet_pressure, &raw.outlet_pressure]
+            .into_iter()
+            .chain([&raw.molar_mass, &raw.molecular_diameter])
+            .chain([
+                &raw.sutherland_viscosity,
+                &raw.sutherland_temperature,
+                &raw.sutherland_constant,
+            ])
+            .flatten()
+            .next()
+        {
+            return Err(self.error(
+                q.span(),
+                "fluid.gas",
+                "absolute pressures, molar mass, molecular diameter and Sutherland constants \
+                 belong to a gas: add `gas = \"…\"` to [fluid] (a liquid takes \
+                 `pressure_difference`)",
+            ));
+        }
+        let Some(dp) = &raw.pressure_difference else {
+            return Err(self.error(
+                table.span(),
+                PRESSURE_DIFFERENCE.key,
+                "missing key `pressure_difference` in [fluid]",
+            ));
+        };
+        let pressure_difference = self.quantity(dp, &PRESSURE_DIFFERENCE)?;
         let inline = raw.viscosity_40c.as_ref().or(raw.viscosity_100c.as_ref());
         let given: Vec<(&str, std::ops::Range<usize>)> = [
             raw.viscosity.as_ref().map(|q| ("viscosity", q.span())),
@@ -646,12 +956,14 @@ impl Source<'_> {
             viscosity,
             pressure_difference,
             law: ViscosityLaw::Constant,
+            gas: None,
         };
         let with_law = |law: ViscosityLaw| {
             let fluid = Fluid {
                 viscosity: 0.0,
                 pressure_difference,
                 law,
+                gas: None,
             };
             fluid.at(ROOM_TEMPERATURE)
         };

@@ -544,6 +544,10 @@ impl<'a> Simulator<'a> {
         let offset = p.energisation_factor * dp;
         let sigma_hat = |s: f64| path.conductance(s, p.shape_factor, viscosity);
         let sigma = |e: f64| sigma_hat(e / e_star);
+        // a gas under a uniform contact: the mass flux carries the local density, so the
+        // effective conductance weighs σ(e) by (P_b + p_f)/p̄ with p_f = P0 − e (docs/model.md
+        // §3.9); 1 for a liquid
+        let weighted = |top: f64| move |e: f64| sigma(e) * p.fluid.density_weight(top - e);
         let geometry = profile.geometry(p.geometry.sealing_length());
         let series = || {
             let resistance = profile.series_resistance(&self.rule, |pc| sigma(pc + offset));
@@ -564,7 +568,12 @@ impl<'a> Simulator<'a> {
         }
         let (flow, junction) = match *profile {
             Profile::Uniform { pressure, .. } => (
-                interface::uniform(&sigma, pressure + offset, dp, &INTERFACE),
+                interface::uniform(
+                    &weighted(pressure + offset),
+                    pressure + offset,
+                    dp,
+                    &INTERFACE,
+                ),
                 junction_at(top),
             ),
             Profile::Hertz { peak, width } => {
@@ -600,7 +609,9 @@ impl<'a> Simulator<'a> {
         let dp = p.fluid.pressure_difference;
         let conduction = match *profile {
             Profile::Uniform { pressure, .. } => {
-                interface::uniform_onset(sigma, pressure + offset, dp, &INTERFACE)
+                let top = pressure + offset;
+                let weighted = |e: f64| sigma(e) * p.fluid.density_weight(top - e);
+                interface::uniform_onset(&weighted, top, dp, &INTERFACE)
             }
             Profile::Hertz { peak, width } => {
                 let onset = (peak + offset) * (1.0 - 1e-9);
@@ -1037,6 +1048,20 @@ impl<'a> Simulator<'a> {
             at,
             findings,
         );
+        if let (Junction::Leaking(j), false) =
+            (&snap.peak_junction, snap.state == SealState::LiftOff)
+        {
+            // a gas: its regime at the critical constriction (docs/model.md §9.14)
+            if let Some(kn) = p.fluid.at(snap.temperature).knudsen(j.u_c) {
+                validity::knudsen(kn, at, findings);
+            }
+            if p.fluid.gas.is_some()
+                && p.fluid.pressure_difference > 0.0
+                && matches!(snap.profile, Profile::Hertz { .. })
+            {
+                validity::gas_hertz_profile(at, findings);
+            }
+        }
         if let Some((ratio, limit)) = &snap.extrusion {
             validity::extrusion(*ratio, limit, at, findings);
         }

@@ -19,6 +19,7 @@ mod engineering_units;
 mod figures;
 mod fit;
 mod fuzz;
+mod gas;
 mod gland;
 mod gland_pressure;
 mod leak;

@@ -132,6 +132,7 @@ fn zero_speed_is_the_static_leak() {
                 viscosity: seal.viscosity,
                 pressure_difference: 0.01e6,
                 law: sealsim::fluid::ViscosityLaw::Constant,
+                gas: None,
             };
             // PY08 eqs. 1–3 written out: (L_y/L_x) α u_c³ ΔP/(12η)
             let stat = length / width * alpha * u_c.powi(3) * fluid.pressure_difference

@@ -205,6 +205,7 @@ fn leak_rates_of_both_levels_are_positive_and_finite_on_the_paper_case() {
             viscosity: 1e-3,
             pressure_difference: 0.01e6,
             law: sealsim::fluid::ViscosityLaw::Constant,
+            gas: None,
         },
         seal: FlatSeal {
             nominal_pressure: 0.2e6,

@@ -54,6 +54,7 @@ pub(crate) fn oring_problem(material: Material) -> LifeProblem {
             viscosity: 1e-3,
             pressure_difference: 1e5,
             law: sealsim::fluid::ViscosityLaw::Constant,
+            gas: None,
         },
         geometry: SealGeometry::ORing {
             cross_section: 3.53e-3,

@@ -19,6 +19,7 @@ mod effective_medium;
 mod fit;
 mod flow;
 mod fluid;
+mod gas;
 mod gland;
 mod height_map;
 mod ihl;

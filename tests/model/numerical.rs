@@ -175,6 +175,7 @@ fn analytic(sp: &Spectrum, e_star: f64, p0: f64) -> Analytic {
             viscosity: VISCOSITY,
             pressure_difference: 1.0,
             law: sealsim::fluid::ViscosityLaw::Constant,
+            gas: None,
         },
         seal: FlatSeal {
             nominal_pressure: p0,

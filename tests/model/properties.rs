@@ -52,6 +52,7 @@ fn solver(p: Params, fidelity: Fidelity) -> StaticSolver {
             viscosity: 1e-3,
             pressure_difference: 1e4,
             law: sealsim::fluid::ViscosityLaw::Constant,
+            gas: None,
         },
         seal: FlatSeal {
             nominal_pressure: 1e5,

@@ -1,0 +1,245 @@
+//! Gases: molar mass, viscosity against temperature, molecular diameter and mean free path
+//! (docs/model.md §3.9).
+//!
+//! A gas is a compressible fluid: sealsim treats it as an isothermal ideal gas whose mass flux
+//! is conserved along the interface ([`crate::fluid::Fluid::throughput`]). Its viscosity follows
+//! Sutherland's law `μ(T) = μ0 (T/T0)^{3/2} (T0 + S)/(T + S)` (or a constant for a custom gas);
+//! its hard-sphere diameter d gives the mean free path `λ = k_B T/(√2 π d² p)` and, at a
+//! constriction of height u, the Knudsen number `Kn = λ/u` that tells whether the continuum law
+//! used here holds (docs/model.md §9.14). Rarefied flow (slip, transition, free molecular) is
+//! not modelled yet: it is only warned about.
+//!
+//! Sources (research notes; SECONDARY means the values were read where a source is quoted,
+//! not in the source itself):
+//! * Sutherland constants of air, N₂, O₂, H₂, CO₂, Ar: F. M. White, *Viscous Fluid Flow*, 3rd
+//!   ed., McGraw-Hill 2006, Table 1-2, p. 28 — SECONDARY (the same numbers in several public
+//!   codes that cite it; the book itself was not read).
+//! * Helium and methane are not in that table as quoted: their constants are illustrative
+//!   (see [`HELIUM`], [`METHANE`]).
+//! * Molar masses and hard-sphere diameters: the CRC Handbook of Chemistry and Physics (100th
+//!   ed.) table as quoted by Engineers Edge ("Mean Free Path of Gases Formulae and Calculator")
+//!   and launchloop.com "MeanFreePath" — SECONDARY. The diameters are viscosity-derived
+//!   (kinetic theory), the ones "typically utilized to calculate the mean free path" (Kunze et
+//!   al., Sci. Rep. 12, 2057 (2022), whose Eq. (1) is the λ above).
+
+/// Boltzmann constant k_B \[J/K\] (exact, SI 2019).
+pub const BOLTZMANN: f64 = 1.380_649e-23;
+/// Molar gas constant R = N_A k_B \[J/(mol·K)\] (exact, SI 2019).
+pub const GAS_CONSTANT: f64 = 8.314_462_618_153_24;
+
+/// Sutherland's law for a gas's dynamic viscosity: `μ(T) = μ0 (T/T0)^{3/2} (T0 + S)/(T + S)`
+/// \[Pa·s\] (T in K). μ0, T0 and S belong together: a constant from one published set is only
+/// valid with that set's T0.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sutherland {
+    /// μ0, the viscosity at T0 \[Pa·s\].
+    pub mu0: f64,
+    /// T0, the reference temperature \[K\].
+    pub t0: f64,
+    /// S, Sutherland's constant \[K\].
+    pub s: f64,
+}
+
+impl Sutherland {
+    /// μ(T) \[Pa·s\] at `temperature` \[K\] (> 0).
+    pub fn viscosity(&self, temperature: f64) -> f64 {
+        self.mu0 * (temperature / self.t0).powf(1.5) * (self.t0 + self.s) / (temperature + self.s)
+    }
+}
+
+/// How a gas's viscosity follows the temperature.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum GasViscosity {
+    /// A constant \[Pa·s\] (a custom gas given one value).
+    Constant(f64),
+    /// Sutherland's law.
+    Sutherland(Sutherland),
+}
+
+impl GasViscosity {
+    /// μ at `temperature` \[K\] \[Pa·s\].
+    pub fn at(&self, temperature: f64) -> f64 {
+        match self {
+            GasViscosity::Constant(mu) => *mu,
+            GasViscosity::Sutherland(s) => s.viscosity(temperature),
+        }
+    }
+}
+
+/// A gas: what the interface flow and the Knudsen number need.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Gas {
+    /// Library id (`"helium"`, …) or `"custom"`.
+    pub id: &'static str,
+    /// Molar mass M \[kg/mol\].
+    pub molar_mass: f64,
+    /// μ(T).
+    pub viscosity: GasViscosity,
+    /// Hard-sphere (viscosity-derived) molecular diameter d \[m\], for the mean free path.
+    pub molecular_diameter: f64,
+    /// Where the numbers come from, short (the run summary's fluid line).
+    pub source: &'static str,
+}
+
+impl Gas {
+    /// Mean free path of the hard-sphere gas \[m\] at `temperature` \[K\] and absolute
+    /// `pressure` \[Pa\] (> 0): `λ = k_B T/(√2 π d² p)` (Kunze et al. 2022, Eq. (1); the CRC
+    /// table's definition). ∞ at p = 0.
+    pub fn mean_free_path(&self, temperature: f64, pressure: f64) -> f64 {
+        BOLTZMANN * temperature
+            / (std::f64::consts::SQRT_2
+                * std::f64::consts::PI
+                * self.molecular_diameter.powi(2)
+                * pressure)
+    }
+
+    /// Density of the ideal gas ρ = p M/(R T) \[kg/m³\] at absolute `pressure` \[Pa\] and
+    /// `temperature` \[K\].
+    pub fn density(&self, pressure: f64, temperature: f64) -> f64 {
+        pressure * self.molar_mass / (GAS_CONSTANT * temperature)
+    }
+}
+
+/// White 2006 Table 1-2 (SECONDARY, see the module doc): T0 = 273 K for every row.
+const WHITE_T0: f64 = 273.0;
+/// Provenance of the White rows.
+const WHITE: &str =
+    "Sutherland constants White 2006 Table 1-2 (as quoted); M, d from the CRC table (as quoted)";
+
+/// Air: μ0 = 1.716e-5 Pa·s, S = 111 K (White); M = 28.960 g/mol, d = 3.66e-10 m (CRC).
+pub const AIR: Gas = white("air", 1.716e-5, 111.0, 28.960e-3, 3.66e-10);
+/// Nitrogen: μ0 = 1.663e-5 Pa·s, S = 107 K; M = 28.014 g/mol, d = 3.70e-10 m.
+pub const NITROGEN: Gas = white("nitrogen", 1.663e-5, 107.0, 28.014e-3, 3.70e-10);
+/// Oxygen: μ0 = 1.919e-5 Pa·s, S = 139 K; M = 31.999 g/mol, d = 3.55e-10 m.
+pub const OXYGEN: Gas = white("oxygen", 1.919e-5, 139.0, 31.999e-3, 3.55e-10);
+/// Hydrogen: μ0 = 8.411e-6 Pa·s, S = 97 K; M = 2.0159 g/mol, d = 2.71e-10 m.
+pub const HYDROGEN: Gas = white("hydrogen", 8.411e-6, 97.0, 2.0159e-3, 2.71e-10);
+/// Carbon dioxide: μ0 = 1.370e-5 Pa·s, S = 222 K; M = 44.01 g/mol, d = 4.53e-10 m.
+pub const CARBON_DIOXIDE: Gas = white("carbon-dioxide", 1.370e-5, 222.0, 44.01e-3, 4.53e-10);
+/// Argon: μ0 = 2.125e-5 Pa·s, S = 144 K; M = 39.948 g/mol, d = 3.58e-10 m.
+pub const ARGON: Gas = white("argon", 2.125e-5, 144.0, 39.948e-3, 3.58e-10);
+
+/// Helium, **illustrative**: not in White's table as quoted. The whole Sutherland set of the
+/// Cableizer documentation "Reference dynamic viscosity of gas" (which takes it from Wikipedia;
+/// SECONDARY): μ0 = 1.9e-5 Pa·s, T0 = 273 K, S = 79.4 K (one set, not mixed with another's
+/// T0). Cross-check done here: the CRC hard-sphere relation η = 2.67e-20 √(M T)/d² quoted
+/// with the diameters gives 19.1 µPa·s at 273.15 K with d = 2.15e-10 m, M = 4.0026 g/mol
+/// (0.5 % from μ0). M and d from the CRC table (as quoted).
+pub const HELIUM: Gas = Gas {
+    id: "helium",
+    molar_mass: 4.0026e-3,
+    viscosity: GasViscosity::Sutherland(Sutherland {
+        mu0: 1.9e-5,
+        t0: 273.0,
+        s: 79.4,
+    }),
+    molecular_diameter: 2.15e-10,
+    source: "illustrative: Sutherland set of the Cableizer documentation (from Wikipedia; μ0 1.9e-5 Pa·s, T0 273 K, S 79.4 K); M, d from the CRC table (as quoted)",
+};
+
+/// Methane, **illustrative**: no citable Sutherland table was found. The set μ0 = 1.027e-5
+/// Pa·s, T0 = 273 K, S = 170 K appears in a public code (which cites Bird, Stewart & Lightfoot
+/// for the formula, not clearly for the constants): UNVERIFIED. The CRC hard-sphere relation
+/// with d = 3.80e-10 m gives 12.2 µPa·s at 273.15 K, 19 % above μ0: the diameter is a
+/// mean-free-path diameter, not a viscosity fit at 0 °C. M = 16.043 g/mol, d from the CRC
+/// table (as quoted).
+pub const METHANE: Gas = Gas {
+    id: "methane",
+    molar_mass: 16.043e-3,
+    viscosity: GasViscosity::Sutherland(Sutherland {
+        mu0: 1.027e-5,
+        t0: 273.0,
+        s: 170.0,
+    }),
+    molecular_diameter: 3.80e-10,
+    source: "illustrative: Sutherland set seen in a public code, unverified (μ0 1.027e-5 Pa·s, T0 273 K, S 170 K); M, d from the CRC table (as quoted)",
+};
+
+const fn white(id: &'static str, mu0: f64, s: f64, molar_mass: f64, diameter: f64) -> Gas {
+    Gas {
+        id,
+        molar_mass,
+        viscosity: GasViscosity::Sutherland(Sutherland {
+            mu0,
+            t0: WHITE_T0,
+            s,
+        }),
+        molecular_diameter: diameter,
+        source: WHITE,
+    }
+}
+
+/// The gases of the library.
+pub const LIBRARY: [Gas; 8] = [
+    HELIUM,
+    HYDROGEN,
+    NITROGEN,
+    AIR,
+    ARGON,
+    CARBON_DIOXIDE,
+    METHANE,
+    OXYGEN,
+];
+
+/// The library gas `id` (`"helium"`, `"carbon-dioxide"`, …); `None` if unknown.
+pub fn library(id: &str) -> Option<Gas> {
+    LIBRARY.iter().copied().find(|g| g.id == id)
+}
+
+/// The ids of the library's gases.
+pub fn library_ids() -> Vec<&'static str> {
+    LIBRARY.iter().map(|g| g.id).collect()
+}
+
+/// The standard reference state of sccm and slm (SEMI, as quoted in the Brooks Instrument
+/// SLA/MF manual): T_ref = 273.15 K, p_ref = 101325 Pa.
+pub const STANDARD_TEMPERATURE: f64 = 273.15;
+/// p_ref of sccm and slm \[Pa\].
+pub const STANDARD_PRESSURE: f64 = 101_325.0;
+
+/// 1 sccm as a throughput \[Pa·m³/s\] **at T_ref**: 101325 Pa · 1e-6 m³ / 60 s (= 1.68875e-3).
+/// A throughput Q at the gas temperature T is `Q (T_ref/T) / SCCM` sccm: the same moles per
+/// second carry a pV flow proportional to T.
+pub const SCCM: f64 = STANDARD_PRESSURE * 1e-6 / 60.0;
+/// 1 slm = 1000 sccm \[Pa·m³/s at T_ref\].
+pub const SLM: f64 = 1e3 * SCCM;
+
+/// A throughput `q` \[Pa·m³/s\] at `temperature` \[K\] in sccm (SEMI reference state).
+pub fn to_sccm(q: f64, temperature: f64) -> f64 {
+    q * (STANDARD_TEMPERATURE / temperature) / SCCM
+}
+
+/// A throughput `q` \[Pa·m³/s\] at `temperature` \[K\] as a molar flow \[mol/s\]: `ṅ = q/(R T)`.
+pub fn to_mol_per_s(q: f64, temperature: f64) -> f64 {
+    q / (GAS_CONSTANT * temperature)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn library_is_complete_and_consistent() {
+        assert_eq!(library_ids().len(), 8);
+        for id in library_ids() {
+            let g = library(id).expect("listed");
+            assert_eq!(g.id, id);
+            assert!(g.molar_mass > 1e-3 && g.molar_mass < 0.05);
+            assert!(g.molecular_diameter > 2e-10 && g.molecular_diameter < 5e-10);
+            // the viscosity at 0 °C is 8–22 µPa·s for all of them
+            let mu = g.viscosity.at(273.15);
+            assert!(mu > 8e-6 && mu < 2.2e-5, "{id}: {mu}");
+        }
+        assert!(library("neon").is_none());
+    }
+
+    #[test]
+    fn sccm_is_its_definition() {
+        // 1 sccm = 101325 Pa × 1 cm³ / 60 s at 0 °C (the notes' converter: 0.001689 Pa·m³/s)
+        assert!((SCCM / 1.688_75e-3 - 1.0).abs() < 1e-12);
+        // at 0 °C the throughput of 1 sccm is 1 sccm; NIST: 1 µmol/s = 1.3448 sccm
+        assert!((to_sccm(SCCM, 273.15) - 1.0).abs() < 1e-12);
+        let mol = to_mol_per_s(SCCM, 273.15);
+        assert!((1e-6 / mol / 1.3448 - 1.0).abs() < 1e-4, "{mol}");
+    }
+}

@@ -1,0 +1,289 @@
+//! End-to-end: gas scenarios (docs/model.md §3.9) — the shipped helium leak test, a leaking
+//! nitrogen flat seal (throughput column, JSON keys, Knudsen warnings), and bad gas input
+//! (exit 2, file:line:key, nothing written).
+
+use crate::common::{rel, scenario_path};
+use crate::support::{HISTORY_HEADER, no_nan, sealsim};
+use std::fs;
+
+/// A flat seal on Persson & Yang's surface that leaks, with nitrogen between 2 and 1 bar
+/// absolute: `[fluid]` at line 10, `gas` at 11, `inlet_pressure` at 12, `outlet_pressure` at 13.
+const FLAT_GAS: &str = r#"name = "flat gas"
+[material]
+youngs_modulus = "10 MPa"
+poisson_ratio = 0.5
+[surface]
+rms_roughness = "2 um"
+hurst_exponent = 0.8
+q0 = "1e4 1/m"
+q1 = "7.8e9 1/m"
+[fluid]
+gas = "nitrogen"
+inlet_pressure = "2 bar"
+outlet_pressure = "1 bar"
+[seal]
+nominal_pressure = "0.2 MPa"
+width = "1 mm"
+length = "1 mm"
+[simulation]
+duration = "1 day"
+"#;
+
+/// `sealsim run` on `text` with a history and a summary: (status, stdout, stderr, history,
+/// summary), the outputs `None` when not written.
+fn run(text: &str) -> (Option<i32>, String, String, Option<String>, Option<String>) {
+    let dir = tempfile::tempdir().unwrap();
+    let scenario = dir.path().join("s.toml");
+    fs::write(&scenario, text).unwrap();
+    let (csv, json) = (dir.path().join("h.csv"), dir.path().join("s.json"));
+    let out = sealsim()
+        .arg("run")
+        .arg(&scenario)
+        .arg("-o")
+        .arg(&csv)
+        .arg("--summary")
+        .arg(&json)
+        .output()
+        .unwrap();
+    let path = scenario.display().to_string();
+    let text = |b: Vec<u8>| String::from_utf8(b).unwrap().replace(&path, "s.toml");
+    (
+        out.status.code(),
+        text(out.stdout),
+        text(out.stderr),
+        fs::read_to_string(&csv).ok(),
+        fs::read_to_string(&json).ok(),
+    )
+}
+
+#[test]
+fn a_leaking_gas_reports_its_throughput_and_its_knudsen_regime() {
+    let (code, stdout, stderr, csv, json) = run(FLAT_GAS);
+    assert_eq!(code, Some(0), "{stderr}");
+    let csv = csv.unwrap();
+    no_nan(&csv, "history");
+    let mut lines = csv.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        format!("{HISTORY_HEADER},throughput_Pa_m3_per_s")
+    );
+    // throughput = p̄ × the leak rate (the volume flow at the mean pressure), p̄ = 1.5 bar
+    for line in lines {
+        let cells: Vec<&str> = line.split(',').collect();
+        let leak: f64 = cells[9].parse().unwrap();
+        let q: f64 = cells[14].parse().unwrap();
+        assert!(leak > 0.0);
+        assert!(rel(q, 1.5e5 * leak) < 1e-12, "{line}");
+    }
+    // the summary: SI and the helium-leak-test form, 1 mbar·L/s = 0.1 Pa·m³/s
+    assert!(
+        stdout.contains("Pa·m³/s (") && stdout.contains("mbar·L/s)"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("mean pressure p̄ = 150000 Pa"), "{stdout}");
+    let json: serde_json::Value = serde_json::from_str(&json.unwrap()).unwrap();
+    let gas = &json["gas"];
+    assert_eq!(gas["gas"], "nitrogen");
+    assert_eq!(gas["inlet_pressure_Pa"], 2e5);
+    assert_eq!(gas["outlet_pressure_Pa"], 1e5);
+    let q = gas["final_throughput_Pa_m3_per_s"].as_f64().unwrap();
+    let mbar = gas["final_throughput_mbar_L_per_s"].as_f64().unwrap();
+    assert!(rel(mbar, 10.0 * q) < 1e-12);
+    let leak = json["final_leak_rate_m3_per_s"].as_f64().unwrap();
+    assert!(rel(q, 1.5e5 * leak) < 1e-12);
+    // N2 at 23 °C and p̄ = 1.5 bar: λ ≈ 45 nm over u_c ≈ 0.12 µm, Kn ≈ 0.36: slip and
+    // transition are warned, free molecular is not
+    assert!(stderr.contains("slip regime (Kn > 0.01)"), "{stderr}");
+    assert!(stderr.contains("transition regime (Kn > 0.1)"), "{stderr}");
+    assert!(!stderr.contains("free-molecular regime"), "{stderr}");
+    assert!(
+        stderr.contains("rarefied flow not modelled yet"),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn the_gas_leak_is_the_liquid_law_at_the_gas_viscosity_for_a_small_pressure_ratio() {
+    // 1.001 bar against 1 bar: the gas's volume flow at the mean pressure is the liquid's with
+    // the same (constant) viscosity, to the interface-pressure weight (P_b + p_f)/p̄ = 1 ± 5e-4
+    let gas = FLAT_GAS
+        .replace("gas = \"nitrogen\"", "gas = \"custom\"\nmolar_mass = \"28 g/mol\"\nviscosity = \"17.9 uPa*s\"\nmolecular_diameter = \"0.37 nm\"")
+        .replace("inlet_pressure = \"2 bar\"", "inlet_pressure = \"100.1 kPa\"")
+        .replace("outlet_pressure = \"1 bar\"", "outlet_pressure = \"100 kPa\"");
+    let liquid = FLAT_GAS
+        .replace("gas = \"nitrogen\"", "viscosity = \"17.9 uPa*s\"")
+        .replace(
+            "inlet_pressure = \"2 bar\"",
+            "pressure_difference = \"0.1 kPa\"",
+        )
+        .replace("outlet_pressure = \"1 bar\"\n", "");
+    let (cg, _, eg, _, jg) = run(&gas);
+    let (cl, _, el, _, jl) = run(&liquid);
+    assert_eq!((cg, cl), (Some(0), Some(0)), "{eg}{el}");
+    let leak = |j: Option<String>| {
+        let v: serde_json::Value = serde_json::from_str(&j.unwrap()).unwrap();
+        v["initial_leak_rate_m3_per_s"].as_f64().unwrap()
+    };
+    let (g, l) = (leak(jg), leak(jl));
+    assert!(rel(g, l) < 1e-6, "{g} vs {l}");
+}
+
+#[test]
+fn the_shipped_helium_leak_test_runs_and_seals() {
+    let path = scenario_path("helium-leak-test-flange.toml");
+    let dir = tempfile::tempdir().unwrap();
+    let (csv, json) = (dir.path().join("h.csv"), dir.path().join("s.json"));
+    let out = sealsim()
+        .arg("run")
+        .arg(&path)
+        .arg("-o")
+        .arg(&csv)
+        .arg("--summary")
+        .arg(&json)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    let stderr = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    // the header's claim: the interface seals on this finish, throughput 0 throughout
+    assert!(
+        stdout.contains("throughput     0 Pa·m³/s at installation"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("gas helium"), "{stdout}");
+    let history = fs::read_to_string(&csv).unwrap();
+    assert!(
+        history
+            .lines()
+            .next()
+            .unwrap()
+            .ends_with(",throughput_Pa_m3_per_s")
+    );
+    let json: serde_json::Value =
+        serde_json::from_str(&fs::read_to_string(&json).unwrap()).unwrap();
+    assert_eq!(json["gas"]["inlet_pressure_Pa"], 1e5);
+    assert!(rel(json["gas"]["outlet_pressure_Pa"].as_f64().unwrap(), 1e-4) < 1e-12);
+}
+
+/// `text` must exit 2 with `s.toml:{line}: {key}` and `needle` in stderr, and write nothing.
+fn refused(text: &str, line: usize, key: &str, needle: &str) {
+    let (code, stdout, stderr, csv, json) = run(text);
+    assert_eq!(code, Some(2), "{stdout}{stderr}");
+    let located = format!("s.toml:{line}: {key}");
+    assert!(stderr.contains(&located), "{located}: {stderr}");
+    assert!(stderr.contains(needle), "{needle}: {stderr}");
+    assert!(csv.is_none() && json.is_none(), "nothing may be written");
+}
+
+#[test]
+fn bad_gas_input_exits_2_with_file_line_and_key() {
+    refused(
+        &FLAT_GAS.replace(
+            "gas = \"nitrogen\"",
+            "gas = \"nitrogen\"\nlibrary = \"water\"",
+        ),
+        12,
+        "fluid.library",
+        "a liquid's viscosity key",
+    );
+    refused(
+        &FLAT_GAS.replace("outlet_pressure = \"1 bar\"", "outlet_pressure = \"3 bar\""),
+        13,
+        "fluid.outlet_pressure",
+        "above the inlet pressure",
+    );
+    refused(
+        &FLAT_GAS.replace("gas = \"nitrogen\"", "gas = \"xenon\""),
+        11,
+        "fluid.gas",
+        "unknown gas \"xenon\"",
+    );
+    // a throughput criterion on a liquid
+    let liquid = FLAT_GAS
+        .replace("gas = \"nitrogen\"", "viscosity = \"1 mPa*s\"")
+        .replace(
+            "inlet_pressure = \"2 bar\"",
+            "pressure_difference = \"1 bar\"",
+        )
+        .replace("outlet_pressure = \"1 bar\"\n", "");
+    refused(
+        &format!("{liquid}[failure]\nmax_leak_rate = \"1e-9 mbar*L/s\"\n"),
+        20,
+        "failure.max_leak_rate",
+        "is a gas throughput, but [fluid] is a liquid",
+    );
+    // a volume-flow criterion on a gas (refused: at which pressure?)
+    refused(
+        &format!("{FLAT_GAS}[failure]\nmax_leak_rate = \"1e-9 m^3/s\"\n"),
+        21,
+        "failure.max_leak_rate",
+        "is a volume flow, but [fluid] is a gas",
+    );
+    // a gauge unit on an absolute pressure
+    refused(
+        &FLAT_GAS.replace("inlet_pressure = \"2 bar\"", "inlet_pressure = \"1 barg\""),
+        12,
+        "fluid.inlet_pressure",
+        "is a gauge pressure",
+    );
+    // a library gas with a custom key; a custom gas without its molar mass
+    refused(
+        &FLAT_GAS.replace(
+            "gas = \"nitrogen\"",
+            "gas = \"nitrogen\"\nmolar_mass = \"28 g/mol\"",
+        ),
+        12,
+        "fluid.molar_mass",
+        "only goes with gas = \"custom\"",
+    );
+    refused(
+        &FLAT_GAS.replace(
+            "gas = \"nitrogen\"",
+            "gas = \"custom\"\nviscosity = \"17 uPa*s\"",
+        ),
+        10,
+        "fluid.molar_mass",
+        "missing key `molar_mass`",
+    );
+    // absolute pressures on a liquid
+    refused(
+        &liquid.replace(
+            "pressure_difference = \"1 bar\"",
+            "pressure_difference = \"1 bar\"\noutlet_pressure = \"1 bar\"",
+        ),
+        13,
+        "fluid.gas",
+        "belong to a gas",
+    );
+}
+
+#[test]
+fn a_throughput_criterion_fails_a_leaking_gas_seal() {
+    // the leak is ≈ 5e-6 Pa·m³/s = 5e-5 mbar·L/s: a 1e-5 mbar·L/s criterion fails it at
+    // installation, a 1e-4 one (or 60 sccm ≈ 1.1e-1 Pa·m³/s) does not
+    let fails = |criterion: &str| {
+        let (code, stdout, stderr, _, _) = run(&format!(
+            "{FLAT_GAS}[failure]\nmax_leak_rate = \"{criterion}\"\n"
+        ));
+        assert_eq!(code, Some(0), "{stderr}");
+        stdout.contains("FAILS at installation (leak_rate)")
+    };
+    assert!(fails("1e-5 mbar*L/s"));
+    assert!(!fails("1e-4 mbar*L/s"));
+    assert!(!fails("60 sccm"));
+    assert!(fails("1e-3 sccm"));
+}
+
+#[test]
+fn a_custom_gas_with_nitrogens_constants_is_nitrogen() {
+    let custom = FLAT_GAS.replace(
+        "gas = \"nitrogen\"",
+        "gas = \"custom\"\nmolar_mass = \"28.014 g/mol\"\nmolecular_diameter = \"0.37 nm\"\n\
+         sutherland_viscosity = \"1.663e-5 Pa*s\"\nsutherland_temperature = \"273 K\"\n\
+         sutherland_constant = \"107 K\"",
+    );
+    let (c1, _, e1, h1, _) = run(FLAT_GAS);
+    let (c2, _, e2, h2, _) = run(&custom);
+    assert_eq!((c1, c2), (Some(0), Some(0)), "{e1}{e2}");
+    assert_eq!(h1, h2, "the same gas must give the same history");
+}
