@@ -3,7 +3,7 @@
 //! (exit 2, file:line:key, nothing written).
 
 use crate::common::{rel, scenario_path};
-use crate::support::{HISTORY_HEADER, no_nan, sealsim};
+use crate::support::{HISTORY_HEADER, no_nan, run_text as run, sealsim};
 use std::fs;
 
 /// A flat seal on Persson & Yang's surface that leaks, with nitrogen between 2 and 1 bar
@@ -28,33 +28,6 @@ length = "1 mm"
 [simulation]
 duration = "1 day"
 "#;
-
-/// `sealsim run` on `text` with a history and a summary: (status, stdout, stderr, history,
-/// summary), the outputs `None` when not written.
-fn run(text: &str) -> (Option<i32>, String, String, Option<String>, Option<String>) {
-    let dir = tempfile::tempdir().unwrap();
-    let scenario = dir.path().join("s.toml");
-    fs::write(&scenario, text).unwrap();
-    let (csv, json) = (dir.path().join("h.csv"), dir.path().join("s.json"));
-    let out = sealsim()
-        .arg("run")
-        .arg(&scenario)
-        .arg("-o")
-        .arg(&csv)
-        .arg("--summary")
-        .arg(&json)
-        .output()
-        .unwrap();
-    let path = scenario.display().to_string();
-    let text = |b: Vec<u8>| String::from_utf8(b).unwrap().replace(&path, "s.toml");
-    (
-        out.status.code(),
-        text(out.stdout),
-        text(out.stderr),
-        fs::read_to_string(&csv).ok(),
-        fs::read_to_string(&json).ok(),
-    )
-}
 
 #[test]
 fn a_leaking_gas_reports_its_throughput_and_its_knudsen_regime() {

@@ -10,6 +10,34 @@ pub fn sealsim() -> assert_cmd::Command {
     assert_cmd::cargo::cargo_bin_cmd!("sealsim")
 }
 
+/// `sealsim run` on a scenario written as `s.toml` in a fresh directory, with `-o h.csv
+/// --summary s.json`: (status, stdout, stderr, the history CSV and the summary JSON if written),
+/// the scenario's path shown as `s.toml` in the two streams.
+pub fn run_text(text: &str) -> (Option<i32>, String, String, Option<String>, Option<String>) {
+    let dir = tempfile::tempdir().unwrap();
+    let scenario = dir.path().join("s.toml");
+    std::fs::write(&scenario, text).unwrap();
+    let (csv, json) = (dir.path().join("h.csv"), dir.path().join("s.json"));
+    let out = sealsim()
+        .arg("run")
+        .arg(&scenario)
+        .arg("-o")
+        .arg(&csv)
+        .arg("--summary")
+        .arg(&json)
+        .output()
+        .unwrap();
+    let path = scenario.display().to_string();
+    let text = |b: Vec<u8>| String::from_utf8(b).unwrap().replace(&path, "s.toml");
+    (
+        out.status.code(),
+        text(out.stdout),
+        text(out.stderr),
+        std::fs::read_to_string(&csv).ok(),
+        std::fs::read_to_string(&json).ok(),
+    )
+}
+
 /// Asserts that `text` (named `what` in the message) has no NaN or infinity: as a whole word,
 /// so that a temporary directory named like `/tmp/.tmpdKmNaN` is not taken for one.
 pub fn no_nan(text: &str, what: &str) {

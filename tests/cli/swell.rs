@@ -1,8 +1,7 @@
 //! End-to-end: `[fluid] volume_swell` (docs/model.md §3.8) — zero swell changes nothing, a
 //! swell that overfills the gland is reported, bad input exits 2 naming file, line and key.
 
-use crate::support::sealsim;
-use std::fs;
+use crate::support::run_text;
 
 // The piston-gland scenario of the gland tests: `[fluid]` at line 9, its last key at line 11.
 use super::gland::PISTON;
@@ -17,25 +16,8 @@ fn run(swell: Option<&str>) -> (Option<i32>, String, String, Option<String>) {
         ),
         None => PISTON.to_owned(),
     };
-    let dir = tempfile::tempdir().unwrap();
-    let scenario = dir.path().join("s.toml");
-    fs::write(&scenario, text).unwrap();
-    let csv = dir.path().join("h.csv");
-    let out = sealsim()
-        .arg("run")
-        .arg(&scenario)
-        .arg("-o")
-        .arg(&csv)
-        .output()
-        .unwrap();
-    let path = scenario.display().to_string();
-    let text = |b: Vec<u8>| String::from_utf8(b).unwrap().replace(&path, "s.toml");
-    (
-        out.status.code(),
-        text(out.stdout),
-        text(out.stderr),
-        fs::read_to_string(&csv).ok(),
-    )
+    let (code, stdout, stderr, csv, _) = run_text(&text);
+    (code, stdout, stderr, csv)
 }
 
 #[test]
