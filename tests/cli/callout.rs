@@ -3,7 +3,7 @@
 //! bad input exits 2 with `file:line: key` and writes nothing; the sum of spectra is what the
 //! contact sees, whichever body carries which roughness.
 
-use super::support::sealsim;
+use super::support::{run_text, sealsim};
 use std::path::Path;
 
 /// A flat elastic seal (PY08 §3's rubber and fluid, P0 = 0.1 MPa) on the surface tables given.
@@ -32,26 +32,13 @@ fn line_of(text: &str, start: &str) -> usize {
 /// `sealsim run` on `text` with `-o` and `--summary`: asserts exit 2, the message located at
 /// `s.toml:line: key` containing `needle`, and no output.
 fn refused(text: &str, line: usize, key: &str, needle: &str) {
-    let dir = tempfile::tempdir().unwrap();
-    let scenario = dir.path().join("s.toml");
-    std::fs::write(&scenario, text).unwrap();
-    let (csv, summary) = (dir.path().join("out.csv"), dir.path().join("out.json"));
-    let out = sealsim()
-        .arg("run")
-        .arg(&scenario)
-        .arg("-o")
-        .arg(&csv)
-        .arg("--summary")
-        .arg(&summary)
-        .output()
-        .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    let (code, _, stderr, csv, summary) = run_text(text);
+    assert_eq!(code, Some(2), "{stderr}");
     let at = format!("s.toml:{line}: {key}: ");
     assert!(stderr.contains(&at), "expected {at:?} in:\n{stderr}");
     assert!(stderr.contains(needle), "expected {needle:?} in:\n{stderr}");
     assert!(!stderr.contains("panicked"), "{stderr}");
-    assert!(!csv.exists() && !summary.exists(), "an output was written");
+    assert!(csv.is_none() && summary.is_none(), "an output was written");
 }
 
 #[test]
