@@ -515,6 +515,130 @@ pub fn data(family: &str, gas: &str) -> Option<PermeationData> {
     })
 }
 
+/// Permeation through a seal in a life run (docs/model.md §13.7): the path through the ring or
+/// gasket at its installation squeeze, the gas's data in the compound, and the absolute
+/// pressures of the gas service (P_a on the pressurised side, P_b on the other; the gas is
+/// taken as pure, so its partial pressures are the absolute ones).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SealPermeation {
+    pub path: PermeationPath,
+    pub data: PermeationData,
+    /// P_a, absolute \[Pa\].
+    pub p_high: f64,
+    /// P_b, absolute \[Pa\].
+    pub p_low: f64,
+}
+
+/// Why a life run carries no permeation, or with which simplification (a note, not an error).
+pub type PermeationNote = String;
+
+impl SealPermeation {
+    /// The permeation of gas `gas` (a [`GASES`] id) through a seal of material-library id
+    /// `library_id` and geometry `geometry`, with P_a = `p_high`, P_b = `p_low` \[Pa\].
+    /// An O-ring uses [`PermeationPath::o_ring`] at its installation squeeze ε0; a flat seal
+    /// has no thickness in its model (the exposed edge is unknown) and carries none.
+    /// Returns the permeation (if any) and a note saying what was left out or bounded.
+    pub fn for_seal(
+        library_id: Option<&str>,
+        gas: &str,
+        geometry: &crate::seal::SealGeometry,
+        p_high: f64,
+        p_low: f64,
+    ) -> (Option<SealPermeation>, Option<PermeationNote>) {
+        let Some(family) = library_id.and_then(family_of) else {
+            return (
+                None,
+                Some(format!(
+                    "no permeation through the rubber in this run: the material is not a \
+                     library compound of a class with permeation data ({}) [docs/model.md §13.7]",
+                    FAMILIES.join(", ")
+                )),
+            );
+        };
+        // the gas library spells "carbon-dioxide", the permeation table "carbon dioxide"
+        let Some(data) = data(family, &gas.replace('-', " ")) else {
+            return (
+                None,
+                Some(format!(
+                    "no permeation through the rubber in this run: no permeation data for \
+                     {gas} in {family} [docs/model.md §13.4]"
+                )),
+            );
+        };
+        let crate::seal::SealGeometry::ORing {
+            cross_section,
+            mean_diameter,
+            squeeze,
+        } = *geometry
+        else {
+            return (
+                None,
+                Some(
+                    "no permeation through the rubber in this run: a flat seal's model has no \
+                     thickness, so its exposed edge is unknown (only O-rings carry permeation) \
+                     [docs/model.md §13.7]"
+                        .to_owned(),
+                ),
+            );
+        };
+        let path = match PermeationPath::o_ring(cross_section, mean_diameter, squeeze) {
+            Ok(path) => path,
+            Err(e) => {
+                return (
+                    None,
+                    Some(format!(
+                        "no permeation through the rubber in this run: {e} [docs/model.md §13.3]"
+                    )),
+                );
+            }
+        };
+        let note = data.diffusivity.is_none().then(|| {
+            format!(
+                "permeation of {gas} through {family}: no diffusivity known, so the steady \
+                 flow is taken from installation on (an upper bound: the build-up over the \
+                 time lag is left out) [docs/model.md §13.7]"
+            )
+        });
+        (
+            Some(SealPermeation {
+                path,
+                data,
+                p_high,
+                p_low,
+            }),
+            note,
+        )
+    }
+
+    /// Molar flow \[mol/s\] at `time` \[s\] after installation (the pressure applied to a
+    /// gas-free ring then) at the temperature `temperature` \[K\]:
+    /// [`PermeationPath::molar_flow_at`] with Π(T) and D(T). Under a varying temperature this
+    /// is quasi-steady: the build-up uses the current D as if it had held since installation.
+    pub fn molar_flow(&self, time: f64, temperature: f64) -> f64 {
+        let flow = self.path.molar_flow_at(
+            self.data.permeability_at(temperature),
+            self.data.diffusivity_at(temperature),
+            self.p_high,
+            self.p_low,
+            time,
+        );
+        if flow.is_finite() { flow.max(0.0) } else { 0.0 }
+    }
+
+    /// Throughput \[Pa·m³/s\] at `time` \[s\] and `temperature` \[K\]: [`pv_throughput`] of
+    /// [`SealPermeation::molar_flow`] at the same temperature.
+    pub fn throughput(&self, time: f64, temperature: f64) -> f64 {
+        pv_throughput(self.molar_flow(time, temperature), temperature)
+    }
+
+    /// Time lag w²/(6D(T)) \[s\] at `temperature` \[K\], when D is known.
+    pub fn time_lag(&self, temperature: f64) -> Option<f64> {
+        self.data
+            .diffusivity_at(temperature)
+            .map(|d| self.path.time_lag(d))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
