@@ -549,8 +549,9 @@ impl SealPermeation {
             return (
                 None,
                 Some(format!(
-                    "no permeation through the rubber in this run: the material is not a \
-                     library compound of a class with permeation data ({}) [docs/model.md §13.7]",
+                    "no permeation through the rubber in this run: the material is not the \
+                     scenario's `[material] library` compound of a class with permeation data \
+                     ({}; an inline, file or `compare` material has none) [docs/model.md §13.7]",
                     FAMILIES.join(", ")
                 )),
             );
