@@ -645,6 +645,48 @@ mod tests {
     use super::*;
 
     #[test]
+    fn seal_permeation_covers_o_rings_with_data_and_notes_the_rest() {
+        use crate::seal::SealGeometry;
+        let ring = SealGeometry::ORing {
+            cross_section: 3.53e-3,
+            mean_diameter: 0.05,
+            squeeze: 0.2,
+        };
+        let flat = SealGeometry::Flat {
+            nominal_pressure: 1e6,
+            width: 1e-3,
+            length: 0.1,
+        };
+        // helium in NBR: D known, no note; 0 at installation
+        let (he, note) = SealPermeation::for_seal(Some("nbr-70"), "helium", &ring, 2e5, 1e5);
+        let he = he.unwrap();
+        assert!(note.is_none());
+        assert_eq!(he.molar_flow(0.0, 296.15), 0.0);
+        assert!(he.time_lag(296.15).is_some());
+        // nitrogen: no D, so the steady flow from t = 0 (the upper bound) and a note
+        let (n2, note) = SealPermeation::for_seal(Some("nbr-70"), "nitrogen", &ring, 2e5, 1e5);
+        let n2 = n2.unwrap();
+        assert!(note.unwrap().contains("upper bound"));
+        let steady = n2
+            .path
+            .steady_molar_flow(n2.data.permeability_at(296.15), 2e5, 1e5);
+        assert_eq!(n2.molar_flow(0.0, 296.15), steady);
+        // the gas library's "carbon-dioxide" finds the table's "carbon dioxide"
+        let (co2, _) = SealPermeation::for_seal(Some("fkm-75"), "carbon-dioxide", &ring, 2e5, 1e5);
+        assert!(co2.is_some());
+        // a flat seal, an inline material, a gas without data: none, with a note
+        for (id, gas, geometry) in [
+            (Some("nbr-70"), "helium", &flat),
+            (None, "helium", &ring),
+            (Some("nbr-70"), "argon", &ring),
+        ] {
+            let (none, note) = SealPermeation::for_seal(id, gas, geometry, 2e5, 1e5);
+            assert!(none.is_none());
+            assert!(note.unwrap().contains("no permeation"));
+        }
+    }
+
+    #[test]
     fn barrer_arithmetic() {
         // 1e-10 cm³·cm/(cm²·s·cmHg): 1e-16 m³ · 1e-2 m / (1e-4 m² · 1333.224 Pa) = 7.5006e-18
         assert!((BARRER_STP_VOLUME - 7.5006e-18).abs() < 1e-21);
