@@ -515,9 +515,176 @@ pub fn data(family: &str, gas: &str) -> Option<PermeationData> {
     })
 }
 
+/// Permeation through a seal in a life run (docs/model.md §13.7): the path through the ring or
+/// gasket at its installation squeeze, the gas's data in the compound, and the absolute
+/// pressures of the gas service (P_a on the pressurised side, P_b on the other; the gas is
+/// taken as pure, so its partial pressures are the absolute ones).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SealPermeation {
+    pub path: PermeationPath,
+    pub data: PermeationData,
+    /// P_a, absolute \[Pa\].
+    pub p_high: f64,
+    /// P_b, absolute \[Pa\].
+    pub p_low: f64,
+}
+
+/// Why a life run carries no permeation, or with which simplification (a note, not an error).
+pub type PermeationNote = String;
+
+impl SealPermeation {
+    /// The permeation of gas `gas` (a [`GASES`] id) through a seal of material-library id
+    /// `library_id` and geometry `geometry`, with P_a = `p_high`, P_b = `p_low` \[Pa\].
+    /// An O-ring uses [`PermeationPath::o_ring`] at its installation squeeze ε0; a flat seal
+    /// has no thickness in its model (the exposed edge is unknown) and carries none.
+    /// Returns the permeation (if any) and a note saying what was left out or bounded.
+    pub fn for_seal(
+        library_id: Option<&str>,
+        gas: &str,
+        geometry: &crate::seal::SealGeometry,
+        p_high: f64,
+        p_low: f64,
+    ) -> (Option<SealPermeation>, Option<PermeationNote>) {
+        let Some(family) = library_id.and_then(family_of) else {
+            return (
+                None,
+                Some(format!(
+                    "no permeation through the rubber in this run: the material is not the \
+                     scenario's `[material] library` compound of a class with permeation data \
+                     ({}; an inline, file or `compare` material has none) [docs/model.md §13.7]",
+                    FAMILIES.join(", ")
+                )),
+            );
+        };
+        // the gas library spells "carbon-dioxide", the permeation table "carbon dioxide"
+        let Some(data) = data(family, &gas.replace('-', " ")) else {
+            return (
+                None,
+                Some(format!(
+                    "no permeation through the rubber in this run: no permeation data for \
+                     {gas} in {family} [docs/model.md §13.4]"
+                )),
+            );
+        };
+        let crate::seal::SealGeometry::ORing {
+            cross_section,
+            mean_diameter,
+            squeeze,
+        } = *geometry
+        else {
+            return (
+                None,
+                Some(
+                    "no permeation through the rubber in this run: a flat seal's model has no \
+                     thickness, so its exposed edge is unknown (only O-rings carry permeation) \
+                     [docs/model.md §13.7]"
+                        .to_owned(),
+                ),
+            );
+        };
+        let path = match PermeationPath::o_ring(cross_section, mean_diameter, squeeze) {
+            Ok(path) => path,
+            Err(e) => {
+                return (
+                    None,
+                    Some(format!(
+                        "no permeation through the rubber in this run: {e} [docs/model.md §13.3]"
+                    )),
+                );
+            }
+        };
+        let note = data.diffusivity.is_none().then(|| {
+            format!(
+                "permeation of {gas} through {family}: no diffusivity known, so the steady \
+                 flow is taken from installation on (an upper bound: the build-up over the \
+                 time lag is left out) [docs/model.md §13.7]"
+            )
+        });
+        (
+            Some(SealPermeation {
+                path,
+                data,
+                p_high,
+                p_low,
+            }),
+            note,
+        )
+    }
+
+    /// Molar flow \[mol/s\] at `time` \[s\] after installation (the pressure applied to a
+    /// gas-free ring then) at the temperature `temperature` \[K\]:
+    /// [`PermeationPath::molar_flow_at`] with Π(T) and D(T). Under a varying temperature this
+    /// is quasi-steady: the build-up uses the current D as if it had held since installation.
+    pub fn molar_flow(&self, time: f64, temperature: f64) -> f64 {
+        let flow = self.path.molar_flow_at(
+            self.data.permeability_at(temperature),
+            self.data.diffusivity_at(temperature),
+            self.p_high,
+            self.p_low,
+            time,
+        );
+        if flow.is_finite() { flow.max(0.0) } else { 0.0 }
+    }
+
+    /// Throughput \[Pa·m³/s\] at `time` \[s\] and `temperature` \[K\]: [`pv_throughput`] of
+    /// [`SealPermeation::molar_flow`] at the same temperature.
+    pub fn throughput(&self, time: f64, temperature: f64) -> f64 {
+        pv_throughput(self.molar_flow(time, temperature), temperature)
+    }
+
+    /// Time lag w²/(6D(T)) \[s\] at `temperature` \[K\], when D is known.
+    pub fn time_lag(&self, temperature: f64) -> Option<f64> {
+        self.data
+            .diffusivity_at(temperature)
+            .map(|d| self.path.time_lag(d))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn seal_permeation_covers_o_rings_with_data_and_notes_the_rest() {
+        use crate::seal::SealGeometry;
+        let ring = SealGeometry::ORing {
+            cross_section: 3.53e-3,
+            mean_diameter: 0.05,
+            squeeze: 0.2,
+        };
+        let flat = SealGeometry::Flat {
+            nominal_pressure: 1e6,
+            width: 1e-3,
+            length: 0.1,
+        };
+        // helium in NBR: D known, no note; 0 at installation
+        let (he, note) = SealPermeation::for_seal(Some("nbr-70"), "helium", &ring, 2e5, 1e5);
+        let he = he.unwrap();
+        assert!(note.is_none());
+        assert_eq!(he.molar_flow(0.0, 296.15), 0.0);
+        assert!(he.time_lag(296.15).is_some());
+        // nitrogen: no D, so the steady flow from t = 0 (the upper bound) and a note
+        let (n2, note) = SealPermeation::for_seal(Some("nbr-70"), "nitrogen", &ring, 2e5, 1e5);
+        let n2 = n2.unwrap();
+        assert!(note.unwrap().contains("upper bound"));
+        let steady = n2
+            .path
+            .steady_molar_flow(n2.data.permeability_at(296.15), 2e5, 1e5);
+        assert_eq!(n2.molar_flow(0.0, 296.15), steady);
+        // the gas library's "carbon-dioxide" finds the table's "carbon dioxide"
+        let (co2, _) = SealPermeation::for_seal(Some("fkm-75"), "carbon-dioxide", &ring, 2e5, 1e5);
+        assert!(co2.is_some());
+        // a flat seal, an inline material, a gas without data: none, with a note
+        for (id, gas, geometry) in [
+            (Some("nbr-70"), "helium", &flat),
+            (None, "helium", &ring),
+            (Some("nbr-70"), "argon", &ring),
+        ] {
+            let (none, note) = SealPermeation::for_seal(id, gas, geometry, 2e5, 1e5);
+            assert!(none.is_none());
+            assert!(note.unwrap().contains("no permeation"));
+        }
+    }
 
     #[test]
     fn barrer_arithmetic() {

@@ -78,13 +78,19 @@ pub const MOTION_HISTORY_COLUMNS: [&str; 5] = [
 /// a gas's `leak_rate_m3_per_s` is its volume flow at the mean pressure p̄ = (P_a + P_b)/2.
 pub const GAS_HISTORY_COLUMN: &str = "throughput_Pa_m3_per_s";
 
+/// Column after [`GAS_HISTORY_COLUMN`] for a gas (docs/model.md §13.7): the permeation
+/// throughput through the rubber at the row's time and temperature \[Pa·m³/s\] (blank when the
+/// run carries no permeation; the notes say why). Not included in `throughput_Pa_m3_per_s`.
+pub const PERMEATION_HISTORY_COLUMN: &str = "permeation_Pa_m3_per_s";
+
 /// The history of a life run as CSV: the header and one row per output time (t = 0, the
 /// installation, first). With `[motion]` the rows carry [`MOTION_HISTORY_COLUMNS`] too.
 pub fn history_table(result: &LifeResult) -> Result<String, ReportError> {
     history_table_with(result, None)
 }
 
-/// [`history_table`] of a run whose fluid is `fluid`: a gas adds [`GAS_HISTORY_COLUMN`].
+/// [`history_table`] of a run whose fluid is `fluid`: a gas adds [`GAS_HISTORY_COLUMN`] and
+/// [`PERMEATION_HISTORY_COLUMN`].
 pub fn history_table_for(result: &LifeResult, fluid: &Fluid) -> Result<String, ReportError> {
     history_table_with(result, fluid.mean_pressure())
 }
@@ -110,6 +116,7 @@ fn history_table_with(
             HISTORY_COLUMNS
                 .iter()
                 .chain(mean_pressure.map(|_| &GAS_HISTORY_COLUMN))
+                .chain(mean_pressure.map(|_| &PERMEATION_HISTORY_COLUMN))
                 .chain(&MOTION_HISTORY_COLUMNS[..extra]),
         )
         .map_err(csv_error)?;
@@ -158,12 +165,18 @@ fn history_table_with(
             cell(12, r.open_fraction)?,
             optional(13, r.compression_set)?,
         ];
-        let gas_cell = match mean_pressure {
-            Some(p) => Some(number(row, GAS_HISTORY_COLUMN, p * r.leak_rate)?),
-            None => None,
+        let gas_cells = match mean_pressure {
+            Some(p) => vec![
+                number(row, GAS_HISTORY_COLUMN, p * r.leak_rate)?,
+                match r.permeation {
+                    Some(q) => number(row, PERMEATION_HISTORY_COLUMN, q)?,
+                    None => String::new(),
+                },
+            ],
+            None => Vec::new(),
         };
         writer
-            .write_record(record.into_iter().chain(gas_cell).chain(motion_cells))
+            .write_record(record.into_iter().chain(gas_cells).chain(motion_cells))
             .map_err(csv_error)?;
     }
     finish(writer)
@@ -264,13 +277,36 @@ pub struct GasSummary {
     pub initial_throughput_mbar_l: f64,
     #[serde(rename = "final_throughput_mbar_L_per_s")]
     pub final_throughput_mbar_l: f64,
+    /// Permeation throughput through the rubber at the end \[Pa·m³/s\] (docs/model.md §13.7;
+    /// absent when the run carries none).
+    #[serde(
+        rename = "permeation_Pa_m3_per_s",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub final_permeation: Option<f64>,
+    /// Interface + permeation throughput at the end \[Pa·m³/s\]: what a leak detector sees,
+    /// and what `max_leak_rate` is compared with.
+    #[serde(rename = "total_throughput_Pa_m3_per_s")]
+    pub final_total: f64,
+    /// The permeation time lag w²/(6D) at the final temperature \[s\], when D is known.
+    #[serde(
+        rename = "permeation_time_lag_s",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub permeation_time_lag: Option<f64>,
 }
 
 impl GasSummary {
-    fn new(fluid: &Fluid, result: &LifeResult) -> Option<Self> {
+    fn new(problem: &LifeProblem, result: &LifeResult) -> Option<Self> {
+        let fluid = &problem.fluid;
         let gas = fluid.gas?;
         let p = fluid.mean_pressure()?;
         let (first, last) = (p * result.initial_leak_rate(), p * result.final_leak_rate());
+        let final_permeation = result.rows.last().and_then(|r| r.permeation);
+        let permeation_time_lag = match (problem.permeation, result.rows.last()) {
+            (Some(s), Some(r)) => s.time_lag(r.temperature),
+            _ => None,
+        };
         Some(GasSummary {
             gas: gas.gas.id.to_owned(),
             inlet_pressure_pa: gas.outlet_pressure + fluid.pressure_difference,
@@ -280,6 +316,9 @@ impl GasSummary {
             final_throughput: last,
             initial_throughput_mbar_l: first * 10.0,
             final_throughput_mbar_l: last * 10.0,
+            final_permeation,
+            final_total: last + final_permeation.unwrap_or(0.0),
+            permeation_time_lag,
         })
     }
 
@@ -287,6 +326,15 @@ impl GasSummary {
         vec![
             ("initial_throughput_Pa_m3_per_s", self.initial_throughput),
             ("final_throughput_Pa_m3_per_s", self.final_throughput),
+            (
+                "permeation_Pa_m3_per_s",
+                self.final_permeation.unwrap_or(0.0),
+            ),
+            ("total_throughput_Pa_m3_per_s", self.final_total),
+            (
+                "permeation_time_lag_s",
+                self.permeation_time_lag.unwrap_or(0.0),
+            ),
         ]
     }
 }
@@ -600,7 +648,7 @@ impl Summary {
                 energisation_factor: problem.energisation_factor,
                 extrusion_gap_m: g.extrusion_gap,
             }),
-            gas: GasSummary::new(&problem.fluid, result),
+            gas: GasSummary::new(problem, result),
         }
     }
 
@@ -861,6 +909,43 @@ pub fn human_summary(
                 throughput(p * result.final_leak_rate())
             ),
         );
+        let permeation = |r: Option<&crate::simulate::HistoryRow>| r.and_then(|r| r.permeation);
+        if let (Some(first), Some(last)) = (
+            permeation(result.rows.first()),
+            permeation(result.rows.last()),
+        ) {
+            let lag = match (problem.permeation, result.rows.last()) {
+                (Some(s), Some(r)) => s.time_lag(r.temperature).map_or_else(
+                    || "time lag unknown: steady flow from installation, an upper bound".to_owned(),
+                    |lag| {
+                        format!(
+                            "time lag {} s ({} h)",
+                            human(lag, 3),
+                            human(lag / 3600.0, 3)
+                        )
+                    },
+                ),
+                _ => String::new(),
+            };
+            line(
+                "permeation",
+                format!(
+                    "{} at installation, {} after {duration} (through the rubber; {lag}; \
+                     ILLUSTRATIVE data)",
+                    throughput(first),
+                    throughput(last)
+                ),
+            );
+            line(
+                "total",
+                format!(
+                    "{} at installation, {} after {duration} (interface + permeation: what a \
+                     leak detector sees, and what max_leak_rate is compared with)",
+                    throughput(p * result.initial_leak_rate() + first),
+                    throughput(p * result.final_leak_rate() + last)
+                ),
+            );
+        }
     }
     line(
         "leaked volume",
@@ -1224,6 +1309,7 @@ mod tests {
             contact_width: 1e-3,
             u_c,
             leak_rate,
+            permeation: None,
             leaked_volume: leak_rate * time,
             open_fraction: 1.0,
             compression_set: None,

@@ -432,6 +432,27 @@ impl Source<'_> {
                 ));
             }
         }
+        // permeation through the rubber for a gas (docs/model.md §13.7): the library id names
+        // the compound class; a replaced material is not the scenario's library compound
+        let (permeation, permeation_note) = match fluid.gas {
+            Some(gas) => {
+                let library = raw
+                    .material
+                    .get_ref()
+                    .library
+                    .as_ref()
+                    .filter(|_| replacement.is_none())
+                    .map(|l| l.get_ref().as_str());
+                crate::permeation::SealPermeation::for_seal(
+                    library,
+                    gas.gas.id,
+                    &seal.geometry,
+                    gas.outlet_pressure + fluid.pressure_difference,
+                    gas.outlet_pressure,
+                )
+            }
+            None => (None, None),
+        };
         let life = LifeProblem {
             material: material.clone(),
             asperity_modulus,
@@ -454,8 +475,15 @@ impl Source<'_> {
             strips: STRIPS,
             contamination,
             motion,
+            permeation,
         };
         let mut warnings = seal.warnings;
+        if let Some(note) = permeation_note {
+            warnings.push(
+                self.error(raw.fluid.span(), "fluid.gas", format!("note: {note}"))
+                    .to_string(),
+            );
+        }
         warnings.extend(notes.iter().map(ToString::to_string));
         let known = raw
             .fluid

@@ -138,6 +138,12 @@ struct Snapshot {
     /// `open_leak_rate` = this + the drag; a stroke cycle: = `open_leak_rate`); `None` without
     /// motion.
     open_static_leak_rate: Option<f64>,
+    /// Permeation throughput through the rubber \[Pa·m³/s\] (`None` without
+    /// [`LifeProblem::permeation`]).
+    permeation: Option<f64>,
+    /// The permeation as the volume flow at the mean pressure p̄ it stands for, Q/p̄ \[m³/s\]:
+    /// what the leak-rate criterion adds to `leak_rate` (a detector sees both; §8).
+    permeation_flow: f64,
 }
 
 /// The leak through a profile with the fluid pressure inside the interface.
@@ -803,6 +809,11 @@ impl<'a> Simulator<'a> {
     fn open_snapshot_at(&self, state: &Mechanics, t: f64) -> Snapshot {
         let p = self.problem;
         let temperature = p.environment.at(t);
+        let permeation = p.permeation.map(|s| s.throughput(t, temperature));
+        let permeation_flow = match (permeation, p.fluid.mean_pressure()) {
+            (Some(q), Some(mean)) if mean > 0.0 => q / mean,
+            _ => 0.0,
+        };
         let profile = self.profile_at(state, t);
         let retained = profile.force_per_length() / self.reference_force;
         let moduli = self.asperity_moduli(state);
@@ -902,6 +913,8 @@ impl<'a> Simulator<'a> {
             open_fraction: 1.0,
             motion,
             open_static_leak_rate,
+            permeation,
+            permeation_flow,
         }
     }
 
@@ -966,6 +979,7 @@ impl<'a> Simulator<'a> {
             contact_width: snap.profile.width(),
             u_c: snap.u_c,
             leak_rate: snap.leak_rate,
+            permeation: snap.permeation,
             leaked_volume: state.leaked_volume,
             state: snap.state,
             compression_set: snap.compression_set,
@@ -1074,7 +1088,8 @@ impl<'a> Simulator<'a> {
 impl Snapshot {
     fn as_event_input(&self, leaked_volume: f64) -> events::EventInput {
         events::EventInput {
-            leak_rate: self.leak_rate,
+            // a gas's criterion is on what a detector sees: interface + permeation (§8)
+            leak_rate: self.leak_rate + self.permeation_flow,
             leaked_volume,
             retained_force: self.retained,
             compression_set: self.compression_set.unwrap_or(0.0),

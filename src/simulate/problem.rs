@@ -116,6 +116,9 @@ pub struct LifeProblem {
     pub contamination: Option<Contamination>,
     /// The countersurface's motion (`[motion]`, PY08 §8; `None`: a static seal, zero cost).
     pub motion: Option<MotionSpec>,
+    /// A gas through an O-ring of a compound with data: permeation through the rubber, carried
+    /// beside the interface leak (docs/model.md §13.7); `None` otherwise.
+    pub permeation: Option<crate::permeation::SealPermeation>,
 }
 
 impl LifeProblem {
@@ -240,6 +243,9 @@ pub struct HistoryRow {
     /// Height of the critical constriction at the peak pressure \[m\]; `None` when sealed there.
     pub u_c: Option<f64>,
     pub leak_rate: f64,
+    /// A gas with [`LifeProblem::permeation`]: the permeation throughput through the rubber at
+    /// the row's time and temperature \[Pa·m³/s\] (docs/model.md §13.7); not in `leak_rate`.
+    pub permeation: Option<f64>,
     pub leaked_volume: f64,
     pub state: SealState,
     /// Compression set (ASTM D395 definition, after a full recovery) with ageing on.

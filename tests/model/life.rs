@@ -80,6 +80,7 @@ pub(crate) fn oring_problem(material: Material) -> LifeProblem {
         strips: 16,
         contamination: None,
         motion: None,
+        permeation: None,
     }
 }
 

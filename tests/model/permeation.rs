@@ -268,3 +268,104 @@ proptest! {
         prop_assert!(close(a.area * a.length, PI * mean * PI * d * d / 4.0, 1e-12));
     }
 }
+
+const HELIUM_FLANGE: &str = include_str!("../../scenarios/helium-leak-test-flange.toml");
+const NBR_WATER: &str = include_str!("../../scenarios/oring-nbr-water-80c.toml");
+
+/// J/J_ss of an initially empty slab at τ = D t/ℓ², written out here from the Fourier series of
+/// docs/model.md §13.2 (independent of the library's two-branch evaluation).
+fn flux_ratio_series(tau: f64) -> f64 {
+    1.0 + 2.0
+        * (1..200)
+            .map(|n| {
+                let n = n as f64;
+                let sign = if n as i64 % 2 == 1 { -1.0 } else { 1.0 };
+                sign * (-n * n * PI * PI * tau).exp()
+            })
+            .sum::<f64>()
+}
+
+#[test]
+fn the_helium_flange_run_carries_permeation_building_up_to_the_closed_form() {
+    use sealsim::scenario::Scenario;
+    use sealsim::seal::SealGeometry;
+    use sealsim::simulate::{FailureMode, simulate};
+    use std::path::Path;
+    let mut problem = Scenario::from_str(HELIUM_FLANGE, Path::new("helium.toml"))
+        .unwrap()
+        .life;
+    let seal = problem.permeation.expect("FKM + helium has data");
+    let SealGeometry::ORing {
+        cross_section,
+        mean_diameter,
+        squeeze,
+    } = problem.geometry
+    else {
+        panic!("an O-ring")
+    };
+    // 23 °C; 1 bar of helium against 1e-6 mbar = 1e-4 Pa
+    let (temperature, pa, pb) = (296.15, 1e5, 1e-4);
+    assert!(close(seal.p_high, pa, 1e-12) && close(seal.p_low, pb, 1e-9));
+    let data = permeation::data("fkm", "helium").unwrap();
+    let pi = data.permeability_at(temperature);
+    let d = data.diffusivity_at(temperature).unwrap();
+    let path = PermeationPath::o_ring(cross_section, mean_diameter, squeeze).unwrap();
+    let r = permeation::GAS_CONSTANT;
+    let steady = path.steady_molar_flow(pi, pa, pb) * r * temperature;
+    // the hand value of docs/model.md §13.3: ṅ = 4·D_mean·(1 − ε)²·Π·Δp, Q = ṅ R T
+    let hand = 4.0 * mean_diameter * (1.0 - squeeze).powi(2) * pi * (pa - pb) * r * temperature;
+    assert!(close(steady, hand, 1e-9), "{steady} vs {hand}");
+    // FKM helium ≈ 5.39 barrer, D ≈ 50.7 mm, ε = 0.25: ≈ 5.1e-8 Pa·m³/s (×2 the NBR headline)
+    assert!((4e-8..6e-8).contains(&steady), "{steady}");
+
+    // the shipped day: 0 at installation, rising, each row the build-up at its time
+    let day = simulate(&problem);
+    assert_eq!(day.rows[0].permeation, Some(0.0));
+    let lag = path.time_lag(d);
+    for pair in day.rows.windows(2) {
+        let (a, b) = (pair[0].permeation.unwrap(), pair[1].permeation.unwrap());
+        assert!(b >= a && b <= steady * (1.0 + 1e-12), "{a} {b}");
+    }
+    for row in &day.rows {
+        let tau = row.time / (6.0 * lag);
+        let expected = steady * flux_ratio_series(tau).clamp(0.0, 1.0);
+        let got = row.permeation.unwrap();
+        assert!(
+            (got - expected).abs() <= 1e-9 * steady,
+            "t = {}: {got} vs {expected}",
+            row.time
+        );
+    }
+    // at t = t_lag (τ = 1/6) the flow is the library's molar_flow_at and the series' value
+    let at_lag = seal.throughput(lag, temperature);
+    let library = path.molar_flow_at(pi, Some(d), pa, pb, lag) * r * temperature;
+    assert!(close(at_lag, library, 1e-12));
+    assert!(close(at_lag, steady * flux_ratio_series(1.0 / 6.0), 1e-9));
+    // the interface seals, so the criterion (1e-9 mbar·L/s = 1e-10 Pa·m³/s) is crossed by the
+    // permeation alone: a helium detector sees the sum
+    assert!(day.rows.iter().all(|r| r.leak_rate == 0.0));
+    let failure = day.failure.expect("the permeation crosses 1e-10 Pa·m³/s");
+    assert_eq!(failure.mode, FailureMode::LeakRate);
+    let at_failure = seal.throughput(failure.time, temperature);
+    assert!(close(at_failure, 1e-10, 1e-6), "{at_failure}");
+
+    // a month: the steady closed form (τ ≈ 57, the transient below 1e-300)
+    problem.time.duration = 30.0 * 86400.0;
+    let month = simulate(&problem);
+    let last = month.rows.last().unwrap().permeation.unwrap();
+    assert!(close(last, steady, 1e-9), "{last} vs {steady}");
+}
+
+#[test]
+fn a_liquid_run_carries_no_permeation() {
+    use sealsim::scenario::Scenario;
+    use sealsim::simulate::simulate;
+    use std::path::Path;
+    let problem = Scenario::from_str(NBR_WATER, Path::new("nbr.toml"))
+        .unwrap()
+        .life;
+    assert!(problem.permeation.is_none());
+    let mut short = problem;
+    short.time.duration = 86400.0;
+    assert!(simulate(&short).rows.iter().all(|r| r.permeation.is_none()));
+}
