@@ -183,17 +183,8 @@ impl Source<'_> {
             }
             Ok(())
         };
-        let required = |q: &Option<Quantity>, f: &Field| match q {
-            Some(q) => self.quantity(q, f),
-            None => Err(self.error(
-                table.span(),
-                f.key,
-                format!(
-                    "missing key `{}` of a {kind} size distribution",
-                    f.key.trim_start_matches("contamination.size_distribution.")
-                ),
-            )),
-        };
+        let why = format!("of a {kind} size distribution");
+        let required = |q: &Option<Quantity>, f: &Field| self.required(q, f, table.span(), &why);
         match kind {
             "monodisperse" => {
                 takes(&["diameter"], "diameter")?;

@@ -248,16 +248,13 @@ impl Source<'_> {
                 }
             },
         };
-        let required = |q: &Option<Quantity>, f: &Field, keys: &str| match q {
-            Some(q) => self.quantity(q, f),
-            None => Err(self.error(
+        let required = |q: &Option<Quantity>, f: &Field, keys: &str| {
+            self.required(
+                q,
+                f,
                 table.span(),
-                f.key,
-                format!(
-                    "missing key `{}` in [seal] ({a_seal} needs {keys})",
-                    f.key.trim_start_matches("seal.")
-                ),
-            )),
+                &format!("in [seal] ({a_seal} needs {keys})"),
+            )
         };
         let foreign = |keys: &[(&Option<Quantity>, &str)], takes: &str| {
             for (present, key) in keys {

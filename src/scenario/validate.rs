@@ -22,6 +22,7 @@ use crate::simulate::LifeProblem;
 use crate::simulate::{AsperityModulus, GrooveInterface};
 use crate::surface::Spectrum;
 use crate::units::{self, Dimension, show};
+use std::ops::Range;
 use toml::Spanned;
 
 /// Gauss–Legendre points across an O-ring's Hertz profile (strips in series) in a life run.
@@ -668,6 +669,29 @@ impl Source<'_> {
         }
     }
 
+    /// [`Source::quantity`] for a key that must be present: when it is absent, an error at
+    /// `table` (the span of its table) reading "missing key `name` {why}", `name` the key's last
+    /// path component.
+    pub(super) fn required(
+        &self,
+        raw: &Option<Quantity>,
+        field: &Field,
+        table: Range<usize>,
+        why: &str,
+    ) -> Result<f64, ScenarioError> {
+        match raw {
+            Some(q) => self.quantity(q, field),
+            None => Err(self.error(
+                table,
+                field.key,
+                format!(
+                    "missing key `{}` {why}",
+                    field.key.rsplit('.').next().unwrap_or(field.key)
+                ),
+            )),
+        }
+    }
+
     /// [`Source::quantity`] for a key that may be absent.
     pub(super) fn optional(
         &self,
@@ -832,16 +856,8 @@ impl Source<'_> {
     /// three Sutherland constants together).
     fn custom_gas(&self, table: &Spanned<RawFluid>) -> Result<crate::gas::Gas, ScenarioError> {
         let raw = table.get_ref();
-        let required = |q: &Option<Quantity>, f: &Field| match q {
-            Some(q) => self.quantity(q, f),
-            None => Err(self.error(
-                table.span(),
-                f.key,
-                format!(
-                    "missing key `{}` in [fluid] for gas = \"custom\"",
-                    f.key.trim_start_matches("fluid.")
-                ),
-            )),
+        let required = |q: &Option<Quantity>, f: &Field| {
+            self.required(q, f, table.span(), "in [fluid] for gas = \"custom\"")
         };
         let molar_mass = required(&raw.molar_mass, &MOLAR_MASS)?;
         let molecular_diameter = required(&raw.molecular_diameter, &MOLECULAR_DIAMETER)?;
@@ -1020,16 +1036,8 @@ impl Source<'_> {
                  `viscosity_100c` with `density`)",
             ));
         };
-        let required = |q: &Option<Quantity>, f: &Field, why: &str| match q {
-            Some(q) => self.quantity(q, f),
-            None => Err(self.error(
-                first.span(),
-                f.key,
-                format!(
-                    "missing key `{}` in [fluid]: {why}",
-                    f.key.trim_start_matches("fluid.")
-                ),
-            )),
+        let required = |q: &Option<Quantity>, f: &Field, why: &str| {
+            self.required(q, f, first.span(), &format!("in [fluid]: {why}"))
         };
         let both = "the ASTM D341 law needs the kinematic viscosities at 40 °C and 100 °C";
         let nu40 = required(&raw.viscosity_40c, &VISCOSITY_40C, both)?;
