@@ -84,6 +84,12 @@ const MAX_LEAKED_VOLUME: Field = field(
     "m^3",
     Bound::Range(1e-30, 1e6),
 );
+const REFERENCE_PRESSURE: Field = field(
+    "failure.reference_pressure",
+    Dimension::PRESSURE,
+    "Pa",
+    Bound::Range(1.0, 1e10),
+);
 const MIN_RETAINED_FORCE: Field = field(
     "failure.min_retained_force",
     Dimension::DIMENSIONLESS,
@@ -593,13 +599,18 @@ impl Source<'_> {
             });
         };
         let raw = table.get_ref();
+        let reference = self.reference_state(raw, fluid)?;
         Ok(FailureCriteria {
             max_leak_rate: raw
                 .max_leak_rate
                 .as_ref()
-                .map(|q| self.max_leak_rate(q, fluid))
+                .map(|q| self.max_leak_rate(q, fluid, reference))
                 .transpose()?,
-            max_leaked_volume: self.optional(raw.max_leaked_volume.as_ref(), &MAX_LEAKED_VOLUME)?,
+            max_leaked_volume: raw
+                .max_leaked_volume
+                .as_ref()
+                .map(|q| self.max_leaked_volume(q, fluid, reference))
+                .transpose()?,
             min_retained_force: self
                 .optional(raw.min_retained_force.as_ref(), &MIN_RETAINED_FORCE)?,
             retained_force_reference: self
@@ -626,6 +637,7 @@ impl Source<'_> {
         &self,
         raw: &super::raw::Quantity,
         fluid: &crate::fluid::Fluid,
+        reference: Option<ReferenceState>,
     ) -> Result<f64, ScenarioError> {
         let text = match raw.get_ref() {
             super::raw::RawQuantity::Text(t) => Some(t.as_str()),
@@ -654,19 +666,24 @@ impl Source<'_> {
                  \"1e-9 mbar*L/s\", \"1e-10 Pa*m^3/s\", \"1e-4 sccm\" or \"1e-12 mol/s\"",
             ));
         };
-        if crate::units::parse_quantity(t, Dimension::VOLUME_FLOW).is_ok() {
-            return Err(self.error(
-                raw.span(),
-                MAX_LEAK_RATE.key,
-                format!(
-                    "\"{t}\" is a volume flow, but [fluid] is a gas, whose volume flow depends \
-                     on the pressure it is counted at: give a throughput (Pa*m^3/s, mbar*L/s, \
-                     Torr*L/s, sccm, slm or mol/s)"
-                ),
-            ));
-        }
-        let q = crate::units::parse_throughput(t, gas.temperature)
-            .map_err(|e| self.error(raw.span(), MAX_LEAK_RATE.key, e.to_string()))?;
+        let q = if let Ok(v) = crate::units::parse_quantity(t, Dimension::VOLUME_FLOW) {
+            let Some(r) = reference else {
+                return Err(self.error(
+                    raw.span(),
+                    MAX_LEAK_RATE.key,
+                    format!(
+                        "\"{t}\" is a volume flow, but [fluid] is a gas, whose volume flow \
+                         depends on the pressure it is counted at: give a throughput (Pa*m^3/s, \
+                         mbar*L/s, Torr*L/s, sccm, slm or mol/s), or state the conditions with \
+                         `reference_pressure` (and `reference_temperature`) in [failure]"
+                    ),
+                ));
+            };
+            r.throughput(v, gas.temperature)
+        } else {
+            crate::units::parse_throughput(t, gas.temperature)
+                .map_err(|e| self.error(raw.span(), MAX_LEAK_RATE.key, e.to_string()))?
+        };
         if !(1e-30..=1e6).contains(&q) {
             return Err(self.error(
                 raw.span(),
@@ -676,6 +693,105 @@ impl Source<'_> {
         }
         Ok(q / p_mean)
     }
+
+    /// `[failure] reference_pressure` and `reference_temperature`: the state at which a gas's
+    /// volume criteria are counted (docs/model.md §3.9). Only for a gas; the temperature
+    /// defaults to the gas temperature at installation.
+    fn reference_state(
+        &self,
+        raw: &RawFailure,
+        fluid: &crate::fluid::Fluid,
+    ) -> Result<Option<ReferenceState>, ScenarioError> {
+        let Some(pressure) = raw.reference_pressure.as_ref() else {
+            if let Some(t) = raw.reference_temperature.as_ref() {
+                return Err(self.error(
+                    t.span(),
+                    "failure.reference_temperature",
+                    "goes with `reference_pressure`: a volume of gas is counted at a pressure \
+                     and a temperature",
+                ));
+            }
+            return Ok(None);
+        };
+        let Some(gas) = fluid.gas else {
+            return Err(self.error(
+                pressure.span(),
+                REFERENCE_PRESSURE.key,
+                "the reference state of a volume criterion belongs to a gas; a liquid's volume \
+                 does not depend on it",
+            ));
+        };
+        let temperature = match raw.reference_temperature.as_ref() {
+            Some(t) => self.absolute_temperature(t, "failure.reference_temperature")?,
+            None => gas.temperature,
+        };
+        Ok(Some(ReferenceState {
+            pressure: self.quantity(pressure, &REFERENCE_PRESSURE)?,
+            temperature,
+        }))
+    }
+
+    /// `[failure] max_leaked_volume` as the volume the run integrates: a liquid's volume
+    /// \[m³\]; for a gas, the volume at the mean pressure p̄ that carries the same amount of gas
+    /// at the gas temperature T(0): a pV amount (`mbar*L`, `Pa*m^3`) `/p̄`, an amount (`mol`)
+    /// `n R T/p̄`, or a volume at the stated reference state `p_ref V T/(T_ref p̄)` (docs/model.md
+    /// §3.9). A volume of gas without its reference state is refused.
+    fn max_leaked_volume(
+        &self,
+        raw: &super::raw::Quantity,
+        fluid: &crate::fluid::Fluid,
+        reference: Option<ReferenceState>,
+    ) -> Result<f64, ScenarioError> {
+        let (Some(gas), Some(p_mean), super::raw::RawQuantity::Text(t)) =
+            (fluid.gas, fluid.mean_pressure(), raw.get_ref())
+        else {
+            return self.quantity(raw, &MAX_LEAKED_VOLUME);
+        };
+        let pv = if let Ok(v) = crate::units::parse_quantity(t, Dimension::VOLUME) {
+            let Some(r) = reference else {
+                return Err(self.error(
+                    raw.span(),
+                    MAX_LEAKED_VOLUME.key,
+                    format!(
+                        "\"{t}\" is a volume, but [fluid] is a gas, whose volume depends on the \
+                         pressure it is counted at: give an amount of gas (\"1 mbar*L\", \
+                         \"1e-3 Pa*m^3\", \"1e-6 mol\"), or state the conditions with \
+                         `reference_pressure` (and `reference_temperature`) in [failure]"
+                    ),
+                ));
+            };
+            r.throughput(v, gas.temperature)
+        } else if let Ok(pv) = crate::units::parse_quantity(t, Dimension::ENERGY) {
+            pv
+        } else if let Ok(n) = crate::units::parse_quantity(t, Dimension::AMOUNT) {
+            n * crate::gas::GAS_CONSTANT * gas.temperature
+        } else {
+            return Err(self.error(
+                raw.span(),
+                MAX_LEAKED_VOLUME.key,
+                format!(
+                    "\"{t}\" is not an amount of gas: give a pV amount (\"1 mbar*L\", \
+                     \"1e-3 Pa*m^3\"), a molar amount (\"1e-6 mol\"), or a volume with \
+                     `reference_pressure` stated"
+                ),
+            ));
+        };
+        let v = pv / p_mean;
+        if !(1e-30..=1e6).contains(&v) {
+            return Err(self.error(
+                raw.span(),
+                MAX_LEAKED_VOLUME.key,
+                format!(
+                    "as a volume at the mean pressure p̄ = {} Pa it must lie in [1e-30, 1e6] m³, \
+                     got {} m³",
+                    show(p_mean),
+                    show(v)
+                ),
+            ));
+        }
+        Ok(v)
+    }
+
 
     /// `seal.installation_time` (default [`DEFAULT_INSTALLATION_TIME`]).
     pub(super) fn installation_time(&self, table: &Spanned<RawSeal>) -> Result<f64, ScenarioError> {
@@ -867,6 +983,24 @@ pub fn parse_fidelity(name: &str) -> Result<Fidelity, String> {
             .collect();
         format!("must be one of {}, got {name:?}", levels.join(", "))
     })
+}
+
+/// The state at which a gas's volume criteria are counted (`[failure] reference_pressure`,
+/// `reference_temperature`).
+#[derive(Debug, Clone, Copy)]
+struct ReferenceState {
+    /// p_ref \[Pa\].
+    pressure: f64,
+    /// T_ref \[K\].
+    temperature: f64,
+}
+
+impl ReferenceState {
+    /// The pV amount (or flow) at the gas temperature `t` \[K\] of a volume (or volume flow)
+    /// `v` counted at this state: the same moles `p_ref v/(R T_ref)` carry `p_ref v t/T_ref`.
+    fn throughput(self, v: f64, t: f64) -> f64 {
+        self.pressure * v * t / self.temperature
+    }
 }
 
 #[cfg(test)]

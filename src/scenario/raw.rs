@@ -300,6 +300,8 @@ pub(super) struct RawEnvironment {
 pub(super) struct RawFailure {
     pub max_leak_rate: Option<Quantity>,
     pub max_leaked_volume: Option<Quantity>,
+    pub reference_pressure: Option<Quantity>,
+    pub reference_temperature: Option<Quantity>,
     pub min_retained_force: Option<Quantity>,
     pub retained_force_reference: Option<Quantity>,
     pub max_compression_set: Option<Quantity>,

@@ -289,3 +289,74 @@ fn a_custom_gas_with_nitrogens_constants_is_nitrogen() {
     assert_eq!((c1, c2), (Some(0), Some(0)), "{e1}{e2}");
     assert_eq!(h1, h2, "the same gas must give the same history");
 }
+
+#[test]
+fn a_volume_criterion_on_a_gas_is_accepted_at_its_stated_conditions() {
+    // sccm is a volume flow at 0 °C and 1 atm: the same criterion written as cm³/min with that
+    // reference state must give the same run, bit for bit
+    let with = |failure: &str| {
+        let (code, stdout, stderr, csv, json) = run(&format!("{FLAT_GAS}[failure]\n{failure}"));
+        assert_eq!(code, Some(0), "{stderr}");
+        // the JSON names its (temporary) scenario file: drop that line
+        let json: String = json
+            .unwrap_or_default()
+            .lines()
+            .filter(|l| !l.contains("\"scenario_file\""))
+            .collect();
+        (stdout, csv.unwrap_or_default(), json)
+    };
+    for q in ["1e-3", "60"] {
+        let a = with(&format!("max_leak_rate = \"{q} sccm\"\n"));
+        let b = with(&format!(
+            "max_leak_rate = \"{q} cm^3/min\"\nreference_pressure = \"101325 Pa\"\n\
+             reference_temperature = \"0 C\"\n"
+        ));
+        assert!(a == b, "{q} sccm: {}\n{}", a.0, b.0);
+    }
+    // a leaked amount: 1 mbar·L = 0.1 Pa·m³; 1 L at 1 bar and the gas temperature is 1e5 ×
+    // 1e-3 Pa·m³; the leak is ≈ 5e-6 Pa·m³/s, so 0.1 Pa·m³ is reached after ≈ 6 h
+    let a = with("max_leaked_volume = \"1 mbar*L\"\n");
+    let b = with("max_leaked_volume = \"0.1 Pa*m^3\"\n");
+    let c = with("max_leaked_volume = \"1 cm^3\"\nreference_pressure = \"1 bar\"\n");
+    assert!(a == b, "{}\n{}", a.0, b.0);
+    assert!(a == c, "{}\n{}", a.0, c.0);
+    // 0.1 Pa·m³ over 5.0127e-6 Pa·m³/s = 19950 s
+    assert!(a.0.contains("FAILS after 5.54 h") && a.0.contains("by leaked_volume"), "{}", a.0);
+}
+
+#[test]
+fn a_volume_criterion_on_a_gas_without_its_conditions_is_refused() {
+    refused(
+        &format!("{FLAT_GAS}[failure]\nmax_leaked_volume = \"1 L\"\n"),
+        21,
+        "failure.max_leaked_volume",
+        "state the conditions with `reference_pressure`",
+    );
+    refused(
+        &format!("{FLAT_GAS}[failure]\nmax_leaked_volume = \"1 N\"\n"),
+        21,
+        "failure.max_leaked_volume",
+        "is not an amount of gas",
+    );
+    refused(
+        &format!(
+            "{FLAT_GAS}[failure]\nmax_leak_rate = \"1 mbar*L/s\"\nreference_temperature = \"0 C\"\n"
+        ),
+        22,
+        "failure.reference_temperature",
+        "goes with `reference_pressure`",
+    );
+    let liquid = FLAT_GAS
+        .replace("gas = \"nitrogen\"", "viscosity = \"1 mPa*s\"")
+        .replace(
+            "inlet_pressure = \"2 bar\"",
+            "pressure_difference = \"1 bar\"",
+        )
+        .replace("outlet_pressure = \"1 bar\"\n", "");
+    refused(
+        &format!("{liquid}[failure]\nmax_leak_rate = \"1e-9 m^3/s\"\nreference_pressure = \"1 bar\"\n"),
+        21,
+        "failure.reference_pressure",
+        "belongs to a gas",
+    );
+}
