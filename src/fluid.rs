@@ -36,6 +36,9 @@ pub struct GasService {
     /// The gas temperature T \[K\] the fluid was last evaluated at ([`Fluid::at`]): the
     /// temperature of its throughput and of its mean free path.
     pub temperature: f64,
+    /// How the gas flows through the constrictions: with rarefaction (slip, transition, free
+    /// molecular; the default) or by the continuum law (docs/model.md §3.10).
+    pub flow_law: crate::gas::FlowLaw,
 }
 
 /// How a fluid's dynamic viscosity follows the temperature (docs/model.md §3.7).
@@ -424,14 +427,32 @@ impl Fluid {
             .map(|g| g.outlet_pressure + 0.5 * self.pressure_difference)
     }
 
-    /// The Knudsen number `Kn = λ(p̄, T)/u` of a gas at a constriction of height `gap` \[m\],
-    /// with the hard-sphere mean free path ([`crate::gas::Gas::mean_free_path`]) at the mean
-    /// pressure p̄ = (P_a + P_b)/2 and the gas temperature T ([`GasService::temperature`]);
-    /// `None` for a liquid.
+    /// The Knudsen number `Kn = λ_μ(p̄, T)/u` of a gas at a constriction of height `gap` \[m\],
+    /// with the viscosity-based mean free path of the rarefaction law
+    /// ([`crate::gas::Gas::viscous_mean_free_path`]) at the mean pressure p̄ = (P_a + P_b)/2 and
+    /// the gas temperature T ([`GasService::temperature`]); `None` for a liquid.
     pub fn knudsen(&self, gap: f64) -> Option<f64> {
         let g = self.gas?;
         let p = self.mean_pressure()?;
-        Some(g.gas.mean_free_path(g.temperature, p) / gap)
+        Some(g.gas.viscous_mean_free_path(g.temperature, p) / gap)
+    }
+
+    /// What the rarefaction law needs at gauge pressure `gauge` \[Pa\] over the outlet
+    /// (absolute P_b + gauge) and the gas temperature (docs/model.md §3.10); `None` for a liquid
+    /// or a gas under the continuum law.
+    pub fn free_path_at(&self, gauge: f64) -> Option<crate::gas::Rarefied> {
+        let g = self.gas?;
+        (g.flow_law == crate::gas::FlowLaw::Rarefied).then(|| crate::gas::Rarefied {
+            free_path: g
+                .gas
+                .viscous_mean_free_path(g.temperature, (g.outlet_pressure + gauge).max(0.0)),
+            molecular_diameter: g.gas.molecular_diameter,
+        })
+    }
+
+    /// [`Self::free_path_at`] at the mean pressure p̄ (gauge ΔP/2).
+    pub fn mean_free_path(&self) -> Option<crate::gas::Rarefied> {
+        self.free_path_at(0.5 * self.pressure_difference)
     }
 
     /// For the interface-pressure model (docs/model.md §3.6, §3.9): the weight by which a gas's

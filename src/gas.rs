@@ -93,11 +93,67 @@ impl Gas {
                 * pressure)
     }
 
+    /// The viscosity-based mean free path \[m\] at `temperature` \[K\] and absolute
+    /// `pressure` \[Pa\]: `λ_μ = (μ(T)/p) √(π R T/(2 M))` (docs/model.md §3.10), the mean free
+    /// path in which the rarefied slit-flow law is written ([`slit_rarefaction`]). Within a few
+    /// % of the hard-sphere [`Self::mean_free_path`] for the library gases (a test). ∞ at
+    /// p = 0.
+    pub fn viscous_mean_free_path(&self, temperature: f64, pressure: f64) -> f64 {
+        self.viscosity.at(temperature) / pressure
+            * (std::f64::consts::PI * GAS_CONSTANT * temperature / (2.0 * self.molar_mass)).sqrt()
+    }
+
     /// Density of the ideal gas ρ = p M/(R T) \[kg/m³\] at absolute `pressure` \[Pa\] and
     /// `temperature` \[K\].
     pub fn density(&self, pressure: f64, temperature: f64) -> f64 {
         pressure * self.molar_mass / (GAS_CONSTANT * temperature)
     }
+}
+
+/// How a gas flows through the interface's constrictions (docs/model.md §3.10).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FlowLaw {
+    /// The continuum (no-slip Poiseuille) law at every Knudsen number: for comparison.
+    Continuum,
+    /// Each constriction's conductance times the slit rarefaction factor
+    /// [`slit_rarefaction`] at its local Knudsen number (the default).
+    Rarefied,
+}
+
+/// A gas at one local pressure, as the rarefied conductance of a gap needs it
+/// (docs/model.md §3.10).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Rarefied {
+    /// The viscosity-based mean free path λ_μ \[m\] ([`Gas::viscous_mean_free_path`]).
+    pub free_path: f64,
+    /// The hard-sphere molecular diameter d \[m\]: a gap no wider passes no molecule.
+    pub molecular_diameter: f64,
+}
+
+impl Rarefied {
+    /// The conductance of a gap of height `u` \[m\] over its continuum value:
+    /// [`slit_rarefaction`] at Kn = λ_μ/u, and 0 for a gap no wider than a molecule.
+    pub fn factor(&self, u: f64) -> f64 {
+        if u <= self.molecular_diameter {
+            0.0
+        } else {
+            slit_rarefaction(self.free_path / u)
+        }
+    }
+}
+
+/// The rarefaction factor of pressure-driven flow through a slit at Knudsen number `kn`
+/// (λ_μ over the gap): the flow over its continuum (no-slip Poiseuille) value at the same
+/// local pressure and pressure gradient (docs/model.md §3.10). 1 at Kn = 0.
+pub fn slit_rarefaction(kn: f64) -> f64 {
+    if !(kn > 0.0) {
+        return 1.0;
+    }
+    // PLACEHOLDER (Beskok–Karniadakis form, coefficients to be checked against the source)
+    let alpha = 64.0 / (15.0 * std::f64::consts::PI)
+        * std::f64::consts::FRAC_2_PI
+        * (4.0 * kn.powf(0.4)).atan();
+    (1.0 + alpha * kn) * (1.0 + 6.0 * kn / (1.0 + kn))
 }
 
 /// White 2006 Table 1-2 (SECONDARY, see the module doc): T0 = 273 K for every row.

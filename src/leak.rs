@@ -378,6 +378,44 @@ impl ContactPath {
         self.channel_conductance(&self.critical_junction(s), shape_factor, viscosity)
     }
 
+    /// [`Self::conductance`] of a gas with the mean free path of the local pressure (`gas`;
+    /// `None`: a liquid, or the continuum law), docs/model.md §3.10 — a gap no wider than a
+    /// molecule conducts nothing:
+    /// * critical-junction levels: `α u_c³ f(λ/u_c)/(12η)`, f the slit rarefaction factor
+    ///   ([`crate::gas::slit_rarefaction`]) at the critical constriction's own Knudsen number;
+    /// * effective medium: Bruggeman over the separations, each gap u conducting
+    ///   `u³ f(λ/u)/(12η)` ([`EffectiveMediumTable::rarefied_cubed_gap`]);
+    /// * numerical: the table's effective gap u_eff with `f(λ/u_eff)` — the rarefaction of the
+    ///   ensemble's effective channel, not cell by cell.
+    pub fn gas_conductance(
+        &self,
+        s: f64,
+        shape_factor: f64,
+        viscosity: f64,
+        gas: Option<crate::gas::Rarefied>,
+    ) -> f64 {
+        let Some(l) = gas else {
+            return self.conductance(s, shape_factor, viscosity);
+        };
+        let rarefied = |u: f64, alpha: f64| junction_conductance(u, alpha, viscosity) * l.factor(u);
+        match self {
+            ContactPath::Table(t) => t
+                .critical_gap(s)
+                .map_or(0.0, |u_c| rarefied(u_c, shape_factor)),
+            ContactPath::EffectiveMedium(t) => t.rarefied_cubed_gap(s, l) / (12.0 * viscosity),
+            ContactPath::Numerical { table, .. } => {
+                let u = table.effective_gap(s);
+                if u > 0.0 { rarefied(u, 1.0) } else { 0.0 }
+            }
+            ContactPath::RuleOfThumb(_) | ContactPath::Exact(_) => {
+                match self.critical_junction(s) {
+                    Junction::Leaking(j) if j.u_c > 0.0 => rarefied(j.u_c, shape_factor),
+                    _ => 0.0,
+                }
+            }
+        }
+    }
+
     /// [`Self::conductance`] of a channel this path has already evaluated.
     pub fn channel_conductance(
         &self,
@@ -427,12 +465,15 @@ impl StaticSolver {
         let pb = &self.problem;
         let e_star = pb.material.effective_modulus();
         let junction = self.path.critical_junction(p0 / e_star);
-        // a gas: σ(e) weighed by the local density (P_b + p_f)/p̄, p_f = P0 − e (docs/model.md
-        // §3.9); 1 for a liquid
+        // a gas: σ(e) weighed by the local density (P_b + p_f)/p̄, p_f = P0 − e, each
+        // constriction rarefied at the local pressure (docs/model.md §3.9, §3.10); 1 for a liquid
         let sigma = |e: f64| {
-            self.path
-                .conductance(e / e_star, pb.shape_factor, pb.fluid.viscosity)
-                * pb.fluid.density_weight(p0 - e)
+            self.path.gas_conductance(
+                e / e_star,
+                pb.shape_factor,
+                pb.fluid.viscosity,
+                pb.fluid.free_path_at(p0 - e),
+            ) * pb.fluid.density_weight(p0 - e)
         };
         let (leak_rate, state) = match interface::uniform(
             &sigma,

@@ -231,19 +231,48 @@ impl SeparationDistribution {
     /// (module docs); exactly 0 at and above the threshold `contact_fraction ≥ 1/2`, or when
     /// no component has a positive gap.
     pub fn bruggeman_cubed_gap(&self, settings: EffectiveMediumSettings) -> f64 {
+        self.bruggeman(settings, None)
+    }
+
+    /// [`Self::bruggeman_cubed_gap`] of a gas whose every gap u conducts
+    /// `u³ f(λ/u)/(12η)`, f the slit rarefaction factor ([`crate::gas::slit_rarefaction`]) at
+    /// the gas's mean free path λ (docs/model.md §3.10): each separation carries its own
+    /// Knudsen number, and a gap no wider than a molecule conducts nothing. Returns `12 η σ_eff` \[m³\] (0 when sealed).
+    pub fn rarefied_bruggeman_cubed_gap(
+        &self,
+        settings: EffectiveMediumSettings,
+        free_path: crate::gas::Rarefied,
+    ) -> f64 {
+        self.bruggeman(settings, Some(free_path))
+    }
+
+    fn bruggeman(&self, settings: EffectiveMediumSettings, free_path: Option<crate::gas::Rarefied>) -> f64 {
         if self.contact >= 0.5 {
             return 0.0;
         }
-        // Wiener's upper bound: the arithmetic mean of u³ (where the residual is ≥ 0).
-        let upper = self.mean_cubed();
+        // Wiener's upper bound: the arithmetic mean of the local conductance (where the
+        // residual is ≥ 0); for a gas the continuum mean times the factor at the mean gap, and
+        // the bracket is widened upwards until the residual is ≥ 0.
+        let mut upper = self.mean_cubed();
         if !(upper > 0.0 && upper.is_finite()) {
             return 0.0;
         }
+        if let Some(l) = free_path {
+            upper *= crate::gas::slit_rarefaction(l.free_path / self.mean().max(f64::MIN_POSITIVE));
+        }
         let (nodes, weights) = gauss_legendre(settings.u_order.max(1));
-        let residual =
-            |g: f64| self.bruggeman_residual(g, settings.u_panels.max(1), &nodes, &weights);
+        let residual = |g: f64| {
+            self.bruggeman_residual(g, settings.u_panels.max(1), &nodes, &weights, free_path)
+        };
         let mut hi = upper.ln();
-        if residual(hi.exp()) < 0.0 {
+        if free_path.is_some() {
+            for _ in 0..60 {
+                if residual(hi.exp()) >= 0.0 {
+                    break;
+                }
+                hi += 10.0_f64.ln();
+            }
+        } else if residual(hi.exp()) < 0.0 {
             // rounding only: the bound holds exactly
             return upper;
         }
@@ -317,13 +346,45 @@ impl SeparationDistribution {
             .sum()
     }
 
-    /// `∫ P(u) (g − u³)/(g + u³) du` (monotonically increasing in g > 0).
-    fn bruggeman_residual(&self, g: f64, panels: usize, nodes: &[f64], weights: &[f64]) -> f64 {
-        let kernel = |u: f64| {
-            let u3 = (u * u * u).abs();
-            (g - u3) / (g + u3)
+    /// `∫ P(u) (g − c(u))/(g + c(u)) du` with the local `c(u) = |u|³`, or `|u|³ f(λ/|u|)` for
+    /// a gas with mean free path `free_path` λ (monotonically increasing in g > 0).
+    fn bruggeman_residual(
+        &self,
+        g: f64,
+        panels: usize,
+        nodes: &[f64],
+        weights: &[f64],
+        free_path: Option<crate::gas::Rarefied>,
+    ) -> f64 {
+        let local = |u: f64| {
+            let a = u.abs();
+            let u3 = a * a * a;
+            match free_path {
+                Some(l) => u3 * l.factor(a),
+                _ => u3,
+            }
         };
-        let u_eff = g.cbrt();
+        let kernel = |u: f64| {
+            let c = local(u);
+            (g - c) / (g + c)
+        };
+        // the gap where the kernel turns over, c(u*) = g: u* = g^{1/3} for a liquid; for a
+        // gas by bisection in ln u (c is increasing in u)
+        let u_eff = match free_path {
+            None => g.cbrt(),
+            Some(_) => {
+                let (mut lo, mut hi) = (g.cbrt().ln() - 60.0, g.cbrt().ln());
+                for _ in 0..60 {
+                    let m = 0.5 * (lo + hi);
+                    if local(m.exp()) < g {
+                        lo = m;
+                    } else {
+                        hi = m;
+                    }
+                }
+                (0.5 * (lo + hi)).exp()
+            }
+        };
         let mut total = self.contact;
         let norm = 1.0 / (2.0 * PI).sqrt();
         let mut cuts: Vec<f64> = Vec::with_capacity(12);
@@ -395,6 +456,29 @@ impl EffectiveMedium {
         EffectiveMedium {
             contact_fraction: p.contact_fraction(),
             cubed_gap: p.bruggeman_cubed_gap(settings),
+        }
+    }
+
+    /// [`Self::persson`] for a gas with mean free path `free_path` λ \[m\]: every separation
+    /// conducts with its own Knudsen number λ/u ([`SeparationDistribution::rarefied_bruggeman_cubed_gap`]).
+    pub fn persson_rarefied(
+        contact: &PerssonContact,
+        s: f64,
+        settings: EffectiveMediumSettings,
+        free_path: crate::gas::Rarefied,
+    ) -> Self {
+        let zeta1 = contact.spectrum().q1() / contact.spectrum().q0();
+        let c = contact.area_fraction(zeta1, s);
+        if c >= 0.5 {
+            return EffectiveMedium {
+                contact_fraction: c,
+                cubed_gap: 0.0,
+            };
+        }
+        let p = SeparationDistribution::persson(contact, s, settings);
+        EffectiveMedium {
+            contact_fraction: p.contact_fraction(),
+            cubed_gap: p.rarefied_bruggeman_cubed_gap(settings, free_path),
         }
     }
 

@@ -224,6 +224,52 @@ pub struct EffectiveMediumTable {
     s_half: f64,
     ln_h: f64,
     grid: Option<UniformCubic>,
+    /// The logit grid of `grid` (start, spacing, nodes): the gas columns share it.
+    layout: (f64, f64, usize),
+    /// A rarefied gas: `12 η σ_eff` against s, one column per node of ln λ (built on first use).
+    gas: GasColumns,
+}
+
+/// Spacing of the rarefied columns in ln λ (docs/model.md §3.10): ln(12ησ_eff) is smooth in
+/// ln λ (it goes from ln u³ to ln λ + const), so cubic interpolation over e-fold steps is
+/// accurate to ≈ 1e-4 (measured in tests/model/effective_medium.rs).
+const GAS_COLUMN_SPACING: f64 = 1.0;
+
+/// Above this Knudsen number over the surface's rms height, the rarefied effective medium is
+/// taken as free molecular: every local conductance proportional to λ, so σ_eff ∝ λ (Bruggeman
+/// is homogeneous of degree one in the conductances).
+const GAS_FREE_MOLECULAR_KN: f64 = 1e5;
+
+/// The rarefied columns of an [`EffectiveMediumTable`], keyed by the node index k of
+/// ln λ = k·[`GAS_COLUMN_SPACING`] and the molecular diameter's bits; built once each, on two
+/// threads, and shared by clones made afterwards. `None` for a column the solve could not
+/// tabulate (fewer than four open nodes): lookups then solve directly.
+#[derive(Default)]
+struct GasColumns(
+    std::sync::Mutex<
+        std::collections::BTreeMap<(i64, u64), Option<std::sync::Arc<UniformCubic>>>,
+    >,
+);
+
+impl Clone for GasColumns {
+    fn clone(&self) -> Self {
+        let map = self.0.lock().map(|m| m.clone()).unwrap_or_default();
+        GasColumns(std::sync::Mutex::new(map))
+    }
+}
+
+impl PartialEq for GasColumns {
+    /// A cache: never part of a table's value.
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
+}
+
+impl std::fmt::Debug for GasColumns {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let n = self.0.lock().map(|m| m.len()).unwrap_or(0);
+        write!(f, "GasColumns({n} built)")
+    }
 }
 
 impl EffectiveMediumTable {
@@ -256,12 +302,93 @@ impl EffectiveMediumTable {
             s_half,
             ln_h,
             grid,
+            layout: (lo, h, n),
+            gas: GasColumns::default(),
         }
+    }
+
+    /// `12 η σ_eff` \[m³\] of a rarefied gas at `s` (docs/model.md §3.10): every separation u
+    /// conducts `u³ f(λ/u)` (0 below a molecule). Cubic interpolation in ln λ between columns
+    /// tabulated against s on this table's grid (each column ≈ 0.25 s, built on first use);
+    /// free molecular (σ_eff ∝ λ) above λ = 1e5 h_rms; solved directly outside the columns'
+    /// range or next to a sealed node.
+    pub fn rarefied_cubed_gap(&self, s: f64, gas: crate::gas::Rarefied) -> f64 {
+        let direct = |gas: crate::gas::Rarefied| {
+            EffectiveMedium::persson_rarefied(self.junctions.exact(), s, self.settings, gas)
+                .cubed_gap
+        };
+        let top = GAS_FREE_MOLECULAR_KN * self.ln_h.exp();
+        if gas.free_path > top {
+            let at_top = crate::gas::Rarefied {
+                free_path: top,
+                ..gas
+            };
+            return self.rarefied_cubed_gap(s, at_top) * (gas.free_path / top);
+        }
+        if !(gas.free_path > 0.0) {
+            return direct(gas);
+        }
+        let v = logit(s / self.s_half);
+        let x = gas.free_path.ln() / GAS_COLUMN_SPACING;
+        let k0 = x.floor() as i64 - 1;
+        let t = x - (k0 + 1) as f64;
+        let weights = [
+            -t * (t - 1.0) * (t - 2.0) / 6.0,
+            (t + 1.0) * (t - 1.0) * (t - 2.0) / 2.0,
+            -(t + 1.0) * t * (t - 2.0) / 2.0,
+            (t + 1.0) * t * (t - 1.0) / 6.0,
+        ];
+        let mut ln_g = 0.0;
+        for (i, w) in weights.iter().enumerate() {
+            let Some(column) = self.gas_column(k0 + i as i64, gas.molecular_diameter) else {
+                return direct(gas);
+            };
+            let (a, b) = column.range();
+            if !(v >= a && v <= b) {
+                return direct(gas);
+            }
+            ln_g += w * column.eval(v);
+        }
+        (ln_g + 3.0 * self.ln_h).exp()
+    }
+
+    /// The rarefied column k (ln λ = k·[`GAS_COLUMN_SPACING`]) for molecular diameter `d`.
+    fn gas_column(&self, k: i64, d: f64) -> Option<std::sync::Arc<UniformCubic>> {
+        let key = (k, d.to_bits());
+        if let Some(c) = self.gas.0.lock().ok()?.get(&key) {
+            return c.clone();
+        }
+        let gas = crate::gas::Rarefied {
+            free_path: (k as f64 * GAS_COLUMN_SPACING).exp(),
+            molecular_diameter: d,
+        };
+        let (lo, h, n) = self.layout;
+        let node = |i: usize| {
+            let em = EffectiveMedium::persson_rarefied(
+                self.junctions.exact(),
+                self.s_half * logistic(lo + h * i as f64),
+                self.settings,
+                gas,
+            );
+            (!em.sealed()).then(|| em.cubed_gap.ln() - 3.0 * self.ln_h)
+        };
+        let values: Vec<f64> = crate::math::map_on_two_threads(n, node)
+            .into_iter()
+            .map_while(|v| v)
+            .collect();
+        let column = (values.len() >= 4).then(|| std::sync::Arc::new(UniformCubic::new(lo, h, values)));
+        self.gas.0.lock().ok()?.insert(key, column.clone());
+        column
     }
 
     /// The critical-junction table of the same surface.
     pub fn junctions(&self) -> &ContactTable {
         &self.junctions
+    }
+
+    /// The quadrature settings of its Bruggeman solves.
+    pub fn settings(&self) -> EffectiveMediumSettings {
+        self.settings
     }
 
     /// The reduced pressure at which the contact fraction reaches ½ (sealed at and above).

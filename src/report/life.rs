@@ -294,6 +294,16 @@ pub struct GasSummary {
         skip_serializing_if = "Option::is_none"
     )]
     pub permeation_time_lag: Option<f64>,
+    /// `"rarefied"` or `"continuum"`: the flow law through the constrictions (docs/model.md
+    /// §3.10).
+    pub flow_law: &'static str,
+    /// A rarefied gas: the throughput at installation the continuum law would give
+    /// \[Pa·m³/s\].
+    #[serde(
+        rename = "continuum_initial_throughput_Pa_m3_per_s",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub continuum_initial_throughput: Option<f64>,
 }
 
 impl GasSummary {
@@ -319,6 +329,11 @@ impl GasSummary {
             final_permeation,
             final_total: last + final_permeation.unwrap_or(0.0),
             permeation_time_lag,
+            flow_law: match gas.flow_law {
+                crate::gas::FlowLaw::Rarefied => "rarefied",
+                crate::gas::FlowLaw::Continuum => "continuum",
+            },
+            continuum_initial_throughput: result.continuum_leak_rate.map(|c| p * c),
         })
     }
 
@@ -334,6 +349,10 @@ impl GasSummary {
             (
                 "permeation_time_lag_s",
                 self.permeation_time_lag.unwrap_or(0.0),
+            ),
+            (
+                "continuum_initial_throughput_Pa_m3_per_s",
+                self.continuum_initial_throughput.unwrap_or(0.0),
             ),
         ]
     }
@@ -900,11 +919,19 @@ pub fn human_summary(
         ),
     );
     if let Some(p) = problem.fluid.mean_pressure() {
+        let law = match result.continuum_leak_rate {
+            Some(c) if c > 0.0 && result.initial_leak_rate() > 0.0 => format!(
+                "rarefied flow; the continuum law would give {} at installation: rarefaction ×{}",
+                throughput(p * c),
+                human(result.initial_leak_rate() / c, 3)
+            ),
+            Some(_) => "rarefied flow".to_owned(),
+            None => "continuum law".to_owned(),
+        };
         line(
             "throughput",
             format!(
-                "{} at installation, {} after {duration} (continuum law; see the Knudsen \
-                 warnings)",
+                "{} at installation, {} after {duration} ({law}; see the Knudsen warnings)",
                 throughput(p * result.initial_leak_rate()),
                 throughput(p * result.final_leak_rate())
             ),
@@ -1331,6 +1358,7 @@ mod tests {
             }),
             findings: Default::default(),
             reference_force: 1000.0,
+            continuum_leak_rate: None,
         }
     }
 

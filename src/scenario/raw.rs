@@ -243,6 +243,8 @@ pub(super) struct RawFluid {
     /// Gas: absolute pressures on the pressurised and the outlet side.
     pub inlet_pressure: Option<Quantity>,
     pub outlet_pressure: Option<Quantity>,
+    /// Gas: `false` for the continuum law through the constrictions (default: rarefied).
+    pub rarefaction: Option<Spanned<bool>>,
     /// ASTM D471 equilibrium volume change ΔV/V0 of the compound in this fluid.
     pub volume_swell: Option<Quantity>,
 }

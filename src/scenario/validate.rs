@@ -847,6 +847,10 @@ impl Source<'_> {
                 gas,
                 outlet_pressure: outlet.unwrap_or(ATMOSPHERE),
                 temperature: ROOM_TEMPERATURE,
+                flow_law: match raw.rarefaction.as_ref().map(|b| *b.get_ref()) {
+                    Some(false) => crate::gas::FlowLaw::Continuum,
+                    _ => crate::gas::FlowLaw::Rarefied,
+                },
             }),
         }
         .at(ROOM_TEMPERATURE))
@@ -932,6 +936,14 @@ impl Source<'_> {
         let raw = table.get_ref();
         if let Some(id) = &raw.gas {
             return self.gas(table, id);
+        }
+        if let Some(b) = &raw.rarefaction {
+            return Err(self.error(
+                b.span(),
+                "fluid.rarefaction",
+                "rarefaction is the flow law of a gas: add `gas = \"…\"` to [fluid], or remove \
+                 the key (a liquid does not rarefy)",
+            ));
         }
         if let Some(q) = [&raw.inlet_pressure, &raw.outlet_pressure]
             .into_iter()

@@ -187,15 +187,20 @@ impl InterfaceLeak {
 /// pressure difference ([`HertzMemo`]; the ΔP axis is interpolated only when the asperity
 /// modulus changes over the run, `follow`).
 struct InterfaceSolver {
-    memo: HertzMemo,
+    /// `None`: every state solved directly — a rarefied gas under a changing temperature,
+    /// whose σ(e) changes with T through the mean free path, not only through the viscosity
+    /// the memo scales out.
+    memo: Option<HertzMemo>,
 }
 
 impl InterfaceSolver {
     fn new(problem: &LifeProblem) -> Self {
         let pressure_spacing = (problem.asperity_modulus == AsperityModulus::Follow)
             .then_some(interface::MEMO_PRESSURE_SPACING);
+        let rarefied = problem.fluid.mean_free_path().is_some();
         InterfaceSolver {
-            memo: HertzMemo::new(interface::MEMO_SPACING, pressure_spacing),
+            memo: (!rarefied || problem.environment.is_constant())
+                .then(|| HertzMemo::new(interface::MEMO_SPACING, pressure_spacing)),
         }
     }
 
@@ -207,8 +212,10 @@ impl InterfaceSolver {
         viscosity: f64,
         dp: f64,
     ) -> interface::HertzSolution {
-        self.memo
-            .solve(sigma_hat, e_star, contact, viscosity, dp, &INTERFACE)
+        match &self.memo {
+            Some(memo) => memo.solve(sigma_hat, e_star, contact, viscosity, dp, &INTERFACE),
+            None => interface::hertz(&|e| sigma_hat(e / e_star), contact, dp, &INTERFACE, None),
+        }
     }
 }
 
@@ -401,7 +408,21 @@ impl<'a> Simulator<'a> {
             failure,
             findings,
             reference_force: self.reference_force,
+            continuum_leak_rate: self.continuum_leak_rate(),
         }
+    }
+
+    /// A rarefied gas: the installation's leak rate under the continuum law, on the same
+    /// contact path (docs/model.md §3.10); `None` for a liquid or the continuum law itself.
+    fn continuum_leak_rate(&self) -> Option<f64> {
+        let p = self.problem;
+        p.fluid.mean_free_path()?;
+        let mut continuum = p.clone();
+        if let Some(g) = continuum.fluid.gas.as_mut() {
+            g.flow_law = crate::gas::FlowLaw::Continuum;
+        }
+        let simulator = Simulator::with_path(&continuum, self.path.clone());
+        Some(simulator.installed_leak(simulator.installed_peak()).0)
     }
 
     /// The mechanical state right after installation (t = 0): the load variable ramped up
@@ -444,8 +465,7 @@ impl<'a> Simulator<'a> {
             installed.scaled((peak - (energised - own)).max(0.0) / own)
         };
         let p = self.problem;
-        let viscosity = p.fluid.viscosity_at(p.environment.at(0.0));
-        let leak = self.profile_leak(&profile, moduli, viscosity);
+        let leak = self.profile_leak(&profile, moduli, p.environment.at(0.0));
         (
             leak.leak_rate,
             leak.junction,
@@ -503,20 +523,22 @@ impl<'a> Simulator<'a> {
     /// its own, `e/E* = p_sq/E*_sq + (k_e ΔP − p_f)/E*_fl` (docs/model.md §6.1): solved as one
     /// interface at E*_fl with the squeeze's profile scaled by E_fl/E_sq. Whether the fluid
     /// lifts the ring off is a balance of stresses, `ΔP ≥ p_max + k_e ΔP`, on the profile itself.
-    /// The fluid's `viscosity` \[Pa·s\] is the one at the state's temperature (§3.7).
+    /// The fluid's viscosity (§3.7) and a gas's mean free path (§3.10) are the ones at the
+    /// state's `temperature` \[K\].
     fn profile_leak(
         &self,
         profile: &Profile,
         moduli: AsperityModuli,
-        viscosity: f64,
+        temperature: f64,
     ) -> InterfaceLeak {
         let p = self.problem;
+        let fluid = p.fluid.at(temperature);
         let e_star = moduli.fluid / (1.0 - p.material.poisson_ratio.powi(2));
         let equivalent = moduli.equivalent(profile);
         let lifted = p.fluid.pressure_difference > 0.0
             && p.fluid.pressure_difference >= self.contact_peak(profile);
         let interface = |path: &ContactPath, solver: &InterfaceSolver| {
-            self.interface_leak(path, solver, &equivalent, e_star, lifted, viscosity)
+            self.interface_leak(path, solver, &equivalent, e_star, lifted, &fluid)
         };
         let counterface = interface(&self.path, &self.counterface);
         let groove = match (&self.problem.groove, &self.groove) {
@@ -543,17 +565,32 @@ impl<'a> Simulator<'a> {
         profile: &Profile,
         e_star: f64,
         lifted: bool,
-        viscosity: f64,
+        fluid: &crate::fluid::Fluid,
     ) -> InterfaceLeak {
         let p = self.problem;
         let dp = p.fluid.pressure_difference;
         let offset = p.energisation_factor * dp;
-        let sigma_hat = |s: f64| path.conductance(s, p.shape_factor, viscosity);
+        let viscosity = fluid.viscosity;
+        // a rarefied gas along a profile: its mean free path at the mean pressure p̄
+        // (docs/model.md §3.10)
+        let mean_free_path = fluid.mean_free_path();
+        let sigma_hat =
+            |s: f64| path.gas_conductance(s, p.shape_factor, viscosity, mean_free_path);
         let sigma = |e: f64| sigma_hat(e / e_star);
         // a gas under a uniform contact: the mass flux carries the local density, so the
-        // effective conductance weighs σ(e) by (P_b + p_f)/p̄ with p_f = P0 − e (docs/model.md
-        // §3.9); 1 for a liquid
-        let weighted = |top: f64| move |e: f64| sigma(e) * p.fluid.density_weight(top - e);
+        // effective conductance weighs σ(e) by (P_b + p_f)/p̄ with p_f = P0 − e, and each
+        // constriction rarefies at the local pressure (docs/model.md §3.9, §3.10); 1 for a
+        // liquid
+        let weighted = |top: f64| {
+            move |e: f64| {
+                path.gas_conductance(
+                    e / e_star,
+                    p.shape_factor,
+                    viscosity,
+                    fluid.free_path_at(top - e),
+                ) * fluid.density_weight(top - e)
+            }
+        };
         let geometry = profile.geometry(p.geometry.sealing_length());
         let series = || {
             let resistance = profile.series_resistance(&self.rule, |pc| sigma(pc + offset));
@@ -564,7 +601,7 @@ impl<'a> Simulator<'a> {
         let junction_at = |e: f64| (path.critical_junction(e.max(0.0) / e_star), e.max(0.0));
         if lifted {
             return InterfaceLeak::new(
-                self.onset_leak(&sigma, profile, offset),
+                self.onset_leak(&sigma, &weighted, profile, offset),
                 junction_at(top),
                 true,
             );
@@ -598,7 +635,7 @@ impl<'a> Simulator<'a> {
             }
             InterfaceFlow::Sealed => InterfaceLeak::new(0.0, junction, false),
             InterfaceFlow::LiftOff => InterfaceLeak::new(
-                self.onset_leak(&sigma, profile, offset),
+                self.onset_leak(&sigma, &weighted, profile, offset),
                 junction_at(top),
                 true,
             ),
@@ -609,15 +646,20 @@ impl<'a> Simulator<'a> {
     /// pressure in it at its largest — the peak contact pressure, less 1e-9 of it for a Hertz
     /// profile — driving the flux; the last value the model gives for an open seal, a lower
     /// bound.
-    fn onset_leak(&self, sigma: &dyn Fn(f64) -> f64, profile: &Profile, offset: f64) -> f64 {
+    fn onset_leak<W: Fn(f64) -> f64>(
+        &self,
+        sigma: &dyn Fn(f64) -> f64,
+        weighted: &dyn Fn(f64) -> W,
+        profile: &Profile,
+        offset: f64,
+    ) -> f64 {
         let p = self.problem;
         let geometry = profile.geometry(p.geometry.sealing_length());
         let dp = p.fluid.pressure_difference;
         let conduction = match *profile {
             Profile::Uniform { pressure, .. } => {
                 let top = pressure + offset;
-                let weighted = |e: f64| sigma(e) * p.fluid.density_weight(top - e);
-                interface::uniform_onset(&weighted, top, dp, &INTERFACE)
+                interface::uniform_onset(&weighted(top), top, dp, &INTERFACE)
             }
             Profile::Hertz { peak, width } => {
                 let onset = (peak + offset) * (1.0 - 1e-9);
@@ -819,8 +861,8 @@ impl<'a> Simulator<'a> {
         let moduli = self.asperity_moduli(state);
         let e_asperity = moduli.fluid;
         let e_star = e_asperity / (1.0 - p.material.poisson_ratio.powi(2));
+        let leak = self.profile_leak(&profile, moduli, temperature);
         let viscosity = p.fluid.viscosity_at(temperature);
-        let leak = self.profile_leak(&profile, moduli, viscosity);
         let equivalent = moduli.equivalent(&profile);
         let (leak_rate, peak_junction) = (leak.leak_rate, leak.junction);
         // the junction's own reduced pressure (the energised peak less the fluid pressure there)

@@ -269,6 +269,9 @@ pub struct LifeResult {
     pub findings: Findings,
     /// The sealing force per unit length at the retained-force reference time \[N/m\].
     pub reference_force: f64,
+    /// A rarefied gas: the leak rate at installation \[m³/s\] the continuum law would give
+    /// instead (docs/model.md §3.10), to show what rarefaction changes; `None` otherwise.
+    pub continuum_leak_rate: Option<f64>,
 }
 
 impl LifeResult {

@@ -25,6 +25,7 @@ fn gas_fluid(gas: Gas, inlet: f64, outlet: f64, temperature: f64) -> Fluid {
             gas,
             outlet_pressure: outlet,
             temperature,
+            flow_law: sealsim::gas::FlowLaw::Continuum,
         }),
     }
     .at(temperature)
