@@ -5,9 +5,9 @@
 //! is conserved along the interface ([`crate::fluid::Fluid::throughput`]). Its viscosity follows
 //! Sutherland's law `μ(T) = μ0 (T/T0)^{3/2} (T0 + S)/(T + S)` (or a constant for a custom gas);
 //! its hard-sphere diameter d gives the mean free path `λ = k_B T/(√2 π d² p)` and, at a
-//! constriction of height u, the Knudsen number `Kn = λ/u` that tells whether the continuum law
-//! used here holds (docs/model.md §9.14). Rarefied flow (slip, transition, free molecular) is
-//! not modelled yet: it is only warned about.
+//! constriction of height u, the Knudsen number `Kn = λ/u`. Through a constriction the gas
+//! flows rarefied: slip, transition or free molecular by Kn ([`slit_rarefaction`],
+//! docs/model.md §3.10), or by the continuum law on request ([`FlowLaw::Continuum`]).
 //!
 //! Sources (research notes; SECONDARY means the values were read where a source is quoted,
 //! not in the source itself):
@@ -131,28 +131,81 @@ pub struct Rarefied {
 }
 
 impl Rarefied {
-    /// The conductance of a gap of height `u` \[m\] over its continuum value:
-    /// [`slit_rarefaction`] at Kn = λ_μ/u, and 0 for a gap no wider than a molecule.
-    pub fn factor(&self, u: f64) -> f64 {
+    /// The conductance of a gap of height `u` \[m\] and lateral extent `width` \[m\] over
+    /// its continuum value: [`slit_rarefaction`] at Kn = λ_μ/u and aspect width/u, and 0 for a
+    /// gap no wider than a molecule.
+    pub fn factor(&self, u: f64, width: f64) -> f64 {
         if u <= self.molecular_diameter {
             0.0
         } else {
-            slit_rarefaction(self.free_path / u)
+            slit_rarefaction(self.free_path / u, width / u)
         }
     }
 }
 
+/// Smoluchowski's shape integral of a long rectangular channel of height `h` and width `w`
+/// \[m³\] (docs/model.md §3.10): `A_S = 2[h² w asinh(w/h) + h w² asinh(h/w) − (h² + w²)^{3/2}/3
+/// + (h³ + w³)/3]`, so that the free-molecular throughput conductance of a channel of length L
+/// is `C_FM = (v̄/8) A_S/L` ([`free_molecular_conductance`]). For a slit (w ≫ h)
+/// `A_S → 2 h² w (ln(2w/h) + ½)`: the conductance per unit width grows like ln(w/h), the
+/// logarithm of the plane channel. Source: the formula as implemented in eznuk/sedmodel
+/// (`sedmodel.py`, the superposition model of Kunze et al., Sci. Rep. 12, 2057 (2022)) —
+/// SECONDARY (code). Its circular case, `A_S = 16πr³/3`, is Knudsen's long tube,
+/// `C = (π/12) v̄ d³/L` = 12.1 d³/L L/s for air at 20 °C with d, L in cm (the vacuum rule
+/// read at codingace.net "Molecular Flow Conductance Calculator"; a test).
+pub fn smoluchowski_shape(h: f64, w: f64) -> f64 {
+    let (h, w) = if h <= w { (h, w) } else { (w, h) };
+    // (h² + w²)^{3/2} − w³ without cancellation for w ≫ h: w³ expm1(1.5 ln1p(h²/w²))
+    let r = h / w;
+    let excess = w.powi(3) * (1.5 * (r * r).ln_1p()).exp_m1();
+    2.0 * (h * h * w * (w / h).asinh() + h * w * w * r.asinh() - (excess - h.powi(3)) / 3.0)
+}
+
+/// The mean thermal speed `v̄ = √(8 R T/(π M))` \[m/s\] of `gas` at `temperature` \[K\].
+pub fn mean_speed(gas: &Gas, temperature: f64) -> f64 {
+    (8.0 * GAS_CONSTANT * temperature / (std::f64::consts::PI * gas.molar_mass)).sqrt()
+}
+
+/// The free-molecular throughput conductance \[m³/s\] (throughput per pressure difference)
+/// of a long rectangular channel `h` × `w` of length `length` (all in m), diffuse walls:
+/// `C_FM = (v̄/8) A_S/L` ([`smoluchowski_shape`]). Independent of the pressure.
+pub fn free_molecular_conductance(
+    gas: &Gas,
+    temperature: f64,
+    h: f64,
+    w: f64,
+    length: f64,
+) -> f64 {
+    mean_speed(gas, temperature) / 8.0 * smoluchowski_shape(h, w) / length
+}
+
 /// The rarefaction factor of pressure-driven flow through a slit at Knudsen number `kn`
-/// (λ_μ over the gap): the flow over its continuum (no-slip Poiseuille) value at the same
-/// local pressure and pressure gradient (docs/model.md §3.10). 1 at Kn = 0.
-pub fn slit_rarefaction(kn: f64) -> f64 {
+/// (λ_μ over the gap u) whose lateral extent is `aspect` gaps (docs/model.md §3.10): the flow
+/// over its continuum (no-slip Poiseuille) value at the same local pressure and pressure
+/// gradient,
+///
+/// `f = (1 + α Kn)(1 + 6 Kn/(1 − b Kn))`, b = −1, `α = α0 (2/π) tan⁻¹(α1 Kn^β)`, α1 = 4,
+/// β = 0.4 — the unified model of Beskok & Karniadakis (Microscale Thermophys. Eng. 3 (1999)
+/// 43; its structure and b = −1 read in Karniadakis, Beskok & Aluru, *Microflows and
+/// Nanoflows* (2005) §4.2; α1, β as two public implementations give them — SECONDARY).
+/// As Kn → 0, `f = 1 + 6 Kn + O(Kn^1.4)`: first-order slip with Maxwell's coefficient for
+/// diffuse walls. As Kn → ∞, `f → 7 α0 Kn`. Beskok & Karniadakis fix α0 by the free-molecular
+/// limit of the geometry; for a slit of lateral extent w = a·u that limit is Smoluchowski's
+/// ([`smoluchowski_shape`]), which gives `α0 = 12 X(a)/(7π)` with `X(a) = A_S(1, a)/(2a)`
+/// (≈ ln(2a) + ½): so f·(the continuum flow) tends to the slit's free-molecular conductance
+/// exactly (a test). 1 at Kn = 0.
+pub fn slit_rarefaction(kn: f64, aspect: f64) -> f64 {
     if !(kn > 0.0) {
         return 1.0;
     }
-    // PLACEHOLDER (Beskok–Karniadakis form, coefficients to be checked against the source)
-    let alpha = 64.0 / (15.0 * std::f64::consts::PI)
-        * std::f64::consts::FRAC_2_PI
-        * (4.0 * kn.powf(0.4)).atan();
+    let a = aspect.max(1.0);
+    let x = smoluchowski_shape(1.0, a) / (2.0 * a);
+    let alpha0 = 12.0 * x / (7.0 * std::f64::consts::PI);
+    let alpha = alpha0 * std::f64::consts::FRAC_2_PI * (4.0 * kn.powf(0.4)).atan();
+    if kn > 1e150 {
+        // (1 + α Kn)(1 + 6 Kn/(1 + Kn)) without overflow: 7 α Kn to rounding
+        return 7.0 * alpha * kn;
+    }
     (1.0 + alpha * kn) * (1.0 + 6.0 * kn / (1.0 + kn))
 }
 

@@ -381,12 +381,13 @@ impl ContactPath {
     /// [`Self::conductance`] of a gas with the mean free path of the local pressure (`gas`;
     /// `None`: a liquid, or the continuum law), docs/model.md §3.10 — a gap no wider than a
     /// molecule conducts nothing:
-    /// * critical-junction levels: `α u_c³ f(λ/u_c)/(12η)`, f the slit rarefaction factor
-    ///   ([`crate::gas::slit_rarefaction`]) at the critical constriction's own Knudsen number;
+    /// * critical-junction levels: `α u_c³ f(λ/u_c, λc/u_c)/(12η)`, f the slit rarefaction
+    ///   factor ([`crate::gas::slit_rarefaction`]) at the critical constriction's own Knudsen
+    ///   number, the constriction λc wide;
     /// * effective medium: Bruggeman over the separations, each gap u conducting
     ///   `u³ f(λ/u)/(12η)` ([`EffectiveMediumTable::rarefied_cubed_gap`]);
-    /// * numerical: the table's effective gap u_eff with `f(λ/u_eff)` — the rarefaction of the
-    ///   ensemble's effective channel, not cell by cell.
+    /// * numerical: the table's effective gap u_eff with `f(λ/u_eff, λc/u_eff)` — the
+    ///   rarefaction of the ensemble's effective channel, not cell by cell.
     pub fn gas_conductance(
         &self,
         s: f64,
@@ -397,22 +398,19 @@ impl ContactPath {
         let Some(l) = gas else {
             return self.conductance(s, shape_factor, viscosity);
         };
-        let rarefied = |u: f64, alpha: f64| junction_conductance(u, alpha, viscosity) * l.factor(u);
-        match self {
-            ContactPath::Table(t) => t
-                .critical_gap(s)
-                .map_or(0.0, |u_c| rarefied(u_c, shape_factor)),
-            ContactPath::EffectiveMedium(t) => t.rarefied_cubed_gap(s, l) / (12.0 * viscosity),
-            ContactPath::Numerical { table, .. } => {
-                let u = table.effective_gap(s);
-                if u > 0.0 { rarefied(u, 1.0) } else { 0.0 }
+        let alpha = match self {
+            ContactPath::EffectiveMedium(t) => {
+                return t.rarefied_cubed_gap(s, l) / (12.0 * viscosity);
             }
-            ContactPath::RuleOfThumb(_) | ContactPath::Exact(_) => {
-                match self.critical_junction(s) {
-                    Junction::Leaking(j) if j.u_c > 0.0 => rarefied(j.u_c, shape_factor),
-                    _ => 0.0,
-                }
+            ContactPath::Numerical { .. } => 1.0,
+            _ => shape_factor,
+        };
+        // the channel: u_c (u_eff for the numerical level) and its lateral extent λc
+        match self.critical_junction(s) {
+            Junction::Leaking(j) if j.u_c > 0.0 => {
+                junction_conductance(j.u_c, alpha, viscosity) * l.factor(j.u_c, j.lambda_c)
             }
+            _ => 0.0,
         }
     }
 

@@ -235,18 +235,23 @@ impl SeparationDistribution {
     }
 
     /// [`Self::bruggeman_cubed_gap`] of a gas whose every gap u conducts
-    /// `u³ f(λ/u)/(12η)`, f the slit rarefaction factor ([`crate::gas::slit_rarefaction`]) at
+    /// `u³ f(λ/u, width/u)/(12η)` (channels `width` \[m\] wide), f the slit rarefaction factor ([`crate::gas::slit_rarefaction`]) at
     /// the gas's mean free path λ (docs/model.md §3.10): each separation carries its own
     /// Knudsen number, and a gap no wider than a molecule conducts nothing. Returns `12 η σ_eff` \[m³\] (0 when sealed).
     pub fn rarefied_bruggeman_cubed_gap(
         &self,
         settings: EffectiveMediumSettings,
         free_path: crate::gas::Rarefied,
+        width: f64,
     ) -> f64 {
-        self.bruggeman(settings, Some(free_path))
+        self.bruggeman(settings, Some((free_path, width)))
     }
 
-    fn bruggeman(&self, settings: EffectiveMediumSettings, free_path: Option<crate::gas::Rarefied>) -> f64 {
+    fn bruggeman(
+        &self,
+        settings: EffectiveMediumSettings,
+        free_path: Option<(crate::gas::Rarefied, f64)>,
+    ) -> f64 {
         if self.contact >= 0.5 {
             return 0.0;
         }
@@ -257,8 +262,9 @@ impl SeparationDistribution {
         if !(upper > 0.0 && upper.is_finite()) {
             return 0.0;
         }
-        if let Some(l) = free_path {
-            upper *= crate::gas::slit_rarefaction(l.free_path / self.mean().max(f64::MIN_POSITIVE));
+        if let Some((l, width)) = free_path {
+            let mean = self.mean().max(f64::MIN_POSITIVE);
+            upper *= crate::gas::slit_rarefaction(l.free_path / mean, width / mean);
         }
         let (nodes, weights) = gauss_legendre(settings.u_order.max(1));
         let residual = |g: f64| {
@@ -354,13 +360,13 @@ impl SeparationDistribution {
         panels: usize,
         nodes: &[f64],
         weights: &[f64],
-        free_path: Option<crate::gas::Rarefied>,
+        free_path: Option<(crate::gas::Rarefied, f64)>,
     ) -> f64 {
         let local = |u: f64| {
             let a = u.abs();
             let u3 = a * a * a;
             match free_path {
-                Some(l) => u3 * l.factor(a),
+                Some((l, width)) => u3 * l.factor(a, width),
                 _ => u3,
             }
         };
@@ -459,13 +465,15 @@ impl EffectiveMedium {
         }
     }
 
-    /// [`Self::persson`] for a gas with mean free path `free_path` λ \[m\]: every separation
-    /// conducts with its own Knudsen number λ/u ([`SeparationDistribution::rarefied_bruggeman_cubed_gap`]).
+    /// [`Self::persson`] for a gas with mean free path `free_path` λ \[m\] through channels
+    /// `width` \[m\] wide: every separation conducts with its own Knudsen number λ/u
+    /// ([`SeparationDistribution::rarefied_bruggeman_cubed_gap`]).
     pub fn persson_rarefied(
         contact: &PerssonContact,
         s: f64,
         settings: EffectiveMediumSettings,
         free_path: crate::gas::Rarefied,
+        width: f64,
     ) -> Self {
         let zeta1 = contact.spectrum().q1() / contact.spectrum().q0();
         let c = contact.area_fraction(zeta1, s);
@@ -478,7 +486,7 @@ impl EffectiveMedium {
         let p = SeparationDistribution::persson(contact, s, settings);
         EffectiveMedium {
             contact_fraction: p.contact_fraction(),
-            cubed_gap: p.rarefied_bruggeman_cubed_gap(settings, free_path),
+            cubed_gap: p.rarefied_bruggeman_cubed_gap(settings, free_path, width),
         }
     }
 

@@ -314,8 +314,14 @@ impl EffectiveMediumTable {
     /// range or next to a sealed node.
     pub fn rarefied_cubed_gap(&self, s: f64, gas: crate::gas::Rarefied) -> f64 {
         let direct = |gas: crate::gas::Rarefied| {
-            EffectiveMedium::persson_rarefied(self.junctions.exact(), s, self.settings, gas)
-                .cubed_gap
+            EffectiveMedium::persson_rarefied(
+                self.junctions.exact(),
+                s,
+                self.settings,
+                gas,
+                self.channel_width(s),
+            )
+            .cubed_gap
         };
         let top = GAS_FREE_MOLECULAR_KN * self.ln_h.exp();
         if gas.free_path > top {
@@ -352,6 +358,21 @@ impl EffectiveMediumTable {
         (ln_g + 3.0 * self.ln_h).exp()
     }
 
+    /// The lateral extent of the channels at `s` \[m\]: λc of the critical junction there (at
+    /// the 2-D threshold ½ once it is sealed; the shortest wavelength beyond every threshold).
+    pub fn channel_width(&self, s: f64) -> f64 {
+        let exact = self.junctions.exact();
+        match self.junctions.critical_junction(s) {
+            Junction::Leaking(j) => j.lambda_c,
+            Junction::Sealed => exact
+                .critical_junction_at_threshold(s, 0.5)
+                .leaking()
+                .map_or(2.0 * std::f64::consts::PI / exact.spectrum().q1(), |j| {
+                    j.lambda_c
+                }),
+        }
+    }
+
     /// The rarefied column k (ln λ = k·[`GAS_COLUMN_SPACING`]) for molecular diameter `d`.
     fn gas_column(&self, k: i64, d: f64) -> Option<std::sync::Arc<UniformCubic>> {
         let key = (k, d.to_bits());
@@ -364,11 +385,13 @@ impl EffectiveMediumTable {
         };
         let (lo, h, n) = self.layout;
         let node = |i: usize| {
+            let s = self.s_half * logistic(lo + h * i as f64);
             let em = EffectiveMedium::persson_rarefied(
                 self.junctions.exact(),
-                self.s_half * logistic(lo + h * i as f64),
+                s,
                 self.settings,
                 gas,
+                self.channel_width(s),
             );
             (!em.sealed()).then(|| em.cubed_gap.ln() - 3.0 * self.ln_h)
         };
