@@ -450,6 +450,21 @@ impl Fluid {
         })
     }
 
+    /// How many graded breaks the uniform interface's quadrature needs towards the outlet
+    /// ([`crate::interface::InterfaceSettings::outlet_breaks`]): 16 for a rarefied gas whose
+    /// outlet pressure is below ΔP (its free-molecular end is not smooth), 0 otherwise.
+    pub fn outlet_breaks(&self) -> usize {
+        match self.gas {
+            Some(g)
+                if g.flow_law == crate::gas::FlowLaw::Rarefied
+                    && g.outlet_pressure < self.pressure_difference =>
+            {
+                16
+            }
+            _ => 0,
+        }
+    }
+
     /// [`Self::free_path_at`] at the mean pressure p̄ (gauge ΔP/2).
     pub fn mean_free_path(&self) -> Option<crate::gas::Rarefied> {
         self.free_path_at(0.5 * self.pressure_difference)

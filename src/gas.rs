@@ -169,15 +169,14 @@ pub fn mean_speed(gas: &Gas, temperature: f64) -> f64 {
 /// The free-molecular throughput conductance \[m³/s\] (throughput per pressure difference)
 /// of a long rectangular channel `h` × `w` of length `length` (all in m), diffuse walls:
 /// `C_FM = (v̄/8) A_S/L` ([`smoluchowski_shape`]). Independent of the pressure.
-pub fn free_molecular_conductance(
-    gas: &Gas,
-    temperature: f64,
-    h: f64,
-    w: f64,
-    length: f64,
-) -> f64 {
+pub fn free_molecular_conductance(gas: &Gas, temperature: f64, h: f64, w: f64, length: f64) -> f64 {
     mean_speed(gas, temperature) / 8.0 * smoluchowski_shape(h, w) / length
 }
+
+/// α0 of Beskok & Karniadakis's unified model as its public implementations give it,
+/// `64/(3π(1 − 4/b))` with b = −1, i.e. 64/(15π) ≈ 1.358 — derived in their book for the pipe's
+/// free-molecular limit and used for channels too (SECONDARY: two codes agree).
+pub const BESKOK_ALPHA0: f64 = 64.0 / (15.0 * std::f64::consts::PI);
 
 /// The rarefaction factor of pressure-driven flow through a slit at Knudsen number `kn`
 /// (λ_μ over the gap u) whose lateral extent is `aspect` gaps (docs/model.md §3.10): the flow
@@ -189,18 +188,33 @@ pub fn free_molecular_conductance(
 /// 43; its structure and b = −1 read in Karniadakis, Beskok & Aluru, *Microflows and
 /// Nanoflows* (2005) §4.2; α1, β as two public implementations give them — SECONDARY).
 /// As Kn → 0, `f = 1 + 6 Kn + O(Kn^1.4)`: first-order slip with Maxwell's coefficient for
-/// diffuse walls. As Kn → ∞, `f → 7 α0 Kn`. Beskok & Karniadakis fix α0 by the free-molecular
-/// limit of the geometry; for a slit of lateral extent w = a·u that limit is Smoluchowski's
-/// ([`smoluchowski_shape`]), which gives `α0 = 12 X(a)/(7π)` with `X(a) = A_S(1, a)/(2a)`
-/// (≈ ln(2a) + ½): so f·(the continuum flow) tends to the slit's free-molecular conductance
-/// exactly (a test). 1 at Kn = 0.
+/// diffuse walls. As Kn → ∞, `f → 7 α0 Kn`, and α0 sets the free-molecular flow.
+///
+/// α0 [derived here, not a published model]: Beskok & Karniadakis fix α0 by the geometry's
+/// free-molecular limit. A plane channel has none — its free-molecular flow grows like
+/// ln(Kn) while the channel is longer than λ, like ln(L/h) once it is shorter (Beskok, "Unified
+/// Flow Model", read) — so here `α0 = max(α0_BK, 12 X(min(Kn, a))/(7π))` (min and max smoothed),
+/// where
+/// `X(a) = A_S(1, a)/(2a)` ≈ ln(2a) + ½ is Smoluchowski's slit integral
+/// ([`smoluchowski_shape`]) and α0_BK = [`BESKOK_ALPHA0`]: the published coefficient up to
+/// Kn ≈ 3.7 (where X = 7π α0_BK/12), growing like ln Kn beyond, and for Kn > a exactly the
+/// free-molecular conductance of the slit a gaps wide (a test). 1 at Kn = 0.
 pub fn slit_rarefaction(kn: f64, aspect: f64) -> f64 {
     if !(kn > 0.0) {
         return 1.0;
     }
-    let a = aspect.max(1.0);
-    let x = smoluchowski_shape(1.0, a) / (2.0 * a);
-    let alpha0 = 12.0 * x / (7.0 * std::f64::consts::PI);
+    // smooth min and max (C∞, so that the pressure quadratures stay spectrally accurate): the
+    // cut-off (Kn⁻⁴ + a⁻⁴)^{−1/4}, and α0 = (α0_BK¹⁶ + y¹⁶)^{1/16}, each within 2⁻¹ᐟ⁴ resp.
+    // 2¹ᐟ¹⁶ of the sharp one at the crossing and exact away from it
+    let a = aspect.max(f64::MIN_POSITIVE);
+    let cutoff = (kn.powi(-4) + a.powi(-4)).powf(-0.25);
+    let x = if cutoff > 0.0 && cutoff.is_finite() {
+        smoluchowski_shape(1.0, cutoff) / (2.0 * cutoff)
+    } else {
+        0.0
+    };
+    let y = 12.0 * x / (7.0 * std::f64::consts::PI) / BESKOK_ALPHA0;
+    let alpha0 = BESKOK_ALPHA0 * (1.0 + y.powi(16)).powf(1.0 / 16.0);
     let alpha = alpha0 * std::f64::consts::FRAC_2_PI * (4.0 * kn.powf(0.4)).atan();
     if kn > 1e150 {
         // (1 + α Kn)(1 + 6 Kn/(1 + Kn)) without overflow: 7 α Kn to rounding

@@ -46,6 +46,10 @@ pub struct InterfaceSettings {
     pub steps: usize,
     /// Profile: relative tolerance of the flux.
     pub tolerance: f64,
+    /// Uniform pressure: extra breaks of the e-quadrature at `P0 − ΔP·4^{−k}`, k = 1…n,
+    /// towards the outlet end e = P0 — for a rarefied gas against a vacuum, whose σ(e)·p goes
+    /// like const − c p^0.4 there (docs/model.md §3.10); 0 otherwise.
+    pub outlet_breaks: usize,
 }
 
 impl Default for InterfaceSettings {
@@ -54,6 +58,7 @@ impl Default for InterfaceSettings {
             panels_per_log_unit: 4.0,
             steps: 3200,
             tolerance: 1e-13,
+            outlet_breaks: 0,
         }
     }
 }
@@ -75,6 +80,17 @@ pub fn uniform(
     // below ΔP/P0 ≈ 1e-8 the mean over [P0 − ΔP, P0] is σ(P0) to rounding
     let conductance = if dp <= 1e-8 * p0 {
         sigma(p0 - 0.5 * dp)
+    } else if settings.outlet_breaks > 0 {
+        // graded towards e = P0: the integral as a sum over [lo, b1], [b1, b2], …, [bn, P0]
+        let mut edges = vec![lo];
+        edges.extend((1..=settings.outlet_breaks).map(|k| p0 - dp * 0.25f64.powi(k as i32)));
+        edges.push(p0);
+        edges
+            .windows(2)
+            .filter(|w| w[1] > w[0])
+            .map(|w| mean_over(sigma, w[0], w[1], settings) * (w[1] - w[0]))
+            .sum::<f64>()
+            / dp
     } else {
         mean_over(sigma, lo, p0, settings)
     };

@@ -477,7 +477,10 @@ impl StaticSolver {
             &sigma,
             p0,
             pb.fluid.pressure_difference,
-            &InterfaceSettings::default(),
+            &InterfaceSettings {
+                outlet_breaks: pb.fluid.outlet_breaks(),
+                ..InterfaceSettings::default()
+            },
         ) {
             InterfaceFlow::Conducting(conduction) => (
                 pb.fluid.leak_rate(pb.seal.geometry(), conduction),
@@ -526,7 +529,12 @@ impl StaticSolver {
         if let (Junction::Leaking(j), false) = (&point.junction, point.state == SealState::LiftOff)
             && let Some(kn) = self.problem.fluid.knudsen(j.u_c)
         {
-            validity::knudsen(kn, At::Pressure(point.nominal_pressure), out);
+            validity::knudsen(
+                kn,
+                self.problem.fluid.mean_free_path().is_some(),
+                At::Pressure(point.nominal_pressure),
+                out,
+            );
         }
     }
 }

@@ -84,12 +84,15 @@ pub enum Limit {
     IhlTransition,
     /// An O-ring's inlet pressure gradients estimated from its Hertz profile (§9.9).
     GradientEstimate,
-    /// A gas at the critical constriction with Kn > [`KNUDSEN_SLIP`]: slip flow (§9.14).
+    /// A gas at the critical constriction in the slip regime, [`KNUDSEN_SLIP`] < Kn ≤
+    /// [`KNUDSEN_TRANSITION`] (§9.14).
     KnudsenSlip,
-    /// Kn > [`KNUDSEN_TRANSITION`]: transition flow (§9.14).
+    /// The transition regime, [`KNUDSEN_TRANSITION`] < Kn ≤ [`KNUDSEN_FREE_MOLECULAR`] (§9.14).
     KnudsenTransition,
-    /// Kn > [`KNUDSEN_FREE_MOLECULAR`]: free-molecular flow (§9.14).
+    /// The free-molecular regime, Kn > [`KNUDSEN_FREE_MOLECULAR`] (§9.14).
     KnudsenFreeMolecular,
+    /// Kn > [`KNUDSEN_SLIP`] under the continuum law (`rarefaction = false`, §9.14).
+    KnudsenContinuumLaw,
     /// A gas in a Hertz contact: the fluid pressure that loads the asperities follows the
     /// liquid's profile (§9.14).
     GasHertzProfile,
@@ -104,7 +107,7 @@ pub const KNUDSEN_FREE_MOLECULAR: f64 = 10.0;
 
 impl Limit {
     /// Every limit, in the order of docs/model.md.
-    pub const ALL: [Limit; 23] = [
+    pub const ALL: [Limit; 24] = [
         Limit::PressureRatio,
         Limit::AspectRatio,
         Limit::MolecularGap,
@@ -127,6 +130,7 @@ impl Limit {
         Limit::KnudsenSlip,
         Limit::KnudsenTransition,
         Limit::KnudsenFreeMolecular,
+        Limit::KnudsenContinuumLaw,
         Limit::GasHertzProfile,
     ];
 
@@ -155,6 +159,7 @@ impl Limit {
             Limit::KnudsenSlip => "knudsen_slip",
             Limit::KnudsenTransition => "knudsen_transition",
             Limit::KnudsenFreeMolecular => "knudsen_free_molecular",
+            Limit::KnudsenContinuumLaw => "knudsen_continuum_law",
             Limit::GasHertzProfile => "gas_hertz_profile",
         }
     }
@@ -178,6 +183,7 @@ impl Limit {
             Limit::KnudsenSlip
             | Limit::KnudsenTransition
             | Limit::KnudsenFreeMolecular
+            | Limit::KnudsenContinuumLaw
             | Limit::GasHertzProfile => "§9.14",
         }
     }
@@ -201,9 +207,10 @@ impl Limit {
             Limit::Extrusion => Some(("clearance/limit", "")),
             Limit::DataTime => Some(("reduced time", "s")),
             Limit::DataTemperature => Some(("T", "K")),
-            Limit::KnudsenSlip | Limit::KnudsenTransition | Limit::KnudsenFreeMolecular => {
-                Some(("Kn = λ(p̄)/u_c", ""))
-            }
+            Limit::KnudsenSlip
+            | Limit::KnudsenTransition
+            | Limit::KnudsenFreeMolecular
+            | Limit::KnudsenContinuumLaw => Some(("Kn = λ(p̄)/u_c", "")),
             Limit::GasHertzProfile => None,
         }
     }
@@ -287,17 +294,24 @@ impl Limit {
                  series itself) is extrapolated"
             }
             Limit::KnudsenSlip => {
-                "slip regime (Kn > 0.01) at the critical constriction: the continuum law is used; \
-                 rarefied flow not modelled yet (slip raises the flow by a few to tens of %)"
+                "slip regime (0.01 < Kn ≤ 0.1) at the critical constriction: the rarefied slit \
+                 law adds first-order slip (flow × ≈ 1 + 6 Kn), accurate to a few % here"
             }
             Limit::KnudsenTransition => {
-                "transition regime (Kn > 0.1) at the critical constriction: the continuum law is \
-                 used; rarefied flow not modelled yet (the leak can be off by a factor of several)"
+                "transition regime (0.1 < Kn ≤ 10) at the critical constriction: the rarefied \
+                 slit law interpolates between slip and free-molecular flow (Beskok–Karniadakis \
+                 form); its error against kinetic theory is not quantified here (tens of % \
+                 possible)"
             }
             Limit::KnudsenFreeMolecular => {
-                "free-molecular regime (Kn > 10) at the critical constriction: the continuum law \
-                 is used; rarefied flow not modelled yet (the leak can be off by orders of \
-                 magnitude)"
+                "free-molecular regime (Kn > 10) at the critical constriction: the slit law's \
+                 free-molecular limit applies (Smoluchowski's slit conductance of a constriction \
+                 λc wide; its logarithm of λc/u_c makes it uncertain by tens of %)"
+            }
+            Limit::KnudsenContinuumLaw => {
+                "the gas is rarefied at the critical constriction but `rarefaction = false`: the \
+                 continuum law is used and underestimates the flow (slip alone adds ≈ 6 Kn; \
+                 free-molecular flow can be orders of magnitude above the continuum law)"
             }
             Limit::GasHertzProfile => {
                 "a gas in a Hertz contact: the fluid pressure loading the asperities follows the \
@@ -531,15 +545,34 @@ pub fn contact(state: &ContactState<'_>, at: At, out: &mut Findings) {
     }
 }
 
-/// The Knudsen number `kn` of a gas at the critical constriction (docs/model.md §9.14):
-/// slip, transition and free-molecular regimes, each past its threshold.
-pub fn knudsen(kn: f64, at: At, out: &mut Findings) {
-    for (limit, bound) in [
-        (Limit::KnudsenSlip, KNUDSEN_SLIP),
-        (Limit::KnudsenTransition, KNUDSEN_TRANSITION),
-        (Limit::KnudsenFreeMolecular, KNUDSEN_FREE_MOLECULAR),
+/// The Knudsen number `kn` of a gas at the critical constriction (docs/model.md §9.14): the
+/// regime it is in — slip, transition or free molecular, each over its own band — when the
+/// rarefied law is used (`rarefied`); past the slip threshold at all under the continuum law.
+pub fn knudsen(kn: f64, rarefied: bool, at: At, out: &mut Findings) {
+    if !rarefied {
+        out.check(
+            Limit::KnudsenContinuumLaw,
+            kn > KNUDSEN_SLIP,
+            kn,
+            KNUDSEN_SLIP,
+            at,
+        );
+        return;
+    }
+    for (limit, lo, hi) in [
+        (Limit::KnudsenSlip, KNUDSEN_SLIP, KNUDSEN_TRANSITION),
+        (
+            Limit::KnudsenTransition,
+            KNUDSEN_TRANSITION,
+            KNUDSEN_FREE_MOLECULAR,
+        ),
+        (
+            Limit::KnudsenFreeMolecular,
+            KNUDSEN_FREE_MOLECULAR,
+            f64::INFINITY,
+        ),
     ] {
-        out.check(limit, kn > bound, kn, bound, at);
+        out.check(limit, kn > lo && kn <= hi, kn, lo, at);
     }
 }
 

@@ -246,9 +246,7 @@ const GAS_FREE_MOLECULAR_KN: f64 = 1e5;
 /// tabulate (fewer than four open nodes): lookups then solve directly.
 #[derive(Default)]
 struct GasColumns(
-    std::sync::Mutex<
-        std::collections::BTreeMap<(i64, u64), Option<std::sync::Arc<UniformCubic>>>,
-    >,
+    std::sync::Mutex<std::collections::BTreeMap<(i64, u64), Option<std::sync::Arc<UniformCubic>>>>,
 );
 
 impl Clone for GasColumns {
@@ -399,7 +397,8 @@ impl EffectiveMediumTable {
             .into_iter()
             .map_while(|v| v)
             .collect();
-        let column = (values.len() >= 4).then(|| std::sync::Arc::new(UniformCubic::new(lo, h, values)));
+        let column =
+            (values.len() >= 4).then(|| std::sync::Arc::new(UniformCubic::new(lo, h, values)));
         self.gas.0.lock().ok()?.insert(key, column.clone());
         column
     }

@@ -792,7 +792,6 @@ impl Source<'_> {
         Ok(v)
     }
 
-
     /// `seal.installation_time` (default [`DEFAULT_INSTALLATION_TIME`]).
     pub(super) fn installation_time(&self, table: &Spanned<RawSeal>) -> Result<f64, ScenarioError> {
         Ok(self

@@ -73,6 +73,7 @@ const INTERFACE: InterfaceSettings = InterfaceSettings {
     panels_per_log_unit: 4.0,
     steps: 128,
     tolerance: 1e-9,
+    outlet_breaks: 0,
 };
 
 /// Quadrature of the clogging contact path (the detour junctions and the reach): both
@@ -574,8 +575,7 @@ impl<'a> Simulator<'a> {
         // a rarefied gas along a profile: its mean free path at the mean pressure p̄
         // (docs/model.md §3.10)
         let mean_free_path = fluid.mean_free_path();
-        let sigma_hat =
-            |s: f64| path.gas_conductance(s, p.shape_factor, viscosity, mean_free_path);
+        let sigma_hat = |s: f64| path.gas_conductance(s, p.shape_factor, viscosity, mean_free_path);
         let sigma = |e: f64| sigma_hat(e / e_star);
         // a gas under a uniform contact: the mass flux carries the local density, so the
         // effective conductance weighs σ(e) by (P_b + p_f)/p̄ with p_f = P0 − e, and each
@@ -615,7 +615,10 @@ impl<'a> Simulator<'a> {
                     &weighted(pressure + offset),
                     pressure + offset,
                     dp,
-                    &INTERFACE,
+                    &InterfaceSettings {
+                        outlet_breaks: fluid.outlet_breaks(),
+                        ..INTERFACE
+                    },
                 ),
                 junction_at(top),
             ),
@@ -1109,7 +1112,7 @@ impl<'a> Simulator<'a> {
         {
             // a gas: its regime at the critical constriction (docs/model.md §9.14)
             if let Some(kn) = p.fluid.at(snap.temperature).knudsen(j.u_c) {
-                validity::knudsen(kn, at, findings);
+                validity::knudsen(kn, p.fluid.mean_free_path().is_some(), at, findings);
             }
             if p.fluid.gas.is_some()
                 && p.fluid.pressure_difference > 0.0

@@ -296,7 +296,10 @@ fn a_volume_criterion_on_a_gas_is_accepted_at_its_stated_conditions() {
     // reference state must give the same run, bit for bit
     let with = |failure: &str| {
         // the continuum law: the figures below are its own
-        let continuum = FLAT_GAS.replace("gas = \"nitrogen\"", "gas = \"nitrogen\"\nrarefaction = false");
+        let continuum = FLAT_GAS.replace(
+            "gas = \"nitrogen\"",
+            "gas = \"nitrogen\"\nrarefaction = false",
+        );
         let (code, stdout, stderr, csv, json) = run(&format!("{continuum}[failure]\n{failure}"));
         assert_eq!(code, Some(0), "{stderr}");
         // the JSON names its (temporary) scenario file: drop that line
@@ -323,7 +326,11 @@ fn a_volume_criterion_on_a_gas_is_accepted_at_its_stated_conditions() {
     assert!(a == b, "{}\n{}", a.0, b.0);
     assert!(a == c, "{}\n{}", a.0, c.0);
     // 0.1 Pa·m³ over 5.0127e-6 Pa·m³/s = 19950 s
-    assert!(a.0.contains("FAILS after 5.54 h") && a.0.contains("by leaked_volume"), "{}", a.0);
+    assert!(
+        a.0.contains("FAILS after 5.54 h") && a.0.contains("by leaked_volume"),
+        "{}",
+        a.0
+    );
 }
 
 #[test]
@@ -356,7 +363,9 @@ fn a_volume_criterion_on_a_gas_without_its_conditions_is_refused() {
         )
         .replace("outlet_pressure = \"1 bar\"\n", "");
     refused(
-        &format!("{liquid}[failure]\nmax_leak_rate = \"1e-9 m^3/s\"\nreference_pressure = \"1 bar\"\n"),
+        &format!(
+            "{liquid}[failure]\nmax_leak_rate = \"1e-9 m^3/s\"\nreference_pressure = \"1 bar\"\n"
+        ),
         21,
         "failure.reference_pressure",
         "belongs to a gas",
