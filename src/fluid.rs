@@ -442,10 +442,13 @@ impl Fluid {
     /// or a gas under the continuum law.
     pub fn free_path_at(&self, gauge: f64) -> Option<crate::gas::Rarefied> {
         let g = self.gas?;
+        // the absolute pressure floored as in [`Self::density_weight`], so that against a
+        // vacuum σ·(P_b + p_f)/p̄ tends to its free-molecular limit instead of ∞·0
+        let floor = 1e-9 * (g.outlet_pressure + 0.5 * self.pressure_difference);
         (g.flow_law == crate::gas::FlowLaw::Rarefied).then(|| crate::gas::Rarefied {
             free_path: g
                 .gas
-                .viscous_mean_free_path(g.temperature, (g.outlet_pressure + gauge).max(0.0)),
+                .viscous_mean_free_path(g.temperature, (g.outlet_pressure + gauge).max(floor)),
             molecular_diameter: g.gas.molecular_diameter,
         })
     }
@@ -474,9 +477,13 @@ impl Fluid {
     /// local conductance at gauge fluid pressure `gauge` \[Pa\] over the outlet enters an
     /// effective conductance, `(P_b + gauge)/p̄` (the mass flux carries the local density);
     /// 1 for a liquid.
+    ///
+    /// Floored at 1e-9: against a vacuum the continuum law's weight vanishes at the outlet, where
+    /// the pressure profile's slope diverges (p dp/dx stays finite); the floor keeps the
+    /// profile's shooting finite and changes the flux by far less than its tolerance.
     pub fn density_weight(&self, gauge: f64) -> f64 {
         match (self.gas, self.mean_pressure()) {
-            (Some(g), Some(p)) => (g.outlet_pressure + gauge) / p,
+            (Some(g), Some(p)) => ((g.outlet_pressure + gauge) / p).max(1e-9),
             _ => 1.0,
         }
     }

@@ -178,13 +178,30 @@ pub fn hertz(
     start: Option<f64>,
 ) -> HertzSolution {
     hertz_warm(
-        sigma,
+        &|e, _| sigma(e),
         contact,
         pressure_difference,
         settings,
         start.map(|k| Start::Ratio(k, 1.0)),
     )
     .0
+}
+
+/// [`hertz`] for a local conductance that also depends on the local fluid pressure:
+/// `sigma(e, p_f)` \[m³/(Pa·s)\] at asperity pressure e and gauge fluid pressure p_f \[Pa\]. A
+/// gas (docs/model.md §3.9–§3.10) passes its conductance weighed by the local density,
+/// `σ(e, λ(P_b + p_f)) (P_b + p_f)/p̄`, each constriction rarefied at the local pressure: the
+/// flux q is then the volume flux at the mean pressure p̄, conserved along the profile (the
+/// mass flux over ρ(p̄)), and the series resistance ΔP/q goes to the gas law as it is. Needs σ
+/// finite where p_f → 0 (a rarefied gas is; the continuum law against a vacuum is not, and is
+/// then resolved only as well as the steps near the outlet allow).
+pub fn hertz_local(
+    sigma: &dyn Fn(f64, f64) -> f64,
+    contact: HertzContact,
+    pressure_difference: f64,
+    settings: &InterfaceSettings,
+) -> HertzSolution {
+    hertz_warm(sigma, contact, pressure_difference, settings, None).0
 }
 
 /// Where the shooting of [`hertz_warm`] starts.
@@ -199,7 +216,7 @@ enum Start {
 /// [`hertz`] from a [`Start`]; also returns the slope the secant ended with and the flux (the
 /// next nearby solve's start).
 fn hertz_warm(
-    sigma: &dyn Fn(f64) -> f64,
+    sigma: &dyn Fn(f64, f64) -> f64,
     contact: HertzContact,
     pressure_difference: f64,
     settings: &InterfaceSettings,
@@ -219,14 +236,15 @@ fn hertz_warm(
     if dp >= peak + offset {
         return (unsolved(InterfaceFlow::LiftOff), None);
     }
-    if sigma(peak + offset - dp) <= 0.0 {
+    if sigma(peak + offset - dp, dp) <= 0.0 {
         return (unsolved(InterfaceFlow::Sealed), None);
     }
     // the outlet edge: an energised profile ends on a step from k_e ΔP to 0; across it the fluid
     // pressure can fall without resistance down to where the asperities seal (as the uniform
     // contact's separable solution does), so the outlet condition is p_f = max(0, k_e ΔP − e_s)
-    let outlet = if offset > 0.0 && sigma(offset) <= 0.0 {
-        offset - sealing_pressure(sigma, peak + offset - dp, offset)
+    // (the sealing asperity pressure taken at the outlet's fluid pressure, 0)
+    let outlet = if offset > 0.0 && sigma(offset, 0.0) <= 0.0 {
+        offset - sealing_pressure(&|e| sigma(e, 0.0), peak + offset - dp, offset)
     } else {
         0.0
     };
@@ -481,7 +499,8 @@ impl HertzMemo {
                         (_, _, Some(p)) => Some(Start::Ratio(p.kappa, p.slope)),
                         _ => None,
                     };
-                    let (solved, end) = hertz_warm(sigma_hat, at, node_dp, settings, start);
+                    let (solved, end) =
+                        hertz_warm(&|e, _| sigma_hat(e), at, node_dp, settings, start);
                     if let (Some(kappa), Some((q, slope))) = (solved.flux_ratio, end) {
                         self.warm.set(self.previous.get());
                         self.previous.set(Some(Solved {
@@ -525,7 +544,8 @@ impl HertzMemo {
 
 /// One shooting problem across a Hertz profile.
 struct Shot<'a> {
-    sigma: &'a dyn Fn(f64) -> f64,
+    /// σ(e, p_f): the local conductance at asperity pressure e and fluid pressure p_f.
+    sigma: &'a dyn Fn(f64, f64) -> f64,
     peak: f64,
     offset: f64,
     half_width: f64,
@@ -538,12 +558,13 @@ struct Shot<'a> {
 }
 
 impl Shot<'_> {
-    /// Resistance density 1/σ(e) \[Pa·s/m³\]: 0 where the contact is open (e ≤ 0), ∞ where sealed.
-    fn resistivity(&self, e: f64) -> f64 {
+    /// Resistance density 1/σ(e, p_f) \[Pa·s/m³\] at fluid pressure `p`: 0 where the contact is
+    /// open (e ≤ 0), ∞ where sealed.
+    fn resistivity(&self, e: f64, p: f64) -> f64 {
         if e <= 0.0 {
             return 0.0;
         }
-        let s = (self.sigma)(e);
+        let s = (self.sigma)(e, p.max(0.0));
         if s > 0.0 { 1.0 / s } else { f64::INFINITY }
     }
 
@@ -558,7 +579,7 @@ impl Shot<'_> {
     fn slope(&self, t: f64, p: f64, q: f64) -> f64 {
         let (theta, dtheta) = self.angle(t);
         let c = theta.cos().max(0.0);
-        let r = self.resistivity(self.offset + self.peak * c - p);
+        let r = self.resistivity(self.offset + self.peak * c - p, p);
         if r == 0.0 {
             return 0.0;
         }
@@ -611,7 +632,10 @@ impl Shot<'_> {
         let f = |t: f64| {
             let (theta, dtheta) = self.angle(t);
             let c = theta.cos().max(0.0);
-            self.resistivity(self.offset + self.peak * c - relief) * self.half_width * c * dtheta
+            self.resistivity(self.offset + self.peak * c - relief, relief)
+                * self.half_width
+                * c
+                * dtheta
         };
         let mut total = f(0.0) + f(1.0);
         for k in 1..self.steps {

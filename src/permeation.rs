@@ -535,13 +535,15 @@ pub type PermeationNote = String;
 impl SealPermeation {
     /// The permeation of gas `gas` (a [`GASES`] id) through a seal of material-library id
     /// `library_id` and geometry `geometry`, with P_a = `p_high`, P_b = `p_low` \[Pa\].
-    /// An O-ring uses [`PermeationPath::o_ring`] at its installation squeeze ε0; a flat seal
-    /// has no thickness in its model (the exposed edge is unknown) and carries none.
+    /// An O-ring uses [`PermeationPath::o_ring`] at its installation squeeze ε0; a flat
+    /// gasket its edge ([`PermeationPath::gasket`]) when its compressed `thickness` \[m\] is
+    /// given, none without it (the exposed edge is unknown).
     /// Returns the permeation (if any) and a note saying what was left out or bounded.
     pub fn for_seal(
         library_id: Option<&str>,
         gas: &str,
         geometry: &crate::seal::SealGeometry,
+        thickness: Option<f64>,
         p_high: f64,
         p_low: f64,
     ) -> (Option<SealPermeation>, Option<PermeationNote>) {
@@ -566,23 +568,31 @@ impl SealPermeation {
                 )),
             );
         };
-        let crate::seal::SealGeometry::ORing {
-            cross_section,
-            mean_diameter,
-            squeeze,
-        } = *geometry
-        else {
-            return (
-                None,
-                Some(
-                    "no permeation through the rubber in this run: a flat seal's model has no \
-                     thickness, so its exposed edge is unknown (only O-rings carry permeation) \
-                     [docs/model.md §13.7]"
-                        .to_owned(),
-                ),
-            );
+        let path = match (*geometry, thickness) {
+            (
+                crate::seal::SealGeometry::ORing {
+                    cross_section,
+                    mean_diameter,
+                    squeeze,
+                },
+                _,
+            ) => PermeationPath::o_ring(cross_section, mean_diameter, squeeze),
+            (crate::seal::SealGeometry::Flat { width, length, .. }, Some(t)) => {
+                PermeationPath::gasket(t, width, length)
+            }
+            (crate::seal::SealGeometry::Flat { .. }, None) => {
+                return (
+                    None,
+                    Some(
+                        "no permeation through the rubber in this run: a flat seal needs its \
+                         compressed `thickness` in [seal] for the edge the gas permeates \
+                         through [docs/model.md §13.7]"
+                            .to_owned(),
+                    ),
+                );
+            }
         };
-        let path = match PermeationPath::o_ring(cross_section, mean_diameter, squeeze) {
+        let path = match path {
             Ok(path) => path,
             Err(e) => {
                 return (
@@ -658,13 +668,14 @@ mod tests {
             length: 0.1,
         };
         // helium in NBR: D known, no note; 0 at installation
-        let (he, note) = SealPermeation::for_seal(Some("nbr-70"), "helium", &ring, 2e5, 1e5);
+        let (he, note) = SealPermeation::for_seal(Some("nbr-70"), "helium", &ring, None, 2e5, 1e5);
         let he = he.unwrap();
         assert!(note.is_none());
         assert_eq!(he.molar_flow(0.0, 296.15), 0.0);
         assert!(he.time_lag(296.15).is_some());
         // nitrogen: no D, so the steady flow from t = 0 (the upper bound) and a note
-        let (n2, note) = SealPermeation::for_seal(Some("nbr-70"), "nitrogen", &ring, 2e5, 1e5);
+        let (n2, note) =
+            SealPermeation::for_seal(Some("nbr-70"), "nitrogen", &ring, None, 2e5, 1e5);
         let n2 = n2.unwrap();
         assert!(note.unwrap().contains("upper bound"));
         let steady = n2
@@ -672,15 +683,26 @@ mod tests {
             .steady_molar_flow(n2.data.permeability_at(296.15), 2e5, 1e5);
         assert_eq!(n2.molar_flow(0.0, 296.15), steady);
         // the gas library's "carbon-dioxide" finds the table's "carbon dioxide"
-        let (co2, _) = SealPermeation::for_seal(Some("fkm-75"), "carbon-dioxide", &ring, 2e5, 1e5);
+        let (co2, _) =
+            SealPermeation::for_seal(Some("fkm-75"), "carbon-dioxide", &ring, None, 2e5, 1e5);
         assert!(co2.is_some());
-        // a flat seal, an inline material, a gas without data: none, with a note
+        // a flat gasket with its compressed thickness: its edge, Π t L Δp/w (1 mm land,
+        // 0.1 m around, 2 mm thick)
+        let (gasket, note) =
+            SealPermeation::for_seal(Some("nbr-70"), "nitrogen", &flat, Some(2e-3), 2e5, 1e5);
+        let gasket = gasket.unwrap();
+        assert!(note.unwrap().contains("upper bound"));
+        let pi = gasket.data.permeability_at(296.15);
+        let hand = pi * 2e-3 * 0.1 * 1e5 / 1e-3;
+        assert!((gasket.molar_flow(1.0, 296.15) / hand - 1.0).abs() < 1e-12);
+        // a flat seal without thickness, an inline material, a gas without data: none, with a
+        // note
         for (id, gas, geometry) in [
             (Some("nbr-70"), "helium", &flat),
             (None, "helium", &ring),
             (Some("nbr-70"), "argon", &ring),
         ] {
-            let (none, note) = SealPermeation::for_seal(id, gas, geometry, 2e5, 1e5);
+            let (none, note) = SealPermeation::for_seal(id, gas, geometry, None, 2e5, 1e5);
             assert!(none.is_none());
             assert!(note.unwrap().contains("no permeation"));
         }

@@ -93,9 +93,6 @@ pub enum Limit {
     KnudsenFreeMolecular,
     /// Kn > [`KNUDSEN_SLIP`] under the continuum law (`rarefaction = false`, §9.14).
     KnudsenContinuumLaw,
-    /// A gas in a Hertz contact: the fluid pressure that loads the asperities follows the
-    /// liquid's profile (§9.14).
-    GasHertzProfile,
 }
 
 /// Knudsen number above which a gas slips at the walls (docs/model.md §9.14).
@@ -107,7 +104,7 @@ pub const KNUDSEN_FREE_MOLECULAR: f64 = 10.0;
 
 impl Limit {
     /// Every limit, in the order of docs/model.md.
-    pub const ALL: [Limit; 24] = [
+    pub const ALL: [Limit; 23] = [
         Limit::PressureRatio,
         Limit::AspectRatio,
         Limit::MolecularGap,
@@ -131,7 +128,6 @@ impl Limit {
         Limit::KnudsenTransition,
         Limit::KnudsenFreeMolecular,
         Limit::KnudsenContinuumLaw,
-        Limit::GasHertzProfile,
     ];
 
     /// The limit's identifier in JSON summaries.
@@ -160,7 +156,6 @@ impl Limit {
             Limit::KnudsenTransition => "knudsen_transition",
             Limit::KnudsenFreeMolecular => "knudsen_free_molecular",
             Limit::KnudsenContinuumLaw => "knudsen_continuum_law",
-            Limit::GasHertzProfile => "gas_hertz_profile",
         }
     }
 
@@ -183,8 +178,7 @@ impl Limit {
             Limit::KnudsenSlip
             | Limit::KnudsenTransition
             | Limit::KnudsenFreeMolecular
-            | Limit::KnudsenContinuumLaw
-            | Limit::GasHertzProfile => "§9.14",
+            | Limit::KnudsenContinuumLaw => "§9.14",
         }
     }
 
@@ -211,7 +205,6 @@ impl Limit {
             | Limit::KnudsenTransition
             | Limit::KnudsenFreeMolecular
             | Limit::KnudsenContinuumLaw => Some(("Kn = λ(p̄)/u_c", "")),
-            Limit::GasHertzProfile => None,
         }
     }
 
@@ -312,11 +305,6 @@ impl Limit {
                 "the gas is rarefied at the critical constriction but `rarefaction = false`: the \
                  continuum law is used and underestimates the flow (slip alone adds ≈ 6 Kn; \
                  free-molecular flow can be orders of magnitude above the continuum law)"
-            }
-            Limit::GasHertzProfile => {
-                "a gas in a Hertz contact: the fluid pressure loading the asperities follows the \
-                 liquid's profile (linear along the resistance), not the gas's (p² linear); the \
-                 throughput is the gas law"
             }
         }
     }
@@ -574,12 +562,6 @@ pub fn knudsen(kn: f64, rarefied: bool, at: At, out: &mut Findings) {
     ] {
         out.check(limit, kn > lo && kn <= hi, kn, lo, at);
     }
-}
-
-/// A gas in a Hertz contact: its interface pressure follows the liquid's profile
-/// (docs/model.md §9.14).
-pub fn gas_hertz_profile(at: At, out: &mut Findings) {
-    out.check(Limit::GasHertzProfile, true, 0.0, 0.0, at);
 }
 
 /// Hurst exponent (self-affine spectra) and rms slope of the surface (docs/model.md §9.5,

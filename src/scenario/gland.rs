@@ -481,6 +481,7 @@ impl Source<'_> {
             installation_temperature: Some(installation_temperature),
             design: Some(design),
             warnings,
+            thickness: None,
         })
     }
 

@@ -24,6 +24,12 @@ const NOMINAL_PRESSURE: Field = field(
     "Pa",
     Bound::Range(1.0, 1e10),
 );
+const THICKNESS: Field = field(
+    "seal.thickness",
+    Dimension::LENGTH,
+    "m",
+    Bound::Range(1e-6, 1.0),
+);
 const WIDTH: Field = field(
     "seal.width",
     Dimension::LENGTH,
@@ -201,6 +207,8 @@ pub(super) struct SealSpec {
     pub design: Option<GlandDesign>,
     /// Located warnings about the input (e.g. a gland fill above the guidance).
     pub warnings: Vec<String>,
+    /// A flat gasket's compressed thickness \[m\] (`seal.thickness`; permeation, §13.3).
+    pub thickness: Option<f64>,
 }
 
 /// The housing's linear CTE α_h and the key that set it.
@@ -216,7 +224,7 @@ pub(super) struct HousingExpansion {
 }
 
 /// The keys of each seal kind (for the messages).
-const FLAT_KEYS: &str = "nominal_pressure, width, length and loading";
+const FLAT_KEYS: &str = "nominal_pressure, width, length, loading and thickness";
 const ORING_KEYS: &str = "cross_section, mean_diameter, squeeze, loading, housing or \
                           housing_expansion, installation_temperature, and gland with its ring \
                           and groove keys";
@@ -318,6 +326,7 @@ impl Source<'_> {
                     installation_temperature: None,
                     design: None,
                     warnings: Vec::new(),
+                    thickness: self.optional(raw.thickness.as_ref(), &THICKNESS)?,
                 })
             }
             "o-ring" => {
@@ -326,6 +335,7 @@ impl Source<'_> {
                         (&raw.nominal_pressure, "nominal_pressure"),
                         (&raw.width, "width"),
                         (&raw.length, "length"),
+                        (&raw.thickness, "thickness"),
                     ],
                     ORING_KEYS,
                 )?;
@@ -391,6 +401,7 @@ impl Source<'_> {
                     installation_temperature,
                     design: None,
                     warnings: Vec::new(),
+                    thickness: None,
                 })
             }
             other => {

@@ -259,6 +259,8 @@ pub(super) struct RawSeal {
     pub nominal_pressure: Option<Quantity>,
     pub width: Option<Quantity>,
     pub length: Option<Quantity>,
+    /// A flat gasket's compressed thickness: the exposed edge gas permeates through.
+    pub thickness: Option<Quantity>,
     pub cross_section: Option<Quantity>,
     pub mean_diameter: Option<Quantity>,
     pub squeeze: Option<Quantity>,

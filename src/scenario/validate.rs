@@ -448,6 +448,7 @@ impl Source<'_> {
                     library,
                     gas.gas.id,
                     &seal.geometry,
+                    seal.thickness,
                     gas.outlet_pressure + fluid.pressure_difference,
                     gas.outlet_pressure,
                 )

@@ -105,6 +105,8 @@ struct Snapshot {
     u_c: Option<f64>,
     /// The critical junction at the peak strip (with the re-routed u_c under clogging).
     peak_junction: Junction,
+    /// A groove bottom with its own surface: its critical junction at the peak strip.
+    groove_junction: Option<Junction>,
     leak_rate: f64,
     state: SealState,
     retained: f64,
@@ -155,6 +157,8 @@ struct InterfaceLeak {
     /// The asperity pressure e the junction is evaluated at \[Pa\].
     junction_pressure: f64,
     lifted_off: bool,
+    /// A groove bottom with its own surface: its critical junction (for the validity checks).
+    groove_junction: Option<Junction>,
 }
 
 impl InterfaceLeak {
@@ -180,6 +184,7 @@ impl InterfaceLeak {
             junction,
             junction_pressure,
             lifted_off,
+            groove_junction: None,
         }
     }
 }
@@ -188,20 +193,15 @@ impl InterfaceLeak {
 /// pressure difference ([`HertzMemo`]; the ΔP axis is interpolated only when the asperity
 /// modulus changes over the run, `follow`).
 struct InterfaceSolver {
-    /// `None`: every state solved directly — a rarefied gas under a changing temperature,
-    /// whose σ(e) changes with T through the mean free path, not only through the viscosity
-    /// the memo scales out.
-    memo: Option<HertzMemo>,
+    memo: HertzMemo,
 }
 
 impl InterfaceSolver {
     fn new(problem: &LifeProblem) -> Self {
         let pressure_spacing = (problem.asperity_modulus == AsperityModulus::Follow)
             .then_some(interface::MEMO_PRESSURE_SPACING);
-        let rarefied = problem.fluid.mean_free_path().is_some();
         InterfaceSolver {
-            memo: (!rarefied || problem.environment.is_constant())
-                .then(|| HertzMemo::new(interface::MEMO_SPACING, pressure_spacing)),
+            memo: HertzMemo::new(interface::MEMO_SPACING, pressure_spacing),
         }
     }
 
@@ -213,10 +213,8 @@ impl InterfaceSolver {
         viscosity: f64,
         dp: f64,
     ) -> interface::HertzSolution {
-        match &self.memo {
-            Some(memo) => memo.solve(sigma_hat, e_star, contact, viscosity, dp, &INTERFACE),
-            None => interface::hertz(&|e| sigma_hat(e / e_star), contact, dp, &INTERFACE, None),
-        }
+        self.memo
+            .solve(sigma_hat, e_star, contact, viscosity, dp, &INTERFACE)
     }
 }
 
@@ -542,13 +540,17 @@ impl<'a> Simulator<'a> {
             self.interface_leak(path, solver, &equivalent, e_star, lifted, &fluid)
         };
         let counterface = interface(&self.path, &self.counterface);
-        let groove = match (&self.problem.groove, &self.groove) {
-            (GrooveInterface::Counterface, _) => counterface.leak_rate,
-            (GrooveInterface::Own(_), Some((path, solver))) => interface(path, solver).leak_rate,
-            _ => 0.0,
+        let (groove, groove_junction) = match (&self.problem.groove, &self.groove) {
+            (GrooveInterface::Counterface, _) => (counterface.leak_rate, None),
+            (GrooveInterface::Own(_), Some((path, solver))) => {
+                let own = interface(path, solver);
+                (own.leak_rate, Some(own.junction))
+            }
+            _ => (0.0, None),
         };
         InterfaceLeak {
             leak_rate: counterface.leak_rate + groove,
+            groove_junction,
             ..counterface
         }
     }
@@ -572,28 +574,25 @@ impl<'a> Simulator<'a> {
         let dp = p.fluid.pressure_difference;
         let offset = p.energisation_factor * dp;
         let viscosity = fluid.viscosity;
-        // a rarefied gas along a profile: its mean free path at the mean pressure p̄
-        // (docs/model.md §3.10)
-        let mean_free_path = fluid.mean_free_path();
-        let sigma_hat = |s: f64| path.gas_conductance(s, p.shape_factor, viscosity, mean_free_path);
-        let sigma = |e: f64| sigma_hat(e / e_star);
-        // a gas under a uniform contact: the mass flux carries the local density, so the
-        // effective conductance weighs σ(e) by (P_b + p_f)/p̄ with p_f = P0 − e, and each
-        // constriction rarefies at the local pressure (docs/model.md §3.9, §3.10); 1 for a
-        // liquid
-        let weighted = |top: f64| {
-            move |e: f64| {
-                path.gas_conductance(
-                    e / e_star,
-                    p.shape_factor,
-                    viscosity,
-                    fluid.free_path_at(top - e),
-                ) * fluid.density_weight(top - e)
-            }
+        let sigma_hat = |s: f64| path.conductance(s, p.shape_factor, viscosity);
+        // σ(e, p_f) at asperity pressure e and gauge fluid pressure p_f: for a gas weighed by
+        // the local density (P_b + p_f)/p̄, each constriction rarefied at the local pressure
+        // (docs/model.md §3.9, §3.10); σ(e) for a liquid
+        let local = |e: f64, fluid_pressure: f64| {
+            path.gas_conductance(
+                e / e_star,
+                p.shape_factor,
+                viscosity,
+                fluid.free_path_at(fluid_pressure),
+            ) * fluid.density_weight(fluid_pressure)
         };
+        // under a uniform contact pressure `top` the fluid pressure is top − e
+        let weighted = |top: f64| move |e: f64| local(e, top - e);
         let geometry = profile.geometry(p.geometry.sealing_length());
         let series = || {
-            let resistance = profile.series_resistance(&self.rule, |pc| sigma(pc + offset));
+            // ΔP negligible: every strip at p̄ (gauge ΔP/2)
+            let resistance =
+                profile.series_resistance(&self.rule, |pc| local(pc + offset, 0.5 * dp));
             p.fluid
                 .leak_rate(geometry, Conduction::Series { resistance })
         };
@@ -601,7 +600,7 @@ impl<'a> Simulator<'a> {
         let junction_at = |e: f64| (path.critical_junction(e.max(0.0) / e_star), e.max(0.0));
         if lifted {
             return InterfaceLeak::new(
-                self.onset_leak(&sigma, &weighted, profile, offset),
+                self.onset_leak(&local, profile, offset),
                 junction_at(top),
                 true,
             );
@@ -628,7 +627,13 @@ impl<'a> Simulator<'a> {
                     offset,
                     width,
                 };
-                let solved = solver.solve(&sigma_hat, e_star, contact, viscosity, dp);
+                // a gas: its own pressure profile along the resistance (no memo: its σ depends
+                // on the absolute pressures, which do not scale with E*)
+                let solved = if fluid.gas.is_some() {
+                    interface::hertz_local(&local, contact, dp, &INTERFACE)
+                } else {
+                    solver.solve(&sigma_hat, e_star, contact, viscosity, dp)
+                };
                 (solved.flow, junction_at(top - solved.centre_fluid_pressure))
             }
         };
@@ -638,7 +643,7 @@ impl<'a> Simulator<'a> {
             }
             InterfaceFlow::Sealed => InterfaceLeak::new(0.0, junction, false),
             InterfaceFlow::LiftOff => InterfaceLeak::new(
-                self.onset_leak(&sigma, &weighted, profile, offset),
+                self.onset_leak(&local, profile, offset),
                 junction_at(top),
                 true,
             ),
@@ -649,20 +654,14 @@ impl<'a> Simulator<'a> {
     /// pressure in it at its largest — the peak contact pressure, less 1e-9 of it for a Hertz
     /// profile — driving the flux; the last value the model gives for an open seal, a lower
     /// bound.
-    fn onset_leak<W: Fn(f64) -> f64>(
-        &self,
-        sigma: &dyn Fn(f64) -> f64,
-        weighted: &dyn Fn(f64) -> W,
-        profile: &Profile,
-        offset: f64,
-    ) -> f64 {
+    fn onset_leak(&self, local: &dyn Fn(f64, f64) -> f64, profile: &Profile, offset: f64) -> f64 {
         let p = self.problem;
         let geometry = profile.geometry(p.geometry.sealing_length());
         let dp = p.fluid.pressure_difference;
         let conduction = match *profile {
             Profile::Uniform { pressure, .. } => {
                 let top = pressure + offset;
-                interface::uniform_onset(&weighted(top), top, dp, &INTERFACE)
+                interface::uniform_onset(&|e| local(e, top - e), top, dp, &INTERFACE)
             }
             Profile::Hertz { peak, width } => {
                 let onset = (peak + offset) * (1.0 - 1e-9);
@@ -671,7 +670,7 @@ impl<'a> Simulator<'a> {
                     offset,
                     width,
                 };
-                match interface::hertz(sigma, contact, onset, &INTERFACE, None).flow {
+                match interface::hertz_local(local, contact, onset, &INTERFACE).flow {
                     InterfaceFlow::Conducting(Conduction::Series { resistance }) => {
                         Conduction::Series {
                             resistance: resistance * dp / onset,
@@ -939,6 +938,7 @@ impl<'a> Simulator<'a> {
             profile,
             u_c,
             peak_junction,
+            groove_junction: leak.groove_junction,
             leak_rate,
             state,
             retained,
@@ -1107,18 +1107,17 @@ impl<'a> Simulator<'a> {
             at,
             findings,
         );
-        if let (Junction::Leaking(j), false) =
-            (&snap.peak_junction, snap.state == SealState::LiftOff)
-        {
-            // a gas: its regime at the critical constriction (docs/model.md §9.14)
-            if let Some(kn) = p.fluid.at(snap.temperature).knudsen(j.u_c) {
-                validity::knudsen(kn, p.fluid.mean_free_path().is_some(), at, findings);
-            }
-            if p.fluid.gas.is_some()
-                && p.fluid.pressure_difference > 0.0
-                && matches!(snap.profile, Profile::Hertz { .. })
+        // a gas: its regime at the critical constriction of each leaking interface (docs/model.md
+        // §9.14)
+        if snap.state != SealState::LiftOff {
+            for j in [Some(&snap.peak_junction), snap.groove_junction.as_ref()]
+                .into_iter()
+                .flatten()
+                .filter_map(Junction::leaking)
             {
-                validity::gas_hertz_profile(at, findings);
+                if let Some(kn) = p.fluid.at(snap.temperature).knudsen(j.u_c) {
+                    validity::knudsen(kn, p.fluid.mean_free_path().is_some(), at, findings);
+                }
             }
         }
         if let Some((ratio, limit)) = &snap.extrusion {

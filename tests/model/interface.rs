@@ -276,3 +276,105 @@ fn the_memo_interpolates_the_direct_solutions() {
         assert!(worst < 1e-6, "k_e = {k_e}, E* varying {varying}: {worst:e}");
     }
 }
+
+#[test]
+fn a_gas_follows_its_own_pressure_profile_through_a_hertz_contact() {
+    // A Hertz profile of vanishing peak on an energisation k_e ΔP is a uniform contact: with the
+    // gas's local law σ(e, p_f) = σ_c(e) f(λ(P_b + p_f)/u_c, λc/u_c) (P_b + p_f)/p̄ the shooting
+    // (RK4 in x, the pressure profile solved) must give the separable uniform flux
+    // ∫σ(e, P0 − e) de (Gauss–Legendre in ln e) — rarefied and continuum, at a finite outlet
+    // pressure and against a vacuum (where the continuum law's σ·p → 0 at the outlet: p dp/dx
+    // stays finite, dp/dx does not; the floor of the density weight keeps it solvable). Measured
+    // 3e-8 … 1.1e-7 at 6400 steps; the life loop's 128 steps are checked too.
+    use sealsim::fluid::{Fluid, GasService, ViscosityLaw};
+    use sealsim::gas::{self, FlowLaw};
+    use sealsim::interface::hertz_local;
+    let (path, e_star) = paper_path(Fidelity::Table);
+    let width = 1e-3;
+    let t = 296.15;
+    for (g, pa, pb, law, tolerance) in [
+        (gas::NITROGEN, 3e5, 1e5, FlowLaw::Rarefied, 1e-5),
+        (gas::HELIUM, 1e5, 0.0, FlowLaw::Rarefied, 1e-5),
+        (gas::HELIUM, 2e5, 1e5, FlowLaw::Continuum, 1e-5),
+        (gas::HELIUM, 1e5, 0.0, FlowLaw::Continuum, 1e-5),
+    ] {
+        let fluid = Fluid {
+            viscosity: 0.0,
+            pressure_difference: pa - pb,
+            law: ViscosityLaw::Gas(g),
+            gas: Some(GasService {
+                gas: g,
+                outlet_pressure: pb,
+                temperature: t,
+                flow_law: law,
+            }),
+        }
+        .at(t);
+        let local = |e: f64, pf: f64| {
+            path.gas_conductance(e / e_star, 1.0, fluid.viscosity, fluid.free_path_at(pf))
+                * fluid.density_weight(pf)
+        };
+        let dp = pa - pb;
+        let offset = 0.35e6;
+        let uniform_flux = match uniform(
+            &|e| local(e, offset - e),
+            offset,
+            dp,
+            &InterfaceSettings {
+                outlet_breaks: fluid.outlet_breaks(),
+                panels_per_log_unit: 16.0,
+                ..InterfaceSettings::default()
+            },
+        ) {
+            InterfaceFlow::Conducting(Conduction::Uniform { conductance }) => {
+                conductance * dp / width
+            }
+            other => panic!("{other:?}"),
+        };
+        let set = InterfaceSettings {
+            steps: 6400,
+            ..InterfaceSettings::default()
+        };
+        let contact = HertzContact {
+            peak: 1e-10 * offset,
+            offset,
+            width,
+        };
+        let hertz_flux = match hertz_local(&local, contact, dp, &set).flow {
+            InterfaceFlow::Conducting(Conduction::Series { resistance }) => dp / resistance,
+            other => panic!("{other:?}"),
+        };
+        let error = (hertz_flux / uniform_flux - 1.0).abs();
+        let coarse = match hertz_local(
+            &local,
+            contact,
+            dp,
+            &InterfaceSettings {
+                steps: 128,
+                tolerance: 1e-9,
+                ..InterfaceSettings::default()
+            },
+        )
+        .flow
+        {
+            InterfaceFlow::Conducting(Conduction::Series { resistance }) => dp / resistance,
+            other => panic!("{other:?}"),
+        };
+        let coarse_error = (coarse / uniform_flux - 1.0).abs();
+        eprintln!(
+            "{} {pa}→{pb} {law:?}: Hertz shooting vs separable {error:.1e} (128 steps: \
+             {coarse_error:.1e})",
+            g.id
+        );
+        assert!(
+            error < tolerance,
+            "{}: {hertz_flux} vs {uniform_flux}",
+            g.id
+        );
+        assert!(
+            coarse_error < 1e-4,
+            "{}: 128 steps {coarse} vs {uniform_flux}",
+            g.id
+        );
+    }
+}
