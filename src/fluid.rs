@@ -430,9 +430,13 @@ impl Fluid {
     /// The Knudsen number `Kn = λ_μ(p̄, T)/u` of a gas at a constriction of height `gap` \[m\],
     /// with the viscosity-based mean free path of the rarefaction law
     /// ([`crate::gas::Gas::viscous_mean_free_path`]) at the mean pressure p̄ = (P_a + P_b)/2 and
-    /// the gas temperature T ([`GasService::temperature`]); `None` for a liquid.
+    /// the gas temperature T ([`GasService::temperature`]); `None` for a liquid, and for a gap no
+    /// wider than a molecule, through which no gas flows at all.
     pub fn knudsen(&self, gap: f64) -> Option<f64> {
         let g = self.gas?;
+        if gap <= g.gas.molecular_diameter {
+            return None;
+        }
         let p = self.mean_pressure()?;
         Some(g.gas.viscous_mean_free_path(g.temperature, p) / gap)
     }

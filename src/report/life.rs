@@ -919,7 +919,9 @@ pub fn human_summary(
         ),
     );
     if let Some(p) = problem.fluid.mean_pressure() {
+        let sealed = result.rows.iter().all(|r| r.leak_rate == 0.0);
         let law = match result.continuum_leak_rate {
+            _ if sealed => "sealed through the interface: no channel percolates".to_owned(),
             Some(c) if c > 0.0 && result.initial_leak_rate() > 0.0 => format!(
                 "rarefied flow; the continuum law would give {} at installation: rarefaction ×{}",
                 throughput(p * c),
@@ -931,9 +933,10 @@ pub fn human_summary(
         line(
             "throughput",
             format!(
-                "{} at installation, {} after {duration} ({law}; see the Knudsen warnings)",
+                "{} at installation, {} after {duration} ({law}{})",
                 throughput(p * result.initial_leak_rate()),
-                throughput(p * result.final_leak_rate())
+                throughput(p * result.final_leak_rate()),
+                if sealed { "" } else { "; see the Knudsen warnings" }
             ),
         );
         let permeation = |r: Option<&crate::simulate::HistoryRow>| r.and_then(|r| r.permeation);
