@@ -3,7 +3,7 @@
 use super::{CliError, print_findings, print_scenario_warnings, progress_bar, write_output};
 use crate::leak::Fidelity;
 use crate::math::log_spaced;
-use crate::report::csv::{leak_table, motion_leak_table};
+use crate::report::csv::{gas_leak_table, leak_table, motion_leak_table};
 use crate::scenario::Scenario;
 use crate::units::{self, Dimension};
 use crate::workflow;
@@ -140,9 +140,10 @@ pub fn run(args: LeakArgs) -> Result<(), CliError> {
         fidelity,
         &mut progress_bar("numerical level"),
     );
-    let csv = match &outcome.motion {
-        None => leak_table(&outcome.points)?,
-        Some(motion) => motion_leak_table(&outcome.points, motion, outcome.stroke)?,
+    let csv = match (&outcome.motion, scenario.life.fluid.mean_pressure()) {
+        (None, Some(p)) => gas_leak_table(&outcome.points, p)?,
+        (None, None) => leak_table(&outcome.points)?,
+        (Some(motion), _) => motion_leak_table(&outcome.points, motion, outcome.stroke)?,
     };
     print_scenario_warnings(None, &scenario);
     print_findings(None, &outcome.findings);

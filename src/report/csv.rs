@@ -60,6 +60,24 @@ pub fn leak_table(points: &[LeakPoint]) -> Result<String, ReportError> {
     table(None, &[], points.iter().map(|p| ("", p, Ok(Vec::new()))))
 }
 
+/// The leak table of a gas (docs/model.md §3.9): [`LEAK_COLUMNS`] and
+/// `throughput_Pa_m3_per_s`, the pV flow `p̄ × leak_rate_m3_per_s` at the gas temperature (a
+/// gas's leak rate is its volume flow at the mean pressure `mean_pressure` p̄ \[Pa\]).
+pub fn gas_leak_table(points: &[LeakPoint], mean_pressure: f64) -> Result<String, ReportError> {
+    const COLUMN: &str = "throughput_Pa_m3_per_s";
+    table(
+        None,
+        &[COLUMN],
+        points.iter().enumerate().map(|(i, p)| {
+            (
+                "",
+                p,
+                number(i + 1, COLUMN, mean_pressure * p.leak_rate).map(|c| vec![c]),
+            )
+        }),
+    )
+}
+
 /// The leak table with the [`MOTION_COLUMNS`] of each point's motion (`motion[i]` belongs to
 /// `points[i]`); the stroke columns only when `stroke`.
 pub fn motion_leak_table(

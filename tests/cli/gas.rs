@@ -414,3 +414,42 @@ fn a_volume_criterion_on_a_gas_without_its_conditions_is_refused() {
         "belongs to a gas",
     );
 }
+
+#[test]
+fn leak_on_a_gas_gives_the_throughput_of_the_runs_first_row() {
+    // the shipped helium gasket: `leak` at the installation pressure is the run's first row,
+    // and its throughput column is p̄ × the leak rate (p̄ = 0.5 bar against the vacuum)
+    let scenario = scenario_path("helium-leak-test-gasket.toml");
+    let out = crate::support::sealsim()
+        .arg("leak")
+        .arg(&scenario)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let csv = String::from_utf8(out.stdout).unwrap();
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    assert_eq!(header.last(), Some(&"throughput_Pa_m3_per_s"));
+    let row: Vec<f64> = lines
+        .next()
+        .unwrap()
+        .split(',')
+        .filter_map(|c| c.parse().ok())
+        .collect();
+    let (leak, q) = (row[6], row[7]);
+    assert!(rel(q, 0.5e5 * leak) < 1e-9, "{q} vs {leak}");
+    let dir = tempfile::tempdir().unwrap();
+    let history = dir.path().join("h.csv");
+    let status = crate::support::sealsim()
+        .arg("run")
+        .arg(&scenario)
+        .arg("-o")
+        .arg(&history)
+        .output()
+        .unwrap();
+    assert_eq!(status.status.code(), Some(0));
+    let text = fs::read_to_string(&history).unwrap();
+    let first: Vec<&str> = text.lines().nth(1).unwrap().split(',').collect();
+    let run_q: f64 = first[14].parse().unwrap();
+    assert!(rel(q, run_q) < 1e-12, "leak {q} vs run {run_q}");
+}
