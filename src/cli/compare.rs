@@ -24,7 +24,8 @@ use std::path::{Path, PathBuf};
     after_help = "CSV columns: material, name, status, time_to_failure_s (blank when it \
     survives), failure_mode (leak_rate|leaked_volume|retained_force|lift_off|none), \
     leak_rate_1day_m3_per_s, leak_rate_1year_m3_per_s, leak_rate_10years_m3_per_s (blank beyond \
-    the scenario's duration)."
+    the scenario's duration); for a gas also throughput_1day_Pa_m3_per_s, \
+    throughput_1year_Pa_m3_per_s, throughput_10years_Pa_m3_per_s (the interface only)."
 )]
 pub struct CompareArgs {
     /// Scenario file (TOML).
@@ -69,6 +70,7 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
             material: &run.material,
             result: &run.result,
             duration: run.scenario.life.time.duration,
+            mean_pressure: run.scenario.life.fluid.mean_pressure(),
         })
         .collect();
     let csv = args

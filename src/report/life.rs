@@ -936,7 +936,11 @@ pub fn human_summary(
                 "{} at installation, {} after {duration} ({law}{})",
                 throughput(p * result.initial_leak_rate()),
                 throughput(p * result.final_leak_rate()),
-                if sealed { "" } else { "; see the Knudsen warnings" }
+                if sealed {
+                    ""
+                } else {
+                    "; see the Knudsen warnings"
+                }
             ),
         );
         let permeation = |r: Option<&crate::simulate::HistoryRow>| r.and_then(|r| r.permeation);
@@ -1229,6 +1233,9 @@ pub struct CompareRow<'a> {
     pub result: &'a LifeResult,
     /// Length of the run \[s\] (leak rates beyond it are blank).
     pub duration: f64,
+    /// A gas: the mean pressure p̄ \[Pa\] whose volume flows the leak rates are; the
+    /// comparison then gives throughputs `p̄ Q̇` too (docs/model.md §3.9).
+    pub mean_pressure: Option<f64>,
 }
 
 impl CompareRow<'_> {
@@ -1242,10 +1249,24 @@ impl CompareRow<'_> {
     }
 }
 
-/// The comparison as CSV, one row per compound.
+/// Columns the comparison CSV gets for a gas: the throughputs `p̄ Q̇` at [`COMPARE_TIMES`]
+/// \[Pa·m³/s\] (interface only: a compared compound carries no permeation, §13.7).
+pub const COMPARE_GAS_COLUMNS: [&str; 3] = [
+    "throughput_1day_Pa_m3_per_s",
+    "throughput_1year_Pa_m3_per_s",
+    "throughput_10years_Pa_m3_per_s",
+];
+
+/// The comparison as CSV, one row per compound ([`COMPARE_COLUMNS`], and for a gas
+/// [`COMPARE_GAS_COLUMNS`]).
 pub fn compare_table(rows: &[CompareRow<'_>]) -> Result<String, ReportError> {
     let mut writer = ::csv::Writer::from_writer(Vec::new());
-    writer.write_record(COMPARE_COLUMNS).map_err(csv_error)?;
+    let gas = rows.first().and_then(|r| r.mean_pressure);
+    let mut header: Vec<&str> = COMPARE_COLUMNS.to_vec();
+    if gas.is_some() {
+        header.extend(COMPARE_GAS_COLUMNS);
+    }
+    writer.write_record(&header).map_err(csv_error)?;
     for (i, r) in rows.iter().enumerate() {
         let row = i + 1;
         let optional = |column: usize, value: Option<f64>| {
@@ -1254,7 +1275,7 @@ pub fn compare_table(rows: &[CompareRow<'_>]) -> Result<String, ReportError> {
             })
         };
         let [day, year, decade] = r.leak_rates();
-        let record = [
+        let mut record = vec![
             r.label.to_owned(),
             r.material.name.clone(),
             r.material.status.as_str().to_owned(),
@@ -1264,28 +1285,36 @@ pub fn compare_table(rows: &[CompareRow<'_>]) -> Result<String, ReportError> {
             optional(6, year)?,
             optional(7, decade)?,
         ];
+        if let Some(p) = r.mean_pressure {
+            for (k, q) in [day, year, decade].into_iter().enumerate() {
+                record.push(q.map_or(Ok(String::new()), |q| {
+                    number(row, COMPARE_GAS_COLUMNS[k], p * q)
+                })?);
+            }
+        }
         writer.write_record(record).map_err(csv_error)?;
     }
     finish(writer)
 }
 
-/// The comparison as an aligned text table for the terminal.
+/// The comparison as an aligned text table for the terminal (a gas: throughputs in Pa·m³/s).
 pub fn compare_text(rows: &[CompareRow<'_>]) -> String {
-    let mut cells: Vec<Vec<String>> = vec![
-        [
-            "material",
-            "status",
-            "time to failure",
-            "mode",
-            "Q 1 day [m³/s]",
-            "Q 1 year [m³/s]",
-            "Q 10 years [m³/s]",
-        ]
-        .map(str::to_owned)
-        .to_vec(),
-    ];
+    let unit = match rows.first().and_then(|r| r.mean_pressure) {
+        Some(_) => "Pa·m³/s",
+        None => "m³/s",
+    };
+    let mut cells: Vec<Vec<String>> = vec![vec![
+        "material".to_owned(),
+        "status".to_owned(),
+        "time to failure".to_owned(),
+        "mode".to_owned(),
+        format!("Q 1 day [{unit}]"),
+        format!("Q 1 year [{unit}]"),
+        format!("Q 10 years [{unit}]"),
+    ]];
     for r in rows {
-        let rate = |q: Option<f64>| q.map_or_else(|| "-".to_owned(), |q| human(q, 3));
+        let scale = r.mean_pressure.unwrap_or(1.0);
+        let rate = |q: Option<f64>| q.map_or_else(|| "-".to_owned(), |q| human(scale * q, 3));
         let [day, year, decade] = r.leak_rates();
         cells.push(vec![
             r.label.to_owned(),
@@ -1473,10 +1502,26 @@ mod tests {
             material: &m,
             result: &r,
             duration: 2.0 * DAY,
+            mean_pressure: None,
         }];
         let text = compare_table(&rows).unwrap();
         let line = text.lines().nth(1).unwrap();
         assert_eq!(line, "x,rubber,user,7.8894e7,leak_rate,1e-12,,");
         assert!(compare_text(&rows).contains("2.5 years"));
+        // a gas at p̄ = 1.5 bar: the throughputs p̄ Q̇ after the volume flows (a format test)
+        let gas = [CompareRow {
+            mean_pressure: Some(1.5e5),
+            ..rows[0].clone()
+        }];
+        let text = compare_table(&gas).unwrap();
+        assert!(text.lines().next().unwrap().ends_with(
+            ",throughput_1day_Pa_m3_per_s,throughput_1year_Pa_m3_per_s,\
+             throughput_10years_Pa_m3_per_s"
+        ));
+        assert_eq!(
+            text.lines().nth(1).unwrap(),
+            "x,rubber,user,7.8894e7,leak_rate,1e-12,,,1.5e-7,,"
+        );
+        assert!(compare_text(&gas).contains("Q 1 day [Pa·m³/s]"));
     }
 }
