@@ -144,15 +144,15 @@ impl Rarefied {
 }
 
 /// Smoluchowski's shape integral of a long rectangular channel of height `h` and width `w`
-/// \[m³\] (docs/model.md §3.10): `A_S = 2[h² w asinh(w/h) + h w² asinh(h/w) − (h² + w²)^{3/2}/3
-/// + (h³ + w³)/3]`, so that the free-molecular throughput conductance of a channel of length L
+/// \[m³\] (docs/model.md §3.10):
+/// `A_S = 2[h² w asinh(w/h) + h w² asinh(h/w) − (h² + w²)^{3/2}/3 + (h³ + w³)/3]`, so that the free-molecular throughput conductance of a channel of length L
 /// is `C_FM = (v̄/8) A_S/L` ([`free_molecular_conductance`]). For a slit (w ≫ h)
 /// `A_S → 2 h² w (ln(2w/h) + ½)`: the conductance per unit width grows like ln(w/h), the
 /// logarithm of the plane channel. Source: the formula as implemented in eznuk/sedmodel
 /// (`sedmodel.py`, the superposition model of Kunze et al., Sci. Rep. 12, 2057 (2022)) —
 /// SECONDARY (code). Its circular case, `A_S = 16πr³/3`, is Knudsen's long tube,
-/// `C = (π/12) v̄ d³/L` = 12.1 d³/L L/s for air at 20 °C with d, L in cm (the vacuum rule
-/// read at codingace.net "Molecular Flow Conductance Calculator"; a test).
+/// `C = (π/12) v̄ d³/L` = 12.1 d³/L L/s for air at 20 °C with d, L in cm (the vacuum rule read
+/// at codingace.net "Molecular Flow Conductance Calculator"; a test).
 pub fn smoluchowski_shape(h: f64, w: f64) -> f64 {
     let (h, w) = if h <= w { (h, w) } else { (w, h) };
     // (h² + w²)^{3/2} − w³ without cancellation for w ≫ h: w³ expm1(1.5 ln1p(h²/w²))
@@ -200,7 +200,7 @@ pub const BESKOK_ALPHA0: f64 = 64.0 / (15.0 * std::f64::consts::PI);
 /// Kn ≈ 3.7 (where X = 7π α0_BK/12), growing like ln Kn beyond, and for Kn > a exactly the
 /// free-molecular conductance of the slit a gaps wide (a test). 1 at Kn = 0.
 pub fn slit_rarefaction(kn: f64, aspect: f64) -> f64 {
-    if !(kn > 0.0) {
+    if kn.is_nan() || kn <= 0.0 {
         return 1.0;
     }
     // smooth min and max (C∞, so that the pressure quadratures stay spectrally accurate): the

@@ -245,9 +245,10 @@ const GAS_FREE_MOLECULAR_KN: f64 = 1e5;
 /// threads, and shared by clones made afterwards. `None` for a column the solve could not
 /// tabulate (fewer than four open nodes): lookups then solve directly.
 #[derive(Default)]
-struct GasColumns(
-    std::sync::Mutex<std::collections::BTreeMap<(i64, u64), Option<std::sync::Arc<UniformCubic>>>>,
-);
+struct GasColumns(std::sync::Mutex<ColumnMap>);
+
+/// `(k, molecular diameter bits) → column` (`None`: not tabulable).
+type ColumnMap = std::collections::BTreeMap<(i64, u64), Option<std::sync::Arc<UniformCubic>>>;
 
 impl Clone for GasColumns {
     fn clone(&self) -> Self {
@@ -329,7 +330,7 @@ impl EffectiveMediumTable {
             };
             return self.rarefied_cubed_gap(s, at_top) * (gas.free_path / top);
         }
-        if !(gas.free_path > 0.0) {
+        if gas.free_path.is_nan() || gas.free_path <= 0.0 {
             return direct(gas);
         }
         let v = logit(s / self.s_half);
