@@ -173,6 +173,9 @@ pub enum ContactPath {
         table: NumericalTable,
         /// The critical-junction table of the same spectrum (ζc, λc of the channels).
         junctions: Box<ContactTable>,
+        /// A rarefied gas: the mean free path the table's cells were rarefied at (p̄ and the
+        /// installation temperature; `None`: a liquid, or built without the gas).
+        gas: Option<crate::gas::Rarefied>,
     },
 }
 
@@ -250,6 +253,7 @@ impl ContactPath {
                 ContactPath::Numerical {
                     table: numerical,
                     junctions: Box::new(ContactTable::build(exact, table)),
+                    gas: options.numerical.flow.gas,
                 }
             }
         }
@@ -259,7 +263,10 @@ impl ContactPath {
     /// level resolves only a band of a synthetic spectrum, or a node of its table failed
     /// (docs/model.md §9.10).
     pub fn assess(&self, options: &PathOptions<'_>, out: &mut Findings) {
-        let ContactPath::Numerical { table, junctions } = self else {
+        let ContactPath::Numerical {
+            table, junctions, ..
+        } = self
+        else {
             return;
         };
         let sp = junctions.exact().spectrum();
@@ -307,7 +314,9 @@ impl ContactPath {
             ContactPath::EffectiveMedium(t) => {
                 Self::gap_channel(t.effective_gap(s), t.junctions(), s, 0.5)
             }
-            ContactPath::Numerical { table, junctions } => {
+            ContactPath::Numerical {
+                table, junctions, ..
+            } => {
                 let a_c = junctions.exact().settings().percolation_threshold;
                 Self::gap_channel(table.effective_gap(s), junctions, s, a_c.max(0.5))
             }
@@ -386,8 +395,10 @@ impl ContactPath {
     ///   number, the constriction λc wide;
     /// * effective medium: Bruggeman over the separations, each gap u conducting
     ///   `u³ f(λ/u)/(12η)` ([`EffectiveMediumTable::rarefied_cubed_gap`]);
-    /// * numerical: the table's effective gap u_eff with `f(λ/u_eff, λc/u_eff)` — the
-    ///   rarefaction of the ensemble's effective channel, not cell by cell.
+    /// * numerical: built for the gas (`PathOptions::numerical.flow.gas`), every cell rarefied
+    ///   at the table's λ̄ (p̄, installation temperature), times `f(λ/u_c)/f(λ̄/u_c)` of the
+    ///   critical constriction for the local pressure; built without it, the effective channel
+    ///   `f(λ/u_eff, λc/u_eff)`.
     pub fn gas_conductance(
         &self,
         s: f64,
@@ -401,6 +412,25 @@ impl ContactPath {
         let alpha = match self {
             ContactPath::EffectiveMedium(t) => {
                 return t.rarefied_cubed_gap(s, l) / (12.0 * viscosity);
+            }
+            ContactPath::Numerical {
+                table,
+                junctions,
+                gas: Some(built),
+            } => {
+                // cell by cell at the table's mean free path; the local pressure's change of it
+                // carried by the critical constriction's own factor
+                let u = table.effective_gap(s);
+                if u <= 0.0 {
+                    return 0.0;
+                }
+                let ratio = match junctions.critical_junction(s) {
+                    Junction::Leaking(j) if j.u_c > l.molecular_diameter => {
+                        l.factor(j.u_c, j.lambda_c) / built.factor(j.u_c, j.lambda_c)
+                    }
+                    _ => 1.0,
+                };
+                return junction_conductance(u, 1.0, viscosity) * ratio;
             }
             ContactPath::Numerical { .. } => 1.0,
             _ => shape_factor,

@@ -23,6 +23,7 @@
 //! The leak rate of a flat seal is `Q̇ = (L_y/L_x) σ_eff ΔP` (docs/model.md §3.3).
 
 use super::PerssonContact;
+use crate::math::interp::UniformCubic;
 use crate::math::quadrature::{composite, gauss_legendre};
 use crate::math::special::erf;
 use std::f64::consts::{FRAC_1_SQRT_2, PI, SQRT_2};
@@ -262,21 +263,37 @@ impl SeparationDistribution {
         if !(upper > 0.0 && upper.is_finite()) {
             return 0.0;
         }
-        if let Some((l, width)) = free_path {
-            let mean = self.mean().max(f64::MIN_POSITIVE);
-            upper *= crate::gas::slit_rarefaction(l.free_path / mean, width / mean);
-        }
         let (nodes, weights) = gauss_legendre(settings.u_order.max(1));
+        let gas = free_path.map(|(l, width)| {
+            let u_max = self
+                .components
+                .iter()
+                .map(|c| c.center.abs() + SIGMAS * c.width)
+                .fold(0.0, f64::max);
+            GasConductance::new(l, width, u_max)
+        });
+        if let Some(gas) = &gas {
+            // Wiener's bound for the gas: the arithmetic mean of u³ f(λ/u) (0 below a molecule)
+            upper = self.mean_local(settings.u_panels.max(1), &nodes, &weights, &|u| gas.at(u));
+            if !(upper > 0.0 && upper.is_finite()) {
+                return 0.0;
+            }
+        }
         let residual = |g: f64| {
-            self.bruggeman_residual(g, settings.u_panels.max(1), &nodes, &weights, free_path)
+            self.bruggeman_residual(g, settings.u_panels.max(1), &nodes, &weights, gas.as_ref())
         };
         let mut hi = upper.ln();
-        if free_path.is_some() {
-            for _ in 0..60 {
-                if residual(hi.exp()) >= 0.0 {
-                    break;
+        if let Some((l, width)) = free_path {
+            // Wiener's bound is loose by many decades when far-out components of P(u) carry a
+            // tiny weight at huge u: start at the mean gap's conductance instead and climb by
+            // decades to a positive residual (at the bound it is ≥ 0)
+            let mean = self.mean();
+            let start = mean * mean * mean * l.factor(mean, width);
+            if start > 0.0 && start < upper {
+                hi = start.ln();
+                while hi < upper.ln() && residual(hi.exp()) < 0.0 {
+                    hi = (hi + 10.0_f64.ln()).min(upper.ln());
                 }
-                hi += 10.0_f64.ln();
             }
         } else if residual(hi.exp()) < 0.0 {
             // rounding only: the bound holds exactly
@@ -352,6 +369,53 @@ impl SeparationDistribution {
             .sum()
     }
 
+    /// `∫ P(u) c(|u|) du` over the open gaps (the contact carries c = 0), by the residual's
+    /// quadrature (cut at u = 0): the arithmetic mean of a local conductance `c` (Wiener's
+    /// upper bound of the medium's).
+    fn mean_local(
+        &self,
+        panels: usize,
+        nodes: &[f64],
+        weights: &[f64],
+        c: &dyn Fn(f64) -> f64,
+    ) -> f64 {
+        let norm = 1.0 / (2.0 * PI).sqrt();
+        let mut total = 0.0;
+        for comp in &self.components {
+            if comp.weight == 0.0 {
+                continue;
+            }
+            if comp.width <= 0.0 {
+                total += comp.weight * c(comp.center.abs());
+                continue;
+            }
+            let (a, b) = (
+                comp.center - SIGMAS * comp.width,
+                comp.center + SIGMAS * comp.width,
+            );
+            let mut cuts = vec![a];
+            if a < 0.0 && b > 0.0 {
+                cuts.push(0.0);
+            }
+            cuts.push(b);
+            let inv = 1.0 / comp.width;
+            let mut sum = 0.0;
+            for pair in cuts.windows(2) {
+                let h = (pair[1] - pair[0]) / panels as f64;
+                for p in 0..panels {
+                    let mid = pair[0] + (p as f64 + 0.5) * h;
+                    for (x, w) in nodes.iter().zip(weights) {
+                        let u = mid + 0.5 * h * x;
+                        let z = (u - comp.center) * inv;
+                        sum += 0.5 * h * w * (-0.5 * z * z).exp() * c(u.abs());
+                    }
+                }
+            }
+            total += comp.weight * norm * inv * sum;
+        }
+        total
+    }
+
     /// `∫ P(u) (g − c(u))/(g + c(u)) du` with the local `c(u) = |u|³`, or `|u|³ f(λ/|u|)` for
     /// a gas with mean free path `free_path` λ (monotonically increasing in g > 0).
     fn bruggeman_residual(
@@ -360,14 +424,13 @@ impl SeparationDistribution {
         panels: usize,
         nodes: &[f64],
         weights: &[f64],
-        free_path: Option<(crate::gas::Rarefied, f64)>,
+        gas: Option<&GasConductance>,
     ) -> f64 {
         let local = |u: f64| {
             let a = u.abs();
-            let u3 = a * a * a;
-            match free_path {
-                Some((l, width)) => u3 * l.factor(a, width),
-                _ => u3,
+            match gas {
+                Some(gas) => gas.at(a),
+                None => a * a * a,
             }
         };
         let kernel = |u: f64| {
@@ -376,7 +439,7 @@ impl SeparationDistribution {
         };
         // the gap where the kernel turns over, c(u*) = g: u* = g^{1/3} for a liquid; for a
         // gas by bisection in ln u (c is increasing in u)
-        let u_eff = match free_path {
+        let u_eff = match gas {
             None => g.cbrt(),
             Some(_) => {
                 let (mut lo, mut hi) = (g.cbrt().ln() - 60.0, g.cbrt().ln());
@@ -416,6 +479,14 @@ impl SeparationDistribution {
                     }
                 }
             }
+            // a gas: its local conductance jumps at the molecular diameter (closed below)
+            if let Some(gas) = gas {
+                for v in [gas.diameter, -gas.diameter] {
+                    if v > a && v < b {
+                        cuts.push(v);
+                    }
+                }
+            }
             cuts.push(b);
             cuts.sort_by(f64::total_cmp);
             cuts.dedup();
@@ -435,6 +506,56 @@ impl SeparationDistribution {
             total += comp.weight * norm * inv * sum;
         }
         total
+    }
+}
+
+/// The local conductance `u³ f(λ/u, w/u)` \[m³\] of a gas's gap u (docs/model.md §3.10; 0 at
+/// and below the molecular diameter), with ln f tabulated once per Bruggeman solve on a grid
+/// of 64 points per decade in ln u from the molecular diameter to the widest gap of P(u) and
+/// interpolated by cubics: the solve evaluates it ~10⁶ times, and the slit factor's logarithms
+/// and powers cost ~15× a cube (interpolation error ≈ 1e-8 of f).
+struct GasConductance {
+    gas: crate::gas::Rarefied,
+    width: f64,
+    /// The molecular diameter d \[m\].
+    diameter: f64,
+    /// ln f against ln u, and the last ln u it covers.
+    table: Option<(UniformCubic, f64)>,
+}
+
+impl GasConductance {
+    fn new(gas: crate::gas::Rarefied, width: f64, u_max: f64) -> Self {
+        let d = gas.molecular_diameter;
+        let (lo, hi) = (d.ln(), u_max.ln());
+        let h = std::f64::consts::LN_10 / 64.0;
+        let table = (hi > lo + 4.0 * h && hi.is_finite()).then(|| {
+            let n = ((hi - lo) / h).ceil() as usize + 1;
+            let y: Vec<f64> = (0..n)
+                .map(|i| {
+                    let u = (lo + h * i as f64).exp();
+                    crate::gas::slit_rarefaction(gas.free_path / u, width / u).ln()
+                })
+                .collect();
+            (UniformCubic::new(lo, h, y), lo + h * (n - 1) as f64)
+        });
+        GasConductance {
+            gas,
+            width,
+            diameter: d,
+            table,
+        }
+    }
+
+    /// `u³ f(λ/u, w/u)` at `u` ≥ 0.
+    fn at(&self, u: f64) -> f64 {
+        if u <= self.diameter {
+            return 0.0;
+        }
+        let u3 = u * u * u;
+        match &self.table {
+            Some((t, end)) if u.ln() <= *end => u3 * t.eval(u.ln()).exp(),
+            _ => u3 * self.gas.factor(u, self.width),
+        }
     }
 }
 

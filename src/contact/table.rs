@@ -248,7 +248,15 @@ const GAS_FREE_MOLECULAR_KN: f64 = 1e5;
 struct GasColumns(std::sync::Mutex<ColumnMap>);
 
 /// `(k, molecular diameter bits) → column` (`None`: not tabulable).
-type ColumnMap = std::collections::BTreeMap<(i64, u64), Option<std::sync::Arc<UniformCubic>>>;
+type ColumnMap = std::collections::BTreeMap<(i64, u64), Option<std::sync::Arc<GasColumn>>>;
+
+/// One rarefied column: `ln(12ησ_eff) − 3 ln h_rms` on the table's logit grid up to its last
+/// open node, and the logit of the first sealed node (`None`: open to the grid's end).
+#[derive(Debug, Clone)]
+struct GasColumn {
+    cubic: UniformCubic,
+    sealed_from: Option<f64>,
+}
 
 impl Clone for GasColumns {
     fn clone(&self) -> Self {
@@ -309,8 +317,8 @@ impl EffectiveMediumTable {
     /// `12 η σ_eff` \[m³\] of a rarefied gas at `s` (docs/model.md §3.10): every separation u
     /// conducts `u³ f(λ/u)` (0 below a molecule). Cubic interpolation in ln λ between columns
     /// tabulated against s on this table's grid (each column ≈ 0.25 s, built on first use);
-    /// free molecular (σ_eff ∝ λ) above λ = 1e5 h_rms; solved directly outside the columns'
-    /// range or next to a sealed node.
+    /// free molecular (σ_eff ∝ λ) above λ = 1e5 h_rms; below the columns' range in s (1e-6 of
+    /// the threshold) the value at its start; solved directly above it, next to the threshold.
     pub fn rarefied_cubed_gap(&self, s: f64, gas: crate::gas::Rarefied) -> f64 {
         let direct = |gas: crate::gas::Rarefied| {
             EffectiveMedium::persson_rarefied(
@@ -343,18 +351,40 @@ impl EffectiveMediumTable {
             -(t + 1.0) * t * (t - 2.0) / 2.0,
             (t + 1.0) * t * (t - 1.0) / 6.0,
         ];
-        let mut ln_g = 0.0;
-        for (i, w) in weights.iter().enumerate() {
+        if v.is_nan() {
+            return direct(gas);
+        }
+        let mut g = [0.0; 4];
+        for (i, gi) in g.iter_mut().enumerate() {
             let Some(column) = self.gas_column(k0 + i as i64, gas.molecular_diameter) else {
                 return direct(gas);
             };
-            let (a, b) = column.range();
-            if !(v >= a && v <= b) {
-                return direct(gas);
-            }
-            ln_g += w * column.eval(v);
+            let (a, b) = column.cubic.range();
+            let at = |v: f64| (column.cubic.eval(v) + 3.0 * self.ln_h).exp();
+            *gi = if v <= b {
+                // below the range (s < 1e-6 of the threshold: the open inlet of a profile,
+                // where the resistance is least) the range's first value, not a solve per call
+                at(v.max(a))
+            } else {
+                match column.sealed_from {
+                    // sealed at and beyond the first sealed node; in the one grid cell before
+                    // it, linear in v down to 0 there (the gas's threshold lies in that cell)
+                    Some(sealed) if v >= sealed => 0.0,
+                    Some(sealed) => at(b) * (sealed - v) / (sealed - b),
+                    None => return direct(gas),
+                }
+            };
         }
-        (ln_g + 3.0 * self.ln_h).exp()
+        if g.iter().all(|&x| x > 0.0) {
+            weights
+                .iter()
+                .zip(g)
+                .map(|(w, x)| w * x.ln())
+                .sum::<f64>()
+                .exp()
+        } else {
+            weights.iter().zip(g).map(|(w, x)| w * x).sum::<f64>().max(0.0)
+        }
     }
 
     /// The lateral extent of the channels at `s` \[m\]: λc of the critical junction there (at
@@ -373,7 +403,7 @@ impl EffectiveMediumTable {
     }
 
     /// The rarefied column k (ln λ = k·[`GAS_COLUMN_SPACING`]) for molecular diameter `d`.
-    fn gas_column(&self, k: i64, d: f64) -> Option<std::sync::Arc<UniformCubic>> {
+    fn gas_column(&self, k: i64, d: f64) -> Option<std::sync::Arc<GasColumn>> {
         let key = (k, d.to_bits());
         if let Some(c) = self.gas.0.lock().ok()?.get(&key) {
             return c.clone();
@@ -398,8 +428,13 @@ impl EffectiveMediumTable {
             .into_iter()
             .map_while(|v| v)
             .collect();
-        let column =
-            (values.len() >= 4).then(|| std::sync::Arc::new(UniformCubic::new(lo, h, values)));
+        let sealed_from = (values.len() < n).then(|| lo + h * values.len() as f64);
+        let column = (values.len() >= 4).then(|| {
+            std::sync::Arc::new(GasColumn {
+                cubic: UniformCubic::new(lo, h, values),
+                sealed_from,
+            })
+        });
         self.gas.0.lock().ok()?.insert(key, column.clone());
         column
     }

@@ -124,6 +124,10 @@ pub struct FlowSettings {
     pub preconditioner: Preconditioner,
     /// Direction of the mean pressure drop (default x).
     pub direction: Direction,
+    /// A rarefied gas (docs/model.md §3.10): every cell's conductance u³/(12η) times the slit
+    /// factor f(λ/u, pixel/u) at this mean free path, 0 for a gap no wider than a molecule
+    /// (`None`: a liquid, the default).
+    pub gas: Option<crate::gas::Rarefied>,
 }
 
 impl Default for FlowSettings {
@@ -133,6 +137,7 @@ impl Default for FlowSettings {
             max_iterations: 100_000,
             preconditioner: Preconditioner::default(),
             direction: Direction::default(),
+            gas: None,
         }
     }
 }
@@ -291,7 +296,7 @@ pub fn solve_field(
             &transposed[..]
         }
     };
-    let mut field = solve_x(gap, n, viscosity, settings)?;
+    let mut field = solve_x(gap, n, pixel, viscosity, settings)?;
     if settings.direction == Direction::Y {
         field.pressure = transpose(&field.pressure, n);
     }
@@ -312,14 +317,22 @@ fn transpose(a: &[f64], n: usize) -> Vec<f64> {
 fn solve_x(
     gap: &[f64],
     n: usize,
+    pixel: f64,
     viscosity: f64,
     settings: &FlowSettings,
 ) -> Result<FlowField, FlowError> {
     let cells = n * n;
-    // Cell conductances u³/(12η), scaled by their maximum. A gap so thin that its scaled
-    // conductance is below √(f64::MIN_POSITIVE) ≈ 1.5e-154 (u below ~1e-51 of the widest gap)
-    // counts as contact, so that no face conductance underflows to zero inside a cluster.
-    let sigma_of = |u: f64| u * u * u / (12.0 * viscosity);
+    // Cell conductances u³/(12η) (a gas: times its slit factor, a cell as wide as a pixel),
+    // scaled by their maximum. A gap so thin that its scaled conductance is below
+    // √(f64::MIN_POSITIVE) ≈ 1.5e-154 (u below ~1e-51 of the widest gap) counts as contact, so
+    // that no face conductance underflows to zero inside a cluster.
+    let sigma_of = |u: f64| {
+        let liquid = u * u * u / (12.0 * viscosity);
+        match settings.gas {
+            Some(g) if u > 0.0 => liquid * g.factor(u, pixel),
+            _ => liquid,
+        }
+    };
     let scale = gap.iter().map(|&u| sigma_of(u)).fold(0.0, f64::max);
     let floor = f64::MIN_POSITIVE.sqrt();
     let open: Vec<bool> = gap
@@ -659,6 +672,38 @@ mod tests {
             let s = solve(&gap, n, PIXEL, ETA, &settings(p)).unwrap();
             assert!(rel(s.conductance, parallel) <= 1e-8, "{p:?}: {s:?}");
         }
+    }
+
+    #[test]
+    fn a_rarefied_gas_conducts_cell_by_cell() {
+        // helium near 1 bar: every cell's conductance u³ f(λ/u, pixel/u)/(12η), so the series
+        // and parallel steps give the harmonic and arithmetic means of the rarefied cells, and
+        // a strip of sub-molecular gaps across the flow seals
+        let gas = crate::gas::Rarefied {
+            free_path: 0.2e-6,
+            molecular_diameter: 0.215e-9,
+        };
+        let rarefied = |u: f64| sigma(u) * crate::gas::slit_rarefaction(0.2e-6 / u, PIXEL / u);
+        let set = FlowSettings {
+            gas: Some(gas),
+            ..FlowSettings::default()
+        };
+        let (u1, u2) = (0.2e-6, 1.0e-6);
+        let n = 32;
+        let along = grid(n, |ix, _| if ix < n / 2 { u1 } else { u2 });
+        let across = grid(n, |_, iy| if iy < n / 2 { u1 } else { u2 });
+        let series = 2.0 / (1.0 / rarefied(u1) + 1.0 / rarefied(u2));
+        let parallel = 0.5 * (rarefied(u1) + rarefied(u2));
+        let s = solve(&along, n, PIXEL, ETA, &set).unwrap();
+        assert!(rel(s.conductance, series) <= 1e-8, "{s:?}");
+        let s = solve(&across, n, PIXEL, ETA, &set).unwrap();
+        assert!(rel(s.conductance, parallel) <= 1e-8, "{s:?}");
+        // above the liquid's by the factors (> 1)
+        assert!(s.conductance > 0.5 * (sigma(u1) + sigma(u2)));
+        let blocked = grid(n, |ix, _| if ix == n / 2 { 0.1e-9 } else { u2 });
+        let s = solve(&blocked, n, PIXEL, ETA, &set).unwrap();
+        assert_eq!(s.conductance, 0.0);
+        assert!(!s.percolates);
     }
 
     #[test]

@@ -928,6 +928,7 @@ pub fn human_summary(
                 human(result.initial_leak_rate() / c, 3)
             ),
             Some(_) => "rarefied flow".to_owned(),
+            None if problem.fluid.mean_free_path().is_some() => "rarefied flow".to_owned(),
             None => "continuum law".to_owned(),
         };
         line(

@@ -412,10 +412,15 @@ impl<'a> Simulator<'a> {
     }
 
     /// A rarefied gas: the installation's leak rate under the continuum law, on the same
-    /// contact path (docs/model.md §3.10); `None` for a liquid or the continuum law itself.
+    /// contact path (docs/model.md §3.10); `None` for a liquid, the continuum law itself, or a
+    /// numerical table whose cells were rarefied when it was built.
     fn continuum_leak_rate(&self) -> Option<f64> {
         let p = self.problem;
         p.fluid.mean_free_path()?;
+        // a numerical table rarefied cell by cell has no continuum twin without a rebuild
+        if let ContactPath::Numerical { gas: Some(_), .. } = self.path {
+            return None;
+        }
         let mut continuum = p.clone();
         if let Some(g) = continuum.fluid.gas.as_mut() {
             g.flow_law = crate::gas::FlowLaw::Continuum;

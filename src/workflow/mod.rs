@@ -30,9 +30,13 @@ pub fn scenario_path(
     numerical_nodes: Option<Vec<f64>>,
     progress: Progress<'_>,
 ) -> (ContactPath, Findings) {
+    let mut numerical = scenario.numerical.clone();
+    // a rarefied gas: the numerical level's cells rarefy at p̄ and the installation temperature
+    let life = &scenario.life;
+    numerical.flow.gas = life.fluid.at(life.environment.at(0.0)).mean_free_path();
     let options = PathOptions {
         height_map: scenario.height_map.as_ref(),
-        numerical: scenario.numerical.clone(),
+        numerical,
         numerical_nodes,
         ..PathOptions::default()
     };
