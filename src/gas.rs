@@ -186,7 +186,8 @@ pub const BESKOK_ALPHA0: f64 = 64.0 / (15.0 * std::f64::consts::PI);
 /// `f = (1 + α Kn)(1 + 6 Kn/(1 − b Kn))`, b = −1, `α = α0 (2/π) tan⁻¹(α1 Kn^β)`, α1 = 4,
 /// β = 0.4 — the unified model of Beskok & Karniadakis (Microscale Thermophys. Eng. 3 (1999)
 /// 43; its structure and b = −1 read in Karniadakis, Beskok & Aluru, *Microflows and
-/// Nanoflows* (2005) §4.2; α1, β as two public implementations give them — SECONDARY).
+/// Nanoflows* (2005), section 4.2; α1, β as two public implementations give them —
+/// SECONDARY).
 /// As Kn → 0, `f = 1 + 6 Kn + O(Kn^1.4)`: first-order slip with Maxwell's coefficient for
 /// diffuse walls. As Kn → ∞, `f → 7 α0 Kn`, and α0 sets the free-molecular flow.
 ///

@@ -383,7 +383,12 @@ impl EffectiveMediumTable {
                 .sum::<f64>()
                 .exp()
         } else {
-            weights.iter().zip(g).map(|(w, x)| w * x).sum::<f64>().max(0.0)
+            weights
+                .iter()
+                .zip(g)
+                .map(|(w, x)| w * x)
+                .sum::<f64>()
+                .max(0.0)
         }
     }
 
