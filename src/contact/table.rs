@@ -433,7 +433,7 @@ impl EffectiveMediumTable {
             .into_iter()
             .map_while(|v| v)
             .collect();
-        let sealed_from = (values.len() < n).then(|| lo + h * values.len() as f64);
+        let sealed_from = (values.len() < n).then_some(lo + h * values.len() as f64);
         let column = (values.len() >= 4).then(|| {
             std::sync::Arc::new(GasColumn {
                 cubic: UniformCubic::new(lo, h, values),
