@@ -118,6 +118,7 @@ pub mod roughness;
 pub mod scenario;
 pub mod seal;
 pub mod simulate;
+pub mod study;
 pub mod surface;
 pub mod units;
 pub mod validity;
