@@ -448,7 +448,7 @@ impl Fluid {
         let g = self.gas?;
         // the absolute pressure floored as in [`Self::density_weight`], so that against a
         // vacuum σ·(P_b + p_f)/p̄ tends to its free-molecular limit instead of ∞·0
-        let floor = 1e-9 * (g.outlet_pressure + 0.5 * self.pressure_difference);
+        let floor = PRESSURE_FLOOR * (g.outlet_pressure + 0.5 * self.pressure_difference);
         (g.flow_law == crate::gas::FlowLaw::Rarefied).then(|| crate::gas::Rarefied {
             free_path: g
                 .gas
@@ -487,11 +487,16 @@ impl Fluid {
     /// profile's shooting finite and changes the flux by far less than its tolerance.
     pub fn density_weight(&self, gauge: f64) -> f64 {
         match (self.gas, self.mean_pressure()) {
-            (Some(g), Some(p)) => ((g.outlet_pressure + gauge) / p).max(1e-9),
+            (Some(g), Some(p)) => ((g.outlet_pressure + gauge) / p).max(PRESSURE_FLOOR),
             _ => 1.0,
         }
     }
 }
+
+/// The lowest absolute pressure a gas is evaluated at, over its mean pressure p̄: against a
+/// vacuum the density weight and the mean free path are taken at 1e-9 p̄ rather than at 0
+/// ([`Fluid::density_weight`], [`Fluid::free_path_at`]).
+const PRESSURE_FLOOR: f64 = 1e-9;
 
 /// Conductance per unit width of one critical constriction of height `u_c` \[m\] (PY08 eqs.
 /// 1–2; docs/model.md §3.1): `σ = α u_c³/(12 η)` \[m³/(Pa·s)\], α the shape factor, η the

@@ -379,25 +379,43 @@ impl SeparationDistribution {
         weights: &[f64],
         c: &dyn Fn(f64) -> f64,
     ) -> f64 {
+        self.expectation(0.0, &[0.0], panels, nodes, weights, &|u| c(u.abs()))
+    }
+
+    /// `start + Σ_i w_i ∫ N(u; μ_i, σ_i) φ(u) du` over the components (a point mass at its
+    /// centre when σ_i = 0), each over μ_i ± 8σ_i by `panels` Gauss–Legendre panels per
+    /// sub-interval, cut at those of `breaks` that fall inside: φ(|u|) of the folded Gaussian
+    /// is φ of the signed u here, `∫_0^∞ [N(u;μ,σ) + N(u;−μ,σ)] φ(u) du = ∫ N(u;μ,σ) φ(|u|) du`.
+    fn expectation(
+        &self,
+        start: f64,
+        breaks: &[f64],
+        panels: usize,
+        nodes: &[f64],
+        weights: &[f64],
+        phi: &dyn Fn(f64) -> f64,
+    ) -> f64 {
         let norm = 1.0 / (2.0 * PI).sqrt();
-        let mut total = 0.0;
+        let mut total = start;
+        let mut cuts: Vec<f64> = Vec::with_capacity(breaks.len() + 2);
         for comp in &self.components {
             if comp.weight == 0.0 {
                 continue;
             }
             if comp.width <= 0.0 {
-                total += comp.weight * c(comp.center.abs());
+                total += comp.weight * phi(comp.center);
                 continue;
             }
             let (a, b) = (
                 comp.center - SIGMAS * comp.width,
                 comp.center + SIGMAS * comp.width,
             );
-            let mut cuts = vec![a];
-            if a < 0.0 && b > 0.0 {
-                cuts.push(0.0);
-            }
+            cuts.clear();
+            cuts.push(a);
+            cuts.extend(breaks.iter().copied().filter(|&v| v > a && v < b));
             cuts.push(b);
+            cuts.sort_by(f64::total_cmp);
+            cuts.dedup();
             let inv = 1.0 / comp.width;
             let mut sum = 0.0;
             for pair in cuts.windows(2) {
@@ -407,7 +425,7 @@ impl SeparationDistribution {
                     for (x, w) in nodes.iter().zip(weights) {
                         let u = mid + 0.5 * h * x;
                         let z = (u - comp.center) * inv;
-                        sum += 0.5 * h * w * (-0.5 * z * z).exp() * c(u.abs());
+                        sum += 0.5 * h * w * (-0.5 * z * z).exp() * phi(u);
                     }
                 }
             }
@@ -454,58 +472,15 @@ impl SeparationDistribution {
                 (0.5 * (lo + hi)).exp()
             }
         };
-        let mut total = self.contact;
-        let norm = 1.0 / (2.0 * PI).sqrt();
-        let mut cuts: Vec<f64> = Vec::with_capacity(12);
-        for comp in &self.components {
-            if comp.weight == 0.0 {
-                continue;
-            }
-            if comp.width <= 0.0 {
-                total += comp.weight * kernel(comp.center);
-                continue;
-            }
-            // ∫_0^∞ [N(u;μ,σ) + N(u;−μ,σ)] φ(u) du = ∫_{−∞}^{∞} N(u;μ,σ) φ(|u|) du
-            let (a, b) = (
-                comp.center - SIGMAS * comp.width,
-                comp.center + SIGMAS * comp.width,
-            );
-            cuts.clear();
-            cuts.push(a);
-            for x in [0.0, 0.5, 1.0, 2.0, 4.0] {
-                for v in [x * u_eff, -x * u_eff] {
-                    if v > a && v < b {
-                        cuts.push(v);
-                    }
-                }
-            }
-            // a gas: its local conductance jumps at the molecular diameter (closed below)
-            if let Some(gas) = gas {
-                for v in [gas.diameter, -gas.diameter] {
-                    if v > a && v < b {
-                        cuts.push(v);
-                    }
-                }
-            }
-            cuts.push(b);
-            cuts.sort_by(f64::total_cmp);
-            cuts.dedup();
-            let inv = 1.0 / comp.width;
-            let mut sum = 0.0;
-            for pair in cuts.windows(2) {
-                let h = (pair[1] - pair[0]) / panels as f64;
-                for p in 0..panels {
-                    let mid = pair[0] + (p as f64 + 0.5) * h;
-                    for (x, w) in nodes.iter().zip(weights) {
-                        let u = mid + 0.5 * h * x;
-                        let z = (u - comp.center) * inv;
-                        sum += 0.5 * h * w * (-0.5 * z * z).exp() * kernel(u);
-                    }
-                }
-            }
-            total += comp.weight * norm * inv * sum;
+        // the kernel turns over at u*; a gas's conductance jumps at the molecular diameter
+        let mut breaks = vec![0.0];
+        for x in [0.5, 1.0, 2.0, 4.0] {
+            breaks.extend([x * u_eff, -x * u_eff]);
         }
-        total
+        if let Some(gas) = gas {
+            breaks.extend([gas.diameter, -gas.diameter]);
+        }
+        self.expectation(self.contact, &breaks, panels, nodes, weights, &kernel)
     }
 }
 
@@ -571,19 +546,7 @@ pub struct EffectiveMedium {
 impl EffectiveMedium {
     /// Bruggeman over Persson's P(u) at reduced pressure `s = P0/E*`.
     pub fn persson(contact: &PerssonContact, s: f64, settings: EffectiveMediumSettings) -> Self {
-        let zeta1 = contact.spectrum().q1() / contact.spectrum().q0();
-        let c = contact.area_fraction(zeta1, s);
-        if c >= 0.5 {
-            return EffectiveMedium {
-                contact_fraction: c,
-                cubed_gap: 0.0,
-            };
-        }
-        let p = SeparationDistribution::persson(contact, s, settings);
-        EffectiveMedium {
-            contact_fraction: p.contact_fraction(),
-            cubed_gap: p.bruggeman_cubed_gap(settings),
-        }
+        Self::solve(contact, s, settings, None)
     }
 
     /// [`Self::persson`] for a gas with mean free path `free_path` λ \[m\] through channels
@@ -596,6 +559,16 @@ impl EffectiveMedium {
         free_path: crate::gas::Rarefied,
         width: f64,
     ) -> Self {
+        Self::solve(contact, s, settings, Some((free_path, width)))
+    }
+
+    /// Sealed at and above the threshold ½ without building P(u); else its Bruggeman medium.
+    fn solve(
+        contact: &PerssonContact,
+        s: f64,
+        settings: EffectiveMediumSettings,
+        gas: Option<(crate::gas::Rarefied, f64)>,
+    ) -> Self {
         let zeta1 = contact.spectrum().q1() / contact.spectrum().q0();
         let c = contact.area_fraction(zeta1, s);
         if c >= 0.5 {
@@ -607,7 +580,7 @@ impl EffectiveMedium {
         let p = SeparationDistribution::persson(contact, s, settings);
         EffectiveMedium {
             contact_fraction: p.contact_fraction(),
-            cubed_gap: p.rarefied_bruggeman_cubed_gap(settings, free_path, width),
+            cubed_gap: p.bruggeman(settings, gas),
         }
     }
 

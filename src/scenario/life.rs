@@ -642,8 +642,8 @@ impl Source<'_> {
     /// flow \[m³/s\]; for a gas a throughput ([`crate::units::parse_throughput`] at the gas
     /// temperature T(0): Pa·m³/s, mbar·L/s, Torr·L/s, sccm, slm, mol/s), returned as the
     /// volume flow at the mean pressure it stands for, `Q/p̄` (docs/model.md §3.9). A
-    /// throughput for a liquid and a volume flow for a gas are refused: a gas's volume flow
-    /// depends on the pressure it is counted at.
+    /// throughput for a liquid is refused; a volume flow for a gas only with its
+    /// `reference` state (its volume flow depends on the pressure it is counted at).
     fn max_leak_rate(
         &self,
         raw: &super::raw::Quantity,

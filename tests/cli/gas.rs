@@ -200,6 +200,17 @@ fn the_shipped_helium_leak_test_seals_at_the_interface_and_permeates() {
     assert!((7.0e3..8.2e3).contains(&lag), "{lag}");
 }
 
+/// [`FLAT_GAS`] with a liquid of 1 mPa·s at ΔP = 1 bar instead of the gas.
+fn flat_liquid() -> String {
+    FLAT_GAS
+        .replace("gas = \"nitrogen\"", "viscosity = \"1 mPa*s\"")
+        .replace(
+            "inlet_pressure = \"2 bar\"",
+            "pressure_difference = \"1 bar\"",
+        )
+        .replace("outlet_pressure = \"1 bar\"\n", "")
+}
+
 /// `text` must exit 2 with `s.toml:{line}: {key}` and `needle` in stderr, and write nothing.
 fn refused(text: &str, line: usize, key: &str, needle: &str) {
     let (code, stdout, stderr, csv, json) = run(text);
@@ -234,13 +245,7 @@ fn bad_gas_input_exits_2_with_file_line_and_key() {
         "unknown gas \"xenon\"",
     );
     // a throughput criterion on a liquid
-    let liquid = FLAT_GAS
-        .replace("gas = \"nitrogen\"", "viscosity = \"1 mPa*s\"")
-        .replace(
-            "inlet_pressure = \"2 bar\"",
-            "pressure_difference = \"1 bar\"",
-        )
-        .replace("outlet_pressure = \"1 bar\"\n", "");
+    let liquid = flat_liquid();
     refused(
         &format!("{liquid}[failure]\nmax_leak_rate = \"1e-9 mbar*L/s\"\n"),
         20,
@@ -398,13 +403,7 @@ fn a_volume_criterion_on_a_gas_without_its_conditions_is_refused() {
         "failure.reference_temperature",
         "goes with `reference_pressure`",
     );
-    let liquid = FLAT_GAS
-        .replace("gas = \"nitrogen\"", "viscosity = \"1 mPa*s\"")
-        .replace(
-            "inlet_pressure = \"2 bar\"",
-            "pressure_difference = \"1 bar\"",
-        )
-        .replace("outlet_pressure = \"1 bar\"\n", "");
+    let liquid = flat_liquid();
     refused(
         &format!(
             "{liquid}[failure]\nmax_leak_rate = \"1e-9 m^3/s\"\nreference_pressure = \"1 bar\"\n"
