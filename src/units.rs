@@ -302,6 +302,17 @@ pub fn show(v: f64) -> String {
     human(v, 6)
 }
 
+/// A number written exactly: Rust's shortest form that reads back to the same bits, plain when
+/// moderate (`0.25`, `353.15`), else with an exponent (`8e-7`, `1.2e7`). For files that are
+/// read back (study tables, generated scenarios).
+pub fn exact(x: f64) -> String {
+    if x != 0.0 && !(1e-4..1e7).contains(&x.abs()) {
+        format!("{x:e}")
+    } else {
+        format!("{x}")
+    }
+}
+
 /// A number for people: `sig` significant digits, trailing zeros dropped; scientific outside
 /// 1e-3 ≤ |v| < 1e6.
 pub fn human(v: f64, sig: usize) -> String {
@@ -555,7 +566,7 @@ fn kelvin(value: f64, unit: &str, text: &str) -> Result<f64, UnitError> {
 }
 
 /// Splits trimmed text into its leading finite number and the trimmed rest.
-fn split_quantity(text: &str) -> Result<(f64, &str), UnitError> {
+pub fn split_quantity(text: &str) -> Result<(f64, &str), UnitError> {
     let text = text.trim();
     if text.is_empty() {
         return Err(UnitError::Empty);

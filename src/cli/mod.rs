@@ -13,6 +13,7 @@ pub mod leak;
 pub mod materials;
 pub mod run;
 pub mod sizes;
+pub mod study;
 pub mod surface;
 pub mod tradeoff;
 
@@ -122,6 +123,10 @@ pub enum Command {
     /// A roughness source (scenario, line traces, PSD file): Ra, Rq, Rz, h_rms, rms slope,
     /// Hurst exponent, cut-offs and warnings, with an optional C(q) chart.
     Surface(surface::SurfaceArgs),
+    /// Tolerances, uncertainty and sweeps: a study's cases in parallel, the time to failure as a
+    /// distribution (survival curve, B1/B10/B50 lives, Weibull fit, what drives the life);
+    /// shards, their merge and a Slurm job array for clusters.
+    Study(Box<study::StudyArgs>),
 }
 
 /// Why a command failed; decides the exit status.
@@ -203,6 +208,7 @@ pub fn run(command: Command) -> Result<(), CliError> {
         Command::Materials(args) => materials::run(args),
         Command::Sizes(args) => sizes::run(args),
         Command::Surface(args) => surface::run(args),
+        Command::Study(args) => study::run(*args),
     }
 }
 

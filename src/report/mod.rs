@@ -11,6 +11,7 @@ pub mod material_toml;
 pub mod materials;
 pub mod plot;
 pub mod sizes;
+pub mod study;
 pub mod surface;
 pub mod tradeoff;
 

@@ -33,6 +33,7 @@ mod motion;
 pub mod profile;
 mod psd;
 mod raw;
+pub mod study;
 mod validate;
 
 pub use error::ScenarioError;

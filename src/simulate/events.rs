@@ -16,6 +16,20 @@ pub enum FailureMode {
 }
 
 impl FailureMode {
+    pub const ALL: [FailureMode; 6] = [
+        FailureMode::LeakRate,
+        FailureMode::LeakedVolume,
+        FailureMode::RetainedForce,
+        FailureMode::CompressionSet,
+        FailureMode::LiftOff,
+        FailureMode::Extrusion,
+    ];
+
+    /// The mode of its [`FailureMode::as_str`] name.
+    pub fn from_name(name: &str) -> Option<FailureMode> {
+        FailureMode::ALL.into_iter().find(|m| m.as_str() == name)
+    }
+
     pub fn as_str(self) -> &'static str {
         match self {
             FailureMode::LeakRate => "leak_rate",

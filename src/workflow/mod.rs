@@ -10,6 +10,7 @@ pub mod compare;
 pub mod figures;
 pub mod leak;
 pub mod life;
+pub mod study;
 pub mod tradeoff;
 
 use crate::leak::{ContactPath, Fidelity, PathOptions};
@@ -30,13 +31,9 @@ pub fn scenario_path(
     numerical_nodes: Option<Vec<f64>>,
     progress: Progress<'_>,
 ) -> (ContactPath, Findings) {
-    let mut numerical = scenario.numerical.clone();
-    // a rarefied gas: the numerical level's cells rarefy at p̄ and the installation temperature
-    let life = &scenario.life;
-    numerical.flow.gas = life.fluid.at(life.environment.at(0.0)).mean_free_path();
     let options = PathOptions {
         height_map: scenario.height_map.as_ref(),
-        numerical,
+        numerical: numerical_settings(scenario),
         numerical_nodes,
         ..PathOptions::default()
     };
@@ -45,6 +42,15 @@ pub fn scenario_path(
     let mut findings = Findings::default();
     path.assess(&options, &mut findings);
     (path, findings)
+}
+
+/// The scenario's `[numerical]` settings as its contact path uses them: a rarefied gas's cells
+/// rarefy at p̄ and the installation temperature.
+fn numerical_settings(scenario: &Scenario) -> crate::numerical::reference::NumericalSettings {
+    let mut numerical = scenario.numerical.clone();
+    let life = &scenario.life;
+    numerical.flow.gas = life.fluid.at(life.environment.at(0.0)).mean_free_path();
+    numerical
 }
 
 /// The life of `life` on a contact path built beforehand, its findings after the path's own

@@ -1,0 +1,335 @@
+//! `sealsim study`: a study's cases (tolerances, uncertainties, sweeps) run in parallel, the
+//! time to failure as a distribution; `--shard K/N` runs one slice, `study merge` joins the
+//! slices, `study slurm` writes a Slurm job array that does both on a cluster.
+//!
+//! The summary table goes to standard output; the per-case CSV (`-o`), the summary JSON
+//! (`--summary`) and the charts are written only when asked for, each atomically, after every
+//! case has run (on bad input nothing is written).
+
+use super::{CliError, print_scenario_warnings, write_output};
+use crate::report::study::{self as out, charts};
+use crate::scenario::study::Study;
+use crate::study::CaseOutcome;
+use crate::study::design::shard_range;
+use crate::study::summary::StudySummary;
+use crate::workflow;
+use clap::{Args, Subcommand};
+use std::path::{Path, PathBuf};
+
+/// Arguments of `sealsim study`.
+#[derive(Debug, Clone, Args)]
+#[command(
+    args_conflicts_with_subcommands = true,
+    subcommand_negates_reqs = true,
+    after_help = "Per-case columns (CSV, SI units): case, one column per varied input (its key \
+    path, with its SI unit for a quantity: surface.rms_roughness_m), life_s (the time to failure, \
+    or the end of the run for a survivor), status (failed|censored), mode (the failure mode), \
+    leak_rate_at_<t>_s_m3_per_s for each report time (blank past the run's end), \
+    sealing_force_end_N_per_m, retained_force_end (over the force at the retained-force \
+    reference), leaked_volume_end_m3, compression_set_end (with ageing), warnings (the validity \
+    limits the case crossed, ;-separated).\n\
+    Summary JSON: cases, failures, censored, b1_s, b10_s, b50_s with _lower_s/_upper_s \
+    (Kaplan–Meier, null where not reached), modes, weibull (shape, scale_s, fits), \
+    sensitivity (input, measure, value), survival (the Kaplan–Meier steps with their band), \
+    warnings (cases per limit).\n\
+    The cases are deterministic: the same study gives the same bits whatever --threads, and \
+    shards merged in any order give the single run's files."
+)]
+pub struct StudyArgs {
+    #[command(subcommand)]
+    pub action: Option<StudyAction>,
+
+    #[command(flatten)]
+    pub run: RunArgs,
+}
+
+/// `sealsim study FILE …`.
+#[derive(Debug, Clone, Args)]
+pub struct RunArgs {
+    /// Study file (TOML): base scenario, inputs to vary, design.
+    #[arg(value_name = "STUDY", required = true)]
+    pub study: Option<PathBuf>,
+
+    /// Worker threads (default: all cores).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u16).range(1..))]
+    pub threads: Option<u16>,
+
+    /// Run only shard K of N (1 ≤ K ≤ N), a contiguous slice of the cases, into a part file
+    /// for `study merge` (needs -o).
+    #[arg(long, value_name = "K/N", value_parser = parse_shard, requires = "output",
+          conflicts_with_all = ["summary", "survival_plot", "tornado_plot"])]
+    pub shard: Option<(usize, usize)>,
+
+    /// Write the per-case table (CSV) to FILE; with --shard, the part file.
+    #[arg(short, long, value_name = "FILE.csv")]
+    pub output: Option<PathBuf>,
+
+    #[command(flatten)]
+    pub outputs: SummaryOutputs,
+}
+
+/// The summary's outputs, shared by a run and a merge.
+#[derive(Debug, Clone, Args)]
+pub struct SummaryOutputs {
+    /// Write the summary as JSON to FILE.
+    #[arg(long, value_name = "FILE.json")]
+    pub summary: Option<PathBuf>,
+
+    /// Write the survival curve (Kaplan–Meier with its band, the Weibull fit) to FILE (SVG).
+    #[arg(long, value_name = "FILE.svg")]
+    pub survival_plot: Option<PathBuf>,
+
+    /// Write the tornado chart of the inputs' influence on the life to FILE (SVG).
+    #[arg(long, value_name = "FILE.svg")]
+    pub tornado_plot: Option<PathBuf>,
+}
+
+/// `study merge` and `study slurm`.
+#[derive(Debug, Clone, Subcommand)]
+pub enum StudyAction {
+    /// Join the part files of `study FILE --shard K/N` runs (any order) into the single run's
+    /// per-case table and summary, bit for bit.
+    Merge(MergeArgs),
+    /// Write a Slurm job-array script: one array task per shard, the merge as a job that
+    /// depends on them all. Run the script (bash) on the cluster's login node to submit.
+    Slurm(SlurmArgs),
+}
+
+/// Arguments of `sealsim study merge`.
+#[derive(Debug, Clone, Args)]
+pub struct MergeArgs {
+    /// The study file the parts were run from.
+    #[arg(value_name = "STUDY")]
+    pub study: PathBuf,
+
+    /// The part files, in any order.
+    #[arg(value_name = "PART.csv", required = true, num_args = 1..)]
+    pub parts: Vec<PathBuf>,
+
+    /// Write the merged per-case table (CSV) to FILE.
+    #[arg(short, long, value_name = "FILE.csv")]
+    pub output: Option<PathBuf>,
+
+    #[command(flatten)]
+    pub outputs: SummaryOutputs,
+}
+
+/// Arguments of `sealsim study slurm`.
+#[derive(Debug, Clone, Args)]
+pub struct SlurmArgs {
+    /// The study file.
+    #[arg(value_name = "STUDY")]
+    pub study: PathBuf,
+
+    /// Number of shards (array tasks).
+    #[arg(long, value_name = "N", default_value_t = 4,
+          value_parser = clap::value_parser!(u32).range(1..=100_000))]
+    pub shards: u32,
+
+    /// CPUs per array task (each task runs its cases on as many threads).
+    #[arg(long, value_name = "N", default_value_t = 1,
+          value_parser = clap::value_parser!(u16).range(1..))]
+    pub cpus_per_task: u16,
+
+    /// Slurm partition (default: the cluster's default partition).
+    #[arg(long, value_name = "NAME")]
+    pub partition: Option<String>,
+
+    /// Wall-time limit of each task (Slurm's format, e.g. 01:00:00).
+    #[arg(long, value_name = "TIME")]
+    pub time: Option<String>,
+
+    /// Directory for the part files, logs and merged results (default: next to the study,
+    /// `<study>-slurm`).
+    #[arg(long, value_name = "DIR")]
+    pub results: Option<PathBuf>,
+
+    /// The sealsim binary the jobs run (default: this one).
+    #[arg(long, value_name = "PATH")]
+    pub sealsim: Option<PathBuf>,
+
+    /// Write the script to FILE (default: standard output).
+    #[arg(short, long, value_name = "FILE.sh")]
+    pub output: Option<PathBuf>,
+}
+
+/// `K/N` with 1 ≤ K ≤ N.
+fn parse_shard(text: &str) -> Result<(usize, usize), String> {
+    let bad = || format!("\"{text}\" is not a shard K/N with 1 ≤ K ≤ N (e.g. 2/4)");
+    let (k, n) = text.split_once('/').ok_or_else(bad)?;
+    let (k, n): (usize, usize) = (
+        k.trim().parse().map_err(|_| bad())?,
+        n.trim().parse().map_err(|_| bad())?,
+    );
+    if k == 0 || n == 0 || k > n {
+        return Err(bad());
+    }
+    Ok((k, n))
+}
+
+/// Runs `sealsim study`.
+pub fn run(args: StudyArgs) -> Result<(), CliError> {
+    match args.action {
+        Some(StudyAction::Merge(m)) => merge(m),
+        Some(StudyAction::Slurm(s)) => slurm(s),
+        None => run_cases(args.run),
+    }
+}
+
+fn run_cases(args: RunArgs) -> Result<(), CliError> {
+    let path = args
+        .study
+        .ok_or_else(|| CliError::Input("a study file is required".into()))?;
+    let study = Study::load(&path)?;
+    let total = study.cases();
+    let range = match args.shard {
+        Some((k, n)) => shard_range(k, n, total),
+        None => 0..total,
+    };
+    print_scenario_warnings(Some("base scenario"), &study.base_scenario);
+    let bar = indicatif::ProgressBar::new(range.len() as u64);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template(
+            "cases [{bar:30}] {pos}/{len} ({elapsed}, ~{eta} left)",
+        )
+        .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar())
+        .progress_chars("=> "),
+    );
+    let progress = |done: usize, total: usize| {
+        bar.set_length(total as u64);
+        bar.set_position(done as u64);
+    };
+    let outcomes = workflow::study::run(
+        &study,
+        range.clone(),
+        args.threads.map(usize::from),
+        &progress,
+    )?;
+    bar.finish_and_clear();
+
+    if let Some((k, n)) = args.shard {
+        let csv = out::part_csv(&study, (k, n), range.clone(), &outcomes)?;
+        write_output(args.output.as_deref(), csv.as_bytes())?;
+        eprintln!(
+            "shard {k}/{n}: cases {}..{} of {total} written; join the parts with `sealsim \
+             study merge`",
+            range.start, range.end
+        );
+        return Ok(());
+    }
+    finish(&study, &outcomes, args.output.as_deref(), &args.outputs)
+}
+
+/// Renders everything, then writes: the table, the summary, the charts, the terminal summary.
+fn finish(
+    study: &Study,
+    outcomes: &[CaseOutcome],
+    table: Option<&Path>,
+    outputs: &SummaryOutputs,
+) -> Result<(), CliError> {
+    let summary = StudySummary::new(outcomes, study.confidence);
+    let csv = table.map(|_| out::cases_csv(study, outcomes)).transpose()?;
+    let json = outputs
+        .summary
+        .as_ref()
+        .map(|_| out::summary_json(study, &summary))
+        .transpose()
+        .map_err(|e| CliError::Internal(e.to_string()))?;
+    let chart =
+        |path: &Option<PathBuf>,
+         draw: fn(&Study, &StudySummary) -> Result<String, crate::report::plot::PlotError>|
+         -> Option<String> {
+            path.as_ref().and_then(|p| match draw(study, &summary) {
+                Ok(svg) => Some(svg),
+                Err(e) => {
+                    eprintln!("warning: no chart written to {}: {e}", p.display());
+                    None
+                }
+            })
+        };
+    let survival = chart(&outputs.survival_plot, charts::survival_chart);
+    let tornado = chart(&outputs.tornado_plot, charts::tornado_chart);
+    for (path, bytes) in [
+        (table, csv.as_deref()),
+        (outputs.summary.as_deref(), json.as_deref()),
+        (outputs.survival_plot.as_deref(), survival.as_deref()),
+        (outputs.tornado_plot.as_deref(), tornado.as_deref()),
+    ] {
+        if let (Some(path), Some(bytes)) = (path, bytes) {
+            write_output(Some(path), bytes.as_bytes())?;
+        }
+    }
+    write_output(None, out::summary_table(study, &summary).as_bytes())
+}
+
+fn merge(args: MergeArgs) -> Result<(), CliError> {
+    let study = Study::load(&args.study)?;
+    let mut outcomes: Vec<CaseOutcome> = Vec::with_capacity(study.cases());
+    let mut source: Vec<Option<usize>> = vec![None; study.cases()];
+    for (p, part) in args.parts.iter().enumerate() {
+        let text = std::fs::read_to_string(part).map_err(|e| {
+            CliError::Input(format!(
+                "{}: cannot read the part file: {e}",
+                part.display()
+            ))
+        })?;
+        for case in out::read_part(&study, part, &text)? {
+            if let Some(q) = source[case.index] {
+                return Err(CliError::Input(format!(
+                    "{}: case {} is also in {}: a part given twice, or parts of different \
+                     shardings",
+                    part.display(),
+                    case.index,
+                    args.parts[q].display()
+                )));
+            }
+            source[case.index] = Some(p);
+            outcomes.push(case);
+        }
+    }
+    if let Some(missing) = source.iter().position(Option::is_none) {
+        let count = source.iter().filter(|s| s.is_none()).count();
+        return Err(CliError::Input(format!(
+            "{}: {count} of its {} cases are in no part (the first: case {missing}); give every \
+             shard's part file",
+            args.study.display(),
+            study.cases()
+        )));
+    }
+    outcomes.sort_by_key(|c| c.index);
+    finish(&study, &outcomes, args.output.as_deref(), &args.outputs)
+}
+
+fn slurm(args: SlurmArgs) -> Result<(), CliError> {
+    let study = Study::load(&args.study)?;
+    let absolute = |p: &Path| -> Result<PathBuf, CliError> {
+        std::path::absolute(p).map_err(|e| CliError::Input(format!("{}: {e}", p.display())))
+    };
+    let study_path = absolute(&args.study)?;
+    let results = match &args.results {
+        Some(d) => absolute(d)?,
+        None => {
+            let stem = study_path
+                .file_stem()
+                .map_or_else(|| "study".into(), |s| s.to_string_lossy().into_owned());
+            study_path.with_file_name(format!("{stem}-slurm"))
+        }
+    };
+    let sealsim = match &args.sealsim {
+        Some(p) => absolute(p)?,
+        None => std::env::current_exe()
+            .map_err(|e| CliError::Internal(format!("cannot locate this binary: {e}")))?,
+    };
+    let shards = (args.shards as usize).min(study.cases().max(1));
+    let script = out::slurm_script(&out::SlurmJob {
+        study: &study,
+        study_path: &study_path,
+        sealsim: &sealsim,
+        results: &results,
+        shards,
+        cpus_per_task: args.cpus_per_task.into(),
+        partition: args.partition.as_deref(),
+        time: args.time.as_deref(),
+    });
+    write_output(args.output.as_deref(), script.as_bytes())
+}

@@ -1,0 +1,757 @@
+//! A study's outputs (docs/model.md §14): the per-case table (CSV, SI units in the column
+//! names) and its reading back for `study merge`, the summary as JSON and as a terminal table,
+//! and (with the `cli` feature) the survival-curve and tornado charts.
+//!
+//! Numbers are written in Rust's shortest round-trip form, so a table read back gives the same
+//! bits: a summary rebuilt from merged shard files equals the single run's.
+
+use crate::report::life::human_time;
+use crate::scenario::ScenarioError;
+use crate::scenario::study::{InputKind, Study};
+use crate::simulate::FailureMode;
+use crate::study::summary::{B_LIVES, StudySummary};
+use crate::study::{CaseOutcome, Cell};
+use crate::units::{exact as num, human};
+use serde_json::{Value, json};
+use std::path::Path;
+
+/// The first line of a shard's part file: `# sealsim study FINGERPRINT part K/N cases A..B of
+/// TOTAL`.
+const PART_PREFIX: &str = "# sealsim study ";
+
+/// The per-case table's header.
+pub fn columns(study: &Study) -> Vec<String> {
+    let mut c = vec!["case".to_owned()];
+    c.extend(study.inputs.iter().map(|i| i.column()));
+    c.extend(["life_s", "status", "mode"].iter().map(|s| (*s).to_owned()));
+    c.extend(
+        study
+            .report_times
+            .iter()
+            .map(|t| format!("leak_rate_at_{}_s_m3_per_s", num(*t))),
+    );
+    c.extend(
+        [
+            "sealing_force_end_N_per_m",
+            "retained_force_end",
+            "leaked_volume_end_m3",
+            "compression_set_end",
+            "warnings",
+        ]
+        .iter()
+        .map(|s| (*s).to_owned()),
+    );
+    c
+}
+
+fn opt(v: Option<f64>) -> String {
+    v.map_or_else(String::new, num)
+}
+
+/// The per-case table (CSV) of `outcomes`.
+pub fn cases_csv(
+    study: &Study,
+    outcomes: &[CaseOutcome],
+) -> Result<String, crate::report::ReportError> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    let err = |e: csv::Error| crate::report::ReportError::Csv(e.to_string());
+    w.write_record(columns(study)).map_err(err)?;
+    for c in outcomes {
+        let mut row = vec![c.index.to_string()];
+        row.extend(c.inputs.iter().map(|cell| match cell {
+            Cell::Number(x) => num(*x),
+            Cell::Word(s) => s.clone(),
+        }));
+        row.push(num(c.life));
+        row.push(if c.failed() { "failed" } else { "censored" }.to_owned());
+        row.push(c.mode.map_or("", FailureMode::as_str).to_owned());
+        row.extend(c.leak_rates.iter().map(|r| opt(*r)));
+        row.push(num(c.final_force));
+        row.push(num(c.retained_force));
+        row.push(num(c.leaked_volume));
+        row.push(opt(c.compression_set));
+        row.push(c.warnings.join(";"));
+        w.write_record(&row).map_err(err)?;
+    }
+    let bytes = w
+        .into_inner()
+        .map_err(|e| crate::report::ReportError::Csv(e.to_string()))?;
+    String::from_utf8(bytes).map_err(|e| crate::report::ReportError::Csv(e.to_string()))
+}
+
+/// A shard's part file: its identifying first line, then the per-case table of its cases.
+pub fn part_csv(
+    study: &Study,
+    shard: (usize, usize),
+    range: std::ops::Range<usize>,
+    outcomes: &[CaseOutcome],
+) -> Result<String, crate::report::ReportError> {
+    Ok(format!(
+        "{PART_PREFIX}{} part {}/{} cases {}..{} of {}\n{}",
+        study.fingerprint,
+        shard.0,
+        shard.1,
+        range.start,
+        range.end,
+        study.cases(),
+        cases_csv(study, outcomes)?
+    ))
+}
+
+/// The cases of one part file (or of a whole per-case table) of `study`, checked: the file
+/// must carry the study's fingerprint (a part file), the study's columns, and for every case
+/// the inputs the study's design gives it.
+pub fn read_part(
+    study: &Study,
+    path: &Path,
+    text: &str,
+) -> Result<Vec<CaseOutcome>, ScenarioError> {
+    let error = |line: Option<usize>, key: Option<&str>, message: String| ScenarioError::Invalid {
+        path: path.to_path_buf(),
+        line,
+        key: key.map(str::to_owned),
+        message,
+    };
+    let (first, body) = text.split_once('\n').unwrap_or((text, ""));
+    let Some(header) = first.strip_prefix(PART_PREFIX) else {
+        return Err(error(
+            Some(1),
+            None,
+            "not a part file of `sealsim study --shard` (its first line names the study)".into(),
+        ));
+    };
+    let fingerprint = header.split_whitespace().next().unwrap_or("");
+    if fingerprint != study.fingerprint {
+        return Err(error(
+            Some(1),
+            None,
+            format!(
+                "a part of another study (fingerprint {fingerprint}; {} has {}): the study file, \
+                 its base scenario or sealsim's version differ",
+                study.path.display(),
+                study.fingerprint
+            ),
+        ));
+    }
+    let mut reader = csv::ReaderBuilder::new().from_reader(body.as_bytes());
+    let expected = columns(study);
+    let found: Vec<String> = reader
+        .headers()
+        .map_err(|e| error(Some(2), None, e.to_string()))?
+        .iter()
+        .map(str::to_owned)
+        .collect();
+    if found != expected {
+        return Err(error(
+            Some(2),
+            None,
+            "the columns are not this study's".into(),
+        ));
+    }
+    let n_inputs = study.inputs.len();
+    let times = study.report_times.len();
+    let mut out = Vec::new();
+    for (r, record) in reader.records().enumerate() {
+        let line = r + 3;
+        let record = record.map_err(|e| error(Some(line), None, e.to_string()))?;
+        let field = |k: usize| record.get(k).unwrap_or("");
+        let number = |k: usize| -> Result<f64, ScenarioError> {
+            field(k)
+                .parse::<f64>()
+                .ok()
+                .filter(|x| x.is_finite())
+                .ok_or_else(|| {
+                    error(
+                        Some(line),
+                        Some(&expected[k]),
+                        format!("\"{}\" is not a number", field(k)),
+                    )
+                })
+        };
+        let optional = |k: usize| -> Result<Option<f64>, ScenarioError> {
+            if field(k).is_empty() {
+                Ok(None)
+            } else {
+                number(k).map(Some)
+            }
+        };
+        let index: usize = field(0).parse().map_err(|_| {
+            error(
+                Some(line),
+                Some("case"),
+                format!("\"{}\" is not a case index", field(0)),
+            )
+        })?;
+        if index >= study.cases() {
+            return Err(error(
+                Some(line),
+                Some("case"),
+                format!("case {index} is beyond the study's {} cases", study.cases()),
+            ));
+        }
+        let design = study.plan.values(index..index + 1);
+        let mut inputs = Vec::with_capacity(n_inputs);
+        for (j, input) in study.inputs.iter().enumerate() {
+            let cell = match input.kind {
+                InputKind::Words(_) => Cell::Word(field(1 + j).to_owned()),
+                InputKind::Quantity { .. } => Cell::Number(number(1 + j)?),
+            };
+            if design.first().map(|v| input.cell(v[j])) != Some(cell.clone()) {
+                return Err(error(
+                    Some(line),
+                    Some(&expected[1 + j]),
+                    format!("case {index}'s input is not the one the study's design gives it"),
+                ));
+            }
+            inputs.push(cell);
+        }
+        let k = 1 + n_inputs;
+        let status = field(k + 1);
+        let mode = match (status, field(k + 2)) {
+            ("censored", "") => None,
+            ("failed", m) => Some(FailureMode::from_name(m).ok_or_else(|| {
+                error(
+                    Some(line),
+                    Some("mode"),
+                    format!("unknown failure mode \"{m}\""),
+                )
+            })?),
+            (s, _) => {
+                return Err(error(
+                    Some(line),
+                    Some("status"),
+                    format!("\"{s}\": failed (with a mode) or censored"),
+                ));
+            }
+        };
+        let leak_rates = (0..times)
+            .map(|t| optional(k + 3 + t))
+            .collect::<Result<_, _>>()?;
+        let e = k + 3 + times;
+        let warnings = field(e + 4);
+        out.push(CaseOutcome {
+            index,
+            inputs,
+            life: number(k)?,
+            mode,
+            leak_rates,
+            final_force: number(e)?,
+            retained_force: number(e + 1)?,
+            leaked_volume: number(e + 2)?,
+            compression_set: optional(e + 3)?,
+            warnings: if warnings.is_empty() {
+                Vec::new()
+            } else {
+                warnings.split(';').map(str::to_owned).collect()
+            },
+        });
+    }
+    Ok(out)
+}
+
+/// The summary as JSON.
+pub fn summary_json(study: &Study, s: &StudySummary) -> Result<String, serde_json::Error> {
+    let mut doc = serde_json::Map::new();
+    doc.insert("study".into(), json!(study.name));
+    doc.insert("file".into(), json!(study.path.display().to_string()));
+    doc.insert("base".into(), json!(study.base_path.display().to_string()));
+    doc.insert("fingerprint".into(), json!(study.fingerprint));
+    doc.insert("design".into(), json!(study.plan.design.name()));
+    doc.insert("is_sample".into(), json!(study.plan.design.is_sample()));
+    doc.insert("seed".into(), json!(study.plan.seed));
+    doc.insert("cases".into(), json!(s.cases));
+    doc.insert("failures".into(), json!(s.failures));
+    doc.insert("censored".into(), json!(s.censored));
+    doc.insert("confidence".into(), json!(s.confidence));
+    for (p, b) in &s.b_lives {
+        let name = format!("b{}", (p * 100.0).round());
+        doc.insert(format!("{name}_s"), json!(b.estimate));
+        doc.insert(format!("{name}_lower_s"), json!(b.lower));
+        doc.insert(format!("{name}_upper_s"), json!(b.upper));
+    }
+    doc.insert(
+        "modes".into(),
+        Value::Object(
+            s.modes
+                .iter()
+                .map(|(m, n)| (m.as_str().to_owned(), json!(n)))
+                .collect(),
+        ),
+    );
+    doc.insert(
+        "weibull".into(),
+        match &s.weibull {
+            None => Value::Null,
+            Some(w) => {
+                let mut o = serde_json::Map::new();
+                o.insert("shape".into(), json!(w.weibull.shape));
+                o.insert("scale_s".into(), json!(w.weibull.scale));
+                o.insert("fits".into(), json!(w.fits));
+                o.insert("ks_distance".into(), json!(w.distance));
+                o.insert("ks_critical".into(), json!(w.critical));
+                for p in B_LIVES {
+                    o.insert(
+                        format!("b{}_s", (p * 100.0).round()),
+                        json!(w.weibull.b_life(p)),
+                    );
+                }
+                Value::Object(o)
+            }
+        },
+    );
+    doc.insert(
+        "sensitivity".into(),
+        Value::Array(
+            s.sensitivity
+                .iter()
+                .map(|i| {
+                    json!({
+                        "input": study.inputs[i.input].key,
+                        "measure": i.measure.name(),
+                        "value": i.value,
+                    })
+                })
+                .collect(),
+        ),
+    );
+    let km = &s.kaplan_meier;
+    doc.insert(
+        "survival".into(),
+        Value::Array(
+            km.steps()
+                .iter()
+                .map(|st| {
+                    let (lo, hi) = km.band(st.time, s.confidence);
+                    json!({
+                        "time_s": st.time,
+                        "at_risk": st.at_risk,
+                        "failures": st.failures,
+                        "survival": st.survival,
+                        "lower": lo,
+                        "upper": hi,
+                    })
+                })
+                .collect(),
+        ),
+    );
+    doc.insert(
+        "warnings".into(),
+        Value::Object(
+            s.warnings
+                .iter()
+                .map(|(id, n)| (id.clone(), json!(n)))
+                .collect(),
+        ),
+    );
+    let mut text = serde_json::to_string_pretty(&Value::Object(doc))?;
+    text.push('\n');
+    Ok(text)
+}
+
+/// A life for people, or why there is none.
+fn life_text(t: Option<f64>, why: &str) -> String {
+    t.map_or_else(|| why.to_owned(), human_time)
+}
+
+/// The terminal table of the summary.
+pub fn summary_table(study: &Study, s: &StudySummary) -> String {
+    let mut out = String::new();
+    let pct = |p: f64| format!("{} %", human(100.0 * p, 3));
+    out += &format!("study          {} ({})\n", study.name, study.path.display());
+    out += &format!(
+        "design         {}: {} cases, seed {}, base {}\n",
+        study.plan.design.name(),
+        s.cases,
+        study.plan.seed,
+        study.base_path.display()
+    );
+    let modes: Vec<String> = s
+        .modes
+        .iter()
+        .map(|(m, n)| format!("{n} by {}", m.as_str()))
+        .collect();
+    out += &format!(
+        "failures       {} of {} ({}){}\n",
+        s.failures,
+        s.cases,
+        pct(s.failures as f64 / s.cases.max(1) as f64),
+        if modes.is_empty() {
+            String::new()
+        } else {
+            format!(": {}", modes.join(", "))
+        }
+    );
+    out += &format!(
+        "survivors      {} (censored at the end of their run; never counted as failures)\n",
+        s.censored
+    );
+    if !study.plan.design.is_sample() {
+        out += "note           a grid is a sweep, not a sample: the survival curve and B lives \
+                weight every grid point equally\n";
+    }
+    out += &format!("\nlife (Kaplan–Meier, {} bounds)\n", pct(s.confidence));
+    for (p, b) in &s.b_lives {
+        let name = format!("B{}", (p * 100.0).round());
+        let never = format!("not reached: fewer than {} failed", pct(*p));
+        out += &format!(
+            "  {name:<5} {:<22} [{}, {}]\n",
+            life_text(b.estimate, &never),
+            life_text(b.lower, "—"),
+            life_text(b.upper, "beyond the data")
+        );
+    }
+    match &s.weibull {
+        None => out += "Weibull        no fit (fewer than two failures at distinct times)\n",
+        Some(w) => {
+            out += &format!(
+                "Weibull        β {}, η {}: {}\n",
+                human(w.weibull.shape, 3),
+                human_time(w.weibull.scale),
+                if w.fits {
+                    format!(
+                        "fits (Kolmogorov–Smirnov D {} ≤ {}); B10 {}",
+                        human(w.distance, 2),
+                        human(w.critical, 2),
+                        human_time(w.weibull.b_life(0.1))
+                    )
+                } else {
+                    format!(
+                        "does not fit (Kolmogorov–Smirnov D {} > {})",
+                        human(w.distance, 2),
+                        human(w.critical, 2)
+                    )
+                }
+            )
+        }
+    }
+    out += "\nwhat drives the life (Spearman ρ of input and life; η for words)\n";
+    let width = study.inputs.iter().map(|i| i.key.len()).max().unwrap_or(0);
+    for inf in &s.sensitivity {
+        let key = &study.inputs[inf.input].key;
+        let (symbol, text, bar) = match inf.value {
+            None => ("", "constant".to_owned(), String::new()),
+            Some(v) => (
+                if inf.measure.name() == "spearman_rho" {
+                    "ρ"
+                } else {
+                    "η"
+                },
+                format!("{v:+.2}"),
+                "█".repeat((v.abs() * 20.0).round() as usize),
+            ),
+        };
+        out += &format!("  {key:<width$}  {symbol} {text:>6}  {bar}\n");
+    }
+    if !s.warnings.is_empty() {
+        out += "\nvalidity warnings (cases)\n";
+        for (id, n) in &s.warnings {
+            out += &format!("  {id}: {n}\n");
+        }
+    }
+    out
+}
+
+/// The survival-curve and tornado charts (SVG).
+#[cfg(feature = "cli")]
+pub mod charts {
+    use super::*;
+    use crate::report::plot::PlotError;
+    use plotters::prelude::*;
+
+    const YEAR: f64 = 365.25 * 86_400.0;
+
+    fn err<E: std::fmt::Display>(e: E) -> PlotError {
+        PlotError(e.to_string())
+    }
+
+    /// The Kaplan–Meier curve (steps) with its band, the Weibull fit, against time in years on
+    /// a log axis.
+    pub fn survival_chart(study: &Study, s: &StudySummary) -> Result<String, PlotError> {
+        let km = &s.kaplan_meier;
+        let steps = km.steps();
+        let lives: Vec<f64> = steps
+            .iter()
+            .map(|st| st.time / YEAR)
+            .filter(|t| *t > 0.0)
+            .collect();
+        if lives.is_empty() {
+            return Err(PlotError("no failures: no survival curve to draw".into()));
+        }
+        let lo = lives.iter().copied().fold(f64::INFINITY, f64::min) / 2.0;
+        let end = study
+            .base_scenario
+            .life
+            .time
+            .duration
+            .max(steps.last().map_or(0.0, |st| st.time))
+            / YEAR;
+        let hi = (end * 1.5).max(lo * 10.0);
+        let mut svg = String::new();
+        {
+            let root = SVGBackend::with_string(&mut svg, (800, 520)).into_drawing_area();
+            root.fill(&WHITE).map_err(err)?;
+            let mut chart = ChartBuilder::on(&root)
+                .caption(format!("{}: survival", study.name), ("sans-serif", 20))
+                .margin(16)
+                .x_label_area_size(48)
+                .y_label_area_size(60)
+                .build_cartesian_2d((lo..hi).log_scale(), 0.0..1.02)
+                .map_err(err)?;
+            chart
+                .configure_mesh()
+                .x_desc("time (years)")
+                .y_desc("fraction still sealing")
+                .draw()
+                .map_err(err)?;
+            // the curve and its band as steps: flat until each failure time, then down
+            let step_points = |value: &dyn Fn(f64, usize) -> f64| {
+                let mut pts = vec![(lo, 1.0)];
+                let mut prev = 1.0;
+                for (k, st) in steps.iter().enumerate() {
+                    let t = (st.time / YEAR).max(lo);
+                    pts.push((t, prev));
+                    prev = value(st.time, k);
+                    pts.push((t, prev));
+                }
+                pts.push((hi.min(end.max(lo)), prev));
+                pts
+            };
+            let blue = RGBColor(0, 114, 178);
+            let band_colour = RGBColor(86, 180, 233);
+            let lower = step_points(&|t, _| km.band(t, s.confidence).0);
+            let upper = step_points(&|t, _| km.band(t, s.confidence).1);
+            for (pts, label) in [(&lower, "band"), (&upper, "")] {
+                let series = chart
+                    .draw_series(LineSeries::new(pts.clone(), band_colour.stroke_width(1)))
+                    .map_err(err)?;
+                if !label.is_empty() {
+                    series
+                        .label(format!(
+                            "{} % confidence band",
+                            human(100.0 * s.confidence, 3)
+                        ))
+                        .legend(move |(x, y)| {
+                            PathElement::new(vec![(x, y), (x + 20, y)], band_colour.stroke_width(1))
+                        });
+                }
+            }
+            chart
+                .draw_series(LineSeries::new(
+                    step_points(&|_, k| steps[k].survival),
+                    blue.stroke_width(3),
+                ))
+                .map_err(err)?
+                .label("Kaplan–Meier")
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 20, y)], blue.stroke_width(3))
+                });
+            if let Some(w) = &s.weibull {
+                let orange = RGBColor(230, 159, 0);
+                let n = 200;
+                let pts: Vec<(f64, f64)> = (0..=n)
+                    .map(|i| {
+                        let t = lo * (hi / lo).powf(i as f64 / n as f64);
+                        (t, w.weibull.survival(t * YEAR))
+                    })
+                    .collect();
+                chart
+                    .draw_series(LineSeries::new(pts, orange.stroke_width(2)))
+                    .map_err(err)?
+                    .label(format!(
+                        "Weibull β {}, η {}{}",
+                        human(w.weibull.shape, 3),
+                        human_time(w.weibull.scale),
+                        if w.fits { "" } else { " (does not fit)" }
+                    ))
+                    .legend(move |(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 20, y)], orange.stroke_width(2))
+                    });
+            }
+            // B10 as a marker line
+            if let Some(b10) = s
+                .b_lives
+                .iter()
+                .find(|(p, _)| *p == 0.1)
+                .and_then(|(_, b)| b.estimate)
+            {
+                let grey = RGBColor(100, 100, 100);
+                chart
+                    .draw_series(LineSeries::new(
+                        vec![
+                            (lo, 0.9),
+                            ((b10 / YEAR).max(lo), 0.9),
+                            ((b10 / YEAR).max(lo), 0.0),
+                        ],
+                        grey.stroke_width(1),
+                    ))
+                    .map_err(err)?
+                    .label(format!("B10 {}", human_time(b10)))
+                    .legend(move |(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 20, y)], grey.stroke_width(1))
+                    });
+            }
+            chart
+                .configure_series_labels()
+                .position(SeriesLabelPosition::UpperRight)
+                .background_style(WHITE.mix(0.85))
+                .border_style(BLACK)
+                .draw()
+                .map_err(err)?;
+            root.present().map_err(err)?;
+        }
+        Ok(svg)
+    }
+
+    /// The inputs' influence on the life as horizontal bars, largest at the top.
+    pub fn tornado_chart(study: &Study, s: &StudySummary) -> Result<String, PlotError> {
+        let bars: Vec<(String, f64)> = s
+            .sensitivity
+            .iter()
+            .filter_map(|i| i.value.map(|v| (study.inputs[i.input].key.clone(), v)))
+            .collect();
+        if bars.is_empty() {
+            return Err(PlotError("no input varied the life".into()));
+        }
+        let n = bars.len();
+        let height = 120 + 48 * n as u32;
+        let mut svg = String::new();
+        {
+            let root = SVGBackend::with_string(&mut svg, (800, height)).into_drawing_area();
+            root.fill(&WHITE).map_err(err)?;
+            let labels = bars.clone();
+            let mut chart = ChartBuilder::on(&root)
+                .caption(
+                    format!("{}: what drives the life", study.name),
+                    ("sans-serif", 20),
+                )
+                .margin(16)
+                .x_label_area_size(48)
+                .y_label_area_size(220)
+                .build_cartesian_2d(-1.0..1.0, (0..n as i32 - 1).into_segmented())
+                .map_err(err)?;
+            chart
+                .configure_mesh()
+                .x_desc("rank correlation with the life (ρ; η ≥ 0 for words)")
+                .y_labels(n)
+                .y_label_formatter(&|y| match y {
+                    SegmentValue::CenterOf(k) if *k >= 0 && (*k as usize) < n => {
+                        labels[n - 1 - *k as usize].0.clone()
+                    }
+                    _ => String::new(),
+                })
+                .disable_y_mesh()
+                .light_line_style(WHITE)
+                .draw()
+                .map_err(err)?;
+            // vermillion: more of the input shortens the life; blue: lengthens (Okabe–Ito)
+            let shorter = RGBColor(213, 94, 0);
+            let longer = RGBColor(0, 114, 178);
+            chart
+                .draw_series(bars.iter().enumerate().map(|(k, (_, v))| {
+                    let y = (n - 1 - k) as i32;
+                    let colour = if *v < 0.0 { shorter } else { longer };
+                    let mut r = Rectangle::new(
+                        [
+                            (0.0, SegmentValue::Exact(y)),
+                            (*v, SegmentValue::Exact(y + 1)),
+                        ],
+                        colour.filled(),
+                    );
+                    r.set_margin(8, 8, 0, 0);
+                    r
+                }))
+                .map_err(err)?;
+            root.present().map_err(err)?;
+        }
+        Ok(svg)
+    }
+}
+
+/// What `study slurm` submits.
+#[derive(Debug, Clone, Copy)]
+pub struct SlurmJob<'a> {
+    pub study: &'a Study,
+    /// Absolute paths, as the jobs see them (a shared file system).
+    pub study_path: &'a Path,
+    pub sealsim: &'a Path,
+    pub results: &'a Path,
+    pub shards: usize,
+    pub cpus_per_task: usize,
+    pub partition: Option<&'a str>,
+    pub time: Option<&'a str>,
+}
+
+/// A word for the shell, single-quoted.
+fn shell_quote(text: &str) -> String {
+    format!("'{}'", text.replace('\'', r"'\''"))
+}
+
+/// The submission script of a study on Slurm: a job array with one task per shard, each
+/// running `sealsim study FILE --shard K/N` into `part-K.csv`, and the merge as a job that
+/// starts only after every task succeeded (`--dependency=afterok`). Run with bash on a node
+/// that can submit.
+pub fn slurm_script(job: &SlurmJob<'_>) -> String {
+    let study = job.study;
+    let name: String = study
+        .name
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || c == '-' {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect();
+    let mut common = format!("--job-name={}", shell_quote(&format!("sealsim-{name}")));
+    if let Some(p) = job.partition {
+        common += &format!(" --partition={}", shell_quote(p));
+    }
+    if let Some(t) = job.time {
+        common += &format!(" --time={}", shell_quote(t));
+    }
+    let n = job.shards;
+    let c = job.cpus_per_task;
+    format!(
+        r#"#!/bin/bash
+# sealsim study "{title}": {cases} cases in {n} shards as a Slurm job array, then their merge.
+# Generated by `sealsim study slurm` (study fingerprint {fp}).
+# Submit from a node that can run sbatch:   bash THIS_FILE
+# The jobs need this binary, the study and its base scenario at the same paths (a shared file
+# system). Results: $RESULTS/cases.csv, summary.json, survival.svg, tornado.svg; logs there too.
+set -euo pipefail
+SEALSIM={sealsim}
+STUDY={study_path}
+RESULTS={results}
+mkdir -p "$RESULTS"
+
+array=$(sbatch --parsable {common} --array=1-{n} --cpus-per-task={c} \
+  --output="$RESULTS/shard-%a.log" <<EOF
+#!/bin/bash
+exec "$SEALSIM" study "$STUDY" --shard "\$SLURM_ARRAY_TASK_ID/{n}" --threads {c} \
+  -o "$RESULTS/part-\$SLURM_ARRAY_TASK_ID.csv"
+EOF
+)
+array=${{array%%;*}}
+
+merge=$(sbatch --parsable {common} --dependency=afterok:"$array" \
+  --output="$RESULTS/merge.log" <<EOF
+#!/bin/bash
+exec "$SEALSIM" study merge "$STUDY" "$RESULTS"/part-*.csv -o "$RESULTS/cases.csv" \
+  --summary "$RESULTS/summary.json" --survival-plot "$RESULTS/survival.svg" \
+  --tornado-plot "$RESULTS/tornado.svg"
+EOF
+)
+merge=${{merge%%;*}}
+
+echo "submitted: shards as job array $array (tasks 1-{n}), merge as job $merge (after all succeed)"
+echo "results: $RESULTS"
+"#,
+        title = study.name.replace(['\n', '"'], " "),
+        cases = study.cases(),
+        fp = study.fingerprint,
+        sealsim = shell_quote(&job.sealsim.display().to_string()),
+        study_path = shell_quote(&job.study_path.display().to_string()),
+        results = shell_quote(&job.results.display().to_string()),
+    )
+}

@@ -1,0 +1,968 @@
+//! Study files (`sealsim study`, docs/model.md §14.1): a base scenario, the inputs to vary with
+//! their distributions, and the design — TOML → a validated [`Study`] whose cases are scenarios.
+//!
+//! ```toml
+//! base = "oring.toml"            # relative to the study file
+//! design = "monte-carlo"         # "grid", "latin-hypercube"
+//! samples = 200
+//! seed = 7
+//! [vary]
+//! "seal.squeeze" = { distribution = "normal", mean = 0.25, std = 0.02 }
+//! "surface.rms_roughness" = { distribution = "lognormal", median = "0.8 um", geometric_std = 1.2 }
+//! "seal.groove_depth" = "±0.05 mm"              # a tolerance band about the base's value
+//! "material.library" = { values = ["nbr-70", "fkm-75"] }
+//! ```
+//!
+//! Each input is addressed by its scenario key path and sampled in the unit its parameters give
+//! (all converted to the unit of its first location parameter); a case's value is written into
+//! the base scenario in that unit, and the scenario is validated as any other — so a case obeys
+//! exactly the rules and defaults of a scenario file. Setting `material.library` or
+//! `material.file` replaces the compound (the `[material]` table keeps only its
+//! `asperity_modulus`).
+
+use super::error::Source;
+use super::{Scenario, ScenarioError};
+use crate::study::Cell;
+use crate::study::design::{Design, Distribution, Plan};
+use crate::units::{self, Dimension};
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use toml::Spanned;
+
+/// Keys whose temperatures are differences (a value in °C is a difference of kelvins there);
+/// every other temperature key is absolute.
+const TEMPERATURE_DIFFERENCES: &[&str] = &[
+    "environment.daily_amplitude",
+    "environment.yearly_amplitude",
+    "material.shift.c2",
+    "fluid.sutherland_constant",
+];
+
+/// The report times of the per-case leak rates when the study gives none.
+const DEFAULT_REPORT_TIMES: [f64; 3] = [86_400.0, 365.25 * 86_400.0, 3652.5 * 86_400.0];
+
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawStudy {
+    name: Option<Spanned<String>>,
+    base: Spanned<String>,
+    design: Spanned<String>,
+    samples: Option<Spanned<i64>>,
+    levels: Option<Spanned<i64>>,
+    seed: Option<Spanned<i64>>,
+    confidence: Option<Spanned<f64>>,
+    report_times: Option<Spanned<Vec<Spanned<String>>>>,
+    vary: Spanned<BTreeMap<String, Spanned<toml::Value>>>,
+}
+
+/// How an input's values reach the scenario and the per-case table.
+#[derive(Debug, Clone, PartialEq)]
+pub enum InputKind {
+    /// A number in `unit` ("" for a bare number, which a scenario reads as SI); `si` converts
+    /// it to SI for the tables: `x·scale + offset`, `dimension` its SI dimension (`None` when
+    /// bare).
+    Quantity {
+        unit: String,
+        scale: f64,
+        offset: f64,
+        dimension: Option<Dimension>,
+    },
+    /// Words (compound ids, fidelity levels): the distribution's values are indices.
+    Words(Vec<String>),
+}
+
+/// One varied input.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StudyInput {
+    /// The scenario key path, e.g. `seal.squeeze`.
+    pub key: String,
+    /// The study file's line of its entry.
+    pub line: usize,
+    pub kind: InputKind,
+}
+
+impl StudyInput {
+    /// The per-case table's column: the key path and, for a quantity, its SI unit
+    /// (`surface.rms_roughness_m`).
+    pub fn column(&self) -> String {
+        match &self.kind {
+            InputKind::Quantity {
+                dimension: Some(d), ..
+            } if *d != Dimension::DIMENSIONLESS => format!("{}_{}", self.key, si_suffix(*d)),
+            _ => self.key.clone(),
+        }
+    }
+
+    /// The table's cell of value `x`: the SI number, or the word.
+    pub fn cell(&self, x: f64) -> Cell {
+        match &self.kind {
+            InputKind::Quantity { scale, offset, .. } => Cell::Number(x * scale + offset),
+            InputKind::Words(w) => Cell::Word(w[x as usize].clone()),
+        }
+    }
+
+    /// The scenario's TOML value of `x`.
+    fn toml_value(&self, x: f64) -> toml::Value {
+        match &self.kind {
+            InputKind::Quantity { unit, .. } if unit.is_empty() => {
+                if x.fract() == 0.0 && x.abs() < 9.0e15 {
+                    toml::Value::Integer(x as i64)
+                } else {
+                    toml::Value::Float(x)
+                }
+            }
+            InputKind::Quantity { unit, .. } => {
+                toml::Value::String(format!("{} {unit}", units::exact(x)))
+            }
+            InputKind::Words(w) => toml::Value::String(w[x as usize].clone()),
+        }
+    }
+
+    /// `key = value` as a case's input reads (for messages).
+    pub fn describe(&self, x: f64) -> String {
+        match self.toml_value(x) {
+            toml::Value::String(s) => format!("{} = \"{s}\"", self.key),
+            v => format!("{} = {v}", self.key),
+        }
+    }
+}
+
+/// A validated study.
+#[derive(Debug, Clone)]
+pub struct Study {
+    /// The `name` key, or the file stem.
+    pub name: String,
+    /// The study file.
+    pub path: PathBuf,
+    /// The base scenario file and its text.
+    pub base_path: PathBuf,
+    base_text: String,
+    base: toml::Table,
+    /// The base scenario, validated.
+    pub base_scenario: Scenario,
+    pub inputs: Vec<StudyInput>,
+    pub plan: Plan,
+    /// Times of the per-case leak rates \[s\].
+    pub report_times: Vec<f64>,
+    /// Two-sided confidence of the bands and bounds (default 0.95).
+    pub confidence: f64,
+    /// A hash of the study file, the base scenario and this build's version: shards of
+    /// different studies never merge.
+    pub fingerprint: String,
+}
+
+impl Study {
+    /// Reads and validates the study file at `path` and its base scenario.
+    pub fn load(path: &Path) -> Result<Study, ScenarioError> {
+        let text = std::fs::read_to_string(path).map_err(|source| ScenarioError::Read {
+            path: path.to_path_buf(),
+            source,
+        })?;
+        Study::from_str(&text, path)
+    }
+
+    /// Validates study `text` read from `path` (the base is resolved against its directory).
+    pub fn from_str(text: &str, path: &Path) -> Result<Study, ScenarioError> {
+        let source = Source { path, text };
+        let raw: RawStudy = source.deserialize()?;
+        let base_path = path
+            .parent()
+            .unwrap_or(Path::new(""))
+            .join(raw.base.get_ref());
+        let base_text = std::fs::read_to_string(&base_path).map_err(|e| {
+            source.error(
+                raw.base.span(),
+                "base",
+                format!("cannot read the base scenario {}: {e}", base_path.display()),
+            )
+        })?;
+        let base_scenario = Scenario::from_str(&base_text, &base_path)?;
+        let base: toml::Table = base_text.parse().map_err(|e: toml::de::Error| {
+            source.error(raw.base.span(), "base", e.message().to_owned())
+        })?;
+
+        let design = match Design::ALL
+            .into_iter()
+            .find(|d| d.name() == raw.design.get_ref())
+        {
+            Some(d) => d,
+            None => {
+                return Err(source.error(
+                    raw.design.span(),
+                    "design",
+                    format!(
+                        "unknown design \"{}\": one of grid, monte-carlo, latin-hypercube",
+                        raw.design.get_ref()
+                    ),
+                ));
+            }
+        };
+        let count = |v: &Option<Spanned<i64>>, key: &str, default: i64, max: i64| match v {
+            None => Ok(default as usize),
+            Some(s) if (1..=max).contains(s.get_ref()) => Ok(*s.get_ref() as usize),
+            Some(s) => Err(source.error(
+                s.span(),
+                key,
+                format!(
+                    "must be a whole number from 1 to {max}, got {}",
+                    s.get_ref()
+                ),
+            )),
+        };
+        let samples = match (&raw.samples, design) {
+            (None, Design::MonteCarlo | Design::LatinHypercube) => {
+                return Err(source.error(
+                    raw.design.span(),
+                    "samples",
+                    format!("a {} design needs `samples`", design.name()),
+                ));
+            }
+            (Some(s), Design::Grid) => {
+                return Err(source.error(
+                    s.span(),
+                    "samples",
+                    "a grid's cases are the product of its levels: give `levels` (for \
+                     continuous inputs) or lists, not `samples`",
+                ));
+            }
+            _ => count(&raw.samples, "samples", 1, 10_000_000)?,
+        };
+        let levels = count(&raw.levels, "levels", 3, 1000)?;
+        let seed = match &raw.seed {
+            None => 0,
+            Some(s) if *s.get_ref() >= 0 => *s.get_ref() as u64,
+            Some(s) => return Err(source.error(s.span(), "seed", "must be ≥ 0")),
+        };
+        let confidence = match &raw.confidence {
+            None => 0.95,
+            Some(c) if *c.get_ref() > 0.5 && *c.get_ref() < 1.0 => *c.get_ref(),
+            Some(c) => {
+                return Err(source.error(
+                    c.span(),
+                    "confidence",
+                    "must lie strictly between 0.5 and 1",
+                ));
+            }
+        };
+        let report_times = match &raw.report_times {
+            None => DEFAULT_REPORT_TIMES.to_vec(),
+            Some(list) => list
+                .get_ref()
+                .iter()
+                .map(|t| {
+                    units::parse_quantity(t.get_ref(), Dimension::TIME)
+                        .ok()
+                        .filter(|v| *v > 0.0)
+                        .ok_or_else(|| {
+                            source.error(
+                                t.span(),
+                                "report_times",
+                                format!("\"{}\" is not a time > 0 (e.g. \"1 year\")", t.get_ref()),
+                            )
+                        })
+                })
+                .collect::<Result<_, _>>()?,
+        };
+
+        // The inputs in file order.
+        let mut entries: Vec<(&String, &Spanned<toml::Value>)> =
+            raw.vary.get_ref().iter().collect();
+        entries.sort_by_key(|(_, v)| v.span().start);
+        if entries.is_empty() {
+            return Err(source.error(raw.vary.span(), "vary", "names no input to vary"));
+        }
+        let mut inputs = Vec::new();
+        let mut distributions = Vec::new();
+        for (key, value) in entries {
+            let entry = Entry {
+                source: &source,
+                key,
+                span: value.span(),
+                base: &base,
+            };
+            let (input, distribution) = entry.parse(value.get_ref())?;
+            inputs.push(input);
+            distributions.push(distribution);
+        }
+        let plan = Plan {
+            design,
+            inputs: distributions,
+            samples,
+            levels,
+            seed,
+        };
+        if plan.cases() > 10_000_000 {
+            return Err(source.error(
+                raw.vary.span(),
+                "vary",
+                format!("the grid has {} cases; at most 10 000 000", plan.cases()),
+            ));
+        }
+        let fingerprint = format!(
+            "{:016x}",
+            fnv1a([
+                env!("CARGO_PKG_VERSION").as_bytes(),
+                text.as_bytes(),
+                base_text.as_bytes(),
+            ])
+        );
+        let study = Study {
+            name: raw
+                .name
+                .as_ref()
+                .map_or_else(|| source.file_stem(), |n| n.get_ref().clone()),
+            path: path.to_path_buf(),
+            base_path,
+            base_text,
+            base,
+            base_scenario,
+            inputs,
+            plan,
+            report_times,
+            confidence,
+            fingerprint,
+        };
+        // Every key path must be one a scenario accepts: each input alone at its median.
+        for (j, input) in study.inputs.iter().enumerate() {
+            let x = study.plan.inputs[j].quantile(0.5);
+            study.scenario_with(&[(input, x)], None)?;
+        }
+        Ok(study)
+    }
+
+    /// The number of cases.
+    pub fn cases(&self) -> usize {
+        self.plan.cases()
+    }
+
+    /// The scenario of one case: the base with the case's `values` (in input order), validated;
+    /// an invalid case is reported at the study file's line of the first input, naming the case.
+    pub fn scenario(&self, index: usize, values: &[f64]) -> Result<Scenario, ScenarioError> {
+        let assignments: Vec<(&StudyInput, f64)> =
+            self.inputs.iter().zip(values.iter().copied()).collect();
+        self.scenario_with(&assignments, Some(index))
+    }
+
+    fn scenario_with(
+        &self,
+        assignments: &[(&StudyInput, f64)],
+        case: Option<usize>,
+    ) -> Result<Scenario, ScenarioError> {
+        let mut table = self.base.clone();
+        for (input, x) in assignments {
+            set(&mut table, &input.key, input.toml_value(*x)).map_err(|m| self.error(input, m))?;
+        }
+        let text =
+            toml::to_string(&table).map_err(|e| self.error(assignments[0].0, e.to_string()))?;
+        Scenario::from_str(&text, &self.base_path).map_err(|e| {
+            // the input the scenario's message names, else the first
+            let (input, _) = match &e {
+                ScenarioError::Invalid { key: Some(k), .. } => assignments
+                    .iter()
+                    .find(|(i, _)| i.key == *k)
+                    .unwrap_or(&assignments[0]),
+                _ => &assignments[0],
+            };
+            let what = match case {
+                Some(i) => format!(
+                    "case {i} ({})",
+                    assignments
+                        .iter()
+                        .map(|(inp, x)| inp.describe(*x))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                ),
+                None => "this input".to_owned(),
+            };
+            let inner = match &e {
+                ScenarioError::Invalid { key, message, .. } => match key {
+                    Some(k) => format!("{k}: {message}"),
+                    None => message.clone(),
+                },
+                other => other.to_string(),
+            };
+            self.error(
+                input,
+                format!(
+                    "{what} is not a valid scenario (base {}): {inner}",
+                    self.base_path.display()
+                ),
+            )
+        })
+    }
+
+    fn error(&self, input: &StudyInput, message: impl Into<String>) -> ScenarioError {
+        ScenarioError::Invalid {
+            path: self.path.clone(),
+            line: Some(input.line),
+            key: Some(format!("vary.\"{}\"", input.key)),
+            message: message.into(),
+        }
+    }
+
+    /// The base scenario's text (for reports).
+    pub fn base_text(&self) -> &str {
+        &self.base_text
+    }
+}
+
+/// Sets `key` (dotted) in `table`, creating tables on the way.
+fn set(table: &mut toml::Table, key: &str, value: toml::Value) -> Result<(), String> {
+    let parts: Vec<&str> = key.split('.').collect();
+    let (last, path) = parts.split_last().ok_or("an empty key path")?;
+    let mut t = table;
+    for p in path {
+        let next = t
+            .entry(p.to_string())
+            .or_insert_with(|| toml::Value::Table(toml::Table::new()));
+        t = match next {
+            toml::Value::Table(inner) => inner,
+            _ => return Err(format!("`{p}` in the base scenario is not a table")),
+        };
+    }
+    if path == ["material"] && (*last == "library" || *last == "file") {
+        // a new compound: drop the old one's keys, keep the scenario's option
+        t.retain(|k, _| k == "asperity_modulus");
+    }
+    t.insert(last.to_string(), value);
+    Ok(())
+}
+
+/// A value at a key path of a TOML table.
+fn get<'a>(table: &'a toml::Table, key: &str) -> Option<&'a toml::Value> {
+    let mut parts = key.split('.');
+    let mut v = table.get(parts.next()?)?;
+    for p in parts {
+        v = v.as_table()?.get(p)?;
+    }
+    Some(v)
+}
+
+/// The column suffix of an SI dimension: `m`, `Pa`, `K`, `Pa_s`, else its formula.
+fn si_suffix(d: Dimension) -> String {
+    let named = [
+        (Dimension::LENGTH, "m"),
+        (Dimension::PRESSURE, "Pa"),
+        (Dimension::TEMPERATURE, "K"),
+        (Dimension::TIME, "s"),
+        (Dimension::VISCOSITY, "Pa_s"),
+        (Dimension::FORCE_PER_LENGTH, "N_per_m"),
+        (Dimension::FORCE, "N"),
+        (Dimension::VOLUME_FLOW, "m3_per_s"),
+        (Dimension::VOLUME, "m3"),
+        (Dimension::WAVEVECTOR, "per_m"),
+        (Dimension::THERMAL_EXPANSION, "per_K"),
+        (Dimension::VELOCITY, "m_per_s"),
+        (Dimension::MOLAR_ENERGY, "J_per_mol"),
+        (Dimension::DENSITY, "kg_per_m3"),
+    ];
+    named
+        .iter()
+        .find(|(n, _)| *n == d)
+        .map_or_else(|| d.formula().replace('·', "_"), |(_, s)| (*s).to_owned())
+}
+
+/// 64-bit FNV-1a over the parts, each followed by a 0 byte.
+fn fnv1a<'a>(parts: impl IntoIterator<Item = &'a [u8]>) -> u64 {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for part in parts {
+        for &b in part.iter().chain(&[0u8]) {
+            h ^= u64::from(b);
+            h = h.wrapping_mul(0x0000_0100_0000_01b3);
+        }
+    }
+    h
+}
+
+/// A unit's factor to SI and its dimension.
+type UnitFactor = (f64, Dimension);
+
+/// A parameter as written: a number and its unit ("" for a bare number).
+#[derive(Debug, Clone, PartialEq)]
+struct Written {
+    value: f64,
+    unit: String,
+}
+
+/// One `[vary]` entry being read.
+struct Entry<'a> {
+    source: &'a Source<'a>,
+    key: &'a str,
+    span: std::ops::Range<usize>,
+    base: &'a toml::Table,
+}
+
+const KINDS: &str = "uniform, triangular, normal, lognormal, log-uniform, range, log-range, \
+                     values, tolerance";
+
+impl Entry<'_> {
+    fn err(&self, message: impl Into<String>) -> ScenarioError {
+        self.source.error(
+            self.span.clone(),
+            &format!("vary.\"{}\"", self.key),
+            message,
+        )
+    }
+
+    fn parse(&self, value: &toml::Value) -> Result<(StudyInput, Distribution), ScenarioError> {
+        let table = match value {
+            // the shorthand "±0.08 mm": a tolerance band about the base's value
+            toml::Value::String(s) => {
+                let mut t = toml::Table::new();
+                t.insert("tolerance".into(), toml::Value::String(s.clone()));
+                t
+            }
+            toml::Value::Table(t) => t.clone(),
+            _ => {
+                return Err(self.err(
+                    "must be a table such as { distribution = \"normal\", mean = …, std = … } \
+                     or a tolerance band \"±0.08 mm\"",
+                ));
+            }
+        };
+        let kind = match table.get("distribution") {
+            Some(toml::Value::String(s)) => s.clone(),
+            Some(_) => return Err(self.err("`distribution` must be a string")),
+            None if table.contains_key("values") => "values".into(),
+            None if table.contains_key("tolerance") => "tolerance".into(),
+            None => return Err(self.err(format!("needs a `distribution`: one of {KINDS}"))),
+        };
+        let allowed: &[&str] = match kind.as_str() {
+            "uniform" | "log-uniform" => &["min", "max"],
+            "triangular" => &["min", "mode", "max"],
+            "normal" => &["mean", "std", "min", "max"],
+            "lognormal" => &["median", "geometric_std", "min", "max"],
+            "range" | "log-range" => &["from", "to", "count"],
+            "values" => &["values"],
+            "tolerance" => &["tolerance", "nominal", "shape"],
+            other => {
+                return Err(self.err(format!("unknown distribution \"{other}\": one of {KINDS}")));
+            }
+        };
+        if let Some(k) = table
+            .keys()
+            .find(|k| *k != "distribution" && !allowed.contains(&k.as_str()))
+        {
+            return Err(self.err(format!(
+                "unknown key `{k}` for a {kind} distribution: it takes {}",
+                allowed.join(", ")
+            )));
+        }
+        if kind == "values" {
+            return self.values(&table);
+        }
+        let required = |k: &str| -> Result<Written, ScenarioError> {
+            match table.get(k) {
+                Some(v) => self.written(k, v),
+                None => Err(self.err(format!("a {kind} distribution needs `{k}`"))),
+            }
+        };
+        let optional = |k: &str| table.get(k).map(|v| self.written(k, v)).transpose();
+
+        // the location parameters fix the unit; spreads convert into it
+        let (unit, dist) = match kind.as_str() {
+            "uniform" | "log-uniform" => {
+                let (min, max) = (required("min")?, required("max")?);
+                let unit = min.unit.clone();
+                let (min, max) = (self.at(&min, &unit)?, self.at(&max, &unit)?);
+                let d = if kind == "uniform" {
+                    Distribution::Uniform { min, max }
+                } else {
+                    Distribution::LogUniform { min, max }
+                };
+                (unit, d)
+            }
+            "triangular" => {
+                let (min, mode, max) = (required("min")?, required("mode")?, required("max")?);
+                let unit = mode.unit.clone();
+                (
+                    unit.clone(),
+                    Distribution::Triangular {
+                        min: self.at(&min, &unit)?,
+                        mode: self.at(&mode, &unit)?,
+                        max: self.at(&max, &unit)?,
+                    },
+                )
+            }
+            "normal" => {
+                let mean = required("mean")?;
+                let unit = mean.unit.clone();
+                let (lo, hi) = self.bounds(optional("min")?, optional("max")?, &unit)?;
+                (
+                    unit.clone(),
+                    Distribution::Normal {
+                        mean: mean.value,
+                        std: self.spread(&required("std")?, &unit)?,
+                        lo,
+                        hi,
+                    },
+                )
+            }
+            "lognormal" => {
+                let median = required("median")?;
+                let unit = median.unit.clone();
+                let gsd = required("geometric_std")?;
+                if !gsd.unit.is_empty() {
+                    return Err(self.err("geometric_std is a factor (a bare number > 1)"));
+                }
+                let (lo, hi) = self.bounds(optional("min")?, optional("max")?, &unit)?;
+                (
+                    unit.clone(),
+                    Distribution::LogNormal {
+                        median: median.value,
+                        geometric_std: gsd.value,
+                        lo: if lo.is_finite() { lo } else { 0.0 },
+                        hi,
+                    },
+                )
+            }
+            "range" | "log-range" => {
+                let (from, to) = (required("from")?, required("to")?);
+                let unit = from.unit.clone();
+                let (a, b) = (self.at(&from, &unit)?, self.at(&to, &unit)?);
+                let n = match table.get("count") {
+                    Some(toml::Value::Integer(n)) if (2..=1000).contains(n) => *n as usize,
+                    _ => {
+                        return Err(
+                            self.err("a range needs `count`, a whole number from 2 to 1000")
+                        );
+                    }
+                };
+                if kind == "log-range" && (a <= 0.0 || b <= 0.0) {
+                    return Err(self.err("a log-range needs from > 0 and to > 0"));
+                }
+                let levels = (0..n)
+                    .map(|k| {
+                        let f = k as f64 / (n - 1) as f64;
+                        if kind == "log-range" {
+                            a * (b / a).powf(f)
+                        } else {
+                            a + f * (b - a)
+                        }
+                    })
+                    .collect();
+                (unit, Distribution::Levels(levels))
+            }
+            _ => self.tolerance(&table)?,
+        };
+        dist.check().map_err(|m| self.err(format!("{kind}: {m}")))?;
+        Ok((
+            self.input(
+                InputKind::Quantity {
+                    unit: unit.clone(),
+                    scale: 0.0,
+                    offset: 0.0,
+                    dimension: None,
+                },
+                &unit,
+            )?,
+            dist,
+        ))
+    }
+
+    /// The input with its SI conversion for the tables.
+    fn input(&self, kind: InputKind, unit: &str) -> Result<StudyInput, ScenarioError> {
+        let kind = match kind {
+            InputKind::Quantity { .. } if unit.is_empty() => InputKind::Quantity {
+                unit: String::new(),
+                scale: 1.0,
+                offset: 0.0,
+                dimension: None,
+            },
+            InputKind::Quantity { .. } => {
+                let (scale, dimension) = units::parse_unit(unit)
+                    .map_err(|e| self.err(format!("unit \"{unit}\": {e}")))?;
+                let absolute = dimension == Dimension::TEMPERATURE
+                    && !TEMPERATURE_DIFFERENCES.contains(&self.key);
+                let (scale, offset) = if absolute {
+                    let k0 = units::absolute_temperature(0.0, unit)
+                        .map_err(|e| self.err(e.to_string()))?;
+                    let k1 = units::absolute_temperature(1.0, unit)
+                        .map_err(|e| self.err(e.to_string()))?;
+                    (k1 - k0, k0)
+                } else {
+                    (scale, 0.0)
+                };
+                InputKind::Quantity {
+                    unit: unit.to_owned(),
+                    scale,
+                    offset,
+                    dimension: Some(dimension),
+                }
+            }
+            words => words,
+        };
+        Ok(StudyInput {
+            key: self.key.to_owned(),
+            line: self.source.line(self.span.start),
+            kind,
+        })
+    }
+
+    fn written(&self, k: &str, v: &toml::Value) -> Result<Written, ScenarioError> {
+        match v {
+            toml::Value::Integer(i) => Ok(Written {
+                value: *i as f64,
+                unit: String::new(),
+            }),
+            toml::Value::Float(f) if f.is_finite() => Ok(Written {
+                value: *f,
+                unit: String::new(),
+            }),
+            toml::Value::String(s) => {
+                let (value, unit) = units::split_quantity(s)
+                    .map_err(|e| self.err(format!("`{k}` = \"{s}\": {e}")))?;
+                Ok(Written {
+                    value,
+                    unit: unit.to_owned(),
+                })
+            }
+            _ => Err(self.err(format!(
+                "`{k}` must be a number or a quantity such as \"0.8 um\""
+            ))),
+        }
+    }
+
+    /// A location parameter in `unit`.
+    fn at(&self, w: &Written, unit: &str) -> Result<f64, ScenarioError> {
+        if w.unit == unit {
+            return Ok(w.value);
+        }
+        let (from, to) = self.units_pair(&w.unit, unit)?;
+        let absolute =
+            from.1 == Dimension::TEMPERATURE && !TEMPERATURE_DIFFERENCES.contains(&self.key);
+        if absolute {
+            let k = |x: f64, u: &str| {
+                units::absolute_temperature(x, u).map_err(|e| self.err(e.to_string()))
+            };
+            let kelvin = k(w.value, &w.unit)?;
+            let (k0, k1) = (k(0.0, unit)?, k(1.0, unit)?);
+            return Ok((kelvin - k0) / (k1 - k0));
+        }
+        Ok(w.value * from.0 / to.0)
+    }
+
+    /// A spread (std, band) in `unit`: a difference, scaled only.
+    fn spread(&self, w: &Written, unit: &str) -> Result<f64, ScenarioError> {
+        if w.unit == unit {
+            return Ok(w.value);
+        }
+        let (from, to) = self.units_pair(&w.unit, unit)?;
+        Ok(w.value * from.0 / to.0)
+    }
+
+    /// The SI factors and dimensions of two units of the same quantity ("" = SI, taking the
+    /// other's dimension).
+    fn units_pair(&self, a: &str, b: &str) -> Result<(UnitFactor, UnitFactor), ScenarioError> {
+        let parse =
+            |u: &str| units::parse_unit(u).map_err(|e| self.err(format!("unit \"{u}\": {e}")));
+        let (pa, pb) = match (a.is_empty(), b.is_empty()) {
+            (true, true) => {
+                return Ok((
+                    (1.0, Dimension::DIMENSIONLESS),
+                    (1.0, Dimension::DIMENSIONLESS),
+                ));
+            }
+            (true, false) => {
+                let pb = parse(b)?;
+                ((1.0, pb.1), pb)
+            }
+            (false, true) => {
+                let pa = parse(a)?;
+                (pa, (1.0, pa.1))
+            }
+            (false, false) => (parse(a)?, parse(b)?),
+        };
+        if pa.1 != pb.1 {
+            return Err(self.err(format!(
+                "units \"{a}\" and \"{b}\" measure different quantities ({} and {})",
+                pa.1.describe(),
+                pb.1.describe()
+            )));
+        }
+        Ok((pa, pb))
+    }
+
+    fn bounds(
+        &self,
+        min: Option<Written>,
+        max: Option<Written>,
+        unit: &str,
+    ) -> Result<(f64, f64), ScenarioError> {
+        Ok((
+            min.map(|m| self.at(&m, unit))
+                .transpose()?
+                .unwrap_or(f64::NEG_INFINITY),
+            max.map(|m| self.at(&m, unit))
+                .transpose()?
+                .unwrap_or(f64::INFINITY),
+        ))
+    }
+
+    /// `tolerance = "±0.08 mm"` (or `"scenario"`: the base's `<key>_tolerance`) about `nominal`
+    /// (default: the base's value): `shape = "normal"` (default; the band is ±3σ, truncated
+    /// there) or `"uniform"`.
+    fn tolerance(&self, table: &toml::Table) -> Result<(String, Distribution), ScenarioError> {
+        let nominal = match table.get("nominal") {
+            Some(v) => self.written("nominal", v)?,
+            None => match get(self.base, self.key) {
+                Some(v) => self.written(self.key, v).map_err(|_| {
+                    self.err("the base scenario's value is not a number: give `nominal`")
+                })?,
+                None => {
+                    return Err(self.err(
+                        "a tolerance band needs a nominal value: give `nominal` or set the key \
+                         in the base scenario",
+                    ));
+                }
+            },
+        };
+        let unit = nominal.unit.clone();
+        let band_text = match table.get("tolerance") {
+            Some(toml::Value::String(s)) => s.trim().to_owned(),
+            Some(toml::Value::Integer(i)) => i.to_string(),
+            Some(toml::Value::Float(f)) => f.to_string(),
+            _ => return Err(self.err("`tolerance` must be a band such as \"±0.08 mm\"")),
+        };
+        let band = if band_text == "scenario" {
+            let key = format!("{}_tolerance", self.key);
+            match get(self.base, &key) {
+                Some(v) => self.written(&key, v)?,
+                None => {
+                    return Err(self.err(format!(
+                        "tolerance = \"scenario\" reads `{key}` from the base scenario, which \
+                         has none"
+                    )));
+                }
+            }
+        } else {
+            let stripped = band_text
+                .strip_prefix('±')
+                .or_else(|| band_text.strip_prefix("+/-"))
+                .unwrap_or(&band_text);
+            self.written("tolerance", &toml::Value::String(stripped.to_owned()))?
+        };
+        let b = self.spread(&band, &unit)?;
+        if b.is_nan() || b <= 0.0 {
+            return Err(self.err("the tolerance band must be > 0"));
+        }
+        let n = nominal.value;
+        let shape = match table.get("shape") {
+            None => "normal",
+            Some(toml::Value::String(s)) if s == "normal" || s == "uniform" => s.as_str(),
+            Some(_) => return Err(self.err("`shape` is \"normal\" (±3σ) or \"uniform\"")),
+        };
+        let d = if shape == "uniform" {
+            Distribution::Uniform {
+                min: n - b,
+                max: n + b,
+            }
+        } else {
+            Distribution::Normal {
+                mean: n,
+                std: b / 3.0,
+                lo: n - b,
+                hi: n + b,
+            }
+        };
+        Ok((unit, d))
+    }
+
+    /// `values = [...]`: quantities (all of one quantity) or words, equally likely.
+    fn values(&self, table: &toml::Table) -> Result<(StudyInput, Distribution), ScenarioError> {
+        let list = match table.get("values") {
+            Some(toml::Value::Array(a)) if !a.is_empty() => a,
+            _ => return Err(self.err("`values` must be a non-empty list")),
+        };
+        let words: Vec<Option<&str>> = list
+            .iter()
+            .map(|v| match v {
+                toml::Value::String(s) if units::split_quantity(s).is_err() => Some(s.as_str()),
+                _ => None,
+            })
+            .collect();
+        if words.iter().all(Option::is_some) {
+            let words: Vec<String> = words.into_iter().flatten().map(str::to_owned).collect();
+            let d = Distribution::Levels((0..words.len()).map(|i| i as f64).collect());
+            return Ok((self.input(InputKind::Words(words), "")?, d));
+        }
+        if words.iter().any(Option::is_some) {
+            return Err(self.err("`values` mixes words and numbers"));
+        }
+        let written: Vec<Written> = list
+            .iter()
+            .map(|v| self.written("values", v))
+            .collect::<Result<_, _>>()?;
+        let unit = written[0].unit.clone();
+        let levels = written
+            .iter()
+            .map(|w| self.at(w, &unit))
+            .collect::<Result<Vec<_>, _>>()?;
+        let d = Distribution::Levels(levels);
+        d.check().map_err(|m| self.err(m))?;
+        let input = self.input(
+            InputKind::Quantity {
+                unit: unit.clone(),
+                scale: 0.0,
+                offset: 0.0,
+                dimension: None,
+            },
+            &unit,
+        )?;
+        Ok((input, d))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_round_trip_through_their_text() {
+        for x in [
+            0.25,
+            8e-7,
+            1.0 / 3.0,
+            353.15,
+            1e7,
+            0.0,
+            -2.5e-12,
+            123456.789,
+            5e-324,
+        ] {
+            let t = units::exact(x);
+            assert_eq!(t.parse::<f64>().ok(), Some(x), "{t}");
+            // and through a quantity, as a case's scenario reads it
+            assert_eq!(
+                units::split_quantity(&format!("{t} um")).ok(),
+                Some((x, "um"))
+            );
+        }
+    }
+
+    #[test]
+    fn set_creates_tables_and_replaces_a_compound() {
+        let mut t: toml::Table = "[material]\nlibrary = \"nbr-70\"\nasperity_modulus = \"follow\"\n[seal]\nsqueeze = 0.2\n"
+            .parse()
+            .unwrap();
+        set(
+            &mut t,
+            "model.percolation_threshold",
+            toml::Value::Float(0.42),
+        )
+        .unwrap();
+        set(
+            &mut t,
+            "material.file",
+            toml::Value::String("x.toml".into()),
+        )
+        .unwrap();
+        assert_eq!(
+            get(&t, "model.percolation_threshold"),
+            Some(&toml::Value::Float(0.42))
+        );
+        assert!(get(&t, "material.library").is_none());
+        assert!(get(&t, "material.asperity_modulus").is_some());
+        assert!(set(&mut t, "seal.squeeze.x", toml::Value::Float(1.0)).is_err());
+    }
+}

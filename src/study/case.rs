@@ -1,0 +1,80 @@
+//! One case of a study and what the study keeps of its life run (docs/model.md §14.2).
+
+use crate::simulate::{FailureMode, LifeResult};
+
+/// A per-case table cell of a varied input: an SI number, or a word (a compound id, a level).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Cell {
+    Number(f64),
+    Word(String),
+}
+
+/// What a study keeps of one case's life run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CaseOutcome {
+    /// The case's index in the study (0-based).
+    pub index: usize,
+    /// The varied inputs' values, in input order.
+    pub inputs: Vec<Cell>,
+    /// The time to failure, or the end of the run for a survivor (censored there) \[s\].
+    pub life: f64,
+    /// How it failed; `None`: it survived the run (censored).
+    pub mode: Option<FailureMode>,
+    /// The leak rate at each of the study's report times \[m³/s\]; `None` past the run's end.
+    pub leak_rates: Vec<Option<f64>>,
+    /// The sealing force per unit length at the end of the run \[N/m\].
+    pub final_force: f64,
+    /// That force over the force at the retained-force reference time (1 at installation).
+    pub retained_force: f64,
+    /// The leaked volume at the end of the run \[m³\].
+    pub leaked_volume: f64,
+    /// Compression set at the end of the run (with ageing), else `None`.
+    pub compression_set: Option<f64>,
+    /// The ids of the validity limits the case crossed (docs/model.md §9), sorted.
+    pub warnings: Vec<String>,
+}
+
+impl CaseOutcome {
+    /// The outcome of case `index` with `inputs` from its life run, its leak rates taken at
+    /// `report_times` \[s\].
+    pub fn new(index: usize, inputs: Vec<Cell>, result: &LifeResult, report_times: &[f64]) -> Self {
+        let end = result.rows.last();
+        let end_time = end.map_or(0.0, |r| r.time);
+        let (life, mode) = match result.failure {
+            Some(f) => (f.time, Some(f.mode)),
+            None => (end_time, None),
+        };
+        let final_force = end.map_or(0.0, |r| r.sealing_force);
+        let mut warnings: Vec<String> = result
+            .findings
+            .iter()
+            .map(|f| f.limit.id().to_owned())
+            .collect();
+        warnings.sort();
+        warnings.dedup();
+        CaseOutcome {
+            index,
+            inputs,
+            life,
+            mode,
+            leak_rates: report_times
+                .iter()
+                .map(|&t| (t <= end_time).then(|| result.leak_rate_at(t)).flatten())
+                .collect(),
+            final_force,
+            retained_force: if result.reference_force > 0.0 {
+                final_force / result.reference_force
+            } else {
+                0.0
+            },
+            leaked_volume: result.leaked_volume(),
+            compression_set: end.and_then(|r| r.compression_set),
+            warnings,
+        }
+    }
+
+    /// Whether the case failed within its run.
+    pub fn failed(&self) -> bool {
+        self.mode.is_some()
+    }
+}
