@@ -635,6 +635,7 @@ impl Source<'_> {
             lift_off: raw.lift_off.as_ref().is_some_and(|b| *b.get_ref()),
             // on unless switched off: it applies to groove-seated rings only
             extrusion: raw.extrusion.as_ref().is_none_or(|b| *b.get_ref()),
+            stop_at_failure: false,
         })
     }
 
@@ -1386,6 +1387,7 @@ squeeze = 0.2
                 max_compression_set: None,
                 lift_off: true,
                 extrusion: true,
+                stop_at_failure: false,
             }
         );
         // the extrusion check is on unless switched off

@@ -19,6 +19,11 @@
 //! exactly the rules and defaults of a scenario file. Setting `material.library` or
 //! `material.file` replaces the compound (the `[material]` table keeps only its
 //! `asperity_modulus`).
+//!
+//! Other keys: `name`, `levels` (a grid's levels of a continuous input, default 3),
+//! `confidence` (of the bands and bounds, default 0.95), `report_times` (the per-case leak rates,
+//! default 1 day, 1 year, 10 years), `run_after_failure` (default false: a case ends at its
+//! failure).
 
 use super::error::Source;
 use super::{Scenario, ScenarioError};
@@ -52,6 +57,7 @@ struct RawStudy {
     seed: Option<Spanned<i64>>,
     confidence: Option<Spanned<f64>>,
     report_times: Option<Spanned<Vec<Spanned<String>>>>,
+    run_after_failure: Option<Spanned<bool>>,
     vary: Spanned<BTreeMap<String, Spanned<toml::Value>>>,
 }
 
@@ -146,6 +152,9 @@ pub struct Study {
     pub report_times: Vec<f64>,
     /// Two-sided confidence of the bands and bounds (default 0.95).
     pub confidence: f64,
+    /// Run every case to its duration (`run_after_failure = true`); by default a case ends at
+    /// its failure, which is all a life distribution needs.
+    pub run_after_failure: bool,
     /// A hash of the study file, the base scenario and this build's version: shards of
     /// different studies never merge.
     pub fingerprint: String,
@@ -320,6 +329,7 @@ impl Study {
             plan,
             report_times,
             confidence,
+            run_after_failure: raw.run_after_failure.as_ref().is_some_and(|b| *b.get_ref()),
             fingerprint,
         };
         // Every key path must be one a scenario accepts: each input alone at its median.
@@ -354,7 +364,7 @@ impl Study {
         }
         let text =
             toml::to_string(&table).map_err(|e| self.error(assignments[0].0, e.to_string()))?;
-        Scenario::from_str(&text, &self.base_path).map_err(|e| {
+        let mut scenario = Scenario::from_str(&text, &self.base_path).map_err(|e| {
             // the input the scenario's message names, else the first
             let (input, _) = match &e {
                 ScenarioError::Invalid { key: Some(k), .. } => assignments
@@ -388,7 +398,9 @@ impl Study {
                     self.base_path.display()
                 ),
             )
-        })
+        })?;
+        scenario.life.failure.stop_at_failure = !self.run_after_failure;
+        Ok(scenario)
     }
 
     fn error(&self, input: &StudyInput, message: impl Into<String>) -> ScenarioError {
@@ -634,11 +646,13 @@ impl Entry<'_> {
                 let levels = (0..n)
                     .map(|k| {
                         let f = k as f64 / (n - 1) as f64;
-                        if kind == "log-range" {
+                        let x = if kind == "log-range" {
                             a * (b / a).powf(f)
                         } else {
                             a + f * (b - a)
-                        }
+                        };
+                        // 0.1 … 3.2 in 6 steps: 0.8, not 0.7999999999999999
+                        format!("{x:.11e}").parse().unwrap_or(x)
                     })
                     .collect();
                 (unit, Distribution::Levels(levels))

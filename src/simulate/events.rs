@@ -68,6 +68,9 @@ pub struct FailureCriteria {
     pub lift_off: bool,
     /// A groove-seated ring's clearance gap beyond the extrusion chart's limit (§6.3).
     pub extrusion: bool,
+    /// End the run at the step that finds the failure (a study's cases: what follows a failure
+    /// is not the life's); `false`: run the whole duration.
+    pub stop_at_failure: bool,
 }
 
 /// What the criteria look at, at one instant.

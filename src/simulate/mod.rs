@@ -389,7 +389,11 @@ impl<'a> Simulator<'a> {
         let mut last = first;
 
         let outputs = p.time.times();
-        for &target in &outputs[1..] {
+        let stop = p.failure.stop_at_failure;
+        'grid: for &target in &outputs[1..] {
+            if stop && failure.is_some() {
+                break;
+            }
             for t in self.substeps(state.time, target) {
                 let before = state.clone();
                 let before_snap = last;
@@ -399,6 +403,11 @@ impl<'a> Simulator<'a> {
                     failure = self.locate_failure(&before, &before_snap, &state, &snap);
                 }
                 last = snap;
+                if stop && failure.is_some() {
+                    // the run ends on the step that found the failure
+                    rows.push(self.row(&state, &last));
+                    break 'grid;
+                }
             }
             rows.push(self.row(&state, &last));
         }

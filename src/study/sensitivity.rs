@@ -149,11 +149,14 @@ mod tests {
 
     #[test]
     fn the_correlation_ratio_has_its_limits_and_ranks_a_decisive_compound_first() {
-        // the group decides the rank entirely: η = 1; equal group mean ranks: η = 0
+        // the group decides the life entirely (no spread within groups): η = 1; ranks 1…4 in
+        // two groups: η² = 4/5 (between 2·1² + 2·1², total 5); equal group mean ranks: η = 0
         assert_eq!(
-            correlation_ratio(&[0, 0, 1, 1], &[1.0, 2.0, 3.0, 4.0]),
+            correlation_ratio(&[0, 0, 1, 1], &[1.0, 1.0, 3.0, 3.0]),
             Some(1.0)
         );
+        let eta = correlation_ratio(&[0, 0, 1, 1], &[1.0, 2.0, 3.0, 4.0]).unwrap();
+        assert!((eta - 0.8f64.sqrt()).abs() < 1e-15);
         assert_eq!(
             correlation_ratio(&[0, 1, 1, 0], &[1.0, 2.0, 3.0, 4.0]),
             Some(0.0)
