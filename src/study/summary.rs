@@ -196,3 +196,85 @@ fn column(outcomes: &[CaseOutcome], j: usize) -> Column {
             .collect(),
     )
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::math::rng::SplitMix64;
+
+    /// A Weibull(β, η) life by inversion, censored at `cut`.
+    fn weibull_life(rng: &mut SplitMix64, beta: f64, eta: f64, cut: f64) -> Observation {
+        let t = eta * (-rng.uniform().ln()).powf(1.0 / beta);
+        Observation {
+            time: t.min(cut),
+            failed: t <= cut,
+        }
+    }
+
+    #[test]
+    fn the_weibull_check_accepts_weibull_samples_and_rejects_a_mixture() {
+        let mut rng = SplitMix64(3);
+        let studies = 300;
+        let accepted = (0..studies)
+            .filter(|_| {
+                let obs: Vec<Observation> = (0..200)
+                    .map(|_| weibull_life(&mut rng, 2.5, 10.0, 12.0))
+                    .collect();
+                let km = KaplanMeier::new(&obs);
+                WeibullFit::new(&obs, &km).is_some_and(|w| w.fits)
+            })
+            .count();
+        // the test's level is 5 % for a fully specified law; with fitted parameters it rejects
+        // less often
+        assert!(
+            accepted as f64 >= 0.95 * studies as f64,
+            "{accepted}/{studies}"
+        );
+        // two populations a decade apart (a bimodal life): rejected
+        let rejected = (0..100)
+            .filter(|_| {
+                let obs: Vec<Observation> = (0..200)
+                    .map(|i| weibull_life(&mut rng, 5.0, if i % 2 == 0 { 1.0 } else { 10.0 }, 20.0))
+                    .collect();
+                let km = KaplanMeier::new(&obs);
+                WeibullFit::new(&obs, &km).is_some_and(|w| !w.fits)
+            })
+            .count();
+        eprintln!(
+            "Weibull check: {accepted}/{studies} Weibull samples accepted, {rejected}/100 mixtures rejected"
+        );
+        assert!(rejected >= 95, "{rejected}/100");
+    }
+
+    #[test]
+    fn survivors_are_censored_not_failures() {
+        let outcome = |life: f64, mode: Option<FailureMode>, x: f64| CaseOutcome {
+            index: 0,
+            inputs: vec![Cell::Number(x)],
+            life,
+            mode,
+            leak_rates: vec![],
+            final_force: 1.0,
+            retained_force: 1.0,
+            leaked_volume: 0.0,
+            compression_set: None,
+            warnings: vec!["x".into()],
+        };
+        let cases = vec![
+            outcome(5.0, Some(FailureMode::LeakRate), 3.0),
+            outcome(10.0, None, 1.0),
+            outcome(10.0, None, 2.0),
+            outcome(2.0, Some(FailureMode::LiftOff), 4.0),
+        ];
+        let s = StudySummary::new(&cases, 0.95);
+        assert_eq!((s.cases, s.failures, s.censored), (4, 2, 2));
+        // S after the two failures: (1 − 1/4)(1 − 1/3) = 1/2, the survivors still at risk
+        let last = s.kaplan_meier.steps().last().copied().unwrap();
+        assert!((last.survival - 0.5).abs() < 1e-15);
+        assert_eq!(last.at_risk, 3);
+        assert_eq!(s.b_lives[2].1.estimate, Some(5.0));
+        assert_eq!(s.warnings, vec![("x".to_owned(), 4)]);
+        // the input rises as the life falls: ρ = −1 with the survivors' tie → −0.95
+        assert!(s.sensitivity[0].value.unwrap() < -0.9);
+    }
+}

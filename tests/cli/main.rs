@@ -29,6 +29,7 @@ mod ranges;
 mod rubber;
 mod run;
 mod small_defects;
+mod study;
 mod surface;
 mod swell;
 mod tradeoff;
