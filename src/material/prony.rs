@@ -32,13 +32,25 @@ impl fmt::Display for PronyError {
 impl std::error::Error for PronyError {}
 
 /// A Prony series with its terms sorted by τ (see the module docs).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct Prony {
     long_term: f64,
     terms: Vec<PronyTerm>,
     /// E_i and 1/τ_i as separate arrays: E(ξ) is a vectorisable multiply–exp–add loop.
     moduli: Vec<f64>,
     rates: Vec<f64>,
+    /// The creep series, computed once and shared by clones (a study's cases share their
+    /// compound's): not part of the series' identity.
+    creep: std::sync::Arc<std::sync::OnceLock<Creep>>,
+}
+
+impl PartialEq for Prony {
+    fn eq(&self, other: &Self) -> bool {
+        self.long_term == other.long_term
+            && self.terms == other.terms
+            && self.moduli == other.moduli
+            && self.rates == other.rates
+    }
 }
 
 impl Prony {
@@ -88,6 +100,7 @@ impl Prony {
             terms: sorted,
             moduli,
             rates,
+            creep: Default::default(),
         })
     }
 
@@ -113,6 +126,7 @@ impl Prony {
             moduli: terms.iter().map(|t| t.modulus).collect(),
             rates: self.rates.clone(),
             terms,
+            creep: Default::default(),
         }
     }
 
@@ -179,8 +193,13 @@ impl Prony {
         self.loss(omega) / self.storage(omega)
     }
 
-    /// The creep compliance as a retardation series (see the module docs).
+    /// The creep compliance as a retardation series (see the module docs); computed on the
+    /// first call and kept.
     pub fn creep(&self) -> Creep {
+        self.creep.get_or_init(|| self.compute_creep()).clone()
+    }
+
+    fn compute_creep(&self) -> Creep {
         let n = self.terms.len();
         let mut retardation = Vec::with_capacity(n);
         for j in 0..n {

@@ -400,6 +400,12 @@ impl Study {
             )
         })?;
         scenario.life.failure.stop_at_failure = !self.run_after_failure;
+        // the base's compound, with what it has computed once (its creep series), when the
+        // case did not change it
+        let base = &self.base_scenario.life.material.prony;
+        if scenario.life.material.prony == *base {
+            scenario.life.material.prony = base.clone();
+        }
         Ok(scenario)
     }
 

@@ -38,6 +38,7 @@ fn shipped_scenarios() -> Vec<PathBuf> {
                 walk(&path, out);
             } else if path.extension().is_some_and(|e| e == "toml")
                 && !path.to_string_lossy().ends_with("-figures.toml")
+                && !path.to_string_lossy().ends_with(".study.toml")
             {
                 out.push(path);
             }

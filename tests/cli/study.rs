@@ -432,3 +432,24 @@ fn the_slurm_script_submits_an_array_and_a_dependent_merge() {
     let text = study_ok(&[&"slurm", &study, &"--shards", &"50"]);
     assert!(text.contains("--array=1-10 "), "{text}");
 }
+
+#[test]
+fn every_shipped_study_runs() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/studies");
+    let mut seen = 0;
+    for entry in std::fs::read_dir(&dir).unwrap() {
+        let path = entry.unwrap().path();
+        if !path.to_string_lossy().ends_with(".study.toml") {
+            continue;
+        }
+        seen += 1;
+        // a slice of each (the whole runs are the README's timings)
+        let d = Dir::new();
+        let part = d.path("part.csv");
+        study_ok(&[&path, &"--shard", &"1/100", &"-o", &part]);
+        let text = d.read("part.csv");
+        crate::support::no_nan(&text, &path.display().to_string());
+        assert!(text.lines().count() >= 2, "{}: {text}", path.display());
+    }
+    assert!(seen >= 3, "{seen} studies");
+}

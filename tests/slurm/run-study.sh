@@ -15,7 +15,7 @@ trap 'rm -rf "$WORK"' EXIT
 # a small study of the shipped tolerance base: 24 cases, 4 shards
 sed -e 's/^samples = .*/samples = 24/' \
     -e "s#^base = .*#base = \"$PWD/scenarios/studies/as568-225-face-water-80c.toml\"#" \
-    scenarios/studies/as568-225-squeeze-tolerance.toml > "$WORK/study.toml"
+    scenarios/studies/as568-225-squeeze-tolerance.study.toml > "$WORK/study.toml"
 
 set -x
 "$SEALSIM" study slurm "$WORK/study.toml" --shards 4 --time 00:10:00 \
