@@ -21,7 +21,8 @@
 //! `asperity_modulus`).
 //!
 //! Other keys: `name`, `levels` (a grid's levels of a continuous input, default 3),
-//! `confidence` (of the bands and bounds, default 0.95), `report_times` (the per-case leak rates,
+//! `correlations = [{ inputs = ["a", "b"], spearman = 0.5 }]` (Monte Carlo only; a Gaussian
+//! copula, [`crate::study::design`]), `confidence` (of the bands and bounds, default 0.95), `report_times` (the per-case leak rates,
 //! default 1 day, 1 year, 10 years), `run_after_failure` (default false: a case ends at its
 //! failure).
 
@@ -58,7 +59,16 @@ struct RawStudy {
     confidence: Option<Spanned<f64>>,
     report_times: Option<Spanned<Vec<Spanned<String>>>>,
     run_after_failure: Option<Spanned<bool>>,
+    correlations: Option<Spanned<Vec<Spanned<RawCorrelation>>>>,
     vary: Spanned<BTreeMap<String, Spanned<toml::Value>>>,
+}
+
+/// `correlations = [{ inputs = ["a", "b"], spearman = 0.5 }]`.
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawCorrelation {
+    inputs: Vec<String>,
+    spearman: f64,
 }
 
 /// How an input's values reach the scenario and the per-case table.
@@ -293,12 +303,57 @@ impl Study {
             inputs.push(input);
             distributions.push(distribution);
         }
+        let correlation = match &raw.correlations {
+            None => None,
+            Some(list) => {
+                if design != Design::MonteCarlo {
+                    return Err(source.error(
+                        list.span(),
+                        "correlations",
+                        "correlated inputs need design = \"monte-carlo\"",
+                    ));
+                }
+                let mut pairs = Vec::new();
+                for c in list.get_ref() {
+                    let bad = |m: String| source.error(c.span(), "correlations", m);
+                    let raw = c.get_ref();
+                    let index = |name: &String| {
+                        inputs
+                            .iter()
+                            .position(|i: &StudyInput| i.key == *name)
+                            .ok_or_else(|| bad(format!("\"{name}\" is not an input in [vary]")))
+                    };
+                    let [a, b] = raw.inputs.as_slice() else {
+                        return Err(bad("`inputs` names two inputs".into()));
+                    };
+                    let (i, j) = (index(a)?, index(b)?);
+                    if i == j {
+                        return Err(bad("`inputs` names two different inputs".into()));
+                    }
+                    if !(raw.spearman.abs() < 1.0) {
+                        return Err(bad("`spearman` must lie strictly between −1 and 1".into()));
+                    }
+                    if pairs
+                        .iter()
+                        .any(|&(p, q, _)| (p, q) == (i, j) || (p, q) == (j, i))
+                    {
+                        return Err(bad(format!("{a} and {b} are correlated twice")));
+                    }
+                    pairs.push((i, j, raw.spearman));
+                }
+                Some(
+                    crate::study::design::correlation_factor(inputs.len(), &pairs)
+                        .map_err(|m| source.error(list.span(), "correlations", m))?,
+                )
+            }
+        };
         let plan = Plan {
             design,
             inputs: distributions,
             samples,
             levels,
             seed,
+            correlation,
         };
         if plan.cases() > 10_000_000 {
             return Err(source.error(

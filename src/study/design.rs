@@ -10,6 +10,13 @@
 //! * **grid**: the full factorial of each input's levels (its listed values, or `levels`
 //!   quantiles at the stratum midpoints `(k + ½)/m`), the first input varying slowest.
 //!
+//! **Correlated inputs** (Monte Carlo only) through a Gaussian copula: the uniforms become
+//! normal scores ε = Φ⁻¹(u), correlated as z = Lε (L the Cholesky factor of the normal-scores
+//! correlation matrix R), and back to uniforms Φ(z); every marginal stays as given. A target
+//! Spearman ρ_s between two inputs is R = 2 sin(πρ_s/6), exact for the copula (the rank
+//! correlation is invariant under the marginals' monotone quantile maps) [recalled: Kruskal 1958
+//! for ρ_s of a bivariate normal].
+//!
 //! Determinism: case i's uniforms come from ChaCha8 seeded with the study's seed on stream i,
 //! and the permutations from streams above 2⁴⁸; so a case's values depend only on the seed,
 //! its index and the design — never on the order cases run in, the thread count or the shard.
@@ -223,6 +230,30 @@ pub struct Plan {
     /// Grid: the number of levels of each continuous input (a list keeps its own).
     pub levels: usize,
     pub seed: u64,
+    /// Monte Carlo: the lower Cholesky factor of the inputs' normal-scores correlation matrix
+    /// (row-major, inputs × inputs), see [`correlation_factor`]; `None`: independent inputs.
+    pub correlation: Option<Vec<f64>>,
+}
+
+/// The lower Cholesky factor (row-major) of the normal-scores correlation matrix of `k` inputs
+/// with the target Spearman rank correlations `pairs` (i, j, ρ_s): `R_ij = 2 sin(πρ_s/6)`, 1 on
+/// the diagonal, 0 elsewhere. `Err` when R is not positive definite (the correlations
+/// contradict each other).
+pub fn correlation_factor(k: usize, pairs: &[(usize, usize, f64)]) -> Result<Vec<f64>, String> {
+    let mut r = nalgebra::DMatrix::<f64>::identity(k, k);
+    for &(i, j, rho) in pairs {
+        let normal = 2.0 * (std::f64::consts::PI * rho / 6.0).sin();
+        r[(i, j)] = normal;
+        r[(j, i)] = normal;
+    }
+    let l = r
+        .cholesky()
+        .ok_or("the correlations contradict each other (their matrix is not positive definite)")?
+        .l();
+    Ok((0..k)
+        .flat_map(|i| (0..k).map(move |j| (i, j)))
+        .map(|(i, j)| l[(i, j)])
+        .collect())
 }
 
 impl Plan {
@@ -260,9 +291,15 @@ impl Plan {
             Design::MonteCarlo => range
                 .map(|i| {
                     let mut rng = self.case_stream(i);
+                    let mut u: Vec<f64> =
+                        self.inputs.iter().map(|_| open_uniform(&mut rng)).collect();
+                    if let Some(l) = &self.correlation {
+                        u = correlated(l, &u);
+                    }
                     self.inputs
                         .iter()
-                        .map(|d| d.quantile(open_uniform(&mut rng)))
+                        .zip(u)
+                        .map(|(d, u)| d.quantile(u))
                         .collect()
                 })
                 .collect(),
@@ -304,6 +341,20 @@ impl Plan {
     }
 }
 
+/// Independent uniforms `u` → correlated ones through the Gaussian copula with Cholesky factor
+/// `l` (row-major): Φ(L Φ⁻¹(u)), kept inside (0, 1).
+fn correlated(l: &[f64], u: &[f64]) -> Vec<f64> {
+    let n = standard();
+    let k = u.len();
+    let eps: Vec<f64> = u.iter().map(|&p| normal_quantile(&n, p)).collect();
+    (0..k)
+        .map(|i| {
+            let z: f64 = (0..=i).map(|j| l[i * k + j] * eps[j]).sum();
+            n.cdf(z).clamp(f64::MIN_POSITIVE, 1.0 - f64::EPSILON / 2.0)
+        })
+        .collect()
+}
+
 /// A uniform in (0, 1): 53 random bits, centred in their cell.
 fn open_uniform(rng: &mut ChaCha8Rng) -> f64 {
     ((rng.next_u64() >> 11) as f64 + 0.5) * (1.0 / (1u64 << 53) as f64)
@@ -327,6 +378,7 @@ mod tests {
             samples,
             levels: 3,
             seed: 7,
+            correlation: None,
         }
     }
 
@@ -504,6 +556,41 @@ mod tests {
         // 4 standard errors
         assert!((mean - 0.25).abs() < 4.0 * 0.02 / (20_000f64).sqrt());
         assert!((var.sqrt() / 0.02 - 1.0).abs() < 4.0 / (2.0 * 20_000f64).sqrt());
+    }
+
+    #[test]
+    fn correlated_inputs_have_the_asked_rank_correlation_and_keep_their_marginals() {
+        let n = 20_000;
+        let mut p = plan(
+            Design::MonteCarlo,
+            vec![
+                Distribution::Uniform { min: 0.0, max: 1.0 },
+                Distribution::LogNormal {
+                    median: 1.0,
+                    geometric_std: 2.0,
+                    lo: 0.0,
+                    hi: f64::INFINITY,
+                },
+                Distribution::Uniform { min: 0.0, max: 1.0 },
+            ],
+            n,
+        );
+        p.correlation = Some(correlation_factor(3, &[(0, 1, 0.8), (1, 2, -0.3)]).unwrap());
+        let v = p.values(0..n);
+        let col = |j: usize| v.iter().map(|c| c[j]).collect::<Vec<f64>>();
+        let rho =
+            |a: usize, b: usize| crate::study::sensitivity::spearman(&col(a), &col(b)).unwrap();
+        // the sample ρ_s has a standard error ≈ 1/√n ≈ 0.007
+        assert!((rho(0, 1) - 0.8).abs() < 0.02, "{}", rho(0, 1));
+        assert!((rho(1, 2) + 0.3).abs() < 0.02, "{}", rho(1, 2));
+        // the marginals: the uniform's mean ½ and the log-normal's median 1
+        let mean = col(0).iter().sum::<f64>() / n as f64;
+        assert!((mean - 0.5).abs() < 0.01);
+        let mut x = col(1);
+        x.sort_by(f64::total_cmp);
+        assert!((x[n / 2] - 1.0).abs() < 0.05, "{}", x[n / 2]);
+        // contradicting correlations are refused
+        assert!(correlation_factor(3, &[(0, 1, 0.9), (1, 2, 0.9), (0, 2, -0.9)]).is_err());
     }
 
     #[test]

@@ -453,3 +453,61 @@ fn every_shipped_study_runs() {
     }
     assert!(seen >= 3, "{seen} studies");
 }
+
+#[test]
+fn correlated_inputs_follow_their_rank_correlation_and_bad_ones_are_refused() {
+    let d = Dir::new();
+    d.write("one.toml", &ONE_TERM.replace("DURATION", "1 day"));
+    let head = "base = \"one.toml\"\ndesign = \"monte-carlo\"\nsamples = 600\nseed = 3\n\
+                report_times = [\"1 h\"]\n[vary]\n\
+                \"environment.temperature\" = { distribution = \"normal\", mean = \"23 C\", std = \"5 K\" }\n\
+                \"seal.nominal_pressure\" = { distribution = \"uniform\", min = \"0.8 MPa\", max = \"1.2 MPa\" }\n";
+    let study = d.write(
+        "c.toml",
+        &format!(
+            "{head}[[correlations]]\ninputs = [\"environment.temperature\", \"seal.nominal_pressure\"]\nspearman = 0.7\n"
+        ),
+    );
+    let cases = d.path("cases.csv");
+    study_ok(&[&study, &"-o", &cases]);
+    let mut reader = csv::Reader::from_path(&cases).unwrap();
+    let (mut t, mut p) = (vec![], vec![]);
+    for r in reader.records() {
+        let r = r.unwrap();
+        t.push(r[1].parse::<f64>().unwrap());
+        p.push(r[2].parse::<f64>().unwrap());
+    }
+    let rho = sealsim::study::sensitivity::spearman(&t, &p).unwrap();
+    // 600 cases: the sample ρ_s has a standard error ≈ 0.03
+    assert!((rho - 0.7).abs() < 0.1, "{rho}");
+    // refused: a correlation with a Latin hypercube, an unknown input, contradicting ones
+    let out = d.path("x.csv");
+    let lhs = d.write(
+        "l.toml",
+        &std::fs::read_to_string(&study)
+            .unwrap()
+            .replace("monte-carlo", "latin-hypercube"),
+    );
+    let err = study_bad(&[&lhs, &"-o", &out]);
+    assert!(err.contains("l.toml:9: correlations"), "{err}");
+    let unknown = d.write(
+        "u.toml",
+        &std::fs::read_to_string(&study)
+            .unwrap()
+            .replace("\"seal.nominal_pressure\"]", "\"seal.width\"]"),
+    );
+    let err = study_bad(&[&unknown, &"-o", &out]);
+    assert!(err.contains("not an input"), "{err}");
+    let contradicting = d.write(
+        "k.toml",
+        &format!(
+            "{head}\"seal.width\" = {{ distribution = \"uniform\", min = \"0.9 mm\", max = \"1.1 mm\" }}\n\
+             [[correlations]]\ninputs = [\"environment.temperature\", \"seal.nominal_pressure\"]\nspearman = 0.9\n\
+             [[correlations]]\ninputs = [\"seal.nominal_pressure\", \"seal.width\"]\nspearman = 0.9\n\
+             [[correlations]]\ninputs = [\"environment.temperature\", \"seal.width\"]\nspearman = -0.9\n"
+        ),
+    );
+    let err = study_bad(&[&contradicting, &"-o", &out]);
+    assert!(err.contains("contradict"), "{err}");
+    assert!(!out.exists());
+}
