@@ -330,7 +330,7 @@ impl Study {
                     if i == j {
                         return Err(bad("`inputs` names two different inputs".into()));
                     }
-                    if !(raw.spearman.abs() < 1.0) {
+                    if raw.spearman.is_nan() || raw.spearman.abs() >= 1.0 {
                         return Err(bad("`spearman` must lie strictly between −1 and 1".into()));
                     }
                     if pairs
