@@ -721,57 +721,46 @@ impl Entry<'_> {
             _ => self.tolerance(&table)?,
         };
         dist.check().map_err(|m| self.err(format!("{kind}: {m}")))?;
-        Ok((
-            self.input(
-                InputKind::Quantity {
-                    unit: unit.clone(),
-                    scale: 0.0,
-                    offset: 0.0,
-                    dimension: None,
-                },
-                &unit,
-            )?,
-            dist,
-        ))
+        Ok((self.quantity_input(&unit)?, dist))
     }
 
-    /// The input with its SI conversion for the tables.
-    fn input(&self, kind: InputKind, unit: &str) -> Result<StudyInput, ScenarioError> {
-        let kind = match kind {
-            InputKind::Quantity { .. } if unit.is_empty() => InputKind::Quantity {
+    /// A quantity input in `unit` ("" = SI) with its SI conversion for the tables: a factor,
+    /// and for an absolute temperature in °C or °F an offset.
+    fn quantity_input(&self, unit: &str) -> Result<StudyInput, ScenarioError> {
+        if unit.is_empty() {
+            return Ok(self.with_kind(InputKind::Quantity {
                 unit: String::new(),
                 scale: 1.0,
                 offset: 0.0,
                 dimension: None,
-            },
-            InputKind::Quantity { .. } => {
-                let (scale, dimension) = units::parse_unit(unit)
-                    .map_err(|e| self.err(format!("unit \"{unit}\": {e}")))?;
-                let absolute = dimension == Dimension::TEMPERATURE
-                    && !TEMPERATURE_DIFFERENCES.contains(&self.key);
-                let (scale, offset) = if absolute {
-                    let k0 = units::absolute_temperature(0.0, unit)
-                        .map_err(|e| self.err(e.to_string()))?;
-                    let k1 = units::absolute_temperature(1.0, unit)
-                        .map_err(|e| self.err(e.to_string()))?;
-                    (k1 - k0, k0)
-                } else {
-                    (scale, 0.0)
-                };
-                InputKind::Quantity {
-                    unit: unit.to_owned(),
-                    scale,
-                    offset,
-                    dimension: Some(dimension),
-                }
-            }
-            words => words,
+            }));
+        }
+        let (scale, dimension) =
+            units::parse_unit(unit).map_err(|e| self.err(format!("unit \"{unit}\": {e}")))?;
+        let absolute =
+            dimension == Dimension::TEMPERATURE && !TEMPERATURE_DIFFERENCES.contains(&self.key);
+        let (scale, offset) = if absolute {
+            let k =
+                |x: f64| units::absolute_temperature(x, unit).map_err(|e| self.err(e.to_string()));
+            let k0 = k(0.0)?;
+            (k(1.0)? - k0, k0)
+        } else {
+            (scale, 0.0)
         };
-        Ok(StudyInput {
+        Ok(self.with_kind(InputKind::Quantity {
+            unit: unit.to_owned(),
+            scale,
+            offset,
+            dimension: Some(dimension),
+        }))
+    }
+
+    fn with_kind(&self, kind: InputKind) -> StudyInput {
+        StudyInput {
             key: self.key.to_owned(),
             line: self.source.line(self.span.start),
             kind,
-        })
+        }
     }
 
     fn written(&self, k: &str, v: &toml::Value) -> Result<Written, ScenarioError> {
@@ -959,7 +948,7 @@ impl Entry<'_> {
         if words.iter().all(Option::is_some) {
             let words: Vec<String> = words.into_iter().flatten().map(str::to_owned).collect();
             let d = Distribution::Levels((0..words.len()).map(|i| i as f64).collect());
-            return Ok((self.input(InputKind::Words(words), "")?, d));
+            return Ok((self.with_kind(InputKind::Words(words)), d));
         }
         if words.iter().any(Option::is_some) {
             return Err(self.err("`values` mixes words and numbers"));
@@ -975,16 +964,7 @@ impl Entry<'_> {
             .collect::<Result<Vec<_>, _>>()?;
         let d = Distribution::Levels(levels);
         d.check().map_err(|m| self.err(m))?;
-        let input = self.input(
-            InputKind::Quantity {
-                unit: unit.clone(),
-                scale: 0.0,
-                offset: 0.0,
-                dimension: None,
-            },
-            &unit,
-        )?;
-        Ok((input, d))
+        Ok((self.quantity_input(&unit)?, d))
     }
 }
 

@@ -271,7 +271,7 @@ fn one_term(temperature: &str) -> String {
 }
 
 /// [`one_term`] with the retained force referred to `reference` after installation.
-fn one_term_referred(temperature: &str, reference: &str) -> String {
+pub(crate) fn one_term_referred(temperature: &str, reference: &str) -> String {
     format!(
         r#"name = "one-term Prony"
 [material]

@@ -6,39 +6,15 @@ use crate::support::sealsim;
 use statrs::distribution::{ContinuousCDF, Normal};
 use std::path::{Path, PathBuf};
 
-/// One-term Prony rubber, WLF at T_ref = 23 °C: a flat seal whose force falls to half its
-/// installed value at t0·a_T(T), t0 = τ ln(E1/(½(E∞ + E1) − E∞)) = 1e5 s · ln 3.
-const ONE_TERM: &str = r#"name = "one-term Prony"
-[material]
-poisson_ratio = 0.5
-long_term_modulus = "2 MPa"
-prony = [ { modulus = "6 MPa", tau = "1e5 s" } ]
-[material.shift]
-kind = "wlf"
-reference_temperature = "23 C"
-c1 = 8.86
-c2 = "101.6 K"
-[surface]
-rms_roughness = "1 um"
-hurst_exponent = 0.8
-q0 = "1e4 1/m"
-q1 = "1e9 1/m"
-[fluid]
-viscosity = "1 mPa*s"
-pressure_difference = "0.1 bar"
-[seal]
-nominal_pressure = "1 MPa"
-width = "1 mm"
-length = "0.1 m"
-installation_time = "0 s"
-[environment]
-temperature = "23 C"
-[failure]
-min_retained_force = 0.5
-retained_force_reference = "0 s"
-[simulation]
-duration = "DURATION"
-"#;
+/// The flat seal of a one-term Prony rubber (`run.rs`), WLF at T_ref = 23 °C, the force referred
+/// to the installation: it falls to half its installed value at t0·a_T(T),
+/// t0 = τ ln(E1/(½(E∞ + E1) − E∞)) = 1e5 s · ln 3; run for `duration`.
+fn one_term(duration: &str) -> String {
+    format!(
+        "{}[simulation]\nduration = \"{duration}\"\n",
+        crate::run::one_term_referred("23 C", "0 s")
+    )
+}
 
 const C1: f64 = 8.86;
 const C2: f64 = 101.6;
@@ -125,7 +101,7 @@ fn b10_and_the_survival_curve_match_a_closed_form_life_distribution() {
     // survive it (censored).
     let d = Dir::new();
     let duration = t0() * 10f64.powf(log_shift(-0.5 * SIGMA));
-    let base = ONE_TERM.replace("DURATION", &format!("{duration} s"));
+    let base = one_term(&format!("{duration} s"));
     d.write("one.toml", &base);
     let study = d.write(
         "study.toml",
@@ -457,7 +433,7 @@ fn every_shipped_study_runs() {
 #[test]
 fn correlated_inputs_follow_their_rank_correlation_and_bad_ones_are_refused() {
     let d = Dir::new();
-    d.write("one.toml", &ONE_TERM.replace("DURATION", "1 day"));
+    d.write("one.toml", &one_term("1 day"));
     let head = "base = \"one.toml\"\ndesign = \"monte-carlo\"\nsamples = 600\nseed = 3\n\
                 report_times = [\"1 h\"]\n[vary]\n\
                 \"environment.temperature\" = { distribution = \"normal\", mean = \"23 C\", std = \"5 K\" }\n\
