@@ -354,6 +354,10 @@ pub enum Conduction {
     Series { resistance: f64 },
 }
 
+/// The volume of one water molecule, `M/(ρ N_A)` \[m³\]: M = 18.015 g/mol, ρ = 997.05 kg/m³
+/// (25 °C), N_A = 6.02214076e23/mol.
+pub const WATER_MOLECULE_VOLUME: f64 = 0.018_015 / (997.05 * 6.022_140_76e23);
+
 impl Fluid {
     /// The dynamic viscosity at `temperature` \[K\] \[Pa·s\] by the fluid's law (its own
     /// [`Fluid::viscosity`], bit for bit, under [`ViscosityLaw::Constant`]).
@@ -419,6 +423,18 @@ impl Fluid {
     /// liquid.
     pub fn throughput_of(&self, leak_rate: f64) -> Option<f64> {
         self.mean_pressure().map(|p| p * leak_rate)
+    }
+
+    /// The leak rate of one molecule a second \[m³/s\] (docs/model.md §15.2): below it no flow
+    /// is meant, only single molecules. A liquid: one water molecule, `M/(ρ N_A)` = 0.018015
+    /// kg/mol / (997.05 kg/m³ × 6.02214076e23/mol) = 3.0e-29 m³, the smallest common liquid
+    /// molecule (so the lowest floor of any liquid); a gas: `k_B T/p̄`, one molecule's volume at
+    /// the mean pressure and the gas temperature (the volume flow the leak rate is counted in).
+    pub fn one_molecule_per_second(&self) -> f64 {
+        match (self.gas, self.mean_pressure()) {
+            (Some(g), Some(p)) if p > 0.0 => crate::gas::BOLTZMANN * g.temperature / p,
+            _ => WATER_MOLECULE_VOLUME,
+        }
     }
 
     /// The mean absolute pressure p̄ = (P_a + P_b)/2 \[Pa\] of a gas; `None` for a liquid.

@@ -97,6 +97,30 @@ impl Fidelity {
         }
     }
 
+    /// The level's measured error, as the README's fidelity ladder states it (reports).
+    pub fn measured_error(self) -> &'static str {
+        match self {
+            Fidelity::RuleOfThumb => {
+                "u_c within a factor 2 of the critical junction's on the paper's surface \
+                 (h_rms(ζc)/u1(ζc) = 0.57–2.35 over 0.01–1 MPa), up to 10× in the leak rate"
+            }
+            Fidelity::Table => {
+                "contact table against quadrature < 3.2e-4; the model itself (the critical \
+                 junction) against the effective medium: a factor 0.6–37 in the leak rate on the \
+                 paper's case"
+            }
+            Fidelity::Exact => {
+                "the reference the contact table is checked against (< 3.2e-4); the \
+                 critical-junction model itself as for critical-junction"
+            }
+            Fidelity::EffectiveMedium => "table against direct solve < 2.2e-4",
+            Fidelity::Numerical => {
+                "resolves a band q1/q0 of a few tens only; its statistical error is in the run's \
+                 warnings"
+            }
+        }
+    }
+
     /// The level named `name` (its [`name`](Self::name) or one of its
     /// [`aliases`](Self::aliases)).
     pub fn from_name(name: &str) -> Option<Fidelity> {

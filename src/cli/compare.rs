@@ -11,7 +11,7 @@ use super::{CliError, print_findings, print_scenario_warnings, progress_bar, wri
 use crate::leak::Fidelity;
 use crate::material::Material;
 use crate::report::life::{
-    CompareRow, compare_table, compare_text, has_positive_leak_rate, leak_rate_chart,
+    CompareRow, LeakFloor, compare_table, compare_text, has_positive_leak_rate, leak_rate_chart,
 };
 use crate::scenario::{library, load_material_file};
 use crate::workflow;
@@ -25,7 +25,10 @@ use std::path::{Path, PathBuf};
     survives), failure_mode (leak_rate|leaked_volume|retained_force|lift_off|none), \
     leak_rate_1day_m3_per_s, leak_rate_1year_m3_per_s, leak_rate_10years_m3_per_s (blank beyond \
     the scenario's duration); for a gas also throughput_1day_Pa_m3_per_s, \
-    throughput_1year_Pa_m3_per_s, throughput_10years_Pa_m3_per_s (the interface only)."
+    throughput_1year_Pa_m3_per_s, throughput_10years_Pa_m3_per_s (the interface only); then at the \
+    end of the run sealing_force_end_N_per_m, retained_force_end (over the retained-force \
+    reference), leaked_volume_end_m3, compression_set_end (with ageing), state_end \
+    (sealed|leaking|lift_off)."
 )]
 pub struct CompareArgs {
     /// Scenario file (TOML).
@@ -47,6 +50,16 @@ pub struct CompareArgs {
     /// Override the scenario's simulation.fidelity.
     #[arg(long, value_name = "LEVEL", value_enum)]
     pub fidelity: Option<Fidelity>,
+
+    /// Write a self-contained HTML report to FILE: the table, the overlay chart, each
+    /// compound's warnings (inline SVG and CSS, nothing fetched).
+    #[arg(long, value_name = "FILE.html")]
+    pub report: Option<PathBuf>,
+
+    /// Leak rates below RATE read "sealed" in the table (default: one molecule a second; the
+    /// CSV keeps the raw values), e.g. "1e-15 m^3/s".
+    #[arg(long, value_name = "RATE")]
+    pub leak_floor: Option<String>,
 }
 
 /// Runs `sealsim compare`.
@@ -57,6 +70,11 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
         .iter()
         .map(|spec| Ok((spec.trim().to_owned(), resolve(spec.trim())?)))
         .collect::<Result<_, CliError>>()?;
+    let floor = super::positive_flag(
+        args.leak_floor.as_deref(),
+        "leak-floor",
+        crate::units::Dimension::VOLUME_FLOW,
+    )?;
     let runs = workflow::compare::compare(
         &args.scenario,
         materials,
@@ -71,6 +89,7 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
             result: &run.result,
             duration: run.scenario.life.time.duration,
             mean_pressure: run.scenario.life.fluid.mean_pressure(),
+            floor: LeakFloor::of(&run.scenario.life.fluid, floor),
         })
         .collect();
     let csv = args
@@ -79,7 +98,9 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
         .map(|_| compare_table(&rows))
         .transpose()?;
     let name = runs.first().map_or("", |r| r.scenario.name.as_str());
+    let wants_chart = args.plot.is_some() || args.report.is_some();
     let svg = match &args.plot {
+        _ if !wants_chart => None,
         Some(path) if !has_positive_leak_rate(runs.iter().map(|r| &r.result)) => {
             eprintln!(
                 "warning: every leak rate is zero throughout (sealed): no chart written to {}",
@@ -87,7 +108,8 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
             );
             None
         }
-        Some(_) => Some(
+        None if !has_positive_leak_rate(runs.iter().map(|r| &r.result)) => None,
+        _ => Some(
             leak_rate_chart(
                 &format!("{name}: leak rate by compound"),
                 rows.iter().map(|r| (r.label, r.result)),
@@ -95,8 +117,12 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
             .to_svg()
             .map_err(|e| CliError::Internal(e.to_string()))?,
         ),
-        None => None,
     };
+    let mut text = format!("{name} ({})\n", args.scenario.display());
+    text += &compare_text(&rows);
+    let page = args.report.as_ref().map(|_| {
+        report_page(name, &args.scenario.display().to_string(), &runs, &text, svg.as_deref())
+    });
 
     for run in &runs {
         print_scenario_warnings(Some(&run.label), &run.scenario);
@@ -108,9 +134,75 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
     if let (Some(path), Some(svg)) = (&args.plot, &svg) {
         write_output(Some(path), svg.as_bytes())?;
     }
-    let mut text = format!("{name} ({})\n", args.scenario.display());
-    text += &compare_text(&rows);
+    if let (Some(path), Some(page)) = (&args.report, &page) {
+        write_output(Some(path), page.as_bytes())?;
+    }
     write_output(None, text.as_bytes())
+}
+
+/// The HTML report of a comparison: the table, the overlay chart, each compound's warnings.
+fn report_page(
+    name: &str,
+    file: &str,
+    runs: &[workflow::compare::CompoundRun],
+    table: &str,
+    svg: Option<&str>,
+) -> String {
+    use crate::report::html;
+    let mut body = format!("<h1>{}: compounds compared</h1>\n", html::escape(name));
+    body += &format!(
+        "<p class=\"meta\">scenario file {} · sealsim compare</p>\n",
+        html::escape(file)
+    );
+    let best = runs
+        .iter()
+        .max_by(|a, b| {
+            let life = |r: &workflow::compare::CompoundRun| {
+                r.result.failure.map_or(f64::INFINITY, |f| f.time)
+            };
+            life(a).total_cmp(&life(b))
+        })
+        .map(|r| r.label.as_str())
+        .unwrap_or("");
+    body += &html::verdict("info", &format!("Longest life: {best}"));
+    if runs
+        .iter()
+        .any(|r| r.material.status == crate::material::Status::Illustrative)
+    {
+        body += "<p class=\"illustrative\">ILLUSTRATIVE material data in at least one compound: \
+                 the results show trends, they are not for design decisions.</p>\n";
+    }
+    body += &html::heading("Comparison");
+    body += &html::pre(table);
+    body += &html::heading("Leak rate by compound");
+    body += &match svg {
+        Some(svg) => html::figure(svg, "Leak rate against time, one curve per compound."),
+        None => html::paragraph("Every compound seals throughout: no leak rate to draw."),
+    };
+    body += &html::heading("Validity warnings");
+    let mut lines = Vec::new();
+    for run in runs {
+        lines.extend(run.scenario.warnings.iter().map(|w| format!("{}: {w}", run.label)));
+        lines.extend(
+            crate::report::findings::warning_lines(Some(&run.label), &run.result.findings)
+                .lines()
+                .map(str::to_owned),
+        );
+    }
+    body += &html::warnings(&lines);
+    if let Some(run) = runs.first() {
+        body += &html::heading("Fidelity");
+        let f = run.scenario.life.fidelity;
+        body += &html::paragraph(&format!(
+            "Level {}: {}. Measured error: {}.",
+            f.name(),
+            f.description(),
+            f.measured_error()
+        ));
+        body += &html::heading("Scenario (inputs with units and provenance)");
+        body += &html::pre(&std::fs::read_to_string(&run.scenario.path).unwrap_or_default());
+    }
+    html::document(&format!("{name}: compounds compared"), &body)
 }
 
 /// A library compound by id, or a material file by path.

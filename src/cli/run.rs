@@ -8,9 +8,9 @@
 
 use super::{CliError, print_findings, print_scenario_warnings, progress_bar, write_output};
 use crate::leak::Fidelity;
-use crate::report::life::{
-    Summary, has_positive_leak_rate, history_table_for, human_summary, leak_rate_chart,
-};
+use crate::report::html;
+use crate::report::life::{LeakFloor, Summary, history_table_for, human_summary};
+use crate::report::life_chart::life_chart;
 use crate::scenario::Scenario;
 use crate::simulate::LifeResult;
 use crate::workflow;
@@ -53,9 +53,22 @@ pub struct RunArgs {
     #[arg(long, value_name = "FILE.json")]
     pub summary: Option<PathBuf>,
 
-    /// Write a log–log chart of the leak rate against time to FILE (SVG).
+    /// Write the chart of the run to FILE (SVG): leak rate (clipped at the floor, with the
+    /// leak-rate threshold), sealing force (with the retained-force threshold) and temperature
+    /// against time in h, days or years, the failure marked.
     #[arg(long, value_name = "FILE.svg")]
     pub plot: Option<PathBuf>,
+
+    /// Write a self-contained HTML report to FILE: the verdict, the summary, the chart, the
+    /// warnings, the fidelity level and the scenario with its provenance (inline SVG and CSS,
+    /// nothing fetched).
+    #[arg(long, value_name = "FILE.html")]
+    pub report: Option<PathBuf>,
+
+    /// Leak rates below RATE read "sealed" in the summary and are clipped in the charts
+    /// (default: one molecule a second; the CSV keeps the raw values), e.g. "1e-15 m^3/s".
+    #[arg(long, value_name = "RATE")]
+    pub leak_floor: Option<String>,
 
     /// Override the scenario's simulation.fidelity.
     #[arg(long, value_name = "LEVEL", value_enum)]
@@ -68,8 +81,14 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
     if let Some(fidelity) = args.fidelity {
         scenario.life.fidelity = fidelity;
     }
+    let given = super::positive_flag(
+        args.leak_floor.as_deref(),
+        "leak-floor",
+        crate::units::Dimension::VOLUME_FLOW,
+    )?;
     let result = workflow::life::run(&scenario, &mut progress_bar("numerical level"));
     let file = args.scenario.display().to_string();
+    let floor = LeakFloor::of(&scenario.life.fluid, given);
 
     // Everything is rendered before anything is written.
     let csv = args
@@ -82,10 +101,16 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
         .as_ref()
         .map(|_| Summary::new(&scenario.name, &file, &scenario.life, &result).to_json())
         .transpose()?;
-    let svg = match &args.plot {
-        Some(path) => plot(&scenario.name, &result, path)?,
-        None => None,
-    };
+    let needs_chart = args.plot.is_some() || args.report.is_some();
+    let svg = needs_chart
+        .then(|| life_chart(&scenario.name, &scenario.life, &result, &floor))
+        .transpose()
+        .map_err(|e| CliError::Internal(e.to_string()))?;
+    let text = human_summary(&scenario.name, &file, &scenario.life, &result, &floor);
+    let page = args
+        .report
+        .as_ref()
+        .map(|_| report_page(&scenario, &file, &result, &text, svg.as_deref(), &floor));
 
     print_scenario_warnings(None, &scenario);
     print_findings(None, &result.findings);
@@ -93,31 +118,87 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
         (&args.output, csv.as_deref()),
         (&args.summary, json.as_deref()),
         (&args.plot, svg.as_deref()),
+        (&args.report, page.as_deref()),
     ] {
         if let (Some(path), Some(bytes)) = (path, bytes) {
             write_output(Some(path), bytes.as_bytes())?;
         }
     }
-    let text = human_summary(&scenario.name, &file, &scenario.life, &result);
     write_output(None, text.as_bytes())
 }
 
-/// The SVG of the leak-rate history, or `None` (with a warning) when the leak rate is zero
-/// throughout: there is nothing to draw on a log axis.
-fn plot(
-    title: &str,
+/// The HTML report of a run: verdict, summary, chart, warnings, fidelity, the scenario file.
+fn report_page(
+    scenario: &Scenario,
+    file: &str,
     result: &LifeResult,
-    path: &std::path::Path,
-) -> Result<Option<String>, CliError> {
-    if !has_positive_leak_rate([result]) {
-        eprintln!(
-            "warning: the leak rate is zero throughout (sealed): no chart written to {}",
-            path.display()
-        );
-        return Ok(None);
+    summary: &str,
+    svg: Option<&str>,
+    floor: &LeakFloor,
+) -> String {
+    let life = &scenario.life;
+    let mut body = format!("<h1>{}</h1>\n", html::escape(&scenario.name));
+    body += &format!(
+        "<p class=\"meta\">scenario file {} · sealsim run</p>\n",
+        html::escape(file)
+    );
+    let (kind, verdict) = match result.failure {
+        Some(f) => (
+            "fails",
+            format!(
+                "FAILS after {} by {}",
+                crate::report::life::human_time(f.time),
+                f.mode.as_str()
+            ),
+        ),
+        None => (
+            "survives",
+            format!(
+                "Survives the {} run",
+                crate::report::life::human_time(result.rows.last().map_or(0.0, |r| r.time))
+            ),
+        ),
+    };
+    body += &html::verdict(kind, &verdict);
+    if life.material.status == crate::material::Status::Illustrative {
+        body += "<p class=\"illustrative\">ILLUSTRATIVE material data: at least one number is \
+                 estimated, not measured; the results show trends, they are not for design \
+                 decisions.</p>\n";
     }
-    leak_rate_chart(title, [("leak rate", result)])
-        .to_svg()
-        .map(Some)
-        .map_err(|e| CliError::Internal(e.to_string()))
+    body += &html::heading("Summary");
+    body += &html::summary_table(summary);
+    body += &html::paragraph(&format!(
+        "Leak rates below {} m³/s ({}) read \"sealed\" and are drawn at that floor; the history \
+         CSV keeps the raw values.",
+        crate::units::human(floor.rate, 2),
+        floor.meaning()
+    ));
+    if let Some(svg) = svg {
+        body += &html::heading("Leak rate, sealing force and temperature");
+        body += &html::figure(
+            svg,
+            "Leak rate (log, clipped at the floor; dashed: the leak-rate threshold; shaded: \
+             lift-off), sealing force per unit length (dashed: the retained-force threshold) and \
+             temperature (for a cycling temperature its daily envelope); the cross \
+             marks the failure.",
+        );
+    }
+    body += &html::heading("Validity warnings");
+    let mut lines: Vec<String> = scenario.warnings.clone();
+    lines.extend(
+        crate::report::findings::warning_lines(None, &result.findings)
+            .lines()
+            .map(str::to_owned),
+    );
+    body += &html::warnings(&lines);
+    body += &html::heading("Fidelity");
+    body += &html::paragraph(&format!(
+        "Level {}: {}. Measured error: {}.",
+        life.fidelity.name(),
+        life.fidelity.description(),
+        life.fidelity.measured_error()
+    ));
+    body += &html::heading("Scenario (inputs with units and provenance)");
+    body += &html::pre(&std::fs::read_to_string(&scenario.path).unwrap_or_default());
+    html::document(&scenario.name, &body)
 }

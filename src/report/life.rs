@@ -367,6 +367,19 @@ fn throughput(q: f64) -> String {
     format!("{} Pa·m³/s ({} mbar·L/s)", human(q, 3), human(q * 10.0, 3))
 }
 
+/// A gas's throughput `p̄ q`, or "sealed" below the floor.
+fn floored_throughput(floor: &LeakFloor, p: f64, q: f64) -> String {
+    if floor.seals(q) {
+        format!(
+            "sealed (below {}, {})",
+            throughput(p * floor.rate),
+            floor.meaning()
+        )
+    } else {
+        throughput(p * q)
+    }
+}
+
 /// The `gland` object of the summary.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct GlandSummary {
@@ -778,12 +791,69 @@ fn celsius(kelvin: f64) -> String {
     format!("{} °C", human(kelvin - 273.15, 4))
 }
 
-/// The readable summary of a run, for the terminal.
+/// The leak rate below which a report says "sealed" (docs/model.md §15.2): by default one
+/// molecule a second ([`crate::fluid::Fluid::one_molecule_per_second`]), or a floor the user
+/// gives (`--leak-floor`). Only what is shown changes: tables keep the raw value.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LeakFloor {
+    /// \[m³/s\]
+    pub rate: f64,
+    /// Given by the user rather than the molecular default.
+    pub given: bool,
+}
+
+impl LeakFloor {
+    /// The floor for `fluid`: `given` \[m³/s\], else one molecule a second.
+    pub fn of(fluid: &crate::fluid::Fluid, given: Option<f64>) -> LeakFloor {
+        match given {
+            Some(rate) => LeakFloor { rate, given: true },
+            None => LeakFloor {
+                rate: fluid.one_molecule_per_second(),
+                given: false,
+            },
+        }
+    }
+
+    /// What the floor stands for.
+    pub fn meaning(&self) -> &'static str {
+        if self.given {
+            "the floor given"
+        } else {
+            "one molecule a second"
+        }
+    }
+
+    /// Whether a leak rate is below the floor (sealed in practice; 0 included).
+    pub fn seals(&self, q: f64) -> bool {
+        q < self.rate
+    }
+
+    /// `"sealed (below 3e-29 m³/s, one molecule a second)"`.
+    pub fn sealed(&self) -> String {
+        format!(
+            "sealed (below {} m³/s, {})",
+            human(self.rate, 2),
+            self.meaning()
+        )
+    }
+
+    /// A leak rate for people: [`flow`] above the floor, [`LeakFloor::sealed`] below.
+    pub fn flow(&self, q: f64) -> String {
+        if self.seals(q) {
+            self.sealed()
+        } else {
+            flow(q)
+        }
+    }
+}
+
+/// The readable summary of a run, for the terminal; leak rates below `floor` read "sealed".
 pub fn human_summary(
     scenario: &str,
     file: &str,
     problem: &LifeProblem,
     result: &LifeResult,
+    floor: &LeakFloor,
 ) -> String {
     let mut out = String::new();
     let mut line = |label: &str, text: String| {
@@ -914,8 +984,8 @@ pub fn human_summary(
         "leak rate",
         format!(
             "{} at installation, {} after {duration}",
-            flow(result.initial_leak_rate()),
-            flow(result.final_leak_rate())
+            floor.flow(result.initial_leak_rate()),
+            floor.flow(result.final_leak_rate())
         ),
     );
     if let Some(p) = problem.fluid.mean_pressure() {
@@ -935,8 +1005,8 @@ pub fn human_summary(
             "throughput",
             format!(
                 "{} at installation, {} after {duration} ({law}{})",
-                throughput(p * result.initial_leak_rate()),
-                throughput(p * result.final_leak_rate()),
+                floored_throughput(floor, p, result.initial_leak_rate()),
+                floored_throughput(floor, p, result.final_leak_rate()),
                 if sealed {
                     ""
                 } else {
@@ -1237,9 +1307,38 @@ pub struct CompareRow<'a> {
     /// A gas: the mean pressure p̄ \[Pa\] whose volume flows the leak rates are; the
     /// comparison then gives throughputs `p̄ Q̇` too (docs/model.md §3.9).
     pub mean_pressure: Option<f64>,
+    /// Leak rates below it read "sealed" in the text table (the CSV keeps them).
+    pub floor: LeakFloor,
 }
 
+/// The comparison's columns of the end of each run, after the leak rates (and throughputs).
+pub const COMPARE_END_COLUMNS: [&str; 5] = [
+    "sealing_force_end_N_per_m",
+    "retained_force_end",
+    "leaked_volume_end_m3",
+    "compression_set_end",
+    "state_end",
+];
+
 impl CompareRow<'_> {
+    /// The end of the run: sealing force \[N/m\], retained force (over the reference),
+    /// leaked volume \[m³\], compression set, state.
+    fn end(&self) -> (f64, f64, f64, Option<f64>, &'static str) {
+        let last = self.result.rows.last();
+        let force = last.map_or(0.0, |r| r.sealing_force);
+        (
+            force,
+            if self.result.reference_force > 0.0 {
+                force / self.result.reference_force
+            } else {
+                0.0
+            },
+            self.result.leaked_volume(),
+            last.and_then(|r| r.compression_set),
+            last.map_or("sealed", |r| r.state.as_str()),
+        )
+    }
+
     /// Leak rates at [`COMPARE_TIMES`], `None` beyond the run.
     fn leak_rates(&self) -> [Option<f64>; 3] {
         COMPARE_TIMES.map(|(t, _)| {
@@ -1267,6 +1366,7 @@ pub fn compare_table(rows: &[CompareRow<'_>]) -> Result<String, ReportError> {
     if gas.is_some() {
         header.extend(COMPARE_GAS_COLUMNS);
     }
+    header.extend(COMPARE_END_COLUMNS);
     writer.write_record(&header).map_err(csv_error)?;
     for (i, r) in rows.iter().enumerate() {
         let row = i + 1;
@@ -1293,6 +1393,14 @@ pub fn compare_table(rows: &[CompareRow<'_>]) -> Result<String, ReportError> {
                 })?);
             }
         }
+        let (force, retained, volume, set, state) = r.end();
+        record.push(number(row, COMPARE_END_COLUMNS[0], force)?);
+        record.push(number(row, COMPARE_END_COLUMNS[1], retained)?);
+        record.push(number(row, COMPARE_END_COLUMNS[2], volume)?);
+        record.push(set.map_or(Ok(String::new()), |c| {
+            number(row, COMPARE_END_COLUMNS[3], c)
+        })?);
+        record.push(state.to_owned());
         writer.write_record(record).map_err(csv_error)?;
     }
     finish(writer)
@@ -1312,11 +1420,28 @@ pub fn compare_text(rows: &[CompareRow<'_>]) -> String {
         format!("Q 1 day [{unit}]"),
         format!("Q 1 year [{unit}]"),
         format!("Q 10 years [{unit}]"),
+        "force at end [N/mm]".to_owned(),
+        "retained".to_owned(),
+        "leaked [mL]".to_owned(),
+        "set".to_owned(),
+        "state at end".to_owned(),
     ]];
     for r in rows {
         let scale = r.mean_pressure.unwrap_or(1.0);
-        let rate = |q: Option<f64>| q.map_or_else(|| "-".to_owned(), |q| human(scale * q, 3));
+        let rate = |q: Option<f64>| {
+            q.map_or_else(
+                || "-".to_owned(),
+                |q| {
+                    if r.floor.seals(q) {
+                        "sealed".to_owned()
+                    } else {
+                        human(scale * q, 2)
+                    }
+                },
+            )
+        };
         let [day, year, decade] = r.leak_rates();
+        let (force, retained, volume, set, state) = r.end();
         cells.push(vec![
             r.label.to_owned(),
             r.material.status.as_str().to_owned(),
@@ -1327,13 +1452,36 @@ pub fn compare_text(rows: &[CompareRow<'_>]) -> String {
             rate(day),
             rate(year),
             rate(decade),
+            // below a µN/mm and a millionth: nothing left, not a number to read
+            if force < 1e-3 {
+                "< 1e-6".to_owned()
+            } else {
+                human(force / 1e3, 2)
+            },
+            if retained < 1e-6 {
+                "< 1e-4 %".to_owned()
+            } else {
+                format!("{} %", human(100.0 * retained, 2))
+            },
+            human(volume * 1e6, 2),
+            set.map_or_else(|| "-".to_owned(), |c| format!("{} %", human(100.0 * c, 2))),
+            state.to_owned(),
         ]);
+    }
+    let mut cells = cells;
+    if let Some(f) = rows.first().map(|r| r.floor) {
+        cells.push(vec![format!(
+            "(\"sealed\": below {} m³/s, {}; the CSV keeps the values)",
+            human(f.rate, 2),
+            f.meaning()
+        )]);
     }
     let columns = cells[0].len();
     let width: Vec<usize> = (0..columns)
         .map(|c| {
             cells
                 .iter()
+                .filter(|r| r.len() == columns)
                 .map(|r| r[c].chars().count())
                 .max()
                 .unwrap_or(0)
@@ -1344,7 +1492,7 @@ pub fn compare_text(rows: &[CompareRow<'_>]) -> String {
         let line: Vec<String> = row
             .iter()
             .zip(&width)
-            .map(|(cell, w)| format!("{cell}{}", " ".repeat(w - cell.chars().count())))
+            .map(|(cell, w)| format!("{cell}{}", " ".repeat(w.saturating_sub(cell.chars().count()))))
             .collect();
         out += line.join("  ").trim_end();
         out.push('\n');
@@ -1504,10 +1652,14 @@ mod tests {
             result: &r,
             duration: 2.0 * DAY,
             mean_pressure: None,
+            floor: LeakFloor {
+                rate: 1e-20,
+                given: true,
+            },
         }];
         let text = compare_table(&rows).unwrap();
         let line = text.lines().nth(1).unwrap();
-        assert_eq!(line, "x,rubber,user,7.8894e7,leak_rate,1e-12,,");
+        assert_eq!(line, "x,rubber,user,7.8894e7,leak_rate,1e-12,,,1000,1,0,,leaking");
         assert!(compare_text(&rows).contains("2.5 years"));
         // a gas at p̄ = 1.5 bar: the throughputs p̄ Q̇ after the volume flows (a format test)
         let gas = [CompareRow {
@@ -1517,11 +1669,12 @@ mod tests {
         let text = compare_table(&gas).unwrap();
         assert!(text.lines().next().unwrap().ends_with(
             ",throughput_1day_Pa_m3_per_s,throughput_1year_Pa_m3_per_s,\
-             throughput_10years_Pa_m3_per_s"
+             throughput_10years_Pa_m3_per_s,sealing_force_end_N_per_m,retained_force_end,\
+             leaked_volume_end_m3,compression_set_end,state_end"
         ));
         assert_eq!(
             text.lines().nth(1).unwrap(),
-            "x,rubber,user,7.8894e7,leak_rate,1e-12,,,1.5e-7,,"
+            "x,rubber,user,7.8894e7,leak_rate,1e-12,,,1.5e-7,,,1000,1,0,,leaking"
         );
         assert!(compare_text(&gas).contains("Q 1 day [Pa·m³/s]"));
     }

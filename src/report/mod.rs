@@ -5,7 +5,10 @@
 pub mod ageing_fit;
 pub mod csv;
 pub mod findings;
+pub mod html;
 pub mod life;
+#[cfg(feature = "cli")]
+pub mod life_chart;
 pub mod master_curve;
 pub mod material_toml;
 pub mod materials;

@@ -1,0 +1,161 @@
+//! Self-contained HTML reports (`--report FILE.html`, docs/model.md §15.4): one page with inline
+//! CSS and inline SVG — no scripts, no fonts or images from anywhere — that an engineer can
+//! read, keep and send. The pieces here are plain text builders; what goes on a page is the
+//! command's.
+
+/// `text` with `&`, `<`, `>` and `"` escaped.
+pub fn escape(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            _ => out.push(c),
+        }
+    }
+    out
+}
+
+const STYLE: &str = "
+body { font-family: system-ui, -apple-system, 'Segoe UI', Roboto, sans-serif; margin: 2em auto;
+       max-width: 1000px; color: #1a1a1a; line-height: 1.45; padding: 0 1em; }
+h1 { font-size: 1.6em; margin-bottom: 0.2em; }
+h2 { font-size: 1.2em; border-bottom: 1px solid #ccc; padding-bottom: 0.2em; margin-top: 1.8em; }
+.meta { color: #555; font-size: 0.9em; }
+.verdict { font-size: 1.15em; padding: 0.7em 1em; border-radius: 6px; margin: 1em 0; }
+.verdict.fails { background: #fbe3d6; border-left: 6px solid #d55e00; }
+.verdict.survives { background: #dcefe8; border-left: 6px solid #009e73; }
+.verdict.info { background: #e6f0f8; border-left: 6px solid #0072b2; }
+.illustrative { background: #fff3cd; border: 1px solid #e6a700; padding: 0.5em 1em; border-radius: 4px; }
+table { border-collapse: collapse; margin: 0.5em 0; font-size: 0.92em; }
+th, td { border: 1px solid #ccc; padding: 0.25em 0.6em; text-align: left; vertical-align: top; }
+th { background: #f2f2f2; }
+td.num { text-align: right; font-variant-numeric: tabular-nums; }
+pre { background: #f7f7f7; border: 1px solid #ddd; padding: 0.7em; overflow-x: auto; font-size: 0.85em; }
+figure.plot { margin: 1em 0; }
+figure.plot svg { max-width: 100%; height: auto; border: 1px solid #eee; }
+figcaption { color: #444; font-size: 0.9em; margin-top: 0.3em; }
+ul.warnings li { margin-bottom: 0.3em; }
+";
+
+/// A whole page: `title` and the body's HTML.
+pub fn document(title: &str, body: &str) -> String {
+    format!(
+        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
+         <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
+         <meta name=\"generator\" content=\"sealsim {}\">\n<title>{}</title>\n<style>{STYLE}</style>\n\
+         </head>\n<body>\n{body}\n<p class=\"meta\">Written by sealsim {} — a self-contained page: \
+         no scripts, fonts or images from elsewhere.</p>\n</body>\n</html>\n",
+        env!("CARGO_PKG_VERSION"),
+        escape(title),
+        env!("CARGO_PKG_VERSION"),
+    )
+}
+
+/// A section heading.
+pub fn heading(text: &str) -> String {
+    format!("<h2>{}</h2>\n", escape(text))
+}
+
+/// A paragraph of plain text.
+pub fn paragraph(text: &str) -> String {
+    format!("<p>{}</p>\n", escape(text))
+}
+
+/// The verdict box: `kind` is `fails`, `survives` or `info`.
+pub fn verdict(kind: &str, text: &str) -> String {
+    format!("<div class=\"verdict {kind}\">{}</div>\n", escape(text))
+}
+
+/// Preformatted text (a terminal table, a scenario file).
+pub fn pre(text: &str) -> String {
+    format!("<pre>{}</pre>\n", escape(text))
+}
+
+/// A table; cells that read as numbers are right-aligned.
+pub fn table(headers: &[String], rows: &[Vec<String>]) -> String {
+    let mut out = String::from("<table>\n<tr>");
+    for h in headers {
+        out += &format!("<th>{}</th>", escape(h));
+    }
+    out += "</tr>\n";
+    for row in rows {
+        out += "<tr>";
+        for cell in row {
+            let numeric = cell.trim().parse::<f64>().is_ok();
+            out += &format!(
+                "<td{}>{}</td>",
+                if numeric { " class=\"num\"" } else { "" },
+                escape(cell)
+            );
+        }
+        out += "</tr>\n";
+    }
+    out + "</table>\n"
+}
+
+/// A chart: the SVG document inline (its XML declaration dropped), with a caption.
+pub fn figure(svg: &str, caption: &str) -> String {
+    let svg = svg
+        .trim_start()
+        .strip_prefix("<?xml")
+        .and_then(|rest| rest.split_once("?>").map(|(_, s)| s))
+        .unwrap_or(svg);
+    format!(
+        "<figure class=\"plot\">\n{}\n<figcaption>{}</figcaption>\n</figure>\n",
+        svg.trim(),
+        escape(caption)
+    )
+}
+
+/// A list of warnings (each already says when and how far), or "none".
+pub fn warnings(lines: &[String]) -> String {
+    if lines.is_empty() {
+        return "<p>None: every validity check passed.</p>\n".to_owned();
+    }
+    let mut out = String::from("<ul class=\"warnings\">\n");
+    for l in lines {
+        out += &format!("<li>{}</li>\n", escape(l.trim_start_matches("warning: ")));
+    }
+    out + "</ul>\n"
+}
+
+/// The `label  text` lines of a terminal summary as a two-column table.
+pub fn summary_table(text: &str) -> String {
+    let rows: Vec<Vec<String>> = text
+        .lines()
+        .filter(|l| !l.trim().is_empty())
+        .map(|l| {
+            let label: String = l.chars().take(15).collect();
+            let rest: String = l.chars().skip(15).collect();
+            vec![label.trim().to_owned(), rest.trim().to_owned()]
+        })
+        .collect();
+    let mut out = String::from("<table>\n");
+    for r in rows {
+        out += &format!(
+            "<tr><th>{}</th><td>{}</td></tr>\n",
+            escape(&r[0]),
+            escape(&r[1])
+        );
+    }
+    out + "</table>\n"
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn escapes_markup_and_inlines_svg_without_its_declaration() {
+        assert_eq!(escape("a < b & \"c\" > d"), "a &lt; b &amp; &quot;c&quot; &gt; d");
+        let f = figure("<?xml version=\"1.0\"?>\n<svg width=\"10\"></svg>", "x <y>");
+        assert!(f.starts_with("<figure class=\"plot\">\n<svg"));
+        assert!(f.contains("<figcaption>x &lt;y&gt;</figcaption>"));
+        let page = document("t", &f);
+        assert!(!page.contains("<script"));
+        assert!(!page.contains("http://") && !page.contains("https://"));
+    }
+}

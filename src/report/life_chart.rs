@@ -1,0 +1,332 @@
+//! The chart of a life run (docs/model.md §15.3): three panels over one time axis in the
+//! reader's unit (h, days or years) — the leak rate (log, clipped at the [`LeakFloor`], the
+//! leak-rate threshold as a dashed line, lift-off shaded), the sealing force (the retained-force
+//! threshold dashed) and the temperature (for a cycling temperature its daily envelope, not
+//! aliased samples); the failure marked in every panel. Okabe–Ito colours
+//! (distinguishable with the common colour-vision deficiencies).
+
+use super::life::LeakFloor;
+use super::plot::PlotError;
+use crate::leak::SealState;
+use crate::simulate::{LifeProblem, LifeResult};
+use crate::units::human;
+use plotters::prelude::*;
+
+const BLUE: RGBColor = RGBColor(0, 114, 178);
+const VERMILLION: RGBColor = RGBColor(213, 94, 0);
+const ORANGE: RGBColor = RGBColor(230, 159, 0);
+const GREEN: RGBColor = RGBColor(0, 158, 115);
+const GREY: RGBColor = RGBColor(110, 110, 110);
+
+const HOUR: f64 = 3600.0;
+const DAY: f64 = 86_400.0;
+const YEAR: f64 = 365.25 * DAY;
+
+fn err<E: std::fmt::Display>(e: E) -> PlotError {
+    PlotError(e.to_string())
+}
+
+/// The time unit a reader would use for a run ending at `end` \[s\]: (seconds per unit, name).
+pub fn time_unit(end: f64) -> (f64, &'static str) {
+    if end >= 2.0 * YEAR {
+        (YEAR, "years")
+    } else if end >= 2.0 * DAY {
+        (DAY, "days")
+    } else if end >= 2.0 * HOUR {
+        (HOUR, "h")
+    } else {
+        (1.0, "s")
+    }
+}
+
+/// The chart's lowest leak-rate decade: the floor's (the axis never runs below it).
+pub fn leak_axis_bottom(floor: &LeakFloor) -> f64 {
+    floor.rate.log10().floor()
+}
+
+/// The three-panel SVG of `result`.
+pub fn life_chart(
+    title: &str,
+    problem: &LifeProblem,
+    result: &LifeResult,
+    floor: &LeakFloor,
+) -> Result<String, PlotError> {
+    let rows = &result.rows;
+    let end = rows.last().map_or(0.0, |r| r.time);
+    let first = rows
+        .iter()
+        .map(|r| r.time)
+        .find(|t| *t > 0.0)
+        .ok_or_else(|| PlotError("the run has no time after installation".into()))?;
+    let (unit, unit_name) = time_unit(end);
+    let (x_lo, x_hi) = (first / unit, (end / unit).max(first / unit * 1.0001));
+    let x_label = format!("time after installation [{unit_name}]");
+    let failure = result.failure;
+
+    // leak rate: log10 of the rate, never below the floor
+    let y_lo = leak_axis_bottom(floor);
+    let clip = |q: f64| q.max(floor.rate).log10();
+    let threshold = problem.failure.max_leak_rate;
+    let top = rows
+        .iter()
+        .map(|r| r.leak_rate)
+        .chain(threshold)
+        .fold(floor.rate * 10.0, f64::max);
+    let y_hi = top.log10().ceil() + 0.5;
+    let all_sealed = rows.iter().all(|r| floor.seals(r.leak_rate));
+
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (900, 1000)).into_drawing_area();
+        root.fill(&WHITE).map_err(err)?;
+        let root = root
+            .titled(title, ("sans-serif", 22))
+            .map_err(err)?;
+        let panels = root.split_evenly((3, 1));
+
+        // 1. leak rate
+        let mut chart = ChartBuilder::on(&panels[0])
+            .margin(12)
+            .x_label_area_size(40)
+            .y_label_area_size(90)
+            .build_cartesian_2d((x_lo..x_hi).log_scale(), y_lo..y_hi)
+            .map_err(err)?;
+        chart
+            .configure_mesh()
+            .x_desc(&x_label)
+            .x_label_formatter(&|v| human(*v, 2))
+            .y_desc("leak rate [m³/s]")
+            .y_label_formatter(&|v| {
+                if (v - v.round()).abs() < 1e-9 {
+                    format!("1e{}", v.round())
+                } else {
+                    String::new()
+                }
+            })
+            .draw()
+            .map_err(err)?;
+        // lift-off shaded
+        let mut spans = Vec::new();
+        for w in rows.windows(2) {
+            if w[1].state == SealState::LiftOff && w[0].time > 0.0 {
+                spans.push((w[0].time / unit, w[1].time / unit));
+            }
+        }
+        chart
+            .draw_series(spans.iter().map(|&(a, b)| {
+                Rectangle::new([(a, y_lo), (b, y_hi)], ORANGE.mix(0.15).filled())
+            }))
+            .map_err(err)?;
+        let points: Vec<(f64, f64)> = rows
+            .iter()
+            .filter(|r| r.time > 0.0)
+            .map(|r| (r.time / unit, clip(r.leak_rate)))
+            .collect();
+        chart
+            .draw_series(LineSeries::new(points, BLUE.stroke_width(2)))
+            .map_err(err)?
+            .label(if all_sealed {
+                format!("leak rate: {}", floor.sealed())
+            } else {
+                "leak rate".to_owned()
+            })
+            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLUE.stroke_width(2)));
+        chart
+            .draw_series(DashedLineSeries::new(
+                vec![(x_lo, y_lo), (x_hi, y_lo)],
+                4,
+                4,
+                GREY.stroke_width(1).into(),
+            ))
+            .map_err(err)?
+            .label(format!(
+                "floor {} m³/s ({}): below it reads sealed",
+                human(floor.rate, 2),
+                floor.meaning()
+            ))
+            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], GREY.stroke_width(1)));
+        if let Some(q) = threshold {
+            chart
+                .draw_series(DashedLineSeries::new(
+                    vec![(x_lo, clip(q)), (x_hi, clip(q))],
+                    8,
+                    5,
+                    VERMILLION.stroke_width(2).into(),
+                ))
+                .map_err(err)?
+                .label(format!("max_leak_rate {} m³/s", human(q, 3)))
+                .legend(|(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 20, y)], VERMILLION.stroke_width(2))
+                });
+        }
+        if !spans.is_empty() {
+            chart
+                .draw_series(std::iter::empty::<Rectangle<(f64, f64)>>())
+                .map_err(err)?
+                .label("lift-off (shaded)")
+                .legend(|(x, y)| {
+                    Rectangle::new([(x, y - 5), (x + 20, y + 5)], ORANGE.mix(0.3).filled())
+                });
+        }
+        if let Some(f) = failure {
+            let q = result.leak_rate_at(f.time).unwrap_or(0.0);
+            let x = (f.time / unit).clamp(x_lo, x_hi);
+            chart
+                .draw_series(std::iter::once(Cross::new(
+                    (x, clip(q)),
+                    8,
+                    VERMILLION.stroke_width(3),
+                )))
+                .map_err(err)?
+                .label(format!(
+                    "fails: {} after {}",
+                    f.mode.as_str(),
+                    super::life::human_time(f.time)
+                ))
+                .legend(|(x, y)| Cross::new((x + 10, y), 6, VERMILLION.stroke_width(3)));
+        }
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::UpperLeft)
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .draw()
+            .map_err(err)?;
+
+        // 2. sealing force [N/mm]
+        let force: Vec<(f64, f64)> = rows
+            .iter()
+            .filter(|r| r.time > 0.0)
+            .map(|r| (r.time / unit, r.sealing_force / 1e3))
+            .collect();
+        let f_max = force.iter().map(|p| p.1).fold(0.0, f64::max).max(1e-9) * 1.15;
+        let mut chart = ChartBuilder::on(&panels[1])
+            .margin(12)
+            .x_label_area_size(40)
+            .y_label_area_size(90)
+            .build_cartesian_2d((x_lo..x_hi).log_scale(), 0.0..f_max)
+            .map_err(err)?;
+        chart
+            .configure_mesh()
+            .x_desc(&x_label)
+            .x_label_formatter(&|v| human(*v, 2))
+            .y_desc("sealing force [N/mm]")
+            .draw()
+            .map_err(err)?;
+        chart
+            .draw_series(LineSeries::new(force, GREEN.stroke_width(2)))
+            .map_err(err)?
+            .label("sealing force per unit length")
+            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], GREEN.stroke_width(2)));
+        if let Some(r) = problem.failure.min_retained_force {
+            let level = r * result.reference_force / 1e3;
+            chart
+                .draw_series(DashedLineSeries::new(
+                    vec![(x_lo, level), (x_hi, level)],
+                    8,
+                    5,
+                    VERMILLION.stroke_width(2).into(),
+                ))
+                .map_err(err)?
+                .label(format!(
+                    "min_retained_force {} % of {} N/mm",
+                    human(100.0 * r, 3),
+                    human(result.reference_force / 1e3, 3)
+                ))
+                .legend(|(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 20, y)], VERMILLION.stroke_width(2))
+                });
+        }
+        if let Some(f) = failure {
+            let x = (f.time / unit).clamp(x_lo, x_hi);
+            let k = rows.partition_point(|r| r.time < f.time).min(rows.len() - 1);
+            chart
+                .draw_series(std::iter::once(Cross::new(
+                    (x, rows[k].sealing_force / 1e3),
+                    8,
+                    VERMILLION.stroke_width(3),
+                )))
+                .map_err(err)?;
+        }
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::UpperRight)
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .draw()
+            .map_err(err)?;
+
+        // 3. temperature [°C]: the daily envelope — at each of 4 000 log-spaced times the
+        // lowest and highest temperature within ±12 h (hourly samples), so a daily cycle shows
+        // as its range and a yearly one as the envelope's swing, never as aliased samples
+        let grid = 4_000;
+        let mut low = Vec::with_capacity(grid);
+        let mut high = Vec::with_capacity(grid);
+        for k in 0..grid {
+            let t = first * (end / first).powf(k as f64 / (grid - 1) as f64);
+            let (a, b) = ((t - 12.0 * HOUR).max(0.0), (t + 12.0 * HOUR).min(end.max(t)));
+            let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+            for m in 0..=24 {
+                let c = problem.environment.at(a + (b - a) * m as f64 / 24.0) - 273.15;
+                lo = lo.min(c);
+                hi = hi.max(c);
+            }
+            low.push((t / unit, lo));
+            high.push((t / unit, hi));
+        }
+        let t_lo = low.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
+        let t_hi = high.iter().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
+        let pad = ((t_hi - t_lo) * 0.15).max(2.0);
+        let mut chart = ChartBuilder::on(&panels[2])
+            .margin(12)
+            .x_label_area_size(40)
+            .y_label_area_size(90)
+            .build_cartesian_2d((x_lo..x_hi).log_scale(), (t_lo - pad)..(t_hi + pad))
+            .map_err(err)?;
+        chart
+            .configure_mesh()
+            .x_desc(&x_label)
+            .x_label_formatter(&|v| human(*v, 2))
+            .y_desc("temperature [°C]")
+            .draw()
+            .map_err(err)?;
+        let cycling = low.iter().zip(&high).any(|(l, h)| h.1 - l.1 > 1e-9);
+        if cycling {
+            let band: Vec<(f64, f64)> = low
+                .iter()
+                .copied()
+                .chain(high.iter().rev().copied())
+                .collect();
+            chart
+                .draw_series(std::iter::once(Polygon::new(band, ORANGE.mix(0.35).filled())))
+                .map_err(err)?
+                .label("daily range (lowest to highest within ±12 h)")
+                .legend(|(x, y)| {
+                    Rectangle::new([(x, y - 5), (x + 20, y + 5)], ORANGE.mix(0.35).filled())
+                });
+        }
+        chart
+            .draw_series(LineSeries::new(high.clone(), VERMILLION.stroke_width(1)))
+            .map_err(err)?
+            .label(if cycling { "highest" } else { "temperature" })
+            .legend(|(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], VERMILLION.stroke_width(1))
+            });
+        if cycling {
+            chart
+                .draw_series(LineSeries::new(low, BLUE.stroke_width(1)))
+                .map_err(err)?
+                .label("lowest")
+                .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLUE.stroke_width(1)));
+        }
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::UpperLeft)
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .draw()
+            .map_err(err)?;
+        root.present().map_err(err)?;
+    }
+    Ok(svg)
+}
