@@ -10,9 +10,8 @@
 use super::{CliError, print_findings, print_scenario_warnings, progress_bar, write_output};
 use crate::leak::Fidelity;
 use crate::material::Material;
-use crate::report::life::{
-    CompareRow, LeakFloor, compare_table, compare_text, has_positive_leak_rate, leak_rate_chart,
-};
+use crate::report::life::{CompareRow, LeakFloor, compare_cells, compare_table, compare_text};
+use crate::report::life_chart::compare_chart;
 use crate::scenario::{library, load_material_file};
 use crate::workflow;
 use clap::Args;
@@ -99,29 +98,28 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
         .transpose()?;
     let name = runs.first().map_or("", |r| r.scenario.name.as_str());
     let wants_chart = args.plot.is_some() || args.report.is_some();
-    let svg = match &args.plot {
-        _ if !wants_chart => None,
-        Some(path) if !has_positive_leak_rate(runs.iter().map(|r| &r.result)) => {
-            eprintln!(
-                "warning: every leak rate is zero throughout (sealed): no chart written to {}",
-                path.display()
-            );
-            None
-        }
-        None if !has_positive_leak_rate(runs.iter().map(|r| &r.result)) => None,
-        _ => Some(
-            leak_rate_chart(
+    let svg = match (wants_chart, rows.first()) {
+        (true, Some(first)) => Some(
+            compare_chart(
                 &format!("{name}: leak rate by compound"),
-                rows.iter().map(|r| (r.label, r.result)),
+                &rows.iter().map(|r| (r.label, r.result)).collect::<Vec<_>>(),
+                &first.floor,
             )
-            .to_svg()
             .map_err(|e| CliError::Internal(e.to_string()))?,
         ),
+        _ => None,
     };
     let mut text = format!("{name} ({})\n", args.scenario.display());
     text += &compare_text(&rows);
     let page = args.report.as_ref().map(|_| {
-        report_page(name, &args.scenario.display().to_string(), &runs, &text, svg.as_deref())
+        let cells = compare_cells(&rows);
+        report_page(
+            name,
+            &args.scenario.display().to_string(),
+            &runs,
+            &cells,
+            svg.as_deref(),
+        )
     });
 
     for run in &runs {
@@ -145,7 +143,7 @@ fn report_page(
     name: &str,
     file: &str,
     runs: &[workflow::compare::CompoundRun],
-    table: &str,
+    cells: &[Vec<String>],
     svg: Option<&str>,
 ) -> String {
     use crate::report::html;
@@ -173,16 +171,32 @@ fn report_page(
                  the results show trends, they are not for design decisions.</p>\n";
     }
     body += &html::heading("Comparison");
-    body += &html::pre(table);
+    let empty = Vec::new();
+    let (header, rest) = cells.split_first().unwrap_or((&empty, &[]));
+    let (table_rows, notes): (Vec<Vec<String>>, Vec<Vec<String>>) =
+        rest.iter().cloned().partition(|r| r.len() == header.len());
+    body += &html::table(header, &table_rows);
+    for note in notes {
+        body += &html::paragraph(&note.join(" "));
+    }
     body += &html::heading("Leak rate by compound");
     body += &match svg {
-        Some(svg) => html::figure(svg, "Leak rate against time, one curve per compound."),
+        Some(svg) => html::figure(
+            svg,
+            "Leak rate against time, one curve per compound, clipped at the floor; a cross marks \
+             each failure.",
+        ),
         None => html::paragraph("Every compound seals throughout: no leak rate to draw."),
     };
     body += &html::heading("Validity warnings");
     let mut lines = Vec::new();
     for run in runs {
-        lines.extend(run.scenario.warnings.iter().map(|w| format!("{}: {w}", run.label)));
+        lines.extend(
+            run.scenario
+                .warnings
+                .iter()
+                .map(|w| format!("{}: {w}", run.label)),
+        );
         lines.extend(
             crate::report::findings::warning_lines(Some(&run.label), &run.result.findings)
                 .lines()

@@ -57,7 +57,7 @@ pub struct RunArgs {
     /// Run only shard K of N (1 ≤ K ≤ N), a contiguous slice of the cases, into a part file
     /// for `study merge` (needs -o).
     #[arg(long, value_name = "K/N", value_parser = parse_shard, requires = "output",
-          conflicts_with_all = ["summary", "survival_plot", "tornado_plot"])]
+          conflicts_with_all = ["summary", "survival_plot", "tornado_plot", "report"])]
     pub shard: Option<(usize, usize)>,
 
     /// Write the per-case table (CSV) to FILE; with --shard, the part file.
@@ -82,6 +82,11 @@ pub struct SummaryOutputs {
     /// Write the tornado chart of the inputs' influence on the life to FILE (SVG).
     #[arg(long, value_name = "FILE.svg")]
     pub tornado_plot: Option<PathBuf>,
+
+    /// Write a self-contained HTML report to FILE: the summary, the survival curve, the
+    /// sensitivities, the warnings, the study and its base scenario (inline SVG and CSS).
+    #[arg(long, value_name = "FILE.html")]
+    pub report: Option<PathBuf>,
 }
 
 /// `study merge` and `study slurm`.
@@ -235,31 +240,48 @@ fn finish(
         .map(|_| out::summary_json(study, &summary))
         .transpose()
         .map_err(|e| CliError::Internal(e.to_string()))?;
+    // a chart is drawn for its own file or for the report
     let chart =
-        |path: &Option<PathBuf>,
+        |path: Option<&Path>,
          draw: fn(&Study, &StudySummary) -> Result<String, crate::report::plot::PlotError>|
          -> Option<String> {
-            path.as_ref().and_then(|p| match draw(study, &summary) {
+            if path.is_none() && outputs.report.is_none() {
+                return None;
+            }
+            match draw(study, &summary) {
                 Ok(svg) => Some(svg),
                 Err(e) => {
-                    eprintln!("warning: no chart written to {}: {e}", p.display());
+                    let target =
+                        path.map_or_else(String::new, |p| format!(" written to {}", p.display()));
+                    eprintln!("warning: no chart{target}: {e}");
                     None
                 }
-            })
+            }
         };
-    let survival = chart(&outputs.survival_plot, charts::survival_chart);
-    let tornado = chart(&outputs.tornado_plot, charts::tornado_chart);
+    let survival = chart(outputs.survival_plot.as_deref(), charts::survival_chart);
+    let tornado = chart(outputs.tornado_plot.as_deref(), charts::tornado_chart);
+    let text = out::summary_table(study, &summary);
+    let page = outputs.report.as_ref().map(|_| {
+        out::report_page(
+            study,
+            &summary,
+            &text,
+            survival.as_deref(),
+            tornado.as_deref(),
+        )
+    });
     for (path, bytes) in [
         (table, csv.as_deref()),
         (outputs.summary.as_deref(), json.as_deref()),
         (outputs.survival_plot.as_deref(), survival.as_deref()),
         (outputs.tornado_plot.as_deref(), tornado.as_deref()),
+        (outputs.report.as_deref(), page.as_deref()),
     ] {
         if let (Some(path), Some(bytes)) = (path, bytes) {
             write_output(Some(path), bytes.as_bytes())?;
         }
     }
-    write_output(None, out::summary_table(study, &summary).as_bytes())
+    write_output(None, text.as_bytes())
 }
 
 fn merge(args: MergeArgs) -> Result<(), CliError> {

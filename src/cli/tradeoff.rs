@@ -44,6 +44,11 @@ pub struct TradeoffArgs {
     /// Leave out the numerical level (the band-limited section; seconds to minutes).
     #[arg(long)]
     pub skip_numerical: bool,
+
+    /// Write a self-contained HTML report to FILE: the ladder's table and chart, the warnings
+    /// and the scenario (inline SVG and CSS, nothing fetched).
+    #[arg(long, value_name = "FILE.html")]
+    pub report: Option<PathBuf>,
 }
 
 fn parse_band(text: &str) -> Result<f64, String> {
@@ -71,20 +76,56 @@ pub fn run(args: TradeoffArgs) -> Result<(), CliError> {
         .as_ref()
         .map(|_| tradeoff_table(&rows))
         .transpose()?;
-    let svg = match &args.plot {
-        Some(_) => Some(
+    let svg = match args.plot.is_some() || args.report.is_some() {
+        true => Some(
             tradeoff_chart(&format!("{}: error against time", scenario.name), &rows)
                 .to_svg()
                 .map_err(|e| CliError::Internal(e.to_string()))?,
         ),
-        None => None,
+        false => None,
     };
-    for (path, bytes) in [(&args.output, csv.as_deref()), (&args.plot, svg.as_deref())] {
+    let table = tradeoff_markdown(&rows);
+    let page = args.report.as_ref().map(|_| {
+        use crate::report::html;
+        let mut body = format!(
+            "<h1>{}: speed against accuracy</h1>\n<p class=\"meta\">scenario file {} · sealsim \
+             tradeoff</p>\n",
+            html::escape(&scenario.name),
+            html::escape(&args.scenario.display().to_string())
+        );
+        body += &html::verdict(
+            "info",
+            "Each fidelity level and numerical setting with its wall time and its error against \
+             the most accurate setting of its section.",
+        );
+        body += &html::heading("The ladder");
+        body += &html::pre(&table);
+        if let Some(svg) = &svg {
+            body += &html::heading("Error against time");
+            body += &html::figure(svg, "Error against wall time, one point per setting.");
+        }
+        body += &html::heading("Validity warnings");
+        let mut lines = scenario.warnings.clone();
+        lines.extend(
+            crate::report::findings::warning_lines(None, &findings)
+                .lines()
+                .map(str::to_owned),
+        );
+        body += &html::warnings(&lines);
+        body += &html::heading("Scenario (inputs with units and provenance)");
+        body += &html::pre(&std::fs::read_to_string(&args.scenario).unwrap_or_default());
+        html::document(&format!("{}: speed against accuracy", scenario.name), &body)
+    });
+    for (path, bytes) in [
+        (&args.output, csv.as_deref()),
+        (&args.plot, svg.as_deref()),
+        (&args.report, page.as_deref()),
+    ] {
         if let (Some(path), Some(bytes)) = (path, bytes) {
             write_output(Some(path), bytes.as_bytes())?;
         }
     }
     print_scenario_warnings(None, &scenario);
     print_findings(None, &findings);
-    write_output(None, tradeoff_markdown(&rows).as_bytes())
+    write_output(None, table.as_bytes())
 }

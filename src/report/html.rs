@@ -150,7 +150,10 @@ mod tests {
 
     #[test]
     fn escapes_markup_and_inlines_svg_without_its_declaration() {
-        assert_eq!(escape("a < b & \"c\" > d"), "a &lt; b &amp; &quot;c&quot; &gt; d");
+        assert_eq!(
+            escape("a < b & \"c\" > d"),
+            "a &lt; b &amp; &quot;c&quot; &gt; d"
+        );
         let f = figure("<?xml version=\"1.0\"?>\n<svg width=\"10\"></svg>", "x <y>");
         assert!(f.starts_with("<figure class=\"plot\">\n<svg"));
         assert!(f.contains("<figcaption>x &lt;y&gt;</figcaption>"));

@@ -837,7 +837,7 @@ impl LeakFloor {
         )
     }
 
-    /// A leak rate for people: [`flow`] above the floor, [`LeakFloor::sealed`] below.
+    /// A leak rate for people: m³/s with mL/h above the floor, [`LeakFloor::sealed`] below.
     pub fn flow(&self, q: f64) -> String {
         if self.seals(q) {
             self.sealed()
@@ -1070,7 +1070,7 @@ pub fn human_summary(
         Some(f) => format!(
             "FAILS after {} (t = {} s) by {}",
             human_time(f.time),
-            human(f.time, 6),
+            human(f.time, 3),
             f.mode.as_str()
         ),
         None if !problem.can_fail() => {
@@ -1408,6 +1408,39 @@ pub fn compare_table(rows: &[CompareRow<'_>]) -> Result<String, ReportError> {
 
 /// The comparison as an aligned text table for the terminal (a gas: throughputs in Pa·m³/s).
 pub fn compare_text(rows: &[CompareRow<'_>]) -> String {
+    let cells = compare_cells(rows);
+    let columns = cells[0].len();
+    let width: Vec<usize> = (0..columns)
+        .map(|c| {
+            cells
+                .iter()
+                .filter(|r| r.len() == columns)
+                .map(|r| r[c].chars().count())
+                .max()
+                .unwrap_or(0)
+        })
+        .collect();
+    let mut out = String::new();
+    for row in &cells {
+        let line: Vec<String> = row
+            .iter()
+            .zip(&width)
+            .map(|(cell, w)| {
+                format!(
+                    "{cell}{}",
+                    " ".repeat(w.saturating_sub(cell.chars().count()))
+                )
+            })
+            .collect();
+        out += line.join("  ").trim_end();
+        out.push('\n');
+    }
+    out
+}
+
+/// The comparison's cells for people: the header, one row per compound, and a one-cell note on
+/// the floor.
+pub fn compare_cells(rows: &[CompareRow<'_>]) -> Vec<Vec<String>> {
     let unit = match rows.first().and_then(|r| r.mean_pressure) {
         Some(_) => "Pa·m³/s",
         None => "m³/s",
@@ -1468,7 +1501,6 @@ pub fn compare_text(rows: &[CompareRow<'_>]) -> String {
             state.to_owned(),
         ]);
     }
-    let mut cells = cells;
     if let Some(f) = rows.first().map(|r| r.floor) {
         cells.push(vec![format!(
             "(\"sealed\": below {} m³/s, {}; the CSV keeps the values)",
@@ -1476,28 +1508,7 @@ pub fn compare_text(rows: &[CompareRow<'_>]) -> String {
             f.meaning()
         )]);
     }
-    let columns = cells[0].len();
-    let width: Vec<usize> = (0..columns)
-        .map(|c| {
-            cells
-                .iter()
-                .filter(|r| r.len() == columns)
-                .map(|r| r[c].chars().count())
-                .max()
-                .unwrap_or(0)
-        })
-        .collect();
-    let mut out = String::new();
-    for row in &cells {
-        let line: Vec<String> = row
-            .iter()
-            .zip(&width)
-            .map(|(cell, w)| format!("{cell}{}", " ".repeat(w.saturating_sub(cell.chars().count()))))
-            .collect();
-        out += line.join("  ").trim_end();
-        out.push('\n');
-    }
-    out
+    cells
 }
 
 #[cfg(test)]
@@ -1659,7 +1670,10 @@ mod tests {
         }];
         let text = compare_table(&rows).unwrap();
         let line = text.lines().nth(1).unwrap();
-        assert_eq!(line, "x,rubber,user,7.8894e7,leak_rate,1e-12,,,1000,1,0,,leaking");
+        assert_eq!(
+            line,
+            "x,rubber,user,7.8894e7,leak_rate,1e-12,,,1e3,1e0,1.7279999999999999e-7,,leaking"
+        );
         assert!(compare_text(&rows).contains("2.5 years"));
         // a gas at p̄ = 1.5 bar: the throughputs p̄ Q̇ after the volume flows (a format test)
         let gas = [CompareRow {
@@ -1674,7 +1688,7 @@ mod tests {
         ));
         assert_eq!(
             text.lines().nth(1).unwrap(),
-            "x,rubber,user,7.8894e7,leak_rate,1e-12,,,1.5e-7,,,1000,1,0,,leaking"
+            "x,rubber,user,7.8894e7,leak_rate,1e-12,,,1.5e-7,,,1e3,1e0,1.7279999999999999e-7,,leaking"
         );
         assert!(compare_text(&gas).contains("Q 1 day [Pa·m³/s]"));
     }

@@ -79,9 +79,7 @@ pub fn life_chart(
     {
         let root = SVGBackend::with_string(&mut svg, (900, 1000)).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
-        let root = root
-            .titled(title, ("sans-serif", 22))
-            .map_err(err)?;
+        let root = root.titled(title, ("sans-serif", 22)).map_err(err)?;
         let panels = root.split_evenly((3, 1));
 
         // 1. leak rate
@@ -113,9 +111,11 @@ pub fn life_chart(
             }
         }
         chart
-            .draw_series(spans.iter().map(|&(a, b)| {
-                Rectangle::new([(a, y_lo), (b, y_hi)], ORANGE.mix(0.15).filled())
-            }))
+            .draw_series(
+                spans.iter().map(|&(a, b)| {
+                    Rectangle::new([(a, y_lo), (b, y_hi)], ORANGE.mix(0.15).filled())
+                }),
+            )
             .map_err(err)?;
         let points: Vec<(f64, f64)> = rows
             .iter()
@@ -133,10 +133,10 @@ pub fn life_chart(
             .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLUE.stroke_width(2)));
         chart
             .draw_series(DashedLineSeries::new(
-                vec![(x_lo, y_lo), (x_hi, y_lo)],
+                vec![(x_lo, floor.rate.log10()), (x_hi, floor.rate.log10())],
                 4,
                 4,
-                GREY.stroke_width(1).into(),
+                GREY.stroke_width(1),
             ))
             .map_err(err)?
             .label(format!(
@@ -151,7 +151,7 @@ pub fn life_chart(
                     vec![(x_lo, clip(q)), (x_hi, clip(q))],
                     8,
                     5,
-                    VERMILLION.stroke_width(2).into(),
+                    VERMILLION.stroke_width(2),
                 ))
                 .map_err(err)?
                 .label(format!("max_leak_rate {} m³/s", human(q, 3)))
@@ -225,7 +225,7 @@ pub fn life_chart(
                     vec![(x_lo, level), (x_hi, level)],
                     8,
                     5,
-                    VERMILLION.stroke_width(2).into(),
+                    VERMILLION.stroke_width(2),
                 ))
                 .map_err(err)?
                 .label(format!(
@@ -239,7 +239,9 @@ pub fn life_chart(
         }
         if let Some(f) = failure {
             let x = (f.time / unit).clamp(x_lo, x_hi);
-            let k = rows.partition_point(|r| r.time < f.time).min(rows.len() - 1);
+            let k = rows
+                .partition_point(|r| r.time < f.time)
+                .min(rows.len() - 1);
             chart
                 .draw_series(std::iter::once(Cross::new(
                     (x, rows[k].sealing_force / 1e3),
@@ -264,7 +266,10 @@ pub fn life_chart(
         let mut high = Vec::with_capacity(grid);
         for k in 0..grid {
             let t = first * (end / first).powf(k as f64 / (grid - 1) as f64);
-            let (a, b) = ((t - 12.0 * HOUR).max(0.0), (t + 12.0 * HOUR).min(end.max(t)));
+            let (a, b) = (
+                (t - 12.0 * HOUR).max(0.0),
+                (t + 12.0 * HOUR).min(end.max(t)),
+            );
             let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
             for m in 0..=24 {
                 let c = problem.environment.at(a + (b - a) * m as f64 / 24.0) - 273.15;
@@ -298,7 +303,10 @@ pub fn life_chart(
                 .chain(high.iter().rev().copied())
                 .collect();
             chart
-                .draw_series(std::iter::once(Polygon::new(band, ORANGE.mix(0.35).filled())))
+                .draw_series(std::iter::once(Polygon::new(
+                    band,
+                    ORANGE.mix(0.35).filled(),
+                )))
                 .map_err(err)?
                 .label("daily range (lowest to highest within ±12 h)")
                 .legend(|(x, y)| {
@@ -319,6 +327,122 @@ pub fn life_chart(
                 .label("lowest")
                 .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLUE.stroke_width(1)));
         }
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::UpperLeft)
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .draw()
+            .map_err(err)?;
+        root.present().map_err(err)?;
+    }
+    Ok(svg)
+}
+
+/// The leak rates of several runs against time (`sealsim compare`): the reader's time unit, the
+/// axis never below the floor (lower rates drawn on it), each run's failure marked, Okabe–Ito
+/// colours.
+pub fn compare_chart(
+    title: &str,
+    runs: &[(&str, &LifeResult)],
+    floor: &LeakFloor,
+) -> Result<String, PlotError> {
+    const COLOURS: [RGBColor; 7] = [
+        BLUE,
+        VERMILLION,
+        GREEN,
+        ORANGE,
+        RGBColor(204, 121, 167),
+        RGBColor(86, 180, 233),
+        RGBColor(0, 0, 0),
+    ];
+    let times = runs
+        .iter()
+        .flat_map(|(_, r)| r.rows.iter().map(|row| row.time));
+    let end = times.clone().fold(0.0, f64::max);
+    let first = times.filter(|t| *t > 0.0).fold(f64::INFINITY, f64::min);
+    if !first.is_finite() {
+        return Err(PlotError("the runs have no time after installation".into()));
+    }
+    let (unit, unit_name) = time_unit(end);
+    let (x_lo, x_hi) = (first / unit, (end / unit).max(first / unit * 1.0001));
+    let y_lo = leak_axis_bottom(floor);
+    let clip = |q: f64| q.max(floor.rate).log10();
+    let top = runs
+        .iter()
+        .flat_map(|(_, r)| r.rows.iter().map(|row| row.leak_rate))
+        .fold(floor.rate * 10.0, f64::max);
+    let y_hi = top.log10().ceil() + 0.5;
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (900, 520)).into_drawing_area();
+        root.fill(&WHITE).map_err(err)?;
+        let mut chart = ChartBuilder::on(&root)
+            .caption(title, ("sans-serif", 20))
+            .margin(14)
+            .x_label_area_size(44)
+            .y_label_area_size(90)
+            .build_cartesian_2d((x_lo..x_hi).log_scale(), y_lo..y_hi)
+            .map_err(err)?;
+        chart
+            .configure_mesh()
+            .x_desc(format!("time after installation [{unit_name}]"))
+            .x_label_formatter(&|v| human(*v, 2))
+            .y_desc("leak rate [m³/s]")
+            .y_label_formatter(&|v| {
+                if (v - v.round()).abs() < 1e-9 {
+                    format!("1e{}", v.round())
+                } else {
+                    String::new()
+                }
+            })
+            .draw()
+            .map_err(err)?;
+        for (i, (label, r)) in runs.iter().enumerate() {
+            let colour = COLOURS[i % COLOURS.len()];
+            let points: Vec<(f64, f64)> = r
+                .rows
+                .iter()
+                .filter(|row| row.time > 0.0)
+                .map(|row| (row.time / unit, clip(row.leak_rate)))
+                .collect();
+            let sealed = r.rows.iter().all(|row| floor.seals(row.leak_rate));
+            chart
+                .draw_series(LineSeries::new(points, colour.stroke_width(2)))
+                .map_err(err)?
+                .label(if sealed {
+                    format!("{label}: sealed throughout")
+                } else {
+                    (*label).to_owned()
+                })
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2))
+                });
+            if let Some(f) = r.failure {
+                let q = r.leak_rate_at(f.time).unwrap_or(0.0);
+                chart
+                    .draw_series(std::iter::once(Cross::new(
+                        ((f.time / unit).clamp(x_lo, x_hi), clip(q)),
+                        7,
+                        colour.stroke_width(3),
+                    )))
+                    .map_err(err)?;
+            }
+        }
+        chart
+            .draw_series(DashedLineSeries::new(
+                vec![(x_lo, floor.rate.log10()), (x_hi, floor.rate.log10())],
+                4,
+                4,
+                GREY.stroke_width(1),
+            ))
+            .map_err(err)?
+            .label(format!(
+                "floor {} m³/s ({}); crosses: failures",
+                human(floor.rate, 2),
+                floor.meaning()
+            ))
+            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], GREY.stroke_width(1)));
         chart
             .configure_series_labels()
             .position(SeriesLabelPosition::UpperLeft)

@@ -667,6 +667,63 @@ pub mod charts {
     }
 }
 
+/// The HTML report of a study: the summary table, the survival curve, the sensitivities, the
+/// warnings, the study file and its base scenario.
+pub fn report_page(
+    study: &Study,
+    summary: &StudySummary,
+    table: &str,
+    survival: Option<&str>,
+    tornado: Option<&str>,
+) -> String {
+    use crate::report::html;
+    let mut body = format!("<h1>{}</h1>\n", html::escape(&study.name));
+    body += &format!(
+        "<p class=\"meta\">study file {} · base {} · sealsim study</p>\n",
+        html::escape(&study.path.display().to_string()),
+        html::escape(&study.base_path.display().to_string())
+    );
+    let b10 = summary
+        .b_lives
+        .iter()
+        .find(|(p, _)| *p == 0.1)
+        .map(|(_, b)| b);
+    let verdict = match b10.and_then(|b| b.estimate) {
+        Some(t) => format!(
+            "B10 life {} ({} of {} cases failed within their run)",
+            human_time(t),
+            summary.failures,
+            summary.cases
+        ),
+        None => format!(
+            "B10 not reached: {} of {} cases failed within their run",
+            summary.failures, summary.cases
+        ),
+    };
+    body += &html::verdict("info", &verdict);
+    body += &html::heading("Summary");
+    body += &html::pre(table);
+    if let Some(svg) = survival {
+        body += &html::heading("Survival");
+        body += &html::figure(
+            svg,
+            "Kaplan–Meier survival with its 95 % band, the Weibull fit and the B10 life.",
+        );
+    }
+    if let Some(svg) = tornado {
+        body += &html::heading("What drives the life");
+        body += &html::figure(
+            svg,
+            "Rank correlation of each input with the life (ρ; η for words), largest first.",
+        );
+    }
+    body += &html::heading("Study file");
+    body += &html::pre(&std::fs::read_to_string(&study.path).unwrap_or_default());
+    body += &html::heading("Base scenario (inputs with units and provenance)");
+    body += &html::pre(study.base_text());
+    html::document(&study.name, &body)
+}
+
 /// What `study slurm` submits.
 #[derive(Debug, Clone, Copy)]
 pub struct SlurmJob<'a> {

@@ -26,6 +26,7 @@ mod leak;
 mod materials;
 mod motion;
 mod ranges;
+mod report;
 mod rubber;
 mod run;
 mod small_defects;
