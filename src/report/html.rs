@@ -1,4 +1,4 @@
-//! Self-contained HTML reports (`--report FILE.html`, docs/model.md §15.4): one page with inline
+//! Self-contained HTML reports (`--report FILE.html`, docs/model.md §15.5): one page with inline
 //! CSS and inline SVG — no scripts, no fonts or images from anywhere — that an engineer can
 //! read, keep and send. The pieces here are plain text builders; what goes on a page is the
 //! command's.

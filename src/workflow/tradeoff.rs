@@ -133,6 +133,19 @@ fn relative_error(value: f64, reference: f64) -> Option<f64> {
     }
 }
 
+/// The relative error of a leak rate or leaked volume with both raised to `floor` first
+/// (docs/model.md §15.4): `|max(v, f)/max(r, f) − 1|`. Below the floor nothing flows but single
+/// molecules, so two rates under it agree (0) and a difference there is never an error; a
+/// setting that leaks where the reference is sealed in practice has the error of its excess
+/// over the floor.
+fn floored_error(value: f64, reference: f64, floor: f64) -> Option<f64> {
+    if floor > 0.0 {
+        Some((value.max(floor) / reference.max(floor) - 1.0).abs())
+    } else {
+        relative_error(value, reference)
+    }
+}
+
 /// One analytic setting of the full-spectrum section.
 struct Setting {
     level: Fidelity,
@@ -290,11 +303,15 @@ pub fn run(
     let (ref_static_s, (ref_q, pressure)) = static_state(problem, &ref_life, &reference);
     let (ref_life_s, ref_ttf, ref_volume) = life_run(&ref_life, &reference);
     step(progress);
+    // a surviving seal is judged on its leaked volume, floored at one molecule a second over
+    // the run: differences below that are not errors (docs/model.md §15.4)
+    let rate_floor = life.fluid.one_molecule_per_second();
+    let volume_floor = rate_floor * life.time.duration;
     let judge = |ttf: Option<f64>, volume: f64| match ref_ttf {
         Some(r) => ttf.and_then(|t| relative_error(t, r)),
         None => match ttf {
             Some(_) => None,
-            None => relative_error(volume, ref_volume),
+            None => floored_error(volume, ref_volume, volume_floor),
         },
     };
     let mut rows = vec![TradeoffRow {
@@ -324,7 +341,7 @@ pub fn run(
             nominal_pressure: pressure,
             static_seconds,
             leak_rate: q,
-            static_error: relative_error(q, ref_q),
+            static_error: floored_error(q, ref_q, rate_floor),
             life: Some(LifeOutcome {
                 seconds: life_seconds,
                 time_to_failure: ttf,
@@ -443,14 +460,15 @@ fn band_limited_section(
             nominal_pressure: p0,
             static_seconds: seconds,
             leak_rate,
-            static_error: relative_error(leak_rate, reference),
+            static_error: floored_error(leak_rate, reference, pb.fluid.one_molecule_per_second()),
             life: None,
             leak_rate_spread: None,
         });
         step();
     }
     for row in &mut numerical {
-        row.static_error = relative_error(row.leak_rate, reference);
+        row.static_error =
+            floored_error(row.leak_rate, reference, pb.fluid.one_molecule_per_second());
     }
     rows.extend(numerical);
     rows
@@ -482,4 +500,23 @@ pub fn for_scenario(
         super::leak::evaluate_on(&table_level, path.clone(), findings, None).findings;
     findings.extend(super::life_on(&table_level.life, path, Default::default()).findings);
     ScenarioTradeoff { rows, findings }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn differences_below_the_floor_are_not_errors() {
+        let floor = 3e-29;
+        // two sealed-in-practice rates nine decades apart: no error (the plain relative error
+        // would be 1e9)
+        assert!((relative_error(1e-31, 1e-40).unwrap() / 1e9 - 1.0).abs() < 1e-6);
+        assert_eq!(floored_error(1e-31, 1e-40, floor), Some(0.0));
+        assert_eq!(floored_error(0.0, 1e-35, floor), Some(0.0));
+        // above the floor the plain relative error
+        assert_eq!(floored_error(2e-12, 1e-12, floor), Some(1.0));
+        // a setting that leaks where the reference is sealed: its excess over the floor
+        assert!((floored_error(6e-29, 0.0, floor).unwrap() - 1.0).abs() < 1e-12);
+    }
 }

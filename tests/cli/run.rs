@@ -606,7 +606,10 @@ fn compare_runs_each_compound() {
         for cell in &row[5..9] {
             assert!(cell.parse::<f64>().unwrap() > 0.0, "{row:?}");
         }
-        assert!(["sealed", "leaking", "lift_off"].contains(&row[12].as_str()), "{row:?}");
+        assert!(
+            ["sealed", "leaking", "lift_off"].contains(&row[12].as_str()),
+            "{row:?}"
+        );
     }
     // NBR as in `run`
     let run = Outputs::new();
