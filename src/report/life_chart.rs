@@ -10,6 +10,7 @@ use super::plot::PlotError;
 use crate::leak::SealState;
 use crate::simulate::{LifeProblem, LifeResult};
 use crate::units::human;
+use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 
 const BLUE: RGBColor = RGBColor(0, 114, 178);
@@ -24,6 +25,60 @@ const YEAR: f64 = 365.25 * DAY;
 
 fn err<E: std::fmt::Display>(e: E) -> PlotError {
     PlotError(e.to_string())
+}
+
+/// A chart over log time and a linear (or log10-valued) y, as every panel here is.
+type Panel<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<LogCoord<f64>, RangedCoordf64>>;
+
+/// The legend box, at `position`.
+pub(crate) fn legend<'a, DB: DrawingBackend + 'a, CT: CoordTranslate>(
+    chart: &mut ChartContext<'a, DB, CT>,
+    position: SeriesLabelPosition,
+) -> Result<(), PlotError>
+where
+    DB::ErrorType: 'static,
+{
+    chart
+        .configure_series_labels()
+        .position(position)
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .draw()
+        .map_err(err)
+}
+
+/// A log10 axis value as its decade (`1e-12`), blank between decades.
+fn decade_label(v: &f64) -> String {
+    if (v - v.round()).abs() < 1e-9 {
+        format!("1e{}", v.round())
+    } else {
+        String::new()
+    }
+}
+
+/// The floor as a grey dashed line across `x_lo..x_hi`, labelled `label`.
+fn floor_line(
+    chart: &mut Panel<'_, '_>,
+    (x_lo, x_hi): (f64, f64),
+    floor: &LeakFloor,
+    label: &str,
+) -> Result<(), PlotError> {
+    let y = floor.rate.log10();
+    chart
+        .draw_series(DashedLineSeries::new(
+            vec![(x_lo, y), (x_hi, y)],
+            4,
+            4,
+            GREY.stroke_width(1),
+        ))
+        .map_err(err)?
+        .label(format!(
+            "floor {} m³/s ({}){label}",
+            human(floor.rate, 2),
+            floor.meaning()
+        ))
+        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], GREY.stroke_width(1)));
+    Ok(())
 }
 
 /// The time unit a reader would use for a run ending at `end` \[s\]: (seconds per unit, name).
@@ -94,13 +149,7 @@ pub fn life_chart(
             .x_desc(&x_label)
             .x_label_formatter(&|v| human(*v, 2))
             .y_desc("leak rate [m³/s]")
-            .y_label_formatter(&|v| {
-                if (v - v.round()).abs() < 1e-9 {
-                    format!("1e{}", v.round())
-                } else {
-                    String::new()
-                }
-            })
+            .y_label_formatter(&decade_label)
             .draw()
             .map_err(err)?;
         // lift-off shaded
@@ -131,20 +180,7 @@ pub fn life_chart(
                 "leak rate".to_owned()
             })
             .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLUE.stroke_width(2)));
-        chart
-            .draw_series(DashedLineSeries::new(
-                vec![(x_lo, floor.rate.log10()), (x_hi, floor.rate.log10())],
-                4,
-                4,
-                GREY.stroke_width(1),
-            ))
-            .map_err(err)?
-            .label(format!(
-                "floor {} m³/s ({}): below it reads sealed",
-                human(floor.rate, 2),
-                floor.meaning()
-            ))
-            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], GREY.stroke_width(1)));
+        floor_line(&mut chart, (x_lo, x_hi), floor, ": below it reads sealed")?;
         if let Some(q) = threshold {
             chart
                 .draw_series(DashedLineSeries::new(
@@ -185,13 +221,7 @@ pub fn life_chart(
                 ))
                 .legend(|(x, y)| Cross::new((x + 10, y), 6, VERMILLION.stroke_width(3)));
         }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperLeft)
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .draw()
-            .map_err(err)?;
+        legend(&mut chart, SeriesLabelPosition::UpperLeft)?;
 
         // 2. sealing force [N/mm]
         let force: Vec<(f64, f64)> = rows
@@ -250,13 +280,7 @@ pub fn life_chart(
                 )))
                 .map_err(err)?;
         }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperRight)
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .draw()
-            .map_err(err)?;
+        legend(&mut chart, SeriesLabelPosition::UpperRight)?;
 
         // 3. temperature [°C]: the daily envelope — at each of 4 000 log-spaced times the
         // lowest and highest temperature within ±12 h (hourly samples), so a daily cycle shows
@@ -327,13 +351,7 @@ pub fn life_chart(
                 .label("lowest")
                 .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLUE.stroke_width(1)));
         }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperLeft)
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .draw()
-            .map_err(err)?;
+        legend(&mut chart, SeriesLabelPosition::UpperLeft)?;
         root.present().map_err(err)?;
     }
     Ok(svg)
@@ -389,13 +407,7 @@ pub fn compare_chart(
             .x_desc(format!("time after installation [{unit_name}]"))
             .x_label_formatter(&|v| human(*v, 2))
             .y_desc("leak rate [m³/s]")
-            .y_label_formatter(&|v| {
-                if (v - v.round()).abs() < 1e-9 {
-                    format!("1e{}", v.round())
-                } else {
-                    String::new()
-                }
-            })
+            .y_label_formatter(&decade_label)
             .draw()
             .map_err(err)?;
         for (i, (label, r)) in runs.iter().enumerate() {
@@ -429,27 +441,8 @@ pub fn compare_chart(
                     .map_err(err)?;
             }
         }
-        chart
-            .draw_series(DashedLineSeries::new(
-                vec![(x_lo, floor.rate.log10()), (x_hi, floor.rate.log10())],
-                4,
-                4,
-                GREY.stroke_width(1),
-            ))
-            .map_err(err)?
-            .label(format!(
-                "floor {} m³/s ({}); crosses: failures",
-                human(floor.rate, 2),
-                floor.meaning()
-            ))
-            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], GREY.stroke_width(1)));
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperLeft)
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .draw()
-            .map_err(err)?;
+        floor_line(&mut chart, (x_lo, x_hi), floor, "; crosses: failures")?;
+        legend(&mut chart, SeriesLabelPosition::UpperLeft)?;
         root.present().map_err(err)?;
     }
     Ok(svg)

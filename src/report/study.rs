@@ -590,13 +590,7 @@ pub mod charts {
                         PathElement::new(vec![(x, y), (x + 20, y)], grey.stroke_width(1))
                     });
             }
-            chart
-                .configure_series_labels()
-                .position(SeriesLabelPosition::UpperRight)
-                .background_style(WHITE.mix(0.85))
-                .border_style(BLACK)
-                .draw()
-                .map_err(err)?;
+            crate::report::life_chart::legend(&mut chart, SeriesLabelPosition::UpperRight)?;
             root.present().map_err(err)?;
         }
         Ok(svg)
