@@ -1,7 +1,8 @@
 //! The chart of a life run (docs/model.md §15.3): three panels over one time axis in the
 //! reader's unit (h, days or years) — the leak rate (log, clipped at the [`LeakFloor`], the
 //! leak-rate threshold as a dashed line, lift-off shaded), the sealing force (the retained-force
-//! threshold dashed) and the temperature (for a cycling temperature its daily envelope, not
+//! threshold dashed; the compression set on the right axis where ageing is modelled) and the
+//! temperature (frozen spans shaded) (for a cycling temperature its daily envelope, not
 //! aliased samples); the failure marked in every panel. Okabe–Ito colours
 //! (distinguishable with the common colour-vision deficiencies).
 
@@ -129,6 +130,9 @@ pub fn life_chart(
         .fold(floor.rate * 10.0, f64::max);
     let y_hi = top.log10().ceil() + 0.5;
     let all_sealed = rows.iter().all(|r| floor.seals(r.leak_rate));
+    // the force panel's right axis (compression set); every panel keeps the same plot width
+    let aged = rows.iter().any(|r| r.compression_set.is_some());
+    let right = if aged { 70 } else { 0 };
 
     let mut svg = String::new();
     {
@@ -142,6 +146,7 @@ pub fn life_chart(
             .margin(12)
             .x_label_area_size(40)
             .y_label_area_size(90)
+            .right_y_label_area_size(right)
             .build_cartesian_2d((x_lo..x_hi).log_scale(), y_lo..y_hi)
             .map_err(err)?;
         chart
@@ -230,12 +235,19 @@ pub fn life_chart(
             .map(|r| (r.time / unit, r.sealing_force / 1e3))
             .collect();
         let f_max = force.iter().map(|p| p.1).fold(0.0, f64::max).max(1e-9) * 1.15;
-        let mut chart = ChartBuilder::on(&panels[1])
+        let chart = ChartBuilder::on(&panels[1])
             .margin(12)
             .x_label_area_size(40)
             .y_label_area_size(90)
+            .right_y_label_area_size(right)
             .build_cartesian_2d((x_lo..x_hi).log_scale(), 0.0..f_max)
             .map_err(err)?;
+        let set: Vec<(f64, f64)> = rows
+            .iter()
+            .filter(|r| r.time > 0.0)
+            .filter_map(|r| r.compression_set.map(|c| (r.time / unit, 100.0 * c)))
+            .collect();
+        let mut chart = chart.set_secondary_coord((x_lo..x_hi).log_scale(), 0.0..100.0);
         chart
             .configure_mesh()
             .x_desc(&x_label)
@@ -243,6 +255,19 @@ pub fn life_chart(
             .y_desc("sealing force [N/mm]")
             .draw()
             .map_err(err)?;
+        if !set.is_empty() {
+            chart
+                .configure_secondary_axes()
+                .y_desc("compression set [%] (dotted)")
+                .y_label_formatter(&|v| human(*v, 3))
+                .draw()
+                .map_err(err)?;
+            chart
+                .draw_secondary_series(DashedLineSeries::new(set, 2, 3, GREY.stroke_width(2)))
+                .map_err(err)?
+                .label("compression set (right axis)")
+                .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], GREY.stroke_width(2)));
+        }
         chart
             .draw_series(LineSeries::new(force, GREEN.stroke_width(2)))
             .map_err(err)?
@@ -310,6 +335,7 @@ pub fn life_chart(
             .margin(12)
             .x_label_area_size(40)
             .y_label_area_size(90)
+            .right_y_label_area_size(right)
             .build_cartesian_2d((x_lo..x_hi).log_scale(), (t_lo - pad)..(t_hi + pad))
             .map_err(err)?;
         chart
@@ -319,6 +345,27 @@ pub fn life_chart(
             .y_desc("temperature [°C]")
             .draw()
             .map_err(err)?;
+        // rows where the rubber is frozen (a_T undefined: at or below the WLF limit) shaded
+        let frozen: Vec<(f64, f64)> = rows
+            .windows(2)
+            .filter(|w| w[0].time > 0.0 && !w[1].shift_factor.is_finite())
+            .map(|w| (w[0].time / unit, w[1].time / unit))
+            .collect();
+        let (band_lo, band_hi) = (t_lo - pad, t_hi + pad);
+        chart
+            .draw_series(frozen.iter().map(|&(a, b)| {
+                Rectangle::new([(a, band_lo), (b, band_hi)], BLUE.mix(0.12).filled())
+            }))
+            .map_err(err)?;
+        if !frozen.is_empty() {
+            chart
+                .draw_series(std::iter::empty::<Rectangle<(f64, f64)>>())
+                .map_err(err)?
+                .label("frozen: below the WLF limit (shaded)")
+                .legend(|(x, y)| {
+                    Rectangle::new([(x, y - 5), (x + 20, y + 5)], BLUE.mix(0.25).filled())
+                });
+        }
         let cycling = low.iter().zip(&high).any(|(l, h)| h.1 - l.1 > 1e-9);
         if cycling {
             let band: Vec<(f64, f64)> = low
