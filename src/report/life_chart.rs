@@ -130,7 +130,7 @@ pub fn life_chart(
         .fold(floor.rate * 10.0, f64::max);
     let y_hi = top.log10().ceil() + 0.5;
     let all_sealed = rows.iter().all(|r| floor.seals(r.leak_rate));
-    // the force panel's right axis (compression set); every panel keeps the same plot width
+    // the force panel's right axis: the compression set, with ageing
     let aged = rows.iter().any(|r| r.compression_set.is_some());
     let right = if aged { 70 } else { 0 };
 
@@ -146,7 +146,6 @@ pub fn life_chart(
             .margin(12)
             .x_label_area_size(40)
             .y_label_area_size(90)
-            .right_y_label_area_size(right)
             .build_cartesian_2d((x_lo..x_hi).log_scale(), y_lo..y_hi)
             .map_err(err)?;
         chart
@@ -335,7 +334,6 @@ pub fn life_chart(
             .margin(12)
             .x_label_area_size(40)
             .y_label_area_size(90)
-            .right_y_label_area_size(right)
             .build_cartesian_2d((x_lo..x_hi).log_scale(), (t_lo - pad)..(t_hi + pad))
             .map_err(err)?;
         chart
