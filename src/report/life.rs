@@ -778,12 +778,17 @@ pub fn human_time(seconds: f64) -> String {
     format!("{} {unit}", human(value, 3))
 }
 
-/// A volume flow with a more tangible second unit: `"1.2e-12 m³/s (0.0043 mL/h)"`.
+/// A volume flow with tangible units beside it: `"1.2e-12 m³/s (0.0043 mL/h, 0.104 mL/day)"`.
 fn flow(q: f64) -> String {
     if q == 0.0 {
         return "0 m³/s".to_owned();
     }
-    format!("{} m³/s ({} mL/h)", human(q, 3), human(q * 1e6 * 3600.0, 3))
+    format!(
+        "{} m³/s ({} mL/h, {} mL/day)",
+        human(q, 3),
+        human(q * 1e6 * 3600.0, 3),
+        human(q * 1e6 * 86_400.0, 3)
+    )
 }
 
 /// `"80 °C (353.15 K)"`.

@@ -8,6 +8,7 @@
 
 use super::life::LeakFloor;
 use super::plot::PlotError;
+use super::plot::svg::OKABE_ITO;
 use crate::leak::SealState;
 use crate::simulate::{LifeProblem, LifeResult};
 use crate::units::human;
@@ -410,15 +411,6 @@ pub fn compare_chart(
     runs: &[(&str, &LifeResult)],
     floor: &LeakFloor,
 ) -> Result<String, PlotError> {
-    const COLOURS: [RGBColor; 7] = [
-        BLUE,
-        VERMILLION,
-        GREEN,
-        ORANGE,
-        RGBColor(204, 121, 167),
-        RGBColor(86, 180, 233),
-        RGBColor(0, 0, 0),
-    ];
     let times = runs
         .iter()
         .flat_map(|(_, r)| r.rows.iter().map(|row| row.time));
@@ -456,7 +448,7 @@ pub fn compare_chart(
             .draw()
             .map_err(err)?;
         for (i, (label, r)) in runs.iter().enumerate() {
-            let colour = COLOURS[i % COLOURS.len()];
+            let colour = OKABE_ITO[i % OKABE_ITO.len()];
             let points: Vec<(f64, f64)> = r
                 .rows
                 .iter()

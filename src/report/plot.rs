@@ -34,9 +34,21 @@ impl std::error::Error for PlotError {}
 
 /// Rendering (plotters): only with the `cli` feature, which brings the plotting dependency.
 #[cfg(feature = "cli")]
-mod svg {
+pub(crate) mod svg {
     use super::{LogLogChart, PlotError, Series};
     use plotters::prelude::*;
+
+    /// The Okabe–Ito colours (distinguishable with the common colour-vision deficiencies),
+    /// black last.
+    pub(crate) const OKABE_ITO: [RGBColor; 7] = [
+        RGBColor(0, 114, 178),
+        RGBColor(213, 94, 0),
+        RGBColor(0, 158, 115),
+        RGBColor(230, 159, 0),
+        RGBColor(204, 121, 167),
+        RGBColor(86, 180, 233),
+        RGBColor(0, 0, 0),
+    ];
     use std::fmt;
 
     fn err<E: fmt::Display>(e: E) -> PlotError {
@@ -200,7 +212,7 @@ mod svg {
                     .draw()
                     .map_err(err)?;
                 for (i, s) in self.series.iter().enumerate() {
-                    let colour = Palette99::pick(i).to_rgba();
+                    let colour = OKABE_ITO[i % OKABE_ITO.len()].to_rgba();
                     let points: Vec<(f64, f64)> = drawable(s)
                         .into_iter()
                         .map(|(x, y)| (x, y.log10()))
