@@ -188,33 +188,23 @@ fn report_page(
         ),
         None => html::paragraph("Every compound seals throughout: no leak rate to draw."),
     };
-    body += &html::heading("Validity warnings");
-    let mut lines = Vec::new();
-    for run in runs {
-        lines.extend(
-            run.scenario
-                .warnings
-                .iter()
-                .map(|w| format!("{}: {w}", run.label)),
-        );
-        lines.extend(
-            crate::report::findings::warning_lines(Some(&run.label), &run.result.findings)
-                .lines()
-                .map(str::to_owned),
-        );
-    }
-    body += &html::warnings(&lines);
+    let lines: Vec<String> = runs
+        .iter()
+        .flat_map(|run| {
+            html::validity_lines(
+                Some(&run.label),
+                &run.scenario.warnings,
+                &run.result.findings,
+            )
+        })
+        .collect();
+    body += &html::validity(&lines);
     if let Some(run) = runs.first() {
-        body += &html::heading("Fidelity");
-        let f = run.scenario.life.fidelity;
-        body += &html::paragraph(&format!(
-            "Level {}: {}. Measured error: {}.",
-            f.name(),
-            f.description(),
-            f.measured_error()
-        ));
-        body += &html::heading("Scenario (inputs with units and provenance)");
-        body += &html::pre(&std::fs::read_to_string(&run.scenario.path).unwrap_or_default());
+        body += &html::fidelity(run.scenario.life.fidelity);
+        body += &html::file(
+            html::SCENARIO_TITLE,
+            &std::fs::read_to_string(&run.scenario.path).unwrap_or_default(),
+        );
     }
     html::document(&format!("{name}: compounds compared"), &body)
 }

@@ -27,6 +27,19 @@ use std::path::Path;
 /// A progress reporter for long work (the numerical level): an indicatif bar on stderr, which
 /// indicatif hides when stderr is not a terminal. `report(done, total)` as the physics calls it.
 pub(crate) fn progress_bar(what: &str) -> impl FnMut(usize, usize) {
+    let bar = styled_bar(what);
+    move |done: usize, total: usize| {
+        bar.set_length(total as u64);
+        bar.set_position(done as u64);
+        if done >= total {
+            bar.finish_and_clear();
+        }
+    }
+}
+
+/// The bar behind [`progress_bar`]: `what [====>   ] done/total (elapsed, ~ETA left)`, for
+/// callers that report from several threads (its methods take `&self`).
+pub(crate) fn styled_bar(what: &str) -> indicatif::ProgressBar {
     let bar = indicatif::ProgressBar::new(0);
     bar.set_style(
         indicatif::ProgressStyle::with_template(
@@ -36,13 +49,7 @@ pub(crate) fn progress_bar(what: &str) -> impl FnMut(usize, usize) {
         .progress_chars("=> "),
     );
     bar.set_message(what.to_owned());
-    move |done: usize, total: usize| {
-        bar.set_length(total as u64);
-        bar.set_position(done as u64);
-        if done >= total {
-            bar.finish_and_clear();
-        }
-    }
+    bar
 }
 
 /// Prints validity findings to stderr, one `warning:` line each, `context` (e.g. a compound's

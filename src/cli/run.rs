@@ -183,22 +183,15 @@ fn report_page(
              marks the failure.",
         );
     }
-    body += &html::heading("Validity warnings");
-    let mut lines: Vec<String> = scenario.warnings.clone();
-    lines.extend(
-        crate::report::findings::warning_lines(None, &result.findings)
-            .lines()
-            .map(str::to_owned),
-    );
-    body += &html::warnings(&lines);
-    body += &html::heading("Fidelity");
-    body += &html::paragraph(&format!(
-        "Level {}: {}. Measured error: {}.",
-        life.fidelity.name(),
-        life.fidelity.description(),
-        life.fidelity.measured_error()
+    body += &html::validity(&html::validity_lines(
+        None,
+        &scenario.warnings,
+        &result.findings,
     ));
-    body += &html::heading("Scenario (inputs with units and provenance)");
-    body += &html::pre(&std::fs::read_to_string(&scenario.path).unwrap_or_default());
+    body += &html::fidelity(life.fidelity);
+    body += &html::file(
+        html::SCENARIO_TITLE,
+        &std::fs::read_to_string(&scenario.path).unwrap_or_default(),
+    );
     html::document(&scenario.name, &body)
 }

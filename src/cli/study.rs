@@ -192,14 +192,7 @@ fn run_cases(args: RunArgs) -> Result<(), CliError> {
         None => 0..total,
     };
     print_scenario_warnings(Some("base scenario"), &study.base_scenario);
-    let bar = indicatif::ProgressBar::new(range.len() as u64);
-    bar.set_style(
-        indicatif::ProgressStyle::with_template(
-            "cases [{bar:30}] {pos}/{len} ({elapsed}, ~{eta} left)",
-        )
-        .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar())
-        .progress_chars("=> "),
-    );
+    let bar = super::styled_bar("cases");
     let progress = |done: usize, total: usize| {
         bar.set_length(total as u64);
         bar.set_position(done as u64);
@@ -288,6 +281,7 @@ fn merge(args: MergeArgs) -> Result<(), CliError> {
     let study = Study::load(&args.study)?;
     let mut outcomes: Vec<CaseOutcome> = Vec::with_capacity(study.cases());
     let mut source: Vec<Option<usize>> = vec![None; study.cases()];
+    let design = study.plan.values(0..study.cases());
     for (p, part) in args.parts.iter().enumerate() {
         let text = std::fs::read_to_string(part).map_err(|e| {
             CliError::Input(format!(
@@ -295,7 +289,7 @@ fn merge(args: MergeArgs) -> Result<(), CliError> {
                 part.display()
             ))
         })?;
-        for case in out::read_part(&study, part, &text)? {
+        for case in out::read_part(&study, &design, part, &text)? {
             if let Some(q) = source[case.index] {
                 return Err(CliError::Input(format!(
                     "{}: case {} is also in {}: a part given twice, or parts of different \

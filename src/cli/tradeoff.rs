@@ -104,16 +104,11 @@ pub fn run(args: TradeoffArgs) -> Result<(), CliError> {
             body += &html::heading("Error against time");
             body += &html::figure(svg, "Error against wall time, one point per setting.");
         }
-        body += &html::heading("Validity warnings");
-        let mut lines = scenario.warnings.clone();
-        lines.extend(
-            crate::report::findings::warning_lines(None, &findings)
-                .lines()
-                .map(str::to_owned),
+        body += &html::validity(&html::validity_lines(None, &scenario.warnings, &findings));
+        body += &html::file(
+            html::SCENARIO_TITLE,
+            &std::fs::read_to_string(&args.scenario).unwrap_or_default(),
         );
-        body += &html::warnings(&lines);
-        body += &html::heading("Scenario (inputs with units and provenance)");
-        body += &html::pre(&std::fs::read_to_string(&args.scenario).unwrap_or_default());
         html::document(&format!("{}: speed against accuracy", scenario.name), &body)
     });
     for (path, bytes) in [

@@ -8,6 +8,7 @@
 pub mod cg;
 pub mod cholesky;
 pub mod fft;
+pub mod fnv;
 pub mod interp;
 pub mod laplacian;
 pub mod multigrid;

@@ -122,6 +122,56 @@ pub fn warnings(lines: &[String]) -> String {
     out + "</ul>\n"
 }
 
+/// The lines of a "Validity warnings" section: a scenario's input warnings (each
+/// `FILE:LINE: …`), then its run's findings, each line led by `context` (a compound's id) when
+/// given.
+pub fn validity_lines(
+    context: Option<&str>,
+    scenario_warnings: &[String],
+    findings: &crate::validity::Findings,
+) -> Vec<String> {
+    let lead = context.map(|c| format!("{c}: ")).unwrap_or_default();
+    let mut lines: Vec<String> = scenario_warnings
+        .iter()
+        .map(|w| format!("{lead}{w}"))
+        .collect();
+    lines.extend(
+        crate::report::findings::warning_lines(context, findings)
+            .lines()
+            .map(str::to_owned),
+    );
+    lines
+}
+
+/// The "Validity warnings" section of `lines` ([`validity_lines`]).
+pub fn validity(lines: &[String]) -> String {
+    lines_section("Validity warnings", lines)
+}
+
+/// A heading and a list of warnings under it.
+pub fn lines_section(title: &str, lines: &[String]) -> String {
+    heading(title) + &warnings(lines)
+}
+
+/// The "Fidelity" section: the level, what it computes and its measured error.
+pub fn fidelity(level: crate::leak::Fidelity) -> String {
+    heading("Fidelity")
+        + &paragraph(&format!(
+            "Level {}: {}. Measured error: {}.",
+            level.name(),
+            level.description(),
+            level.measured_error()
+        ))
+}
+
+/// A file's text under `title` (a scenario: its inputs with their units and provenance).
+pub fn file(title: &str, text: &str) -> String {
+    heading(title) + &pre(text)
+}
+
+/// The title of a scenario file's section.
+pub const SCENARIO_TITLE: &str = "Scenario (inputs with units and provenance)";
+
 /// The `label  text` lines of a terminal summary as a two-column table.
 pub fn summary_table(text: &str) -> String {
     let rows: Vec<Vec<String>> = text

@@ -98,11 +98,13 @@ pub fn part_csv(
     ))
 }
 
-/// The cases of one part file (or of a whole per-case table) of `study`, checked: the file
-/// must carry the study's fingerprint (a part file), the study's columns, and for every case
-/// the inputs the study's design gives it.
+/// The cases of one part file of `study`, checked: the file must carry the study's
+/// fingerprint, the study's columns, and for every case the inputs the study's design gives it
+/// (`design`: the design's values of every case, [`crate::study::design::Plan::values`] over all
+/// cases, computed once for all parts).
 pub fn read_part(
     study: &Study,
+    design: &[Vec<f64>],
     path: &Path,
     text: &str,
 ) -> Result<Vec<CaseOutcome>, ScenarioError> {
@@ -182,21 +184,21 @@ pub fn read_part(
                 format!("\"{}\" is not a case index", field(0)),
             )
         })?;
-        if index >= study.cases() {
+        if index >= design.len() {
             return Err(error(
                 Some(line),
                 Some("case"),
                 format!("case {index} is beyond the study's {} cases", study.cases()),
             ));
         }
-        let design = study.plan.values(index..index + 1);
+        let values = &design[index];
         let mut inputs = Vec::with_capacity(n_inputs);
         for (j, input) in study.inputs.iter().enumerate() {
             let cell = match input.kind {
                 InputKind::Words(_) => Cell::Word(field(1 + j).to_owned()),
                 InputKind::Quantity { .. } => Cell::Number(number(1 + j)?),
             };
-            if design.first().map(|v| input.cell(v[j])) != Some(cell.clone()) {
+            if input.cell(values[j]) != cell {
                 return Err(error(
                     Some(line),
                     Some(&expected[1 + j]),
@@ -711,10 +713,11 @@ pub fn report_page(
             "Rank correlation of each input with the life (ρ; η for words), largest first.",
         );
     }
-    body += &html::heading("Study file");
-    body += &html::pre(&std::fs::read_to_string(&study.path).unwrap_or_default());
-    body += &html::heading("Base scenario (inputs with units and provenance)");
-    body += &html::pre(study.base_text());
+    body += &html::file("Study file", study.text());
+    body += &html::file(
+        "Base scenario (inputs with units and provenance)",
+        study.base_text(),
+    );
     html::document(&study.name, &body)
 }
 

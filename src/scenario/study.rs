@@ -150,6 +150,8 @@ pub struct Study {
     pub name: String,
     /// The study file.
     pub path: PathBuf,
+    /// The study file's text, as read.
+    text: String,
     /// The base scenario file and its text.
     pub base_path: PathBuf,
     base_text: String,
@@ -362,20 +364,19 @@ impl Study {
                 format!("the grid has {} cases; at most 10 000 000", plan.cases()),
             ));
         }
-        let fingerprint = format!(
-            "{:016x}",
-            fnv1a([
-                env!("CARGO_PKG_VERSION").as_bytes(),
-                text.as_bytes(),
-                base_text.as_bytes(),
-            ])
-        );
+        // sealsim's version, the study and its base, each closed by a 0 byte
+        let mut hash = crate::math::fnv::Fnv1a::default();
+        for part in [env!("CARGO_PKG_VERSION"), text, &base_text] {
+            hash.bytes(part.as_bytes()).bytes(&[0]);
+        }
+        let fingerprint = format!("{:016x}", hash.0);
         let study = Study {
             name: raw
                 .name
                 .as_ref()
                 .map_or_else(|| source.file_stem(), |n| n.get_ref().clone()),
             path: path.to_path_buf(),
+            text: text.to_owned(),
             base_path,
             base_text,
             base,
@@ -477,6 +478,11 @@ impl Study {
     pub fn base_text(&self) -> &str {
         &self.base_text
     }
+
+    /// The study file's text, as validated (for reports).
+    pub fn text(&self) -> &str {
+        &self.text
+    }
 }
 
 /// Sets `key` (dotted) in `table`, creating tables on the way.
@@ -533,18 +539,6 @@ fn si_suffix(d: Dimension) -> String {
         .iter()
         .find(|(n, _)| *n == d)
         .map_or_else(|| d.formula().replace('·', "_"), |(_, s)| (*s).to_owned())
-}
-
-/// 64-bit FNV-1a over the parts, each followed by a 0 byte.
-fn fnv1a<'a>(parts: impl IntoIterator<Item = &'a [u8]>) -> u64 {
-    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
-    for part in parts {
-        for &b in part.iter().chain(&[0u8]) {
-            h ^= u64::from(b);
-            h = h.wrapping_mul(0x0000_0100_0000_01b3);
-        }
-    }
-    h
 }
 
 /// A unit's factor to SI and its dimension.

@@ -167,7 +167,7 @@ fn check_truncation(mean: f64, std: f64, lo: f64, hi: f64) -> Result<(), String>
 }
 
 fn standard() -> Normal {
-    // N(0, 1) always exists; the fallback cannot be reached.
+    // N(0, 1): statrs builds it without a fallible check
     Normal::standard()
 }
 

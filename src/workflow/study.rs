@@ -27,14 +27,18 @@ use std::sync::{Arc, Mutex};
 /// A progress report `(done, total)` callable from any thread.
 pub type SharedProgress<'a> = &'a (dyn Fn(usize, usize) + Sync);
 
-/// The scenarios of cases `range`, each validated; the first invalid case (lowest index) is the
-/// error, located at the study file's line of the input.
-pub fn scenarios(study: &Study, range: Range<usize>) -> Result<Vec<Scenario>, ScenarioError> {
-    let values = study.plan.values(range.clone());
+/// The scenarios of the cases from index `first` with the input `values` (the design's, in
+/// case order), each validated; the first invalid case (lowest index) is the error, located at
+/// the study file's line of the input.
+pub fn scenarios(
+    study: &Study,
+    first: usize,
+    values: &[Vec<f64>],
+) -> Result<Vec<Scenario>, ScenarioError> {
     let results: Vec<Result<Scenario, ScenarioError>> = values
         .par_iter()
-        .zip(range.into_par_iter())
-        .map(|(v, i)| study.scenario(i, v))
+        .enumerate()
+        .map(|(k, v)| study.scenario(first + k, v))
         .collect();
     results.into_iter().collect()
 }
@@ -58,7 +62,7 @@ pub fn run(
         })?;
     pool.install(|| {
         let values = study.plan.values(range.clone());
-        let scenarios = scenarios(study, range.clone())?;
+        let scenarios = scenarios(study, range.start, &values)?;
         Ok(run_scenarios(
             study,
             range.start,
@@ -93,16 +97,7 @@ impl<'a> PathKey<'a> {
 
     /// A 64-bit FNV-1a hash of the key's exact (round-trip) debug text, streamed.
     fn hash(&self) -> u64 {
-        struct Fnv(u64);
-        impl std::fmt::Write for Fnv {
-            fn write_str(&mut self, s: &str) -> std::fmt::Result {
-                for &b in s.as_bytes() {
-                    self.0 = (self.0 ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3);
-                }
-                Ok(())
-            }
-        }
-        let mut h = Fnv(0xcbf2_9ce4_8422_2325);
+        let mut h = crate::math::fnv::Fnv1a::default();
         let _ = write!(h, "{self:?}");
         h.0
     }

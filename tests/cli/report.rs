@@ -3,21 +3,8 @@
 //! are opened in a real browser by `tests/browser/check-report.sh` (run by `.ci/run`).
 
 use crate::common::scenarios_dir;
-use crate::support::sealsim;
+use crate::support::{sealsim, sealsim_ok as run_ok};
 use std::path::Path;
-
-fn run_ok(args: &[&dyn AsRef<std::ffi::OsStr>]) -> String {
-    let out = sealsim()
-        .args(args.iter().map(|a| a.as_ref()))
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).unwrap()
-}
 
 /// The text with every number replaced by `#` (digits with their sign, point and exponent), so
 /// that a snapshot compares the layout and the words, not the physics.

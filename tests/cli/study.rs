@@ -64,17 +64,9 @@ fn json(text: &str) -> serde_json::Value {
 
 /// Runs `sealsim study` with `args`, expecting success; returns stdout.
 fn study_ok(args: &[&dyn AsRef<std::ffi::OsStr>]) -> String {
-    let out = sealsim()
-        .arg("study")
-        .args(args.iter().map(|a| a.as_ref()))
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "study failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).unwrap()
+    let mut all: Vec<&dyn AsRef<std::ffi::OsStr>> = vec![&"study"];
+    all.extend_from_slice(args);
+    crate::support::sealsim_ok(&all)
 }
 
 /// Runs `sealsim study` with `args`, expecting exit 2; returns stderr.

@@ -10,6 +10,20 @@ pub fn sealsim() -> assert_cmd::Command {
     assert_cmd::cargo::cargo_bin_cmd!("sealsim")
 }
 
+/// Runs `sealsim ARGS…`, expecting success; returns stdout.
+pub fn sealsim_ok(args: &[&dyn AsRef<std::ffi::OsStr>]) -> String {
+    let out = sealsim()
+        .args(args.iter().map(|a| a.as_ref()))
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "sealsim failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).unwrap()
+}
+
 /// `sealsim run` on a scenario written as `s.toml` in a fresh directory, with `-o h.csv
 /// --summary s.json`: (status, stdout, stderr, the history CSV and the summary JSON if written),
 /// the scenario's path shown as `s.toml` in the two streams.
