@@ -437,6 +437,19 @@ impl Fluid {
         }
     }
 
+    /// The size of one molecule of the fluid \[m\] (docs/model.md §8.1): a critical gap no
+    /// wider passes nothing. A gas: its hard-sphere diameter ([`crate::gas::Gas`], 0.215 nm for
+    /// helium, 0.38 nm for air). A liquid: the edge of the cube one water molecule fills,
+    /// `(M/(ρ N_A))^{1/3}` = 0.31 nm ([`WATER_MOLECULE_VOLUME`]) — water has the smallest common
+    /// liquid molecule, so every liquid is held to the smallest size, the choice that calls
+    /// fewest gaps sealed (an oil's molecules are several times larger).
+    pub fn molecular_size(&self) -> f64 {
+        match self.gas {
+            Some(g) => g.gas.molecular_diameter,
+            None => WATER_MOLECULE_VOLUME.cbrt(),
+        }
+    }
+
     /// The mean absolute pressure p̄ = (P_a + P_b)/2 \[Pa\] of a gas; `None` for a liquid.
     pub fn mean_pressure(&self) -> Option<f64> {
         self.gas

@@ -156,26 +156,133 @@ pub struct LeakPoint {
     pub state: SealState,
 }
 
-/// State of the interface.
+/// State of the interface (docs/model.md §8.1, which names the tolerances that decide it).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum SealState {
+    /// A channel percolates and its critical gap is wider than a molecule of the fluid.
     Leaking,
     /// No channel percolates (somewhere across the width).
     Sealed,
-    /// The fluid pressure reaches the contact pressure across the whole width: the seal opens
-    /// (docs/model.md §3.6). The leak rate shown is the model's at the onset of lift-off, a
-    /// lower bound: an open seal's leak is not the interface's.
+    /// A channel percolates, but its critical gap is narrower than a molecule of the fluid
+    /// ([`crate::fluid::Fluid::molecular_size`]): nothing passes, the leak is 0 (the computed
+    /// u_c stays in the history).
+    BelowMolecule,
+    /// The fluid pressure reaches the contact pressure across the whole width: the seal is
+    /// open (docs/model.md §3.6). The leak rate shown is the model's at the threshold of
+    /// lift-off, a lower bound ([`lift_off_threshold`]).
     LiftOff,
+    /// Energised (k_e > 1 − τ) while the squeeze's part of the contact pressure has fallen
+    /// below τ ΔP ([`SQUEEZE_SHARE_TOLERANCE`]): the seal is held by the fluid pressure alone,
+    /// within the uncertainty of k_e — it would open on any fall of the pressure.
+    PressureHeld,
 }
 
 impl SealState {
+    /// Every state, in the order a seal passes through them.
+    pub const ALL: [SealState; 5] = [
+        SealState::Sealed,
+        SealState::BelowMolecule,
+        SealState::Leaking,
+        SealState::PressureHeld,
+        SealState::LiftOff,
+    ];
+
+    /// The state's name in the CSV and JSON outputs.
     pub fn as_str(self) -> &'static str {
         match self {
             SealState::Leaking => "leaking",
             SealState::Sealed => "sealed",
+            SealState::BelowMolecule => "sealed",
             SealState::LiftOff => "lift_off",
+            SealState::PressureHeld => "pressure_held",
         }
     }
+
+    /// The state for a reader, short: `"sealed (no percolating channel)"`, `"OPEN (lift-off)"`.
+    pub fn label(self) -> &'static str {
+        match self {
+            SealState::Leaking => "leaking",
+            SealState::Sealed => "sealed (no percolating channel)",
+            SealState::BelowMolecule => "sealed (critical gap below a molecule)",
+            SealState::LiftOff => "OPEN (lift-off)",
+            SealState::PressureHeld => "held by the fluid pressure alone",
+        }
+    }
+
+    /// What the state means, for a reader.
+    pub fn meaning(self) -> &'static str {
+        match self {
+            SealState::Leaking => "a channel percolates through the contact",
+            SealState::Sealed => "no channel percolates through the contact",
+            SealState::BelowMolecule => {
+                "a channel percolates, but its critical gap is narrower than a molecule of the \
+                 fluid"
+            }
+            SealState::LiftOff => "the fluid pressure exceeds the contact pressure",
+            SealState::PressureHeld => {
+                "the squeeze's contact pressure is below 5 % of ΔP, within the uncertainty of k_e: \
+                 any fall of the pressure opens the seal"
+            }
+        }
+    }
+
+    /// Why a sealed state is sealed (`None` for the others).
+    pub fn reason(self) -> Option<&'static str> {
+        match self {
+            SealState::Sealed => Some("no_percolating_channel"),
+            SealState::BelowMolecule => Some("critical_gap_below_a_molecule"),
+            _ => None,
+        }
+    }
+
+    /// Whether the interface holds the fluid back (sealed, or below a molecule).
+    pub fn is_sealed(self) -> bool {
+        matches!(self, SealState::Sealed | SealState::BelowMolecule)
+    }
+
+    /// Whether the seal is open, or would open on any fall of the pressure (what the
+    /// `lift_off` criterion fails on).
+    pub fn is_open(self) -> bool {
+        matches!(self, SealState::LiftOff | SealState::PressureHeld)
+    }
+}
+
+/// τ, the share of ΔP below which the squeeze's part of the contact pressure no longer counts
+/// as holding an energised seal (docs/model.md §8.1): the peak contact pressure is
+/// `p_sq + k_e ΔP`, and k_e is known to about ±5 % (the band of docs/model.md §6.3), so a
+/// squeeze part below 5 % of ΔP cannot be told from lift-off. It also makes the verdict
+/// continuous in k_e: the seal opens at `p_sq ≤ max(1 − k_e, τ) ΔP`.
+pub const SQUEEZE_SHARE_TOLERANCE: f64 = 0.05;
+
+/// The state the stresses alone decide (docs/model.md §8.1): with the squeeze's peak contact
+/// pressure `squeeze_peak` \[Pa\], the energisation factor k_e and the pressure difference ΔP
+/// \[Pa\], the seal is open when `p_sq ≤ max(1 − k_e, τ) ΔP` — lifted off when 1 − k_e ≥ τ (the
+/// fluid pressure reaches the contact pressure), held by the pressure alone otherwise;
+/// `None` when the squeeze holds it (the leak then decides between sealed and leaking).
+pub fn opening(
+    squeeze_peak: f64,
+    energisation: f64,
+    pressure_difference: f64,
+) -> Option<SealState> {
+    if pressure_difference <= 0.0 {
+        return None;
+    }
+    let share = (1.0 - energisation).max(SQUEEZE_SHARE_TOLERANCE);
+    (squeeze_peak <= share * pressure_difference).then_some(
+        if 1.0 - energisation >= SQUEEZE_SHARE_TOLERANCE {
+            SealState::LiftOff
+        } else {
+            SealState::PressureHeld
+        },
+    )
+}
+
+/// The squeeze's peak contact pressure at the threshold of lift-off, `(1 − k_e) ΔP` \[Pa\]
+/// (k_e < 1): a lifted-off seal's leak is reported as the leak of the same seal loaded just to
+/// this threshold — what it leaks as it opens, a lower bound of an open seal's leak that does
+/// not depend on how far below the threshold the load is, so less load never leaks less.
+pub fn lift_off_threshold(energisation: f64, pressure_difference: f64) -> f64 {
+    (1.0 - energisation).max(0.0) * pressure_difference
 }
 
 /// Evaluates the leak of one surface at many pressures through one [`ContactPath`].
@@ -510,49 +617,62 @@ impl StaticSolver {
     /// The junction and leak rate at nominal pressure `p0` \[Pa\] (> 0) with the fluid pressure
     /// inside the interface (docs/model.md §3.6): `Q̇ = (L_y/L_x) σ_eff ΔP`
     /// ([`Fluid::leak_rate`]), `σ_eff = (1/ΔP) ∫_{P0−ΔP}^{P0} σ(e) de` with σ the path's
-    /// [`ContactPath::conductance`] ([`interface::uniform`]); lift-off when ΔP ≥ P0, with the
-    /// leak at its onset ([`interface::uniform_onset`], a lower bound). The junction is the
-    /// outlet's (asperity pressure P0), where the asperities carry most.
+    /// [`ContactPath::conductance`] ([`interface::uniform`]). Lifted off when P0 ≤ ΔP
+    /// ([`opening`] with k_e = 0), with the leak at the threshold of lift-off, P0 = ΔP
+    /// ([`interface::uniform_onset`], a lower bound that does not grow with P0). The junction is
+    /// the outlet's (asperity pressure P0), where the asperities carry most; a critical gap
+    /// narrower than a molecule of the fluid conducts nothing ([`SealState::BelowMolecule`]).
     pub fn evaluate(&self, p0: f64) -> LeakPoint {
         let pb = &self.problem;
+        let dp = pb.fluid.pressure_difference;
         let e_star = pb.material.effective_modulus();
         let junction = self.path.critical_junction(p0 / e_star);
-        // a gas: σ(e) weighed by the local density (P_b + p_f)/p̄, p_f = P0 − e, each
+        // a gas: σ(e) weighed by the local density (P_b + p_f)/p̄, p_f = top − e, each
         // constriction rarefied at the local pressure (docs/model.md §3.9, §3.10); 1 for a liquid
-        let sigma = |e: f64| {
-            self.path.gas_conductance(
-                e / e_star,
-                pb.shape_factor,
-                pb.fluid.viscosity,
-                pb.fluid.free_path_at(p0 - e),
-            ) * pb.fluid.density_weight(p0 - e)
+        let sigma = |top: f64| {
+            move |e: f64| {
+                self.path.gas_conductance(
+                    e / e_star,
+                    pb.shape_factor,
+                    pb.fluid.viscosity,
+                    pb.fluid.free_path_at(top - e),
+                ) * pb.fluid.density_weight(top - e)
+            }
         };
-        let (leak_rate, state) = match interface::uniform(
-            &sigma,
-            p0,
-            pb.fluid.pressure_difference,
-            &InterfaceSettings {
-                outlet_breaks: pb.fluid.outlet_breaks(),
-                ..InterfaceSettings::default()
-            },
-        ) {
-            InterfaceFlow::Conducting(conduction) => (
+        let (leak_rate, state) = if opening(p0, 0.0, dp).is_some() {
+            let top = dp;
+            let conduction =
+                interface::uniform_onset(&sigma(top), top, dp, &InterfaceSettings::default());
+            (
                 pb.fluid.leak_rate(pb.seal.geometry(), conduction),
-                SealState::Leaking,
-            ),
-            InterfaceFlow::Sealed => (0.0, SealState::Sealed),
-            InterfaceFlow::LiftOff => (
-                pb.fluid.leak_rate(
-                    pb.seal.geometry(),
-                    interface::uniform_onset(
-                        &sigma,
-                        p0,
-                        pb.fluid.pressure_difference,
-                        &InterfaceSettings::default(),
-                    ),
-                ),
                 SealState::LiftOff,
-            ),
+            )
+        } else {
+            match interface::uniform(
+                &sigma(p0),
+                p0,
+                dp,
+                &InterfaceSettings {
+                    outlet_breaks: pb.fluid.outlet_breaks(),
+                    ..InterfaceSettings::default()
+                },
+            ) {
+                InterfaceFlow::Conducting(conduction) => {
+                    if junction
+                        .leaking()
+                        .is_some_and(|j| j.u_c <= pb.fluid.molecular_size())
+                    {
+                        (0.0, SealState::BelowMolecule)
+                    } else {
+                        (
+                            pb.fluid.leak_rate(pb.seal.geometry(), conduction),
+                            SealState::Leaking,
+                        )
+                    }
+                }
+                InterfaceFlow::Sealed => (0.0, SealState::Sealed),
+                InterfaceFlow::LiftOff => (0.0, SealState::LiftOff),
+            }
         };
         LeakPoint {
             nominal_pressure: p0,

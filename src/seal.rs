@@ -102,6 +102,16 @@ impl SealGeometry {
         }
     }
 
+    /// The material strain at temperature `t` \[K\] that the chemical networks are stepped with
+    /// (docs/model.md §6.5): the squeeze ε for an O-ring (its displacement field superposes
+    /// linearly), 1 for a flat seal (its unit load).
+    pub fn deformation(&self, thermal: Option<&ThermalStrain>, t: f64) -> f64 {
+        match self {
+            SealGeometry::ORing { .. } => self.squeeze_at(thermal, t),
+            SealGeometry::Flat { .. } => 1.0,
+        }
+    }
+
     /// The variable the Prony recursion runs on at temperature `t` \[K\]: Lindley's g(ε) for an
     /// O-ring, 1 for a flat seal.
     pub fn load_variable(&self, thermal: Option<&ThermalStrain>, t: f64) -> f64 {
@@ -302,6 +312,17 @@ impl Profile {
                 peak: peak * factor,
                 width,
             },
+        }
+    }
+
+    /// The profile with its peak `peak` \[Pa\] and the width unchanged.
+    pub fn with_peak(&self, peak: f64) -> Profile {
+        match *self {
+            Profile::Uniform { width, .. } => Profile::Uniform {
+                pressure: peak,
+                width,
+            },
+            Profile::Hertz { width, .. } => Profile::Hertz { peak, width },
         }
     }
 

@@ -639,6 +639,55 @@ fn names_non_finite(text: &str) -> bool {
         .any(|name| word.eq_ignore_ascii_case(name))
 }
 
+/// The scale a temperature was written in, to print temperatures back in the reader's unit
+/// (`"80 C"` → °C).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum TemperatureUnit {
+    Kelvin,
+    /// Also the default for a text without a recognised scale.
+    #[default]
+    Celsius,
+    Fahrenheit,
+}
+
+impl TemperatureUnit {
+    /// The scale of a temperature text such as `"80 C"`, `"176 °F"` or `"353 K"` (°C when it
+    /// names none).
+    pub fn of(text: &str) -> TemperatureUnit {
+        match split_quantity(text).map(|(_, unit)| unit) {
+            Ok(unit) => match Scale::from_symbol(unit) {
+                Some(Scale::Celsius) => TemperatureUnit::Celsius,
+                Some(Scale::Fahrenheit) => TemperatureUnit::Fahrenheit,
+                None if unit == "K" => TemperatureUnit::Kelvin,
+                None => TemperatureUnit::Celsius,
+            },
+            Err(_) => TemperatureUnit::Celsius,
+        }
+    }
+
+    /// `kelvin` \[K\] in this scale with its symbol, four significant digits: `"23 °C"`.
+    pub fn show(self, kelvin: f64) -> String {
+        match self {
+            TemperatureUnit::Kelvin => format!("{} K", human(kelvin, 4)),
+            TemperatureUnit::Celsius => format!("{} °C", human(kelvin - 273.15, 4)),
+            TemperatureUnit::Fahrenheit => {
+                format!("{} °F", human((kelvin - 273.15) * 9.0 / 5.0 + 32.0, 4))
+            }
+        }
+    }
+
+    /// `kelvin` as an input text in this scale that the parser accepts back: `"23 C"`.
+    pub fn input(self, kelvin: f64) -> String {
+        match self {
+            TemperatureUnit::Kelvin => format!("{} K", human(kelvin, 6)),
+            TemperatureUnit::Celsius => format!("{} C", human(kelvin - 273.15, 6)),
+            TemperatureUnit::Fahrenheit => {
+                format!("{} F", human((kelvin - 273.15) * 9.0 / 5.0 + 32.0, 6))
+            }
+        }
+    }
+}
+
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Scale {
     Celsius,

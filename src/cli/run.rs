@@ -142,24 +142,12 @@ fn report_page(
         "<p class=\"meta\">scenario file {} · sealsim run</p>\n",
         html::escape(file)
     );
-    let (kind, verdict) = match result.failure {
-        Some(f) => (
-            "fails",
-            format!(
-                "FAILS after {} by {}",
-                crate::report::life::human_time(f.time),
-                f.mode.as_str()
-            ),
-        ),
-        None => (
-            "survives",
-            format!(
-                "Survives the {} run",
-                crate::report::life::human_time(result.rows.last().map_or(0.0, |r| r.time))
-            ),
-        ),
+    let verdict = crate::report::life::verdict(life, result);
+    let kind = match verdict.kind {
+        crate::report::life::VerdictKind::Fails | crate::report::life::VerdictKind::Open => "fails",
+        crate::report::life::VerdictKind::Survives => "survives",
     };
-    body += &html::verdict(kind, &verdict);
+    body += &html::verdict(kind, &verdict.text);
     if life.material.status == crate::material::Status::Illustrative {
         body += "<p class=\"illustrative\">ILLUSTRATIVE material data: at least one number is \
                  estimated, not measured; the results show trends, they are not for design \

@@ -394,6 +394,20 @@ impl RelaxationState {
         }
     }
 
+    /// The chemical networks of the two-network model alone, without the Prony branches
+    /// (step it with any series: no branch is updated): its [`Self::set_strain`] y/c is the
+    /// strain the aged networks hold at rest, on whatever strain it is stepped with
+    /// (docs/model.md §6.5: the compression set on the material strain).
+    pub fn networks_only() -> Self {
+        RelaxationState {
+            strain: 0.0,
+            branches: Vec::new(),
+            network: 1.0,
+            equilibrium: 0.0,
+            set_reference: 0.0,
+        }
+    }
+
     /// Advances by reduced time `d_xi ≥ 0` while the strain changes linearly by `d_strain`.
     /// `d_xi = 0` is an instantaneous jump (φ(0) = 1).
     pub fn step(&mut self, prony: &Prony, d_xi: f64, d_strain: f64) {

@@ -26,15 +26,20 @@ use serde::Serialize;
 ///   a_T = ∞) or a_T overflows a double;
 /// * `u_c_m`, the critical constriction at the peak pressure, is blank where that strip is
 ///   sealed (no percolating channel);
-/// * `state` is `leaking`, `sealed` or `lift_off` (the fluid pressure reaches the contact
-///   pressure across the width: the seal opens; the leak rate shown is the model's at the onset
-///   of lift-off, a lower bound);
+/// * `state` is `sealed` (no percolating channel, or a critical gap narrower than a molecule of
+///   the fluid: the computed `u_c_m` stays), `leaking`, `pressure_held` (held by the fluid
+///   pressure alone) or `lift_off` (the fluid pressure exceeds the contact pressure: the seal is
+///   open, and the leak rate shown is the seal's at the threshold of lift-off, a lower bound);
+///   docs/model.md §8.1;
 /// * `open_fraction` is the open fraction f of the critical channels under particle
 ///   clogging (docs/model.md §7), always written (1 without `[contamination]`) so that the schema is
 ///   one;
-/// * `compression_set` is the compression set (ASTM D395 definition, a fraction) of the
-///   two-network ageing model (docs/model.md §6.5), blank without `[ageing]`.
-pub const HISTORY_COLUMNS: [&str; 14] = [
+/// * `compression_set` is the chemical compression set (a fraction) of the two-network ageing
+///   model, after a full recovery (docs/model.md §6.5), blank without `[ageing]`;
+/// * `shutdown_squeeze` is the squeeze the set ring keeps at the shutdown condition (its
+///   recovered cord at the shutdown temperature, docs/model.md §8.2), blank where the check
+///   does not apply.
+pub const HISTORY_COLUMNS: [&str; 15] = [
     "time_s",
     "temperature_K",
     "reduced_time_s",
@@ -49,6 +54,7 @@ pub const HISTORY_COLUMNS: [&str; 14] = [
     "state",
     "open_fraction",
     "compression_set",
+    "shutdown_squeeze",
 ];
 
 /// Columns the history gets after [`HISTORY_COLUMNS`] with `[motion]` (PY08 §8): the first
@@ -164,6 +170,7 @@ fn history_table_with(
             r.state.as_str().to_owned(),
             cell(12, r.open_fraction)?,
             optional(13, r.compression_set)?,
+            optional(14, r.shutdown.map(|s| s.remaining_squeeze))?,
         ];
         let gas_cells = match mean_pressure {
             Some(p) => vec![
@@ -206,6 +213,16 @@ pub struct Summary {
     pub loading: String,
     /// `critical-junction` (contact table) or `exact`.
     pub fidelity: String,
+    /// `fails`, `open` (no criterion crossed, but the seal was open or held by the fluid
+    /// pressure alone: a waived lift-off) or `survives` (docs/model.md §8.1).
+    pub verdict: &'static str,
+    /// The verdict as the terminal summary prints it.
+    pub verdict_text: String,
+    /// The state at the end of the run: `sealed`, `leaking`, `pressure_held` or `lift_off`.
+    pub final_state: &'static str,
+    /// The states in the order the run passed through them, each with the first output time
+    /// at which it held.
+    pub states: Vec<StateRecord>,
     /// Time to failure \[s\]; `null` when the seal survives the whole run.
     pub time_to_failure_s: Option<f64>,
     /// `leak_rate`, `leaked_volume`, `retained_force`, `lift_off`, `extrusion` or `none`.
@@ -216,6 +233,20 @@ pub struct Summary {
     pub final_leak_rate_m3_per_s: f64,
     /// Volume leaked over the whole run \[m³\].
     pub leaked_volume_m3: f64,
+    /// Whether `leaked_volume_m3` is a lower bound: it includes a lifted-off span, whose flow
+    /// the model bounds from below only.
+    pub leaked_volume_is_lower_bound: bool,
+    /// The lowest sealing force per length over the run \[N/m\] and its time \[s\].
+    #[serde(rename = "minimum_sealing_force_N_per_m")]
+    pub minimum_sealing_force_n_per_m: f64,
+    pub minimum_sealing_force_time_s: f64,
+    /// The lowest peak contact pressure (with k_e ΔP) \[Pa\] and its time \[s\].
+    #[serde(rename = "minimum_peak_pressure_Pa")]
+    pub minimum_peak_pressure_pa: f64,
+    pub minimum_peak_pressure_time_s: f64,
+    /// The highest leak rate \[m³/s\] and its time \[s\].
+    pub maximum_leak_rate_m3_per_s: f64,
+    pub maximum_leak_rate_time_s: f64,
     /// Sealing force per unit length right after installation \[N/m\].
     #[serde(rename = "initial_sealing_force_N_per_m")]
     pub initial_sealing_force_n_per_m: f64,
@@ -229,9 +260,13 @@ pub struct Summary {
     pub reference_sealing_force_n_per_m: f64,
     /// The final sealing force over the reference one.
     pub final_retained_force: f64,
-    /// Compression set at the end of the run (with `[ageing]`).
+    /// Chemical compression set at the end of the run (with `[ageing]`): the two networks'
+    /// set after a full recovery (docs/model.md §6.5).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub final_compression_set: Option<f64>,
+    /// The shutdown check (docs/model.md §8.2), where it applies.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub shutdown: Option<ShutdownSummary>,
     /// Length of the run \[s\].
     pub duration_s: f64,
     /// Open fraction of the critical channels at the end of the run (1 without
@@ -249,6 +284,34 @@ pub struct Summary {
     /// A gas's pressures and throughputs (absent for a liquid; docs/model.md §3.9).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub gas: Option<GasSummary>,
+}
+
+/// One entry of the summary's `states`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct StateRecord {
+    /// `sealed`, `leaking`, `pressure_held` or `lift_off`.
+    pub state: &'static str,
+    /// For `sealed`: `no_percolating_channel` or `critical_gap_below_a_molecule`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reason: Option<&'static str>,
+    /// The first output time at which it held \[s\].
+    pub from_s: f64,
+}
+
+/// The `shutdown` object of the summary (docs/model.md §8.2).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ShutdownSummary {
+    /// T_sd \[K\].
+    #[serde(rename = "temperature_K")]
+    pub temperature_k: f64,
+    /// ΔP_min \[Pa\].
+    #[serde(rename = "minimum_pressure_difference_Pa")]
+    pub minimum_pressure_difference_pa: f64,
+    /// The set ring's squeeze at T_sd at the end of the run.
+    pub final_remaining_squeeze: f64,
+    /// When the interference was lost \[s\] (the located failure time when it is the failure;
+    /// else the first output time), `null` when it held throughout.
+    pub lost_s: Option<f64>,
 }
 
 /// The `gas` object of the summary: the throughput (pV flow at the gas temperature) that goes
@@ -648,11 +711,30 @@ impl Summary {
             seal: seal_kind(&problem.geometry).to_owned(),
             loading: loading_name(problem.loading).to_owned(),
             fidelity: problem.fidelity.name().to_owned(),
+            verdict: verdict(problem, result).kind.as_str(),
+            verdict_text: verdict(problem, result).text,
+            final_state: result.final_state().as_str(),
+            states: result
+                .state_changes()
+                .into_iter()
+                .map(|(state, t)| StateRecord {
+                    state: state.as_str(),
+                    reason: state.reason(),
+                    from_s: t,
+                })
+                .collect(),
             time_to_failure_s: result.failure.map(|f| f.time),
             failure_mode: failure_mode(result).to_owned(),
             initial_leak_rate_m3_per_s: result.initial_leak_rate(),
             final_leak_rate_m3_per_s: result.final_leak_rate(),
             leaked_volume_m3: result.leaked_volume(),
+            leaked_volume_is_lower_bound: result.leaked_volume_is_lower_bound(),
+            minimum_sealing_force_n_per_m: result.minimum_force().map_or(0.0, |m| m.0),
+            minimum_sealing_force_time_s: result.minimum_force().map_or(0.0, |m| m.1),
+            minimum_peak_pressure_pa: result.minimum_peak_pressure().map_or(0.0, |m| m.0),
+            minimum_peak_pressure_time_s: result.minimum_peak_pressure().map_or(0.0, |m| m.1),
+            maximum_leak_rate_m3_per_s: result.maximum_leak_rate().map_or(0.0, |m| m.0),
+            maximum_leak_rate_time_s: result.maximum_leak_rate().map_or(0.0, |m| m.1),
             initial_sealing_force_n_per_m: first.map_or(0.0, |r| r.sealing_force),
             final_sealing_force_n_per_m: last.map_or(0.0, |r| r.sealing_force),
             retained_force_reference_s: problem.failure.retained_force_reference,
@@ -662,6 +744,15 @@ impl Summary {
                 result.reference_force,
             ),
             final_compression_set: last.and_then(|r| r.compression_set),
+            shutdown: match (problem.failure.shutdown, last.and_then(|r| r.shutdown)) {
+                (Some(sd), Some(end)) => Some(ShutdownSummary {
+                    temperature_k: sd.temperature,
+                    minimum_pressure_difference_pa: sd.pressure_difference,
+                    final_remaining_squeeze: end.remaining_squeeze,
+                    lost_s: result.interference_lost(),
+                }),
+                _ => None,
+            },
             duration_s: problem.time.duration,
             final_open_fraction: result.final_open_fraction(),
             warnings: records(&result.findings),
@@ -695,6 +786,15 @@ impl Summary {
             ),
             ("final_leak_rate_m3_per_s", self.final_leak_rate_m3_per_s),
             ("leaked_volume_m3", self.leaked_volume_m3),
+            (
+                "minimum_sealing_force_N_per_m",
+                self.minimum_sealing_force_n_per_m,
+            ),
+            ("minimum_peak_pressure_Pa", self.minimum_peak_pressure_pa),
+            (
+                "maximum_leak_rate_m3_per_s",
+                self.maximum_leak_rate_m3_per_s,
+            ),
             (
                 "initial_sealing_force_n_per_m",
                 self.initial_sealing_force_n_per_m,
@@ -738,6 +838,96 @@ impl Summary {
             serde_json::to_string_pretty(self).map_err(|e| ReportError::Csv(e.to_string()))?;
         text.push('\n');
         Ok(text)
+    }
+}
+
+/// What a run's verdict is, for every output that states one (summary, JSON, HTML, compare).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum VerdictKind {
+    /// A failure criterion was crossed.
+    Fails,
+    /// No criterion crossed, but the seal was open (lift-off waived by `[failure] lift_off =
+    /// false`) or held by the fluid pressure alone at some time: never "survives".
+    Open,
+    /// No criterion crossed, and the seal held by its squeeze throughout.
+    Survives,
+}
+
+impl VerdictKind {
+    /// `fails`, `open` or `survives` (JSON, the HTML verdict's class).
+    pub fn as_str(self) -> &'static str {
+        match self {
+            VerdictKind::Fails => "fails",
+            VerdictKind::Open => "open",
+            VerdictKind::Survives => "survives",
+        }
+    }
+}
+
+/// A run's verdict: its kind and the sentence every output prints.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Verdict {
+    pub kind: VerdictKind,
+    pub text: String,
+}
+
+/// The verdict of `result`, a run of `problem` (docs/model.md §8.1): "FAILS after … by …", or,
+/// without a failure, "OPEN …" when the seal was ever open or held by the pressure alone (a
+/// waived lift-off), else "survives …" with the state it ended in.
+pub fn verdict(problem: &LifeProblem, result: &LifeResult) -> Verdict {
+    let duration = human_time(problem.time.duration);
+    let open = result.rows.iter().find(|r| r.state.is_open());
+    match (result.failure, open) {
+        (Some(f), _) => {
+            let how = match f.mode {
+                crate::simulate::FailureMode::LiftOff => result
+                    .rows
+                    .iter()
+                    .find(|r| r.state.is_open() && r.time >= f.time)
+                    .map_or(String::new(), |r| {
+                        format!(": {}, {}", r.state.label(), r.state.meaning())
+                    }),
+                _ => String::new(),
+            };
+            let when = if f.time == 0.0 {
+                "at installation".to_owned()
+            } else {
+                format!("after {} (t = {} s)", human_time(f.time), human(f.time, 3))
+            };
+            Verdict {
+                kind: VerdictKind::Fails,
+                text: format!("FAILS {when} by {}{how}", f.mode.as_str()),
+            }
+        }
+        (None, Some(r)) => Verdict {
+            kind: VerdictKind::Open,
+            text: format!(
+                "{} ({}) from {}: not counted as a failure only because [failure] lift_off = \
+                 false waives it",
+                r.state.label(),
+                r.state.meaning(),
+                if r.time == 0.0 {
+                    "installation".to_owned()
+                } else {
+                    format!("t = {}", human_time(r.time))
+                }
+            ),
+        },
+        (None, None) => {
+            let end = result.final_state();
+            let no_criterion = if problem.can_fail() {
+                ""
+            } else {
+                " (no failure criterion set)"
+            };
+            Verdict {
+                kind: VerdictKind::Survives,
+                text: format!(
+                    "survives {duration}{no_criterion}; {} at the end",
+                    end.label()
+                ),
+            }
+        }
     }
 }
 
@@ -956,43 +1146,124 @@ pub fn human_summary(
         } else {
             " (the reference)".to_owned()
         };
-        let retained = if result.reference_force > 0.0 {
-            format!(
-                " ({} % of the reference retained)",
-                human(
-                    100.0 * retained_fraction(last.sealing_force, result.reference_force),
-                    3
-                )
+        let fraction = retained_fraction(last.sealing_force, result.reference_force);
+        let (end_force, retained) = if result.reference_force > 0.0 && fraction < FULLY_SET {
+            // e^{-K} run to 1e-26 is arithmetic, not a force: what it means is "fully set"
+            (
+                "≈ 0".to_owned(),
+                " (fully set; the CSV keeps the figure)".to_owned(),
+            )
+        } else if result.reference_force > 0.0 {
+            (
+                human(last.sealing_force / 1e3, 3),
+                format!(
+                    " ({} % of the reference retained)",
+                    human(100.0 * fraction, 3)
+                ),
             )
         } else {
-            String::new()
+            (human(last.sealing_force / 1e3, 3), String::new())
         };
         line(
             "sealing force",
             format!(
-                "{} N/mm at installation{at_reference}, {} N/mm after {duration}{retained}",
+                "{} N/mm at installation{at_reference}, {end_force} N/mm after \
+                 {duration}{retained}",
                 human(first.sealing_force / 1e3, 3),
-                human(last.sealing_force / 1e3, 3)
             ),
         );
+        if let (Some((force, t_force)), Some((peak, t_peak))) =
+            (result.minimum_force(), result.minimum_peak_pressure())
+        {
+            let low = |v: f64, reference: f64, scale: f64| {
+                if reference > 0.0 && v < FULLY_SET * reference {
+                    "≈ 0".to_owned()
+                } else {
+                    human(v / scale, 3)
+                }
+            };
+            line(
+                "lowest",
+                format!(
+                    "sealing force {} N/mm {}, peak contact pressure {} MPa {}",
+                    low(force, result.reference_force, 1e3),
+                    at_time(t_force),
+                    low(peak, first.peak_pressure, 1e6),
+                    at_time(t_peak),
+                ),
+            );
+        }
         if let Some(set) = last.compression_set {
             line(
                 "set",
                 format!(
-                    "compression set {} % after {duration} (ASTM D395 definition)",
+                    "chemical compression set {} % after {duration} (the two networks' set after \
+                     a full recovery; the viscoelastic part a D395 reading 30 min after release \
+                     adds is not in it)",
                     human(100.0 * set, 3)
                 ),
             );
         }
+        if let (Some(shutdown), Some(s)) = (problem.failure.shutdown, last.shutdown) {
+            let lost = result.interference_lost().map_or_else(
+                || "holds throughout".to_owned(),
+                |t| format!("interference lost {}", at_time(t)),
+            );
+            line(
+                "shutdown",
+                format!(
+                    "at {} and ΔP = {} MPa: squeeze of the set ring {} % after {duration}; {lost}",
+                    celsius(shutdown.temperature),
+                    human(shutdown.pressure_difference / 1e6, 3),
+                    human(100.0 * s.remaining_squeeze, 3),
+                ),
+            );
+        }
     }
+    let changes = result.state_changes();
+    line(
+        "state",
+        changes
+            .iter()
+            .map(|(state, t)| {
+                let name = state.label();
+                if *t == 0.0 {
+                    format!("{name} from installation")
+                } else {
+                    format!("{name} from t = {}", human_time(*t))
+                }
+            })
+            .collect::<Vec<_>>()
+            .join("; then "),
+    );
+    let rate = |row: Option<&crate::simulate::HistoryRow>| match row {
+        Some(r) if r.state == crate::simulate::SealState::LiftOff && floor.seals(r.leak_rate) => {
+            "OPEN (the flow of an open seal is not modelled; the model's lower bound is ≈ 0)"
+                .to_owned()
+        }
+        Some(r) if r.state == crate::simulate::SealState::LiftOff => format!(
+            "≥ {} (OPEN: a lower bound, the flow of an open seal is not modelled)",
+            floor.flow(r.leak_rate)
+        ),
+        Some(r) => floor.flow(r.leak_rate),
+        None => floor.flow(0.0),
+    };
     line(
         "leak rate",
         format!(
             "{} at installation, {} after {duration}",
-            floor.flow(result.initial_leak_rate()),
-            floor.flow(result.final_leak_rate())
+            rate(result.rows.first()),
+            rate(result.rows.last())
         ),
     );
+    if let Some((q, t)) = result.maximum_leak_rate()
+        && !floor.seals(q)
+    {
+        line(
+            "highest",
+            format!("leak rate {} {}", floor.flow(q), at_time(t)),
+        );
+    }
     if let Some(p) = problem.fluid.mean_pressure() {
         let sealed = result.rows.iter().all(|r| r.leak_rate == 0.0);
         let law = match result.continuum_leak_rate {
@@ -1060,9 +1331,19 @@ pub fn human_summary(
     line(
         "leaked volume",
         format!(
-            "{} m³ ({} mL) in {duration}",
+            "{}{} m³ ({} mL) in {duration}{}",
+            if result.leaked_volume_is_lower_bound() {
+                "≥ "
+            } else {
+                ""
+            },
             human(result.leaked_volume(), 3),
-            human(result.leaked_volume() * 1e6, 3)
+            human(result.leaked_volume() * 1e6, 3),
+            if result.leaked_volume_is_lower_bound() {
+                " (a lower bound: it includes the lower bound of the open seal's flow)"
+            } else {
+                ""
+            }
         ),
     );
     if let Some(spec) = &problem.motion
@@ -1070,21 +1351,21 @@ pub fn human_summary(
     {
         line("motion", motion_description(spec, &m, &duration));
     }
-    let verdict = match result.failure {
-        Some(f) if f.time == 0.0 => format!("FAILS at installation ({})", f.mode.as_str()),
-        Some(f) => format!(
-            "FAILS after {} (t = {} s) by {}",
-            human_time(f.time),
-            human(f.time, 3),
-            f.mode.as_str()
-        ),
-        None if !problem.can_fail() => {
-            format!("survives {duration} (no failure criterion set)")
-        }
-        None => format!("survives {duration}"),
-    };
-    line("result", verdict);
+    line("result", verdict(problem, result).text);
     out
+}
+
+/// The retained fraction below which a force reads "≈ 0 (fully set)": e^{−K} at K ≈ 14, where
+/// the first-order ageing law has long left its data (docs/model.md §15.2).
+pub const FULLY_SET: f64 = 1e-6;
+
+/// `"at installation"` or `"at 3.2 days"`.
+fn at_time(t: f64) -> String {
+    if t == 0.0 {
+        "at installation".to_owned()
+    } else {
+        format!("at {}", human_time(t))
+    }
 }
 
 /// `force / reference` (0 when the reference is not positive).

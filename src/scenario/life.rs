@@ -96,6 +96,15 @@ const REFERENCE_PRESSURE: Field = field(
     "Pa",
     Bound::Range(1.0, 1e10),
 );
+const MINIMUM_PRESSURE_DIFFERENCE: Field = field(
+    "failure.minimum_pressure_difference",
+    Dimension::PRESSURE,
+    "Pa",
+    Bound::Range(0.0, 1e10),
+);
+/// The default shutdown temperature's upper end \[K\]: 23 °C, the laboratory's standard
+/// temperature (ISO 23529), a plant at rest indoors (docs/model.md §8.2).
+pub const DEFAULT_SHUTDOWN_TEMPERATURE: f64 = 296.15;
 const MIN_RETAINED_FORCE: Field = field(
     "failure.min_retained_force",
     Dimension::DIMENSIONLESS,
@@ -595,22 +604,84 @@ impl Source<'_> {
     }
 
     /// `[failure]`: any subset of the criteria (none: the run warns that the seal can only
-    /// survive).
+    /// survive). Lift-off, the extrusion check and the shutdown check (docs/model.md §8.2) are on
+    /// unless waived (`lift_off = false`, `extrusion = false`, `lost_interference = false`).
+    /// The shutdown is at `shutdown_temperature` (default: the lower of 23 °C and the run's
+    /// coldest temperature; not above the run's hottest) and `minimum_pressure_difference`
+    /// (default 0, not above the service ΔP).
     pub(super) fn failure(
         &self,
         table: Option<&Spanned<RawFailure>>,
         fluid: &crate::fluid::Fluid,
+        environment: &crate::material::TemperatureHistory,
     ) -> Result<FailureCriteria, ScenarioError> {
+        let (coldest, hottest) = environment.range();
+        let default_shutdown = crate::simulate::Shutdown {
+            temperature: DEFAULT_SHUTDOWN_TEMPERATURE.min(coldest),
+            pressure_difference: 0.0,
+        };
         let Some(table) = table else {
-            // the extrusion check is a property of a groove-seated ring: on unless switched off
+            // the extrusion and shutdown checks are properties of an O-ring's gland: on unless
+            // switched off; lift-off is a failure unless waived
             return Ok(FailureCriteria {
                 extrusion: true,
+                lift_off: true,
+                shutdown: Some(default_shutdown),
                 retained_force_reference: DEFAULT_RETAINED_FORCE_REFERENCE,
                 ..FailureCriteria::default()
             });
         };
         let raw = table.get_ref();
         let reference = self.reference_state(raw, fluid)?;
+        let shutdown_temperature = match &raw.shutdown_temperature {
+            None => default_shutdown.temperature,
+            Some(q) => {
+                let t = self.absolute_temperature(q, "failure.shutdown_temperature")?;
+                if t > hottest + 1e-9 {
+                    let unit = match q.get_ref() {
+                        super::raw::RawQuantity::Text(text) => {
+                            crate::units::TemperatureUnit::of(text)
+                        }
+                        super::raw::RawQuantity::Number(_) => Default::default(),
+                    };
+                    return Err(self.error(
+                        q.span(),
+                        "failure.shutdown_temperature",
+                        format!(
+                            "{} is above the run's hottest temperature ({}): a shutdown is the \
+                             seal at rest, no hotter than in service; give a temperature of at \
+                             most \"{}\"",
+                            unit.show(t),
+                            unit.show(hottest),
+                            unit.input(hottest),
+                        ),
+                    ));
+                }
+                t
+            }
+        };
+        let minimum = self
+            .optional(
+                raw.minimum_pressure_difference.as_ref(),
+                &MINIMUM_PRESSURE_DIFFERENCE,
+            )?
+            .unwrap_or(0.0);
+        if let Some(q) = &raw.minimum_pressure_difference
+            && minimum > fluid.pressure_difference
+        {
+            return Err(self.error(
+                q.span(),
+                MINIMUM_PRESSURE_DIFFERENCE.key,
+                format!(
+                    "{} Pa is above the service pressure difference ({} Pa): the minimum is the \
+                     lowest pressure the seal must hold at a restart; give at most the service \
+                     ΔP, e.g. \"0 bar\"",
+                    show(minimum),
+                    show(fluid.pressure_difference)
+                ),
+            ));
+        }
+        let waived = |b: &Option<Spanned<bool>>| b.as_ref().is_some_and(|b| !*b.get_ref());
         Ok(FailureCriteria {
             max_leak_rate: raw
                 .max_leak_rate
@@ -632,9 +703,14 @@ impl Source<'_> {
                 .unwrap_or(DEFAULT_RETAINED_FORCE_REFERENCE),
             max_compression_set: self
                 .optional(raw.max_compression_set.as_ref(), &MAX_COMPRESSION_SET)?,
-            lift_off: raw.lift_off.as_ref().is_some_and(|b| *b.get_ref()),
+            // on unless waived: an open seal is a failed seal
+            lift_off: !waived(&raw.lift_off),
             // on unless switched off: it applies to groove-seated rings only
-            extrusion: raw.extrusion.as_ref().is_none_or(|b| *b.get_ref()),
+            extrusion: !waived(&raw.extrusion),
+            shutdown: (!waived(&raw.lost_interference)).then_some(crate::simulate::Shutdown {
+                temperature: shutdown_temperature,
+                pressure_difference: minimum,
+            }),
             stop_at_failure: false,
         })
     }

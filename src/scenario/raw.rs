@@ -311,6 +311,9 @@ pub(super) struct RawFailure {
     pub max_compression_set: Option<Quantity>,
     pub lift_off: Option<Spanned<bool>>,
     pub extrusion: Option<Spanned<bool>>,
+    pub lost_interference: Option<Spanned<bool>>,
+    pub shutdown_temperature: Option<Quantity>,
+    pub minimum_pressure_difference: Option<Quantity>,
 }
 
 /// A scenario's `[ageing]`: each constant defaults to the material's `[material.ageing]`.

@@ -401,7 +401,7 @@ impl Source<'_> {
         let fluid = fluid.at(environment.at(0.0));
         let thermal_strain = self.thermal_strain(&seal, &material, &environment)?;
         let ageing = self.scenario_ageing(raw.ageing.as_ref(), &material)?;
-        let failure = self.failure(raw.failure.as_ref(), &fluid)?;
+        let failure = self.failure(raw.failure.as_ref(), &fluid, &environment)?;
         let (time, fidelity) = self.simulation(raw.simulation.as_ref())?;
         self.cycle_budget(
             raw.simulation.as_ref(),

@@ -13,16 +13,20 @@ pub enum FailureMode {
     LiftOff,
     /// The ring extrudes into the clearance gap (docs/model.md §6.3).
     Extrusion,
+    /// At the shutdown condition (docs/model.md §8.2) the set, cooled ring no longer closes
+    /// the roughness, or cannot hold the minimum pressure difference at a restart.
+    LostInterference,
 }
 
 impl FailureMode {
-    pub const ALL: [FailureMode; 6] = [
+    pub const ALL: [FailureMode; 7] = [
         FailureMode::LeakRate,
         FailureMode::LeakedVolume,
         FailureMode::RetainedForce,
         FailureMode::CompressionSet,
         FailureMode::LiftOff,
         FailureMode::Extrusion,
+        FailureMode::LostInterference,
     ];
 
     /// The mode of its [`FailureMode::as_str`] name.
@@ -38,6 +42,7 @@ impl FailureMode {
             FailureMode::CompressionSet => "compression_set",
             FailureMode::LiftOff => "lift_off",
             FailureMode::Extrusion => "extrusion",
+            FailureMode::LostInterference => "lost_interference",
         }
     }
 }
@@ -68,9 +73,22 @@ pub struct FailureCriteria {
     pub lift_off: bool,
     /// A groove-seated ring's clearance gap beyond the extrusion chart's limit (§6.3).
     pub extrusion: bool,
+    /// The shutdown check of an O-ring under displacement loading (§8.2): `None` when waived
+    /// (`[failure] lost_interference = false`).
+    pub shutdown: Option<Shutdown>,
     /// End the run at the step that finds the failure (a study's cases: what follows a failure
     /// is not the life's); `false`: run the whole duration.
     pub stop_at_failure: bool,
+}
+
+/// The condition an O-ring is checked at besides its service (docs/model.md §8.2): a shutdown
+/// or cold restart.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Shutdown {
+    /// T_sd \[K\] (default: the lower of 23 °C and the run's coldest temperature).
+    pub temperature: f64,
+    /// ΔP_min \[Pa\], the lowest pressure difference the seal must hold (default 0).
+    pub pressure_difference: f64,
 }
 
 /// What the criteria look at, at one instant.
@@ -86,6 +104,8 @@ pub struct EventInput {
     pub lifted: bool,
     /// Whether the clearance is beyond the extrusion chart's limit.
     pub extruded: bool,
+    /// Whether the shutdown check finds the interference lost.
+    pub lost_interference: bool,
 }
 
 impl FailureCriteria {
@@ -99,9 +119,10 @@ impl FailureCriteria {
             && !self.lift_off
     }
 
-    const MODES: [FailureMode; 6] = [
+    const MODES: [FailureMode; 7] = [
         FailureMode::LiftOff,
         FailureMode::Extrusion,
+        FailureMode::LostInterference,
         FailureMode::LeakRate,
         FailureMode::LeakedVolume,
         FailureMode::RetainedForce,
@@ -123,6 +144,7 @@ impl FailureCriteria {
                 .is_some_and(|m| x.compression_set > m),
             FailureMode::LiftOff => self.lift_off && x.lifted,
             FailureMode::Extrusion => self.extrusion && x.extruded,
+            FailureMode::LostInterference => self.shutdown.is_some() && x.lost_interference,
         }
     }
 
@@ -203,6 +225,7 @@ mod tests {
             compression_set: 0.0,
             lifted: false,
             extruded: false,
+            lost_interference: false,
         };
         let bad = EventInput {
             leak_rate: 2.0,

@@ -59,7 +59,7 @@ use crate::math::quadrature::gauss_legendre;
 use crate::seal::Profile;
 pub use crate::seal::ThermalStrain;
 use crate::validity::{self, At, ContactState, Findings};
-pub use events::{FailureCriteria, FailureEvent, FailureMode};
+pub use events::{FailureCriteria, FailureEvent, FailureMode, Shutdown};
 
 /// ΔP over the contact pressure below which the fluid pressure inside the interface changes the
 /// leak by rounding only (the mean of σ over [P0 − ΔP, P0] is σ(P0) to ≈ 1e-16).
@@ -110,8 +110,10 @@ struct Snapshot {
     leak_rate: f64,
     state: SealState,
     retained: f64,
-    /// Compression set (ASTM D395 definition) with ageing on.
+    /// Chemical compression set with ageing on (docs/model.md §6.5).
     compression_set: Option<f64>,
+    /// The shutdown check (docs/model.md §8.2); `None` where it does not apply.
+    shutdown: Option<ShutdownState>,
     /// Flow through the critical channels with all of them open \[m³/s\]: `leak_rate` when
     /// clean, except for a stroke cycle with an inverse-hydrodynamic film, whose film rides over
     /// the contact and whose channels carry the static leak alone.
@@ -149,6 +151,17 @@ struct Snapshot {
     permeation_flow: f64,
 }
 
+/// The shutdown check of one state (docs/model.md §8.2, [`Simulator::shutdown`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ShutdownState {
+    /// The set ring's squeeze at the shutdown temperature over its recovered cord, ε_r.
+    pub remaining_squeeze: f64,
+    /// Its fully relaxed peak contact pressure there \[Pa\].
+    pub peak_pressure: f64,
+    /// Whether it still closes the roughness and holds the minimum pressure difference.
+    pub holds: bool,
+}
+
 /// The leak through a profile with the fluid pressure inside the interface.
 #[derive(Debug, Clone, Copy)]
 struct InterfaceLeak {
@@ -156,7 +169,9 @@ struct InterfaceLeak {
     junction: Junction,
     /// The asperity pressure e the junction is evaluated at \[Pa\].
     junction_pressure: f64,
-    lifted_off: bool,
+    /// The interface's state: open ([`SealState::is_open`]) as the stresses or the interface
+    /// decide, otherwise leaking, sealed, or sealed below a molecule.
+    state: SealState,
     /// A groove bottom with its own surface: its critical junction (for the validity checks).
     groove_junction: Option<Junction>,
 }
@@ -165,25 +180,24 @@ impl InterfaceLeak {
     /// The state with the total leak rate `leak_rate` \[m³/s\] (the interface's, or with a
     /// sliding countersurface's drag added).
     fn state_with(&self, leak_rate: f64) -> SealState {
-        if self.lifted_off {
-            SealState::LiftOff
-        } else if leak_rate > 0.0 {
-            SealState::Leaking
-        } else {
-            SealState::Sealed
+        match self.state {
+            open if open.is_open() => open,
+            _ if leak_rate > 0.0 => SealState::Leaking,
+            SealState::Leaking => SealState::Sealed,
+            sealed => sealed,
         }
     }
 
     fn new(
         leak_rate: f64,
         (junction, junction_pressure): (Junction, f64),
-        lifted_off: bool,
+        state: SealState,
     ) -> Self {
         InterfaceLeak {
             leak_rate,
             junction,
             junction_pressure,
-            lifted_off,
+            state,
             groove_junction: None,
         }
     }
@@ -253,6 +267,10 @@ struct Mechanics {
     /// installation hold (`y` of the two-network model under creep, \[1/Pa\]): the chemical
     /// part of the creep compliance ([`Simulator::asperity_moduli`]).
     creep_set: f64,
+    /// The chemical networks on the material strain (the squeeze ε of an O-ring, the unit load
+    /// of a flat seal): their set strain y/c is what the ring keeps when released
+    /// (docs/model.md §6.5), the compression set's numerator and the shutdown check's set.
+    networks: RelaxationState,
     leaked_volume: f64,
     /// ln f, the log of the open fraction of the critical channels (0 when clean; −∞ when
     /// every channel is blocked).
@@ -271,6 +289,8 @@ pub struct Simulator<'a> {
     rule: (Vec<f64>, Vec<f64>),
     /// The load variable right after installation (g(ε0) for an O-ring, 1 for a flat seal).
     load0: f64,
+    /// The material strain right after installation (ε0 for an O-ring, 1 for a flat seal).
+    deformation0: f64,
     initial_profile: Profile,
     /// The sealing force per unit length at the retained-force reference time \[N/m\].
     reference_force: f64,
@@ -328,6 +348,9 @@ impl<'a> Simulator<'a> {
             path,
             rule: gauss_legendre(problem.strips.max(2)),
             load0,
+            deformation0: problem
+                .geometry
+                .deformation(problem.thermal_strain.as_ref(), problem.environment.at(0.0)),
             initial_profile,
             reference_force: initial_profile.force_per_length(),
             creep: problem.material.prony.creep(),
@@ -449,6 +472,7 @@ impl<'a> Simulator<'a> {
             relaxation: RelaxationState::new(prony),
             installation: RelaxationState::new(prony),
             creep_set: 0.0,
+            networks: RelaxationState::networks_only(),
             leaked_volume: 0.0,
             log_open_fraction: 0.0,
             cake_volume: 0.0,
@@ -457,6 +481,7 @@ impl<'a> Simulator<'a> {
         let ramp = p.installation_reduced_time();
         state.relaxation.step(prony, ramp, self.load0);
         state.installation.step(prony, ramp, 1.0);
+        state.networks.step(prony, ramp, self.deformation0);
         state
     }
 
@@ -506,24 +531,65 @@ impl<'a> Simulator<'a> {
         }
     }
 
-    /// The compression set of `state` (ASTM D395: the part of the compression not recovered,
-    /// here after a full recovery): the set strain y/c of the two-network state, on the squeeze
-    /// through Lindley's g for an O-ring (ε_set = g⁻¹(y/c), over the squeeze at installation),
-    /// the strain itself for a flat seal. `None` without ageing or under force loading.
+    /// The chemical compression set of `state` (docs/model.md §6.5): the part of the installed
+    /// compression the aged networks keep at rest, `CS = (y/c)/ε0` on the material strain —
+    /// for an O-ring the squeeze, whose displacement field the networks superpose linearly (the
+    /// free ring relaxes to the displaced shape (y/c)/ε0 of the installed one), not Lindley's
+    /// force law; for a flat seal the unit load. At a constant squeeze and r = 1 it is
+    /// `1 − e^{−K}` exactly, ISO 11346's relation (`sealsim ageing-fit`). It is the set after a
+    /// full recovery: the viscoelastic part still unrecovered 30 min after release (ASTM D395's
+    /// reading time) is not in it. `None` without ageing or under force loading.
     fn compression_set(&self, state: &Mechanics) -> Option<f64> {
         let p = self.problem;
-        if p.ageing.is_none() || p.loading == Loading::Force {
+        if p.ageing.is_none() || p.loading == Loading::Force || self.deformation0 <= 0.0 {
             return None;
         }
-        let set = state.relaxation.set_strain();
-        Some(match p.geometry {
-            crate::seal::SealGeometry::ORing { .. } => {
-                let installed = p
-                    .geometry
-                    .squeeze_at(p.thermal_strain.as_ref(), p.environment.at(0.0));
-                crate::seal::squeeze_from_load(set) / installed
-            }
-            crate::seal::SealGeometry::Flat { .. } => set / self.load0,
+        Some(state.networks.set_strain() / self.deformation0)
+    }
+
+    /// The shutdown check of a groove-seated or plate-squeezed O-ring under displacement loading
+    /// (docs/model.md §8.2): the ring cooled to the shutdown temperature T_sd with the fluid
+    /// pressure at its minimum ΔP_min. Its remaining squeeze is the squeeze at T_sd beyond the
+    /// set, over the recovered cord, `ε_r = (ε(T_sd) − s)/(1 − s)` (s = y/c, the networks' set
+    /// strain); its contact pressure the fully relaxed one, `f = c E∞ d (1 − s) g(ε_r)` over
+    /// Lindley's width (the long-term modulus: a shutdown lasts, and it is the least force). The
+    /// ring has lost its interference when `(ε(T_sd) − s) d` is no more than the counterface's rms
+    /// roughness (it no longer closes the roughness it seals on), or, with ΔP_min > 0, when the
+    /// squeeze cannot hold ΔP_min at a restart ([`crate::leak::opening`]). `None` when the check
+    /// does not apply (a flat seal, force loading, or `[failure] lost_interference = false`).
+    fn shutdown(&self, state: &Mechanics) -> Option<ShutdownState> {
+        let p = self.problem;
+        let shutdown = p.failure.shutdown?;
+        let crate::seal::SealGeometry::ORing { cross_section, .. } = p.geometry else {
+            return None;
+        };
+        if p.loading != Loading::Displacement {
+            return None;
+        }
+        let squeeze = p
+            .geometry
+            .squeeze_at(p.thermal_strain.as_ref(), shutdown.temperature);
+        let set = state.networks.set_strain().clamp(0.0, 1.0 - f64::EPSILON);
+        let interference = (squeeze - set) * cross_section;
+        let remaining = ((squeeze - set) / (1.0 - set)).max(0.0);
+        let cord = cross_section * (1.0 - set);
+        let modulus = p.material.prony.long_term() * state.networks.network();
+        let profile = Profile::hertz(
+            modulus * cord * crate::seal::squeeze_function(remaining),
+            crate::seal::oring_contact_width(cord, remaining).max(f64::MIN_POSITIVE),
+        );
+        let touches = interference > p.spectrum.rms_roughness();
+        let holds = touches
+            && crate::leak::opening(
+                profile.peak(),
+                p.energisation_factor,
+                shutdown.pressure_difference,
+            )
+            .is_none();
+        Some(ShutdownState {
+            remaining_squeeze: remaining,
+            peak_pressure: profile.peak(),
+            holds,
         })
     }
 
@@ -534,10 +600,11 @@ impl<'a> Simulator<'a> {
     ///
     /// The asperity contact sees the squeeze's pressure over its modulus and the fluid's over
     /// its own, `e/E* = p_sq/E*_sq + (k_e ΔP − p_f)/E*_fl` (docs/model.md §6.1): solved as one
-    /// interface at E*_fl with the squeeze's profile scaled by E_fl/E_sq. Whether the fluid
-    /// lifts the ring off is a balance of stresses, `ΔP ≥ p_max + k_e ΔP`, on the profile itself.
-    /// The fluid's viscosity (§3.7) and a gas's mean free path (§3.10) are the ones at the
-    /// state's `temperature` \[K\].
+    /// interface at E*_fl with the squeeze's profile scaled by E_fl/E_sq. Whether the seal is
+    /// open is decided by the stresses with the tolerance of docs/model.md §8.1
+    /// ([`crate::leak::opening`]: `p_sq ≤ max(1 − k_e, τ) ΔP`), never by rounding. The fluid's
+    /// viscosity (§3.7) and a gas's mean free path (§3.10) are the ones at the state's
+    /// `temperature` \[K\].
     fn profile_leak(
         &self,
         profile: &Profile,
@@ -548,40 +615,56 @@ impl<'a> Simulator<'a> {
         let fluid = p.fluid.at(temperature);
         let e_star = moduli.fluid / (1.0 - p.material.poisson_ratio.powi(2));
         let equivalent = moduli.equivalent(profile);
-        let lifted = p.fluid.pressure_difference > 0.0
-            && p.fluid.pressure_difference >= self.contact_peak(profile);
+        let dp = p.fluid.pressure_difference;
+        let open = crate::leak::opening(profile.peak(), p.energisation_factor, dp);
+        let lifted = open == Some(SealState::LiftOff);
         let interface = |path: &ContactPath, solver: &InterfaceSolver| {
-            self.interface_leak(path, solver, &equivalent, e_star, lifted, &fluid)
+            self.interface_leak(path, solver, &equivalent, lifted, e_star, &fluid)
         };
         let counterface = interface(&self.path, &self.counterface);
-        let (groove, groove_junction) = match (&self.problem.groove, &self.groove) {
-            (GrooveInterface::Counterface, _) => (counterface.leak_rate, None),
+        let (groove, groove_junction, groove_state) = match (&self.problem.groove, &self.groove) {
+            (GrooveInterface::Counterface, _) => (counterface.leak_rate, None, counterface.state),
             (GrooveInterface::Own(_), Some((path, solver))) => {
                 let own = interface(path, solver);
-                (own.leak_rate, Some(own.junction))
+                (own.leak_rate, Some(own.junction), own.state)
             }
-            _ => (0.0, None),
+            _ => (0.0, None, counterface.state),
+        };
+        let leak_rate = counterface.leak_rate + groove;
+        let state = match (open, counterface.state, groove_state) {
+            // the interface found no contact left although the squeeze holds: open
+            (_, SealState::LiftOff, _) | (_, _, SealState::LiftOff) => SealState::LiftOff,
+            (Some(open), _, _) => open,
+            _ if leak_rate > 0.0 => SealState::Leaking,
+            (_, SealState::BelowMolecule, _) | (_, _, SealState::BelowMolecule) => {
+                SealState::BelowMolecule
+            }
+            _ => SealState::Sealed,
         };
         InterfaceLeak {
-            leak_rate: counterface.leak_rate + groove,
+            leak_rate,
             groove_junction,
+            state,
             ..counterface
         }
     }
 
     /// One interface of `path` under `profile` (see [`Self::profile_leak`]): the leak rate, the
     /// critical junction where the asperities carry most (the peak of a Hertz profile less the
-    /// fluid pressure there; a uniform contact's outlet), and whether it lifted off. Where ΔP is
-    /// negligible against the contact pressure (≤ 1e-8 of it) the strips in series at the
-    /// contact pressure (§3.2). Lifted off (by the model, or `lifted` by the stresses): the leak
-    /// at the onset of lift-off, a lower bound ([`Self::onset_leak`]).
+    /// fluid pressure there; a uniform contact's outlet), and the state. Where ΔP is negligible
+    /// against the contact pressure (≤ 1e-8 of it) the strips in series at the contact pressure
+    /// (§3.2). Lifted off (`lifted` by the stresses, or found so by the interface): the leak of
+    /// the interface loaded just to its threshold of lift-off (contact peak = ΔP), a lower bound
+    /// that less load never lowers ([`Self::onset_leak`]). A
+    /// critical gap no wider than a molecule of the fluid conducts nothing
+    /// ([`SealState::BelowMolecule`], docs/model.md §8.1).
     fn interface_leak(
         &self,
         path: &ContactPath,
         solver: &InterfaceSolver,
         profile: &Profile,
-        e_star: f64,
         lifted: bool,
+        e_star: f64,
         fluid: &crate::fluid::Fluid,
     ) -> InterfaceLeak {
         let p = self.problem;
@@ -612,15 +695,41 @@ impl<'a> Simulator<'a> {
         };
         let top = profile.peak() + offset;
         let junction_at = |e: f64| (path.critical_junction(e.max(0.0) / e_star), e.max(0.0));
-        if lifted {
-            return InterfaceLeak::new(
-                self.onset_leak(&local, profile, offset),
+        let open = || {
+            // the profile loaded just to the threshold: its contact peak is ΔP
+            let threshold = if dp > offset {
+                profile.with_peak(dp - offset)
+            } else {
+                *profile
+            };
+            InterfaceLeak::new(
+                self.onset_leak(&local, &threshold, offset),
                 junction_at(top),
-                true,
-            );
+                SealState::LiftOff,
+            )
+        };
+        if lifted {
+            return open();
         }
+        // a conducting interface whose critical gap is no wider than a molecule passes nothing
+        let conducting = |leak_rate: f64, junction: (Junction, f64)| {
+            if junction
+                .0
+                .leaking()
+                .is_some_and(|j| j.u_c <= fluid.molecular_size())
+            {
+                InterfaceLeak::new(0.0, junction, SealState::BelowMolecule)
+            } else {
+                let state = if leak_rate > 0.0 {
+                    SealState::Leaking
+                } else {
+                    SealState::Sealed
+                };
+                InterfaceLeak::new(leak_rate, junction, state)
+            }
+        };
         if dp <= NEGLIGIBLE_PRESSURE_RATIO * top {
-            return InterfaceLeak::new(series(), junction_at(top), false);
+            return conducting(series(), junction_at(top));
         }
         let (flow, junction) = match *profile {
             Profile::Uniform { pressure, .. } => (
@@ -653,14 +762,10 @@ impl<'a> Simulator<'a> {
         };
         match flow {
             InterfaceFlow::Conducting(conduction) => {
-                InterfaceLeak::new(p.fluid.leak_rate(geometry, conduction), junction, false)
+                conducting(p.fluid.leak_rate(geometry, conduction), junction)
             }
-            InterfaceFlow::Sealed => InterfaceLeak::new(0.0, junction, false),
-            InterfaceFlow::LiftOff => InterfaceLeak::new(
-                self.onset_leak(&local, profile, offset),
-                junction_at(top),
-                true,
-            ),
+            InterfaceFlow::Sealed => InterfaceLeak::new(0.0, junction, SealState::Sealed),
+            InterfaceFlow::LiftOff => open(),
         }
     }
 
@@ -805,6 +910,13 @@ impl<'a> Simulator<'a> {
         let network_before = state.relaxation.network();
         state.relaxation.step_aged(prony, d_xi, d_load, chem);
         state.installation.step_aged(prony, d_xi, 0.0, chem);
+        if p.loading == Loading::Displacement {
+            let d_strain = p
+                .geometry
+                .deformation(p.thermal_strain.as_ref(), p.environment.at(b))
+                - state.networks.strain();
+            state.networks.step_aged(prony, d_xi, d_strain, chem);
+        }
         state.reduced_time += d_xi;
         let e_inf = prony.long_term();
         if chem.scission > 0.0 && e_inf > 0.0 {
@@ -941,6 +1053,7 @@ impl<'a> Simulator<'a> {
             }
         };
         let compression_set = self.compression_set(state);
+        let shutdown = self.shutdown(state);
         let state = leak.state_with(leak_rate);
         let leak_rate = if leak_rate.is_finite() {
             leak_rate
@@ -957,6 +1070,7 @@ impl<'a> Simulator<'a> {
             state,
             retained,
             compression_set,
+            shutdown,
             open_leak_rate: if channel_rate.is_finite() {
                 channel_rate
             } else {
@@ -1042,6 +1156,7 @@ impl<'a> Simulator<'a> {
             leaked_volume: state.leaked_volume,
             state: snap.state,
             compression_set: snap.compression_set,
+            shutdown: snap.shutdown,
             open_fraction: snap.open_fraction,
             motion: snap.motion,
         }
@@ -1151,7 +1266,8 @@ impl Snapshot {
             leaked_volume,
             retained_force: self.retained,
             compression_set: self.compression_set.unwrap_or(0.0),
-            lifted: self.state == SealState::LiftOff,
+            lifted: self.state.is_open(),
+            lost_interference: self.shutdown.is_some_and(|s| !s.holds),
             extruded: self.extrusion.is_some_and(|(ratio, _)| ratio > 1.0),
         }
     }

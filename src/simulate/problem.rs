@@ -188,10 +188,20 @@ impl LifeProblem {
         }
     }
 
-    /// Whether any criterion can end the life: one of `[failure]`'s, or the extrusion check of a
-    /// groove-seated ring.
+    /// Whether any criterion can end the life: one of `[failure]`'s, the extrusion check of a
+    /// groove-seated ring, or the shutdown check of an O-ring under displacement loading.
     pub fn can_fail(&self) -> bool {
-        !self.failure.is_empty() || (self.failure.extrusion && self.gland.is_some())
+        !self.failure.is_empty()
+            || (self.failure.extrusion && self.gland.is_some())
+            || self.has_shutdown_check()
+    }
+
+    /// Whether the shutdown check applies (docs/model.md §8.2): an O-ring under displacement
+    /// loading, unless `[failure] lost_interference = false` waived it.
+    pub fn has_shutdown_check(&self) -> bool {
+        self.failure.shutdown.is_some()
+            && matches!(self.geometry, SealGeometry::ORing { .. })
+            && self.loading == Loading::Displacement
     }
 
     /// The extrusion check of a groove-seated ring at `temperature` \[K\] (docs/model.md §6.3):
@@ -248,8 +258,12 @@ pub struct HistoryRow {
     pub permeation: Option<f64>,
     pub leaked_volume: f64,
     pub state: SealState,
-    /// Compression set (ASTM D395 definition, after a full recovery) with ageing on.
+    /// Chemical compression set with ageing on: the part of the installed compression the aged
+    /// networks keep at rest, after a full recovery (docs/model.md §6.5).
     pub compression_set: Option<f64>,
+    /// The shutdown check (docs/model.md §8.2): the set ring at the shutdown temperature and
+    /// the minimum pressure difference; `None` where it does not apply.
+    pub shutdown: Option<super::ShutdownState>,
     /// Open fraction f of the critical channels (1 without contamination).
     pub open_fraction: f64,
     /// `[motion]`: drag, film, speed bound and stroke volumes at the peak strip (`None` for a
@@ -285,6 +299,76 @@ impl LifeResult {
 
     pub fn leaked_volume(&self) -> f64 {
         self.rows.last().map_or(0.0, |r| r.leaked_volume)
+    }
+
+    /// The state at the end of the run.
+    pub fn final_state(&self) -> SealState {
+        self.rows.last().map_or(SealState::Sealed, |r| r.state)
+    }
+
+    /// The states in the order the run passed through them, each with the first output time
+    /// at which it held \[s\] (a state may come back: each return is listed).
+    pub fn state_changes(&self) -> Vec<(SealState, f64)> {
+        let mut out: Vec<(SealState, f64)> = Vec::new();
+        for r in &self.rows {
+            if out.last().is_none_or(|&(s, _)| s != r.state) {
+                out.push((r.state, r.time));
+            }
+        }
+        out
+    }
+
+    /// The first output time at which the seal was open ([`SealState::is_open`]) \[s\].
+    pub fn open_since(&self) -> Option<f64> {
+        self.rows.iter().find(|r| r.state.is_open()).map(|r| r.time)
+    }
+
+    /// Whether the leaked volume is a lower bound: it includes the flow while lifted off, for
+    /// which the model gives only a lower bound (docs/model.md §8.1).
+    pub fn leaked_volume_is_lower_bound(&self) -> bool {
+        self.rows
+            .windows(2)
+            .any(|w| w[1].state == SealState::LiftOff && w[1].leaked_volume > w[0].leaked_volume)
+    }
+
+    /// When the shutdown check found the interference lost \[s\]: the located failure time when
+    /// it is the run's failure, else the first output time at which it did (`None`: held).
+    pub fn interference_lost(&self) -> Option<f64> {
+        self.failure
+            .filter(|f| f.mode == super::FailureMode::LostInterference)
+            .map(|f| f.time)
+            .or_else(|| {
+                self.rows
+                    .iter()
+                    .find(|r| r.shutdown.is_some_and(|s| !s.holds))
+                    .map(|r| r.time)
+            })
+    }
+
+    /// The row where `key` is least (the first, on a tie).
+    fn least_by(&self, key: impl Fn(&HistoryRow) -> f64) -> Option<&HistoryRow> {
+        self.rows
+            .iter()
+            .reduce(|best, r| if key(r) < key(best) { r } else { best })
+    }
+
+    /// The lowest sealing force per length over the run \[N/m\] and when \[s\].
+    pub fn minimum_force(&self) -> Option<(f64, f64)> {
+        self.least_by(|r| r.sealing_force)
+            .map(|r| (r.sealing_force, r.time))
+    }
+
+    /// The lowest peak contact pressure over the run (with the energisation) \[Pa\] and when
+    /// \[s\].
+    pub fn minimum_peak_pressure(&self) -> Option<(f64, f64)> {
+        self.least_by(|r| r.peak_pressure)
+            .map(|r| (r.peak_pressure, r.time))
+    }
+
+    /// The highest leak rate over the run \[m³/s\] and when \[s\] (the first, on a tie).
+    pub fn maximum_leak_rate(&self) -> Option<(f64, f64)> {
+        self.least_by(|r| -r.leak_rate)
+            .map(|r| (r.leak_rate, r.time))
     }
 
     /// Open fraction of the critical channels at the end of the run (1 when clean).
