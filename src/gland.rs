@@ -64,6 +64,9 @@ pub struct Gland {
     /// Lowest and highest squeeze over the ring's and the groove's tolerances (reported; the
     /// run uses the nominal squeeze).
     pub squeeze_range: Option<(f64, f64)>,
+    /// Back-up rings on the low-pressure side: 0, 1 or 2 (the extrusion limit,
+    /// [`crate::extrusion::limit`]).
+    pub backup_rings: u8,
 }
 
 /// Gland fill above which a warning is given, at maximum material condition: 0.90 (Parker,
@@ -217,6 +220,7 @@ impl GlandDesign {
             kind: self.kind,
             extrusion_gap: self.extrusion_gap,
             squeeze_range,
+            backup_rings: 0,
         }
     }
 

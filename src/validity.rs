@@ -676,16 +676,38 @@ pub fn extrusion(ratio: f64, limit: &crate::extrusion::ExtrusionLimit, at: At, o
     );
     if limit.beyond_pressure || limit.beyond_hardness {
         let mut f = Finding::new(Limit::ExtrusionChart, 0.0, 0.0, at);
-        let hardness = format!(
-            "hardness {} Shore A, the {} row used",
-            human(limit.hardness, 3),
-            if limit.hardness < 80.0 { "70" } else { "90" }
+        let hardness = if limit.backup_rings > 0 {
+            String::new()
+        } else if limit.hardness < 70.0 {
+            format!(
+                "hardness {} Shore A, below the chart: its 70-to-90 trend continued",
+                human(limit.hardness, 3)
+            )
+        } else {
+            format!(
+                "hardness {} Shore A, above the chart: the 90 row used",
+                human(limit.hardness, 3)
+            )
+        };
+        let pressure = match (limit.beyond_pressure, limit.backup_rings, limit.over_rated) {
+            (false, _, _) => String::new(),
+            (true, 0, _) => "pressure above the chart's 3000 psi without back-up rings: the \
+                             ring extrudes (declare backup_rings, rated to 40 MPa)"
+                .to_owned(),
+            (true, _, false) => "pressure above the chart's 3000 psi: the back-up rings' 90 \
+                                 row continued by its last step"
+                .to_owned(),
+            (true, _, true) => "pressure above the 40 MPa back-up rings are rated for (ERIKS): \
+                                the ring extrudes (special construction needed)"
+                .to_owned(),
+        };
+        f.detail = Some(
+            [pressure, hardness]
+                .into_iter()
+                .filter(|s| !s.is_empty())
+                .collect::<Vec<_>>()
+                .join("; "),
         );
-        f.detail = Some(match (limit.beyond_pressure, limit.beyond_hardness) {
-            (true, true) => format!("pressure above 3000 psi, its last band used; {hardness}"),
-            (true, false) => "pressure above 3000 psi, its last band used".to_owned(),
-            _ => hardness,
-        });
         out.record(f);
     }
 }

@@ -59,6 +59,9 @@ pub struct CompareArgs {
     /// CSV keeps the raw values), e.g. "1e-15 m^3/s".
     #[arg(long, value_name = "RATE")]
     pub leak_floor: Option<String>,
+
+    #[command(flatten)]
+    pub fail: super::FailExitCode,
 }
 
 /// Runs `sealsim compare`.
@@ -104,6 +107,7 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
                 &format!("{name}: leak rate by compound"),
                 &rows.iter().map(|r| (r.label, r.result)).collect::<Vec<_>>(),
                 &first.floor,
+                first.mean_pressure,
             )
             .map_err(|e| CliError::Internal(e.to_string()))?,
         ),
@@ -135,7 +139,11 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
     if let (Some(path), Some(page)) = (&args.report, &page) {
         write_output(Some(path), page.as_bytes())?;
     }
-    write_output(None, text.as_bytes())
+    write_output(None, text.as_bytes())?;
+    args.fail.verdict(runs.iter().any(|r| {
+        crate::report::life::verdict(&r.scenario.life, &r.result).kind
+            != crate::report::life::VerdictKind::Survives
+    }))
 }
 
 /// The HTML report of a comparison: the table, the overlay chart, each compound's warnings.

@@ -771,6 +771,7 @@ pub fn fitted_material(name: String, fit: &Fit, source: &str, terms_per_decade: 
         data_reduced_time: Some(fit.window),
         data_temperature: None,
         provenance,
+        library_id: None,
     }
 }
 

@@ -147,6 +147,9 @@ pub enum CliError {
     Output { target: String, source: io::Error },
     /// A bug: the result could not be reported faithfully.
     Internal(String),
+    /// Not an error: the run succeeded and wrote everything, and the seal fails (or is open);
+    /// the exit status `--fail-exit-code` asked for.
+    SealFails(u8),
 }
 
 impl CliError {
@@ -155,6 +158,7 @@ impl CliError {
         match self {
             CliError::Input(_) | CliError::Scenario(_) => EXIT_BAD_INPUT,
             CliError::Output { .. } | CliError::Internal(_) => EXIT_FAILURE,
+            CliError::SealFails(code) => i32::from(*code),
         }
     }
 }
@@ -165,6 +169,7 @@ impl fmt::Display for CliError {
             CliError::Input(msg) | CliError::Internal(msg) => f.write_str(msg),
             CliError::Scenario(e) => e.fmt(f),
             CliError::Output { target, source } => write!(f, "cannot write {target}: {source}"),
+            CliError::SealFails(code) => write!(f, "the seal fails (exit status {code})"),
         }
     }
 }
@@ -195,6 +200,8 @@ pub fn main() -> i32 {
     };
     match run(cli.command) {
         Ok(()) => 0,
+        // a verdict, not an error: everything was written
+        Err(e @ CliError::SealFails(_)) => e.exit_code(),
         Err(e) => {
             eprintln!("error: {e}");
             e.exit_code()
@@ -239,6 +246,26 @@ pub(crate) fn positive_flag(
             }
         })
         .transpose()
+}
+
+/// `--fail-exit-code N` of `run` and `compare`: 3–125, so that a failed seal is never read as
+/// bad input (2) or a write failure (1), nor as a shell's signal status (126 and above).
+#[derive(Debug, Clone, Copy, clap::Args)]
+pub struct FailExitCode {
+    /// Exit with status N when the seal fails or is open (compare: when any compound does),
+    /// after writing every output; without it a finished run exits 0 whatever the verdict.
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u8).range(3..=125))]
+    pub fail_exit_code: Option<u8>,
+}
+
+impl FailExitCode {
+    /// `Err(SealFails(N))` when asked for and `fails`, `Ok` otherwise.
+    pub fn verdict(self, fails: bool) -> Result<(), CliError> {
+        match self.fail_exit_code {
+            Some(code) if fails => Err(CliError::SealFails(code)),
+            _ => Ok(()),
+        }
+    }
 }
 
 /// Writes a finished output: atomically to `path`, or to stdout.

@@ -73,6 +73,9 @@ pub struct RunArgs {
     /// Override the scenario's simulation.fidelity.
     #[arg(long, value_name = "LEVEL", value_enum)]
     pub fidelity: Option<Fidelity>,
+
+    #[command(flatten)]
+    pub fail: super::FailExitCode,
 }
 
 /// Runs `sealsim run`.
@@ -124,7 +127,11 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
             write_output(Some(path), bytes.as_bytes())?;
         }
     }
-    write_output(None, text.as_bytes())
+    write_output(None, text.as_bytes())?;
+    args.fail.verdict(
+        crate::report::life::verdict(&scenario.life, &result).kind
+            != crate::report::life::VerdictKind::Survives,
+    )
 }
 
 /// The HTML report of a run: verdict, summary, chart, warnings, fidelity, the scenario file.

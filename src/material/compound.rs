@@ -145,6 +145,10 @@ pub struct Material {
     pub data_temperature: Option<(f64, f64)>,
     /// (parameter key, where its value came from), in file order.
     pub provenance: Vec<(String, String)>,
+    /// The material-library id the compound was loaded from (`nbr-70`); `None` for an inline,
+    /// fitted or user-file material. Data kept by compound class (permeation, docs/model.md
+    /// §13.4) follow it.
+    pub library_id: Option<String>,
 }
 
 impl Material {
@@ -168,6 +172,7 @@ impl Material {
             data_reduced_time: None,
             data_temperature: None,
             provenance: Vec::new(),
+            library_id: None,
         })
     }
 

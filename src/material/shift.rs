@@ -130,6 +130,23 @@ impl TemperatureHistory {
         self
     }
 
+    /// The history with its first `duration` \[s\] replaced by a linear change from `start`
+    /// \[K\] at t = 0 to the history's own temperature at `duration`: a seal fitted at `start`
+    /// that settles to the environment (docs/model.md §5.2). Table points inside the lead-in
+    /// are replaced by it; the cycles run on.
+    pub fn with_lead_in(self, start: f64, duration: f64) -> Self {
+        let cycles_at = |t: f64| self.cycles.iter().map(|c| c.at(t)).sum::<f64>();
+        let mut points = vec![
+            (0.0, start - cycles_at(0.0)),
+            (duration, self.base(duration)),
+        ];
+        points.extend(self.points.iter().copied().filter(|p| p.0 > duration));
+        TemperatureHistory {
+            points,
+            cycles: self.cycles,
+        }
+    }
+
     /// Whether the temperature never changes.
     pub fn is_constant(&self) -> bool {
         self.points.len() == 1 && self.cycles.iter().all(|c| c.amplitude == 0.0)

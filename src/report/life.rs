@@ -1633,14 +1633,28 @@ impl CompareRow<'_> {
                 .flatten()
         })
     }
+
+    /// What a leak detector sees at [`COMPARE_TIMES`] (a gas: interface + permeation as the
+    /// volume flow at p̄; a liquid: the leak rate), `None` beyond the run.
+    fn detected_leak_rates(&self) -> [Option<f64>; 3] {
+        COMPARE_TIMES.map(|(t, _)| {
+            (t <= self.duration)
+                .then(|| self.result.detected_leak_rate_at(t, self.mean_pressure))
+                .flatten()
+        })
+    }
 }
 
-/// Columns the comparison CSV gets for a gas: the throughputs `p̄ Q̇` at [`COMPARE_TIMES`]
-/// \[Pa·m³/s\] (interface only: a compared compound carries no permeation, §13.7).
-pub const COMPARE_GAS_COLUMNS: [&str; 3] = [
+/// Columns the comparison CSV gets for a gas: the interface's throughputs `p̄ Q̇` at
+/// [`COMPARE_TIMES`] \[Pa·m³/s\], then the total with the permeation through the rubber (what a
+/// leak detector sees and `max_leak_rate` compares, §13.7).
+pub const COMPARE_GAS_COLUMNS: [&str; 6] = [
     "throughput_1day_Pa_m3_per_s",
     "throughput_1year_Pa_m3_per_s",
     "throughput_10years_Pa_m3_per_s",
+    "total_throughput_1day_Pa_m3_per_s",
+    "total_throughput_1year_Pa_m3_per_s",
+    "total_throughput_10years_Pa_m3_per_s",
 ];
 
 /// The comparison as CSV, one row per compound ([`COMPARE_COLUMNS`], and for a gas
@@ -1673,7 +1687,8 @@ pub fn compare_table(rows: &[CompareRow<'_>]) -> Result<String, ReportError> {
             optional(7, decade)?,
         ];
         if let Some(p) = r.mean_pressure {
-            for (k, q) in [day, year, decade].into_iter().enumerate() {
+            let detected = r.detected_leak_rates();
+            for (k, q) in [day, year, decade].into_iter().chain(detected).enumerate() {
                 record.push(q.map_or(Ok(String::new()), |q| {
                     number(row, COMPARE_GAS_COLUMNS[k], p * q)
                 })?);
@@ -1759,14 +1774,18 @@ pub fn compare_cells(rows: &[CompareRow<'_>]) -> Vec<Vec<String>> {
                 },
             )
         };
-        let [day, year, decade] = r.leak_rates();
+        let [day, year, decade] = r.detected_leak_rates();
         let (force, retained, volume, set, state) = r.end();
         cells.push(vec![
             r.label.to_owned(),
             r.material.status.as_str().to_owned(),
-            r.result
-                .failure
-                .map_or_else(|| "survives".to_owned(), |f| human_time(f.time)),
+            match (r.result.failure, r.result.open_since()) {
+                (Some(f), _) if f.time == 0.0 => "at installation".to_owned(),
+                (Some(f), _) => human_time(f.time),
+                // a waived lift-off: never "survives"
+                (None, Some(_)) => "OPEN (not counted)".to_owned(),
+                (None, None) => "survives".to_owned(),
+            },
             failure_mode(r.result).to_owned(),
             rate(day),
             rate(year),
@@ -1785,6 +1804,13 @@ pub fn compare_cells(rows: &[CompareRow<'_>]) -> Vec<Vec<String>> {
             human(volume * 1e6, 2),
             set.map_or_else(|| "-".to_owned(), |c| format!("{} %", human(100.0 * c, 2))),
             state.to_owned(),
+        ]);
+    }
+    if rows.first().is_some_and(|r| r.mean_pressure.is_some()) {
+        cells.push(vec![
+            "(a gas: Q is the interface's throughput plus the permeation through the rubber, what a \
+             leak detector sees and max_leak_rate compares)"
+                .to_owned(),
         ]);
     }
     if let Some(f) = rows.first().map(|r| r.floor) {

@@ -410,7 +410,10 @@ pub fn compare_chart(
     title: &str,
     runs: &[(&str, &LifeResult)],
     floor: &LeakFloor,
+    mean_pressure: Option<f64>,
 ) -> Result<String, PlotError> {
+    // a gas: what a leak detector sees (interface + permeation), as the criterion compares
+    let rate = |row: &crate::simulate::HistoryRow| row.detected_leak_rate(mean_pressure);
     let times = runs
         .iter()
         .flat_map(|(_, r)| r.rows.iter().map(|row| row.time));
@@ -425,7 +428,7 @@ pub fn compare_chart(
     let clip = |q: f64| q.max(floor.rate).log10();
     let top = runs
         .iter()
-        .flat_map(|(_, r)| r.rows.iter().map(|row| row.leak_rate))
+        .flat_map(|(_, r)| r.rows.iter().map(rate))
         .fold(floor.rate * 10.0, f64::max);
     let y_hi = top.log10().ceil() + 0.5;
     let mut svg = String::new();
@@ -443,7 +446,11 @@ pub fn compare_chart(
             .configure_mesh()
             .x_desc(format!("time after installation [{unit_name}]"))
             .x_label_formatter(&|v| human(*v, 2))
-            .y_desc("leak rate [m³/s]")
+            .y_desc(if mean_pressure.is_some() {
+                "leak rate, interface + permeation [m³/s at p̄]"
+            } else {
+                "leak rate [m³/s]"
+            })
             .y_label_formatter(&decade_label)
             .draw()
             .map_err(err)?;
@@ -453,9 +460,9 @@ pub fn compare_chart(
                 .rows
                 .iter()
                 .filter(|row| row.time > 0.0)
-                .map(|row| (row.time / unit, clip(row.leak_rate)))
+                .map(|row| (row.time / unit, clip(rate(row))))
                 .collect();
-            let sealed = r.rows.iter().all(|row| floor.seals(row.leak_rate));
+            let sealed = r.rows.iter().all(|row| floor.seals(rate(row)));
             chart
                 .draw_series(LineSeries::new(points, colour.stroke_width(2)))
                 .map_err(err)?

@@ -214,6 +214,7 @@ mod tests {
                 ("poisson_ratio".into(), "assumed".into()),
                 ("prony".into(), "fitted\nby sealsim".into()),
             ],
+            library_id: None,
         }
     }
 

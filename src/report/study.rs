@@ -36,6 +36,7 @@ pub fn columns(study: &Study) -> Vec<String> {
             "retained_force_end",
             "leaked_volume_end_m3",
             "compression_set_end",
+            "state_end",
             "warnings",
         ]
         .iter()
@@ -70,6 +71,7 @@ pub fn cases_csv(
         row.push(num(c.retained_force));
         row.push(num(c.leaked_volume));
         row.push(opt(c.compression_set));
+        row.push(c.final_state.clone());
         row.push(c.warnings.join(";"));
         w.write_record(&row).map_err(err)?;
     }
@@ -230,7 +232,18 @@ pub fn read_part(
             .map(|t| optional(k + 3 + t))
             .collect::<Result<_, _>>()?;
         let e = k + 3 + times;
-        let warnings = field(e + 4);
+        let final_state = field(e + 4);
+        if !crate::leak::SealState::ALL
+            .iter()
+            .any(|s| s.as_str() == final_state)
+        {
+            return Err(error(
+                Some(line),
+                Some("state_end"),
+                format!("unknown state \"{final_state}\""),
+            ));
+        }
+        let warnings = field(e + 5);
         out.push(CaseOutcome {
             index,
             inputs,
@@ -241,6 +254,7 @@ pub fn read_part(
             retained_force: number(e + 1)?,
             leaked_volume: number(e + 2)?,
             compression_set: optional(e + 3)?,
+            final_state: final_state.to_owned(),
             warnings: if warnings.is_empty() {
                 Vec::new()
             } else {

@@ -79,6 +79,7 @@ pub(super) fn gland_only_keys(raw: &RawSeal) -> Vec<(&'static str, Option<Range<
         ("groove_outer_diameter", q(&raw.groove_outer_diameter)),
         ("groove_inner_diameter", q(&raw.groove_inner_diameter)),
         ("energisation_factor", q(&raw.energisation_factor)),
+        ("backup_rings", raw.backup_rings.as_ref().map(Spanned::span)),
     ]
 }
 
@@ -468,17 +469,42 @@ impl Source<'_> {
             Some(q) => self.absolute_temperature(q, "seal.installation_temperature")?,
             None => DEFAULT_INSTALLATION_TEMPERATURE,
         };
+        let backup_rings = match &raw.backup_rings {
+            None => 0,
+            Some(n) => match *n.get_ref() {
+                k @ 0..=2 => k as u8,
+                k => {
+                    return Err(self.error(
+                        n.span(),
+                        "seal.backup_rings",
+                        format!(
+                            "{k} back-up rings: give 0 (none), 1 (on the low-pressure side) or 2 \
+                             (one each side, for a pressure that may reverse) \
+                             [docs/model.md §6.3]"
+                        ),
+                    ));
+                }
+            },
+        };
+        let gland = crate::gland::Gland {
+            backup_rings,
+            ..design.gland()
+        };
         Ok(SealSpec {
             geometry: SealGeometry::ORing {
                 cross_section: installed.cross_section,
                 mean_diameter: installed.mean_diameter,
                 squeeze: installed.squeeze,
             },
-            gland: Some(design.gland()),
+            gland: Some(gland),
             energisation_factor,
             loading,
             housing_expansion,
             installation_temperature: Some(installation_temperature),
+            fitting_temperature: raw
+                .installation_temperature
+                .is_some()
+                .then_some(installation_temperature),
             design: Some(design),
             warnings,
             thickness: None,

@@ -42,7 +42,9 @@ impl Entry {
 
     /// Parses and validates the entry.
     pub fn load(&self) -> Result<Material, ScenarioError> {
-        library_material_from_str(self.text, &self.path())
+        let mut material = library_material_from_str(self.text, &self.path())?;
+        material.library_id = Some(self.id.to_owned());
+        Ok(material)
     }
 }
 

@@ -210,8 +210,12 @@ pub(super) struct SealSpec {
     /// The housing's CTE and where it was set (`housing`, `housing_expansion`, or a gland's
     /// default).
     pub housing_expansion: Option<HousingExpansion>,
-    /// `installation_temperature` \[K\].
+    /// `installation_temperature` \[K\], or a gland's default (23 °C): the thermal strain's
+    /// reference.
     pub installation_temperature: Option<f64>,
+    /// `installation_temperature` as given \[K\] (`None` when absent): the fitting
+    /// temperature the installation ramp runs at (docs/model.md §5.2).
+    pub fitting_temperature: Option<f64>,
     /// A groove-seated ring's ring and groove (docs/model.md §6.2).
     pub design: Option<GlandDesign>,
     /// Located warnings about the input (e.g. a gland fill above the guidance).
@@ -333,6 +337,7 @@ impl Source<'_> {
                     loading,
                     housing_expansion: None,
                     installation_temperature: None,
+                    fitting_temperature: None,
                     design: None,
                     warnings: Vec::new(),
                     thickness: self.optional(raw.thickness.as_ref(), &THICKNESS)?,
@@ -408,6 +413,7 @@ impl Source<'_> {
                     loading,
                     housing_expansion,
                     installation_temperature,
+                    fitting_temperature: installation_temperature,
                     design: None,
                     warnings: Vec::new(),
                     thickness: None,

@@ -446,6 +446,7 @@ impl Source<'_> {
             data_reduced_time,
             data_temperature,
             provenance,
+            library_id: None,
         })
     }
 

@@ -284,6 +284,8 @@ pub(super) struct RawSeal {
     pub groove_outer_diameter: Option<Quantity>,
     pub groove_inner_diameter: Option<Quantity>,
     pub energisation_factor: Option<Quantity>,
+    /// Back-up rings on the ring's low-pressure side: 0, 1 or 2 (docs/model.md §6.3).
+    pub backup_rings: Option<Spanned<i64>>,
     /// The housing's material (`"steel"`, …), for its thermal expansion.
     pub housing: Option<Spanned<String>>,
 }

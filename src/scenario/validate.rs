@@ -399,6 +399,17 @@ impl Source<'_> {
         let environment = self.environment(raw.environment.as_ref(), &material)?;
         // the static problem's viscosity is the law's at the installation temperature
         let fluid = fluid.at(environment.at(0.0));
+        self.fitting_temperature(&raw, &seal, &material, &environment)?;
+        // a ring fitted at another temperature than the environment's first: its temperature
+        // settles to the environment's over its thermal time (docs/model.md §5.2)
+        let environment = match (seal.fitting_temperature, seal.geometry) {
+            (Some(fitted), SealGeometry::ORing { cross_section, .. })
+                if fitted != environment.at(0.0) =>
+            {
+                environment.with_lead_in(fitted, thermal_settling_time(cross_section))
+            }
+            _ => environment,
+        };
         let thermal_strain = self.thermal_strain(&seal, &material, &environment)?;
         let ageing = self.scenario_ageing(raw.ageing.as_ref(), &material)?;
         let failure = self.failure(raw.failure.as_ref(), &fluid, &environment)?;
@@ -433,26 +444,17 @@ impl Source<'_> {
                 ));
             }
         }
-        // permeation through the rubber for a gas (docs/model.md §13.7): the library id names
-        // the compound class; a replaced material is not the scenario's library compound
+        // permeation through the rubber for a gas (docs/model.md §13.7): the compound's library
+        // id names its class (a `compare` compound's too)
         let (permeation, permeation_note) = match fluid.gas {
-            Some(gas) => {
-                let library = raw
-                    .material
-                    .get_ref()
-                    .library
-                    .as_ref()
-                    .filter(|_| replacement.is_none())
-                    .map(|l| l.get_ref().as_str());
-                crate::permeation::SealPermeation::for_seal(
-                    library,
-                    gas.gas.id,
-                    &seal.geometry,
-                    seal.thickness,
-                    gas.outlet_pressure + fluid.pressure_difference,
-                    gas.outlet_pressure,
-                )
-            }
+            Some(gas) => crate::permeation::SealPermeation::for_seal(
+                material.library_id.as_deref(),
+                gas.gas.id,
+                &seal.geometry,
+                seal.thickness,
+                gas.outlet_pressure + fluid.pressure_difference,
+                gas.outlet_pressure,
+            ),
             None => (None, None),
         };
         let life = LifeProblem {
@@ -694,6 +696,55 @@ impl Source<'_> {
     }
 
     /// [`Source::quantity`] for a key that may be absent.
+    /// Refuses a ring fitted at or below its compound's low-temperature limit T10
+    /// (docs/model.md §5.2): below it the rubber is leathery to glassy, it cannot be stretched
+    /// and seated without damage, and a fitter warms it first. The fitting temperature is
+    /// `installation_temperature`, else the environment's first temperature.
+    fn fitting_temperature(
+        &self,
+        raw: &RawScenario,
+        seal: &super::life::SealSpec,
+        material: &Material,
+        environment: &crate::material::TemperatureHistory,
+    ) -> Result<(), ScenarioError> {
+        if !matches!(seal.geometry, SealGeometry::ORing { .. }) {
+            return Ok(());
+        }
+        let Some(limit) = material.low_temperature_limit() else {
+            return Ok(());
+        };
+        let fitted = seal
+            .fitting_temperature
+            .unwrap_or_else(|| environment.at(0.0));
+        if fitted > limit {
+            return Ok(());
+        }
+        let given = raw.seal.get_ref().installation_temperature.as_ref();
+        let (span, key, unit) = match (given, raw.environment.as_ref()) {
+            (Some(q), _) => (q.span(), "seal.installation_temperature", unit_of(q)),
+            (None, Some(env)) => match &env.get_ref().temperature {
+                Some(q) => (q.span(), "environment.temperature", unit_of(q)),
+                None => (env.span(), "environment", Default::default()),
+            },
+            (None, None) => (raw.seal.span(), "seal", Default::default()),
+        };
+        Err(self.error(
+            span,
+            key,
+            format!(
+                "the ring would be fitted at {}, at or below the compound's low-temperature limit \
+                 T10 = {}: there the rubber is leathery to glassy, it cannot be stretched and \
+                 seated without damage, and a squeeze applied in that state is outside the model; \
+                 state the (warmer) fitting temperature, e.g. installation_temperature = \"{}\" \
+                 in [seal] (the environment's history then starts after it) \
+                 [docs/model.md §5.2]",
+                unit.show(fitted),
+                unit.show(limit),
+                unit.input(296.15_f64.max(limit + 10.0)),
+            ),
+        ))
+    }
+
     pub(super) fn optional(
         &self,
         raw: Option<&Quantity>,
@@ -1913,4 +1964,24 @@ fn static_seal(life: &LifeProblem) -> FlatSeal {
             }
         }
     }
+}
+
+/// The temperature scale a quantity was written in (°C for a bare number).
+fn unit_of(q: &Quantity) -> crate::units::TemperatureUnit {
+    match q.get_ref() {
+        super::raw::RawQuantity::Text(text) => crate::units::TemperatureUnit::of(text),
+        super::raw::RawQuantity::Number(_) => Default::default(),
+    }
+}
+
+/// The thermal diffusivity of rubber a \[m²/s\]: k/(ρ c_p) with k ≈ 0.2 W/(m K),
+/// ρ ≈ 1.2e3 kg/m³, c_p ≈ 1.7e3 J/(kg K) for filled NBR-like compounds, ≈ 1e-7 m²/s
+/// (docs/model.md §5.2).
+pub const RUBBER_THERMAL_DIFFUSIVITY: f64 = 1e-7;
+
+/// The time a cord of diameter `cross_section` \[m\] takes to follow a change of its
+/// surroundings' temperature, `d²/a` \[s\] (125 s for 3.53 mm): three time constants
+/// `d²/(23.1 a)` of a cylinder's slowest conduction mode (2.405 the first zero of J0) and more.
+pub fn thermal_settling_time(cross_section: f64) -> f64 {
+    cross_section * cross_section / RUBBER_THERMAL_DIFFUSIVITY
 }

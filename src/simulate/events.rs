@@ -119,9 +119,11 @@ impl FailureCriteria {
             && !self.lift_off
     }
 
+    /// The criteria in the order a tie is broken (several crossed at once, e.g. at
+    /// installation): the damage first.
     const MODES: [FailureMode; 7] = [
-        FailureMode::LiftOff,
         FailureMode::Extrusion,
+        FailureMode::LiftOff,
         FailureMode::LostInterference,
         FailureMode::LeakRate,
         FailureMode::LeakedVolume,

@@ -326,9 +326,10 @@ impl<'a> Simulator<'a> {
     /// Prepares the run with a contact path built beforehand by [`Self::contact_path`] for a
     /// problem with the same surface, contact settings and fidelity.
     pub fn with_path(problem: &'a LifeProblem, path: ContactPath) -> Self {
-        let load0 = problem
-            .geometry
-            .load_variable(problem.thermal_strain.as_ref(), problem.environment.at(0.0));
+        let load0 = problem.geometry.load_variable(
+            problem.thermal_strain.as_ref(),
+            problem.installed_temperature(),
+        );
         let initial_profile = problem.initial_profile();
         let clogging_contact = problem.contamination.as_ref().map(|_| {
             let settings = ContactSettings {
@@ -348,9 +349,10 @@ impl<'a> Simulator<'a> {
             path,
             rule: gauss_legendre(problem.strips.max(2)),
             load0,
-            deformation0: problem
-                .geometry
-                .deformation(problem.thermal_strain.as_ref(), problem.environment.at(0.0)),
+            deformation0: problem.geometry.deformation(
+                problem.thermal_strain.as_ref(),
+                problem.installed_temperature(),
+            ),
             initial_profile,
             reference_force: initial_profile.force_per_length(),
             creep: problem.material.prony.creep(),
@@ -503,7 +505,7 @@ impl<'a> Simulator<'a> {
             installed.scaled((peak - (energised - own)).max(0.0) / own)
         };
         let p = self.problem;
-        let leak = self.profile_leak(&profile, moduli, p.environment.at(0.0));
+        let leak = self.profile_leak(&profile, moduli, p.installed_temperature());
         (
             leak.leak_rate,
             leak.junction,
@@ -1268,7 +1270,9 @@ impl Snapshot {
             compression_set: self.compression_set.unwrap_or(0.0),
             lifted: self.state.is_open(),
             lost_interference: self.shutdown.is_some_and(|s| !s.holds),
-            extruded: self.extrusion.is_some_and(|(ratio, _)| ratio > 1.0),
+            extruded: self
+                .extrusion
+                .is_some_and(|(ratio, limit)| ratio > 1.0 || limit.over_rated),
         }
     }
 }

@@ -104,6 +104,9 @@ pub struct LifeProblem {
     /// at t = 0; 0: a jump, which a series through the glass transition answers with the
     /// glassy modulus).
     pub installation_time: f64,
+    /// The temperature history; with a fitting temperature (`[seal] installation_temperature`)
+    /// its first value is that temperature, reached from the environment's over the ring's
+    /// thermal settling time ([`TemperatureHistory::with_lead_in`], docs/model.md §5.2).
     pub environment: TemperatureHistory,
     pub thermal_strain: Option<ThermalStrain>,
     pub ageing: Option<Ageing>,
@@ -122,11 +125,16 @@ pub struct LifeProblem {
 }
 
 impl LifeProblem {
+    /// The temperature of the installation, T(0) \[K\].
+    pub fn installed_temperature(&self) -> f64 {
+        self.environment.at(0.0)
+    }
+
     /// The nominal pressure profile right after installation (t = 0): the instantaneous
     /// modulus E0 on the load at the temperature T(0) (Lindley force and Hertz profile for an
     /// O-ring, including the thermal strain at T(0); the given nominal pressure for a flat seal).
     pub fn initial_profile(&self) -> Profile {
-        let t0 = self.environment.at(0.0);
+        let t0 = self.installed_temperature();
         let thermal = self.thermal_strain.as_ref();
         let e_install = self.installed_modulus();
         self.geometry.profile(
@@ -137,9 +145,10 @@ impl LifeProblem {
         )
     }
 
-    /// The installation ramp in reduced time at T(0): `installation_time / a_T(T(0))`.
+    /// The installation ramp in reduced time at the installation temperature T_i:
+    /// `installation_time / a_T(T_i)`.
     pub fn installation_reduced_time(&self) -> f64 {
-        let a_t = self.material.shift.factor(self.environment.at(0.0));
+        let a_t = self.material.shift.factor(self.installed_temperature());
         if self.installation_time > 0.0 && a_t.is_finite() {
             self.installation_time / a_t
         } else {
@@ -181,7 +190,7 @@ impl LifeProblem {
     /// against the glass transition and the WLF frozen limit, an O-ring's squeeze against
     /// Lindley's range (docs/model.md §9.6–§9.7). A life run evaluates the same at every step.
     pub fn assess_installation(&self, out: &mut Findings) {
-        let t0 = self.environment.at(0.0);
+        let t0 = self.installed_temperature();
         self.assess_rubber(t0, At::Installation, out);
         if let Some((ratio, limit)) = self.extrusion_at(t0) {
             validity::extrusion(ratio, &limit, At::Installation, out);
@@ -206,8 +215,10 @@ impl LifeProblem {
 
     /// The extrusion check of a groove-seated ring at `temperature` \[K\] (docs/model.md §6.3):
     /// the rubber's Shore A from its modulus at 3 s at that temperature (Gent's relation
-    /// inverted), the chart's limit at ΔP, and the diametral clearance (twice the gap) over it;
-    /// `None` without a gland.
+    /// inverted), the chart's limit at ΔP with the gland's back-up rings, and the diametral
+    /// clearance (twice the gap) over it; `None` without a gland. The ring extrudes when the
+    /// ratio exceeds 1 or the pressure is above the arrangement's rating
+    /// ([`ExtrusionLimit::extrudes`]).
     pub fn extrusion_at(&self, temperature: f64) -> Option<(f64, ExtrusionLimit)> {
         let gland = self.gland.as_ref()?;
         let a_t = self.material.shift.factor(temperature);
@@ -215,6 +226,7 @@ impl LifeProblem {
         let limit = extrusion::limit(
             self.fluid.pressure_difference,
             extrusion::shore_a_from_modulus(modulus),
+            gland.backup_rings,
         );
         Some((2.0 * gland.extrusion_gap / limit.diametral_clearance, limit))
     }
@@ -271,6 +283,18 @@ pub struct HistoryRow {
     /// cycle: it is the out-stroke's instantaneous drag, not included (`leak_rate` is the
     /// static, cycle-averaged one).
     pub motion: Option<MotionPoint>,
+}
+
+impl HistoryRow {
+    /// The interface's leak rate plus a gas's permeation as the volume flow at the mean pressure
+    /// `mean_pressure` p̄ \[m³/s\]: what a leak detector sees and what `max_leak_rate` is
+    /// compared with (docs/model.md §13.7).
+    pub fn detected_leak_rate(&self, mean_pressure: Option<f64>) -> f64 {
+        match (self.permeation, mean_pressure) {
+            (Some(q), Some(p)) if p > 0.0 => self.leak_rate + q / p,
+            _ => self.leak_rate,
+        }
+    }
 }
 
 /// The result of a life run.
@@ -378,17 +402,30 @@ impl LifeResult {
 
     /// Leak rate at time `t` \[s\], interpolated as a power law between rows (0 outside).
     pub fn leak_rate_at(&self, t: f64) -> Option<f64> {
+        self.value_at(t, |r| r.leak_rate)
+    }
+
+    /// What a leak detector sees at time `t` \[s\] (the interface's leak rate plus a gas's
+    /// permeation as the volume flow at the mean pressure `mean_pressure` p̄, what the
+    /// `max_leak_rate` criterion compares, docs/model.md §13.7) \[m³/s\], interpolated as a
+    /// power law between rows.
+    pub fn detected_leak_rate_at(&self, t: f64, mean_pressure: Option<f64>) -> Option<f64> {
+        self.value_at(t, |r| r.detected_leak_rate(mean_pressure))
+    }
+
+    /// `value` of the rows at time `t` \[s\], interpolated as a power law between rows.
+    fn value_at(&self, t: f64, value: impl Fn(&HistoryRow) -> f64) -> Option<f64> {
         let k = self.rows.partition_point(|r| r.time < t);
         let b = self.rows.get(k)?;
         if k == 0 || b.time == t {
-            return Some(b.leak_rate);
+            return Some(value(b));
         }
         let a = &self.rows[k - 1];
         Some(events::interpolate_power_law(
             a.time,
-            a.leak_rate,
+            value(a),
             b.time,
-            b.leak_rate,
+            value(b),
             t,
         ))
     }

@@ -30,6 +30,9 @@ pub struct CaseOutcome {
     pub leaked_volume: f64,
     /// Compression set at the end of the run (with ageing), else `None`.
     pub compression_set: Option<f64>,
+    /// The seal's state at the end of the run (`sealed`, `leaking`, `pressure_held`,
+    /// `lift_off`; docs/model.md §8.1).
+    pub final_state: String,
     /// The ids of the validity limits the case crossed (docs/model.md §9), sorted.
     pub warnings: Vec<String>,
 }
@@ -69,6 +72,7 @@ impl CaseOutcome {
             },
             leaked_volume: result.leaked_volume(),
             compression_set: end.and_then(|r| r.compression_set),
+            final_state: result.final_state().as_str().to_owned(),
             warnings,
         }
     }

@@ -520,6 +520,7 @@ fn material_toml_round_trips_through_the_parser() {
         ageing_basis: None,
         glass_transition: None,
         provenance: Vec::new(),
+        library_id: None,
         ..full.clone()
     };
     let parsed = material_from_str(&material_toml(&user), Path::new("user.toml")).unwrap();
