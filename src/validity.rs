@@ -93,7 +93,15 @@ pub enum Limit {
     KnudsenFreeMolecular,
     /// Kn > [`KNUDSEN_SLIP`] under the continuum law (`rarefaction = false`, §9.14).
     KnudsenContinuumLaw,
+    /// Fewer than [`MIN_WAVELENGTHS_ACROSS`] of the longest roughness wavelengths 2π/q0 across
+    /// the contact width (§9.16).
+    NarrowContact,
 }
+
+/// The longest roughness wavelengths 2π/q0 that must fit across the contact for its strips in
+/// series to be statistical samples of the roughness (docs/model.md §9.16; PY08 §3 asks for a
+/// contact much wider than 2π/q0).
+pub const MIN_WAVELENGTHS_ACROSS: f64 = 2.0;
 
 /// Knudsen number above which a gas slips at the walls (docs/model.md §9.14).
 pub const KNUDSEN_SLIP: f64 = 0.01;
@@ -104,7 +112,7 @@ pub const KNUDSEN_FREE_MOLECULAR: f64 = 10.0;
 
 impl Limit {
     /// Every limit, in the order of docs/model.md.
-    pub const ALL: [Limit; 23] = [
+    pub const ALL: [Limit; 24] = [
         Limit::PressureRatio,
         Limit::AspectRatio,
         Limit::MolecularGap,
@@ -128,6 +136,7 @@ impl Limit {
         Limit::KnudsenTransition,
         Limit::KnudsenFreeMolecular,
         Limit::KnudsenContinuumLaw,
+        Limit::NarrowContact,
     ];
 
     /// The limit's identifier in JSON summaries.
@@ -156,6 +165,7 @@ impl Limit {
             Limit::KnudsenTransition => "knudsen_transition",
             Limit::KnudsenFreeMolecular => "knudsen_free_molecular",
             Limit::KnudsenContinuumLaw => "knudsen_continuum_law",
+            Limit::NarrowContact => "narrow_contact",
         }
     }
 
@@ -179,6 +189,7 @@ impl Limit {
             | Limit::KnudsenTransition
             | Limit::KnudsenFreeMolecular
             | Limit::KnudsenContinuumLaw => "§9.14",
+            Limit::NarrowContact => "§9.16",
         }
     }
 
@@ -205,6 +216,7 @@ impl Limit {
             | Limit::KnudsenTransition
             | Limit::KnudsenFreeMolecular
             | Limit::KnudsenContinuumLaw => Some(("Kn = λ(p̄)/u_c", "")),
+            Limit::NarrowContact => Some(("contact width × q0/2π", "")),
         }
     }
 
@@ -221,8 +233,8 @@ impl Limit {
                  overstates its conductance"
             }
             Limit::MolecularGap => {
-                "continuum flow is not valid below a molecular size; read the leak rate as \
-                 effectively zero"
+                "continuum flow is not valid within a few molecular sizes; a gap narrower than one \
+                 molecule of the fluid is reported as sealed"
             }
             Limit::NearCutoff => {
                 "the critical junction lies near the short-wavelength cut-off q1: the result \
@@ -275,8 +287,7 @@ impl Limit {
                  hardness (above 1: the ring extrudes)"
             }
             Limit::ExtrusionChart => {
-                "outside the extrusion chart (70–90 Shore A ± 2, up to 3000 psi): its nearest row \
-                 or band was used"
+                "outside the extrusion chart (70–90 Shore A ± 2, up to 3000 psi)"
             }
             Limit::DataTime => {
                 "beyond the reduced times of the data the material's series was fitted to: the \
@@ -305,6 +316,12 @@ impl Limit {
                 "the gas is rarefied at the critical constriction but `rarefaction = false`: the \
                  continuum law is used and underestimates the flow (slip alone adds ≈ 6 Kn; \
                  free-molecular flow can be orders of magnitude above the continuum law)"
+            }
+            Limit::NarrowContact => {
+                "fewer than two of the surface's longest wavelengths 2π/q0 fit across the \
+                 contact: its strips, each a statistical sample of the roughness, are not; the \
+                 leak of so narrow a contact depends on where its few long waves sit (the model \
+                 gives their average)"
             }
         }
     }
@@ -531,6 +548,19 @@ pub fn contact(state: &ContactState<'_>, at: At, out: &mut Findings) {
         let near = NEAR_CUTOFF_FRACTION * state.cutoff;
         out.check(Limit::NearCutoff, j.zeta_c > near, j.zeta_c, near, at);
     }
+}
+
+/// The contact width `width` \[m\] against the longest roughness wavelength 2π/`q0` (docs/model.md
+/// §9.16): fewer than [`MIN_WAVELENGTHS_ACROSS`] across is a finding.
+pub fn contact_width(width: f64, q0: f64, at: At, out: &mut Findings) {
+    let across = width * q0 / (2.0 * std::f64::consts::PI);
+    out.check(
+        Limit::NarrowContact,
+        across < MIN_WAVELENGTHS_ACROSS,
+        across,
+        MIN_WAVELENGTHS_ACROSS,
+        at,
+    );
 }
 
 /// The Knudsen number `kn` of a gas at the critical constriction (docs/model.md §9.14): the

@@ -197,6 +197,9 @@ pub(super) struct RawSurface {
     pub short_wavelength: Option<Spanned<String>>,
     /// Line traces (CSV `x,z`): one file or a list, relative to the scenario.
     pub profile: Option<Spanned<Files>>,
+    /// The direction of the machining marks: `"isotropic"` (default), `"spiral"` (a turned
+    /// face) or `"radial"` (docs/model.md §9.15).
+    pub lay: Option<Spanned<String>>,
 }
 
 /// One file name or a list of them.

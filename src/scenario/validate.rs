@@ -489,6 +489,9 @@ impl Source<'_> {
             );
         }
         warnings.extend(notes.iter().map(ToString::to_string));
+        if let Some(w) = self.lay(&raw.surface, life.fluid.gas.is_some())? {
+            warnings.push(w.to_string());
+        }
         let known = raw
             .fluid
             .get_ref()
@@ -743,6 +746,54 @@ impl Source<'_> {
                 unit.input(296.15_f64.max(limit + 10.0)),
             ),
         ))
+    }
+
+    /// `[surface] lay` (docs/model.md §9.15): `"isotropic"` (the default, what the contact
+    /// model assumes) passes; `"spiral"` (a turned face) and `"radial"` are accepted with a
+    /// warning that the channel along the lay is not modelled — for a gas, where a single turning
+    /// groove across the seal is a classic leak path, the interface leak may be far too low.
+    fn lay(
+        &self,
+        table: &Spanned<RawSurface>,
+        gas: bool,
+    ) -> Result<Option<ScenarioError>, ScenarioError> {
+        let Some(lay) = &table.get_ref().lay else {
+            return Ok(None);
+        };
+        let what = match lay.get_ref().as_str() {
+            "isotropic" => return Ok(None),
+            "spiral" => {
+                "a spiral (turned) lay: a continuous groove can carry the fluid along the \
+                         marks across the contact"
+            }
+            "radial" => {
+                "a radial lay: the marks run across the contact, in the direction of the \
+                         flow"
+            }
+            other => {
+                return Err(self.error(
+                    lay.span(),
+                    "surface.lay",
+                    format!(
+                        "must be \"isotropic\" (no direction, the default), \"spiral\" (a \
+                         turned face) or \"radial\" (marks across the seal), got {other:?}"
+                    ),
+                ));
+            }
+        };
+        let consequence = if gas {
+            "on a gas seal such a channel usually decides the leak, and this model of an \
+             isotropic surface does not see it: the interface leak may be far too low; lap or \
+             face-turn the surface with a circular lay, or measure the seal"
+        } else {
+            "the model treats the surface as isotropic and does not see a channel along the \
+             lay: the leak may be too low"
+        };
+        Ok(Some(self.error(
+            lay.span(),
+            "surface.lay",
+            format!("{what}; {consequence} [docs/model.md §9.15]"),
+        )))
     }
 
     pub(super) fn optional(

@@ -3,7 +3,9 @@
 //! snapshot, and the open-fraction ODE of one internal step.
 
 use super::{Mechanics, SealState, Simulator, Snapshot, events};
-use crate::clogging::{CAKE_POROSITY, Contamination, cake_resistance, effective_threshold};
+use crate::clogging::{
+    CAKE_POROSITY, CAKE_WEDGE_SLOPE, Contamination, cake_resistance_in_wedge, effective_threshold,
+};
 use crate::contact::{Junction, PerssonContact};
 
 impl Simulator<'_> {
@@ -43,7 +45,8 @@ impl Simulator<'_> {
     ///   `r = (u_c(s_peak, a_eff)/u_c(s_peak, a_c))³ ∈ [0, 1]` ([`effective_threshold`]), so
     ///   `f Q̇_open ≤ Q̇_s ≤ Q̇_open` by construction;
     /// * the cake in series: `Q̇ = Q̇_s/(1 + ε)`, `ε = R_cake Q̇_s/ΔP`
-    ///   ([`cake_resistance`] over the entry slit L_y ū(1)), on the pressure-driven part.
+    ///   ([`cake_resistance_in_wedge`] from the entry gap ū(1) outwards), on the pressure-driven
+    ///   part.
     ///
     /// The drag flows through the same channels: × f without re-routing, × f + (1 − f) r^{1/3}
     /// with it (the film scaling with the constriction height, d = β u_c).
@@ -117,14 +120,15 @@ impl Simulator<'_> {
         if !(state.cake_volume > 0.0 && dp > 0.0 && snap.entry_gap > 0.0 && seal_static > 0.0) {
             return 0.0;
         }
-        let area = p.geometry.sealing_length() * snap.entry_gap;
         let viscosity = p.fluid.viscosity_at(snap.temperature);
-        let r = cake_resistance(
+        let r = cake_resistance_in_wedge(
             viscosity,
             state.cake_volume,
             c.cake_diameter(snap.reach),
             CAKE_POROSITY,
-            area,
+            p.geometry.sealing_length(),
+            snap.entry_gap,
+            CAKE_WEDGE_SLOPE,
         );
         let eps = r * seal_static / dp;
         if eps.is_finite() { eps.max(0.0) } else { 0.0 }

@@ -1215,6 +1215,7 @@ impl<'a> Simulator<'a> {
         let p = self.problem;
         let at = At::Time(state.time);
         p.assess_rubber(snap.temperature, at, findings);
+        validity::contact_width(snap.profile.width(), p.spectrum.q0(), at, findings);
         validity::data_window(
             state.reduced_time,
             snap.temperature,

@@ -192,6 +192,12 @@ impl LifeProblem {
     pub fn assess_installation(&self, out: &mut Findings) {
         let t0 = self.installed_temperature();
         self.assess_rubber(t0, At::Installation, out);
+        validity::contact_width(
+            self.initial_profile().width(),
+            self.spectrum.q0(),
+            At::Installation,
+            out,
+        );
         if let Some((ratio, limit)) = self.extrusion_at(t0) {
             validity::extrusion(ratio, &limit, At::Installation, out);
         }
