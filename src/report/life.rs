@@ -1197,9 +1197,8 @@ pub fn human_summary(
             line(
                 "set",
                 format!(
-                    "chemical compression set {} % after {duration} (the two networks' set after \
-                     a full recovery; the viscoelastic part a D395 reading 30 min after release \
-                     adds is not in it)",
+                    "chemical compression set {} % after {duration} (fully recovered: without the \
+                     viscoelastic part a D395 reading 30 min after release adds)",
                     human(100.0 * set, 3)
                 ),
             );
@@ -1844,6 +1843,7 @@ mod tests {
             leaked_volume: leak_rate * time,
             open_fraction: 1.0,
             compression_set: None,
+            shutdown: None,
             motion: None,
             state: if u_c.is_some() {
                 SealState::Leaking
@@ -1877,11 +1877,11 @@ mod tests {
         assert_eq!(lines[0], HISTORY_COLUMNS.join(","));
         assert_eq!(
             lines[1],
-            "0e0,3.5315e2,0e0,1e-1,1e3,2e6,1.5e6,1e-3,2e-7,1e-12,0e0,leaking,1e0,"
+            "0e0,3.5315e2,0e0,1e-1,1e3,2e6,1.5e6,1e-3,2e-7,1e-12,0e0,leaking,1e0,,"
         );
         assert_eq!(
             lines[2],
-            "1e1,3.5315e2,1e2,,1e3,2e6,1.5e6,1e-3,,0e0,0e0,sealed,1e0,"
+            "1e1,3.5315e2,1e2,,1e3,2e6,1.5e6,1e-3,,0e0,0e0,sealed,1e0,,"
         );
         let bad = result(vec![row(0.0, f64::NAN, 1.0, None)]);
         assert!(matches!(
@@ -1919,7 +1919,7 @@ mod tests {
             lines[0],
             format!("{},drag_leak_rate_m3_per_s", HISTORY_COLUMNS.join(","))
         );
-        assert!(lines[1].ends_with(",leaking,1e0,,4e-11"), "{}", lines[1]);
+        assert!(lines[1].ends_with(",leaking,1e0,,,4e-11"), "{}", lines[1]);
         let cycle = StrokeCycle {
             period: 2.0,
             out_volume: 1e-12,
@@ -1946,7 +1946,7 @@ mod tests {
             )
         );
         assert!(
-            lines[2].ends_with(",leaking,1e0,,4e-11,5e-13,,,low_speed_no_profile"),
+            lines[2].ends_with(",leaking,1e0,,,4e-11,5e-13,,,low_speed_no_profile"),
             "{}",
             lines[2]
         );
@@ -2002,16 +2002,18 @@ mod tests {
         let text = compare_table(&gas).unwrap();
         assert!(text.lines().next().unwrap().ends_with(
             ",throughput_1day_Pa_m3_per_s,throughput_1year_Pa_m3_per_s,\
-             throughput_10years_Pa_m3_per_s,sealing_force_end_N_per_m,retained_force_end,\
-             leaked_volume_end_m3,compression_set_end,state_end"
+             throughput_10years_Pa_m3_per_s,total_throughput_1day_Pa_m3_per_s,\
+             total_throughput_1year_Pa_m3_per_s,total_throughput_10years_Pa_m3_per_s,\
+             sealing_force_end_N_per_m,retained_force_end,leaked_volume_end_m3,\
+             compression_set_end,state_end"
         ));
         let line = text.lines().nth(1).unwrap();
         assert!(
-            line.starts_with("x,rubber,user,7.8894e7,leak_rate,1e-12,,,1.5e-7,,,1e3,1e0,"),
+            line.starts_with("x,rubber,user,7.8894e7,leak_rate,1e-12,,,1.5e-7,,,1.5e-7,,,1e3,1e0,"),
             "{line}"
         );
         assert!(line.ends_with(",,leaking"), "{line}");
-        assert!((volume_cell(line, 13) / (1e-12 * 2.0 * DAY) - 1.0).abs() < 1e-12);
+        assert!((volume_cell(line, 16) / (1e-12 * 2.0 * DAY) - 1.0).abs() < 1e-12);
         assert!(compare_text(&gas).contains("Q 1 day [Pa·m³/s]"));
     }
 }

@@ -1154,7 +1154,9 @@ squeeze = 0.2
         // no [environment]: constant at the WLF reference temperature (23 °C)
         assert!(life.environment.is_constant());
         assert!((life.environment.at(1e6) - 296.15).abs() < 1e-9);
-        assert!(life.failure.is_empty() && life.ageing.is_none() && life.thermal_strain.is_none());
+        // no [failure]: the default checks only (lift-off, extrusion, shutdown), no criterion
+        assert!(life.failure.lift_off && life.failure.max_leak_rate.is_none());
+        assert!(life.ageing.is_none() && life.thermal_strain.is_none());
         assert_eq!(
             life.time,
             TimeGrid {
@@ -1469,13 +1471,22 @@ squeeze = 0.2
                 max_compression_set: None,
                 lift_off: true,
                 extrusion: true,
+                shutdown: Some(crate::simulate::Shutdown {
+                    temperature: 296.15,
+                    pressure_difference: 0.0,
+                }),
                 stop_at_failure: false,
             }
         );
-        // the extrusion check is on unless switched off
-        let off = load(&with("[failure]\nextrusion = false\n")).unwrap();
-        assert!(!off.life.failure.extrusion);
-        assert!(load(&with("[failure]\n")).unwrap().life.failure.is_empty());
+        // the extrusion, lift-off and shutdown checks are on unless waived
+        let off = load(&with(
+            "[failure]\nextrusion = false\nlift_off = false\nlost_interference = false\n",
+        ))
+        .unwrap();
+        assert!(!off.life.failure.extrusion && off.life.failure.shutdown.is_none());
+        assert!(off.life.failure.is_empty());
+        let empty = load(&with("[failure]\n")).unwrap().life.failure;
+        assert!(empty.lift_off && empty.extrusion && empty.shutdown.is_some());
         let e = error(&with("[failure]\nmin_retained_force = 1.5\n"));
         assert!(
             e.contains(":18: failure.min_retained_force: must lie strictly between 0 and 1"),

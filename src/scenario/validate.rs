@@ -399,7 +399,7 @@ impl Source<'_> {
         let environment = self.environment(raw.environment.as_ref(), &material)?;
         // the static problem's viscosity is the law's at the installation temperature
         let fluid = fluid.at(environment.at(0.0));
-        self.fitting_temperature(&raw, &seal, &material, &environment)?;
+        let cold_fitting = self.fitting_temperature(&raw, &seal, &material, &environment)?;
         // a ring fitted at another temperature than the environment's first: its temperature
         // settles to the environment's over its thermal time (docs/model.md §5.2)
         let environment = match (seal.fitting_temperature, seal.geometry) {
@@ -492,6 +492,7 @@ impl Source<'_> {
         if let Some(w) = self.lay(&raw.surface, life.fluid.gas.is_some())? {
             warnings.push(w.to_string());
         }
+        warnings.extend(cold_fitting.map(|w| w.to_string()));
         let known = raw
             .fluid
             .get_ref()
@@ -699,28 +700,29 @@ impl Source<'_> {
     }
 
     /// [`Source::quantity`] for a key that may be absent.
-    /// Refuses a ring fitted at or below its compound's low-temperature limit T10
-    /// (docs/model.md §5.2): below it the rubber is leathery to glassy, it cannot be stretched
-    /// and seated without damage, and a fitter warms it first. The fitting temperature is
-    /// `installation_temperature`, else the environment's first temperature.
+    /// A ring fitted at or below its compound's low-temperature limit T10 (docs/model.md §5.2):
+    /// below it the rubber is leathery to glassy, it cannot be stretched and seated without
+    /// damage, and a fitter warms it first. A stated `installation_temperature` there is refused;
+    /// without one the ring is taken as fitted at the environment's first temperature, and that
+    /// is flagged (the returned warning): its squeeze is applied to a glassy ring.
     fn fitting_temperature(
         &self,
         raw: &RawScenario,
         seal: &super::life::SealSpec,
         material: &Material,
         environment: &crate::material::TemperatureHistory,
-    ) -> Result<(), ScenarioError> {
+    ) -> Result<Option<ScenarioError>, ScenarioError> {
         if !matches!(seal.geometry, SealGeometry::ORing { .. }) {
-            return Ok(());
+            return Ok(None);
         }
         let Some(limit) = material.low_temperature_limit() else {
-            return Ok(());
+            return Ok(None);
         };
         let fitted = seal
             .fitting_temperature
             .unwrap_or_else(|| environment.at(0.0));
         if fitted > limit {
-            return Ok(());
+            return Ok(None);
         }
         let given = raw.seal.get_ref().installation_temperature.as_ref();
         let (span, key, unit) = match (given, raw.environment.as_ref()) {
@@ -731,21 +733,34 @@ impl Source<'_> {
             },
             (None, None) => (raw.seal.span(), "seal", Default::default()),
         };
-        Err(self.error(
+        let warm = unit.input(296.15_f64.max(limit + 10.0));
+        if given.is_some() {
+            return Err(self.error(
+                span,
+                key,
+                format!(
+                    "a ring fitted at {} is at or below its compound's low-temperature limit T10 = \
+                     {}: there the rubber is leathery to glassy and cannot be stretched and seated \
+                     without damage; fit it warmer, e.g. installation_temperature = \"{warm}\" \
+                     [docs/model.md §5.2]",
+                    unit.show(fitted),
+                    unit.show(limit),
+                ),
+            ));
+        }
+        Ok(Some(self.error(
             span,
             key,
             format!(
-                "the ring would be fitted at {}, at or below the compound's low-temperature limit \
-                 T10 = {}: there the rubber is leathery to glassy, it cannot be stretched and \
-                 seated without damage, and a squeeze applied in that state is outside the model; \
-                 state the (warmer) fitting temperature, e.g. installation_temperature = \"{}\" \
-                 in [seal] (the environment's history then starts after it) \
-                 [docs/model.md §5.2]",
+                "the ring is taken as fitted at the environment's first temperature, {}, at or \
+                 below its compound's low-temperature limit T10 = {}: its squeeze is applied to a \
+                 leathery to glassy ring (a far higher force than a ring fitted warm and cooled); \
+                 a ring fitted warm: installation_temperature = \"{warm}\" in [seal] (the \
+                 environment's history then starts after it) [docs/model.md §5.2]",
                 unit.show(fitted),
                 unit.show(limit),
-                unit.input(296.15_f64.max(limit + 10.0)),
             ),
-        ))
+        )))
     }
 
     /// `[surface] lay` (docs/model.md §9.15): `"isotropic"` (the default, what the contact

@@ -1010,6 +1010,8 @@ impl<'a> Simulator<'a> {
                 };
                 let s = junction_s;
                 let junction = match self.path {
+                    // a critical gap below a molecule carries no film either (§8.1)
+                    _ if leak.state == SealState::BelowMolecule => Junction::Sealed,
                     ContactPath::Table(_) | ContactPath::Exact(_) => peak_junction,
                     _ => self.path.persson_junction(s),
                 };

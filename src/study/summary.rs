@@ -258,6 +258,7 @@ mod tests {
             retained_force: 1.0,
             leaked_volume: 0.0,
             compression_set: None,
+            final_state: "sealed".into(),
             warnings: vec!["x".into()],
         };
         let cases = vec![

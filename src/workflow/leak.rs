@@ -160,7 +160,12 @@ fn motion_point(
         pb.fluid.viscosity,
         pb.shape_factor,
     );
-    let coeffs = DragCoefficients::compute(solver.path().exact(), &seal, &DragSettings::default());
+    // a critical gap below a molecule carries no film either (docs/model.md §8.1)
+    let coeffs = if point.state == crate::leak::SealState::BelowMolecule {
+        DragCoefficients::sealed(&seal)
+    } else {
+        DragCoefficients::compute(solver.path().exact(), &seal, &DragSettings::default())
+    };
     let oring = oring.then_some((
         point.nominal_pressure,
         pb.seal.width,

@@ -285,12 +285,12 @@ fn rod_seal_run_reports_the_films_and_leaks_the_cycle_mean() {
     let mut rows = 0;
     for line in lines {
         let cells: Vec<&str> = line.split(',').collect();
-        assert_eq!(cells.len(), 19, "{line}");
-        let (leak_rate, net) = (num(cells[9]), num(cells[15]));
+        assert_eq!(cells.len(), 20, "{line}");
+        let (leak_rate, net) = (num(cells[9]), num(cells[16]));
         // a 1 s cycle: the leak rate is the net volume per cycle per second
         assert_eq!(leak_rate, net, "{line}");
-        assert!(num(cells[16]) > num(cells[17]), "{line}");
-        assert_eq!(cells[18], "inverse_hydrodynamic");
+        assert!(num(cells[17]) > num(cells[18]), "{line}");
+        assert_eq!(cells[19], "inverse_hydrodynamic");
         rows += 1;
     }
     assert!(rows > 10);
@@ -430,8 +430,8 @@ fn wiper_run_includes_the_drag_in_the_leak_rate() {
     );
     for line in lines {
         let cells: Vec<&str> = line.split(',').collect();
-        assert_eq!(cells.len(), 15);
-        assert_eq!(cells[9], cells[14], "ΔP = 0: the leak is the drag");
+        assert_eq!(cells.len(), 16);
+        assert_eq!(cells[9], cells[15], "ΔP = 0: the leak is the drag");
         assert_eq!(cells[11], "leaking");
     }
     let json: Value = serde_json::from_str(&fs::read_to_string(&s).unwrap()).unwrap();

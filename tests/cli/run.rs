@@ -174,13 +174,21 @@ fn every_shipped_scenario_runs_without_nan() {
             "{name}: the installation row comes first"
         );
         for row in &rows {
-            assert_eq!(row.len(), 14 + extra, "{name}: {row:?}");
+            assert_eq!(row.len(), 15 + extra, "{name}: {row:?}");
             // compression set: blank without [ageing], a fraction with it
             if !row[13].is_empty() {
                 let set: f64 = row[13].parse().unwrap();
                 assert!((0.0..=1.0).contains(&set), "{name}: compression set {set}");
             }
-            for cell in &row[14..] {
+            // the set ring's squeeze at shutdown: blank where the check does not apply
+            if !row[14].is_empty() {
+                let squeeze: f64 = row[14].parse().unwrap();
+                assert!(
+                    (0.0..1.0).contains(&squeeze),
+                    "{name}: shutdown squeeze {squeeze}"
+                );
+            }
+            for cell in &row[15..] {
                 let regime = ["low_speed", "transition", "inverse_hydrodynamic"];
                 let blank_film = cell.is_empty() || *cell == "low_speed_no_profile";
                 assert!(
@@ -238,11 +246,17 @@ fn shipped_life_scenarios_show_their_point() {
         let (stdout, _) = out.run_ok(&scenarios_dir().join(name), &[]);
         (stdout, out.summary())
     };
-    // the README's first command: an O-ring that leaks and fails within 30 years
+    // the README's first command: an O-ring that ages, fails by its retained force within a
+    // year, loses its interference at a 23 °C shutdown within two, and is held by the fluid
+    // pressure alone — never leaking — once its squeeze has relaxed away
     let (stdout, nbr) = run("oring-nbr-water-80c.toml");
     assert!(stdout.contains("ILLUSTRATIVE"), "{stdout}");
-    assert!(nbr["final_leak_rate_m3_per_s"].as_f64().unwrap() > 1e-13);
-    assert!(nbr["time_to_failure_s"].as_f64().unwrap() < 30.0 * YEAR);
+    assert_eq!(nbr["failure_mode"], "retained_force");
+    assert!(nbr["time_to_failure_s"].as_f64().unwrap() < YEAR);
+    assert_eq!(nbr["final_leak_rate_m3_per_s"].as_f64(), Some(0.0));
+    assert_eq!(nbr["final_state"], "pressure_held");
+    let lost = nbr["shutdown"]["lost_s"].as_f64().unwrap();
+    assert!((YEAR..2.0 * YEAR).contains(&lost), "{lost}");
     // ageing ends the FKM's life
     let (_, fkm) = run("oring-fkm-hot-oil-ageing.toml");
     assert_eq!(fkm["failure_mode"], "retained_force");
@@ -406,7 +420,8 @@ fn fidelity_flag_overrides_the_scenario() {
 #[test]
 fn failure_block_without_criterion_warns_and_survives() {
     let out = Outputs::new();
-    let text = one_term("23 C").replace("min_retained_force = 0.5\n", "");
+    // lift-off is a criterion unless waived: waived, and no other, the seal can only survive
+    let text = one_term("23 C").replace("min_retained_force = 0.5\n", "lift_off = false\n");
     let scenario = out.write("none.toml", &text);
     let (stdout, stderr) = out.run_ok(&scenario, &[]);
     assert!(
@@ -415,7 +430,7 @@ fn failure_block_without_criterion_warns_and_survives() {
         "{stderr}"
     );
     assert!(
-        stdout.contains("survives 30 years (no failure criterion set)"),
+        stdout.contains("survives 30 years (no failure criterion set); sealed (no percolating channel) at the end"),
         "{stdout}"
     );
     let json = out.summary();

@@ -3,7 +3,7 @@
 /// Header of the history CSV of `sealsim run`.
 pub const HISTORY_HEADER: &str = "time_s,temperature_K,reduced_time_s,shift_factor,\
 sealing_force_N_per_m,peak_pressure_Pa,mean_pressure_Pa,contact_width_m,u_c_m,\
-leak_rate_m3_per_s,leaked_volume_m3,state,open_fraction,compression_set";
+leak_rate_m3_per_s,leaked_volume_m3,state,open_fraction,compression_set,shutdown_squeeze";
 
 /// The `sealsim` binary as a command.
 pub fn sealsim() -> assert_cmd::Command {

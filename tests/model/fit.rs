@@ -503,6 +503,7 @@ fn material_toml_round_trips_through_the_parser() {
         .iter()
         .map(|k| (k.to_string(), format!("source of {k}, p. 1")))
         .collect(),
+        library_id: None,
     };
     let text = material_toml(&full);
     let parsed =
