@@ -35,4 +35,5 @@ mod surface;
 mod swell;
 mod tradeoff;
 mod validity;
+mod verdicts;
 mod write_faults;
