@@ -21,13 +21,15 @@ use std::path::{Path, PathBuf};
 #[derive(Debug, Clone, Args)]
 #[command(
     after_help = "CSV columns: material, name, status, time_to_failure_s (blank when it \
-    survives), failure_mode (leak_rate|leaked_volume|retained_force|lift_off|none), \
+    survives), failure_mode (leak_rate|leaked_volume|retained_force|compression_set|lift_off|\
+    extrusion|lost_interference|none), \
     leak_rate_1day_m3_per_s, leak_rate_1year_m3_per_s, leak_rate_10years_m3_per_s (blank beyond \
     the scenario's duration); for a gas also throughput_1day_Pa_m3_per_s, \
-    throughput_1year_Pa_m3_per_s, throughput_10years_Pa_m3_per_s (the interface only); then at the \
+    throughput_1year_Pa_m3_per_s, throughput_10years_Pa_m3_per_s (the interface) and \
+    total_throughput_1day_Pa_m3_per_s, … (with the permeation through the rubber); then at the \
     end of the run sealing_force_end_N_per_m, retained_force_end (over the retained-force \
     reference), leaked_volume_end_m3, compression_set_end (with ageing), state_end \
-    (sealed|leaking|lift_off)."
+    (sealed|leaking|pressure_held|lift_off)."
 )]
 pub struct CompareArgs {
     /// Scenario file (TOML).
