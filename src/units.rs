@@ -198,6 +198,54 @@ impl Dimension {
             .find(|named| named.dimension == *self)
     }
 
+    /// The units engineers write this dimension in, most common first (for the fix a message
+    /// suggests; every one is accepted by [`parse_quantity`], a test).
+    pub fn engineering_units(&self) -> &'static [&'static str] {
+        match *self {
+            Dimension::LENGTH => &["mm", "um", "in"],
+            Dimension::WAVEVECTOR => &["1/m", "1/mm"],
+            Dimension::AREA => &["mm^2", "m^2"],
+            Dimension::VOLUME => &["mL", "L", "cc"],
+            Dimension::SPECTRUM => &["m^4"],
+            Dimension::TIME => &["h", "day", "year"],
+            Dimension::FREQUENCY => &["Hz", "1/s"],
+            Dimension::TEMPERATURE => &["K"],
+            Dimension::PRESSURE => &["bar", "MPa", "psi"],
+            Dimension::VISCOSITY => &["mPa*s", "cP"],
+            Dimension::KINEMATIC_VISCOSITY => &["cSt", "mm^2/s"],
+            Dimension::DENSITY => &["kg/m^3", "g/cm^3"],
+            Dimension::THERMAL_EXPANSION => &["1/K"],
+            Dimension::VOLUME_FLOW => &["mL/h", "mL/day", "m^3/s"],
+            Dimension::VELOCITY => &["mm/s", "m/s"],
+            Dimension::NUMBER_DENSITY => &["1/m^3", "1/mL"],
+            Dimension::MOLAR_ENERGY => &["kJ/mol"],
+            Dimension::FORCE_PER_LENGTH => &["N/mm", "N/m"],
+            Dimension::FORCE => &["N", "kN"],
+            Dimension::POWER => &["mbar*L/s", "Pa*m^3/s"],
+            _ => &[],
+        }
+    }
+
+    /// The fix for a bare number `v` given for this dimension: `write "210 bar", "210 MPa" or
+    /// "210 psi" (the unit you mean)`.
+    pub fn bare_number_fix(&self, v: f64) -> String {
+        let quoted: Vec<String> = self
+            .engineering_units()
+            .iter()
+            .map(|u| format!("\"{} {u}\"", show(v)))
+            .collect();
+        let list = match quoted.as_slice() {
+            [] => format!("\"{} {}\"", show(v), self.formula()),
+            [one] => one.clone(),
+            [head @ .., last] => format!("{} or {last}", head.join(", ")),
+        };
+        format!(
+            "{} {} needs its unit: write {list} (the one you mean; a bare number is ambiguous)",
+            article(&self.describe()),
+            self.describe()
+        )
+    }
+
     /// "a pressure (e.g. "10 MPa")", used for what was expected.
     fn expected_phrase(&self) -> String {
         match self.named() {
@@ -1406,6 +1454,25 @@ mod tests {
         }
         .to_string();
         assert!(message.contains("1e-9 m^3/s"), "{message}");
+    }
+
+    #[test]
+    fn the_units_a_fix_suggests_are_accepted() {
+        for named in NAMED_DIMENSIONS {
+            let d = named.dimension;
+            for unit in d.engineering_units() {
+                let text = format!("2.5 {unit}");
+                let v = parse_quantity(&text, d).unwrap_or_else(|e| panic!("{text}: {e}"));
+                assert!(v.is_finite() && v > 0.0, "{text}");
+            }
+            let fix = d.bare_number_fix(210.0);
+            assert!(fix.contains("needs its unit"), "{fix}");
+        }
+        assert_eq!(
+            Dimension::PRESSURE.bare_number_fix(210.0),
+            "a pressure needs its unit: write \"210 bar\", \"210 MPa\" or \"210 psi\" (the one \
+             you mean; a bare number is ambiguous)"
+        );
     }
 
     #[test]

@@ -60,6 +60,13 @@ impl Bound {
         }
         Some(match self {
             _ if !v.is_finite() => format!("must be finite, got {got}"),
+            // a fraction given as a percentage: say how to write one
+            Bound::Open(lo, hi) if unit.is_empty() && hi == 1.0 && v > 1.0 && v < 100.0 => format!(
+                "must lie strictly between {} and {}, got {got}: a fraction (write \"{got} %\" for \
+                 a percentage)",
+                show(lo),
+                show(hi)
+            ),
             Bound::Open(lo, hi) => format!(
                 "must lie strictly between {} and {}, got {got}",
                 show(lo),
@@ -666,6 +673,15 @@ impl Source<'_> {
     /// the value must lie in its range.
     pub(super) fn quantity(&self, raw: &Quantity, field: &Field) -> Result<f64, ScenarioError> {
         let value = match raw.get_ref() {
+            // `210` for a pressure is 210 Pa to the parser and 210 bar to the engineer: a
+            // dimensional key needs its unit
+            RawQuantity::Number(v) if field.dimension != units::Dimension::DIMENSIONLESS => {
+                return Err(self.error(
+                    raw.span(),
+                    field.key,
+                    field.dimension.bare_number_fix(*v),
+                ));
+            }
             RawQuantity::Number(v) => *v,
             RawQuantity::Text(text) => units::parse_quantity(text, field.dimension)
                 .map_err(|e| self.error(raw.span(), field.key, e.to_string()))?,
@@ -699,7 +715,6 @@ impl Source<'_> {
         }
     }
 
-    /// [`Source::quantity`] for a key that may be absent.
     /// A ring fitted at or below its compound's low-temperature limit T10 (docs/model.md §5.2):
     /// below it the rubber is leathery to glassy, it cannot be stretched and seated without
     /// damage, and a fitter warms it first. A stated `installation_temperature` there is refused;
@@ -811,6 +826,7 @@ impl Source<'_> {
         )))
     }
 
+    /// [`Source::quantity`] for a key that may be absent.
     pub(super) fn optional(
         &self,
         raw: Option<&Quantity>,

@@ -206,7 +206,7 @@ fn every_shipped_scenario_runs_without_nan() {
                 }
             }
             assert!(
-                ["leaking", "sealed", "lift_off"].contains(&row[11]),
+                ["leaking", "sealed", "pressure_held", "lift_off"].contains(&row[11]),
                 "{name}: {row:?}"
             );
         }
