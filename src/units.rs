@@ -518,9 +518,14 @@ pub fn parse_quantity(text: &str, expected: Dimension) -> Result<f64, UnitError>
 /// * a molar flow (`mol/s`, `umol/s`): `ṅ R T`.
 pub fn parse_throughput(text: &str, temperature: f64) -> Result<f64, UnitError> {
     let (value, unit) = split_quantity(text)?;
+    // the leak-test trade writes "atm cc/s" and "std cc/s" with a space
+    let spaced = unit.replace(' ', "*");
+    let unit = spaced.as_str();
     let standard = match unit {
         "sccm" => Some(crate::gas::SCCM),
         "slm" => Some(crate::gas::SLM),
+        // a standard cubic centimetre a second: 60 sccm
+        "std*cc/s" | "scc/s" | "sccs" => Some(60.0 * crate::gas::SCCM),
         _ => None,
     };
     if let Some(per_unit) = standard {
@@ -982,10 +987,18 @@ const fn unit(
 
 const DAY: f64 = 86_400.0;
 
+/// The volume of one drop in a "drops/min" leak count \[m³\]: 0.05 mL (20 drops per mL, the
+/// common rule; API 598's valve-test count is 16 per mL).
+pub const DROP_VOLUME: f64 = 5e-8;
+
 const UNITS: &[UnitDef] = &[
     unit("m", 1.0, Dimension::LENGTH, true),
     // the international inch (exactly 25.4 mm): AS568 sizes and US drawings
     unit("in", 0.0254, Dimension::LENGTH, false),
+    // the microinch of US surface-finish callouts (Ra 32 µin = 0.81 µm)
+    unit("uin", 0.0254e-6, Dimension::LENGTH, false),
+    unit("µin", 0.0254e-6, Dimension::LENGTH, false),
+    unit("μin", 0.0254e-6, Dimension::LENGTH, false),
     unit("%", 0.01, Dimension::DIMENSIONLESS, false),
     unit("g", 1e-3, Dimension::MASS, true),
     unit("s", 1.0, Dimension::TIME, true),
@@ -1005,6 +1018,10 @@ const UNITS: &[UnitDef] = &[
     unit("Pa", 1.0, Dimension::PRESSURE, true),
     unit("bar", 1e5, Dimension::PRESSURE, true),
     unit("psi", 6894.757293168, Dimension::PRESSURE, false),
+    unit("ksi", 6894.757293168e3, Dimension::PRESSURE, false),
+    // the conventional millimetre and inch of mercury (vacuum and barometer readings)
+    unit("mmHg", 133.322_387_415, Dimension::PRESSURE, false),
+    unit("inHg", 3386.388_640_341, Dimension::PRESSURE, false),
     // gauge pressures: relative to the outlet (ambient) side, which is what a pressure
     // difference across a seal to ambient is
     unit("psig", 6894.757293168, Dimension::PRESSURE, false),
@@ -1013,12 +1030,21 @@ const UNITS: &[UnitDef] = &[
     // 1 Torr = 101325/760 Pa (exact by definition; mTorr is the vacuum gauges' unit)
     unit("Torr", 101_325.0 / 760.0, Dimension::PRESSURE, true),
     unit("N", 1.0, Dimension::FORCE, true),
+    // pound-force and kilogram-force (standard gravity 9.80665 m/s²)
+    unit("lbf", 4.448_221_615_260_5, Dimension::FORCE, false),
+    unit("kgf", 9.806_65, Dimension::FORCE, false),
     unit("J", 1.0, Dimension::ENERGY, true),
     unit("W", 1.0, Dimension::POWER, true),
     unit("mol", 1.0, Dimension::AMOUNT, true),
     unit("K", 1.0, Dimension::TEMPERATURE, true),
     unit("L", 1e-3, Dimension::VOLUME, true),
     unit("l", 1e-3, Dimension::VOLUME, true),
+    // the cubic centimetre of the leak-test trade (atm*cc/s, cc/min)
+    unit("cc", 1e-6, Dimension::VOLUME, false),
+    // a drop for "drops/min" leak counts: 0.05 mL, the common 20 drops per mL (API 598 counts
+    // 16 per mL, 0.0625 mL; docs/model.md §11)
+    unit("drop", DROP_VOLUME, Dimension::VOLUME, false),
+    unit("drops", DROP_VOLUME, Dimension::VOLUME, false),
     unit("P", 0.1, Dimension::VISCOSITY, true),
     unit("St", 1e-4, Dimension::KINEMATIC_VISCOSITY, true),
     unit("Hz", 1.0, Dimension::FREQUENCY, true),

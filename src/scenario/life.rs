@@ -1322,7 +1322,9 @@ squeeze = 0.2
         );
         assert_eq!(m("\"follow\"").unwrap(), AsperityModulus::Follow);
         assert_eq!(m("\"3 MPa\"").unwrap(), AsperityModulus::Fixed(3e6));
-        assert_eq!(m("2e6").unwrap(), AsperityModulus::Fixed(2e6));
+        assert_eq!(m("\"2e6 Pa\"").unwrap(), AsperityModulus::Fixed(2e6));
+        // a bare modulus is ambiguous: refused
+        assert!(m("2e6").is_err());
         let e = m("\"relaxd\"").unwrap_err().to_string();
         assert!(
             e.contains(":4: material.asperity_modulus: must be \"relaxed\""),

@@ -1047,12 +1047,12 @@ ageing = "test: ageing"
             ),
             (
                 "\"6 MPa\"",
-                "-6e6",
+                "\"-6 MPa\"",
                 ":6: material.prony[0].modulus: must be positive, got -6e6 Pa",
             ),
             (
                 "\"1000 h\"",
-                "-1",
+                "\"-1 s\"",
                 ":6: material.prony[0].tau: must be positive, got -1 s",
             ),
             (
@@ -1181,7 +1181,7 @@ ageing = "test: ageing"
         // the index names the offending term
         let two = with(
             "prony = [ { modulus = \"6 MPa\", tau = \"1000 h\" } ]",
-            "prony = [\n  { modulus = \"6 MPa\", tau = \"1000 h\" },\n  { modulus = 1e6, tau = 10 },\n  { modulus = 1e6, tau = -1 },\n]",
+            "prony = [\n  { modulus = \"6 MPa\", tau = \"1000 h\" },\n  { modulus = \"1 MPa\", tau = \"10 s\" },\n  { modulus = \"1 MPa\", tau = \"-1 s\" },\n]",
         );
         let e = error(&two);
         assert!(
@@ -1341,7 +1341,7 @@ ageing = "test: ageing"
     fn modulus_is_elastic_or_viscoelastic_not_both() {
         let e = error(&with(
             "long_term_modulus",
-            "youngs_modulus = 1e7\nlong_term_modulus",
+            "youngs_modulus = \"10 MPa\"\nlong_term_modulus",
         ));
         assert!(
             e.contains(":5: material.youngs_modulus: give either youngs_modulus"),
@@ -1451,7 +1451,7 @@ ageing = "test: ageing"
             "{e}"
         );
         let e = scenario(&scenario_with_material(
-            "[material]\npoisson_ratio = 0.5\nlong_term_modulus = 0\nprony = [ { modulus = \"6 MPa\", tau = 1 } ]\n",
+            "[material]\npoisson_ratio = 0.5\nlong_term_modulus = 0\nprony = [ { modulus = \"6 MPa\", tau = \"1 s\" } ]\n",
         ))
         .unwrap_err()
         .to_string();
@@ -1460,7 +1460,7 @@ ageing = "test: ageing"
             "{e}"
         );
         let e = scenario(&scenario_with_material(
-            "[material]\nstatus = \"published\"\npoisson_ratio = 0.5\nyoungs_modulus = 1e7\n",
+            "[material]\nstatus = \"published\"\npoisson_ratio = 0.5\nyoungs_modulus = \"10 MPa\"\n",
         ))
         .unwrap_err()
         .to_string();
@@ -1469,7 +1469,7 @@ ageing = "test: ageing"
             "{e}"
         );
         let e = scenario(&scenario_with_material(
-            "[material]\nyoungs_modulus = 1e7\n",
+            "[material]\nyoungs_modulus = \"10 MPa\"\n",
         ))
         .unwrap_err()
         .to_string();
@@ -1479,7 +1479,7 @@ ageing = "test: ageing"
         );
         // inline provenance is optional, but checked when given
         let s = scenario(&scenario_with_material(
-            "[material]\nyoungs_modulus = 1e7\npoisson_ratio = 0.5\n[material.provenance]\nyoungs_modulus = \"datasheet\"\n",
+            "[material]\nyoungs_modulus = \"10 MPa\"\npoisson_ratio = 0.5\n[material.provenance]\nyoungs_modulus = \"datasheet\"\n",
         ))
         .unwrap();
         assert_eq!(
@@ -1487,7 +1487,7 @@ ageing = "test: ageing"
             Some("datasheet")
         );
         let e = scenario(&scenario_with_material(
-            "[material]\nyoungs_modulus = 1e7\npoisson_ratio = 0.5\n[material.provenance]\nprony = \"x\"\n",
+            "[material]\nyoungs_modulus = \"10 MPa\"\npoisson_ratio = 0.5\n[material.provenance]\nprony = \"x\"\n",
         ))
         .unwrap_err()
         .to_string();

@@ -255,13 +255,23 @@ mod tests {
     }
 
     #[test]
-    fn name_defaults_to_the_file_stem_and_bare_numbers_are_si() {
-        let text = PAPER
-            .replace("name = \"Persson & Yang 2008, section 3\"\n", "")
-            .replace("\"10 MPa\"", "1e7");
-        let s = load(&text).unwrap();
-        assert_eq!(s.name, "x");
-        assert_eq!(s.problem.material.youngs_modulus, 1e7);
+    fn name_defaults_to_the_file_stem_and_bare_numbers_need_units() {
+        let unnamed = PAPER.replace("name = \"Persson & Yang 2008, section 3\"\n", "");
+        assert_eq!(load(&unnamed).unwrap().name, "x");
+        // `1e7` for a modulus: Pa to a parser, MPa to a reader — refused with the units it takes
+        let e = error(&unnamed.replace("\"10 MPa\"", "1e7"));
+        assert!(
+            e.contains(
+                "material.youngs_modulus: a pressure needs its unit: write \"1e7 bar\", \"1e7 \
+                 MPa\" or \"1e7 psi\""
+            ),
+            "{e}"
+        );
+        // each suggestion is accepted
+        for unit in ["bar", "MPa", "psi"] {
+            let fixed = unnamed.replace("\"10 MPa\"", &format!("\"10 {unit}\""));
+            assert!(load(&fixed).is_ok(), "{unit}");
+        }
     }
 
     #[test]

@@ -420,7 +420,7 @@ mod tests {
             }
         );
         assert_eq!(m.period(), Some(2.0));
-        let m = motion("stroke = \"5 cm\"\nout_speed = \"0.2 m/s\"\nin_speed = 0.05\n")
+        let m = motion("stroke = \"5 cm\"\nout_speed = \"0.2 m/s\"\nin_speed = \"0.05 m/s\"\n")
             .unwrap()
             .unwrap();
         assert_eq!(
@@ -435,7 +435,7 @@ mod tests {
         assert_eq!(m.fastest_speed(), 0.2);
         assert!(motion("sliding_speed = 0\n").unwrap().is_some());
         let m = motion(
-            "stroke = \"0.1 m\"\nfrequency = 1\ninlet_gradient_out = \"2 MPa/mm\"\n\
+            "stroke = \"0.1 m\"\nfrequency = \"1 Hz\"\ninlet_gradient_out = \"2 MPa/mm\"\n\
              inlet_gradient_in = \"3e9 Pa/m\"\n",
         )
         .unwrap()
@@ -490,7 +490,7 @@ mod tests {
                 "x.toml:18: motion.stroke: a stroke cycle needs frequency",
             ),
             (
-                "stroke = 0\nfrequency = 1\n",
+                "stroke = 0\nfrequency = \"1 Hz\"\n",
                 "x.toml:18: motion.stroke: must be positive, got 0 m",
             ),
             (
@@ -498,7 +498,7 @@ mod tests {
                 "x.toml:19: motion.stroke: sliding_speed (constant sliding) and stroke",
             ),
             (
-                "stroke = \"0.1 m\"\nfrequency = 1\nout_speed = \"1 m/s\"\n",
+                "stroke = \"0.1 m\"\nfrequency = \"1 Hz\"\nout_speed = \"1 m/s\"\n",
                 "x.toml:19: motion.frequency: frequency (which sets",
             ),
             (
@@ -510,24 +510,24 @@ mod tests {
                 "x.toml:19: motion.out_speed: missing key",
             ),
             (
-                "stroke = \"0.1 m\"\nout_speed = \"0 m/s\"\nin_speed = 1\n",
+                "stroke = \"0.1 m\"\nout_speed = \"0 m/s\"\nin_speed = \"1 m/s\"\n",
                 "x.toml:19: motion.out_speed: must be positive",
             ),
             (
-                "sliding_speed = \"1 cm/s\"\nfrequency = 1\n",
+                "sliding_speed = \"1 cm/s\"\nfrequency = \"1 Hz\"\n",
                 "x.toml:19: motion.frequency: only applies to a stroke cycle",
             ),
             (
-                "out_speed = \"1 m/s\"\nin_speed = 1\n",
+                "out_speed = \"1 m/s\"\nin_speed = \"1 m/s\"\n",
                 "x.toml:18: motion.out_speed: belongs to a stroke cycle",
             ),
             ("", "x.toml:17: motion.sliding_speed: missing key"),
             (
-                "sliding_speed = 1\njunction_position = 1\n",
+                "sliding_speed = \"1 m/s\"\njunction_position = 1\n",
                 "x.toml:19: motion.junction_position: must lie strictly between 0 and 1",
             ),
             (
-                "sliding_speed = 1\nspeed = 1\n",
+                "sliding_speed = \"1 m/s\"\nspeed = 1\n",
                 "x.toml:19: motion.speed: unknown key",
             ),
         ];

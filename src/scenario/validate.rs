@@ -674,13 +674,11 @@ impl Source<'_> {
     pub(super) fn quantity(&self, raw: &Quantity, field: &Field) -> Result<f64, ScenarioError> {
         let value = match raw.get_ref() {
             // `210` for a pressure is 210 Pa to the parser and 210 bar to the engineer: a
-            // dimensional key needs its unit
-            RawQuantity::Number(v) if field.dimension != units::Dimension::DIMENSIONLESS => {
-                return Err(self.error(
-                    raw.span(),
-                    field.key,
-                    field.dimension.bare_number_fix(*v),
-                ));
+            // dimensional key needs its unit (0 is 0 in every unit)
+            RawQuantity::Number(v)
+                if field.dimension != units::Dimension::DIMENSIONLESS && *v != 0.0 =>
+            {
+                return Err(self.error(raw.span(), field.key, field.dimension.bare_number_fix(*v)));
             }
             RawQuantity::Number(v) => *v,
             RawQuantity::Text(text) => units::parse_quantity(text, field.dimension)
