@@ -7,7 +7,7 @@
 //! scenario's `asperity_modulus` still applies, and whatever depends on the compound (default
 //! temperature, thermal strain, ageing defaults) is validated against it.
 
-use super::{CliError, print_findings, print_scenario_warnings, progress_bar, write_output};
+use super::{CliError, print_findings, progress_bar, write_output};
 use crate::leak::Fidelity;
 use crate::material::Material;
 use crate::report::life::{CompareRow, LeakFloor, compare_cells, compare_table, compare_text};
@@ -94,6 +94,7 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
             duration: run.scenario.life.time.duration,
             mean_pressure: run.scenario.life.fluid.mean_pressure(),
             floor: LeakFloor::of(&run.scenario.life.fluid, floor),
+            notes: degraded(&run.scenario.life),
         })
         .collect();
     let csv = args
@@ -128,8 +129,8 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
         )
     });
 
+    super::print_shared_warnings(runs.iter().map(|r| (r.label.as_str(), &r.scenario)));
     for run in &runs {
-        print_scenario_warnings(Some(&run.label), &run.scenario);
         print_findings(Some(&run.label), &run.result.findings);
     }
     if let (Some(path), Some(csv)) = (&args.output, &csv) {
@@ -230,4 +231,17 @@ fn resolve(spec: &str) -> Result<Material, CliError> {
             "--materials: {unknown} (or give the path of a material file)"
         ))),
     }
+}
+
+/// What a compound's run left out for want of data: ageing the scenario asks for, permeation
+/// of a gas (docs/model.md §6.5, §13.7).
+fn degraded(life: &crate::simulate::LifeProblem) -> String {
+    let mut notes = Vec::new();
+    if life.ageing_source == crate::simulate::AgeingSource::MissingInComparison {
+        notes.push("no ageing constants: run without ageing");
+    }
+    if life.fluid.gas.is_some() && life.permeation.is_none() {
+        notes.push("no permeation data: interface only");
+    }
+    notes.join("; ")
 }

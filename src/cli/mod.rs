@@ -62,9 +62,31 @@ pub(crate) fn print_findings(context: Option<&str>, findings: &crate::validity::
 /// `warning:` line each, `context` (e.g. a compound's id) leading each line.
 pub(crate) fn print_scenario_warnings(context: Option<&str>, scenario: &crate::scenario::Scenario) {
     for w in &scenario.warnings {
-        match context {
-            Some(c) => eprintln!("warning: {c}: {w}"),
-            None => eprintln!("warning: {w}"),
+        eprintln!("{}", report::findings::input_line(context, w));
+    }
+}
+
+/// Prints the input messages of several variants of one scenario (`compare`'s compounds)
+/// once each: a message every variant has without context, the others led by the variants
+/// that have it (`nbr-70, fkm-75: …`).
+pub(crate) fn print_shared_warnings<'a>(
+    variants: impl IntoIterator<Item = (&'a str, &'a crate::scenario::Scenario)>,
+) {
+    let variants: Vec<(&str, &crate::scenario::Scenario)> = variants.into_iter().collect();
+    let mut seen: Vec<&str> = Vec::new();
+    for (_, scenario) in &variants {
+        for w in &scenario.warnings {
+            if seen.contains(&w.as_str()) {
+                continue;
+            }
+            seen.push(w);
+            let having: Vec<&str> = variants
+                .iter()
+                .filter(|(_, s)| s.warnings.contains(w))
+                .map(|(label, _)| *label)
+                .collect();
+            let context = (having.len() < variants.len()).then(|| having.join(", "));
+            eprintln!("{}", report::findings::input_line(context.as_deref(), w));
         }
     }
 }

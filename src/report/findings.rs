@@ -4,6 +4,17 @@
 use crate::validity::{At, Finding, Findings};
 use serde::Serialize;
 
+/// A scenario's input message (`FILE:LINE: key: …`) as a stderr line: `note: FILE:LINE: key: …`
+/// for a note (what was read, how a callout became a spectrum — information, not a problem),
+/// `warning: …` otherwise; `context` (e.g. a compound's id) after the prefix when given.
+pub fn input_line(context: Option<&str>, message: &str) -> String {
+    let lead = context.map(|c| format!("{c}: ")).unwrap_or_default();
+    match message.split_once(": note: ") {
+        Some((place, text)) => format!("note: {lead}{place}: {text}"),
+        None => format!("warning: {lead}{message}"),
+    }
+}
+
 /// One finding as a JSON record.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct FindingRecord {

@@ -130,10 +130,9 @@ pub fn validity_lines(
     scenario_warnings: &[String],
     findings: &crate::validity::Findings,
 ) -> Vec<String> {
-    let lead = context.map(|c| format!("{c}: ")).unwrap_or_default();
     let mut lines: Vec<String> = scenario_warnings
         .iter()
-        .map(|w| format!("{lead}{w}"))
+        .map(|w| crate::report::findings::input_line(context, w))
         .collect();
     lines.extend(
         crate::report::findings::warning_lines(context, findings)

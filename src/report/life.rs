@@ -200,6 +200,9 @@ pub struct Summary {
     pub material: String,
     /// `published`, `illustrative` or `user`.
     pub material_status: String,
+    /// Where the chemical ageing comes from: `compound`, `scenario`, `off`, `no_data` or
+    /// `missing_in_comparison` (docs/model.md §6.5).
+    pub ageing: &'static str,
     /// The compound's low-temperature limit T10 \[K\] (docs/model.md §5.1; absent without a
     /// shift, or when the modulus never rises tenfold).
     #[serde(
@@ -707,6 +710,13 @@ impl Summary {
             scenario_file: file.to_owned(),
             material: problem.material.name.clone(),
             material_status: problem.material.status.as_str().to_owned(),
+            ageing: match problem.ageing_source {
+                crate::simulate::AgeingSource::Compound => "compound",
+                crate::simulate::AgeingSource::Scenario => "scenario",
+                crate::simulate::AgeingSource::Off => "off",
+                crate::simulate::AgeingSource::NoData => "no_data",
+                crate::simulate::AgeingSource::MissingInComparison => "missing_in_comparison",
+            },
             low_temperature_limit_k: problem.material.low_temperature_limit(),
             seal: seal_kind(&problem.geometry).to_owned(),
             loading: loading_name(problem.loading).to_owned(),
@@ -1121,18 +1131,24 @@ pub fn human_summary(
             )
         },
     );
-    if let Some(ag) = problem.ageing {
-        line(
+    match problem.ageing {
+        Some(ag) => line(
             "ageing",
             format!(
                 "two networks: scission k = {} 1/s at {}, Ea = {} kJ/mol, new network at {} k \
-                 in the compressed state",
+                 in the compressed state; from {}{}",
                 human(ag.rate, 3),
                 celsius(ag.reference_temperature),
                 human(ag.activation_energy / 1e3, 3),
-                human(ag.crosslinking, 3)
+                human(ag.crosslinking, 3),
+                problem.ageing_source.describe(),
+                m.ageing_basis
+                    .as_ref()
+                    .filter(|_| problem.ageing_source == crate::simulate::AgeingSource::Compound)
+                    .map_or(String::new(), |b| format!(", measured on {}", b.property)),
             ),
-        );
+        ),
+        None => line("ageing", problem.ageing_source.describe().to_owned()),
     }
     let duration = human_time(problem.time.duration);
     if let (Some(first), Some(last)) = (result.rows.first(), result.rows.last()) {
@@ -1594,15 +1610,19 @@ pub struct CompareRow<'a> {
     pub mean_pressure: Option<f64>,
     /// Leak rates below it read "sealed" in the text table (the CSV keeps them).
     pub floor: LeakFloor,
+    /// What this compound's run left out for want of data (`compare` degrades rather than
+    /// aborts: no ageing constants, no permeation data), "; "-separated; empty when nothing.
+    pub notes: String,
 }
 
 /// The comparison's columns of the end of each run, after the leak rates (and throughputs).
-pub const COMPARE_END_COLUMNS: [&str; 5] = [
+pub const COMPARE_END_COLUMNS: [&str; 6] = [
     "sealing_force_end_N_per_m",
     "retained_force_end",
     "leaked_volume_end_m3",
     "compression_set_end",
     "state_end",
+    "notes",
 ];
 
 impl CompareRow<'_> {
@@ -1701,6 +1721,7 @@ pub fn compare_table(rows: &[CompareRow<'_>]) -> Result<String, ReportError> {
             number(row, COMPARE_END_COLUMNS[3], c)
         })?);
         record.push(state.to_owned());
+        record.push(r.notes.clone());
         writer.write_record(record).map_err(csv_error)?;
     }
     finish(writer)
@@ -1758,6 +1779,7 @@ pub fn compare_cells(rows: &[CompareRow<'_>]) -> Vec<Vec<String>> {
         "leaked [mL]".to_owned(),
         "set".to_owned(),
         "state at end".to_owned(),
+        "notes".to_owned(),
     ]];
     for r in rows {
         let scale = r.mean_pressure.unwrap_or(1.0);
@@ -1803,6 +1825,7 @@ pub fn compare_cells(rows: &[CompareRow<'_>]) -> Vec<Vec<String>> {
             human(volume * 1e6, 2),
             set.map_or_else(|| "-".to_owned(), |c| format!("{} %", human(100.0 * c, 2))),
             state.to_owned(),
+            r.notes.clone(),
         ]);
     }
     if rows.first().is_some_and(|r| r.mean_pressure.is_some()) {
@@ -1979,6 +2002,7 @@ mod tests {
                 rate: 1e-20,
                 given: true,
             },
+            notes: String::new(),
         }];
         let text = compare_table(&rows).unwrap();
         let line = text.lines().nth(1).unwrap();

@@ -13,7 +13,7 @@ use crate::leak::Fidelity;
 use crate::material::shift::{Cycle, DAY, YEAR};
 use crate::material::{Ageing, BALANCED_CROSSLINKING, Material, Shift, TemperatureHistory};
 use crate::seal::{SealGeometry, VolumeSwell};
-use crate::simulate::{FailureCriteria, Loading, ThermalStrain, TimeGrid};
+use crate::simulate::{AgeingSource, FailureCriteria, Loading, ThermalStrain, TimeGrid};
 use crate::units::{Dimension, show};
 use std::path::PathBuf;
 use toml::Spanned;
@@ -896,16 +896,52 @@ impl Source<'_> {
             .unwrap_or(DEFAULT_INSTALLATION_TIME))
     }
 
-    /// `[ageing]` (absent: no chemical relaxation): each constant defaults to the material's.
+    /// Chemical ageing (docs/model.md §6.5): **on whenever constants are known** — the
+    /// compound's `[material.ageing]` without an `[ageing]` table; the table's own constants,
+    /// each missing one from the compound's; off with `[ageing] enabled = false`. In a
+    /// comparison (`in_comparison`) a compound that cannot complete the table runs without
+    /// ageing instead of failing the whole comparison; elsewhere that is an error naming the
+    /// missing key.
     pub(super) fn scenario_ageing(
         &self,
         table: Option<&Spanned<RawScenarioAgeing>>,
         material: &Material,
-    ) -> Result<Option<Ageing>, ScenarioError> {
+        in_comparison: bool,
+    ) -> Result<(Option<Ageing>, AgeingSource), ScenarioError> {
+        let own = material.ageing;
         let Some(table) = table else {
-            return Ok(None);
+            return Ok(match own {
+                Some(a) => (Some(a), AgeingSource::Compound),
+                None => (None, AgeingSource::NoData),
+            });
         };
         let raw = table.get_ref();
+        if let Some(enabled) = &raw.enabled
+            && !*enabled.get_ref()
+        {
+            let given = [
+                (raw.activation_energy.as_ref(), "activation_energy"),
+                (raw.rate.as_ref(), "rate"),
+                (raw.reference_temperature.as_ref(), "reference_temperature"),
+                (raw.crosslinking.as_ref(), "crosslinking"),
+            ];
+            if let Some((q, key)) = given.into_iter().find_map(|(q, k)| q.map(|q| (q, k))) {
+                return Err(self.error(
+                    q.span(),
+                    &format!("ageing.{key}"),
+                    "[ageing] is switched off (enabled = false): remove the constant, or \
+                     `enabled = false`",
+                ));
+            }
+            return Ok((None, AgeingSource::Off));
+        }
+        let complete = own.is_some()
+            || (raw.activation_energy.is_some()
+                && raw.rate.is_some()
+                && raw.reference_temperature.is_some());
+        if !complete && in_comparison {
+            return Ok((None, AgeingSource::MissingInComparison));
+        }
         let missing = |key: &str| {
             self.error(
                 table.span(),
@@ -913,12 +949,11 @@ impl Source<'_> {
                 format!(
                     "missing key `{key}` in [ageing], and the material ({}) gives no ageing \
                      constants ([material.ageing]) to default to; give activation_energy, rate \
-                     and reference_temperature",
+                     and reference_temperature, or switch ageing off with `enabled = false`",
                     material.name
                 ),
             )
         };
-        let own = material.ageing;
         let activation_energy = match &raw.activation_energy {
             Some(q) => self.quantity(q, &AGEING_ACTIVATION_ENERGY)?,
             None => own
@@ -939,12 +974,24 @@ impl Source<'_> {
             Some(q) => self.quantity(q, &AGEING_CROSSLINKING)?,
             None => own.map_or(BALANCED_CROSSLINKING, |a| a.crosslinking),
         };
-        Ok(Some(Ageing {
-            activation_energy,
-            rate,
-            reference_temperature,
-            crosslinking,
-        }))
+        let source = if raw.activation_energy.is_none()
+            && raw.rate.is_none()
+            && raw.reference_temperature.is_none()
+            && raw.crosslinking.is_none()
+        {
+            AgeingSource::Compound
+        } else {
+            AgeingSource::Scenario
+        };
+        Ok((
+            Some(Ageing {
+                activation_energy,
+                rate,
+                reference_temperature,
+                crosslinking,
+            }),
+            source,
+        ))
     }
 
     /// `[simulation]`: the time grid and the fidelity.

@@ -325,6 +325,8 @@ pub(super) struct RawFailure {
 #[derive(Debug, serde::Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct RawScenarioAgeing {
+    /// `false` switches the compound's ageing off (it is on whenever constants are known).
+    pub enabled: Option<Spanned<bool>>,
     pub activation_energy: Option<Quantity>,
     pub rate: Option<Quantity>,
     pub reference_temperature: Option<Quantity>,

@@ -418,7 +418,8 @@ impl Source<'_> {
             _ => environment,
         };
         let thermal_strain = self.thermal_strain(&seal, &material, &environment)?;
-        let ageing = self.scenario_ageing(raw.ageing.as_ref(), &material)?;
+        let (ageing, ageing_source) =
+            self.scenario_ageing(raw.ageing.as_ref(), &material, replacement.is_some())?;
         let failure = self.failure(raw.failure.as_ref(), &fluid, &environment)?;
         let (time, fidelity) = self.simulation(raw.simulation.as_ref())?;
         self.cycle_budget(
@@ -480,6 +481,7 @@ impl Source<'_> {
             environment,
             thermal_strain,
             ageing,
+            ageing_source,
             failure,
             time,
             fidelity,
@@ -550,30 +552,6 @@ impl Source<'_> {
                              as given [docs/model.md §3.9]",
                         show(100.0 * swell.volume_change),
                         show(100.0 * SWELL_PRACTICE)
-                    ),
-                )
-                .to_string(),
-            );
-        }
-        if let (None, Some(own)) = (&life.ageing, &material.ageing) {
-            // the compound's data say it ages: an engineer should see that this run does not
-            warnings.push(
-                self.error(
-                    raw.material.span(),
-                    "ageing",
-                    format!(
-                        "{} has ageing constants (Ea = {} kJ/mol, k = {} 1/s at {} K{}) but the \
-                         scenario has no [ageing] table: chemical ageing and compression set are \
-                         off in this run; add an empty `[ageing]` to use the compound's \
-                         [docs/model.md §6.5]",
-                        material.name,
-                        show(own.activation_energy / 1e3),
-                        show(own.rate),
-                        show(own.reference_temperature),
-                        material
-                            .ageing_basis
-                            .as_ref()
-                            .map_or(String::new(), |b| format!(", from {}", b.property)),
                     ),
                 )
                 .to_string(),

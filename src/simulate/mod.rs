@@ -43,8 +43,8 @@ pub mod events;
 mod problem;
 
 pub use problem::{
-    AsperityModulus, GrooveInterface, HistoryRow, LifeProblem, LifeResult, Loading, SealState,
-    TimeGrid,
+    AgeingSource, AsperityModulus, GrooveInterface, HistoryRow, LifeProblem, LifeResult, Loading,
+    SealState, TimeGrid,
 };
 
 use crate::contact::{ContactSettings, Elastic, Junction, PerssonContact};

@@ -56,6 +56,39 @@ pub enum Loading {
     Force,
 }
 
+/// Where a run's chemical ageing constants come from (docs/model.md §6.5).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum AgeingSource {
+    /// The compound's `[material.ageing]`, on by default.
+    Compound,
+    /// The scenario's `[ageing]` table (each constant it leaves out from the compound's).
+    Scenario,
+    /// Switched off: `[ageing] enabled = false`.
+    Off,
+    /// The compound has no ageing constants and the scenario gives none: no chemical ageing.
+    #[default]
+    NoData,
+    /// `compare`: the scenario asks for ageing but this compound has no constants to complete
+    /// it, so it runs without (its row says so).
+    MissingInComparison,
+}
+
+impl AgeingSource {
+    /// What the reports say about it.
+    pub fn describe(self) -> &'static str {
+        match self {
+            AgeingSource::Compound => "the compound's own constants ([material.ageing])",
+            AgeingSource::Scenario => "the scenario's [ageing] (the compound's for the rest)",
+            AgeingSource::Off => "off: [ageing] enabled = false",
+            AgeingSource::NoData => "none: the compound has no ageing constants",
+            AgeingSource::MissingInComparison => {
+                "none in this comparison: the compound has no ageing constants to complete the \
+                 scenario's [ageing]"
+            }
+        }
+    }
+}
+
 /// The output/evaluation grid.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TimeGrid {
@@ -110,6 +143,8 @@ pub struct LifeProblem {
     pub environment: TemperatureHistory,
     pub thermal_strain: Option<ThermalStrain>,
     pub ageing: Option<Ageing>,
+    /// Where `ageing` comes from, for the reports.
+    pub ageing_source: AgeingSource,
     pub failure: FailureCriteria,
     pub time: TimeGrid,
     pub fidelity: Fidelity,
