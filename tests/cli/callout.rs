@@ -210,22 +210,22 @@ fn the_same_callout_on_both_bodies_is_root_two_on_one() {
     // same H and band: C_sum = 2 C, i.e. Rq × √2 on one body (exact: one power law)
     let rq = 0.9e-6;
     let both = flat(&format!(
-        "[surface]\nrq = {rq:e}\n[rubber_surface]\nrq = {rq:e}"
+        "[surface]\nrq = \"{rq:e} m\"\n[rubber_surface]\nrq = \"{rq:e} m\""
     ));
     let one = flat(&format!(
-        "[surface]\nrq = {:e}",
+        "[surface]\nrq = \"{:e} m\"",
         rq * std::f64::consts::SQRT_2
     ));
     let (x, stderr) = leak(&both);
     let (y, _) = leak(&one);
     assert!(
-        stderr.contains("rubber_surface.rq: note: callout rq"),
+        stderr.contains("rubber_surface.rq: callout rq"),
         "{stderr}"
     );
     let (qx, qy) = (leak_rate(&x), leak_rate(&y));
     assert!(qx > 0.0 && (qx / qy - 1.0).abs() < 1e-9, "{qx} vs {qy}");
     // and a smooth rubber (no table) changes nothing against the same file without it
-    let (z, _) = leak(&flat(&format!("[surface]\nrq = {rq:e}")));
+    let (z, _) = leak(&flat(&format!("[surface]\nrq = \"{rq:e} m\"")));
     assert!(leak_rate(&z) < qx, "a rougher pair leaks more");
 }
 
@@ -245,7 +245,7 @@ fn the_headline_callout_scenario_runs_end_to_end() {
     assert_eq!(out.status.code(), Some(0), "{stderr}");
     // the rule below λs is printed
     assert!(
-        stderr.contains("surface.ra: note: callout ra = 4e-7 m")
+        stderr.contains("surface.ra: callout ra = 4e-7 m")
             && stderr.contains("short_wavelength = \"extend\""),
         "{stderr}"
     );

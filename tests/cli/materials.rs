@@ -615,7 +615,7 @@ fn user_material_files_work_by_path() {
     let file = dir.write(
         "fitted.toml",
         "[material]\npoisson_ratio = 0.4995\nlong_term_modulus = \"1.5 MPa\"\n\
-         prony = [ { modulus = 2e6, tau = 0.1 }, { modulus = 1e6, tau = 1e3 } ]\n\
+         prony = [ { modulus = \"2 MPa\", tau = \"0.1 s\" }, { modulus = \"1 MPa\", tau = \"1e3 s\" } ]\n\
          [material.provenance]\nprony = \"NNLS fit to relaxation.csv\"\n",
     );
     let (out, _) = ok(&["materials", "show", "--file", s(&file)]);
@@ -698,7 +698,7 @@ fn leak_takes_the_installed_asperity_modulus_of_a_viscoelastic_material() {
         dir.write(
             name,
             &paper_with_material(&format!(
-                "[material]\nyoungs_modulus = {e:e}\npoisson_ratio = {nu:e}\n"
+                "[material]\nyoungs_modulus = \"{e:e} Pa\"\npoisson_ratio = {nu:e}\n"
             )),
         )
     };

@@ -34,7 +34,9 @@ fn self_affine_fkm(rms: &str, q1: &str) -> String {
     let mut out = String::new();
     for l in text.lines() {
         if l.starts_with("ra =") {
-            out += &format!("rms_roughness = {rms}\nhurst_exponent = 0.7\nq0 = 3e5\nq1 = {q1}\n");
+            out += &format!(
+                "rms_roughness = {rms}\nhurst_exponent = 0.7\nq0 = \"3e5 1/m\"\nq1 = \"{q1} 1/m\"\n"
+            );
         } else if !(l.starts_with("cutoff =")
             || l.starts_with("short_cutoff =")
             || l.starts_with("short_wavelength ="))
@@ -90,13 +92,13 @@ fn refused(text: &str, line: usize, key: &str, range: &str) {
 
 #[test]
 fn a_huge_flat_seal_width_is_refused_with_its_range() {
-    let text = mutated("spring-loaded-face-seal.toml", "width", "1e308");
+    let text = mutated("spring-loaded-face-seal.toml", "width", "\"1e308 m\"");
     refused(&text, line_of(&text, "width"), "seal.width", "[1e-9, 10] m");
 }
 
 #[test]
 fn a_huge_flat_seal_length_is_refused_with_its_range() {
-    let text = mutated("persson-yang-2008.toml", "length", "1e308");
+    let text = mutated("persson-yang-2008.toml", "length", "\"1e308 m\"");
     refused(
         &text,
         line_of(&text, "length"),
@@ -110,7 +112,7 @@ fn a_huge_oring_diameter_between_plates_is_refused_with_its_range() {
     let text = "[material]\nlibrary = \"nbr-70\"\n\n[surface]\nrms_roughness = \"0.8 um\"\n\
                 hurst_exponent = 0.7\nq0 = \"3e5 1/m\"\nq1 = \"1e10 1/m\"\n\n[fluid]\n\
                 viscosity = \"1 mPa*s\"\npressure_difference = \"2 bar\"\n\n[seal]\n\
-                kind = \"o-ring\"\ncross_section = \"3.53 mm\"\nmean_diameter = 1e308\n\
+                kind = \"o-ring\"\ncross_section = \"3.53 mm\"\nmean_diameter = \"1e308 m\"\n\
                 squeeze = 0.2\n";
     refused(
         text,
@@ -123,18 +125,18 @@ fn a_huge_oring_diameter_between_plates_is_refused_with_its_range() {
 #[test]
 fn a_huge_roughness_with_daily_cycles_is_refused_not_run_for_minutes() {
     // the scenario's face is a callout: its `ra` has the range of a drawing's Ra
-    let text = mutated("oring-epdm-outdoor-cycles.toml", "ra", "1e308");
+    let text = mutated("oring-epdm-outdoor-cycles.toml", "ra", "\"1e308 m\"");
     let line = line_of(&text, "ra");
     refused(&text, line, "surface.ra", "[1e-9, 1e-4] m");
 }
 
 #[test]
 fn a_huge_roughness_with_ageing_in_hot_oil_is_refused_not_run_for_minutes() {
-    let text = mutated("oring-fkm-hot-oil-ageing.toml", "ra", "1e308");
+    let text = mutated("oring-fkm-hot-oil-ageing.toml", "ra", "\"1e308 m\"");
     let line = line_of(&text, "ra");
     refused(&text, line, "surface.ra", "[1e-9, 1e-4] m");
     // … and so does a self-affine surface's rms roughness in the same scenario
-    let text = self_affine_fkm("1e308", "1e10");
+    let text = self_affine_fkm("\"1e308 m\"", "1e10");
     let line = line_of(&text, "rms_roughness");
     refused(&text, line, "surface.rms_roughness", "[1e-10, 0.001] m");
 }

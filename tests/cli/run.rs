@@ -141,7 +141,9 @@ fn every_shipped_scenario_runs_without_nan() {
         no_nan(&stdout, &name);
         assert!(stdout.contains("result"), "{name}: {stdout}");
         assert!(
-            stderr.lines().all(|l| l.starts_with("warning: ")),
+            stderr
+                .lines()
+                .all(|l| l.starts_with("warning: ") || l.starts_with("note: ")),
             "{name}: {stderr}"
         );
         let csv = fs::read_to_string(out.path("h.csv")).unwrap();
@@ -223,6 +225,8 @@ fn every_shipped_scenario_runs_without_nan() {
                 "retained_force",
                 "compression_set",
                 "lift_off",
+                "extrusion",
+                "lost_interference",
                 "none"
             ]
             .contains(&mode),

@@ -161,7 +161,7 @@ fn a_scenario_reads_its_face_from_a_line_trace() {
         .success();
     let stderr = String::from_utf8(out.get_output().stderr.clone()).unwrap();
     assert!(
-        stderr.contains("surface.profile: note: 1 trace(s): band") && stderr.contains("fitted H"),
+        stderr.contains("surface.profile: 1 trace(s): band") && stderr.contains("fitted H"),
         "{stderr}"
     );
     // the spectrum the contact sees is the traces' (its Hurst exponent is the fitted one)
