@@ -2010,7 +2010,7 @@ mod tests {
         // against the closed form Q̇ t below), no compression set, leaking
         let volume_cell =
             |line: &str, k: usize| -> f64 { line.split(',').nth(k).unwrap().parse().unwrap() };
-        let (head, tail) = line.rsplit_once(",,leaking").unwrap();
+        let (head, tail) = line.rsplit_once(",,leaking,").unwrap();
         assert_eq!(tail, "");
         assert!(
             head.starts_with("x,rubber,user,7.8894e7,leak_rate,1e-12,,,1e3,1e0,"),
@@ -2029,7 +2029,7 @@ mod tests {
              throughput_10years_Pa_m3_per_s,total_throughput_1day_Pa_m3_per_s,\
              total_throughput_1year_Pa_m3_per_s,total_throughput_10years_Pa_m3_per_s,\
              sealing_force_end_N_per_m,retained_force_end,leaked_volume_end_m3,\
-             compression_set_end,state_end"
+             compression_set_end,state_end,notes"
         ));
         let line = text.lines().nth(1).unwrap();
         assert!(

@@ -3,10 +3,10 @@
 //! Format:
 //! * lines starting with `#` and blank lines are ignored (a leading byte-order mark too);
 //! * the first row is the header `time,temperature` (names case-insensitive);
-//! * an optional units row may follow, e.g. `day,C` or `h,K`: the time unit is any time unit
-//!   of [`crate::units`] (`s`, `min`, `h`, `day`, `week`, `year`, …), the temperature unit an
-//!   absolute scale (`K`, `C`, `°C`, `degC`, `F`, …); without it times are in seconds and
-//!   temperatures in kelvin;
+//! * a units row must follow, e.g. `day,C` or `h,K`: the time unit is any time unit of
+//!   [`crate::units`] (`s`, `min`, `h`, `day`, `week`, `year`, …), the temperature unit an
+//!   absolute scale (`K`, `C`, `°C`, `degC`, `F`, …); a file without one is refused (its line
+//!   named), since a bare temperature is ambiguous;
 //! * then at least one data row of two finite numbers; times strictly increasing (t = 0 is the
 //!   installation); temperatures above 0 K.
 //!
@@ -58,16 +58,25 @@ pub(super) fn parse(text: &str) -> Result<Vec<(f64, f64)>, HistoryError> {
             format!("expected the header row `time,temperature`, got {header:?}"),
         ));
     }
-    let mut unit = Units {
-        seconds: 1.0,
-        temperature: None,
+    // the units row is required: a bare `0,20` is 20 K to a parser and 20 °C to a reader
+    let unit = match rows.next() {
+        Some((line, row)) if row.split(',').all(|c| c.trim().parse::<f64>().is_err()) => {
+            units_row(line, row)?
+        }
+        Some((line, _)) => {
+            return Err(at(
+                line,
+                "no units row: add one after the header, e.g. `h,C` (hours, °C) or `s,K` — \
+                 without it \"20\" could be 20 K or 20 °C",
+            ));
+        }
+        None => {
+            return Err(at(
+                line,
+                "no units row and no data: expected e.g. `h,C` after the header, then data rows",
+            ));
+        }
     };
-    if let Some(&(line, row)) = rows.peek()
-        && row.split(',').all(|c| c.trim().parse::<f64>().is_err())
-    {
-        rows.next();
-        unit = units_row(line, row)?;
-    }
     let mut points: Vec<(f64, f64)> = Vec::new();
     for (line, row) in rows {
         let cells: Vec<&str> = row.split(',').map(str::trim).collect();
@@ -206,13 +215,19 @@ mod tests {
             "{}",
             e.message
         );
-        assert!(parse("time,temperature\n0,0.5\n").is_err());
-        assert!(parse("time,temperature\n0,1000\n").is_ok());
+        assert!(parse("time,temperature\ns,K\n0,0.5\n").is_err());
+        assert!(parse("time,temperature\ns,K\n0,1000\n").is_ok());
     }
 
     #[test]
-    fn si_by_default_and_units_row_converts() {
-        let p = parse("# a ramp\ntime,temperature\n0,300\n\n3600,310\n").unwrap();
+    fn the_units_row_is_required_and_converts() {
+        // without it `20` could be 20 K or 20 °C: refused at the first data line
+        let e = parse("# a ramp\ntime,temperature\n0,300\n\n3600,310\n").unwrap_err();
+        assert_eq!(e.line, Some(3));
+        assert!(e.message.contains("no units row"), "{e:?}");
+        // the fix it suggests is accepted
+        assert!(parse("time,temperature\nh,C\n0,20\n").is_ok());
+        let p = parse("# a ramp\ntime,temperature\ns,K\n0,300\n\n3600,310\n").unwrap();
         assert_eq!(p, [(0.0, 300.0), (3600.0, 310.0)]);
         let p = parse("Time, Temperature\nday, C\n0, 20\n0.5, -40\n").unwrap();
         assert_eq!(p[0], (0.0, 293.15));
@@ -225,21 +240,21 @@ mod tests {
     #[test]
     fn errors_name_the_real_line() {
         let err = |text: &str| parse(text).unwrap_err();
-        let e = err("time,temperature\n0,300\n# c\n10,warm\n");
-        assert_eq!(e.line, Some(4));
+        let e = err("time,temperature\ns,K\n0,300\n# c\n10,warm\n");
+        assert_eq!(e.line, Some(5));
         assert!(e.message.contains("temperature is not a number"), "{e:?}");
-        let e = err("time,temperature\n0,300\n10,301\n5,302\n");
-        assert_eq!(e.line, Some(4));
+        let e = err("time,temperature\ns,K\n0,300\n10,301\n5,302\n");
+        assert_eq!(e.line, Some(5));
         assert!(e.message.contains("must increase strictly"), "{e:?}");
         let e = err("t,T\n0,300\n");
         assert_eq!(e.line, Some(1));
         assert!(e.message.contains("header row `time,temperature`"), "{e:?}");
         assert_eq!(err("time,temperature\nday,Pa\n0,1\n").line, Some(2));
         assert_eq!(err("time,temperature\nm,C\n0,1\n").line, Some(2));
-        assert_eq!(err("time,temperature\n0,300,1\n").line, Some(2));
-        assert_eq!(err("time,temperature\n0,-5\n").line, Some(2));
+        assert_eq!(err("time,temperature\ns,K\n0,300,1\n").line, Some(3));
+        assert_eq!(err("time,temperature\ns,K\n0,-5\n").line, Some(3));
         assert_eq!(err("time,temperature\nday,C\n0,-300\n").line, Some(3));
-        assert_eq!(err("time,temperature\n").line, None);
+        assert_eq!(err("time,temperature\n").line, Some(1));
         assert_eq!(err("# only a comment\n").line, None);
     }
 }

@@ -1203,7 +1203,9 @@ squeeze = 0.2
         assert!((life.environment.at(1e6) - 296.15).abs() < 1e-9);
         // no [failure]: the default checks only (lift-off, extrusion, shutdown), no criterion
         assert!(life.failure.lift_off && life.failure.max_leak_rate.is_none());
-        assert!(life.ageing.is_none() && life.thermal_strain.is_none());
+        // nbr-70 carries ageing constants: on by default
+        assert_eq!(life.ageing, life.material.ageing);
+        assert!(life.thermal_strain.is_none());
         assert_eq!(
             life.time,
             TimeGrid {
@@ -1476,7 +1478,7 @@ squeeze = 0.2
         // a malformed file names its own line and the scenario's key
         std::fs::write(
             dir.path().join("t.csv"),
-            "time,temperature\n0,300\n10,warm\n",
+            "time,temperature\ns,K\n0,300\n10,warm\n",
         )
         .unwrap();
         let e = Scenario::from_str(&text, &path).unwrap_err();
@@ -1484,7 +1486,7 @@ squeeze = 0.2
             matches!(
                 e,
                 ScenarioError::HistoryFormat {
-                    history_line: Some(3),
+                    history_line: Some(4),
                     line: 18,
                     ..
                 }
@@ -1492,7 +1494,7 @@ squeeze = 0.2
             "{e}"
         );
         let e = e.to_string();
-        assert!(e.contains("t.csv:3: temperature is not a number: \"warm\" (temperature history named by environment.history at "), "{e}");
+        assert!(e.contains("t.csv:4: temperature is not a number: \"warm\" (temperature history named by environment.history at "), "{e}");
         assert!(e.ends_with("s.toml:18)"), "{e}");
         // a missing file is an error at the key
         let e = Scenario::from_str(&text.replace("t.csv", "none.csv"), &path)
@@ -1567,10 +1569,13 @@ squeeze = 0.2
             s.life.ageing.unwrap().activation_energy,
             own.activation_energy
         );
-        assert!(
-            load(&fkm).unwrap().life.ageing.is_none(),
-            "modelled only when present"
-        );
+        // on without a table (the compound's constants), off with enabled = false
+        assert_eq!(load(&fkm).unwrap().life.ageing, Some(own));
+        let off = load(&format!("{fkm}[ageing]\nenabled = false\n")).unwrap();
+        assert!(off.life.ageing.is_none());
+        assert_eq!(off.life.ageing_source, AgeingSource::Off);
+        let e = error(&format!("{fkm}[ageing]\nenabled = false\nrate = \"1e-8 1/s\"\n"));
+        assert!(e.contains("ageing.rate: [ageing] is switched off"), "{e}");
         // VMQ has no ageing constants
         let vmq = |extra: &str| with(extra).replace("\"nbr-70\"", "\"vmq-70\"");
         let e = error(&vmq("[ageing]\n"));

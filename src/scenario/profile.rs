@@ -1,8 +1,8 @@
 //! Line-trace CSV files (`x, z`) → a [`Trace`] for [`crate::profile::analyse`].
 //!
-//! Format: a header row `x,z` (case-insensitive); an optional units row right after it, e.g.
-//! `mm,um`, each cell a length unit of [`crate::units::parse_unit`] (without it both columns
-//! are in metres); then one `x, z` pair per line. Blank lines and lines starting with `#` are
+//! Format: a header row `x,z` (case-insensitive); a units row right after it, e.g. `mm,um`,
+//! each cell a length unit of [`crate::units::parse_unit`] (required: a file without one is
+//! refused at its line); then one `x, z` pair per line. Blank lines and lines starting with `#` are
 //! ignored. Every error names `file:line`.
 //!
 //! Checks: every value finite; x strictly increasing; **uniform spacing**: every step
@@ -82,9 +82,12 @@ pub fn parse_trace(text: &str, path: &Path) -> Result<Trace, TraceFileError> {
         ));
     }
     let (mut fx, mut fz) = (1.0, 1.0);
+    // the units row is required: a bare `0.8` height could be metres or micrometres
+    let mut have_units = false;
     if let Some(&(line, row)) = lines.peek() {
         let cells: Vec<&str> = row.split(',').map(str::trim).collect();
         if cells.iter().any(|c| c.parse::<f64>().is_err()) {
+            have_units = true;
             if cells.len() != 2 {
                 return Err(err(
                     Some(line),
@@ -112,6 +115,15 @@ pub fn parse_trace(text: &str, path: &Path) -> Result<Trace, TraceFileError> {
             (fx, fz) = (factors[0], factors[1]);
             lines.next();
         }
+    }
+    if !have_units {
+        let line = lines.peek().map_or(header_line, |&(l, _)| l);
+        return Err(err(
+            Some(line),
+            "no units row: add one after the header, e.g. `mm,um` (x in mm, z in µm) — without \
+             it a height of 0.8 could be metres or micrometres"
+                .into(),
+        ));
     }
     let mut x = Vec::new();
     let mut z = Vec::new();

@@ -1782,7 +1782,15 @@ impl Source<'_> {
             };
             let pixel = self.quantity(pixel_size, &PIXEL_SIZE)?;
             let unit = match &raw.height_unit {
-                None => 1.0,
+                // a CSV grid of bare heights could be in m or µm: the unit must be stated
+                None => {
+                    return Err(self.error(
+                        file.span(),
+                        HEIGHT_MAP,
+                        "needs height_unit, the unit of the grid's heights (e.g. height_unit = \
+                         \"um\"): a bare height could be metres or micrometres",
+                    ));
+                }
                 Some(text) => match units::parse_unit(text.get_ref().trim()) {
                     Ok((factor, dimension)) if dimension == Dimension::LENGTH => factor,
                     Ok(_) | Err(_) => {

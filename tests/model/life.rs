@@ -71,6 +71,7 @@ pub(crate) fn oring_problem(material: Material) -> LifeProblem {
         environment: TemperatureHistory::constant(TREF),
         thermal_strain: None,
         ageing: None,
+        ageing_source: Default::default(),
         failure: FailureCriteria::default(),
         time: TimeGrid {
             start: 1.0,
