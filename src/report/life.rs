@@ -2036,7 +2036,7 @@ mod tests {
             line.starts_with("x,rubber,user,7.8894e7,leak_rate,1e-12,,,1.5e-7,,,1.5e-7,,,1e3,1e0,"),
             "{line}"
         );
-        assert!(line.ends_with(",,leaking"), "{line}");
+        assert!(line.ends_with(",,leaking,"), "{line}");
         assert!((volume_cell(line, 16) / (1e-12 * 2.0 * DAY) - 1.0).abs() < 1e-12);
         assert!(compare_text(&gas).contains("Q 1 day [Pa·m³/s]"));
     }

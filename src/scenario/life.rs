@@ -1574,7 +1574,9 @@ squeeze = 0.2
         let off = load(&format!("{fkm}[ageing]\nenabled = false\n")).unwrap();
         assert!(off.life.ageing.is_none());
         assert_eq!(off.life.ageing_source, AgeingSource::Off);
-        let e = error(&format!("{fkm}[ageing]\nenabled = false\nrate = \"1e-8 1/s\"\n"));
+        let e = error(&format!(
+            "{fkm}[ageing]\nenabled = false\nrate = \"1e-8 1/s\"\n"
+        ));
         assert!(e.contains("ageing.rate: [ageing] is switched off"), "{e}");
         // VMQ has no ageing constants
         let vmq = |extra: &str| with(extra).replace("\"nbr-70\"", "\"vmq-70\"");

@@ -96,9 +96,7 @@ pub(super) fn parse(text: &str) -> Result<(Vec<f64>, Vec<f64>), PsdError> {
             Some((units_line, row)) => {
                 let units: Vec<&str> = row.split(',').map(str::trim).collect();
                 match units[..] {
-                    [uq, uc] if uq.parse::<f64>().is_err() => {
-                        column_factors([uq, uc], units_line)?
-                    }
+                    [uq, uc] if uq.parse::<f64>().is_err() => column_factors([uq, uc], units_line)?,
                     _ => {
                         return Err(PsdError::at(
                             units_line,

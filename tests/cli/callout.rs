@@ -218,10 +218,7 @@ fn the_same_callout_on_both_bodies_is_root_two_on_one() {
     ));
     let (x, stderr) = leak(&both);
     let (y, _) = leak(&one);
-    assert!(
-        stderr.contains("rubber_surface.rq: callout rq"),
-        "{stderr}"
-    );
+    assert!(stderr.contains("rubber_surface.rq: callout rq"), "{stderr}");
     let (qx, qy) = (leak_rate(&x), leak_rate(&y));
     assert!(qx > 0.0 && (qx / qy - 1.0).abs() < 1e-9, "{qx} vs {qy}");
     // and a smooth rubber (no table) changes nothing against the same file without it

@@ -471,20 +471,20 @@ fn missing_psd_file_is_named_with_the_scenario_line() {
 
 #[test]
 fn psd_with_text_cell_is_located() {
-    let case = Case::psd(Some("q,C\n1e4,1e-20\n1e5,abc\n"));
+    let case = Case::psd(Some("q,C\n1/m,m^4\n1e4,1e-20\n1e5,abc\n"));
     case.rejects(
         &[],
-        &["psd-example.csv:3: C is not a number", "scenario.toml:10"],
+        &["psd-example.csv:4: C is not a number", "scenario.toml:10"],
     );
 }
 
 #[test]
 fn psd_with_decreasing_q_is_located() {
-    let case = Case::psd(Some("# comment\n1e5,1e-20\n1e4,1e-21\n"));
+    let case = Case::psd(Some("# comment\nq [1/m],C [m^4]\n1e5,1e-20\n1e4,1e-21\n"));
     case.rejects(
         &[],
         &[
-            "psd-example.csv:3: q must increase strictly",
+            "psd-example.csv:4: q must increase strictly",
             "scenario.toml:10",
         ],
     );
@@ -492,16 +492,16 @@ fn psd_with_decreasing_q_is_located() {
 
 #[test]
 fn psd_with_negative_c_is_located() {
-    let case = Case::psd(Some("1e4,1e-20\n1e5,-1e-21\n"));
+    let case = Case::psd(Some("q [1/m],C [m^4]\n1e4,1e-20\n1e5,-1e-21\n"));
     case.rejects(
         &[],
-        &["psd-example.csv:2: C must be positive", "scenario.toml:10"],
+        &["psd-example.csv:3: C must be positive", "scenario.toml:10"],
     );
 }
 
 #[test]
 fn psd_with_one_row_is_rejected() {
-    let case = Case::psd(Some("q,C\n1e4,1e-20\n"));
+    let case = Case::psd(Some("q,C\n1/m,m^4\n1e4,1e-20\n"));
     case.rejects(
         &[],
         &[
@@ -513,11 +513,11 @@ fn psd_with_one_row_is_rejected() {
 
 #[test]
 fn psd_with_wrong_column_count_is_located() {
-    let case = Case::psd(Some("1e4,1e-20\n1e5,1e-21,7\n"));
+    let case = Case::psd(Some("q [1/m],C [m^4]\n1e4,1e-20\n1e5,1e-21,7\n"));
     case.rejects(
         &[],
         &[
-            "psd-example.csv:2: expected 2 comma-separated columns",
+            "psd-example.csv:3: expected 2 comma-separated columns",
             "scenario.toml:10",
         ],
     );

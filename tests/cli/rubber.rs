@@ -120,19 +120,16 @@ fn the_retained_force_is_referred_to_thirty_minutes_and_reported() {
 }
 
 #[test]
-fn a_compound_with_ageing_data_warns_when_ageing_is_off_and_sets_when_on() {
+fn a_compound_with_ageing_data_ages_by_default_and_stops_when_switched_off() {
     let dir = tempfile::tempdir().unwrap();
     let text = cold_start("nbr-70").replace("history = \"cold.csv\"", "temperature = \"80 C\"");
-    let (summary, stderr) = run(dir.path(), &text);
-    assert!(
-        stderr.contains("s.toml:2: ageing: NBR")
-            && stderr.contains("chemical ageing and compression set are off"),
-        "{stderr}"
-    );
+    // off, said so in the summary
+    let (summary, _) = run(dir.path(), &format!("{text}[ageing]\nenabled = false\n"));
     assert!(summary.get("final_compression_set").is_none());
-    // on: the set grows, the history has the column, the warning is gone
-    let (summary, stderr) = run(dir.path(), &format!("{text}[ageing]\n"));
-    assert!(!stderr.contains("ageing are off"), "{stderr}");
+    assert_eq!(summary["ageing"], "off");
+    // on without a table: the compound's constants, the set grows, the history has the column
+    let (summary, _) = run(dir.path(), &text);
+    assert_eq!(summary["ageing"], "compound");
     let set = summary["final_compression_set"].as_f64().unwrap();
     assert!(set > 0.0 && set < 1.0, "{summary}");
     let csv = fs::read_to_string(dir.path().join("h.csv")).unwrap();

@@ -83,7 +83,7 @@ fn a_steep_spectrum_is_warned_about() {
     // the old headline surface: 0.8 µm rms, H = 0.7, q0 = 3e5 1/m, q1 = 1e10 1/m → slope 8.3
     let dir = TempDir::new().unwrap();
     let psd = dir.path().join("steep.csv");
-    let mut text = "q,C\n".to_string();
+    let mut text = "q [1/m],C [m^4]\n".to_string();
     let (q0, q1, h, hrms): (f64, f64, f64, f64) = (3e5, 1e10, 0.7, 0.8e-6);
     let c0 = h / std::f64::consts::PI * hrms * hrms / (q0.powf(-2.0 * h) - q1.powf(-2.0 * h));
     for q in [q0, 1e7, q1] {

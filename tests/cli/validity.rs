@@ -170,7 +170,7 @@ fn the_80c_oring_reports_its_worst_pressure_ratio_and_when() {
             "pressure_difference = \"2 bar\"",
             "pressure_difference = \"20 bar\"",
         )
-        .replace("\n[ageing]", "\n# no ageing");
+        .replace("\n[ageing]", "\n[ageing]\nenabled = false");
     let scenario = dir.path().join("s.toml");
     fs::write(&scenario, text).unwrap();
     let stderr = stderr_of(
