@@ -72,7 +72,10 @@ impl Case {
 
     /// The standard surface table with the given map text.
     fn with_map(map: &str) -> Case {
-        Case::new("height_map = \"map.csv\"\npixel_size = \"0.5 um\"", map)
+        Case::new(
+            "height_map = \"map.csv\"\npixel_size = \"0.5 um\"\nheight_unit = \"m\"",
+            map,
+        )
     }
 
     fn scenario(&self) -> PathBuf {
@@ -339,7 +342,10 @@ fn height_map_excludes_the_other_spectra() {
 
 #[test]
 fn unreadable_map_and_bad_unit_are_named() {
-    let case = Case::new("height_map = \"nothere.csv\"\npixel_size = \"0.5 um\"", "");
+    let case = Case::new(
+        "height_map = \"nothere.csv\"\npixel_size = \"0.5 um\"\nheight_unit = \"um\"",
+        "",
+    );
     case.rejects(&[
         "scenario.toml:6: surface.height_map: cannot read height map",
         "nothere.csv",
@@ -355,6 +361,12 @@ fn unreadable_map_and_bad_unit_are_named() {
         &csv(&map, 1.0),
     );
     case.rejects(&["scenario.toml:7: surface.pixel_size: expected a length"]);
+    // without height_unit: refused (a bare height could be m or µm), with a fix that works
+    let case = Case::new(
+        "height_map = \"map.csv\"\npixel_size = \"0.5 um\"",
+        &csv(&map, 1.0),
+    );
+    case.rejects(&["scenario.toml:6: surface.height_map: needs height_unit"]);
 }
 
 #[test]

@@ -194,8 +194,12 @@ fn trace_reader_units_and_errors() {
     let t = parse_trace(&file(300, |_| 0.5, "um,nm\n"), path).unwrap();
     assert!((t.spacing - 0.5e-6).abs() < 1e-18);
     assert!((t.heights[1] - 1f64.sin() * 1e-9).abs() < 1e-20);
-    // no units row: metres
-    let t = parse_trace(&file(300, |_| 0.5, ""), path).unwrap();
+    // no units row: refused (a bare 0.5 could be metres or micrometres), the fix accepted
+    let e = parse_trace(&file(300, |_| 0.5, ""), path)
+        .unwrap_err()
+        .to_string();
+    assert!(e.starts_with("t.csv:3: no units row"), "{e}");
+    let t = parse_trace(&file(300, |_| 0.5, "m,m\n"), path).unwrap();
     assert!((t.spacing - 0.5).abs() < 1e-15);
 
     let err = |text: &str| parse_trace(text, path).unwrap_err().to_string();
