@@ -82,6 +82,17 @@ impl From<KindArg> for AgeingKind {
 
 /// Runs `sealsim ageing-fit`.
 pub fn run(args: AgeingFitArgs) -> Result<(), CliError> {
+    super::guard_outputs(
+        &[args.data.as_path()],
+        &[
+            ("-o", args.output.as_deref()),
+            ("--plot", args.plot.as_deref()),
+            (
+                "--write-material-ageing",
+                args.write_material_ageing.as_deref(),
+            ),
+        ],
+    )?;
     let source = args.data.display().to_string();
     if !(args.criterion > 0.0 && args.criterion < 1.0) {
         return Err(CliError::Input(format!(

@@ -74,6 +74,21 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
         .iter()
         .map(|spec| Ok((spec.trim().to_owned(), resolve(spec.trim())?)))
         .collect::<Result<_, CliError>>()?;
+    let material_files: Vec<&Path> = args
+        .materials
+        .iter()
+        .filter(|spec| library::get(spec.trim()).is_err())
+        .map(|spec| Path::new(spec.trim()))
+        .chain(std::iter::once(args.scenario.as_path()))
+        .collect();
+    super::guard_outputs(
+        &material_files,
+        &[
+            ("-o", args.output.as_deref()),
+            ("--plot", args.plot.as_deref()),
+            ("--report", args.report.as_deref()),
+        ],
+    )?;
     let floor = super::positive_flag(
         args.leak_floor.as_deref(),
         "leak-floor",

@@ -128,6 +128,10 @@ fn parse_sweep(text: &str) -> Result<Sweep, String> {
 /// Runs `sealsim leak`.
 pub fn run(args: LeakArgs) -> Result<(), CliError> {
     let scenario = Scenario::load(&args.scenario)?;
+    let inputs: Vec<&std::path::Path> = std::iter::once(args.scenario.as_path())
+        .chain(scenario.inputs.iter().map(std::path::PathBuf::as_path))
+        .collect();
+    super::guard_outputs(&inputs, &[("-o", args.output.as_deref())])?;
     let pressures = match (&args.pressures, args.sweep) {
         (Some(list), _) => Some(list.clone()),
         (None, Some(sweep)) => Some(sweep.pressures(args.points.unwrap_or(DEFAULT_SWEEP_POINTS))),

@@ -290,6 +290,54 @@ impl FailExitCode {
     }
 }
 
+/// The file a path names, for comparing paths: the canonical path when it exists, else its
+/// canonical directory joined with its name (an output not yet written).
+fn identity(path: &Path) -> std::path::PathBuf {
+    if let Ok(p) = path.canonicalize() {
+        return p;
+    }
+    let name = path.file_name().map(std::ffi::OsStr::to_os_string);
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    match (dir.canonicalize(), name) {
+        (Ok(d), Some(n)) => d.join(n),
+        _ => path.to_path_buf(),
+    }
+}
+
+/// Refuses, before anything runs, an output that would replace one of `inputs` or another
+/// output of the same command (exit 2, nothing written): `outputs` are (flag, path) pairs.
+pub(crate) fn guard_outputs(
+    inputs: &[&Path],
+    outputs: &[(&str, Option<&Path>)],
+) -> Result<(), CliError> {
+    let inputs: Vec<(std::path::PathBuf, &Path)> =
+        inputs.iter().map(|p| (identity(p), *p)).collect();
+    let mut seen: Vec<(std::path::PathBuf, &str)> = Vec::new();
+    for (flag, path) in outputs {
+        let Some(path) = path else { continue };
+        let id = identity(path);
+        if let Some((_, input)) = inputs.iter().find(|(i, _)| *i == id) {
+            return Err(CliError::Input(format!(
+                "{flag} {}: that is an input of this command ({}): writing it would replace \
+                 it; give the output another name",
+                path.display(),
+                input.display()
+            )));
+        }
+        if let Some((_, other)) = seen.iter().find(|(o, _)| *o == id) {
+            return Err(CliError::Input(format!(
+                "{flag} {}: {other} writes the same file; give each output its own name",
+                path.display()
+            )));
+        }
+        seen.push((id, flag));
+    }
+    Ok(())
+}
+
 /// Writes a finished output: atomically to `path`, or to stdout.
 pub(crate) fn write_output(path: Option<&Path>, bytes: &[u8]) -> Result<(), CliError> {
     match path {

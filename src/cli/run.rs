@@ -81,6 +81,18 @@ pub struct RunArgs {
 /// Runs `sealsim run`.
 pub fn run(args: RunArgs) -> Result<(), CliError> {
     let mut scenario = Scenario::load(&args.scenario)?;
+    let inputs: Vec<&std::path::Path> = std::iter::once(args.scenario.as_path())
+        .chain(scenario.inputs.iter().map(std::path::PathBuf::as_path))
+        .collect();
+    super::guard_outputs(
+        &inputs,
+        &[
+            ("-o", args.output.as_deref()),
+            ("--summary", args.summary.as_deref()),
+            ("--plot", args.plot.as_deref()),
+            ("--report", args.report.as_deref()),
+        ],
+    )?;
     if let Some(fidelity) = args.fidelity {
         scenario.life.fidelity = fidelity;
     }

@@ -186,6 +186,21 @@ fn run_cases(args: RunArgs) -> Result<(), CliError> {
         .study
         .ok_or_else(|| CliError::Input("a study file is required".into()))?;
     let study = Study::load(&path)?;
+    let inputs: Vec<&Path> = [path.as_path(), study.base_path.as_path()]
+        .into_iter()
+        .chain(study.base_scenario.inputs.iter().map(PathBuf::as_path))
+        .collect();
+    let o = &args.outputs;
+    super::guard_outputs(
+        &inputs,
+        &[
+            ("-o", args.output.as_deref()),
+            ("--summary", o.summary.as_deref()),
+            ("--survival-plot", o.survival_plot.as_deref()),
+            ("--tornado-plot", o.tornado_plot.as_deref()),
+            ("--report", o.report.as_deref()),
+        ],
+    )?;
     let total = study.cases();
     let range = match args.shard {
         Some((k, n)) => shard_range(k, n, total),
@@ -279,6 +294,21 @@ fn finish(
 
 fn merge(args: MergeArgs) -> Result<(), CliError> {
     let study = Study::load(&args.study)?;
+    let inputs: Vec<&Path> = [args.study.as_path(), study.base_path.as_path()]
+        .into_iter()
+        .chain(args.parts.iter().map(PathBuf::as_path))
+        .collect();
+    let o = &args.outputs;
+    super::guard_outputs(
+        &inputs,
+        &[
+            ("-o", args.output.as_deref()),
+            ("--summary", o.summary.as_deref()),
+            ("--survival-plot", o.survival_plot.as_deref()),
+            ("--tornado-plot", o.tornado_plot.as_deref()),
+            ("--report", o.report.as_deref()),
+        ],
+    )?;
     let mut outcomes: Vec<CaseOutcome> = Vec::with_capacity(study.cases());
     let mut source: Vec<Option<usize>> = vec![None; study.cases()];
     let design = study.plan.values(0..study.cases());

@@ -82,6 +82,14 @@ fn length(value: Option<&str>, name: &str) -> Result<Option<f64>, CliError> {
 
 /// Runs `sealsim surface`.
 pub fn run(args: SurfaceArgs) -> Result<(), CliError> {
+    let sources: Vec<&std::path::Path> = args.sources.iter().map(PathBuf::as_path).collect();
+    super::guard_outputs(
+        &sources,
+        &[
+            ("-o", args.output.as_deref()),
+            ("--plot", args.plot.as_deref()),
+        ],
+    )?;
     let cutoff = length(args.cutoff.as_deref(), "cutoff")?;
     let short_cutoff = length(args.short_cutoff.as_deref(), "short-cutoff")?;
     let tip_radius = length(args.tip_radius.as_deref(), "tip-radius")?;

@@ -63,6 +63,17 @@ fn parse_band(text: &str) -> Result<f64, String> {
 /// Runs `sealsim tradeoff`.
 pub fn run(args: TradeoffArgs) -> Result<(), CliError> {
     let scenario = Scenario::load(&args.scenario)?;
+    let inputs: Vec<&std::path::Path> = std::iter::once(args.scenario.as_path())
+        .chain(scenario.inputs.iter().map(std::path::PathBuf::as_path))
+        .collect();
+    super::guard_outputs(
+        &inputs,
+        &[
+            ("-o", args.output.as_deref()),
+            ("--plot", args.plot.as_deref()),
+            ("--report", args.report.as_deref()),
+        ],
+    )?;
     let options = TradeoffOptions {
         band: args.band.unwrap_or(scenario.numerical.band),
         seed: args.seed.unwrap_or(scenario.numerical.seed),

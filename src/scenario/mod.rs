@@ -84,6 +84,10 @@ pub struct Scenario {
     /// Warnings about the input, each located like an error (`FILE:LINE: KEY: …`), e.g. a gland
     /// fill above the guidance; the commands print them as `warning:` lines.
     pub warnings: Vec<String>,
+    /// The files the scenario reads besides itself (a material file, a temperature history,
+    /// PSD files, height maps, traces, a contact profile, a size distribution), as resolved
+    /// from the scenario's directory: no output may be written over them.
+    pub inputs: Vec<PathBuf>,
 }
 
 impl Scenario {

@@ -606,7 +606,46 @@ impl Source<'_> {
             numerical,
             gland: seal.design,
             warnings,
+            inputs: self.data_files(raw),
         })
+    }
+
+    /// The data files `raw` names, resolved from the scenario's directory.
+    fn data_files(&self, raw: &RawScenario) -> Vec<std::path::PathBuf> {
+        let surfaces = [
+            Some(&raw.surface),
+            raw.groove_surface.as_ref(),
+            raw.rubber_surface.as_ref(),
+        ];
+        let mut names: Vec<&str> = [
+            raw.material.get_ref().file.as_ref(),
+            raw.environment
+                .as_ref()
+                .and_then(|e| e.get_ref().history.as_ref()),
+            raw.motion
+                .as_ref()
+                .and_then(|m| m.get_ref().contact_profile.as_ref()),
+            raw.contamination
+                .as_ref()
+                .and_then(|c| c.get_ref().size_distribution.as_ref())
+                .and_then(|d| d.get_ref().file.as_ref()),
+        ]
+        .into_iter()
+        .flatten()
+        .map(|n| n.get_ref().as_str())
+        .collect();
+        for s in surfaces.into_iter().flatten().map(Spanned::get_ref) {
+            names.extend(
+                [s.psd_file.as_ref(), s.height_map.as_ref()]
+                    .into_iter()
+                    .flatten()
+                    .map(|n| n.get_ref().as_str()),
+            );
+            if let Some(files) = &s.profile {
+                names.extend(files.get_ref().names());
+            }
+        }
+        names.into_iter().map(|n| self.relative_path(n)).collect()
     }
 
     /// `[numerical]`: band (4–512), pixels per shortest wavelength (integer 2–64),
