@@ -18,7 +18,8 @@ const MAX_SWEEP_POINTS: i64 = 1_000_000;
 /// Arguments of `sealsim leak`.
 #[derive(Debug, Clone, Args)]
 #[command(
-    after_help = "Pressures take units (\"0.2 MPa\", \"2bar\", \"30psi\"); bare numbers are Pa.\n\
+    after_help = "Pressures need their units (\"0.2 MPa\", \"2bar\", \"30psi\"): a bare number is \
+    refused.\n\
     Output columns: nominal_pressure_Pa, zeta_c, lambda_c_m, u_c_m, ubar_c_m, hrms_c_m, \
     leak_rate_m3_per_s, state (leaking|sealed|lift_off); lambda_c = 2π/(zeta_c q0). The fluid \
     pressure inside the interface relieves the asperities (docs/model.md §3.6); a flat seal lifts \
@@ -91,11 +92,12 @@ impl Sweep {
     }
 }
 
-/// A positive nominal pressure: "0.2 MPa", "2bar", or a bare number in Pa.
+/// A positive nominal pressure with its unit: "0.2 MPa", "2bar" (a bare number is refused:
+/// 200000 is Pa to a parser and bar to a reader).
 fn parse_pressure(text: &str) -> Result<f64, String> {
     let text = text.trim();
     let value = match text.parse::<f64>() {
-        Ok(v) => v,
+        Ok(v) => return Err(Dimension::PRESSURE.bare_number_fix(v)),
         Err(_) => units::parse_quantity(text, Dimension::PRESSURE).map_err(|e| e.to_string())?,
     };
     if value.is_finite() && value > 0.0 {
@@ -195,7 +197,11 @@ mod tests {
     #[test]
     fn pressures_take_units_or_pascals() {
         assert_eq!(parse_pressure("0.2 MPa"), Ok(2e5));
-        assert_eq!(parse_pressure(" 2e5 "), Ok(2e5));
+        assert!(
+            parse_pressure(" 2e5 ")
+                .unwrap_err()
+                .contains("needs its unit")
+        );
         assert!(parse_pressure("10 m").is_err());
         assert!(parse_pressure("-1 MPa").is_err());
         assert!(parse_pressure("0").is_err());

@@ -146,11 +146,21 @@ fn pressure_above_sealing_is_sealed_with_blank_cells() {
 }
 
 #[test]
-fn bare_pressures_are_pascals() {
+fn pressures_need_their_units() {
     let path = scenario_path("persson-yang-2008.toml");
-    let rows = leak_ok(&[path.to_str().unwrap(), "--pressures", "200000,2bar"]);
+    let rows = leak_ok(&[path.to_str().unwrap(), "--pressures", "200000 Pa,2bar"]);
     assert_eq!(rows[0].pressure, 2e5);
     assert_eq!(rows[1].pressure, 2e5);
+    let out = crate::support::sealsim()
+        .args(["leak", path.to_str().unwrap(), "--pressures", "200000"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        stderr.contains("a pressure needs its unit: write \"200000 bar\""),
+        "{stderr}"
+    );
 }
 
 #[test]
