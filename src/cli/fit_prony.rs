@@ -4,7 +4,9 @@
 
 use super::{CliError, positive_flag, write_output};
 use crate::material::csr::{Normalisation, TestPiece};
-use crate::material::fit::{Fit, FitError, FitSettings, Regularisation, fit_dma, fit_relaxation};
+use crate::material::fit::{
+    Fit, FitError, FitSettings, Regularisation, TERMS_PER_DECADE, fit_dma, fit_relaxation,
+};
 use crate::material::tts::{
     Isotherm as TtsIsotherm, MasterCurve, ShiftLaw, TtsError, TtsSettings, master_curve,
 };
@@ -49,10 +51,10 @@ pub struct FitPronyArgs {
     #[arg(long, value_enum)]
     pub kind: KindArg,
 
-    /// Relaxation times per decade of the fit grid (1–4; 3 keeps the ripple of an off-grid
-    /// spectrum below 0.04 %).
-    #[arg(long, value_name = "N", default_value_t = crate::material::fit::DEFAULT_TERMS_PER_DECADE, value_parser = clap::value_parser!(u32).range(1..=4))]
-    pub terms_per_decade: u32,
+    /// Relaxation times per decade of the fit grid, 0.25–4, fractional allowed (0.5: one term
+    /// every two decades; 3 keeps the ripple of an off-grid spectrum below 0.04 %).
+    #[arg(long, value_name = "N", default_value_t = crate::material::fit::DEFAULT_TERMS_PER_DECADE, value_parser = terms_per_decade)]
+    pub terms_per_decade: f64,
 
     /// Smoothing of the fitted spectrum: `gcv`, a second-difference penalty on the relative
     /// spectrum with its weight chosen by generalised cross-validation; `none`, plain NNLS.
@@ -328,6 +330,23 @@ pub fn run(args: FitPronyArgs) -> Result<(), CliError> {
         );
     }
     write_output(args.output.as_deref(), text.as_bytes())
+}
+
+/// `--terms-per-decade`: a number from 0.25 to 4 ([`TERMS_PER_DECADE`]).
+fn terms_per_decade(text: &str) -> Result<f64, String> {
+    let value: f64 = text
+        .trim()
+        .parse()
+        .map_err(|_| format!("expected a number of terms per decade (0.25 to 4), got {text:?}"))?;
+    if TERMS_PER_DECADE.contains(&value) {
+        Ok(value)
+    } else {
+        Err(format!(
+            "must be from {} to {} terms per decade (0.5: one term every two decades), got {text}",
+            TERMS_PER_DECADE.start(),
+            TERMS_PER_DECADE.end()
+        ))
+    }
 }
 
 /// Whether any master-curve flag was given.
@@ -735,15 +754,11 @@ fn print_normalisation(source: &str, n: &Normalisation) {
 
 /// The material of a fit: a user material, Poisson's ratio assumed, no temperature shift,
 /// with the provenance of every number.
-pub fn fitted_material(name: String, fit: &Fit, source: &str, terms_per_decade: u32) -> Material {
+pub fn fitted_material(name: String, fit: &Fit, source: &str, terms_per_decade: f64) -> Material {
     let fitted = format!(
-        "fitted by sealsim fit-prony (NNLS, {terms_per_decade} {} per decade) to {source}: \
+        "fitted by sealsim fit-prony (NNLS, {} per decade) to {source}: \
          {} points, rms relative residual {:.2e}, max {:.2e}; {}",
-        if terms_per_decade == 1 {
-            "term"
-        } else {
-            "terms"
-        },
+        per_decade_text(terms_per_decade),
         fit.points,
         fit.rms_relative_residual,
         fit.max_relative_residual,
@@ -773,6 +788,11 @@ pub fn fitted_material(name: String, fit: &Fit, source: &str, terms_per_decade: 
         provenance,
         library_id: None,
     }
+}
+
+/// "1 term", "3 terms", "0.5 terms" (of a number of terms per decade).
+fn per_decade_text(n: f64) -> String {
+    format!("{} {}", show(n), if n == 1.0 { "term" } else { "terms" })
 }
 
 /// A comment block for the top of the file.
@@ -807,19 +827,27 @@ fn regularisation_note(fit: &Fit) -> String {
 /// poor.
 fn print_summary(source: &str, fit: &Fit) {
     let (widest, at) = fit.widest_relative_band();
+    let band = if widest.is_finite() {
+        format!(
+            "simultaneous 95 % band of E(t) over the data window: ±{:.2} % at most (at t = {} s)",
+            100.0 * widest,
+            crate::units::show(at)
+        )
+    } else {
+        "no uncertainty band: the fit leaves no residual degree of freedom to estimate the \
+         scatter from (give more points)"
+            .to_string()
+    };
     eprintln!(
         "fit-prony: {source}: {} points, {} of {} grid terms kept + E∞; \
          rms relative residual {:.2e}, max {:.2e}\n\
-         fit-prony: {}; simultaneous 95 % band of E(t) over the data window: \
-         ±{:.2} % at most (at t = {} s)",
+         fit-prony: {}; {band}",
         fit.points,
         fit.prony.terms().len(),
         fit.grid_terms,
         fit.rms_relative_residual,
         fit.max_relative_residual,
         regularisation_note(fit),
-        100.0 * widest,
-        crate::units::show(at)
     );
     if fit.rms_relative_residual > POOR_FIT {
         eprintln!(
@@ -837,12 +865,30 @@ fn default_name(path: &Path) -> String {
         .unwrap_or_else(|| "fitted material".to_string())
 }
 
-/// Data the fit refuses are bad input; a solver failure is an internal error.
+/// Data the fit refuses are bad input; a solver failure is an internal error. Too few points
+/// for plain NNLS name the flags that fix it.
 fn fit_error(path: &Path, e: FitError) -> CliError {
     match e {
         FitError::Solver(_) | FitError::Degenerate(_) => {
             CliError::Internal(format!("{}: {e}", path.display()))
         }
+        FitError::TooFewPoints {
+            points,
+            values,
+            unknowns,
+            max_terms_per_decade,
+        } if points >= 3 => CliError::Input(format!(
+            "{}: --regularisation none: too few points for a fit without smoothing: {points} data \
+             points give {values} values for {unknowns} unknowns (E∞ and {} Prony terms); give \
+             more points, {}or leave out --regularisation none (the default, gcv, takes fewer \
+             points than unknowns)",
+            path.display(),
+            unknowns.saturating_sub(1),
+            match max_terms_per_decade {
+                Some(n) => format!("--terms-per-decade {} or less, ", show(n)),
+                None => String::new(),
+            }
+        )),
         _ => CliError::Input(format!("{}: {e}", path.display())),
     }
 }
@@ -863,12 +909,12 @@ mod tests {
             &t,
             &e,
             &FitSettings {
-                terms_per_decade: 1,
+                terms_per_decade: 1.0,
                 ..FitSettings::default()
             },
         )
         .unwrap();
-        let m = fitted_material("x".into(), &fit, "data.csv", 1);
+        let m = fitted_material("x".into(), &fit, "data.csv", 1.0);
         assert_eq!(
             m.provenance_of("poisson_ratio"),
             Some(ASSUMED_POISSON_PROVENANCE)
