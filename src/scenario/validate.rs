@@ -417,7 +417,16 @@ impl Source<'_> {
             }
             _ => environment,
         };
-        let thermal_strain = self.thermal_strain(&seal, &material, &environment)?;
+        let thermal_strain = self.thermal_strain(
+            &seal,
+            &material,
+            &environment,
+            &self.material_key_fix(
+                raw.material.get_ref(),
+                replacement.is_some(),
+                "thermal_expansion",
+            ),
+        )?;
         let (ageing, ageing_source) =
             self.scenario_ageing(raw.ageing.as_ref(), &material, replacement.is_some())?;
         let failure = self.failure(raw.failure.as_ref(), &fluid, &environment)?;
@@ -573,7 +582,8 @@ impl Source<'_> {
                          taken as measured, at every temperature of this run ({}–{} K); give \
                          `data_temperature` (fit-prony --temperature) so that a run away from it \
                          is warned about, or a [material.shift] (a master curve from data at \
-                         several temperatures) [docs/model.md §9.13]",
+                         several temperatures, or a library compound's shift copied by \
+                         fit-prony --like) [docs/model.md §9.13]",
                         material.name,
                         show(lo),
                         show(hi)
