@@ -406,7 +406,7 @@ impl Source<'_> {
         let environment = self.environment(raw.environment.as_ref(), &material)?;
         // the static problem's viscosity is the law's at the installation temperature
         let fluid = fluid.at(environment.at(0.0));
-        let cold_fitting = self.fitting_temperature(&raw, &seal, &material, &environment)?;
+        let cold_fitting = self.fitting_temperature(raw, &seal, &material, &environment)?;
         // a ring fitted at another temperature than the environment's first: its temperature
         // settles to the environment's over its thermal time (docs/model.md §5.2)
         let environment = match (seal.fitting_temperature, seal.geometry) {
