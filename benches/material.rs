@@ -52,9 +52,9 @@ fn material(c: &mut Criterion) {
     let times = log_spaced(lo, hi, 100);
     let moduli: Vec<f64> = times.iter().map(|&t| truth.relaxation(t)).collect();
     for (per_decade, regularisation, label) in [
-        (3, Regularisation::None, "plain NNLS"),
-        (1, Regularisation::Gcv, "GCV"),
-        (3, Regularisation::Gcv, "GCV"),
+        (3.0, Regularisation::None, "plain NNLS"),
+        (1.0, Regularisation::Gcv, "GCV"),
+        (3.0, Regularisation::Gcv, "GCV"),
     ] {
         let settings = FitSettings {
             terms_per_decade: per_decade,

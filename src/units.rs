@@ -1021,7 +1021,7 @@ const UNITS: &[UnitDef] = &[
     unit("ksi", 6894.757293168e3, Dimension::PRESSURE, false),
     // the conventional millimetre and inch of mercury (vacuum and barometer readings)
     unit("mmHg", 133.322_387_415, Dimension::PRESSURE, false),
-    unit("inHg", 3386.388_640_341, Dimension::PRESSURE, false),
+    unit("inHg", 3_386.388_640_341, Dimension::PRESSURE, false),
     // gauge pressures: relative to the outlet (ambient) side, which is what a pressure
     // difference across a seal to ambient is
     unit("psig", 6894.757293168, Dimension::PRESSURE, false),

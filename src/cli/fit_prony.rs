@@ -4,7 +4,9 @@
 
 use super::{CliError, positive_flag, write_output};
 use crate::material::csr::{Normalisation, TestPiece};
-use crate::material::fit::{Fit, FitError, FitSettings, Regularisation, fit_dma, fit_relaxation};
+use crate::material::fit::{
+    Fit, FitError, FitSettings, Regularisation, TERMS_PER_DECADE, fit_dma, fit_relaxation,
+};
 use crate::material::tts::{
     Isotherm as TtsIsotherm, MasterCurve, ShiftLaw, TtsError, TtsSettings, master_curve,
 };
@@ -13,6 +15,7 @@ use crate::report::master_curve::{law_text, master_chart, shift_chart, text as m
 use crate::report::material_toml::material_toml;
 use crate::report::plot::LogLogChart;
 use crate::scenario::fit_data::{FitData, FitKind, Isotherm, Measured, read_fit_data, show_kelvin};
+use crate::scenario::library;
 use crate::units::{Dimension, parse_temperature, show};
 use clap::builder::NonEmptyStringValueParser;
 use clap::{Args, ValueEnum};
@@ -39,7 +42,9 @@ const POOR_FIT: f64 = 0.05;
     The fit: non-negative least squares of E∞ and E_i on log-spaced τ_i over the data window \
     widened by a decade on each side, each point weighted by its relative error. One term per \
     decade leaves a ripple of a few per cent on a smooth spectrum; three make it negligible.\n\
-    Output: a material TOML file (poisson_ratio = 0.5 assumed, no temperature shift).")]
+    Output: a material TOML file (poisson_ratio = 0.5 assumed, no temperature shift), or with \
+    --like COMPOUND the library compound's Poisson's ratio, thermal expansion, glass transition, \
+    temperature shift and ageing, so that the file runs in a gland as written.")]
 pub struct FitPronyArgs {
     /// Data file (CSV): a relaxation test or a DMA master curve.
     #[arg(value_name = "DATA.csv")]
@@ -49,10 +54,10 @@ pub struct FitPronyArgs {
     #[arg(long, value_enum)]
     pub kind: KindArg,
 
-    /// Relaxation times per decade of the fit grid (1–4; 3 keeps the ripple of an off-grid
-    /// spectrum below 0.04 %).
-    #[arg(long, value_name = "N", default_value_t = crate::material::fit::DEFAULT_TERMS_PER_DECADE, value_parser = clap::value_parser!(u32).range(1..=4))]
-    pub terms_per_decade: u32,
+    /// Relaxation times per decade of the fit grid, 0.25–4, fractional allowed (0.5: one term
+    /// every two decades; 3 keeps the ripple of an off-grid spectrum below 0.04 %).
+    #[arg(long, value_name = "N", default_value_t = crate::material::fit::DEFAULT_TERMS_PER_DECADE, value_parser = terms_per_decade)]
+    pub terms_per_decade: f64,
 
     /// Smoothing of the fitted spectrum: `gcv`, a second-difference penalty on the relative
     /// spectrum with its weight chosen by generalised cross-validation; `none`, plain NNLS.
@@ -71,6 +76,13 @@ pub struct FitPronyArgs {
     /// material's data temperature, so that a run far from it is warned about.
     #[arg(long, value_name = "T")]
     pub temperature: Option<String>,
+
+    /// Copy what a relaxation test does not measure from this material-library compound
+    /// (`sealsim materials list`, e.g. nbr-70): Poisson's ratio, thermal expansion (rubbery
+    /// and glassy), glass transition, the temperature shift (moved to the test temperature;
+    /// not when the data give their own) and the ageing constants, each with its provenance.
+    #[arg(long, value_name = "COMPOUND")]
+    pub like: Option<String>,
 
     #[command(flatten)]
     pub csr: CsrArgs,
@@ -200,6 +212,7 @@ impl From<KindArg> for FitKind {
 
 /// Runs `sealsim fit-prony`.
 pub fn run(args: FitPronyArgs) -> Result<(), CliError> {
+    let like = args.like.as_deref().map(like_compound).transpose()?;
     let kind = FitKind::from(args.kind);
     let data = read_fit_data(&args.data, kind).map_err(|e| CliError::Input(e.to_string()))?;
     let settings = FitSettings {
@@ -227,6 +240,7 @@ pub fn run(args: FitPronyArgs) -> Result<(), CliError> {
                     isotherms,
                     normalisation.as_ref(),
                     *measured,
+                    like.as_ref(),
                 );
             }
             let [isotherm] = isotherms.as_slice() else {
@@ -312,14 +326,22 @@ pub fn run(args: FitPronyArgs) -> Result<(), CliError> {
             }
         }
     }
+    let copied = match &like {
+        Some(l) => Some(copy_like(&mut material, l, false, &source)?),
+        None => None,
+    };
     let text = format!(
-        "{}{}",
-        header(&source, kind, &fit),
+        "{}{}{}",
+        header(&source, kind, &fit, &material),
+        like_header(like.as_ref()),
         material_toml(&material)
     );
     print_summary(&source, &fit);
     if let Some((n, _)) = &normalisation {
         print_normalisation(&source, n);
+    }
+    if let (Some(l), Some(notes)) = (&like, &copied) {
+        print_like(&source, l, notes);
     }
     if data_temperature.is_none() {
         eprintln!(
@@ -328,6 +350,23 @@ pub fn run(args: FitPronyArgs) -> Result<(), CliError> {
         );
     }
     write_output(args.output.as_deref(), text.as_bytes())
+}
+
+/// `--terms-per-decade`: a number from 0.25 to 4 ([`TERMS_PER_DECADE`]).
+fn terms_per_decade(text: &str) -> Result<f64, String> {
+    let value: f64 = text
+        .trim()
+        .parse()
+        .map_err(|_| format!("expected a number of terms per decade (0.25 to 4), got {text:?}"))?;
+    if TERMS_PER_DECADE.contains(&value) {
+        Ok(value)
+    } else {
+        Err(format!(
+            "must be from {} to {} terms per decade (0.5: one term every two decades), got {text}",
+            TERMS_PER_DECADE.start(),
+            TERMS_PER_DECADE.end()
+        ))
+    }
 }
 
 /// Whether any master-curve flag was given.
@@ -346,6 +385,7 @@ fn master(
     isotherms: &[Isotherm],
     normalisation: Option<&Normalisation>,
     measured: Measured,
+    like: Option<&Like>,
 ) -> Result<(), CliError> {
     let source = args.data.display().to_string();
     if args.temperature.is_some() {
@@ -430,13 +470,17 @@ fn master(
         "data_temperature".into(),
         format!("the test temperatures of {source}"),
     ));
+    let copied = like
+        .map(|l| copy_like(&mut material, l, true, &source))
+        .transpose()?;
     let text = format!(
         "# Prony series of the master curve fitted by sealsim fit-prony to relaxation data at \
          {} temperatures in {source} ({} points).\n\
          # E(t) = E∞ + Σ E_i exp(−ξ/τ_i) in reduced time ξ at the reference temperature of \
-         [material.shift].\n{}",
+         [material.shift].\n{}{}",
         m.shifts.len(),
         m.reduced.len(),
+        like_header(like),
         material_toml(&material)
     );
     let svg = |path: &Option<PathBuf>, chart: fn(&str, &MasterCurve) -> LogLogChart| {
@@ -454,6 +498,9 @@ fn master(
     print_summary(&source, &m.fit);
     if let Some(n) = normalisation {
         print_normalisation(&source, n);
+    }
+    if let (Some(l), Some(notes)) = (like, &copied) {
+        print_like(&source, l, notes);
     }
     for (path, svg) in [
         (&args.tts.plot_master, &master_svg),
@@ -735,15 +782,11 @@ fn print_normalisation(source: &str, n: &Normalisation) {
 
 /// The material of a fit: a user material, Poisson's ratio assumed, no temperature shift,
 /// with the provenance of every number.
-pub fn fitted_material(name: String, fit: &Fit, source: &str, terms_per_decade: u32) -> Material {
+pub fn fitted_material(name: String, fit: &Fit, source: &str, terms_per_decade: f64) -> Material {
     let fitted = format!(
-        "fitted by sealsim fit-prony (NNLS, {terms_per_decade} {} per decade) to {source}: \
+        "fitted by sealsim fit-prony (NNLS, {} per decade) to {source}: \
          {} points, rms relative residual {:.2e}, max {:.2e}; {}",
-        if terms_per_decade == 1 {
-            "term"
-        } else {
-            "terms"
-        },
+        per_decade_text(terms_per_decade),
         fit.points,
         fit.rms_relative_residual,
         fit.max_relative_residual,
@@ -775,18 +818,246 @@ pub fn fitted_material(name: String, fit: &Fit, source: &str, terms_per_decade: 
     }
 }
 
+/// "1 term", "3 terms", "0.5 terms" (of a number of terms per decade).
+fn per_decade_text(n: f64) -> String {
+    format!("{} {}", show(n), if n == 1.0 { "term" } else { "terms" })
+}
+
 /// A comment block for the top of the file.
-fn header(source: &str, kind: FitKind, fit: &Fit) -> String {
+fn header(source: &str, kind: FitKind, fit: &Fit, material: &Material) -> String {
     let what = match kind {
         FitKind::Relaxation => "relaxation data",
         FitKind::Dma => "DMA data",
     };
+    let shift = if material.shift == Shift::None {
+        "at the temperature of the data (or of its master curve):\n\
+         # add a [material.shift] table for temperature dependence."
+    } else {
+        "in reduced time at the reference temperature of [material.shift]."
+    };
     format!(
         "# Prony series fitted by sealsim fit-prony to {what} in {source} ({} points).\n\
-         # E(t) = E∞ + Σ E_i exp(−t/τ_i), at the temperature of the data (or of its master curve):\n\
-         # add a [material.shift] table for temperature dependence.\n",
+         # E(t) = E∞ + Σ E_i exp(−t/τ_i), {shift}\n",
         fit.points
     )
+}
+
+/// A library compound whose unmeasured properties `--like` copies.
+pub struct Like {
+    /// The library id, e.g. `nbr-70`.
+    pub id: &'static str,
+    pub compound: Material,
+}
+
+/// The compound of `--like ID`, or an input error naming the flag and listing the ids.
+fn like_compound(id: &str) -> Result<Like, CliError> {
+    let entry = library::get(id).map_err(|e| {
+        CliError::Input(format!(
+            "--like {id}: {e} (`sealsim materials list` describes them)"
+        ))
+    })?;
+    let compound = entry
+        .load()
+        .map_err(|e| CliError::Internal(format!("--like {id}: {e}")))?;
+    Ok(Like {
+        id: entry.id,
+        compound,
+    })
+}
+
+/// What `--like` copied (parameter keys, in file order) and what it noted.
+pub struct Copied {
+    pub keys: Vec<&'static str>,
+    pub notes: Vec<String>,
+}
+
+/// Copies from the library compound of `like` into the fitted `material` what a relaxation
+/// test does not measure: Poisson's ratio (the fit assumes 0.5), `thermal_expansion`,
+/// `glassy_thermal_expansion`, `glass_transition`, the ageing constants with their property
+/// and criterion, and — unless `data_shift` (a master curve gave one) — the temperature
+/// shift. Each copied key's provenance reads "copied from library compound ID (sealsim
+/// fit-prony --like): " and the library's own.
+///
+/// The series is the relaxation at the test temperature T_d (`material.data_temperature`),
+/// so a copied shift is moved to T_d as its reference: WLF `C2′ = C2 + T_d − T_ref`,
+/// `C1′ = C1 C2/C2′` (the same a_T between any two temperatures: log a_T(T; T_d) =
+/// log a_T(T; T_ref) − log a_T(T_d; T_ref), WLF 1955), Arrhenius `T_ref′ = T_d`. A T_d at or
+/// below the WLF frozen limit T_ref − C2 is refused (the copied law gives no shift there).
+/// Without a test temperature the data are taken at the shift's own reference (noted).
+/// Permeation data follow a library id, not a material file (docs/model.md §13.7): noted.
+pub fn copy_like(
+    material: &mut Material,
+    like: &Like,
+    data_shift: bool,
+    source: &str,
+) -> Result<Copied, CliError> {
+    let c = &like.compound;
+    let id = like.id;
+    let prefix = format!("copied from library compound {id} (sealsim fit-prony --like)");
+    let from = |key: &str| match c.provenance_of(key) {
+        Some(text) => format!("{prefix}: {text}"),
+        None => prefix.clone(),
+    };
+    let mut copied = Copied {
+        keys: Vec::new(),
+        notes: Vec::new(),
+    };
+    let mut provenance: Vec<(String, String)> = Vec::new();
+    material.poisson_ratio = c.poisson_ratio;
+    provenance.push(("poisson_ratio".into(), from("poisson_ratio")));
+    copied.keys.push("poisson_ratio");
+    for (key, value, own) in [
+        (
+            "glass_transition",
+            &mut material.glass_transition,
+            c.glass_transition,
+        ),
+        (
+            "thermal_expansion",
+            &mut material.thermal_expansion,
+            c.thermal_expansion,
+        ),
+        (
+            "glassy_thermal_expansion",
+            &mut material.glassy_thermal_expansion,
+            c.glassy_thermal_expansion,
+        ),
+    ] {
+        if own.is_some() {
+            *value = own;
+            provenance.push((key.into(), from(key)));
+            copied.keys.push(key);
+        }
+    }
+    if !data_shift && c.shift != Shift::None {
+        let at = material.data_temperature.map(|(lo, _)| lo);
+        let (shift, moved) = moved_shift(c.shift, at).map_err(|limit| {
+            CliError::Input(format!(
+                "--like {id}: the test temperature {} of {source} is at or below the frozen \
+                 limit of the compound's WLF shift ({}: T_ref − C2), where it gives no \
+                 temperature dependence to copy; fit without --like and add a [material.shift] \
+                 measured for this compound",
+                show_kelvin(at.unwrap_or(limit)),
+                show_kelvin(limit)
+            ))
+        })?;
+        material.shift = shift;
+        let note = match (moved, at) {
+            (true, Some(t)) => format!(
+                "; its reference temperature moved to the test temperature {} (the same a_T \
+                 between any two temperatures)",
+                show_kelvin(t)
+            ),
+            (false, Some(_)) => String::new(),
+            (_, None) => {
+                let reference = shift_reference(c.shift).unwrap_or(f64::NAN);
+                copied.notes.push(format!(
+                    "the shift copied from {id} takes the data as measured at its reference \
+                     temperature, {}: give --temperature (the test's) to move it there",
+                    show_kelvin(reference)
+                ));
+                format!(
+                    "; the data taken as measured at its reference temperature {} (no test \
+                     temperature given)",
+                    show_kelvin(reference)
+                )
+            }
+        };
+        provenance.push(("shift".into(), format!("{}{note}", from("shift"))));
+        copied.keys.push("shift");
+    }
+    if c.ageing.is_some() {
+        material.ageing = c.ageing;
+        material.ageing_basis = c.ageing_basis.clone();
+        provenance.push(("ageing".into(), from("ageing")));
+        copied.keys.push("ageing");
+    }
+    // a copied key's provenance replaces the fit's (the assumed poisson_ratio) where it was
+    for (key, text) in provenance {
+        match material.provenance.iter_mut().find(|(k, _)| *k == key) {
+            Some(entry) => entry.1 = text,
+            None => material.provenance.push((key, text)),
+        }
+    }
+    if crate::permeation::family_of(id).is_some() {
+        copied.notes.push(format!(
+            "permeation data are kept by compound class and follow only a scenario's `library = \
+             \"{id}\"`, not a material file: a gas run with this file has no permeation \
+             through the rubber (docs/model.md §13.7)"
+        ));
+    }
+    Ok(copied)
+}
+
+/// The WLF or Arrhenius shift `shift` with its reference moved to `at` \[K\] (`None`: kept),
+/// and whether it moved; `Err(T_ref − C2)` when `at` is at or below the WLF frozen limit.
+fn moved_shift(shift: Shift, at: Option<f64>) -> Result<(Shift, bool), f64> {
+    let Some(t) = at else {
+        return Ok((shift, false));
+    };
+    match shift {
+        Shift::None => Ok((shift, false)),
+        Shift::Wlf { reference, .. } | Shift::Arrhenius { reference, .. } if reference == t => {
+            Ok((shift, false))
+        }
+        Shift::Wlf { reference, c1, c2 } => {
+            let moved = c2 + t - reference;
+            if moved > 0.0 {
+                Ok((
+                    Shift::Wlf {
+                        reference: t,
+                        c1: c1 * c2 / moved,
+                        c2: moved,
+                    },
+                    true,
+                ))
+            } else {
+                Err(reference - c2)
+            }
+        }
+        Shift::Arrhenius {
+            activation_energy, ..
+        } => Ok((
+            Shift::Arrhenius {
+                reference: t,
+                activation_energy,
+            },
+            true,
+        )),
+    }
+}
+
+/// The reference temperature of a shift \[K\].
+fn shift_reference(shift: Shift) -> Option<f64> {
+    match shift {
+        Shift::None => None,
+        Shift::Wlf { reference, .. } | Shift::Arrhenius { reference, .. } => Some(reference),
+    }
+}
+
+/// The file's comment line on what `--like` copied.
+fn like_header(like: Option<&Like>) -> String {
+    like.map_or(String::new(), |l| {
+        format!(
+            "# Poisson's ratio, thermal expansion, glass transition, temperature shift and ageing \
+             copied from library compound {} ({} data): see [material.provenance].\n",
+            l.id,
+            l.compound.status.as_str().to_uppercase()
+        )
+    })
+}
+
+/// Lines on stderr: what `--like` copied, and its notes.
+fn print_like(source: &str, like: &Like, copied: &Copied) {
+    eprintln!(
+        "fit-prony: {source}: copied from library compound {} ({}): {}",
+        like.id,
+        like.compound.status.as_str(),
+        copied.keys.join(", ")
+    );
+    for note in &copied.notes {
+        eprintln!("note: {source}: {note}");
+    }
 }
 
 /// The regularisation of a fit in words: method, λ and the effective number of parameters.
@@ -807,19 +1078,27 @@ fn regularisation_note(fit: &Fit) -> String {
 /// poor.
 fn print_summary(source: &str, fit: &Fit) {
     let (widest, at) = fit.widest_relative_band();
+    let band = if widest.is_finite() {
+        format!(
+            "simultaneous 95 % band of E(t) over the data window: ±{:.2} % at most (at t = {} s)",
+            100.0 * widest,
+            crate::units::show(at)
+        )
+    } else {
+        "no uncertainty band: the fit leaves no residual degree of freedom to estimate the \
+         scatter from (give more points)"
+            .to_string()
+    };
     eprintln!(
         "fit-prony: {source}: {} points, {} of {} grid terms kept + E∞; \
          rms relative residual {:.2e}, max {:.2e}\n\
-         fit-prony: {}; simultaneous 95 % band of E(t) over the data window: \
-         ±{:.2} % at most (at t = {} s)",
+         fit-prony: {}; {band}",
         fit.points,
         fit.prony.terms().len(),
         fit.grid_terms,
         fit.rms_relative_residual,
         fit.max_relative_residual,
         regularisation_note(fit),
-        100.0 * widest,
-        crate::units::show(at)
     );
     if fit.rms_relative_residual > POOR_FIT {
         eprintln!(
@@ -837,12 +1116,30 @@ fn default_name(path: &Path) -> String {
         .unwrap_or_else(|| "fitted material".to_string())
 }
 
-/// Data the fit refuses are bad input; a solver failure is an internal error.
+/// Data the fit refuses are bad input; a solver failure is an internal error. Too few points
+/// for plain NNLS name the flags that fix it.
 fn fit_error(path: &Path, e: FitError) -> CliError {
     match e {
         FitError::Solver(_) | FitError::Degenerate(_) => {
             CliError::Internal(format!("{}: {e}", path.display()))
         }
+        FitError::TooFewPoints {
+            points,
+            values,
+            unknowns,
+            max_terms_per_decade,
+        } if points >= 3 => CliError::Input(format!(
+            "{}: --regularisation none: too few points for a fit without smoothing: {points} data \
+             points give {values} values for {unknowns} unknowns (E∞ and {} Prony terms); give \
+             more points, {}or leave out --regularisation none (the default, gcv, takes fewer \
+             points than unknowns)",
+            path.display(),
+            unknowns.saturating_sub(1),
+            match max_terms_per_decade {
+                Some(n) => format!("--terms-per-decade {} or less, ", show(n)),
+                None => String::new(),
+            }
+        )),
         _ => CliError::Input(format!("{}: {e}", path.display())),
     }
 }
@@ -863,12 +1160,12 @@ mod tests {
             &t,
             &e,
             &FitSettings {
-                terms_per_decade: 1,
+                terms_per_decade: 1.0,
                 ..FitSettings::default()
             },
         )
         .unwrap();
-        let m = fitted_material("x".into(), &fit, "data.csv", 1);
+        let m = fitted_material("x".into(), &fit, "data.csv", 1.0);
         assert_eq!(
             m.provenance_of("poisson_ratio"),
             Some(ASSUMED_POISSON_PROVENANCE)
@@ -881,6 +1178,112 @@ mod tests {
         assert_eq!(m.provenance_of("long_term_modulus"), Some(p));
         assert_eq!(m.status, Status::User);
         assert_eq!(default_name(Path::new("dir/nbr-70.csv")), "nbr-70");
+    }
+
+    #[test]
+    fn a_moved_shift_gives_the_same_shift_between_any_two_temperatures() {
+        let wlf = Shift::Wlf {
+            reference: 296.15,
+            c1: 8.28641,
+            c2: 108.6,
+        };
+        let arrhenius = Shift::Arrhenius {
+            reference: 296.15,
+            activation_energy: 9e4,
+        };
+        for shift in [wlf, arrhenius] {
+            let (moved, did) = moved_shift(shift, Some(343.15)).unwrap();
+            assert!(did);
+            assert_eq!(shift_reference(moved), Some(343.15));
+            assert!(moved.log10_factor(343.15).abs() < 1e-12);
+            for (a, b) in [(250.0, 300.0), (300.0, 420.0), (343.15, 380.0)] {
+                let before = shift.log10_factor(a) - shift.log10_factor(b);
+                let after = moved.log10_factor(a) - moved.log10_factor(b);
+                assert!((after - before).abs() < 1e-9, "{shift:?} {a} {b}");
+            }
+        }
+        // the frozen limit T_ref − C2 = 187.55 K
+        assert_eq!(moved_shift(wlf, Some(180.0)), Err(296.15 - 108.6));
+        assert_eq!(moved_shift(wlf, None), Ok((wlf, false)));
+        assert_eq!(moved_shift(wlf, Some(296.15)), Ok((wlf, false)));
+    }
+
+    #[test]
+    fn like_copies_what_the_test_does_not_measure_with_provenance() {
+        let t = crate::math::log_spaced(3600.0, 3.6e6, 7);
+        let e: Vec<f64> = t
+            .iter()
+            .map(|x| 2e6 * (1.0 + 1.0 / (1.0 + x / 1e5)))
+            .collect();
+        let fit = fit_relaxation(&t, &e, &FitSettings::default()).unwrap();
+        let mut m = fitted_material("x".into(), &fit, "data.csv", 0.5);
+        assert!(
+            m.provenance_of("prony")
+                .unwrap()
+                .starts_with("fitted by sealsim fit-prony (NNLS, 0.5 terms per decade)")
+        );
+        m.data_temperature = Some((373.15, 373.15));
+        let like = like_compound("nbr-70").unwrap();
+        let copied = copy_like(&mut m, &like, false, "data.csv").unwrap();
+        let c = &like.compound;
+        assert_eq!(m.poisson_ratio, c.poisson_ratio);
+        assert_eq!(m.thermal_expansion, c.thermal_expansion);
+        assert_eq!(m.glassy_thermal_expansion, c.glassy_thermal_expansion);
+        assert_eq!(m.glass_transition, c.glass_transition);
+        assert_eq!(m.ageing, c.ageing);
+        assert_eq!(m.ageing_basis, c.ageing_basis);
+        assert_eq!(shift_reference(m.shift), Some(373.15));
+        assert_eq!(m.status, Status::User);
+        assert_eq!(m.prony, fit.prony, "the fitted series is kept");
+        for key in copied.keys.iter().copied() {
+            let text = m.provenance_of(key).unwrap();
+            let own = c.provenance_of(key).unwrap();
+            assert!(
+                text.starts_with(&format!(
+                    "copied from library compound nbr-70 (sealsim fit-prony --like): {own}"
+                )),
+                "{key}: {text}"
+            );
+        }
+        assert_eq!(
+            copied.keys,
+            [
+                "poisson_ratio",
+                "glass_transition",
+                "thermal_expansion",
+                "glassy_thermal_expansion",
+                "shift",
+                "ageing"
+            ]
+        );
+        assert!(
+            m.provenance_of("shift")
+                .unwrap()
+                .contains("moved to the test temperature")
+        );
+        // one provenance per key
+        let mut keys: Vec<&str> = m.provenance.iter().map(|(k, _)| k.as_str()).collect();
+        keys.sort_unstable();
+        keys.dedup();
+        assert_eq!(keys.len(), m.provenance.len());
+        // a master curve's own shift is kept
+        let mut master = fitted_material("x".into(), &fit, "data.csv", 3.0);
+        master.shift = Shift::Arrhenius {
+            reference: 300.0,
+            activation_energy: 1e5,
+        };
+        let copied = copy_like(&mut master, &like, true, "data.csv").unwrap();
+        assert!(!copied.keys.contains(&"shift"));
+        assert_eq!(shift_reference(master.shift), Some(300.0));
+        // unknown ids name the flag and list the library
+        let Err(CliError::Input(e)) = like_compound("nosuch") else {
+            panic!("nosuch is not in the library");
+        };
+        assert!(
+            e.starts_with("--like nosuch: unknown library material"),
+            "{e}"
+        );
+        assert!(e.contains("nbr-70") && e.contains("vmq-70"), "{e}");
     }
 
     #[test]

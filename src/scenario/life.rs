@@ -479,11 +479,13 @@ impl Source<'_> {
     /// groove-seated ring's default steel): the rubber's CTE is the material's
     /// `thermal_expansion` (required), the installation temperature defaults to the
     /// environment at t = 0 (to 23 °C in a gland, set by [`Source::gland_seal`]).
+    /// `fix` says where a missing `thermal_expansion` goes ([`Source::material_key_fix`]).
     pub(super) fn thermal_strain(
         &self,
         seal: &SealSpec,
         material: &Material,
         environment: &TemperatureHistory,
+        fix: &str,
     ) -> Result<Option<ThermalStrain>, ScenarioError> {
         let Some(housing) = &seal.housing_expansion else {
             return Ok(None);
@@ -493,14 +495,13 @@ impl Source<'_> {
                 format!(
                     "a groove-seated ring follows the temperature by default (housing \"steel\", \
                      installed at 23 °C; docs/model.md §6.2), which needs the rubber's \
-                     expansion, but the material ({}) gives no thermal_expansion; add \
-                     thermal_expansion to [material]",
+                     expansion, but the material ({}) gives no thermal_expansion; {fix}",
                     material.name
                 )
             } else {
                 format!(
                     "the thermal strain needs the rubber's expansion too, but the material ({}) \
-                     gives no thermal_expansion; add it to [material] or remove {}",
+                     gives no thermal_expansion; {fix}, or remove {}",
                     material.name,
                     housing.key.trim_start_matches("seal.")
                 )

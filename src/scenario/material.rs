@@ -215,6 +215,35 @@ fn rekey(error: ScenarioError, key: &str) -> ScenarioError {
 }
 
 impl Source<'_> {
+    /// Where `key`, missing from the scenario's material, can be given, as the fix of a
+    /// message: a key the program then accepts. An inline `[material]` takes it; a `file`
+    /// material takes no other keys in the scenario, so the key goes into that file (or the
+    /// file is refitted with `fit-prony --like`, which copies it from a library compound); a
+    /// `library` compound (or one `compare` put in) is complete as shipped, so the material
+    /// must be given another way.
+    pub(super) fn material_key_fix(&self, raw: &RawMaterial, replaced: bool, key: &str) -> String {
+        if replaced {
+            return format!(
+                "add `{key}` to [material] in the compared compound's material file (the \
+                 scenario's [material] table does not apply to it)"
+            );
+        }
+        match (&raw.file, &raw.library) {
+            (Some(file), _) => format!(
+                "add `{key}` to [material] in the material file {} itself (a scenario's `file` \
+                 material takes no other keys), or write that file with `sealsim fit-prony \
+                 --like COMPOUND`, which copies `{key}` and the temperature shift from a library \
+                 compound (`sealsim materials list`)",
+                self.relative_path(file.get_ref()).display()
+            ),
+            (None, Some(_)) => format!(
+                "give the material inline in [material] with `{key}` (a `library` material takes \
+                 no other keys)"
+            ),
+            (None, None) => format!("add `{key}` to [material]"),
+        }
+    }
+
     /// The whole text as a material file.
     fn material_file(&self, origin: Origin<'_>) -> Result<Material, ScenarioError> {
         let raw: RawMaterialFile = self.deserialize()?;

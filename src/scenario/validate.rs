@@ -406,7 +406,7 @@ impl Source<'_> {
         let environment = self.environment(raw.environment.as_ref(), &material)?;
         // the static problem's viscosity is the law's at the installation temperature
         let fluid = fluid.at(environment.at(0.0));
-        let cold_fitting = self.fitting_temperature(&raw, &seal, &material, &environment)?;
+        let cold_fitting = self.fitting_temperature(raw, &seal, &material, &environment)?;
         // a ring fitted at another temperature than the environment's first: its temperature
         // settles to the environment's over its thermal time (docs/model.md §5.2)
         let environment = match (seal.fitting_temperature, seal.geometry) {
@@ -417,7 +417,16 @@ impl Source<'_> {
             }
             _ => environment,
         };
-        let thermal_strain = self.thermal_strain(&seal, &material, &environment)?;
+        let thermal_strain = self.thermal_strain(
+            &seal,
+            &material,
+            &environment,
+            &self.material_key_fix(
+                raw.material.get_ref(),
+                replacement.is_some(),
+                "thermal_expansion",
+            ),
+        )?;
         let (ageing, ageing_source) =
             self.scenario_ageing(raw.ageing.as_ref(), &material, replacement.is_some())?;
         let failure = self.failure(raw.failure.as_ref(), &fluid, &environment)?;
@@ -573,7 +582,8 @@ impl Source<'_> {
                          taken as measured, at every temperature of this run ({}–{} K); give \
                          `data_temperature` (fit-prony --temperature) so that a run away from it \
                          is warned about, or a [material.shift] (a master curve from data at \
-                         several temperatures) [docs/model.md §9.13]",
+                         several temperatures, or a library compound's shift copied by \
+                         fit-prony --like) [docs/model.md §9.13]",
                         material.name,
                         show(lo),
                         show(hi)

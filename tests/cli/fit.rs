@@ -276,11 +276,14 @@ fn too_few_points_are_located() {
 
 #[test]
 fn too_few_points_for_the_unknowns_name_both_numbers() {
-    // 4 points over 6 decades: 25 grid terms (3 per decade over 8 decades, plus one) + E∞ = 26 unknowns
-    rejected(
+    // plain NNLS, 4 points over 6 decades: 25 grid terms (3 per decade over 8 decades, plus
+    // one) + E∞ = 26 unknowns
+    rejected_with(
         "t,E\n1,5e6\n1e2,4e6\n1e4,3e6\n1e6,2e6\n",
-        "relaxation",
-        ": too few points: 4 data points give 4 values for 26 unknowns",
+        &["--regularisation", "none"],
+        ": --regularisation none: too few points for a fit without smoothing: 4 data points give \
+         4 values for 26 unknowns (E∞ and 25 Prony terms); give more points, --terms-per-decade \
+         0.25 or less, or leave out --regularisation none",
     );
 }
 
@@ -358,6 +361,9 @@ fn bad_flags_are_usage_errors() {
     for args in [
         vec!["--kind", "relaxation", "--terms-per-decade", "5"],
         vec!["--kind", "relaxation", "--terms-per-decade", "0"],
+        vec!["--kind", "relaxation", "--terms-per-decade", "0.2"],
+        vec!["--kind", "relaxation", "--terms-per-decade", "NaN"],
+        vec!["--kind", "relaxation", "--terms-per-decade", "two"],
         vec!["--kind", "creep"],
         vec![],
         vec!["--kind", "relaxation", "--name", ""],
@@ -807,4 +813,417 @@ fn rejected_with(text: &str, flags: &[&str], needle: &str) {
             data.display()
         )));
     assert!(!out.exists(), "no output file on bad input");
+}
+
+// ---------------------------------------------------------------------------------------
+// What labs report: few readings, and the properties a relaxation test does not measure
+// ---------------------------------------------------------------------------------------
+
+/// A three-term relaxation, τ off the fit grid: E∞ = 2.5 MPa, (0.8 MPa, 1000 s),
+/// (1.2 MPa, 3e4 s), (1.5 MPa, 1e6 s).
+fn three_terms() -> Prony {
+    let terms =
+        [(0.8e6, 1e3), (1.2e6, 3e4), (1.5e6, 1e6)].map(|(modulus, tau)| PronyTerm { modulus, tau });
+    Prony::new(2.5e6, &terms).unwrap()
+}
+
+/// ISO 3384 readings of [`three_terms`] as force retained (%, relative to t = 0) at `hours`.
+fn retained_csv(hours: &[f64]) -> String {
+    let p = three_terms();
+    let mut text = String::from("t,retained\nh,%\n");
+    for h in hours {
+        let _ = writeln!(
+            text,
+            "{h},{:.4}",
+            100.0 * p.relaxation(h * 3600.0) / p.instantaneous()
+        );
+    }
+    text
+}
+
+const SEVEN_HOURS: [f64; 7] = [1.0, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0];
+
+/// The AS568-214 ring of the CSR test (cord 3.53 mm, mean diameter 28.52 mm) at 25 %, with
+/// 300 N at a retention of 1.
+const RING: [&str; 10] = [
+    "--test-piece",
+    "ring",
+    "--cross-section",
+    "3.53mm",
+    "--mean-diameter",
+    "28.52mm",
+    "--squeeze",
+    "25%",
+    "--initial-force",
+    "300N",
+];
+
+/// The rms relative residual the summary on stderr reports.
+fn rms_residual(stderr: &str) -> f64 {
+    let (_, rest) = stderr.split_once("rms relative residual ").unwrap();
+    rest.split(',').next().unwrap().parse().unwrap()
+}
+
+/// The main scenario (AS568 face gland, water at 80 °C) in `dir` with its `[material]` table
+/// replaced by `material`, run; the output.
+fn run_gland(dir: &TempDir, name: &str, material: &str) -> std::process::Output {
+    let shipped = fs::read_to_string(
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scenarios/oring-nbr-water-80c.toml"),
+    )
+    .unwrap();
+    assert!(shipped.contains("[material]\nlibrary = \"nbr-70\"\n"));
+    let text = shipped.replace("[material]\nlibrary = \"nbr-70\"\n", material);
+    let scenario = write(dir, name, &text);
+    cargo_bin_cmd!("sealsim")
+        .arg("run")
+        .arg(&scenario)
+        .output()
+        .unwrap()
+}
+
+#[test]
+fn a_seven_point_csr_test_fitted_like_nbr_70_runs_in_a_gland_as_written() {
+    use sealsim::scenario::library;
+    let dir = TempDir::new().unwrap();
+    let data = write(&dir, "csr7.csv", &retained_csv(&SEVEN_HOURS));
+    let my = dir.path().join("my.toml");
+    let mut args = vec![data.to_str().unwrap(), "--kind", "relaxation"];
+    args.extend(RING);
+    args.extend(["--temperature", "70C", "--like", "nbr-70", "-o"]);
+    args.push(my.to_str().unwrap());
+    let (stdout, stderr) = fit_ok(&args);
+    assert!(stdout.is_empty());
+    // 7 points for 17 unknowns (16 τ at 3 per decade over 1e3 … 1e7 h·s + E∞)
+    assert!(
+        stderr.contains("7 points") && stderr.contains("of 16 grid terms"),
+        "{stderr}"
+    );
+    let rms = rms_residual(&stderr);
+    eprintln!("7-point CSR test: rms relative residual {rms:e}");
+    assert!(rms < 3e-3, "{stderr}");
+    assert!(
+        stderr.contains(
+            "copied from library compound nbr-70 (illustrative): poisson_ratio, \
+             glass_transition, thermal_expansion, glassy_thermal_expansion, shift, ageing"
+        ),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains("a gas run with this file has no permeation"),
+        "{stderr}"
+    );
+    let text = fs::read_to_string(&my).unwrap();
+    assert!(
+        text.contains("copied from library compound nbr-70 (ILLUSTRATIVE data)"),
+        "{text}"
+    );
+    // the series reproduces the retained force of the truth over the test (F ∝ E)
+    let p = series_of(&text);
+    let truth = three_terms();
+    let e1 = p.relaxation(3600.0) / truth.relaxation(3600.0);
+    let ratio = log_spaced(3600.0, 3.6e6, 200)
+        .iter()
+        .map(|&t| (p.relaxation(t) / truth.relaxation(t) / e1 - 1.0).abs())
+        .fold(0.0, f64::max);
+    assert!(ratio < 1e-2, "worst {ratio:e}");
+    // each copied key: the library's value, and its provenance prefixed
+    let doc: toml::Table = toml::from_str(&text).unwrap();
+    let m = doc["material"].as_table().unwrap();
+    let lib: toml::Table = toml::from_str(library::get("nbr-70").unwrap().text).unwrap();
+    let lib = lib["material"].as_table().unwrap();
+    for key in [
+        "poisson_ratio",
+        "glass_transition",
+        "thermal_expansion",
+        "glassy_thermal_expansion",
+        "shift",
+        "ageing",
+    ] {
+        let own = lib["provenance"][key].as_str().unwrap();
+        let copied = m["provenance"][key].as_str().unwrap();
+        assert!(
+            copied.starts_with(&format!(
+                "copied from library compound nbr-70 (sealsim fit-prony --like): {own}"
+            )),
+            "{key}: {copied}"
+        );
+    }
+    assert_eq!(
+        m["poisson_ratio"].as_float(),
+        lib["poisson_ratio"].as_float()
+    );
+    let q = |v: &toml::Value, d| parse_quantity(v.as_str().unwrap(), d).unwrap();
+    assert_eq!(
+        q(&m["thermal_expansion"], Dimension::THERMAL_EXPANSION),
+        q(&lib["thermal_expansion"], Dimension::THERMAL_EXPANSION)
+    );
+    assert_eq!(
+        m["ageing"]["criterion"].as_str(),
+        lib["ageing"]["criterion"].as_str()
+    );
+    // the shift moved to the test temperature, 70 °C: C2' = C2 + 47 K, C1' = C1 C2/C2'
+    let shift = m["shift"].as_table().unwrap();
+    let t_ref = q(&shift["reference_temperature"], Dimension::TEMPERATURE);
+    assert!((t_ref - 343.15).abs() < 1e-9, "{shift:?}");
+    let c2 = q(&shift["c2"], Dimension::TEMPERATURE);
+    assert!((c2 - 155.6).abs() < 1e-9, "{shift:?}");
+    let c1 = shift["c1"].as_float().unwrap();
+    assert!((c1 - 8.28641 * 108.6 / 155.6).abs() < 1e-9, "{shift:?}");
+    assert!(
+        m["provenance"]["shift"]
+            .as_str()
+            .unwrap()
+            .contains("moved to the test temperature")
+    );
+
+    // the file runs in the AS568 face gland of the main scenario, the scenario unchanged but
+    // for the material
+    let out = run_gland(&dir, "s.toml", "[material]\nfile = \"my.toml\"\n");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.contains("result"), "{stdout}");
+}
+
+#[test]
+fn a_seventeen_point_csr_test_fits_at_the_default_settings() {
+    let dir = TempDir::new().unwrap();
+    let mut hours: Vec<f64> = [30.0, 60.0, 180.0, 600.0, 1800.0]
+        .iter()
+        .map(|s| s / 3600.0)
+        .collect();
+    hours.extend([
+        1.0, 2.0, 3.0, 6.0, 10.0, 20.0, 30.0, 60.0, 100.0, 200.0, 300.0, 1000.0,
+    ]);
+    assert_eq!(hours.len(), 17);
+    let data = write(&dir, "csr17.csv", &retained_csv(&hours));
+    let mut args = vec![data.to_str().unwrap(), "--kind", "relaxation"];
+    args.extend(RING);
+    let (stdout, stderr) = fit_ok(&args);
+    // 17 points for 24 unknowns
+    assert!(
+        stderr.contains("17 points") && stderr.contains("of 23 grid terms"),
+        "{stderr}"
+    );
+    let rms = rms_residual(&stderr);
+    eprintln!("17-point CSR test: rms relative residual {rms:e}");
+    assert!(rms < 3e-3, "{stderr}");
+    assert!(stdout.contains("(NNLS, 3 terms per decade)"), "{stdout}");
+    assert!(!stderr.contains("warning"), "{stderr}");
+}
+
+#[test]
+fn fractional_terms_per_decade_are_accepted() {
+    let dir = TempDir::new().unwrap();
+    let data = write(&dir, "plain.csv", &relaxation_csv(false));
+    let (stdout, stderr) = fit_ok(&[
+        data.to_str().unwrap(),
+        "--kind",
+        "relaxation",
+        "--terms-per-decade",
+        "0.5",
+    ]);
+    // 1e-5 … 1e9 s every two decades
+    assert!(stderr.contains("of 8 grid terms"), "{stderr}");
+    assert!(stdout.contains("(NNLS, 0.5 terms per decade)"), "{stdout}");
+    let (stdout, _) = fit_ok(&[
+        data.to_str().unwrap(),
+        "--kind",
+        "relaxation",
+        "--terms-per-decade",
+        "1",
+    ]);
+    assert!(stdout.contains("(NNLS, 1 term per decade)"), "{stdout}");
+    // out of range: a usage error naming the flag and the range
+    cargo_bin_cmd!("sealsim")
+        .arg("fit-prony")
+        .arg(&data)
+        .args(["--kind", "relaxation", "--terms-per-decade", "0.1"])
+        .assert()
+        .code(2)
+        .stderr(
+            predicate::str::contains("--terms-per-decade")
+                .and(predicate::str::contains("from 0.25 to 4 terms per decade")),
+        );
+}
+
+#[test]
+fn an_unknown_like_compound_names_the_flag_and_lists_the_library() {
+    let dir = TempDir::new().unwrap();
+    let data = write(&dir, "csr7.csv", &retained_csv(&SEVEN_HOURS));
+    let out = dir.path().join("my.toml");
+    let mut cmd = cargo_bin_cmd!("sealsim");
+    cmd.arg("fit-prony")
+        .arg(&data)
+        .args(["--kind", "relaxation"])
+        .args(RING)
+        .args(["--like", "nosuch", "-o"])
+        .arg(&out);
+    let assert = cmd.assert().code(2).stdout("");
+    let stderr = String::from_utf8(assert.get_output().stderr.clone()).unwrap();
+    assert!(
+        stderr.contains("--like nosuch: unknown library material \"nosuch\"; the library has: "),
+        "{stderr}"
+    );
+    for id in sealsim::scenario::library::ids() {
+        assert!(stderr.contains(id), "{stderr}");
+    }
+    assert!(!out.exists());
+    assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 1);
+}
+
+#[test]
+fn too_few_points_without_smoothing_are_refused_with_fixes_that_work() {
+    let dir = TempDir::new().unwrap();
+    let data = write(&dir, "csr7.csv", &retained_csv(&SEVEN_HOURS));
+    let out = dir.path().join("my.toml");
+    let mut base = vec![data.to_str().unwrap(), "--kind", "relaxation"];
+    base.extend(RING);
+    base.extend(["-o", out.to_str().unwrap()]);
+    let mut plain = base.clone();
+    plain.extend(["--regularisation", "none"]);
+    let assert = cargo_bin_cmd!("sealsim")
+        .arg("fit-prony")
+        .args(&plain)
+        .assert()
+        .code(2)
+        .stdout("");
+    let stderr = String::from_utf8(assert.get_output().stderr.clone()).unwrap();
+    // 7 points over 3 decades (5 with the grid's margins): at most (7 − 2)/5 = 1 per decade
+    assert!(
+        stderr.contains(&format!(
+            "{}: --regularisation none: too few points for a fit without smoothing: 7 data \
+             points give 7 values for 17 unknowns (E∞ and 16 Prony terms); give more points, \
+             --terms-per-decade 1 or less, or leave out --regularisation none",
+            data.display()
+        )),
+        "{stderr}"
+    );
+    assert!(!out.exists());
+    // the suggested grid is accepted
+    let mut coarser = plain.clone();
+    coarser.extend(["--terms-per-decade", "1"]);
+    let (_, stderr) = fit_ok(&coarser);
+    assert!(
+        stderr.contains("no smoothing") && stderr.contains("of 6 grid terms"),
+        "{stderr}"
+    );
+    fs::remove_file(&out).unwrap();
+    // and so is the default fit
+    let (_, stderr) = fit_ok(&base);
+    assert!(stderr.contains("weight by GCV"), "{stderr}");
+}
+
+#[test]
+fn a_fitted_file_without_thermal_expansion_says_how_to_give_it_and_the_fixes_work() {
+    let dir = TempDir::new().unwrap();
+    let data = write(&dir, "csr7.csv", &retained_csv(&SEVEN_HOURS));
+    let my = dir.path().join("my.toml");
+    let mut args = vec![data.to_str().unwrap(), "--kind", "relaxation"];
+    args.extend(RING);
+    args.extend(["--temperature", "23C", "-o", my.to_str().unwrap()]);
+    fit_ok(&args);
+    // the groove-seated ring needs the rubber's CTE: the message says to put it into the file
+    // (the scenario's `file` material takes no other keys), or to refit with --like
+    let out = run_gland(&dir, "s.toml", "[material]\nfile = \"my.toml\"\n");
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    let fix = format!(
+        "gives no thermal_expansion; add `thermal_expansion` to [material] in the material file \
+         {} itself (a scenario's `file` material takes no other keys), or write that file with \
+         `sealsim fit-prony --like COMPOUND`",
+        my.display()
+    );
+    assert!(stderr.contains(&fix), "{stderr}");
+    // the key beside `file` in the scenario is what the message warns against: refused
+    let out = run_gland(
+        &dir,
+        "beside.toml",
+        "[material]\nfile = \"my.toml\"\nthermal_expansion = \"1.65e-4 1/K\"\n",
+    );
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("a file material takes no other keys"));
+    // fix 1: the key in the material file itself. The scenario's [ageing] then needs its
+    // constants (the fitted file has none): that message's fix, the constants in [ageing],
+    // is given too
+    let text = fs::read_to_string(&my).unwrap();
+    let edited = text.replacen(
+        "data_reduced_time",
+        "thermal_expansion = \"1.65e-4 1/K\"\ndata_reduced_time",
+        1,
+    );
+    fs::write(&my, edited).unwrap();
+    let out = run_gland(&dir, "s.toml", "[material]\nfile = \"my.toml\"\n");
+    let stderr = String::from_utf8_lossy(&out.stderr).to_string();
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("missing key `activation_energy` in [ageing]")
+            && stderr.contains("give activation_energy, rate and reference_temperature"),
+        "{stderr}"
+    );
+    let shipped = fs::read_to_string(
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scenarios/oring-nbr-water-80c.toml"),
+    )
+    .unwrap();
+    let with_constants = shipped
+        .replace(
+            "[material]\nlibrary = \"nbr-70\"\n",
+            "[material]\nfile = \"my.toml\"\n",
+        )
+        .replace(
+            "\n[ageing]",
+            "\n[ageing]\nactivation_energy = \"57.5 kJ/mol\"\nrate = \"1.464e-9 1/s\"\n\
+             reference_temperature = \"23 C\"\n#",
+        );
+    let scenario = write(&dir, "aged.toml", &with_constants);
+    cargo_bin_cmd!("sealsim")
+        .arg("run")
+        .arg(&scenario)
+        .assert()
+        .success();
+    // fix 2: refit with --like
+    fs::remove_file(&my).unwrap();
+    args.extend(["--like", "nbr-70"]);
+    fit_ok(&args);
+    let out = run_gland(&dir, "s.toml", "[material]\nfile = \"my.toml\"\n");
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+#[test]
+fn an_inline_material_without_thermal_expansion_is_told_to_add_it_and_that_works() {
+    let dir = TempDir::new().unwrap();
+    let inline = "[material]\nname = \"inline\"\npoisson_ratio = 0.5\nyoungs_modulus = \"6 MPa\"\n";
+    let shipped = fs::read_to_string(
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scenarios/oring-nbr-water-80c.toml"),
+    )
+    .unwrap();
+    // without the compound's ageing constants, [ageing] needs its own: drop it here
+    let cut = shipped.find("\n[ageing]").unwrap();
+    let base = shipped[..cut].replace("[material]\nlibrary = \"nbr-70\"\n", inline);
+    let scenario = write(&dir, "inline.toml", &base);
+    let assert = cargo_bin_cmd!("sealsim")
+        .arg("run")
+        .arg(&scenario)
+        .assert()
+        .code(2);
+    let stderr = String::from_utf8(assert.get_output().stderr.clone()).unwrap();
+    assert!(
+        stderr.contains("gives no thermal_expansion; add `thermal_expansion` to [material]"),
+        "{stderr}"
+    );
+    let fixed = base.replace(
+        inline,
+        &format!("{inline}thermal_expansion = \"1.65e-4 1/K\"\n"),
+    );
+    let scenario = write(&dir, "inline.toml", &fixed);
+    cargo_bin_cmd!("sealsim")
+        .arg("run")
+        .arg(&scenario)
+        .assert()
+        .success();
 }

@@ -241,7 +241,7 @@ fn a_gland_takes_the_housings_thermal_strain_by_default() {
         .to_string();
     assert!(
         e.contains(":15: seal.gland: a groove-seated ring follows the temperature by default")
-            && e.contains("add thermal_expansion to [material]"),
+            && e.contains("add `thermal_expansion` to [material]"),
         "{e}"
     );
     // without a gland, `housing` switches the thermal strain on like housing_expansion
