@@ -37,8 +37,8 @@ const POOR_FIT: f64 = 0.05;
     --test-piece and --squeeze (forces; retained with --initial-force) or --reference-modulus\n  \
     an optional temperature column (also T; unit C, K or F) gives the test temperature\n  \
     dma:        f,E_stor,E_loss  (f in Hz, or omega in rad/s; also storage/E', loss/E'')\n\
-    Either a second header row of units (pyvisco style: \"s,MPa\" or \"Hz,MPa,MPa\"; E_stor and \
-    E_loss in the same unit) or plain SI values (s, Pa, Hz).\n\
+    A second header row of units is required (pyvisco style: \"s,MPa\" or \"Hz,MPa,MPa\"; E_stor \
+    and E_loss in the same unit).\n\
     The fit: non-negative least squares of E∞ and E_i on log-spaced τ_i over the data window \
     widened by a decade on each side, each point weighted by its relative error. One term per \
     decade leaves a ripple of a few per cent on a smooth spectrum; three make it negligible.\n\
@@ -212,6 +212,14 @@ impl From<KindArg> for FitKind {
 
 /// Runs `sealsim fit-prony`.
 pub fn run(args: FitPronyArgs) -> Result<(), CliError> {
+    super::guard_outputs(
+        &[args.data.as_path()],
+        &[
+            ("-o", args.output.as_deref()),
+            ("--plot-master", args.tts.plot_master.as_deref()),
+            ("--plot-shift", args.tts.plot_shift.as_deref()),
+        ],
+    )?;
     let like = args.like.as_deref().map(like_compound).transpose()?;
     let kind = FitKind::from(args.kind);
     let data = read_fit_data(&args.data, kind).map_err(|e| CliError::Input(e.to_string()))?;

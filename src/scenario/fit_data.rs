@@ -286,13 +286,45 @@ fn parse(text: &str, kind: FitKind) -> Result<FitData, Located> {
         ));
     };
     let mut columns = header_columns(header_line, header, kind)?;
-    // pyvisco style: a second header row of units. Its first cell is never a number (a
-    // retention's unit may be `1`, so the other cells are not a test).
-    if let Some(&(units_line, units_row)) = rows.peek()
-        && cells(units_row).first().is_some_and(|c| !is_number(c))
-    {
-        rows.next();
-        read_units(units_line, units_row, &mut columns)?;
+    // pyvisco style: a second header row of units, required (a bare 24 could be seconds or
+    // hours). Its first cell is never a number (a retention's unit may be `1`, so the other
+    // cells are not a test).
+    match rows.next() {
+        Some((units_line, units_row))
+            if cells(units_row).first().is_some_and(|c| !is_number(c)) =>
+        {
+            read_units(units_line, units_row, &mut columns)?;
+        }
+        Some((line, _)) => {
+            let example: Vec<&str> = columns
+                .iter()
+                .map(|c| match c.quantity {
+                    Quantity::Time => "h",
+                    Quantity::Frequency => "Hz",
+                    Quantity::Omega => "rad/s",
+                    Quantity::Force => "N",
+                    Quantity::Retained => "%",
+                    Quantity::Temperature => "C",
+                    _ => "MPa",
+                })
+                .collect();
+            return Err(at(
+                line,
+                format!(
+                    "no units row: add one after the header, e.g. `{}` — without it a time of \
+                     24 could be seconds or hours",
+                    example.join(",")
+                ),
+            ));
+        }
+        None => {
+            return Err(at(
+                header_line,
+                "no units row and no data: expected a units row after the header, then data \
+                 rows"
+                    .into(),
+            ));
+        }
     }
     let width = columns.len();
     let position = |wanted: fn(Quantity) -> bool| columns.iter().position(|c| wanted(c.quantity));
@@ -763,11 +795,20 @@ mod tests {
     }
 
     #[test]
-    fn plain_files_are_si() {
-        let d = parse_ok("time,E\n1,3e6\n2,2e6\n3,1e6\n", FitKind::Relaxation);
+    fn a_file_without_its_units_row_is_refused() {
+        // `24` could be seconds or hours: the line and a units row the parser takes
+        let e = error("time,E\n1,3e6\n2,2e6\n3,1e6\n", FitKind::Relaxation);
+        assert!(e.starts_with("d.csv:2: no units row"), "{e}");
+        assert!(e.contains("`h,MPa`"), "{e}");
+        let d = parse_ok("time,E\nh,MPa\n1,3\n2,2\n3,1\n", FitKind::Relaxation);
         assert_eq!(d.points(), 3);
-        let d = parse_ok(
+        let e = error(
             "omega,storage,loss\n1,3e6,1e5\n2,3e6,1e5\n3,3e6,1e5\n",
+            FitKind::Dma,
+        );
+        assert!(e.contains("`rad/s,MPa,MPa`"), "{e}");
+        let d = parse_ok(
+            "omega,storage,loss\nrad/s,Pa,Pa\n1,3e6,1e5\n2,3e6,1e5\n3,3e6,1e5\n",
             FitKind::Dma,
         );
         let FitData::Dma { omegas, .. } = d else {
@@ -779,19 +820,19 @@ mod tests {
     #[test]
     fn errors_name_file_and_line() {
         let r = FitKind::Relaxation;
-        let e = error("t,E\n1,3e6\n# c\n2,abc\n3,1\n", r);
-        assert!(e.starts_with("d.csv:4: E: not a number"), "{e}");
-        let e = error("t,E\n1,3e6\n2,2e6\n2,1e6\n", r);
-        assert!(e.starts_with("d.csv:4: t: must increase strictly"), "{e}");
-        let e = error("t,E\n1,3e6\n2,-2e6\n3,1e6\n", r);
-        assert!(e.starts_with("d.csv:3: E: must be positive"), "{e}");
-        let e = error("t,E\n1,3e6\n2,2e6,5\n3,1e6\n", r);
+        let e = error("t,E\ns,Pa\n1,3e6\n# c\n2,abc\n3,1\n", r);
+        assert!(e.starts_with("d.csv:5: E: not a number"), "{e}");
+        let e = error("t,E\ns,Pa\n1,3e6\n2,2e6\n2,1e6\n", r);
+        assert!(e.starts_with("d.csv:5: t: must increase strictly"), "{e}");
+        let e = error("t,E\ns,Pa\n1,3e6\n2,-2e6\n3,1e6\n", r);
+        assert!(e.starts_with("d.csv:4: E: must be positive"), "{e}");
+        let e = error("t,E\ns,Pa\n1,3e6\n2,2e6,5\n3,1e6\n", r);
         assert!(
-            e.starts_with("d.csv:3: expected 2 comma-separated columns"),
+            e.starts_with("d.csv:4: expected 2 comma-separated columns"),
             "{e}"
         );
-        let e = error("t,E\n1,3e6\n2,2e6\n", r);
-        assert!(e.starts_with("d.csv:3: too few points: 2 data rows"), "{e}");
+        let e = error("t,E\ns,Pa\n1,3e6\n2,2e6\n", r);
+        assert!(e.starts_with("d.csv:4: too few points: 2 data rows"), "{e}");
         let e = error("t,E\ns,m\n1,3e6\n2,2e6\n3,1e6\n", r);
         assert!(e.starts_with("d.csv:2: E: unit \"m\" is"), "{e}");
         let e = error("t,E\nMPa,MPa\n1,3e6\n2,2e6\n3,1e6\n", r);
@@ -830,11 +871,11 @@ mod tests {
             "{e}"
         );
         let e = error(
-            "f,E_stor,E_loss\n1,1,1\n2,1,1\n3,1,1\n",
+            "f,E_stor,E_loss\nHz,MPa,MPa\n1,1,1\n2,1,1\n3,1,1\n",
             FitKind::Relaxation,
         );
         assert!(e.contains("DMA data (use --kind dma)"), "{e}");
-        let e = error("f,E_stor\n1,1\n2,1\n3,1\n", d);
+        let e = error("f,E_stor\nHz,MPa\n1,1\n2,1\n3,1\n", d);
         assert!(e.starts_with("d.csv:1: --kind dma expects"), "{e}");
         let e = error("f,omega,E_stor,E_loss\n", d);
         assert!(e.contains("only one time or frequency"), "{e}");
