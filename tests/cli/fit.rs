@@ -29,7 +29,7 @@ fn relaxation_csv(pyvisco: bool) -> String {
     let mut text = if pyvisco {
         "t,E_relax\ns, MPa\n".to_string()
     } else {
-        "# plain SI\ntime,E\n".to_string()
+        "# SI units\ntime,E\ns,Pa\n".to_string()
     };
     for t in log_spaced(1e-4, 1e8, 60) {
         let e = p.relaxation(t);
@@ -49,7 +49,7 @@ fn dma_csv(pyvisco: bool) -> String {
     let mut text = if pyvisco {
         "f, E_stor, E_loss\nHz, MPa, MPa\n".to_string()
     } else {
-        "omega,storage,loss\n".to_string()
+        "omega,storage,loss\nrad/s,Pa,Pa\n".to_string()
     };
     for w in log_spaced(1e-7, 1e3, 60) {
         let (s, l) = (p.storage(w), p.loss(w));
@@ -226,42 +226,42 @@ fn text_cell_is_located() {
 #[test]
 fn non_monotonic_time_is_located() {
     rejected(
-        "t,E\n1,5e6\n3,4e6\n2,3e6\n",
+        "t,E\ns,Pa\n1,5e6\n3,4e6\n2,3e6\n",
         "relaxation",
-        ":4: t: must increase strictly",
+        ":5: t: must increase strictly",
     );
     rejected(
-        "f,E_stor,E_loss\n1,5,1\n1,5,1\n2,5,1\n",
+        "f,E_stor,E_loss\nHz,MPa,MPa\n1,5,1\n1,5,1\n2,5,1\n",
         "dma",
-        ":3: f: must increase strictly",
+        ":4: f: must increase strictly",
     );
 }
 
 #[test]
 fn wrong_column_count_is_located() {
     rejected(
-        "t,E\n1,5e6\n2,4e6,7\n3,3e6\n",
+        "t,E\ns,Pa\n1,5e6\n2,4e6,7\n3,3e6\n",
         "relaxation",
-        ":3: expected 2 comma-separated columns",
+        ":4: expected 2 comma-separated columns",
     );
 }
 
 #[test]
 fn non_positive_values_are_located() {
     rejected(
-        "t,E\n1,5e6\n2,0\n3,3e6\n",
+        "t,E\ns,Pa\n1,5e6\n2,0\n3,3e6\n",
         "relaxation",
-        ":3: E: must be positive",
+        ":4: E: must be positive",
     );
     rejected(
-        "f,E_stor,E_loss\n1,5,1\n2,5,-1\n3,5,1\n",
+        "f,E_stor,E_loss\nHz,MPa,MPa\n1,5,1\n2,5,-1\n3,5,1\n",
         "dma",
-        ":3: E_loss: must be positive",
+        ":4: E_loss: must be positive",
     );
     rejected(
-        "t,E\n0,5e6\n2,4e6\n3,3e6\n",
+        "t,E\ns,Pa\n0,5e6\n2,4e6\n3,3e6\n",
         "relaxation",
-        ":2: t: must be positive",
+        ":3: t: must be positive",
     );
 }
 
@@ -279,7 +279,7 @@ fn too_few_points_for_the_unknowns_name_both_numbers() {
     // plain NNLS, 4 points over 6 decades: 25 grid terms (3 per decade over 8 decades, plus
     // one) + E∞ = 26 unknowns
     rejected_with(
-        "t,E\n1,5e6\n1e2,4e6\n1e4,3e6\n1e6,2e6\n",
+        "t,E\ns,Pa\n1,5e6\n1e2,4e6\n1e4,3e6\n1e6,2e6\n",
         &["--regularisation", "none"],
         ": --regularisation none: too few points for a fit without smoothing: 4 data points give \
          4 values for 26 unknowns (E∞ and 25 Prony terms); give more points, --terms-per-decade \
@@ -380,7 +380,7 @@ fn bad_flags_are_usage_errors() {
 #[test]
 fn existing_output_is_untouched_on_error() {
     let dir = TempDir::new().unwrap();
-    let data = write(&dir, "d.csv", "t,E\n1,5e6\n2,abc\n3,3e6\n");
+    let data = write(&dir, "d.csv", "t,E\ns,Pa\n1,5e6\n2,abc\n3,3e6\n");
     let out = write(&dir, "keep.toml", "old\n");
     cargo_bin_cmd!("sealsim")
         .arg("fit-prony")
