@@ -89,17 +89,16 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
             ("--report", args.report.as_deref()),
         ],
     )?;
-    let floor = super::positive_flag(
-        args.leak_floor.as_deref(),
-        "leak-floor",
-        crate::units::Dimension::VOLUME_FLOW,
-    )?;
     let runs = workflow::compare::compare(
         &args.scenario,
         materials,
         args.fidelity,
         &mut progress_bar("numerical level"),
     )?;
+    let floor = match runs.first() {
+        Some(r) => super::leak_floor_flag(args.leak_floor.as_deref(), &r.scenario.life.fluid)?,
+        None => None,
+    };
     let rows: Vec<CompareRow<'_>> = runs
         .iter()
         .map(|run| CompareRow {

@@ -96,11 +96,7 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
     if let Some(fidelity) = args.fidelity {
         scenario.life.fidelity = fidelity;
     }
-    let given = super::positive_flag(
-        args.leak_floor.as_deref(),
-        "leak-floor",
-        crate::units::Dimension::VOLUME_FLOW,
-    )?;
+    let given = super::leak_floor_flag(args.leak_floor.as_deref(), &scenario.life.fluid)?;
     let result = workflow::life::run(&scenario, &mut progress_bar("numerical level"));
     let file = args.scenario.display().to_string();
     let floor = LeakFloor::of(&scenario.life.fluid, given);
