@@ -156,6 +156,13 @@ pub fn run(args: LeakArgs) -> Result<(), CliError> {
     if let Some(note) = oring_state_note(&scenario) {
         eprintln!("note: {note}");
     }
+    if scenario.life.fluid.gas.is_some() {
+        eprintln!(
+            "note: the throughput columns are the flow through the interface only; permeation \
+             through the rubber is not in them (`sealsim run` adds it where the compound has \
+             permeation data: permeation_Pa_m3_per_s) [docs/model.md §3.9, §13.7]"
+        );
+    }
     write_output(args.output.as_deref(), csv.as_bytes())
 }
 

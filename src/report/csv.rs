@@ -62,17 +62,23 @@ pub fn leak_table(points: &[LeakPoint]) -> Result<String, ReportError> {
 
 /// The leak table of a gas (docs/model.md §3.9): [`LEAK_COLUMNS`] and
 /// `throughput_Pa_m3_per_s`, the pV flow `p̄ × leak_rate_m3_per_s` at the gas temperature (a
-/// gas's leak rate is its volume flow at the mean pressure `mean_pressure` p̄ \[Pa\]).
+/// gas's leak rate is its volume flow at the mean pressure `mean_pressure` p̄ \[Pa\]), and the
+/// same in the leak-test trade's unit, `throughput_mbar_L_per_s` (1 mbar·L/s = 0.1 Pa·m³/s).
+/// Flow through the interface only: permeation through the rubber is not in these columns.
 pub fn gas_leak_table(points: &[LeakPoint], mean_pressure: f64) -> Result<String, ReportError> {
-    const COLUMN: &str = "throughput_Pa_m3_per_s";
+    const COLUMNS: [&str; 2] = ["throughput_Pa_m3_per_s", "throughput_mbar_L_per_s"];
+    /// Pa·m³/s per mbar·L/s: 100 Pa × 1e-3 m³.
+    const MBAR_L: f64 = 0.1;
     table(
         None,
-        &[COLUMN],
+        &COLUMNS,
         points.iter().enumerate().map(|(i, p)| {
+            let q = mean_pressure * p.leak_rate;
             (
                 "",
                 p,
-                number(i + 1, COLUMN, mean_pressure * p.leak_rate).map(|c| vec![c]),
+                number(i + 1, COLUMNS[0], q)
+                    .and_then(|a| number(i + 1, COLUMNS[1], q / MBAR_L).map(|b| vec![a, b])),
             )
         }),
     )
