@@ -228,7 +228,7 @@ pub struct Summary {
     pub states: Vec<StateRecord>,
     /// Time to failure \[s\]; `null` when the seal survives the whole run.
     pub time_to_failure_s: Option<f64>,
-    /// `leak_rate`, `leaked_volume`, `retained_force`, `lift_off`, `extrusion` or `none`.
+    /// The failure mode ([`crate::simulate::FailureMode::as_str`]) or `none`.
     pub failure_mode: String,
     /// Leak rate right after installation (t = 0) \[m³/s\].
     pub initial_leak_rate_m3_per_s: f64,

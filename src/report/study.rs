@@ -38,6 +38,7 @@ pub fn columns(study: &Study) -> Vec<String> {
             "compression_set_end",
             "state_end",
             "warnings",
+            "invalid_reason",
         ]
         .iter()
         .map(|s| (*s).to_owned()),
@@ -64,7 +65,16 @@ pub fn cases_csv(
             Cell::Word(s) => s.clone(),
         }));
         row.push(num(c.life));
-        row.push(if c.failed() { "failed" } else { "censored" }.to_owned());
+        row.push(
+            if c.invalid.is_some() {
+                "invalid"
+            } else if c.failed() {
+                "failed"
+            } else {
+                "censored"
+            }
+            .to_owned(),
+        );
         row.push(c.mode.map_or("", FailureMode::as_str).to_owned());
         row.extend(c.leak_rates.iter().map(|r| opt(*r)));
         row.push(num(c.final_force));
@@ -73,6 +83,7 @@ pub fn cases_csv(
         row.push(opt(c.compression_set));
         row.push(c.final_state.clone());
         row.push(c.warnings.join(";"));
+        row.push(c.invalid.clone().unwrap_or_default());
         w.write_record(&row).map_err(err)?;
     }
     let bytes = w
@@ -212,7 +223,7 @@ pub fn read_part(
         let k = 1 + n_inputs;
         let status = field(k + 1);
         let mode = match (status, field(k + 2)) {
-            ("censored", "") => None,
+            ("censored" | "invalid", "") => None,
             ("failed", m) => Some(FailureMode::from_name(m).ok_or_else(|| {
                 error(
                     Some(line),
@@ -224,7 +235,7 @@ pub fn read_part(
                 return Err(error(
                     Some(line),
                     Some("status"),
-                    format!("\"{s}\": failed (with a mode) or censored"),
+                    format!("\"{s}\": failed (with a mode), censored or invalid"),
                 ));
             }
         };
@@ -233,9 +244,10 @@ pub fn read_part(
             .collect::<Result<_, _>>()?;
         let e = k + 3 + times;
         let final_state = field(e + 4);
-        if !crate::leak::SealState::ALL
-            .iter()
-            .any(|s| s.as_str() == final_state)
+        if final_state != crate::study::case::INVALID_STATE
+            && !crate::leak::SealState::ALL
+                .iter()
+                .any(|s| s.as_str() == final_state)
         {
             return Err(error(
                 Some(line),
@@ -244,6 +256,14 @@ pub fn read_part(
             ));
         }
         let warnings = field(e + 5);
+        let invalid = (status == "invalid").then(|| field(e + 6).to_owned());
+        if status == "invalid" && field(e + 6).is_empty() {
+            return Err(error(
+                Some(line),
+                Some("invalid_reason"),
+                "an invalid case needs its reason".into(),
+            ));
+        }
         out.push(CaseOutcome {
             index,
             inputs,
@@ -260,6 +280,7 @@ pub fn read_part(
             } else {
                 warnings.split(';').map(str::to_owned).collect()
             },
+            invalid,
         });
     }
     Ok(out)
@@ -277,6 +298,7 @@ pub fn summary_json(study: &Study, s: &StudySummary) -> Result<String, serde_jso
     doc.insert("seed".into(), json!(study.plan.seed));
     doc.insert("cases".into(), json!(s.cases));
     doc.insert("failures".into(), json!(s.failures));
+    doc.insert("invalid_cases".into(), json!(s.invalid));
     doc.insert("censored".into(), json!(s.censored));
     doc.insert("confidence".into(), json!(s.confidence));
     for (p, b) in &s.b_lives {
@@ -381,11 +403,17 @@ pub fn summary_table(study: &Study, s: &StudySummary) -> String {
         study.plan.seed,
         study.base_path.display()
     );
-    let modes: Vec<String> = s
+    let mut modes: Vec<String> = s
         .modes
         .iter()
         .map(|(m, n)| format!("{n} by {}", m.as_str()))
         .collect();
+    if s.invalid > 0 {
+        modes.push(format!(
+            "{} invalid (not a valid seal: failed at installation; reasons in the case table)",
+            s.invalid
+        ));
+    }
     out += &format!(
         "failures       {} of {} ({}){}\n",
         s.failures,
@@ -417,6 +445,9 @@ pub fn summary_table(study: &Study, s: &StudySummary) -> String {
         );
     }
     match &s.weibull {
+        None if s.invalid > 0 => {
+            out += "Weibull        no fit (invalid cases fail at installation, life 0)\n";
+        }
         None => out += "Weibull        no fit (fewer than two failures at distinct times)\n",
         Some(w) => {
             out += &format!(

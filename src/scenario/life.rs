@@ -117,6 +117,24 @@ const RETAINED_FORCE_REFERENCE: Field = field(
     "s",
     Bound::Range(0.0, MAX_DURATION),
 );
+const MIN_SEALING_FORCE: Field = field(
+    "failure.min_sealing_force",
+    Dimension::FORCE_PER_LENGTH,
+    "N/m",
+    Bound::Open(0.0, 1e9),
+);
+const MIN_CONTACT_PRESSURE: Field = field(
+    "failure.min_contact_pressure",
+    Dimension::PRESSURE,
+    "Pa",
+    Bound::Open(0.0, 1e10),
+);
+const GASKET_FACTOR: Field = field(
+    "failure.gasket_factor",
+    Dimension::DIMENSIONLESS,
+    "",
+    Bound::Range(0.0, 100.0),
+);
 const MAX_COMPRESSION_SET: Field = field(
     "failure.max_compression_set",
     Dimension::DIMENSIONLESS,
@@ -710,6 +728,10 @@ impl Source<'_> {
                 .unwrap_or(DEFAULT_RETAINED_FORCE_REFERENCE),
             max_compression_set: self
                 .optional(raw.max_compression_set.as_ref(), &MAX_COMPRESSION_SET)?,
+            min_sealing_force: self.optional(raw.min_sealing_force.as_ref(), &MIN_SEALING_FORCE)?,
+            min_contact_pressure: self
+                .optional(raw.min_contact_pressure.as_ref(), &MIN_CONTACT_PRESSURE)?,
+            gasket_factor: self.optional(raw.gasket_factor.as_ref(), &GASKET_FACTOR)?,
             // on unless waived: an open seal is a failed seal
             lift_off: !waived(&raw.lift_off),
             // on unless switched off: it applies to groove-seated rings only

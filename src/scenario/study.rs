@@ -407,6 +407,53 @@ impl Study {
         let assignments: Vec<(&StudyInput, f64)> =
             self.inputs.iter().zip(values.iter().copied()).collect();
         self.scenario_with(&assignments, Some(index))
+            .map_err(|e| self.name_culprits(&assignments, index, e))
+    }
+
+    /// An invalid case's error, at the line of the varied input that makes it invalid: each
+    /// input is tried alone at the case's value (the others at the base's); the first that is
+    /// refused alone is named (issue 30: a cross-section tolerance that unseats the ring is
+    /// named, not the groove depth the message's check happens to read). When no input is
+    /// refused alone the combination is named.
+    fn name_culprits(
+        &self,
+        assignments: &[(&StudyInput, f64)],
+        index: usize,
+        error: ScenarioError,
+    ) -> ScenarioError {
+        if assignments.len() < 2 {
+            return error;
+        }
+        let culprits: Vec<&(&StudyInput, f64)> = assignments
+            .iter()
+            .filter(|a| self.scenario_with(&[**a], None).is_err())
+            .collect();
+        let message = match &error {
+            ScenarioError::Invalid { message, .. } => message.clone(),
+            other => other.to_string(),
+        };
+        match culprits.first() {
+            Some((input, x)) => self.error(
+                input,
+                format!(
+                    "{message} — made invalid by {} (refused on its own at case {index}'s value)",
+                    input.describe(*x)
+                ),
+            ),
+            None => match error {
+                ScenarioError::Invalid {
+                    path, line, key, ..
+                } => ScenarioError::Invalid {
+                    path,
+                    line,
+                    key,
+                    message: format!(
+                        "{message} — made invalid by the combination (each input alone is valid)"
+                    ),
+                },
+                other => other,
+            },
+        }
     }
 
     fn scenario_with(

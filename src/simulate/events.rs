@@ -16,10 +16,14 @@ pub enum FailureMode {
     /// At the shutdown condition (docs/model.md §8.2) the set, cooled ring no longer closes
     /// the roughness, or cannot hold the minimum pressure difference at a restart.
     LostInterference,
+    /// The sealing force per unit length below an absolute minimum (docs/model.md §8).
+    SealingForce,
+    /// The installed contact pressure below an absolute minimum, or below m·ΔP (§8).
+    ContactPressure,
 }
 
 impl FailureMode {
-    pub const ALL: [FailureMode; 7] = [
+    pub const ALL: [FailureMode; 9] = [
         FailureMode::LeakRate,
         FailureMode::LeakedVolume,
         FailureMode::RetainedForce,
@@ -27,6 +31,8 @@ impl FailureMode {
         FailureMode::LiftOff,
         FailureMode::Extrusion,
         FailureMode::LostInterference,
+        FailureMode::SealingForce,
+        FailureMode::ContactPressure,
     ];
 
     /// The mode of its [`FailureMode::as_str`] name.
@@ -43,6 +49,8 @@ impl FailureMode {
             FailureMode::LiftOff => "lift_off",
             FailureMode::Extrusion => "extrusion",
             FailureMode::LostInterference => "lost_interference",
+            FailureMode::SealingForce => "sealing_force",
+            FailureMode::ContactPressure => "contact_pressure",
         }
     }
 }
@@ -69,6 +77,15 @@ pub struct FailureCriteria {
     pub retained_force_reference: f64,
     /// Compression set (ASTM D395 definition) above this fraction.
     pub max_compression_set: Option<f64>,
+    /// The sealing force per unit length `∫ p_sq dx` below this \[N/m\] (absolute: a
+    /// tolerance that lowers the squeeze lowers the life).
+    pub min_sealing_force: Option<f64>,
+    /// The installed (squeeze) peak contact pressure below this \[Pa\].
+    pub min_contact_pressure: Option<f64>,
+    /// The gasket factor m: the installed mean contact pressure below m·ΔP (the gasket
+    /// practice of ASME VIII Div. 1 Appendix 2, whose operating load keeps a contact stress m·P
+    /// on the gasket; docs/model.md §8).
+    pub gasket_factor: Option<f64>,
     /// The fluid pressure opens the contact across the whole width (docs/model.md §3.6).
     pub lift_off: bool,
     /// A groove-seated ring's clearance gap beyond the extrusion chart's limit (§6.3).
@@ -106,6 +123,14 @@ pub struct EventInput {
     pub extruded: bool,
     /// Whether the shutdown check finds the interference lost.
     pub lost_interference: bool,
+    /// Sealing force per unit length of the installed (squeeze) profile \[N/m\].
+    pub sealing_force: f64,
+    /// Peak of the installed (squeeze) profile \[Pa\].
+    pub contact_peak: f64,
+    /// Mean of the installed profile over its width \[Pa\].
+    pub contact_mean: f64,
+    /// The pressure difference ΔP \[Pa\].
+    pub pressure_difference: f64,
 }
 
 impl FailureCriteria {
@@ -116,17 +141,22 @@ impl FailureCriteria {
             && self.max_leaked_volume.is_none()
             && self.min_retained_force.is_none()
             && self.max_compression_set.is_none()
+            && self.min_sealing_force.is_none()
+            && self.min_contact_pressure.is_none()
+            && self.gasket_factor.is_none()
             && !self.lift_off
     }
 
     /// The criteria in the order a tie is broken (several crossed at once, e.g. at
     /// installation): the damage first.
-    const MODES: [FailureMode; 7] = [
+    const MODES: [FailureMode; 9] = [
         FailureMode::Extrusion,
         FailureMode::LiftOff,
         FailureMode::LostInterference,
         FailureMode::LeakRate,
         FailureMode::LeakedVolume,
+        FailureMode::ContactPressure,
+        FailureMode::SealingForce,
         FailureMode::RetainedForce,
         FailureMode::CompressionSet,
     ];
@@ -147,6 +177,13 @@ impl FailureCriteria {
             FailureMode::LiftOff => self.lift_off && x.lifted,
             FailureMode::Extrusion => self.extrusion && x.extruded,
             FailureMode::LostInterference => self.shutdown.is_some() && x.lost_interference,
+            FailureMode::SealingForce => self.min_sealing_force.is_some_and(|m| x.sealing_force < m),
+            FailureMode::ContactPressure => {
+                self.min_contact_pressure.is_some_and(|m| x.contact_peak < m)
+                    || self
+                        .gasket_factor
+                        .is_some_and(|m| x.contact_mean < m * x.pressure_difference)
+            }
         }
     }
 
@@ -228,6 +265,10 @@ mod tests {
             lifted: false,
             extruded: false,
             lost_interference: false,
+            sealing_force: 1.0,
+            contact_peak: 1.0,
+            contact_mean: 1.0,
+            pressure_difference: 0.0,
         };
         let bad = EventInput {
             leak_rate: 2.0,

@@ -410,7 +410,7 @@ impl<'a> Simulator<'a> {
         let first = self.snapshot(&state);
         self.assess(&state, &first, &mut findings);
         let mut rows = vec![self.row(&state, &first)];
-        let mut failure = p.failure.at_start(&first.as_event_input(0.0));
+        let mut failure = p.failure.at_start(&first.as_event_input(0.0, p.fluid.pressure_difference));
         let mut last = first;
 
         let outputs = p.time.times();
@@ -1176,9 +1176,10 @@ impl<'a> Simulator<'a> {
         after_snap: &Snapshot,
     ) -> Option<FailureEvent> {
         let criteria = &self.problem.failure;
+        let dp = self.problem.fluid.pressure_difference;
         let modes = criteria.newly_crossed(
-            &before_snap.as_event_input(before.leaked_volume),
-            &after_snap.as_event_input(after.leaked_volume),
+            &before_snap.as_event_input(before.leaked_volume, dp),
+            &after_snap.as_event_input(after.leaked_volume, dp),
         );
         modes
             .into_iter()
@@ -1200,7 +1201,7 @@ impl<'a> Simulator<'a> {
                     };
                     let mut trial = before.clone();
                     let snap = self.advance(&mut trial, mid, before_snap);
-                    if criteria.crossed(mode, &snap.as_event_input(trial.leaked_volume)) {
+                    if criteria.crossed(mode, &snap.as_event_input(trial.leaked_volume, dp)) {
                         hi = mid;
                     } else {
                         lo = mid;
@@ -1264,7 +1265,7 @@ impl<'a> Simulator<'a> {
 }
 
 impl Snapshot {
-    fn as_event_input(&self, leaked_volume: f64) -> events::EventInput {
+    fn as_event_input(&self, leaked_volume: f64, pressure_difference: f64) -> events::EventInput {
         events::EventInput {
             // a gas's criterion is on what a detector sees: interface + permeation (§8)
             leak_rate: self.leak_rate + self.permeation_flow,
@@ -1276,6 +1277,10 @@ impl Snapshot {
             extruded: self
                 .extrusion
                 .is_some_and(|(ratio, limit)| ratio > 1.0 || limit.over_rated),
+            sealing_force: self.profile.force_per_length(),
+            contact_peak: self.profile.peak(),
+            contact_mean: self.profile.mean(),
+            pressure_difference,
         }
     }
 }

@@ -9,6 +9,9 @@ pub enum Cell {
     Word(String),
 }
 
+/// The `state_end` of an invalid case.
+pub const INVALID_STATE: &str = "invalid";
+
 /// What a study keeps of one case's life run.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CaseOutcome {
@@ -35,6 +38,11 @@ pub struct CaseOutcome {
     pub final_state: String,
     /// The ids of the validity limits the case crossed (docs/model.md §9), sorted.
     pub warnings: Vec<String>,
+    /// Why the case is not a valid scenario (`None`: it ran). An invalid case — a tolerance
+    /// corner that cannot seat the ring, a groove it overfills — is counted as failed at
+    /// installation (life 0; docs/model.md §14.2): the conservative reading, since such a part
+    /// is not a seal.
+    pub invalid: Option<String>,
 }
 
 impl CaseOutcome {
@@ -74,11 +82,30 @@ impl CaseOutcome {
             compression_set: end.and_then(|r| r.compression_set),
             final_state: result.final_state().as_str().to_owned(),
             warnings,
+            invalid: None,
         }
     }
 
-    /// Whether the case failed within its run.
+    /// The record of case `index` with `inputs` that is not a valid scenario, for `reason`.
+    pub fn invalid(index: usize, inputs: Vec<Cell>, reason: String, report_times: usize) -> Self {
+        CaseOutcome {
+            index,
+            inputs,
+            life: 0.0,
+            mode: None,
+            leak_rates: vec![None; report_times],
+            final_force: 0.0,
+            retained_force: 0.0,
+            leaked_volume: 0.0,
+            compression_set: None,
+            final_state: INVALID_STATE.to_owned(),
+            warnings: Vec::new(),
+            invalid: Some(reason),
+        }
+    }
+
+    /// Whether the case failed within its run, or is invalid (failed at installation).
     pub fn failed(&self) -> bool {
-        self.mode.is_some()
+        self.mode.is_some() || self.invalid.is_some()
     }
 }

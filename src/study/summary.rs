@@ -85,7 +85,10 @@ impl WeibullFit {
 #[derive(Debug, Clone, PartialEq)]
 pub struct StudySummary {
     pub cases: usize,
+    /// Failures, the invalid cases included (failed at installation).
     pub failures: usize,
+    /// Cases that are not valid scenarios (their inputs and reasons are in the case table).
+    pub invalid: usize,
     /// Survivors: censored at the end of their run.
     pub censored: usize,
     /// Failures by mode, in the order of [`FailureMode`]'s names.
@@ -121,7 +124,13 @@ impl StudySummary {
             }
         }
         modes.sort_by_key(|(m, _)| m.as_str());
-        let weibull = WeibullFit::new(&observations, &km);
+        let invalid = outcomes.iter().filter(|c| c.invalid.is_some()).count();
+        // failures at installation (life 0) are not a Weibull population: no fit with them
+        let weibull = if invalid == 0 {
+            WeibullFit::new(&observations, &km)
+        } else {
+            None
+        };
         let life: Vec<f64> = observations.iter().map(|o| o.time).collect();
         let inputs = outcomes.first().map_or(0, |c| c.inputs.len());
         let columns: Vec<Column> = (0..inputs).map(|j| column(outcomes, j)).collect();
@@ -147,6 +156,7 @@ impl StudySummary {
         StudySummary {
             cases: outcomes.len(),
             failures,
+            invalid,
             censored: outcomes.len() - failures,
             modes,
             confidence,
@@ -260,6 +270,7 @@ mod tests {
             compression_set: None,
             final_state: "sealed".into(),
             warnings: vec!["x".into()],
+            invalid: None,
         };
         let cases = vec![
             outcome(5.0, Some(FailureMode::LeakRate), 3.0),

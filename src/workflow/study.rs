@@ -28,23 +28,24 @@ use std::sync::{Arc, Mutex};
 pub type SharedProgress<'a> = &'a (dyn Fn(usize, usize) + Sync);
 
 /// The scenarios of the cases from index `first` with the input `values` (the design's, in
-/// case order), each validated; the first invalid case (lowest index) is the error, located at
-/// the study file's line of the input.
+/// case order), each validated: an invalid case is its error, located at the study file's line
+/// of the varied input that makes it invalid.
 pub fn scenarios(
     study: &Study,
     first: usize,
     values: &[Vec<f64>],
-) -> Result<Vec<Scenario>, ScenarioError> {
-    let results: Vec<Result<Scenario, ScenarioError>> = values
+) -> Vec<Result<Scenario, ScenarioError>> {
+    values
         .par_iter()
         .enumerate()
         .map(|(k, v)| study.scenario(first + k, v))
-        .collect();
-    results.into_iter().collect()
+        .collect()
 }
 
-/// The outcomes of cases `range` of `study` (validated first: on an invalid case nothing runs),
-/// on `threads` threads (`None`: all cores).
+/// The outcomes of cases `range` of `study`, on `threads` threads (`None`: all cores). An
+/// invalid case is recorded with its reason and counted as failed at installation
+/// ([`CaseOutcome::invalid`]); the rest run. Only a study none of whose cases is valid is an
+/// error (its first case's).
 pub fn run(
     study: &Study,
     range: Range<usize>,
@@ -62,7 +63,12 @@ pub fn run(
         })?;
     pool.install(|| {
         let values = study.plan.values(range.clone());
-        let scenarios = scenarios(study, range.start, &values)?;
+        let mut scenarios = scenarios(study, range.start, &values);
+        if range.len() == study.cases() && scenarios.iter().all(Result::is_err) {
+            if let Some(Err(e)) = scenarios.drain(..).next() {
+                return Err(e);
+            }
+        }
         Ok(run_scenarios(
             study,
             range.start,
@@ -113,19 +119,26 @@ fn run_scenarios(
     study: &Study,
     first: usize,
     values: &[Vec<f64>],
-    scenarios: &[Scenario],
+    scenarios: &[Result<Scenario, ScenarioError>],
     progress: SharedProgress<'_>,
 ) -> Vec<CaseOutcome> {
-    // group the cases by contact path (exact equality behind the hash)
-    let keys: Vec<PathKey> = scenarios.iter().map(PathKey::of).collect();
+    // group the valid cases by contact path (exact equality behind the hash)
+    let keys: Vec<Option<PathKey>> = scenarios
+        .iter()
+        .map(|s| s.as_ref().ok().map(PathKey::of))
+        .collect();
     let mut by_hash: HashMap<u64, Vec<usize>> = HashMap::new();
     let mut slot_of = Vec::with_capacity(keys.len());
     let mut representative: Vec<usize> = Vec::new();
     for (i, key) in keys.iter().enumerate() {
+        let Some(key) = key else {
+            slot_of.push(usize::MAX);
+            continue;
+        };
         let candidates = by_hash.entry(key.hash()).or_default();
         let slot = match candidates
             .iter()
-            .find(|&&s| keys[representative[s]] == *key)
+            .find(|&&s| keys[representative[s]].as_ref() == Some(key))
         {
             Some(&s) => s,
             None => {
@@ -149,7 +162,24 @@ fn run_scenarios(
     (0..total)
         .into_par_iter()
         .map(|i| {
-            let scenario = &scenarios[i];
+            let inputs: Vec<Cell> = study
+                .inputs
+                .iter()
+                .zip(&values[i])
+                .map(|(input, &x)| input.cell(x))
+                .collect();
+            let scenario = match &scenarios[i] {
+                Ok(s) => s,
+                Err(e) => {
+                    progress(done.fetch_add(1, Ordering::AcqRel) + 1, total);
+                    return CaseOutcome::invalid(
+                        first + i,
+                        inputs,
+                        e.to_string(),
+                        study.report_times.len(),
+                    );
+                }
+            };
             let slot = &slots[slot_of[i]];
             let shared = {
                 let mut guard = slot.path.lock().unwrap_or_else(|p| p.into_inner());
@@ -173,12 +203,6 @@ fn run_scenarios(
             if slot.remaining.fetch_sub(1, Ordering::AcqRel) == 1 {
                 *slot.path.lock().unwrap_or_else(|p| p.into_inner()) = None;
             }
-            let inputs: Vec<Cell> = study
-                .inputs
-                .iter()
-                .zip(&values[i])
-                .map(|(input, &x)| input.cell(x))
-                .collect();
             let outcome = CaseOutcome::new(first + i, inputs, &result, &study.report_times);
             progress(done.fetch_add(1, Ordering::AcqRel) + 1, total);
             outcome

@@ -294,17 +294,17 @@ fn bad_studies_exit_2_naming_file_line_and_key_and_write_nothing() {
         assert!(err.contains(wanted), "{entry}: wanted {wanted} in {err}");
         assert!(!out.exists());
     }
-    // a case the scenario refuses: named with its inputs, at the input's line
+    // a study none of whose cases the scenario accepts (a study with some valid cases
+    // records the others: `invalid_cases_are_recorded_…`): named with its inputs, at the
+    // input's line
     let study = d.write(
         "bad.toml",
-        &format!(
-            "{head}\"seal.groove_depth\" = {{ values = [\"-1 mm\", \"2.6 mm\", \"2.65 mm\"] }}\n"
-        )
+        &format!("{head}\"seal.groove_depth\" = {{ values = [\"-1 mm\", \"-2 mm\"] }}\n")
         .replace("samples = 4", "samples = 12"),
     );
     let err = study_bad(&[&study, &"-o", &out]);
     assert!(err.contains(":5: vary.\"seal.groove_depth\""), "{err}");
-    assert!(err.contains("case "), "{err}");
+    assert!(err.contains("not a valid scenario"), "{err}");
     assert!(!out.exists());
     // a shard out of range
     let good = headline_study(&d, 8);
@@ -478,4 +478,137 @@ fn correlated_inputs_follow_their_rank_correlation_and_bad_ones_are_refused() {
     let err = study_bad(&[&contradicting, &"-o", &out]);
     assert!(err.contains("contradict"), "{err}");
     assert!(!out.exists());
+}
+
+/// The shipped AS568-225 tolerance base with an absolute force criterion (1.5 N/mm) and the
+/// shutdown check waived, so that the life is set by the force alone.
+fn absolute_force_base(d: &Dir) -> PathBuf {
+    let shipped = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenarios/studies/as568-225-face-water-80c.toml");
+    let text = std::fs::read_to_string(shipped).unwrap().replace(
+        "lift_off = true",
+        "lift_off = true\nlost_interference = false\nmin_sealing_force = \"1.5 N/mm\"",
+    );
+    assert!(text.contains("min_sealing_force"));
+    d.write("base.toml", &text)
+}
+
+fn groove_study(d: &Dir, name: &str, tolerance: &str, samples: usize) -> PathBuf {
+    d.write(
+        name,
+        &format!(
+            "base = \"base.toml\"\ndesign = \"latin-hypercube\"\nsamples = {samples}\nseed = 7\n\
+             [vary]\n\"seal.groove_depth\" = {{ tolerance = \"±{tolerance}\" }}\n"
+        ),
+    )
+}
+
+fn summary_b10(d: &Dir, study: &Path, tag: &str) -> f64 {
+    let summary = d.path(&format!("{tag}.json"));
+    let cases = d.path(&format!("{tag}.csv"));
+    study_ok(&[&study, &"-o", &cases, &"--summary", &summary]);
+    json(&d.read(&format!("{tag}.json")))["b10_s"]
+        .as_f64()
+        .unwrap()
+}
+
+/// Issue 30: with an absolute criterion the squeeze tolerance decides the life. The life falls
+/// monotonically with the groove depth (less squeeze, less force), so B10 is the life of the
+/// ring at the depth's 90 % quantile — for a ±3σ band of a normal truncated at the band,
+/// z = Φ⁻¹(Φ(−3) + 0.9 (1 − 2Φ(−3))) = 1.2754 — computed here by an independent `run`.
+#[test]
+fn an_absolute_force_criterion_makes_b10_move_with_the_tolerance_band() {
+    let d = Dir::new();
+    let base = absolute_force_base(&d);
+    let narrow = groove_study(&d, "narrow.study.toml", "0.02 mm", 200);
+    let wide = groove_study(&d, "wide.study.toml", "0.10 mm", 200);
+    let b10_narrow = summary_b10(&d, &narrow, "narrow");
+    let b10_wide = summary_b10(&d, &wide, "wide");
+    assert!(
+        b10_wide < 0.9 * b10_narrow,
+        "B10 {b10_wide} s (±0.10 mm) vs {b10_narrow} s (±0.02 mm)"
+    );
+    let n = Normal::new(0.0, 1.0).unwrap();
+    let tail = n.cdf(-3.0);
+    let z = n.inverse_cdf(tail + 0.9 * (1.0 - 2.0 * tail));
+    assert!((z - 1.2754).abs() < 1e-3, "{z}");
+    let depth_mm = 2.65 + z * 0.10 / 3.0;
+    let text = std::fs::read_to_string(&base).unwrap().replace(
+        "groove_depth = \"2.65 mm\"",
+        &format!("groove_depth = \"{depth_mm} mm\""),
+    );
+    let quantile = d.write("quantile.toml", &text);
+    let summary = d.path("quantile.json");
+    let history = d.path("quantile.csv");
+    crate::support::sealsim_ok(&[&"run", &quantile, &"-o", &history, &"--summary", &summary]);
+    let s = json(&d.read("quantile.json"));
+    assert_eq!(s["failure_mode"], "sealing_force", "{s}");
+    let life = s["time_to_failure_s"].as_f64().unwrap();
+    assert!(
+        (b10_wide / life - 1.0).abs() < 0.03,
+        "B10 {b10_wide} s vs the life at the 90 % depth quantile {life} s"
+    );
+}
+
+/// Issue 30: a study finishes when some cases are not valid seals — each is recorded with its
+/// inputs and its reason, which names the varied input that makes it invalid (the cross-section
+/// that overfills the groove, not the groove line the fill check reads), and counted as failed
+/// at installation.
+#[test]
+fn invalid_cases_are_recorded_counted_and_named_by_their_varied_input() {
+    let d = Dir::new();
+    absolute_force_base(&d);
+    let study = d.write(
+        "mixed.study.toml",
+        "base = \"base.toml\"\ndesign = \"latin-hypercube\"\nsamples = 50\nseed = 7\n[vary]\n\
+         \"seal.groove_depth\" = { tolerance = \"±0.02 mm\" }\n\
+         \"seal.cross_section\" = { tolerance = \"±1.2 mm\" }\n",
+    );
+    let cases = d.path("cases.csv");
+    let summary = d.path("summary.json");
+    study_ok(&[&study, &"-o", &cases, &"--summary", &summary]);
+    let s = json(&d.read("summary.json"));
+    let invalid = s["invalid_cases"].as_u64().unwrap();
+    assert!(invalid > 0 && invalid < 50, "{s}");
+    let table = d.read("cases.csv");
+    let mut reader = csv::Reader::from_reader(table.as_bytes());
+    let header = reader.headers().unwrap().clone();
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let (status, reason, life, cs) = (
+        col("status"),
+        col("invalid_reason"),
+        col("life_s"),
+        col("seal.cross_section_m"),
+    );
+    let mut seen = 0;
+    for row in reader.records() {
+        let row = row.unwrap();
+        if &row[status] == "invalid" {
+            seen += 1;
+            assert_eq!(&row[life], "0");
+            assert!(row[reason].contains("mixed.study.toml:7:"), "{}", &row[reason]);
+            assert!(
+                row[reason].contains("made invalid by seal.cross_section"),
+                "{}",
+                &row[reason]
+            );
+            // only cords far from the nominal 3.53 mm overfill the groove or fail to seat
+            let cord = row[cs].parse::<f64>().unwrap();
+            assert!((cord - 3.53e-3).abs() > 0.3e-3, "{cord}");
+        } else {
+            assert!(row[reason].is_empty());
+        }
+    }
+    assert_eq!(seen as u64, invalid);
+    // the failures count the invalid cases; B1 is the installation
+    assert_eq!(s["failures"].as_u64().unwrap(), 50);
+    assert_eq!(s["b1_s"].as_f64(), Some(0.0));
+    // the merge path reads invalid cases back: a shard's part file round-trips
+    let part = d.path("part.csv");
+    study_ok(&[&study, &"--shard", &"1/1", &"-o", &part]);
+    let merged = d.path("merged.json");
+    study_ok(&[&"merge", &study, &part, &"--summary", &merged]);
+    let m = json(&d.read("merged.json"));
+    assert_eq!(m["invalid_cases"], s["invalid_cases"]);
+    assert_eq!(m["b50_s"], s["b50_s"]);
 }
