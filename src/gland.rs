@@ -27,7 +27,10 @@
 //! * gland fill `F = (π d′²/4)/(h w)`, w the groove width; warned above
 //!   [`MAX_FILL_GUIDANCE`] = 90 % at maximum material condition (Parker, "Gland overfill",
 //!   <https://www.parker.com/us/en/divisions/o-ring-and-engineered-seals-division/resources/oring-ehandbook/failure-modes/gland-overfill.html>:
-//!   "a maximum material condition gland fill of 90%"), refused at 100 % (the ring does not fit).
+//!   "a maximum material condition gland fill of 90%") or [`NOMINAL_FILL_GUIDANCE`] = 85 %
+//!   nominal, and below [`MIN_FILL_GUIDANCE`] = 50 % (a mis-specified groove); refused at
+//!   100 % (the ring does not fit);
+//! * stretch warned above [`MAX_STRETCH_GUIDANCE`] = 5 %, refused at [`MAX_STRETCH`] = 50 %.
 
 use std::f64::consts::PI;
 use std::fmt;
@@ -74,6 +77,31 @@ pub struct Gland {
 /// condition gland fill of 90%", stretchable to 95 % with little fluid swell or thermal
 /// expansion).
 pub const MAX_FILL_GUIDANCE: f64 = 0.90;
+
+/// Nominal gland fill above which a warning is given: 0.85 (O-Ring Supply Co., "O-Ring Groove
+/// Design Guide", <https://oringsupplyco.com/blog/o-ring-groove-design-guide/>: "65–85% fill
+/// rate … Always verify fill rate stays below 85% at ambient — thermal expansion and fluid
+/// swell will increase it further in service").
+pub const NOMINAL_FILL_GUIDANCE: f64 = 0.85;
+
+/// Nominal gland fill below which the groove is taken as mis-specified (a warning): 0.5, well
+/// under the 65 % low end of the range above — a ring that fills half its groove or less
+/// shifts and rolls in it; a fill of a few per cent is a groove width or depth in the wrong
+/// unit.
+pub const MIN_FILL_GUIDANCE: f64 = 0.5;
+
+/// Installed stretch of the ID above which a warning is given: 5 % (Parker's gland-design
+/// note, re-posted at <https://www.gallagherseals.com/blog/how-to-design-o-ring-gland-stretch>:
+/// "For male groove designs, up to 5% stretch is recommended"; Apple Rubber, "Dimensional
+/// considerations": "A stretch greater than 5% is not recommended. The resulting stress on the
+/// O-ring will cause accelerated aging and cross section reduction").
+pub const MAX_STRETCH_GUIDANCE: f64 = 0.05;
+
+/// Installed stretch at or above which the ring is refused: 50 %, the most an O-ring may be
+/// stretched even momentarily to mount it (Cutler Group, "What is stretch of O-ring?": "it
+/// should stretch no more than 50%"); held in service it is not a seal (its cord thins by a
+/// fifth and it ages under the strain).
+pub const MAX_STRETCH: f64 = 0.5;
 
 /// An O-ring as made: free inside diameter and cross-section with their (±) tolerances \[m\].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -153,6 +181,8 @@ pub enum GlandError {
     GrooveTooDeep { cross_section: f64, depth: f64 },
     /// Gland fill ≥ 100 %.
     Overfilled { fill: f64 },
+    /// Installed stretch ≥ [`MAX_STRETCH`].
+    Overstretched { stretch: f64 },
 }
 
 impl fmt::Display for GlandError {
@@ -181,6 +211,14 @@ impl fmt::Display for GlandError {
                 show(cross_section),
                 show(depth),
                 show(100.0 * (1.0 - depth / cross_section))
+            ),
+            GlandError::Overstretched { stretch } => write!(
+                f,
+                "the ring cannot be seated: it would be stretched {} % onto its seat (refused \
+                 at {} %, the most an O-ring may be stretched even to mount it; 5 % is the \
+                 recommended limit): choose a ring with a larger inside diameter",
+                show((1000.0 * stretch).round() / 10.0),
+                show(100.0 * MAX_STRETCH)
             ),
             GlandError::Overfilled { fill } => write!(
                 f,
@@ -243,6 +281,11 @@ impl GlandDesign {
         }
         if inst.fill >= 1.0 {
             return Err(GlandError::Overfilled { fill: inst.fill });
+        }
+        if inst.stretch >= MAX_STRETCH {
+            return Err(GlandError::Overstretched {
+                stretch: inst.stretch,
+            });
         }
         Ok(inst)
     }

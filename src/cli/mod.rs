@@ -362,8 +362,7 @@ pub(crate) fn leak_floor_flag(
         },
         _ => {
             if crate::units::parse_throughput(text, 293.15).is_ok()
-                && crate::units::parse_quantity(text, crate::units::Dimension::VOLUME_FLOW)
-                    .is_err()
+                && crate::units::parse_quantity(text, crate::units::Dimension::VOLUME_FLOW).is_err()
             {
                 return Err(bad(format!(
                     "{text:?} is a gas throughput, but the fluid is a liquid: give a volume flow, \

@@ -21,7 +21,10 @@ use super::error::{ScenarioError, Source};
 use super::life::{HousingExpansion, SealSpec};
 use super::raw::{Quantity, RawSeal};
 use super::validate::{Bound, Field, field};
-use crate::gland::{GlandDesign, GlandError, GlandKind, Locator, MAX_FILL_GUIDANCE, Ring};
+use crate::gland::{
+    GlandDesign, GlandError, GlandKind, Locator, MAX_FILL_GUIDANCE, MAX_STRETCH_GUIDANCE,
+    MIN_FILL_GUIDANCE, NOMINAL_FILL_GUIDANCE, Ring,
+};
 use crate::seal::{SealGeometry, VolumeSwell};
 use crate::simulate::Loading;
 use crate::units::{Dimension, show};
@@ -435,21 +438,60 @@ impl Source<'_> {
         let fill = design
             .max_material_fill()
             .map_err(|e| self.gland_error(&e, depth_span.clone(), depth_key, table, locator_key))?;
-        if fill > MAX_FILL_GUIDANCE {
-            let span = raw
-                .groove_width
-                .as_ref()
-                .map_or(table.span(), Spanned::span);
+        let width_span = raw
+            .groove_width
+            .as_ref()
+            .map_or(table.span(), Spanned::span);
+        let percent = |x: f64| show((1000.0 * x).round() / 10.0);
+        if fill > MAX_FILL_GUIDANCE || installed.fill > NOMINAL_FILL_GUIDANCE {
+            warnings.push(
+                self.error(
+                    width_span.clone(),
+                    GROOVE_WIDTH.key,
+                    format!(
+                        "gland fill {} % nominal, {} % at maximum material condition: above the \
+                         85 % nominal (O-Ring Supply Co.) or 90 % maximum-material (Parker, gland \
+                         overfill) guidance: little room for thermal expansion or swell{swollen}; \
+                         widen the groove [docs/model.md §6.2]",
+                        percent(installed.fill),
+                        percent(fill)
+                    ),
+                )
+                .to_string(),
+            );
+        } else if installed.fill < MIN_FILL_GUIDANCE {
+            warnings.push(
+                self.error(
+                    width_span,
+                    GROOVE_WIDTH.key,
+                    format!(
+                        "gland fill {} %: the ring fills less than half its groove (the usual \
+                         range is 65–85 %, O-Ring Supply Co.): it can shift and roll — is the \
+                         groove width or depth in the intended unit? [docs/model.md §6.2]",
+                        percent(installed.fill)
+                    ),
+                )
+                .to_string(),
+            );
+        }
+        if installed.stretch > MAX_STRETCH_GUIDANCE {
+            let span = match locator_key {
+                "seal.groove_outer_diameter" => raw.groove_outer_diameter.as_ref(),
+                "seal.groove_inner_diameter" => raw.groove_inner_diameter.as_ref(),
+                "seal.bore_diameter" => raw.bore_diameter.as_ref(),
+                "seal.rod_diameter" => raw.rod_diameter.as_ref(),
+                _ => None,
+            }
+            .map_or(table.span(), Spanned::span);
             warnings.push(
                 self.error(
                     span,
-                    GROOVE_WIDTH.key,
+                    locator_key,
                     format!(
-                        "gland fill {} % at maximum material condition (nominal {} %) is above \
-                         the 90 % guidance (Parker, gland overfill): little room for thermal \
-                         expansion or swell{swollen} [docs/model.md §6.2]",
-                        show((1000.0 * fill).round() / 10.0),
-                        show((1000.0 * installed.fill).round() / 10.0)
+                        "the ring is stretched {} % onto its seat, above the 5 % recommended \
+                         (Parker; Apple Rubber: more ages it faster and thins its cord): choose \
+                         a ring with a larger inside diameter [docs/model.md §6.2]",
+                        percent(installed.stretch)
                     ),
                 )
                 .to_string(),
@@ -544,7 +586,7 @@ impl Source<'_> {
                 GROOVE_WIDTH.key,
                 e.to_string(),
             ),
-            GlandError::CannotSeat { .. } => {
+            GlandError::CannotSeat { .. } | GlandError::Overstretched { .. } => {
                 self.error(span_of(locator_key), locator_key, e.to_string())
             }
         }

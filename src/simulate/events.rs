@@ -177,9 +177,12 @@ impl FailureCriteria {
             FailureMode::LiftOff => self.lift_off && x.lifted,
             FailureMode::Extrusion => self.extrusion && x.extruded,
             FailureMode::LostInterference => self.shutdown.is_some() && x.lost_interference,
-            FailureMode::SealingForce => self.min_sealing_force.is_some_and(|m| x.sealing_force < m),
+            FailureMode::SealingForce => {
+                self.min_sealing_force.is_some_and(|m| x.sealing_force < m)
+            }
             FailureMode::ContactPressure => {
-                self.min_contact_pressure.is_some_and(|m| x.contact_peak < m)
+                self.min_contact_pressure
+                    .is_some_and(|m| x.contact_peak < m)
                     || self
                         .gasket_factor
                         .is_some_and(|m| x.contact_mean < m * x.pressure_difference)

@@ -410,7 +410,9 @@ impl<'a> Simulator<'a> {
         let first = self.snapshot(&state);
         self.assess(&state, &first, &mut findings);
         let mut rows = vec![self.row(&state, &first)];
-        let mut failure = p.failure.at_start(&first.as_event_input(0.0, p.fluid.pressure_difference));
+        let mut failure = p
+            .failure
+            .at_start(&first.as_event_input(0.0, p.fluid.pressure_difference));
         let mut last = first;
 
         let outputs = p.time.times();

@@ -200,3 +200,62 @@ fn an_unknown_size_exits_2_with_the_nearest() {
             "expected an AS568 size such as \"AS568-214\"",
         ));
 }
+
+/// Issue 30: the gland checks engineers rely on — installation stretch (warned above 5 %,
+/// refused at 50 %), gland fill above 85 % nominal, a nearly empty groove.
+#[test]
+fn stretch_and_fill_outside_the_guidance_warn_and_a_ring_that_cannot_seat_is_refused() {
+    // AS568-214 (ID 24.99 mm) in a piston groove of depth 2.85 mm: groove bottom B − 2h; on a
+    // 34 mm bore 28.3 mm, a stretch of 28.3/24.99 − 1 = 13.2 %
+    let (code, _, stderr, _, path) = run(&PISTON.replace("\"31.75 mm\"", "\"34 mm\""));
+    assert_eq!(code, Some(0), "{stderr}");
+    assert!(
+        stderr.contains(&format!(
+            "warning: {path}:16: seal.bore_diameter: the ring is stretched 13.2 %"
+        )),
+        "{stderr}"
+    );
+    // the shipped bore (stretch 4.2 %) and width (fill 70.6 %) draw neither warning
+    let (code, _, stderr, _, _) = run(PISTON);
+    assert_eq!(code, Some(0), "{stderr}");
+    assert!(
+        !stderr.contains("the ring is stretched") && !stderr.contains("gland fill"),
+        "{stderr}"
+    );
+    // cord area 9.4596 mm² in 2.85 mm × 3.85 mm: nominal fill 86.2 % > 85 %
+    let (code, _, stderr, _, path) = run(&PISTON.replace("\"4.7 mm\"", "\"3.85 mm\""));
+    assert_eq!(code, Some(0), "{stderr}");
+    assert!(
+        stderr.contains(&format!(
+            "warning: {path}:18: seal.groove_width: gland fill 86.2 % nominal"
+        )),
+        "{stderr}"
+    );
+    // a 7 mm wide groove: 47.4 % — the ring rolls in it
+    let (code, _, stderr, _, path) = run(&PISTON.replace("\"4.7 mm\"", "\"7 mm\""));
+    assert_eq!(code, Some(0), "{stderr}");
+    assert!(
+        stderr.contains(&format!(
+            "warning: {path}:18: seal.groove_width: gland fill 47.4 %: the ring fills less than half"
+        )),
+        "{stderr}"
+    );
+    // on a 45 mm bore the groove bottom is 39.3 mm: 57 % stretch — refused, nothing written,
+    // and the fix it names (a larger ring, e.g. AS568-224 with ID 37.69 mm: 4.3 %) runs
+    let (code, stdout, stderr, written, path) = run(&PISTON.replace("\"31.75 mm\"", "\"45 mm\""));
+    assert_eq!(code, Some(2), "{stderr}");
+    assert!(
+        stderr.contains(&format!(
+            "{path}:16: seal.bore_diameter: the ring cannot be seated"
+        )),
+        "{stderr}"
+    );
+    assert!(stderr.contains("larger inside diameter"), "{stderr}");
+    assert!(!written && stdout.is_empty());
+    let fixed = PISTON
+        .replace("\"31.75 mm\"", "\"45 mm\"")
+        .replace("AS568-214", "AS568-224");
+    let (code, _, stderr, _, _) = run(&fixed);
+    assert_eq!(code, Some(0), "{stderr}");
+    assert!(!stderr.contains("the ring is stretched"), "{stderr}");
+}

@@ -300,7 +300,7 @@ fn bad_studies_exit_2_naming_file_line_and_key_and_write_nothing() {
     let study = d.write(
         "bad.toml",
         &format!("{head}\"seal.groove_depth\" = {{ values = [\"-1 mm\", \"-2 mm\"] }}\n")
-        .replace("samples = 4", "samples = 12"),
+            .replace("samples = 4", "samples = 12"),
     );
     let err = study_bad(&[&study, &"-o", &out]);
     assert!(err.contains(":5: vary.\"seal.groove_depth\""), "{err}");
@@ -586,7 +586,11 @@ fn invalid_cases_are_recorded_counted_and_named_by_their_varied_input() {
         if &row[status] == "invalid" {
             seen += 1;
             assert_eq!(&row[life], "0");
-            assert!(row[reason].contains("mixed.study.toml:7:"), "{}", &row[reason]);
+            assert!(
+                row[reason].contains("mixed.study.toml:7:"),
+                "{}",
+                &row[reason]
+            );
             assert!(
                 row[reason].contains("made invalid by seal.cross_section"),
                 "{}",
