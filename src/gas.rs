@@ -305,6 +305,28 @@ pub const LIBRARY: [Gas; 8] = [
     OXYGEN,
 ];
 
+/// The temperature at 1 atm below which the library gas `id` is no longer a gas \[K\]: its
+/// normal boiling point (carbon dioxide: its sublimation point; air: its bubble point). Below
+/// it the ideal-gas, Sutherland and rarefied-flow laws of docs/model.md §3.9–3.10 do not apply,
+/// so a run there is refused. Helium 4.2, hydrogen 20, nitrogen 77, oxygen 90, argon 87 K:
+/// the cryogen table of "Cryogenics — History" (Science Encyclopedia,
+/// <https://science.jrank.org/pages/1889/Cryogenics-History.html>); air 78.8 K, methane
+/// 111.7 K, carbon dioxide 194.7 K: recalled (CRC Handbook values), not read here. `None` for
+/// a custom gas.
+pub fn condensation_point(id: &str) -> Option<f64> {
+    match id {
+        "helium" => Some(4.2),
+        "hydrogen" => Some(20.0),
+        "nitrogen" => Some(77.0),
+        "air" => Some(78.8),
+        "argon" => Some(87.0),
+        "oxygen" => Some(90.0),
+        "methane" => Some(111.7),
+        "carbon-dioxide" => Some(194.7),
+        _ => None,
+    }
+}
+
 /// The library gas `id` (`"helium"`, `"carbon-dioxide"`, …); `None` if unknown.
 pub fn library(id: &str) -> Option<Gas> {
     LIBRARY.iter().copied().find(|g| g.id == id)
@@ -341,6 +363,16 @@ pub fn to_mol_per_s(q: f64, temperature: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn every_library_gas_has_its_condensation_point() {
+        for g in LIBRARY {
+            let t = condensation_point(g.id).unwrap();
+            // all condense below room temperature; helium lowest, carbon dioxide highest
+            assert!((4.0..=195.0).contains(&t), "{}: {t}", g.id);
+        }
+        assert_eq!(condensation_point("custom"), None);
+    }
 
     #[test]
     fn library_is_complete_and_consistent() {

@@ -350,6 +350,17 @@ pub fn show(v: f64) -> String {
     human(v, 6)
 }
 
+/// An absolute temperature `kelvin` \[K\] as engineers read it, in °C with kelvin beside:
+/// `"-40.05 °C (233.1 K)"` (`sig` significant digits for each). Messages print temperatures
+/// this way; the data files keep kelvin.
+pub fn show_temperature(kelvin: f64, sig: usize) -> String {
+    format!(
+        "{} °C ({} K)",
+        human(kelvin - 273.15, sig),
+        human(kelvin, sig)
+    )
+}
+
 /// A number written exactly: Rust's shortest form that reads back to the same bits, plain when
 /// moderate (`0.25`, `353.15`), else with an exponent (`8e-7`, `1.2e7`). For files that are
 /// read back (study tables, generated scenarios).

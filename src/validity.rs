@@ -425,6 +425,10 @@ impl fmt::Display for Finding {
 
 /// `value unit` with four significant digits ([`human`]).
 fn with_unit(value: f64, unit: &str) -> String {
+    if unit == "K" {
+        // an absolute temperature: in °C first, as the inputs are usually written
+        return crate::units::show_temperature(value, 4);
+    }
     let number = human(value, 4);
     if unit.is_empty() {
         number

@@ -380,7 +380,8 @@ impl GasSummary {
         let (first, last) = (p * result.initial_leak_rate(), p * result.final_leak_rate());
         let final_permeation = result.rows.last().and_then(|r| r.permeation);
         let permeation_time_lag = match (problem.permeation, result.rows.last()) {
-            (Some(s), Some(r)) => s.time_lag(r.temperature),
+            // a diffusivity that underflows (a very cold rubber) has no finite lag: absent
+            (Some(s), Some(r)) => s.time_lag(r.temperature).filter(|x| x.is_finite()),
             _ => None,
         };
         Some(GasSummary {

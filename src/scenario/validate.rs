@@ -21,7 +21,7 @@ use crate::seal::{Profile, SealGeometry, VolumeSwell};
 use crate::simulate::LifeProblem;
 use crate::simulate::{AsperityModulus, GrooveInterface};
 use crate::surface::Spectrum;
-use crate::units::{self, Dimension, show};
+use crate::units::{self, Dimension, show, show_temperature};
 use std::ops::Range;
 use toml::Spanned;
 
@@ -533,19 +533,45 @@ impl Source<'_> {
                         library.span(),
                         "fluid.library",
                         format!(
-                            "the temperature reaches {}–{} K, but {id} is liquid at 1 atm only \
-                             from {} to {} K (it freezes or boils): {} K below / {} K above; \
+                            "the temperature reaches {} … {}, but {id} is liquid at 1 atm only \
+                             from {} to {} (it freezes or boils): {} K below / {} K above; \
                              the viscosity law there is an extrapolation [docs/model.md §3.7]",
-                            show(lo),
-                            show(hi),
-                            show(melting),
-                            show(boiling),
+                            show_temperature(lo, 6),
+                            show_temperature(hi, 6),
+                            show_temperature(melting, 6),
+                            show_temperature(boiling, 6),
                             show((melting - lo).max(0.0)),
                             show((hi - boiling).max(0.0)),
                         ),
                     )
                     .to_string(),
                 );
+            }
+        }
+        if let Some(service) = &life.fluid.gas
+            && let Some(condenses) = crate::gas::condensation_point(service.gas.id)
+        {
+            let (lo, _) = life.environment.range();
+            if lo <= condenses {
+                let span = raw.environment.as_ref().map_or(raw.fluid.span(), |e| {
+                    e.get_ref()
+                        .temperature
+                        .as_ref()
+                        .map_or(e.span(), |t| t.span())
+                });
+                return Err(self.error(
+                    span,
+                    "environment.temperature",
+                    format!(
+                        "the temperature reaches {}, but {} is a gas at 1 atm only above {} \
+                         (below it condenses, and the gas laws do not apply): give a \
+                         temperature above it, e.g. \"{} K\" [docs/model.md §3.9]",
+                        show_temperature(lo, 6),
+                        service.gas.id,
+                        show_temperature(condenses, 6),
+                        show((condenses + 10.0).ceil())
+                    ),
+                ));
             }
         }
         if let Some((swell, span)) = &swell
