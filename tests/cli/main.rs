@@ -34,6 +34,7 @@ mod study;
 mod surface;
 mod swell;
 mod tradeoff;
+mod traps;
 mod validity;
 mod verdicts;
 mod write_faults;
