@@ -434,11 +434,11 @@ fn throughput(q: f64) -> String {
     format!("{} Pa·m³/s ({} mbar·L/s)", human(q, 3), human(q * 10.0, 3))
 }
 
-/// A gas's throughput `p̄ q`, or "sealed" below the floor.
+/// A gas's throughput `p̄ q`, or "≈ 0" below the floor.
 fn floored_throughput(floor: &LeakFloor, p: f64, q: f64) -> String {
     if floor.seals(q) {
         format!(
-            "sealed (below {}, {})",
+            "≈ 0 (below {}, {})",
             throughput(p * floor.rate),
             floor.meaning()
         )
@@ -997,7 +997,7 @@ fn celsius(kelvin: f64) -> String {
     format!("{} °C", human(kelvin - 273.15, 4))
 }
 
-/// The leak rate below which a report says "sealed" (docs/model.md §15.2): by default one
+/// The leak rate below which a report says "≈ 0" (docs/model.md §15.2): by default one
 /// molecule a second ([`crate::fluid::Fluid::one_molecule_per_second`]), or a floor the user
 /// gives (`--leak-floor`). Only what is shown changes: tables keep the raw value.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -1034,10 +1034,12 @@ impl LeakFloor {
         q < self.rate
     }
 
-    /// `"sealed (below 3e-29 m³/s, one molecule a second)"`.
+    /// `"≈ 0 (below 3e-29 m³/s, one molecule a second)"`: what a rate below the floor means.
+    /// Not "sealed": whether the seal is sealed is its state's to say (a percolating channel
+    /// may carry less than a molecule a second; docs/model.md §8.1).
     pub fn sealed(&self) -> String {
         format!(
-            "sealed (below {} m³/s, {})",
+            "≈ 0 (below {} m³/s, {})",
             human(self.rate, 2),
             self.meaning()
         )
@@ -1053,7 +1055,7 @@ impl LeakFloor {
     }
 }
 
-/// The readable summary of a run, for the terminal; leak rates below `floor` read "sealed".
+/// The readable summary of a run, for the terminal; leak rates below `floor` read "≈ 0".
 pub fn human_summary(
     scenario: &str,
     file: &str,
@@ -1221,9 +1223,23 @@ pub fn human_summary(
             );
         }
         if let (Some(shutdown), Some(s)) = (problem.failure.shutdown, last.shutdown) {
+            let located = result
+                .failure
+                .is_some_and(|f| f.mode == crate::simulate::FailureMode::LostInterference);
             let lost = result.interference_lost().map_or_else(
                 || "holds throughout".to_owned(),
-                |t| format!("interference lost {}", at_time(t)),
+                |t| {
+                    if located {
+                        format!("interference lost {}", at_time(t))
+                    } else {
+                        // not the run's failure: found on the output grid, not located
+                        format!(
+                            "interference found lost by the output time {} (not located: the run \
+                             had failed before)",
+                            at_time(t).trim_start_matches("at ")
+                        )
+                    }
+                },
             );
             line(
                 "shutdown",
@@ -1609,7 +1625,7 @@ pub struct CompareRow<'a> {
     /// A gas: the mean pressure p̄ \[Pa\] whose volume flows the leak rates are; the
     /// comparison then gives throughputs `p̄ Q̇` too (docs/model.md §3.9).
     pub mean_pressure: Option<f64>,
-    /// Leak rates below it read "sealed" in the text table (the CSV keeps them).
+    /// Leak rates below it read "≈ 0" in the text table (the CSV keeps them).
     pub floor: LeakFloor,
     /// What this compound's run left out for want of data (`compare` degrades rather than
     /// aborts: no ageing constants, no permeation data), "; "-separated; empty when nothing.
@@ -1789,7 +1805,7 @@ pub fn compare_cells(rows: &[CompareRow<'_>]) -> Vec<Vec<String>> {
                 || "-".to_owned(),
                 |q| {
                     if r.floor.seals(q) {
-                        "sealed".to_owned()
+                        "≈ 0".to_owned()
                     } else {
                         human(scale * q, 2)
                     }
@@ -1838,7 +1854,7 @@ pub fn compare_cells(rows: &[CompareRow<'_>]) -> Vec<Vec<String>> {
     }
     if let Some(f) = rows.first().map(|r| r.floor) {
         cells.push(vec![format!(
-            "(\"sealed\": below {} m³/s, {}; the CSV keeps the values)",
+            "(\"≈ 0\": below {} m³/s, {}; the CSV keeps the values)",
             human(f.rate, 2),
             f.meaning()
         )]);

@@ -1532,7 +1532,7 @@ squeeze = 0.2
     #[test]
     fn failure_criteria() {
         let s = load(&with(
-            "[failure]\nmax_leak_rate = \"1e-9 m^3/s\"\nmax_leaked_volume = \"1 L\"\nmin_retained_force = 0.5\nlift_off = true\n",
+            "[failure]\nmax_leak_rate = \"1e-9 m^3/s\"\nmax_leaked_volume = \"1 L\"\nmin_retained_force = 0.5\nlift_off = true\nmin_sealing_force = \"1.5 N/mm\"\nmin_contact_pressure = \"0.5 MPa\"\ngasket_factor = 2\n",
         ))
         .unwrap();
         assert_eq!(
@@ -1543,6 +1543,9 @@ squeeze = 0.2
                 min_retained_force: Some(0.5),
                 retained_force_reference: DEFAULT_RETAINED_FORCE_REFERENCE,
                 max_compression_set: None,
+                min_sealing_force: Some(1500.0),
+                min_contact_pressure: Some(5e5),
+                gasket_factor: Some(2.0),
                 lift_off: true,
                 extrusion: true,
                 shutdown: Some(crate::simulate::Shutdown {

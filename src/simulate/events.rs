@@ -254,6 +254,56 @@ mod tests {
     }
 
     #[test]
+    fn absolute_criteria_compare_the_installed_contact() {
+        let c = FailureCriteria {
+            min_sealing_force: Some(1500.0),
+            min_contact_pressure: Some(1e6),
+            gasket_factor: Some(2.0),
+            ..Default::default()
+        };
+        assert!(!c.is_empty());
+        let ok = EventInput {
+            leak_rate: 0.0,
+            leaked_volume: 0.0,
+            retained_force: 1.0,
+            compression_set: 0.0,
+            lifted: false,
+            extruded: false,
+            lost_interference: false,
+            sealing_force: 2000.0,
+            contact_peak: 2e6,
+            contact_mean: 1.5e6,
+            pressure_difference: 5e5,
+        };
+        assert!(c.at_start(&ok).is_none());
+        // the force below its floor; the peak below its floor; the mean below m·ΔP = 1e6 Pa
+        let weak = EventInput {
+            sealing_force: 1000.0,
+            ..ok
+        };
+        assert_eq!(c.newly_crossed(&ok, &weak), vec![FailureMode::SealingForce]);
+        let low_peak = EventInput {
+            contact_peak: 0.9e6,
+            ..ok
+        };
+        assert_eq!(
+            c.newly_crossed(&ok, &low_peak),
+            vec![FailureMode::ContactPressure]
+        );
+        let low_mean = EventInput {
+            contact_mean: 0.99e6,
+            ..ok
+        };
+        assert_eq!(
+            c.newly_crossed(&ok, &low_mean),
+            vec![FailureMode::ContactPressure]
+        );
+        for m in FailureMode::ALL {
+            assert_eq!(FailureMode::from_name(m.as_str()), Some(m));
+        }
+    }
+
+    #[test]
     fn criteria() {
         let c = FailureCriteria {
             max_leak_rate: Some(1.0),

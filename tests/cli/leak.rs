@@ -694,7 +694,8 @@ fn water_below_freezing_is_a_located_warning() {
         .assert()
         .success()
         .stderr(predicate::str::contains(
-            "scenario.toml:11: fluid.library: the temperature reaches 268.15–268.15 K, but \
-             water is liquid at 1 atm only from 273.15 to 373.15 K",
+            "scenario.toml:11: fluid.library: the temperature reaches -5 °C (268.15 K) … -5 °C \
+             (268.15 K), but water is liquid at 1 atm only from 0 °C (273.15 K) to 100 °C \
+             (373.15 K)",
         ));
 }

@@ -122,7 +122,7 @@ fn a_leak_below_the_floor_reads_sealed_its_chart_stops_at_the_floor_and_the_csv_
         &html,
     ]);
     assert!(
-        text.contains("leak rate      sealed (below 1e-12 m³/s, the floor given) at installation"),
+        text.contains("leak rate      ≈ 0 (below 1e-12 m³/s, the floor given) at installation"),
         "{text}"
     );
     // the CSV keeps the raw value
@@ -148,7 +148,7 @@ fn a_leak_below_the_floor_reads_sealed_its_chart_stops_at_the_floor_and_the_csv_
     // the default floor is one molecule a second
     let text = run_ok(&[&"run", &scenarios_dir().join("oring-nbr-water-80c.toml")]);
     assert!(
-        text.contains("sealed (below 3e-29 m³/s, one molecule a second) at installation"),
+        text.contains("≈ 0 (below 3e-29 m³/s, one molecule a second) at installation"),
         "{text}"
     );
     // a bad floor is bad input
