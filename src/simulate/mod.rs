@@ -151,7 +151,7 @@ struct Snapshot {
     permeation_flow: f64,
 }
 
-/// The shutdown check of one state (docs/model.md §8.2, [`Simulator::shutdown`]).
+/// The shutdown check of one state (docs/model.md §8.2; computed by `Simulator::shutdown`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ShutdownState {
     /// The set ring's squeeze at the shutdown temperature over its recovered cord, ε_r.

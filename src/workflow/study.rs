@@ -64,10 +64,11 @@ pub fn run(
     pool.install(|| {
         let values = study.plan.values(range.clone());
         let mut scenarios = scenarios(study, range.start, &values);
-        if range.len() == study.cases() && scenarios.iter().all(Result::is_err) {
-            if let Some(Err(e)) = scenarios.drain(..).next() {
-                return Err(e);
-            }
+        if range.len() == study.cases()
+            && scenarios.iter().all(Result::is_err)
+            && let Some(Err(e)) = scenarios.drain(..).next()
+        {
+            return Err(e);
         }
         Ok(run_scenarios(
             study,

@@ -332,5 +332,5 @@ fn messages_speak_the_inputs_terms_notes_are_notes_once_and_nothing_prints_below
         .unwrap()
         .parse()
         .unwrap();
-    assert!(last >= 0.0 && last < 1e-6, "{last}");
+    assert!((0.0..1e-6).contains(&last), "{last}");
 }
