@@ -39,6 +39,10 @@ pub enum MaterialsCommand {
     Curve(CurveArgs),
     /// The Prony series as Abaqus or ANSYS input.
     Export(ExportArgs),
+    /// Every compound's figures beside the published ones: T10 against its class's
+    /// low-temperature limit (±5 K), the chemical time to 50 % retained force at the rated
+    /// temperature against the 1000 h rule (500–2000 h), with sources. Exit 0 when all pass.
+    Check,
 }
 
 /// Which compound: a library id, or a material file.
@@ -168,6 +172,7 @@ pub fn run(args: MaterialsArgs) -> Result<(), CliError> {
         }
         MaterialsCommand::Curve(args) => curve(args),
         MaterialsCommand::Export(args) => export(args),
+        MaterialsCommand::Check => check(),
     }
 }
 
@@ -201,6 +206,57 @@ fn list() -> Result<(), CliError> {
     }
     let rows: Vec<(&str, &Material)> = loaded.iter().map(|(id, m)| (*id, m)).collect();
     write_output(None, library_table(&rows).as_bytes())
+}
+
+fn check() -> Result<(), CliError> {
+    use crate::scenario::library_check::{Check, RULE_HOURS, T10_TOLERANCE, T50_BAND, published};
+    let mut out = format!(
+        "{:<9} {:>9} {:>9} {:>7} {:>4}   {:>8} {:>10} {:>4}   source\n",
+        "compound", "T10 [°C]", "limit", "ΔT [K]", "", "rated", "t50 [h]", ""
+    );
+    let mut failed = Vec::new();
+    for id in library::ids() {
+        let entry = library::get(id).map_err(|e| CliError::Internal(e.to_string()))?;
+        let material = entry.load()?;
+        let Some(p) = published(id) else {
+            return Err(CliError::Internal(format!("{id}: no published figures")));
+        };
+        let c = Check::new(&material, p);
+        let mark = |ok: bool| if ok { "ok" } else { "FAIL" };
+        if !c.t10_ok() || !c.t50_ok() {
+            failed.push(id);
+        }
+        out += &format!(
+            "{id:<9} {:>9} {:>9} {:>7} {:>4}   {:>8} {:>10} {:>4}   {}\n",
+            c.t10.map_or("-".into(), |t| human(t - 273.15, 3)),
+            human(p.low_limit - 273.15, 3),
+            c.t10.map_or("-".into(), |t| human(t - p.low_limit, 2)),
+            mark(c.t10_ok()),
+            format!("{} °C", human(p.rated - 273.15, 3)),
+            c.t50_hours.map_or("-".into(), |h| human(h, 3)),
+            mark(c.t50_ok()),
+            p.source
+        );
+    }
+    out += &format!(
+        "\nT10: the temperature at which the modulus at 10 s is ten times its 23 °C value, against \
+         the class's low-temperature service limit (a chart limit, not a TR-10), within ±{} K.\n\
+         t50: chemical hours to 50 % retained force at the rated temperature, ln 2/k(T_rated), \
+         against the rule \"a maximum temperature for 1,000 hours continuous service\" at \
+         \"30-50% loss of physical properties\" (Problem Solving Products, 'Seal thermal \
+         stability'): {}–{} h around {} h. docs/model.md §6.7; quotes in \
+         docs/sources/elastomer-temperatures.md.\n",
+        T10_TOLERANCE, T50_BAND.0, T50_BAND.1, RULE_HOURS
+    );
+    write_output(None, out.as_bytes())?;
+    if failed.is_empty() {
+        Ok(())
+    } else {
+        Err(CliError::Internal(format!(
+            "materials check failed for {}",
+            failed.join(", ")
+        )))
+    }
 }
 
 fn curve(args: CurveArgs) -> Result<(), CliError> {

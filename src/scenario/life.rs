@@ -1604,11 +1604,17 @@ squeeze = 0.2
             "{fkm}[ageing]\nenabled = false\nrate = \"1e-8 1/s\"\n"
         ));
         assert!(e.contains("ageing.rate: [ageing] is switched off"), "{e}");
-        // VMQ has no ageing constants
-        let vmq = |extra: &str| with(extra).replace("\"nbr-70\"", "\"vmq-70\"");
+        // a compound without ageing constants (every library compound has them: an inline one;
+        // its material takes two lines more than `library = …`)
+        let vmq = |extra: &str| {
+            with(extra).replace(
+                "library = \"nbr-70\"",
+                "long_term_modulus = \"2 MPa\"\npoisson_ratio = 0.5\nprony = [ { modulus = \"2 MPa\", tau = \"1 h\" } ]",
+            )
+        };
         let e = error(&vmq("[ageing]\n"));
         assert!(
-            e.contains(":17: ageing.activation_energy: missing key `activation_energy` in [ageing], and the material (VMQ"),
+            e.contains(":19: ageing.activation_energy: missing key `activation_energy` in [ageing], and the material"),
             "{e}"
         );
         let e = error(&vmq(
@@ -1691,8 +1697,12 @@ squeeze = 0.2
     #[test]
     fn a_replacement_material_is_validated_in_place() {
         let fkm = library::get("fkm-75").unwrap().load().unwrap();
-        let text = with("[ageing]\n").replace("\"nbr-70\"", "\"vmq-70\"");
-        // VMQ alone fails ([ageing] without constants); with FKM in its place it loads
+        let text = with("[ageing]\n").replace(
+            "library = \"nbr-70\"",
+            "long_term_modulus = \"2 MPa\"\npoisson_ratio = 0.5\nprony = [ { modulus = \"2 MPa\", tau = \"1 h\" } ]",
+        );
+        // a compound without ageing constants fails ([ageing] without constants); with FKM in
+        // its place it loads
         assert!(load(&text).is_err());
         let s = Scenario::from_str_with_material(&text, Path::new("s.toml"), &fkm).unwrap();
         assert_eq!(s.material, fkm);

@@ -27,6 +27,7 @@ pub mod gsf;
 mod height_map;
 mod history;
 pub mod library;
+pub mod library_check;
 pub mod life;
 mod material;
 mod motion;

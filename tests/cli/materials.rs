@@ -762,3 +762,26 @@ fn leak_takes_the_installed_asperity_modulus_of_a_viscoelastic_material() {
         "{err}"
     );
 }
+
+/// Issue 31: `materials check` prints every compound beside its class's published figures and
+/// passes them all (T10 within ±5 K of the low-temperature limit, 500–2000 h to 50 % chemical
+/// force loss at the rated temperature; the same checks are unit tests of the library).
+#[test]
+fn materials_check_prints_every_compound_beside_the_published_figures() {
+    let out = crate::support::sealsim()
+        .args(["materials", "check"])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    for id in ["cr-70", "epdm-70", "fkm-75", "hnbr-75", "nbr-70", "vmq-70"] {
+        let row = text.lines().find(|l| l.starts_with(id)).unwrap();
+        assert_eq!(row.matches(" ok ").count(), 2, "{row}");
+        assert!(row.contains("Bode Seal"), "{row}");
+    }
+    assert!(text.contains("1,000 hours continuous service"), "{text}");
+}

@@ -687,17 +687,23 @@ fn compare_rejects_unknown_ids() {
     assert!(!out.path("c.csv").exists() && !out.path("c.svg").exists());
     // a compound without the ageing constants the scenario's [ageing] asks for runs without
     // them, and its row says so (a comparison degrades, it does not abort)
+    // (every library compound carries ageing constants: a file compound without them)
     let scenario = nbr_with(&out, "[failure]", "[failure]");
+    let soft = out.write(
+        "soft.toml",
+        "[material]\nname = \"soft test rubber\"\npoisson_ratio = 0.5\nlong_term_modulus = \"2 MPa\"\n\
+         prony = [ { modulus = \"2 MPa\", tau = \"1 h\" } ]\nthermal_expansion = \"2e-4 1/K\"\n",
+    );
     let assert = cargo_bin_cmd!("sealsim")
         .arg("compare")
         .arg(&scenario)
-        .args(["--materials", "fkm-75,vmq-70"])
+        .args(["--materials", &format!("fkm-75,{}", soft.display())])
         .assert()
         .success();
     let stdout = String::from_utf8(assert.get_output().stdout.clone()).unwrap();
-    let vmq = stdout.lines().find(|l| l.starts_with("vmq-70")).unwrap();
+    let row = stdout.lines().find(|l| l.contains("soft")).unwrap();
     assert!(
-        vmq.ends_with("no ageing constants: run without ageing"),
+        row.ends_with("no ageing constants: run without ageing"),
         "{stdout}"
     );
     let fkm = stdout.lines().find(|l| l.starts_with("fkm-75")).unwrap();

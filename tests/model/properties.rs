@@ -132,6 +132,13 @@ proptest! {
         let rougher = Params { h_rms: (p.h_rms * f).min(1e-3), ..p };
         let q_smooth = solver(p, Fidelity::Exact).evaluate(p0).leak_rate;
         let q_rough = solver(rougher, Fidelity::Exact).evaluate(p0).leak_rate;
-        prop_assert!(q_rough >= q_smooth * (1.0 - 1e-9), "{q_rough} < {q_smooth}");
+        // below one molecule a second the continuum figure means nothing (docs/model.md §15.2)
+        // and a critical gap below a molecule is sealed (§9.3): a rougher face whose gap is
+        // still below a molecule reads 0 where the smoother one kept, say, 1e-69 m³/s
+        let one_molecule_per_second = 3.0e-29;
+        prop_assert!(
+            q_rough >= q_smooth * (1.0 - 1e-9) || q_smooth < one_molecule_per_second,
+            "{q_rough} < {q_smooth}"
+        );
     }
 }
