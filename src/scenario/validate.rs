@@ -548,6 +548,41 @@ impl Source<'_> {
                 );
             }
         }
+        // a library compound above its class's rated temperature (docs/model.md §6.7): its
+        // life there is the Arrhenius extrapolation beyond "1,000 hours continuous service"
+        if let Some(published) = material
+            .library_id
+            .as_deref()
+            .and_then(super::library_check::published)
+        {
+            let (_, hi) = life.environment.range();
+            if hi > published.rated {
+                let span = raw.environment.as_ref().map_or(raw.fluid.span(), |e| {
+                    e.get_ref()
+                        .temperature
+                        .as_ref()
+                        .map_or(e.span(), |t| t.span())
+                });
+                warnings.push(
+                    self.error(
+                        span,
+                        "environment.temperature",
+                        format!(
+                            "the temperature reaches {}, {} K above the rated {} of the compound's \
+                             class ({}): a seal there is expected to lose 30-50 % of its \
+                             properties within 1,000 h, and beyond the rating the compound may \
+                             decompose; the ageing constants are extrapolated \
+                             [docs/model.md §6.7]",
+                            show_temperature(hi, 4),
+                            show(((hi - published.rated) * 10.0).round() / 10.0),
+                            show_temperature(published.rated, 4),
+                            published.source
+                        ),
+                    )
+                    .to_string(),
+                );
+            }
+        }
         if let Some(service) = &life.fluid.gas
             && let Some(condenses) = crate::gas::condensation_point(service.gas.id)
         {

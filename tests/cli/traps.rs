@@ -352,3 +352,27 @@ fn messages_speak_the_inputs_terms_notes_are_notes_once_and_nothing_prints_below
         .unwrap();
     assert!((0.0..1e-6).contains(&last), "{last}");
 }
+
+/// Plausible ranges: a library compound run above its class's rated temperature is warned at
+/// the temperature's line, in °C, naming the rating and its source.
+#[test]
+fn a_compound_above_its_rated_temperature_is_warned() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = shipped("oring-nbr-water-80c.toml");
+    let (code, stderr, _) = run_text(
+        dir.path(),
+        &text.replacen("temperature = \"80 C\"", "temperature = \"120 C\"", 1),
+    );
+    assert_eq!(code, Some(0), "{stderr}");
+    assert!(
+        stderr.contains(
+            "environment.temperature: the temperature reaches 120 °C (393.1 K), 20 K above the \
+             rated 100 °C (373.1 K)"
+        ),
+        "{stderr}"
+    );
+    assert!(stderr.contains("Bode Seal"), "{stderr}");
+    // at its 80 °C: no such warning
+    let (_, stderr, _) = run_text(dir.path(), &text);
+    assert!(!stderr.contains("above the rated"), "{stderr}");
+}
