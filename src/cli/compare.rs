@@ -108,7 +108,7 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
             duration: run.scenario.life.time.duration,
             mean_pressure: run.scenario.life.fluid.mean_pressure(),
             floor: LeakFloor::of(&run.scenario.life.fluid, floor),
-            notes: degraded(&run.scenario.life),
+            notes: degraded(&run.scenario.life, run.scenario.compatibility.as_ref()),
         })
         .collect();
     let csv = args
@@ -249,8 +249,21 @@ fn resolve(spec: &str) -> Result<Material, CliError> {
 
 /// What a compound's run left out for want of data: ageing the scenario asks for, permeation
 /// of a gas (docs/model.md §6.5, §13.7).
-fn degraded(life: &crate::simulate::LifeProblem) -> String {
+fn degraded(
+    life: &crate::simulate::LifeProblem,
+    compatibility: Option<&crate::scenario::compatibility::Compatibility>,
+) -> String {
     let mut notes = Vec::new();
+    let flag;
+    if let Some(c) = compatibility {
+        flag = format!(
+            "{} in {}: {} (docs/model.md §6.8)",
+            c.rating.words(),
+            c.class.as_str(),
+            c.rating.letter()
+        );
+        notes.push(flag.as_str());
+    }
     if life.ageing_source == crate::simulate::AgeingSource::MissingInComparison {
         notes.push("no ageing constants: run without ageing");
     }

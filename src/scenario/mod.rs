@@ -18,6 +18,7 @@
 
 pub mod ageing_data;
 pub mod as568;
+pub mod compatibility;
 mod contamination;
 mod error;
 pub mod figure_set;
@@ -85,6 +86,9 @@ pub struct Scenario {
     /// Warnings about the input, each located like an error (`FILE:LINE: KEY: …`), e.g. a gland
     /// fill above the guidance; the commands print them as `warning:` lines.
     pub warnings: Vec<String>,
+    /// The library compound's rating in the library fluid's class (docs/model.md §6.8); `None`
+    /// when the fluid is not a rated class or no source rated the pair.
+    pub compatibility: Option<compatibility::Compatibility>,
     /// The files the scenario reads besides itself (a material file, a temperature history,
     /// PSD files, height maps, traces, a contact profile, a size distribution), as resolved
     /// from the scenario's directory: no output may be written over them.

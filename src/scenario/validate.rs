@@ -517,6 +517,30 @@ impl Source<'_> {
             .library
             .as_ref()
             .and_then(|l| crate::fluid::library(l.get_ref()).map(|f| (l, f)));
+        // the compound's fluid compatibility (docs/model.md §6.8): a note, or a warning when
+        // not recommended
+        let compatibility = match (material.library_id.as_deref(), known) {
+            (Some(compound), Some((library, fluid))) => {
+                let (_, hi) = life.environment.range();
+                super::compatibility::FluidClass::of(fluid.id, hi)
+                    .and_then(|class| super::compatibility::rating(compound, class))
+                    .map(|c| (c, library.span()))
+            }
+            _ => None,
+        };
+        if let Some((c, span)) = &compatibility {
+            let not = c.rating == super::compatibility::Rating::NotRecommended;
+            let message = format!(
+                "{}{} is rated {c} [docs/model.md §6.8]",
+                if not { "" } else { "note: " },
+                material.library_id.as_deref().unwrap_or("the compound"),
+            );
+            warnings.push(
+                self.error(span.clone(), "fluid.library", message)
+                    .to_string(),
+            );
+        }
+        let compatibility = compatibility.map(|(c, _)| c);
         if let Some((
             library,
             LibraryFluid {
@@ -677,6 +701,7 @@ impl Source<'_> {
             numerical,
             gland: seal.design,
             warnings,
+            compatibility,
             inputs: self.data_files(raw),
         })
     }

@@ -785,3 +785,96 @@ fn materials_check_prints_every_compound_beside_the_published_figures() {
     }
     assert!(text.contains("1,000 hours continuous service"), "{text}");
 }
+
+/// `sealsim compare` on `scenario` (the headline ring edited by `edits`) with `materials`:
+/// (stdout, the CSV rows by compound id).
+fn compare_rows(edits: &[(&str, &str)], materials: &str) -> Vec<(String, Vec<String>)> {
+    let dir = tempfile::tempdir().unwrap();
+    let mut text = fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/oring-nbr-water-80c.toml"),
+    )
+    .unwrap();
+    for (from, to) in edits {
+        assert!(text.contains(from), "{from}");
+        text = text.replacen(from, to, 1);
+    }
+    let scenario = dir.path().join("s.toml");
+    fs::write(&scenario, text).unwrap();
+    let csv = dir.path().join("c.csv");
+    let out = sealsim()
+        .arg("compare")
+        .arg(&scenario)
+        .args(["--materials", materials, "-o"])
+        .arg(&csv)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let mut reader = ::csv::Reader::from_path(&csv).unwrap();
+    reader
+        .records()
+        .map(|r| {
+            let r = r.unwrap();
+            (r[0].to_owned(), r.iter().map(str::to_owned).collect())
+        })
+        .collect()
+}
+
+/// Issue 31: the rankings field practice makes. In 80 °C water and in 110 °C glycol coolant
+/// standard FKM is flagged not recommended and EPDM recommended (docs/model.md §6.8); in 120 °C
+/// mineral oil HNBR outlives NBR by more than 3× (ageing calibrated to the rated temperatures,
+/// §6.7) and EPDM is flagged.
+#[test]
+fn compare_flags_fkm_in_hot_water_and_coolant_and_hnbr_outlives_nbr_in_hot_oil() {
+    let notes = |rows: &[(String, Vec<String>)], id: &str| {
+        rows.iter()
+            .find(|(k, _)| k == id)
+            .map(|(_, r)| r.last().unwrap().clone())
+            .unwrap()
+    };
+    let water = compare_rows(&[], "fkm-75,epdm-70");
+    let glycol = compare_rows(
+        &[
+            (
+                "library = \"water\"",
+                "library = \"ethylene-glycol-water-50\"",
+            ),
+            ("temperature = \"80 C\"", "temperature = \"110 C\""),
+        ],
+        "fkm-75,epdm-70",
+    );
+    for rows in [&water, &glycol] {
+        assert!(
+            notes(rows, "fkm-75").starts_with("NOT RECOMMENDED in hot water"),
+            "{rows:?}"
+        );
+        assert!(
+            notes(rows, "epdm-70").starts_with("recommended in hot water"),
+            "{rows:?}"
+        );
+    }
+    let oil = compare_rows(
+        &[
+            ("library = \"water\"", "library = \"iso-vg-46\""),
+            ("temperature = \"80 C\"", "temperature = \"120 C\""),
+        ],
+        "nbr-70,hnbr-75,epdm-70",
+    );
+    let life = |id: &str| -> f64 {
+        oil.iter().find(|(k, _)| k == id).unwrap().1[3]
+            .parse()
+            .unwrap()
+    };
+    assert!(life("hnbr-75") > 3.0 * life("nbr-70"), "{oil:?}");
+    assert!(
+        notes(&oil, "epdm-70").starts_with("NOT RECOMMENDED in mineral oil"),
+        "{oil:?}"
+    );
+    assert!(
+        notes(&oil, "nbr-70").starts_with("recommended in mineral oil"),
+        "{oil:?}"
+    );
+}
