@@ -17,9 +17,16 @@ pub const CSV: &str = include_str!("as568.csv");
 pub const FILE: &str = "src/scenario/as568.csv";
 /// The provenance of the table, in one line.
 pub const SOURCE: &str = "transcribed from CrispyConductor/waterproof-geocache-container, \
-                          oring.scad @ 06814412616917711afcf0395a8a002812be8464 (a transcription \
-                          of the AS568 table; origin not stated), cross-checked against \
+                          oring.scad @ 06814412616917711afcf0395a8a002812be8464, cross-checked \
+                          row by row and completed (-391…-395, -468…-475) against ISO 3601-1 \
+                          Class A as tabulated in gumyr/bd_warehouse @ \
+                          f76fb07fe4f1755309581d1fdfc79915cbf0a263 (Apache-2.0), and against \
                           https://www.globaloring.com/as568-size-chart/";
+
+/// ISO 3601-1 Class A in mm (gumyr/bd_warehouse, Apache-2.0; its notice in the file): the
+/// independent table [`CSV`] is checked against (a test).
+#[cfg(test)]
+const ISO_3601_CLASS_A: &str = include_str!("iso3601-class-a.csv");
 
 /// Metres per inch (the international inch).
 pub const INCH: f64 = 0.0254;
@@ -138,7 +145,7 @@ impl fmt::Display for LookupError {
             LookupError::Malformed(name) => write!(
                 f,
                 "expected an AS568 size such as \"AS568-214\", got {name:?} (the table has \
-                 -001…-050, -102…-178, -201…-284, -309…-390 and -425…-467)"
+                 -001…-050, -102…-178, -201…-284, -309…-395 and -425…-475)"
             ),
             LookupError::Unknown { name, nearest } => write!(
                 f,
@@ -186,9 +193,39 @@ mod tests {
         assert_eq!(count(1, 50), 50);
         assert_eq!(count(102, 178), 77);
         assert_eq!(count(201, 284), 84);
-        assert_eq!(count(309, 390), 82);
-        assert_eq!(count(425, 467), 43);
-        assert_eq!(t.len(), 336);
+        assert_eq!(count(309, 395), 87);
+        assert_eq!(count(425, 475), 51);
+        assert_eq!(t.len(), 349);
+    }
+
+    /// Every size against ISO 3601-1 Class A in mm (an independent tabulation): ID,
+    /// cross-section and both tolerances within 0.006 mm of inch × 25.4 (the mm table's
+    /// rounding and the tolerances' conversion), and the same set of sizes.
+    #[test]
+    fn every_size_matches_iso_3601_class_a() {
+        let t = sizes().unwrap();
+        let iso: Vec<Vec<f64>> = ISO_3601_CLASS_A
+            .lines()
+            .filter(|l| !l.starts_with('#') && !l.starts_with("Size"))
+            .map(|l| l.split(',').map(|c| c.parse().unwrap()).collect())
+            .collect();
+        assert_eq!(iso.len(), t.len());
+        for (size, row) in t.iter().zip(&iso) {
+            assert_eq!(f64::from(size.dash), row[0]);
+            let mm = |inch: f64| inch * 25.4;
+            for (ours, theirs, what) in [
+                (mm(size.id_in), row[1], "ID"),
+                (mm(size.cs_in), row[2], "cross-section"),
+                (mm(size.id_tol_in), row[3], "ID tolerance"),
+                (mm(size.cs_tol_in), row[4], "cross-section tolerance"),
+            ] {
+                assert!(
+                    (ours - theirs).abs() <= 0.006,
+                    "AS568-{:03} {what}: {ours} mm vs ISO {theirs} mm",
+                    size.dash
+                );
+            }
+        }
     }
 
     #[test]

@@ -88,7 +88,7 @@ fn bad_gland_input_exits_2_names_file_line_and_key_and_writes_nothing() {
         (
             "\"AS568-214\"",
             "\"AS568-479\"",
-            ":15: seal.size: unknown size \"AS568-479\"; the nearest sizes of the AS568 table are AS568-466, AS568-467",
+            ":15: seal.size: unknown size \"AS568-479\"; the nearest sizes of the AS568 table are AS568-474, AS568-475",
         ),
         (
             "size = \"AS568-214\"\n",
@@ -169,16 +169,16 @@ fn sizes_json_and_the_whole_table() {
     assert!((v["inner_diameter_mm"].as_f64().unwrap() - 37.465).abs() < 1e-9);
     let out = sealsim().args(["sizes", "--json"]).assert().success();
     let all: serde_json::Value = serde_json::from_slice(&out.get_output().stdout).unwrap();
-    assert_eq!(all.as_array().unwrap().len(), 336);
+    assert_eq!(all.as_array().unwrap().len(), 349);
     let out = sealsim().arg("sizes").assert().success();
     let text = String::from_utf8(out.get_output().stdout.clone()).unwrap();
     assert!(
-        text.contains("AS568-001") && text.contains("AS568-467"),
+        text.contains("AS568-001") && text.contains("AS568-475"),
         "{text}"
     );
     assert_eq!(
         text.lines().filter(|l| l.starts_with("AS568-")).count(),
-        336
+        349
     );
 }
 
