@@ -419,7 +419,8 @@ fn the_as568_table_keeps_its_series_invariants() {
         (4, 0.275, 0.006),
     ];
     let table = as568::sizes().unwrap();
-    assert_eq!(table.len(), 50 + 77 + 84 + 82 + 43);
+    // -001…-050, -102…-178, -201…-284, -309…-395, -425…-475
+    assert_eq!(table.len(), 50 + 77 + 84 + 87 + 51);
     for s in table {
         let (_, cs, tol) = series[usize::from(s.series())];
         if s.dash > 3 {
@@ -427,8 +428,9 @@ fn the_as568_table_keeps_its_series_invariants() {
         }
         assert_eq!(s.cs_tol_in, tol, "AS568-{:03}", s.dash);
         // the ID tolerance grows with the ID, from .004 in to under 1 % of the larger IDs
+        // (.120 in at 25.94 in, -395 and -475)
         assert!(
-            s.id_tol_in >= 0.004 && s.id_tol_in <= 0.1,
+            s.id_tol_in >= 0.004 && s.id_tol_in <= 0.12,
             "AS568-{:03}",
             s.dash
         );
