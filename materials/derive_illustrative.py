@@ -169,7 +169,7 @@ COMPOUNDS = [
          tg=-34, tg_src=f"{HANDBOOK}, Table 4.2: nitrile rubber, medium nitrile, T_g = -34 C",
          cte=165e-6, cte_src="midpoint of the 150-180e-6 1/K given for NBR by NETZSCH (Polymers, "
          "NBR material page, analyzing-testing.netzsch.com); illustrative for a given compound",
-         ageing=dict(ea=57.5e3, rate=rate_to_set(15, 0.5), tref=23.0,
+         ageing=dict(ea=57.5e3, rate=rate_to_set(15, 0.5), tref=23.0, medium="mineral-oil",
                      prop="tensile elongation of NBR O-rings aged in hydraulic fluid (with hardness, "
                      "compression set and crosslink density)",
                      crit="50 % loss of elongation at break (about 50 % compression set)",
@@ -187,7 +187,7 @@ COMPOUNDS = [
          f"standard low-temperature limit of {BODE} so that T10 meets it (the class's calorimetric "
          f"T_g is -30 C: {HANDBOOK}, Table 4.2: hydrogenated nitrile)",
          cte=160e-6, cte_src=CTE_ASSUMED,
-         ageing=dict(ea=two_anchor_ea(60.0, t50_hours(5, 0.85), 150.0, RULE_HOURS),
+         ageing=dict(ea=two_anchor_ea(60.0, t50_hours(5, 0.85), 150.0, RULE_HOURS), medium="air",
                      rate=rate_for_hours(RULE_HOURS), tref=150.0,
                      prop="compression set of O-rings aged at 25 % compression (60 C anchor); the "
                      "rated-temperature rule (150 C anchor)",
@@ -204,7 +204,7 @@ COMPOUNDS = [
          f"standard low-temperature limit of {BODE} so that T10 meets it (Encyclopaedia Britannica, "
          "'elastomer', gives T_g = -10 C for fluoroelastomer; copolymer/terpolymer grades differ)",
          cte=160e-6, cte_src=CTE_ASSUMED,
-         ageing=dict(ea=two_anchor_ea(60.0, t50_hours(40, 0.65), 200.0, RULE_HOURS),
+         ageing=dict(ea=two_anchor_ea(60.0, t50_hours(40, 0.65), 200.0, RULE_HOURS), medium="air",
                      rate=rate_for_hours(RULE_HOURS), tref=200.0,
                      prop="compression set of O-rings (60 C anchor); the rated-temperature rule "
                      "(200 C anchor)",
@@ -221,7 +221,7 @@ COMPOUNDS = [
          tg=-55, tg_src=f"{HANDBOOK}, Table 4.2: EPDM, T_g = -55 C",
          cte=160e-6, cte_src="Wikipedia, 'EPDM rubber', properties table: linear thermal expansion "
          "160 um/(m K) (read from a mirror); illustrative for a given compound",
-         ageing=dict(ea=72e3, rate=rate_to_set(64, 0.85), tref=60.0,
+         ageing=dict(ea=72e3, rate=rate_to_set(64, 0.85), tref=60.0, medium="air",
                      prop="compression set of O-rings aged at 25 % compression (k_ref); tensile "
                      "strength x elongation of EPDM compounds (Ea)",
                      crit="85 % compression set (k_ref); Arrhenius slope of the property (Ea)",
@@ -297,6 +297,8 @@ def toml_for(c):
                   f'rate = "{a["rate"]:.3e} 1/s"', f'reference_temperature = "{a["tref"]:g} C"',
                   "crosslinking = 1.0",
                   f'property = "{a["prop"]}"', f'criterion = "{a["crit"]}"']
+        if a.get("medium"):
+            lines.append(f'medium = "{a["medium"]}"')
     gent_src = (f"E(3 s, 23 C) = {d['e_test'] / 1e6:.4f} MPa from Gent's relation at {c['shore']} Shore A "
                 "(A.N. Gent 1958, 'On the relation between indentation hardness and Young's modulus', "
                 "form as commonly quoted; the grade is nominal)")

@@ -304,12 +304,14 @@ pub fn ageing_constants(
                        k_ref = -ln(1 - CS*)/t* (CS = 1 - exp(-k t))"
                 .into(),
             criterion: format!("{} % compression set", show(percent)),
+            medium: None,
         },
         AgeingKind::RetainedForce => AgeingBasis {
             property: "retained sealing force (Arrhenius fit by sealsim ageing-fit, ISO 11346); \
                        k_ref = -ln(F*/F0)/t* (F/F0 = exp(-k t))"
                 .into(),
             criterion: format!("{} % force retained", show(percent)),
+            medium: None,
         },
     };
     (ageing, basis)

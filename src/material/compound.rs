@@ -116,6 +116,46 @@ pub const BALANCED_CROSSLINKING: f64 = 1.0;
 pub struct AgeingBasis {
     pub property: String,
     pub criterion: String,
+    /// The medium the compound was aged in (`None`: not stated); a run in another medium warns
+    /// (docs/model.md §6.8).
+    pub medium: Option<AgeingMedium>,
+}
+
+/// The medium ageing constants were measured in (`[material.ageing] medium`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum AgeingMedium {
+    /// An air oven.
+    Air,
+    /// Mineral (petroleum) oil or hydraulic fluid.
+    MineralOil,
+    /// Water.
+    Water,
+    /// Water–glycol coolant.
+    WaterGlycol,
+}
+
+impl AgeingMedium {
+    pub const ALL: [AgeingMedium; 4] = [
+        AgeingMedium::Air,
+        AgeingMedium::MineralOil,
+        AgeingMedium::Water,
+        AgeingMedium::WaterGlycol,
+    ];
+
+    /// The file's word for it.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            AgeingMedium::Air => "air",
+            AgeingMedium::MineralOil => "mineral-oil",
+            AgeingMedium::Water => "water",
+            AgeingMedium::WaterGlycol => "water-glycol",
+        }
+    }
+
+    /// The medium of its [`AgeingMedium::as_str`] word.
+    pub fn from_name(name: &str) -> Option<AgeingMedium> {
+        AgeingMedium::ALL.into_iter().find(|m| m.as_str() == name)
+    }
 }
 
 /// A rubber compound in SI units.

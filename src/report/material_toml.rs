@@ -132,6 +132,9 @@ pub fn ageing_toml(a: &Ageing, basis: Option<&AgeingBasis>) -> String {
     if let Some(b) = basis {
         line(&mut out, "property", &string(&b.property));
         line(&mut out, "criterion", &string(&b.criterion));
+        if let Some(m) = b.medium {
+            line(&mut out, "medium", &string(m.as_str()));
+        }
     }
     out
 }
@@ -265,6 +268,7 @@ mod tests {
         m.ageing_basis = Some(crate::material::AgeingBasis {
             property: "compression set".into(),
             criterion: "80 % \"set\"".into(),
+            medium: None,
         });
         m.provenance.push(("odd key".into(), "x".into()));
         let text = material_toml(&m);

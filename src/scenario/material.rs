@@ -720,10 +720,29 @@ impl Source<'_> {
         required: bool,
     ) -> Result<Option<AgeingBasis>, ScenarioError> {
         let raw = table.get_ref();
+        let medium = match &raw.medium {
+            None => None,
+            Some(m) => Some(
+                crate::material::AgeingMedium::from_name(m.get_ref()).ok_or_else(|| {
+                    self.error(
+                        m.span(),
+                        "material.ageing.medium",
+                        format!(
+                            "unknown medium {:?}: give one of {}",
+                            m.get_ref(),
+                            crate::material::AgeingMedium::ALL
+                                .map(|m| format!("\"{}\"", m.as_str()))
+                                .join(", ")
+                        ),
+                    )
+                })?,
+            ),
+        };
         match (&raw.property, &raw.criterion) {
             (Some(p), Some(c)) => Ok(Some(AgeingBasis {
                 property: p.get_ref().clone(),
                 criterion: c.get_ref().clone(),
+                medium,
             })),
             (None, None) if !required => Ok(None),
             (p, _) => {

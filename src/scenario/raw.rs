@@ -158,6 +158,8 @@ pub(super) struct RawAgeing {
     pub property: Option<Spanned<String>>,
     /// The end-of-life criterion of the data (required in library files).
     pub criterion: Option<Spanned<String>>,
+    /// The medium the compound was aged in (`air`, `mineral-oil`, `water`, `water-glycol`).
+    pub medium: Option<Spanned<String>>,
 }
 
 /// A material file (`materials/ID.toml`): one `[material]` table.

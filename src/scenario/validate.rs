@@ -541,6 +541,41 @@ impl Source<'_> {
             );
         }
         let compatibility = compatibility.map(|(c, _)| c);
+        // ageing constants measured in another medium than the run's fluid (§6.8)
+        if let (Some(basis), true) = (&material.ageing_basis, life.ageing.is_some()) {
+            use crate::material::AgeingMedium;
+            let run_medium = match (known, &life.fluid.gas) {
+                (Some((_, fluid)), _) => match fluid.id {
+                    "water" => Some(AgeingMedium::Water),
+                    "ethylene-glycol-water-50" => Some(AgeingMedium::WaterGlycol),
+                    id if id.starts_with("iso-vg-") => Some(AgeingMedium::MineralOil),
+                    _ => None,
+                },
+                (None, Some(g)) if g.gas.id == "air" || g.gas.id == "oxygen" => {
+                    Some(AgeingMedium::Air)
+                }
+                _ => None,
+            };
+            if let (Some(measured), Some(run)) = (basis.medium, run_medium)
+                && measured != run
+            {
+                warnings.push(
+                    self.error(
+                        raw.fluid.span(),
+                        "fluid",
+                        format!(
+                            "the compound's ageing constants were measured in {}, this run's \
+                             fluid is {}: ageing specific to the medium (hydrolysis in water, \
+                             oxidation in air, swelling and extraction in oil) is not modelled, \
+                             so the ageing rate is the measured medium's [docs/model.md §6.8]",
+                            measured.as_str(),
+                            run.as_str()
+                        ),
+                    )
+                    .to_string(),
+                );
+            }
+        }
         if let Some((
             library,
             LibraryFluid {

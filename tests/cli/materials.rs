@@ -878,3 +878,60 @@ fn compare_flags_fkm_in_hot_water_and_coolant_and_hnbr_outlives_nbr_in_hot_oil()
         "{oil:?}"
     );
 }
+
+/// Issue 31: the ageing constants' test medium is stored with them; a run in another medium
+/// warns at the fluid, one in the same medium does not; an unknown medium in a material file
+/// exits 2 naming the file, line and key, with the media it accepts.
+#[test]
+fn the_ageing_medium_is_stored_checked_and_validated() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios");
+    let water = sealsim()
+        .arg("run")
+        .arg(root.join("oring-nbr-water-80c.toml"))
+        .args(["-o", "/dev/null"])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8(water.stderr).unwrap();
+    assert!(
+        stderr.contains("fluid: the compound's ageing constants were measured in mineral-oil, this run's fluid is water"),
+        "{stderr}"
+    );
+    let oil = sealsim()
+        .arg("run")
+        .arg(root.join("oring-nbr-piston-hydraulic.toml"))
+        .args(["-o", "/dev/null"])
+        .output()
+        .unwrap();
+    assert!(
+        !String::from_utf8(oil.stderr)
+            .unwrap()
+            .contains("measured in")
+    );
+    // a material file with an unknown medium
+    let dir = tempfile::tempdir().unwrap();
+    let text = library::get("nbr-70")
+        .unwrap()
+        .text
+        .replace("medium = \"mineral-oil\"", "medium = \"brake fluid\"");
+    let line = text
+        .lines()
+        .position(|l| l.starts_with("medium = "))
+        .unwrap()
+        + 1;
+    let file = dir.path().join("m.toml");
+    fs::write(&file, text.replace("status = \"illustrative\"\n", "")).unwrap();
+    let out = sealsim()
+        .args(["materials", "show", "--file"])
+        .arg(&file)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        stderr.contains(&format!(
+            "m.toml:{}: material.ageing.medium: unknown medium \"brake fluid\": give one of \"air\"",
+            line - 1
+        )),
+        "{stderr}"
+    );
+}
