@@ -488,6 +488,7 @@ fn material_toml_round_trips_through_the_parser() {
         ageing_basis: Some(sealsim::material::AgeingBasis {
             property: "compression stress relaxation".into(),
             criterion: "50 % force retained".into(),
+            medium: None,
         }),
         data_reduced_time: Some((1e-3, 3.6e6)),
         data_temperature: Some((253.15, 373.15)),
