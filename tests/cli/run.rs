@@ -583,11 +583,7 @@ fn malformed_temperature_histories_are_located() {
 fn compare_runs_each_compound() {
     let out = Outputs::new();
     // a material file by path works alongside library ids
-    let file = out.write(
-        "soft.toml",
-        "[material]\nname = \"soft test rubber\"\npoisson_ratio = 0.5\nlong_term_modulus = \"2 MPa\"\n\
-         prony = [ { modulus = \"2 MPa\", tau = \"1 h\" } ]\nthermal_expansion = \"2e-4 1/K\"\n",
-    );
+    let file = out.write("soft.toml", crate::support::SOFT_MATERIAL);
     // the soft rubber has no ageing constants: the scenario without its [ageing]; on its ground
     // face (Ra 0.4 µm, rms slope 0.075) every compound seals (P_seal ≈ 0.262 E* h'_rms is far
     // below the ring's contact pressure), so the comparison of leak rates runs on the rough
@@ -689,11 +685,7 @@ fn compare_rejects_unknown_ids() {
     // them, and its row says so (a comparison degrades, it does not abort)
     // (every library compound carries ageing constants: a file compound without them)
     let scenario = nbr_with(&out, "[failure]", "[failure]");
-    let soft = out.write(
-        "soft.toml",
-        "[material]\nname = \"soft test rubber\"\npoisson_ratio = 0.5\nlong_term_modulus = \"2 MPa\"\n\
-         prony = [ { modulus = \"2 MPa\", tau = \"1 h\" } ]\nthermal_expansion = \"2e-4 1/K\"\n",
-    );
+    let soft = out.write("soft.toml", crate::support::SOFT_MATERIAL);
     let assert = cargo_bin_cmd!("sealsim")
         .arg("compare")
         .arg(&scenario)

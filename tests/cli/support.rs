@@ -6,6 +6,12 @@ sealing_force_N_per_m,peak_pressure_Pa,mean_pressure_Pa,contact_width_m,u_c_m,\
 leak_rate_m3_per_s,leaked_volume_m3,state,open_fraction,compression_set,shutdown_squeeze";
 
 /// The `sealsim` binary as a command.
+/// A one-term file compound without ageing constants (every library compound has them): for
+/// tests of a comparison that degrades, and of file compounds.
+pub const SOFT_MATERIAL: &str = "[material]\nname = \"soft test rubber\"\npoisson_ratio = 0.5\n\
+     long_term_modulus = \"2 MPa\"\nprony = [ { modulus = \"2 MPa\", tau = \"1 h\" } ]\n\
+     thermal_expansion = \"2e-4 1/K\"\n";
+
 pub fn sealsim() -> assert_cmd::Command {
     assert_cmd::cargo::cargo_bin_cmd!("sealsim")
 }

@@ -297,12 +297,7 @@ fn messages_speak_the_inputs_terms_notes_are_notes_once_and_nothing_prints_below
     );
     // a compound without ageing constants in a scenario that ages (a file compound: every
     // library one has them): its row says so, the comparison goes on
-    std::fs::write(
-        dir.path().join("soft.toml"),
-        "[material]\nname = \"soft test rubber\"\npoisson_ratio = 0.5\nlong_term_modulus = \"2 MPa\"\n\
-         prony = [ { modulus = \"2 MPa\", tau = \"1 h\" } ]\nthermal_expansion = \"2e-4 1/K\"\n",
-    )
-    .unwrap();
+    std::fs::write(dir.path().join("soft.toml"), crate::support::SOFT_MATERIAL).unwrap();
     let (code, _, stderr) = sealsim_in(
         dir.path(),
         &[
