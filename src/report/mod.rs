@@ -58,7 +58,34 @@ impl std::error::Error for ReportError {}
 /// flushed and synced and then renamed over `path`. On any error the temporary file is
 /// removed and an existing `path` is left untouched. (A replaced file gets default
 /// permissions, not those of the file it replaces.)
+///
+/// A symbolic link is followed: the file it points to is replaced, the link kept. An
+/// existing path that is not a regular file (`/dev/null`, `/dev/stdout`, a FIFO) is a stream
+/// that cannot be replaced, so the bytes are written into it directly; renaming over it would
+/// turn, say, `/dev/null` into a regular file for every other program on the machine.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> io::Result<()> {
+    match fs::metadata(path) {
+        Ok(meta) if meta.is_file() => {
+            if fs::symlink_metadata(path)?.file_type().is_symlink() {
+                return replace_whole(&fs::canonicalize(path)?, bytes);
+            }
+            replace_whole(path, bytes)
+        }
+        Ok(meta) if meta.is_dir() => Err(io::Error::new(
+            io::ErrorKind::InvalidInput,
+            format!("{} is a directory", path.display()),
+        )),
+        Ok(_) => {
+            let mut stream = OpenOptions::new().write(true).open(path)?;
+            stream.write_all(bytes)?;
+            stream.flush()
+        }
+        Err(_) => replace_whole(path, bytes),
+    }
+}
+
+/// The temporary-file-and-rename write of [`write_atomic`], for a regular file or a new path.
+fn replace_whole(path: &Path, bytes: &[u8]) -> io::Result<()> {
     let name = path.file_name().ok_or_else(|| {
         io::Error::new(
             io::ErrorKind::InvalidInput,
@@ -102,6 +129,47 @@ fn next_serial() -> u64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Regression: `-o /dev/null` once renamed a regular file over the machine's /dev/null,
+    /// after which every program reading it got text other programs had thrown away.
+    #[cfg(unix)]
+    #[test]
+    fn a_device_is_written_into_not_replaced() {
+        use std::os::unix::fs::FileTypeExt;
+        let null = Path::new("/dev/null");
+        if !fs::metadata(null).is_ok_and(|m| m.file_type().is_char_device()) {
+            return; // no device here to check against
+        }
+        write_atomic(null, b"discarded").unwrap();
+        assert!(fs::metadata(null).unwrap().file_type().is_char_device());
+        assert_eq!(fs::read(null).unwrap(), b"");
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_symlink_is_followed_and_kept() {
+        let dir = tempfile::tempdir().unwrap();
+        let target = dir.path().join("real.csv");
+        let link = dir.path().join("link.csv");
+        fs::write(&target, "old").unwrap();
+        std::os::unix::fs::symlink(&target, &link).unwrap();
+        write_atomic(&link, b"new").unwrap();
+        assert!(
+            fs::symlink_metadata(&link)
+                .unwrap()
+                .file_type()
+                .is_symlink()
+        );
+        assert_eq!(fs::read(&target).unwrap(), b"new");
+        assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 2);
+    }
+
+    #[test]
+    fn a_directory_is_refused_and_left_alone() {
+        let dir = tempfile::tempdir().unwrap();
+        assert!(write_atomic(dir.path(), b"x").is_err());
+        assert!(dir.path().is_dir());
+    }
 
     #[test]
     fn replaces_whole_file_and_leaves_no_temporaries() {

@@ -885,10 +885,12 @@ fn compare_flags_fkm_in_hot_water_and_coolant_and_hnbr_outlives_nbr_in_hot_oil()
 #[test]
 fn the_ageing_medium_is_stored_checked_and_validated() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios");
+    let scratch = tempfile::tempdir().unwrap();
+    let out = scratch.path().join("history.csv");
     let water = sealsim()
         .arg("run")
         .arg(root.join("oring-nbr-water-80c.toml"))
-        .args(["-o", "/dev/null"])
+        .args(["-o", out.to_str().unwrap()])
         .output()
         .unwrap();
     let stderr = String::from_utf8(water.stderr).unwrap();
@@ -899,7 +901,7 @@ fn the_ageing_medium_is_stored_checked_and_validated() {
     let oil = sealsim()
         .arg("run")
         .arg(root.join("oring-nbr-piston-hydraulic.toml"))
-        .args(["-o", "/dev/null"])
+        .args(["-o", out.to_str().unwrap()])
         .output()
         .unwrap();
     assert!(
