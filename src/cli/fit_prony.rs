@@ -822,6 +822,7 @@ pub fn fitted_material(name: String, fit: &Fit, source: &str, terms_per_decade: 
         data_reduced_time: Some(fit.window),
         data_temperature: None,
         provenance,
+        compatibility: Vec::new(),
         library_id: None,
     }
 }

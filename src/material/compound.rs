@@ -183,6 +183,9 @@ pub struct Material {
     pub data_reduced_time: Option<(f64, f64)>,
     /// The temperature window \[K\] of the data (`data_temperature`): a run outside it warns.
     pub data_temperature: Option<(f64, f64)>,
+    /// The compound's fluid compatibility, one rating per rated fluid class with its source
+    /// (`[material.compatibility]`, docs/model.md §6.8); empty: not rated.
+    pub compatibility: Vec<super::compatibility::Compatibility>,
     /// (parameter key, where its value came from), in file order.
     pub provenance: Vec<(String, String)>,
     /// The material-library id the compound was loaded from (`nbr-70`); `None` for an inline,
@@ -212,6 +215,7 @@ impl Material {
             data_reduced_time: None,
             data_temperature: None,
             provenance: Vec::new(),
+            compatibility: Vec::new(),
             library_id: None,
         })
     }

@@ -236,6 +236,7 @@ mod tests {
             data_reduced_time: None,
             data_temperature: None,
             provenance: Vec::new(),
+            compatibility: Vec::new(),
             library_id: None,
         }
     }

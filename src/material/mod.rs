@@ -2,6 +2,7 @@
 //! the material library's model types (docs/model.md §5).
 
 pub mod ageing_fit;
+pub mod compatibility;
 pub mod compound;
 pub mod csr;
 pub mod curve;

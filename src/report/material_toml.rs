@@ -103,6 +103,17 @@ pub fn material_toml(m: &Material) -> String {
         out.push('\n');
         out.push_str(&ageing_toml(&a, m.ageing_basis.as_ref()));
     }
+    if !m.compatibility.is_empty() {
+        out.push_str("\n[material.compatibility]\n");
+        for c in &m.compatibility {
+            out.push_str(&format!(
+                "{} = {{ rating = \"{}\", source = {} }}\n",
+                c.class.key(),
+                c.rating.letter(),
+                string(&c.source)
+            ));
+        }
+    }
     if !m.provenance.is_empty() {
         out.push_str("\n[material.provenance]\n");
         for (key, text) in &m.provenance {
@@ -217,6 +228,7 @@ mod tests {
                 ("poisson_ratio".into(), "assumed".into()),
                 ("prony".into(), "fitted\nby sealsim".into()),
             ],
+            compatibility: Vec::new(),
             library_id: None,
         }
     }

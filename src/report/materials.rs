@@ -305,6 +305,36 @@ pub fn describe(id: &str, m: &Material) -> String {
              Gehman test (ASTM D1053, ISO 1432) computed from the Prony series and the shift\n"
         );
     }
+    if let Some((ratio, basis)) = m
+        .library_id
+        .as_deref()
+        .and_then(crate::permeation::family_of)
+        .and_then(crate::permeation::helium_nitrogen_ratio)
+    {
+        out += &format!(
+            "{:<19} He/N2 = {} at 23 °C (docs/model.md §13.4)\n{INDENT}basis: {basis}\n",
+            "permeation",
+            human(ratio, 3)
+        );
+    }
+    out += &format!("{:<19} ", "compatibility");
+    if m.compatibility.is_empty() {
+        out += "not rated in any fluid class (no source read rates it)\n";
+    }
+    for (i, c) in m.compatibility.iter().enumerate() {
+        let lead = if i == 0 {
+            String::new()
+        } else {
+            INDENT.to_owned()
+        };
+        out += &format!(
+            "{lead}{} {} ({})\n{INDENT}source: {}\n",
+            c.class.key(),
+            c.rating.letter(),
+            c.rating.words(),
+            c.source
+        );
+    }
     out
 }
 

@@ -23,15 +23,18 @@
 use super::error::{ScenarioError, Source};
 use super::library;
 use super::raw::{
-    Quantity, RawAgeing, RawMaterial, RawMaterialFile, RawPronyTerm, RawQuantity, RawShift,
+    Quantity, RawAgeing, RawCompatibility, RawMaterial, RawMaterialFile, RawPronyTerm, RawQuantity,
+    RawShift,
 };
 use super::validate::{Bound, Field, field};
 use crate::contact::Elastic;
+use crate::material::compatibility::{Compatibility, FluidClass, Rating};
 use crate::material::{
     Ageing, AgeingBasis, BALANCED_CROSSLINKING, Material, Prony, PronyTerm, Shift, Status,
 };
 use crate::simulate::AsperityModulus;
 use crate::units::{self, Dimension, show};
+use std::collections::BTreeMap;
 use std::ops::Range;
 use std::path::Path;
 use toml::Spanned;
@@ -459,6 +462,12 @@ impl Source<'_> {
             .map(|a| self.ageing_basis(a, status != Status::User))
             .transpose()?
             .flatten();
+        let compatibility = raw
+            .compatibility
+            .as_ref()
+            .map(|table| self.compatibility(table, status != Status::User))
+            .transpose()?
+            .unwrap_or_default();
         // published or illustrative data must say where every number comes from
         let provenance = self.provenance(raw, status != Status::User)?;
         Ok(Material {
@@ -474,9 +483,66 @@ impl Source<'_> {
             ageing_basis,
             data_reduced_time,
             data_temperature,
+            compatibility,
             provenance,
             library_id: None,
         })
+    }
+
+    /// `[material.compatibility]`: a key per fluid class, each `{ rating = "A"|"B"|"X", source
+    /// = "…" }`; the source is required when the data make a claim (library files, materials
+    /// with a `status`).
+    fn compatibility(
+        &self,
+        table: &Spanned<BTreeMap<String, Spanned<RawCompatibility>>>,
+        source_required: bool,
+    ) -> Result<Vec<Compatibility>, ScenarioError> {
+        let mut entries: Vec<_> = table.get_ref().iter().collect();
+        entries.sort_by_key(|(_, value)| value.span().start);
+        entries
+            .into_iter()
+            .map(|(key, value)| {
+                let path = format!("material.compatibility.{key}");
+                let class = FluidClass::from_key(key).ok_or_else(|| {
+                    self.error(
+                        value.span(),
+                        &path,
+                        format!(
+                            "unknown fluid class `{key}`: give one of {}",
+                            FluidClass::ALL.map(|c| format!("`{}`", c.key())).join(", ")
+                        ),
+                    )
+                })?;
+                let raw = value.get_ref();
+                let rating = Rating::from_letter(raw.rating.get_ref()).ok_or_else(|| {
+                    self.error(
+                        raw.rating.span(),
+                        &format!("{path}.rating"),
+                        format!(
+                            "rating {:?} is outside the scale: give \"A\" (recommended), \"B\" \
+                             (limited) or \"X\" (not recommended)",
+                            raw.rating.get_ref()
+                        ),
+                    )
+                })?;
+                let source = match &raw.source {
+                    Some(s) if !s.get_ref().trim().is_empty() => s.get_ref().trim().to_owned(),
+                    _ if !source_required => "the material file".to_owned(),
+                    _ => {
+                        return Err(self.error(
+                            value.span(),
+                            &format!("{path}.source"),
+                            "missing `source`: a rating in published or illustrative data says                              which chart it comes from, e.g. source = \"<maker>, <chart>, row                              '<fluid>'\"",
+                        ));
+                    }
+                };
+                Ok(Compatibility {
+                    class,
+                    rating,
+                    source,
+                })
+            })
+            .collect()
     }
 
     /// A `[lo, hi]` window of two values, each read by `value`, with lo ≤ hi.
@@ -1383,6 +1449,62 @@ ageing = "test: ageing"
         let library = parse(TEST_RUBBER).unwrap();
         let written = crate::report::material_toml::material_toml(&library);
         assert_eq!(parse(&written).unwrap(), library, "{written}");
+    }
+
+    /// `[material.compatibility]` (issue 31): read with its sources, written back the same,
+    /// and every malformed entry refused naming the file, line and key.
+    #[test]
+    fn compatibility_ratings_are_read_written_and_checked() {
+        let table = "[material.compatibility]\n\
+                     water = { rating = \"A\", source = \"test chart, row water\" }\n\
+                     mineral-oil = { rating = \"X\", source = \"test chart, row oil\" }\n";
+        let text = format!("{TEST_RUBBER}{table}");
+        let m = parse(&text).unwrap();
+        let found: Vec<_> = m
+            .compatibility
+            .iter()
+            .map(|c| (c.class, c.rating, c.source.as_str()))
+            .collect();
+        assert_eq!(
+            found,
+            [
+                (
+                    FluidClass::Water,
+                    Rating::Recommended,
+                    "test chart, row water"
+                ),
+                (
+                    FluidClass::MineralOil,
+                    Rating::NotRecommended,
+                    "test chart, row oil"
+                ),
+            ]
+        );
+        let written = crate::report::material_toml::material_toml(&m);
+        assert_eq!(parse(&written).unwrap(), m, "{written}");
+        // the table starts on line 28: its entries are on lines 29 and 30
+        let e = error(&text.replace("water = {", "brine = {"));
+        assert!(
+            e.contains("materials/x.toml:29: material.compatibility.brine: unknown fluid class `brine`: give one of `mineral-oil`, `water`, `hot-water`, `water-glycol`"),
+            "{e}"
+        );
+        let e = error(&text.replace("\"X\"", "\"C\""));
+        assert!(
+            e.contains("materials/x.toml:30: material.compatibility.mineral-oil.rating: rating \"C\" is outside the scale"),
+            "{e}"
+        );
+        let e = error(&text.replace(", source = \"test chart, row oil\"", ""));
+        assert!(
+            e.contains(
+                "materials/x.toml:30: material.compatibility.mineral-oil.source: missing `source`"
+            ),
+            "{e}"
+        );
+        // a user's own file may rate without a source
+        let user = format!("[material]\nyoungs_modulus = \"5 MPa\"\npoisson_ratio = 0.5\n{table}")
+            .replace(", source = \"test chart, row oil\"", "");
+        let m = material_from_str(&user, Path::new("mine.toml")).unwrap();
+        assert_eq!(m.compatibility.len(), 2);
     }
 
     #[test]

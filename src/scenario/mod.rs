@@ -18,7 +18,7 @@
 
 pub mod ageing_data;
 pub mod as568;
-pub mod compatibility;
+pub use crate::material::compatibility;
 mod contamination;
 mod error;
 pub mod figure_set;

@@ -118,6 +118,8 @@ pub(super) struct RawMaterial {
     pub data_temperature: Option<Spanned<Vec<Quantity>>>,
     pub shift: Option<Spanned<RawShift>>,
     pub ageing: Option<Spanned<RawAgeing>>,
+    /// Fluid class key (`mineral-oil`, `water`, `hot-water`, `water-glycol`) → its rating.
+    pub compatibility: Option<Spanned<BTreeMap<String, Spanned<RawCompatibility>>>>,
     /// Parameter key → where its value came from.
     pub provenance: Option<Spanned<BTreeMap<String, Spanned<String>>>>,
     /// Scenario option (not a property of the compound): which modulus the asperity contact
@@ -160,6 +162,14 @@ pub(super) struct RawAgeing {
     pub criterion: Option<Spanned<String>>,
     /// The medium the compound was aged in (`air`, `mineral-oil`, `water`, `water-glycol`).
     pub medium: Option<Spanned<String>>,
+}
+
+/// One `[material.compatibility]` entry: `{ rating = "A", source = "…" }`.
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawCompatibility {
+    pub rating: Spanned<String>,
+    pub source: Option<Spanned<String>>,
 }
 
 /// A material file (`materials/ID.toml`): one `[material]` table.

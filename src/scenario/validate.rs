@@ -519,15 +519,12 @@ impl Source<'_> {
             .and_then(|l| crate::fluid::library(l.get_ref()).map(|f| (l, f)));
         // the compound's fluid compatibility (docs/model.md §6.8): a note, or a warning when
         // not recommended
-        let compatibility = match (material.library_id.as_deref(), known) {
-            (Some(compound), Some((library, fluid))) => {
-                let (_, hi) = life.environment.range();
-                super::compatibility::FluidClass::of(fluid.id, hi)
-                    .and_then(|class| super::compatibility::rating(compound, class))
-                    .map(|c| (c, library.span()))
-            }
-            _ => None,
-        };
+        let compatibility = known.and_then(|(library, fluid)| {
+            let (_, hi) = life.environment.range();
+            super::compatibility::FluidClass::of(fluid.id, hi)
+                .and_then(|class| super::compatibility::rating(&material.compatibility, class))
+                .map(|c| (c.clone(), library.span()))
+        });
         if let Some((c, span)) = &compatibility {
             let not = c.rating == super::compatibility::Rating::NotRecommended;
             let message = format!(

@@ -195,9 +195,10 @@ fn the_shipped_helium_leak_test_seals_at_the_interface_and_permeates() {
         ) < 1e-12
     );
     assert!(q > 1e-10 && total == q, "{q} {total}");
-    // the time lag w²/(6D), w = πd²/(4h), h = 2.648 mm, D = 3e-10 m²/s: ≈ 7.6e3 s (§13.4)
+    // the time lag w²/(6D), w = πd²/(4h) = 3.698 mm, h = 2.648 mm, D = 4.36e-10 m²/s (helium in
+    // Viton, §13.4): 1.3676e-5/2.616e-9 ≈ 5.23e3 s (the ring's stretch moves it slightly)
     let lag = gas["permeation_time_lag_s"].as_f64().unwrap();
-    assert!((7.0e3..8.2e3).contains(&lag), "{lag}");
+    assert!((5.1e3..5.35e3).contains(&lag), "{lag}");
 }
 
 /// [`FLAT_GAS`] with a liquid of 1 mPa·s at ΔP = 1 bar instead of the gas.

@@ -937,3 +937,53 @@ fn the_ageing_medium_is_stored_checked_and_validated() {
         "{stderr}"
     );
 }
+
+/// Issue 31: a library-format compound file with a missing figure, a compatibility entry for
+/// an unknown fluid class, or a rating outside the A/B/X scale exits 2 naming the file, the
+/// line and the key, and prints nothing on standard output.
+#[test]
+fn a_broken_compound_file_exits_2_naming_file_line_and_key() {
+    let text = library::get("epdm-70").unwrap().text;
+    let line_of = |needle: &str| text.lines().position(|l| l.starts_with(needle)).unwrap() + 1;
+    let cases = [
+        (
+            text.replace("poisson_ratio = 0.5\n", ""),
+            // the key is missing: the error points at the [material] table's header
+            format!(
+                ":{}: material.poisson_ratio: missing key",
+                line_of("[material]")
+            ),
+        ),
+        (
+            text.replace("water-glycol = {", "brine = {"),
+            format!(
+                ":{}: material.compatibility.brine: unknown fluid class `brine`",
+                line_of("water-glycol = {")
+            ),
+        ),
+        (
+            text.replacen("rating = \"A\"", "rating = \"C\"", 1),
+            format!(
+                ":{}: material.compatibility.water.rating: rating \"C\" is outside the scale",
+                line_of("water = {")
+            ),
+        ),
+    ];
+    let dir = tempfile::tempdir().unwrap();
+    for (broken, expected) in cases {
+        let file = dir.path().join("epdm-broken.toml");
+        fs::write(&file, &broken).unwrap();
+        let out = sealsim()
+            .args(["materials", "show", "--file"])
+            .arg(&file)
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2), "{expected}");
+        assert!(out.stdout.is_empty());
+        let stderr = String::from_utf8(out.stderr).unwrap();
+        assert!(
+            stderr.contains(&format!("epdm-broken.toml{expected}")),
+            "{expected}\n{stderr}"
+        );
+    }
+}

@@ -505,6 +505,7 @@ fn material_toml_round_trips_through_the_parser() {
         .iter()
         .map(|k| (k.to_string(), format!("source of {k}, p. 1")))
         .collect(),
+        compatibility: Vec::new(),
         library_id: None,
     };
     let text = material_toml(&full);

@@ -40,6 +40,7 @@ fn material(long_term: f64, terms: &[(f64, f64)], shift: Shift) -> Material {
         data_reduced_time: None,
         data_temperature: None,
         provenance: Vec::new(),
+        compatibility: Vec::new(),
         library_id: None,
     }
 }

@@ -1,6 +1,6 @@
-//! Fluid compatibility of the library compounds (docs/model.md §6.8): a rating per compound class
-//! × fluid class from cited public charts and seal makers' guides, printed by `run` and
-//! `compare`; "not recommended" is a warning in `run` and a flag in the `compare` row.
+//! Fluid compatibility of a compound (docs/model.md §6.8): a rating per fluid class, stored in
+//! the compound's file (`[material.compatibility]`, each with its source), printed by `run`
+//! and `compare`; "not recommended" is a warning in `run` and a flag in the `compare` row.
 //!
 //! Scale (one for every source, mapped from each source's words): **A** recommended
 //! ("excellent", "the correct default", "required for"), **B** limited ("good", "fair",
@@ -45,6 +45,29 @@ impl FluidClass {
         }
     }
 
+    /// Every class, in the order a compound file lists them.
+    pub const ALL: [FluidClass; 4] = [
+        FluidClass::MineralOil,
+        FluidClass::Water,
+        FluidClass::HotWater,
+        FluidClass::WaterGlycol,
+    ];
+
+    /// The class's key in `[material.compatibility]`.
+    pub fn key(self) -> &'static str {
+        match self {
+            FluidClass::MineralOil => "mineral-oil",
+            FluidClass::Water => "water",
+            FluidClass::HotWater => "hot-water",
+            FluidClass::WaterGlycol => "water-glycol",
+        }
+    }
+
+    /// The class of a `[material.compatibility]` key.
+    pub fn from_key(key: &str) -> Option<FluidClass> {
+        FluidClass::ALL.into_iter().find(|c| c.key() == key)
+    }
+
     pub fn as_str(self) -> &'static str {
         match self {
             FluidClass::MineralOil => "mineral oil",
@@ -64,6 +87,15 @@ pub enum Rating {
 }
 
 impl Rating {
+    pub const ALL: [Rating; 3] = [Rating::Recommended, Rating::Limited, Rating::NotRecommended];
+
+    /// The rating of a scale letter (`"A"`, `"B"`, `"X"`).
+    pub fn from_letter(letter: &str) -> Option<Rating> {
+        Rating::ALL
+            .into_iter()
+            .find(|r| letter.len() == 1 && letter.starts_with(r.letter()))
+    }
+
     pub fn letter(self) -> char {
         match self {
             Rating::Recommended => 'A',
@@ -82,12 +114,17 @@ impl Rating {
 }
 
 /// One compound's rating in one fluid class, with its source.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Compatibility {
     pub class: FluidClass,
     pub rating: Rating,
     /// Where the rating comes from, with the words it maps.
-    pub source: &'static str,
+    pub source: String,
+}
+
+/// The rating in `class` among a compound's `ratings`; `None` when no source rated the pair.
+pub fn rating(ratings: &[Compatibility], class: FluidClass) -> Option<&Compatibility> {
+    ratings.iter().find(|c| c.class == class)
 }
 
 impl fmt::Display for Compatibility {
@@ -103,84 +140,15 @@ impl fmt::Display for Compatibility {
     }
 }
 
-/// (compound class prefix, fluid class, rating, source and the words mapped).
-const RATINGS: &[(&str, FluidClass, Rating, &str)] = &[
-    (
-        "nbr",
-        FluidClass::MineralOil,
-        Rating::Recommended,
-        "'NBR (nitrile rubber) is the correct default for mineral oil-based hydraulic fluids': \
-         kingdaflex.com, 'Hydraulic fluid' (secondary)",
-    ),
-    (
-        "nbr",
-        FluidClass::HotWater,
-        Rating::Limited,
-        "steam 'Up to +120°C … NBR (short-term only) or EPDM': O-Ring Supply Co., 'Best O-ring \
-         material for steam' (secondary)",
-    ),
-    (
-        "fkm",
-        FluidClass::HotWater,
-        Rating::NotRecommended,
-        "'FKM — oils/fuels/acids/most chemicals (not amines, ketones, hot water)': PTI seal \
-         chemical compatibility glossary, pti-latam.com (secondary); only special grades have \
-         'some water immersion capability' (McNally Institute, O-ring selection)",
-    ),
-    (
-        "epdm",
-        FluidClass::MineralOil,
-        Rating::NotRecommended,
-        "EPDM 'is incompatible with mineral oils and will swell rapidly if used with them': \
-         kingdaflex.com, 'Hydraulic fluid' (secondary); 'poor in mineral oils/fuels' (poesia.ch)",
-    ),
-    (
-        "epdm",
-        FluidClass::Water,
-        Rating::Recommended,
-        "'EPDM — water/steam/acids/bases (not mineral oils)': PTI seal chemical compatibility \
-         glossary, pti-latam.com (secondary)",
-    ),
-    (
-        "epdm",
-        FluidClass::HotWater,
-        Rating::Recommended,
-        "'EPDM: excellent in hot water/steam and alkalis': Poesia, 'Chemical resistance' \
-         lexicon, poesia.ch (secondary)",
-    ),
-    (
-        "epdm",
-        FluidClass::WaterGlycol,
-        Rating::Recommended,
-        "EPDM 'is required for water-based fluids, glycol solutions, and phosphate ester \
-         fluids': kingdaflex.com, 'Hydraulic fluid' (secondary)",
-    ),
-    (
-        "vmq",
-        FluidClass::HotWater,
-        Rating::Limited,
-        "'silicone — wide temperature extremes (not steam, hydrocarbon solvents)': PTI seal \
-         chemical compatibility glossary, pti-latam.com (secondary)",
-    ),
-];
-
-/// The rating of library compound `id` (its class is the id's prefix, `fkm-75` → `fkm`) in
-/// `class`; `None` when no source rated the pair.
-pub fn rating(id: &str, class: FluidClass) -> Option<Compatibility> {
-    let prefix = id.split('-').next().unwrap_or(id);
-    RATINGS
-        .iter()
-        .find(|(p, c, _, _)| *p == prefix && *c == class)
-        .map(|&(_, class, rating, source)| Compatibility {
-            class,
-            rating,
-            source,
-        })
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The library compound's stored ratings.
+    fn of(id: &str, class: FluidClass) -> Option<Rating> {
+        let material = crate::scenario::library::get(id).unwrap().load().unwrap();
+        rating(&material.compatibility, class).map(|c| c.rating)
+    }
 
     /// The field practice the issue names: EPDM, not standard FKM, in hot water and hot
     /// coolant; EPDM not in mineral oil; NBR the mineral-oil default.
@@ -191,21 +159,13 @@ mod tests {
         let coolant = FluidClass::of("ethylene-glycol-water-50", 383.15).unwrap();
         assert_eq!(coolant, FluidClass::HotWater);
         for class in [hot, coolant] {
-            assert_eq!(
-                rating("fkm-75", class).unwrap().rating,
-                Rating::NotRecommended
-            );
-            assert_eq!(
-                rating("epdm-70", class).unwrap().rating,
-                Rating::Recommended
-            );
+            assert_eq!(of("fkm-75", class), Some(Rating::NotRecommended));
+            assert_eq!(of("epdm-70", class), Some(Rating::Recommended));
         }
         let oil = FluidClass::of("iso-vg-46", 393.15).unwrap();
-        assert_eq!(
-            rating("epdm-70", oil).unwrap().rating,
-            Rating::NotRecommended
-        );
-        assert_eq!(rating("nbr-70", oil).unwrap().rating, Rating::Recommended);
+        assert_eq!(of("epdm-70", oil), Some(Rating::NotRecommended));
+        assert_eq!(of("nbr-70", oil), Some(Rating::Recommended));
+        assert_eq!(of("fkm-75", oil), Some(Rating::Recommended));
         // below 80 °C water is water; a coolant below it is a coolant
         assert_eq!(FluidClass::of("water", 353.0), Some(FluidClass::Water));
         assert_eq!(
@@ -213,7 +173,23 @@ mod tests {
             Some(FluidClass::WaterGlycol)
         );
         // unrated pairs and uncovered fluids say nothing
-        assert!(rating("hnbr-75", oil).is_none());
+        assert!(of("hnbr-75", oil).is_none());
         assert!(FluidClass::of("helium", 300.0).is_none());
+    }
+
+    #[test]
+    fn keys_and_letters_round_trip() {
+        for class in FluidClass::ALL {
+            assert_eq!(FluidClass::from_key(class.key()), Some(class));
+        }
+        for rating in Rating::ALL {
+            assert_eq!(
+                Rating::from_letter(&rating.letter().to_string()),
+                Some(rating)
+            );
+        }
+        assert_eq!(Rating::from_letter("C"), None);
+        assert_eq!(Rating::from_letter("AB"), None);
+        assert_eq!(FluidClass::from_key("hot water"), None);
     }
 }
