@@ -264,8 +264,85 @@ COMPOUNDS = [
                      f"rated 100 C ({BODE}; the rule: {PSP_LIFE}); illustrative")),
 ]
 
+# The compounds added in issue 31. No class-specific ageing energy was found for them: each takes the
+# ESA/Cetim round robin's Arrhenius energy on stress relaxation (force retention, the property the
+# two-network model drives), 38 kJ/mol for an FKM, with k at the rated temperature from the 1000 h
+# rule. A low Ea is the conservative choice: below the rating it ages faster than a higher one would
+# (the 10 K doubling rule, ~100 kJ/mol at these ratings, would give lives 10-100x longer at 60 C).
+ESA_SR = ("Ea = 38 kJ/mol: the Arrhenius energy on stress relaxation (force retention) of an FKM in the "
+          "European Sealing Association / Cetim round robin (B. Omnes, 'Arrhenius seal life prediction "
+          "project', Valve World, August 2023, p. 53), ASSUMED for this class: no class-specific value "
+          "was found, and a low Ea is the conservative choice below the rating (the 10 K doubling rule "
+          "would give about 100 kJ/mol and lives 10-100x longer at 60 C)")
+EMI = "EMI Seals, '308 Butyl rubber' data sheet (emiseals.com/data-sheet/308-butyl-rubber/)"
+PDB = "polymerdatabase.com, 'ACM' (Elastomers; the same text at clwydcompounders.com, 'ACM rubber')"
+MOLDED = ("Molded Dimensions 'Chemical resistance properties' chart (the maker's page source, mirrored at "
+          "GitHub foresitegroup/moldeddimensions2016, chemical-resistance-properties.php; secondary)")
+DANCO = "Danco Industry, 'Chemical' engineering page (dancoindustry.com/engineering/chemical; secondary)"
 
-def toml_for(c):
+
+def rated_ageing(rated_c, medium="air"):
+    return dict(ea=38e3, rate=rate_for_hours(RULE_HOURS), tref=float(rated_c), medium=medium,
+                prop="stress relaxation (Ea); the rated-temperature rule (k at the rating)",
+                crit="50 % retained force",
+                src=f"{ESA_SR}; k at {rated_c} C from 1000 h to 50 % retained force at the rated "
+                    f"{rated_c} C (the rule: {PSP_LIFE}); illustrative")
+
+
+COMPOUNDS += [
+    dict(id="iir-70", name="IIR (butyl rubber), 70 Shore A", shore=70, low=-55, rated=105,
+         tg=-55 - T10_ABOVE_TG, tg_src=f"calibrated: placed {T10_ABOVE_TG:g} K below the -55 C "
+         f"low-temperature limit of {EMI} ('Temperature Range: -55 C to +105 C') so that T10 meets it "
+         f"(the class's calorimetric T_g: -66 C, {HANDBOOK}, Table 4.2; butyl's broad, highly damped "
+         "transition is not modelled)",
+         cte=160e-6, cte_src=CTE_ASSUMED, ageing=rated_ageing(105),
+         compat=[("mineral-oil", "X", f"{MOLDED}, row 'Oil and gasoline': Butyl P"),
+                 ("water", "A", f"{MOLDED}, row 'Water resistance': Butyl E")]),
+    dict(id="fvmq-70", name="FVMQ (fluorosilicone rubber), 70 Shore A", shore=70, low=-55, rated=175,
+         tg=-55 - T10_ABOVE_TG, tg_src=f"calibrated: placed {T10_ABOVE_TG:g} K below the -55 C "
+         f"low-temperature limit of {BODE} (FVMQ column) so that T10 meets it; like VMQ the effective "
+         "glass transition stands in for the stiffening the model does not otherwise have",
+         cte=200e-6, cte_src="ASSUMED equal to vmq-70's estimate for a filled silicone (engineeringniche.com, "
+         "'Designing rubber and elastomeric materials to accommodate thermal expansion'); no FVMQ "
+         "value found; illustrative",
+         ageing=rated_ageing(175), compat=[]),
+    dict(id="ffkm-75", name="FFKM (perfluoroelastomer), 75 Shore A", shore=75, low=-15, rated=260,
+         tg=-15 - T10_ABOVE_TG, tg_src=f"calibrated: placed {T10_ABOVE_TG:g} K below the -15 C "
+         f"standard low-temperature limit of {BODE} (FFKM column; special grades -35 C) so that T10 "
+         "meets it",
+         cte=160e-6, cte_src=CTE_ASSUMED, ageing=rated_ageing(260),
+         compat=[("hot-water", "A", "steam 'Above +200 C (> 14.6 bar) | FFKM': O-Ring Supply Co., "
+                  "'Best O-ring material for steam' (secondary); 'FFKM - virtually everything': PTI "
+                  "seal chemical compatibility glossary, pti-latam.com (tertiary)")]),
+    dict(id="acm-70", name="ACM (polyacrylate rubber), 70 Shore A", shore=70, low=-10, rated=150,
+         tg=-10 - T10_ABOVE_TG, tg_src=f"calibrated: placed {T10_ABOVE_TG:g} K below the -10 C of {PDB} "
+         "('low temperature applications are usually limited to approximately -10 C'; a distributor "
+         "glossary gives -15 C: the higher limit is the conservative one) so that T10 meets it",
+         cte=160e-6, cte_src=CTE_ASSUMED, ageing=rated_ageing(150),
+         compat=[("mineral-oil", "A", f"'resistant to heat, hydrocarbon oils and in particular, oil "
+                  f"additives': {DANCO}"),
+                 ("water", "X", f"'extremely susceptible to hydrolysis, hence their unsuitability for "
+                  f"use in aqueous media': {DANCO}"),
+                 ("hot-water", "X", f"'unsuitability for use in aqueous media' (hydrolysis): {DANCO}"),
+                 ("water-glycol", "X", f"'unsuitability for use in aqueous media' (hydrolysis): "
+                  f"{DANCO}")]),
+]
+
+
+def compatibility_block(c, existing):
+    """The [material.compatibility] table: kept from the file when it has one (the ratings are
+    sourced data edited in the files), else from the compound's `compat` list."""
+    if existing and "[material.compatibility]" in existing:
+        block = existing.split("[material.compatibility]", 1)[1].split("\n\n", 1)[0]
+        return ["", "[material.compatibility]" + block.rstrip("\n")]
+    lines = ["", "[material.compatibility]",
+             "# A recommended, B limited, X not recommended (docs/model.md §6.8); a class not listed: "
+             "not rated"]
+    lines += [f'{k} = {{ rating = "{r}", source = "{src}" }}' for k, r, src in c.get("compat", [])]
+    return lines
+
+
+def toml_for(c, existing=None):
     d = derive(c["shore"], c["tg"], c.get("m", M_DEFAULT), c.get("e_g", E_GLASS_DEFAULT))
     glassy_cte = c["cte"] * GLASSY_CTE_RATIO
     lines = [
@@ -299,6 +376,7 @@ def toml_for(c):
                   f'property = "{a["prop"]}"', f'criterion = "{a["crit"]}"']
         if a.get("medium"):
             lines.append(f'medium = "{a["medium"]}"')
+    lines += compatibility_block(c, existing)
     gent_src = (f"E(3 s, 23 C) = {d['e_test'] / 1e6:.4f} MPa from Gent's relation at {c['shore']} Shore A "
                 "(A.N. Gent 1958, 'On the relation between indentation hardness and Young's modulus', "
                 "form as commonly quoted; the grade is nominal)")
@@ -344,10 +422,12 @@ if __name__ == "__main__":
     import sys
     here = os.path.dirname(os.path.abspath(__file__))
     for c in COMPOUNDS:
-        text, d = toml_for(c)
+        path = os.path.join(here, c["id"] + ".toml")
+        existing = open(path).read() if os.path.exists(path) else None
+        text, d = toml_for(c, existing)
         print(f"{c['id']}: E(3 s) = {d['e_test']/1e6:.4f} MPa, E_inf = {d['e_inf']/1e6:.4f} MPa, "
               f"E0 = {d['e0']/1e9:.4f} GPa, tau_g(23 C) = {d['tau_g']:.3g} s, "
               f"fit max {d['max_rel']:.2e} rms {d['rms_rel']:.2e}, C1' = {d['c1']:.4f}, C2' = {d['c2']:.2f} K")
         if "--write" in sys.argv:
-            with open(os.path.join(here, c["id"] + ".toml"), "w") as f:
+            with open(path, "w") as f:
                 f.write(text)

@@ -12,10 +12,14 @@ use std::path::PathBuf;
 /// (id, file text) of every library compound, sorted by id. A new file in `materials/` must be
 /// added here (a unit test checks that the two agree).
 pub const FILES: &[(&str, &str)] = &[
+    ("acm-70", include_str!("../../materials/acm-70.toml")),
     ("cr-70", include_str!("../../materials/cr-70.toml")),
     ("epdm-70", include_str!("../../materials/epdm-70.toml")),
+    ("ffkm-75", include_str!("../../materials/ffkm-75.toml")),
     ("fkm-75", include_str!("../../materials/fkm-75.toml")),
+    ("fvmq-70", include_str!("../../materials/fvmq-70.toml")),
     ("hnbr-75", include_str!("../../materials/hnbr-75.toml")),
+    ("iir-70", include_str!("../../materials/iir-70.toml")),
     ("nbr-70", include_str!("../../materials/nbr-70.toml")),
     ("vmq-70", include_str!("../../materials/vmq-70.toml")),
 ];

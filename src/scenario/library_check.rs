@@ -49,6 +49,14 @@ const BODE: &str = "Bode Seal, '1 PROPERTIES OF ELASTOMER' (bodeseal.com/technic
 /// The published figures of every library compound's class.
 pub const PUBLISHED: &[Published] = &[
     Published {
+        id: "acm-70",
+        low_limit: 263.15,
+        rated: 423.15,
+        source: "polymerdatabase.com, 'ACM': 'low temperature applications are usually limited to \
+                 approximately -10°C', 'typical continuous service temperature range is -10°C to \
+                 150°C'",
+    },
+    Published {
         id: "cr-70",
         low_limit: 233.15,
         rated: 373.15,
@@ -62,9 +70,21 @@ pub const PUBLISHED: &[Published] = &[
                  EPDM peroxide-cured",
     },
     Published {
+        id: "ffkm-75",
+        low_limit: 258.15,
+        rated: 533.15,
+        source: BODE,
+    },
+    Published {
         id: "fkm-75",
         low_limit: 258.15,
         rated: 473.15,
+        source: BODE,
+    },
+    Published {
+        id: "fvmq-70",
+        low_limit: 218.15,
+        rated: 448.15,
         source: BODE,
     },
     Published {
@@ -72,6 +92,12 @@ pub const PUBLISHED: &[Published] = &[
         low_limit: 243.15,
         rated: 423.15,
         source: BODE,
+    },
+    Published {
+        id: "iir-70",
+        low_limit: 218.15,
+        rated: 378.15,
+        source: "EMI Seals, '308 Butyl rubber' data sheet: 'Temperature Range: -55°C to +105°C'",
     },
     Published {
         id: "nbr-70",

@@ -464,7 +464,7 @@ fn bad_scenarios_exit_2_and_write_nothing() {
             "library = \"nbr-70\"",
             "library = \"nbr-99\"",
             &[
-                "s.toml:15: material.library: unknown library material \"nbr-99\"; the library has: cr-70, epdm-70",
+                "s.toml:15: material.library: unknown library material \"nbr-99\"; the library has: acm-70, cr-70, epdm-70",
             ],
         ),
         (
@@ -677,7 +677,7 @@ fn compare_rejects_unknown_ids() {
         .stdout(predicate::str::is_empty());
     let stderr = String::from_utf8(assert.get_output().stderr.clone()).unwrap();
     assert!(
-        stderr.starts_with("error: --materials: unknown library material \"nbr-99\"; the library has: cr-70, epdm-70, fkm-75, hnbr-75, nbr-70, vmq-70"),
+        stderr.starts_with("error: --materials: unknown library material \"nbr-99\"; the library has: acm-70, cr-70, epdm-70, ffkm-75, fkm-75, fvmq-70, hnbr-75, iir-70, nbr-70, vmq-70"),
         "{stderr}"
     );
     assert!(!out.path("c.csv").exists() && !out.path("c.svg").exists());
