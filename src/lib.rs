@@ -109,7 +109,7 @@ pub mod gland;
 pub mod interface;
 pub mod leak;
 pub mod material;
-pub mod math;
+pub use sealsim_math as math;
 pub mod numerical;
 pub mod permeation;
 pub mod profile;

@@ -12,6 +12,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod architecture;
 mod bem;
 mod clogging;
 mod dynamic;

@@ -14,7 +14,7 @@ pub mod laplacian;
 pub mod multigrid;
 pub mod nnls;
 pub mod quadrature;
-pub(crate) mod rng;
+pub mod rng;
 pub mod special;
 
 /// Dot product `a · b` of two slices of equal length, with four partial sums: vectorisable and

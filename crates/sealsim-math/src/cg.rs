@@ -187,9 +187,9 @@ where
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::math::cholesky::{DenseCholesky, ModifiedIncompleteCholesky};
-    use crate::math::laplacian::GridLaplacian;
-    use crate::math::multigrid::Multigrid;
+    use crate::cholesky::{DenseCholesky, ModifiedIncompleteCholesky};
+    use crate::laplacian::GridLaplacian;
+    use crate::multigrid::Multigrid;
 
     /// A 24 × 24 periodic grid with conductances over four decades, one cell held at 0.
     fn problem() -> (GridLaplacian, Vec<f64>) {

@@ -3,10 +3,10 @@
 use std::f64::consts::PI;
 
 /// SplitMix64 (Steele, Lea & Flood, OOPSLA 2014): seeded, portable.
-pub(crate) struct SplitMix64(pub(crate) u64);
+pub struct SplitMix64(pub u64);
 
 impl SplitMix64 {
-    pub(crate) fn next_u64(&mut self) -> u64 {
+    pub fn next_u64(&mut self) -> u64 {
         self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
         let mut z = self.0;
         z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
@@ -15,12 +15,12 @@ impl SplitMix64 {
     }
 
     /// Uniform in (0, 1].
-    pub(crate) fn uniform(&mut self) -> f64 {
+    pub fn uniform(&mut self) -> f64 {
         ((self.next_u64() >> 11) + 1) as f64 * (1.0 / (1u64 << 53) as f64)
     }
 
     /// Two independent standard normals (Box–Muller).
-    pub(crate) fn normal_pair(&mut self) -> (f64, f64) {
+    pub fn normal_pair(&mut self) -> (f64, f64) {
         let r = (-2.0 * self.uniform().ln()).sqrt();
         let phi = 2.0 * PI * self.uniform();
         (r * libm::cos(phi), r * libm::sin(phi))

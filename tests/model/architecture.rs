@@ -1,0 +1,266 @@
+//! The layering of the library's top-level modules (ARCHITECTURE.md), checked on the source:
+//! every `crate::module` reference outside unit tests is an edge; an edge that points from a
+//! lower layer to a higher one must be one of the known exceptions in [`DEBT`], and the module
+//! cycles must be exactly [`KNOWN_CYCLES`]. A new upward edge or a new or larger cycle fails;
+//! so does a debt entry that no longer exists (the list only shrinks). `sealsim-math` is a
+//! crate of its own, so an edge from it into the physics is a compile error.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::fs;
+use std::path::{Path, PathBuf};
+
+/// The intended layer of every top-level module, inner to outer: dependencies point inwards
+/// (to a lower or equal layer). `math` is the `sealsim-math` crate.
+const LAYERS: &[(&str, u8)] = &[
+    ("math", 0),
+    ("units", 1),
+    ("gas", 2),
+    ("fluid", 2),
+    ("interface", 2),
+    ("surface", 2),
+    ("roughness", 2),
+    ("contact", 3),
+    ("seal", 3),
+    ("gland", 3),
+    ("extrusion", 3),
+    ("permeation", 3),
+    ("material", 3),
+    ("clogging", 3),
+    ("numerical", 4),
+    ("profile", 4),
+    ("leak", 4),
+    ("dynamic", 4),
+    ("validity", 4),
+    ("simulate", 5),
+    ("study", 6),
+    ("scenario", 7),
+    ("workflow", 8),
+    ("report", 9),
+    ("cli", 10),
+];
+
+/// Upward edges that exist today, each a piece of debt that issue 32 pays off; remove an entry
+/// when its edge goes (the test says when).
+const DEBT: &[(&str, &str)] = &[
+    ("units", "gas"),
+    ("material", "scenario"),
+    ("clogging", "simulate"),
+    ("profile", "scenario"),
+    ("dynamic", "simulate"),
+    ("study", "scenario"),
+    ("study", "workflow"),
+];
+
+/// The cycles among modules today (strongly connected components of more than one module).
+const KNOWN_CYCLES: &[&[&str]] = &[
+    &["fluid", "gas", "interface"],
+    &[
+        "clogging",
+        "dynamic",
+        "leak",
+        "material",
+        "numerical",
+        "profile",
+        "scenario",
+        "simulate",
+        "study",
+        "validity",
+        "workflow",
+    ],
+];
+
+fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
+    for entry in fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.is_dir() {
+            rust_files(&path, out);
+        } else if path.extension().is_some_and(|e| e == "rs") {
+            out.push(path);
+        }
+    }
+}
+
+/// The identifiers right after `crate::` (and inside `crate::{…}` groups) in `text`.
+fn referenced_modules(text: &str) -> BTreeSet<String> {
+    let mut found = BTreeSet::new();
+    let ident = |s: &str| -> String {
+        s.chars()
+            .take_while(|c| c.is_alphanumeric() || *c == '_')
+            .collect()
+    };
+    for (i, _) in text.match_indices("crate::") {
+        let rest = &text[i + "crate::".len()..];
+        if let Some(group) = rest.strip_prefix('{') {
+            let end = group.find('}').unwrap_or(group.len());
+            for part in group[..end].split(',') {
+                found.insert(ident(part.trim()));
+            }
+        } else {
+            found.insert(ident(rest));
+        }
+    }
+    found
+}
+
+/// Module → the modules it references, from the library's source (unit-test modules left out).
+fn edges() -> BTreeMap<String, BTreeSet<String>> {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let modules: BTreeSet<&str> = LAYERS.iter().map(|(m, _)| *m).collect();
+    let mut files = Vec::new();
+    rust_files(&src, &mut files);
+    let mut graph: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+    for file in files {
+        let rel = file.strip_prefix(&src).unwrap();
+        let first = rel
+            .components()
+            .next()
+            .unwrap()
+            .as_os_str()
+            .to_string_lossy();
+        let top = first.trim_end_matches(".rs").to_string();
+        if top == "lib" || top == "main" {
+            continue;
+        }
+        assert!(
+            modules.contains(top.as_str()),
+            "module `{top}` has no layer in LAYERS"
+        );
+        let text = fs::read_to_string(&file).unwrap();
+        let code = text
+            .find("#[cfg(test)]\nmod tests")
+            .map_or(text.as_str(), |i| &text[..i]);
+        for m in referenced_modules(code) {
+            if m != top && modules.contains(m.as_str()) {
+                graph.entry(top.clone()).or_default().insert(m);
+            }
+        }
+    }
+    graph
+}
+
+/// Strongly connected components with more than one module (Tarjan), each sorted.
+fn cycles(graph: &BTreeMap<String, BTreeSet<String>>) -> BTreeSet<Vec<String>> {
+    struct State<'a> {
+        graph: &'a BTreeMap<String, BTreeSet<String>>,
+        index: BTreeMap<&'a str, usize>,
+        low: BTreeMap<&'a str, usize>,
+        stack: Vec<&'a str>,
+        next: usize,
+        found: BTreeSet<Vec<String>>,
+    }
+    fn visit<'a>(s: &mut State<'a>, v: &'a str) {
+        s.index.insert(v, s.next);
+        s.low.insert(v, s.next);
+        s.next += 1;
+        s.stack.push(v);
+        let graph = s.graph;
+        for w in graph.get(v).into_iter().flatten() {
+            let w = w.as_str();
+            if !s.index.contains_key(w) {
+                visit(s, w);
+                let lw = s.low[w];
+                let lv = s.low.get_mut(v).unwrap();
+                *lv = (*lv).min(lw);
+            } else if s.stack.contains(&w) {
+                let iw = s.index[w];
+                let lv = s.low.get_mut(v).unwrap();
+                *lv = (*lv).min(iw);
+            }
+        }
+        if s.low[v] == s.index[v] {
+            let mut component = Vec::new();
+            while let Some(w) = s.stack.pop() {
+                component.push(w.to_string());
+                if w == v {
+                    break;
+                }
+            }
+            if component.len() > 1 {
+                component.sort();
+                s.found.insert(component);
+            }
+        }
+    }
+    let mut s = State {
+        graph,
+        index: BTreeMap::new(),
+        low: BTreeMap::new(),
+        stack: Vec::new(),
+        next: 0,
+        found: BTreeSet::new(),
+    };
+    for v in LAYERS.iter().map(|(m, _)| *m) {
+        if !s.index.contains_key(v) {
+            visit(&mut s, v);
+        }
+    }
+    s.found
+}
+
+#[test]
+fn module_edges_point_inwards_except_the_listed_debt() {
+    let layer: BTreeMap<&str, u8> = LAYERS.iter().copied().collect();
+    let graph = edges();
+    let mut upward = BTreeSet::new();
+    for (from, tos) in &graph {
+        for to in tos {
+            if layer[from.as_str()] < layer[to.as_str()] {
+                upward.insert((from.clone(), to.clone()));
+            }
+        }
+    }
+    let debt: BTreeSet<(String, String)> = DEBT
+        .iter()
+        .map(|(a, b)| (a.to_string(), b.to_string()))
+        .collect();
+    let new: Vec<_> = upward.difference(&debt).collect();
+    assert!(
+        new.is_empty(),
+        "edges from an inner layer to an outer one (ARCHITECTURE.md): {new:?}"
+    );
+    let paid: Vec<_> = debt.difference(&upward).collect();
+    assert!(
+        paid.is_empty(),
+        "these edges are gone: remove them from DEBT: {paid:?}"
+    );
+}
+
+#[test]
+fn module_cycles_are_only_the_known_ones() {
+    let found = cycles(&edges());
+    let known: BTreeSet<Vec<String>> = KNOWN_CYCLES
+        .iter()
+        .map(|c| c.iter().map(|m| m.to_string()).collect())
+        .collect();
+    assert_eq!(
+        found, known,
+        "module cycles changed: a new or larger cycle is a defect; a smaller one, update \
+         KNOWN_CYCLES and ARCHITECTURE.md"
+    );
+}
+
+/// The detector itself, on a graph with a known answer.
+#[test]
+fn the_cycle_finder_finds_a_planted_cycle_and_nothing_else() {
+    let mut graph: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+    let mut edge = |a: &str, b: &str| {
+        graph.entry(a.into()).or_default().insert(b.into());
+    };
+    edge("units", "surface");
+    edge("surface", "contact");
+    edge("contact", "units");
+    edge("leak", "contact");
+    let found = cycles(&graph);
+    assert_eq!(
+        found,
+        BTreeSet::from([vec![
+            "contact".to_string(),
+            "surface".into(),
+            "units".into()
+        ]])
+    );
+    assert_eq!(
+        referenced_modules("use crate::{leak, seal::Seal};\nlet x = crate::units::human(1.0, 3);"),
+        BTreeSet::from(["leak".to_string(), "seal".into(), "units".into()])
+    );
+}
