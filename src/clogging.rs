@@ -16,7 +16,7 @@
 //! the gap opens outside the contact, whose Kozeny–Carman resistance adds in series
 //! ([`cake_resistance_in_wedge`]). This module holds
 //! the validated inputs, the size distributions and these closed forms; the time integration
-//! lives in [`crate::simulate`].
+//! lives in the life loop (`simulate`, which uses this module).
 
 use std::f64::consts::PI;
 

@@ -487,7 +487,7 @@ impl Fluid {
     }
 
     /// How many graded breaks the uniform interface's quadrature needs towards the outlet
-    /// ([`crate::interface::InterfaceSettings::outlet_breaks`]): 16 for a rarefied gas whose
+    /// (`InterfaceSettings::outlet_breaks` in the `interface` module): 16 for a rarefied gas whose
     /// outlet pressure is below ΔP (its free-molecular end is not smooth), 0 otherwise.
     pub fn outlet_breaks(&self) -> usize {
         match self.gas {

@@ -2,7 +2,7 @@
 //! (docs/model.md §3.9).
 //!
 //! A gas is a compressible fluid: sealsim treats it as an isothermal ideal gas whose mass flux
-//! is conserved along the interface ([`crate::fluid::Fluid::throughput`]). Its viscosity follows
+//! is conserved along the interface (`Fluid::throughput` in the `fluid` module). Its viscosity follows
 //! Sutherland's law `μ(T) = μ0 (T/T0)^{3/2} (T0 + S)/(T + S)` (or a constant for a custom gas);
 //! its hard-sphere diameter d gives the mean free path `λ = k_B T/(√2 π d² p)` and, at a
 //! constriction of height u, the Knudsen number `Kn = λ/u`. Through a constriction the gas
@@ -24,8 +24,9 @@
 
 /// Boltzmann constant k_B \[J/K\] (exact, SI 2019).
 pub const BOLTZMANN: f64 = 1.380_649e-23;
-/// Molar gas constant R = N_A k_B \[J/(mol·K)\] (exact, SI 2019).
-pub const GAS_CONSTANT: f64 = 8.314_462_618_153_24;
+/// Molar gas constant R = N_A k_B \[J/(mol·K)\] (exact, SI 2019); defined in `units` with the
+/// gas-flow units that need it.
+pub use crate::units::GAS_CONSTANT;
 
 /// Sutherland's law for a gas's dynamic viscosity: `μ(T) = μ0 (T/T0)^{3/2} (T0 + S)/(T + S)`
 /// \[Pa·s\] (T in K). μ0, T0 and S belong together: a constant from one published set is only
@@ -337,18 +338,9 @@ pub fn library_ids() -> Vec<&'static str> {
     LIBRARY.iter().map(|g| g.id).collect()
 }
 
-/// The standard reference state of sccm and slm (SEMI, as quoted in the Brooks Instrument
-/// SLA/MF manual): T_ref = 273.15 K, p_ref = 101325 Pa.
-pub const STANDARD_TEMPERATURE: f64 = 273.15;
-/// p_ref of sccm and slm \[Pa\].
-pub const STANDARD_PRESSURE: f64 = 101_325.0;
-
-/// 1 sccm as a throughput \[Pa·m³/s\] **at T_ref**: 101325 Pa · 1e-6 m³ / 60 s (= 1.68875e-3).
-/// A throughput Q at the gas temperature T is `Q (T_ref/T) / SCCM` sccm: the same moles per
-/// second carry a pV flow proportional to T.
-pub const SCCM: f64 = STANDARD_PRESSURE * 1e-6 / 60.0;
-/// 1 slm = 1000 sccm \[Pa·m³/s at T_ref\].
-pub const SLM: f64 = 1e3 * SCCM;
+// The units of gas flow (sccm, slm and their standard state) are unit definitions: they live in
+// `units`, the inner layer, and are re-exported here where the gas physics reads them.
+pub use crate::units::{SCCM, SLM, STANDARD_PRESSURE, STANDARD_TEMPERATURE};
 
 /// A throughput `q` \[Pa·m³/s\] at `temperature` \[K\] in sccm (SEMI reference state).
 pub fn to_sccm(q: f64, temperature: f64) -> f64 {

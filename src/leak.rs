@@ -4,7 +4,7 @@ use crate::contact::{
     ContactSettings, ContactTable, CriticalJunction, EffectiveMediumSettings, EffectiveMediumTable,
     Elastic, Junction, PerssonContact, TableSettings,
 };
-use crate::fluid::{FlowGeometry, Fluid, junction_conductance};
+use crate::fluid::{Fluid, junction_conductance};
 use crate::interface::{self, InterfaceFlow, InterfaceSettings};
 use crate::numerical::HeightMap;
 use crate::numerical::reference::NumericalSettings;
@@ -12,26 +12,8 @@ use crate::numerical::table::NumericalTable;
 use crate::surface::Spectrum;
 use crate::validity::{self, At, ContactState, Findings};
 
-/// A flat seal: uniform nominal pressure over a rectangle `width × length` (PY08 Fig. 2).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct FlatSeal {
-    /// Nominal squeezing pressure P0 \[Pa\].
-    pub nominal_pressure: f64,
-    /// L_x, the width along the flow \[m\].
-    pub width: f64,
-    /// L_y, the length across the flow \[m\].
-    pub length: f64,
-}
-
-impl FlatSeal {
-    /// The seal's extent along (L_x = `width`) and across (L_y = `length`) the flow.
-    pub fn geometry(&self) -> FlowGeometry {
-        FlowGeometry {
-            along_flow: self.width,
-            across_flow: self.length,
-        }
-    }
-}
+/// The flat seal of the leak problem lives with the other seal geometries.
+pub use crate::seal::FlatSeal;
 
 /// Which level of the fidelity ladder (docs/model.md §4) evaluates the contact and the leak.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -461,7 +443,7 @@ impl ContactPath {
     /// the level: the level's own for the critical-junction levels (table or exact), the
     /// critical-junction table the effective-medium and numerical levels carry, the exact path
     /// for the rule of thumb (whose own u_c is h_rms(ζc)). The reciprocating-seal theory
-    /// (PY08 §8, [`crate::dynamic`]) is built on this junction.
+    /// (PY08 §8, the `dynamic` module) is built on this junction.
     pub fn persson_junction(&self, s: f64) -> Junction {
         match self {
             ContactPath::RuleOfThumb(c) | ContactPath::Exact(c) => c.critical_junction(s),

@@ -2,7 +2,7 @@
 //! of the contact theory, and the ISO profile parameters Ra, Rq, Rz of the traces.
 //!
 //! Physics only: heights and spacings in metres, no files (the CSV reader is
-//! `crate::scenario::profile`).
+//! `scenario::profile`, at the input boundary).
 //!
 //! # Conventions
 //!
@@ -22,7 +22,7 @@
 //!    `⟨w²⟩ = N⁻¹ Σ w_j² = 3/8` (Hann) correcting the expected power for the window. Derivation:
 //!    a field periodic on L has `h(x) = Σ h_q e^{iqx}` with `⟨|h_q|²⟩ = (2π/L) C1D(q)` and
 //!    `h_q = Z_k/N`; the window multiplies the expected periodogram of a stationary signal by
-//!    `⟨w²⟩` (as in [`crate::numerical::psd`]).
+//!    `⟨w²⟩` (as in the numerical reference's `psd` module).
 //!
 //! # Averaging (traces of any lengths and spacings)
 //! Each trace contributes only its *trusted* ordinates, `q_lo,i ≤ q_k ≤ q_hi,i` (below). They
@@ -1159,7 +1159,7 @@ pub fn profile_parameters(
 /// `h_q = σ (g₁ + i g₂)/√2` with `σ² = (2π/L)² C(|q|)` (C = 0 outside the spectrum's band) and
 /// independent standard normals g from a SplitMix64 seeded with `seed` (Box–Muller, libm's
 /// cos/sin), Hermitian symmetry making h real; so `⟨|h_q|²⟩ = (2π/L)² C`, the PY08
-/// normalisation (see [`crate::numerical::surface`]). Unlike that module's random-phase surface
+/// normalisation (see the numerical reference's `surface` module). Unlike that module's random-phase surface
 /// the power of each mode scatters (χ² with 2 degrees of freedom), as on a real surface.
 ///
 /// # Panics

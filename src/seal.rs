@@ -20,6 +20,27 @@
 use crate::fluid::FlowGeometry;
 use std::f64::consts::PI;
 
+/// A flat seal: uniform nominal pressure over a rectangle `width × length` (PY08 Fig. 2).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FlatSeal {
+    /// Nominal squeezing pressure P0 \[Pa\].
+    pub nominal_pressure: f64,
+    /// L_x, the width along the flow \[m\].
+    pub width: f64,
+    /// L_y, the length across the flow \[m\].
+    pub length: f64,
+}
+
+impl FlatSeal {
+    /// The seal's extent along (L_x = `width`) and across (L_y = `length`) the flow.
+    pub fn geometry(&self) -> FlowGeometry {
+        FlowGeometry {
+            along_flow: self.width,
+            across_flow: self.length,
+        }
+    }
+}
+
 /// Lower and upper squeeze of the range in which Lindley's relations are used without warning.
 pub const LINDLEY_RANGE: (f64, f64) = (0.05, 0.30);
 

@@ -56,6 +56,22 @@
 
 use std::fmt;
 
+/// Molar gas constant R = N_A k_B \[J/(mol·K)\] (exact, SI 2019).
+pub const GAS_CONSTANT: f64 = 8.314_462_618_153_24;
+
+/// The standard reference state of sccm and slm (SEMI, as quoted in the Brooks Instrument
+/// SLA/MF manual): T_ref = 273.15 K, p_ref = 101325 Pa.
+pub const STANDARD_TEMPERATURE: f64 = 273.15;
+/// p_ref of sccm and slm \[Pa\].
+pub const STANDARD_PRESSURE: f64 = 101_325.0;
+
+/// 1 sccm as a throughput \[Pa·m³/s\] **at T_ref**: 101325 Pa · 1e-6 m³ / 60 s (= 1.68875e-3).
+/// A throughput Q at the gas temperature T is `Q (T_ref/T) / SCCM` sccm: the same moles per
+/// second carry a pV flow proportional to T.
+pub const SCCM: f64 = STANDARD_PRESSURE * 1e-6 / 60.0;
+/// 1 slm = 1000 sccm \[Pa·m³/s at T_ref\].
+pub const SLM: f64 = 1e3 * SCCM;
+
 /// Exponents of the SI base quantities: length m, mass kg, time s, temperature K, amount mol.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct Dimension {
@@ -533,15 +549,15 @@ pub fn parse_throughput(text: &str, temperature: f64) -> Result<f64, UnitError> 
     let spaced = unit.replace(' ', "*");
     let unit = spaced.as_str();
     let standard = match unit {
-        "sccm" => Some(crate::gas::SCCM),
-        "slm" => Some(crate::gas::SLM),
+        "sccm" => Some(SCCM),
+        "slm" => Some(SLM),
         // a standard cubic centimetre a second: 60 sccm
-        "std*cc/s" | "scc/s" | "sccs" => Some(60.0 * crate::gas::SCCM),
+        "std*cc/s" | "scc/s" | "sccs" => Some(60.0 * SCCM),
         _ => None,
     };
     if let Some(per_unit) = standard {
         return finite(
-            value * per_unit * temperature / crate::gas::STANDARD_TEMPERATURE,
+            value * per_unit * temperature / STANDARD_TEMPERATURE,
             text,
         );
     }
@@ -553,7 +569,7 @@ pub fn parse_throughput(text: &str, temperature: f64) -> Result<f64, UnitError> 
     let si = match resolve_unit(unit)? {
         Resolved::Linear(factor, Dimension::POWER) => value * factor,
         Resolved::Linear(factor, Dimension::MOLAR_FLOW) => {
-            value * factor * crate::gas::GAS_CONSTANT * temperature
+            value * factor * GAS_CONSTANT * temperature
         }
         Resolved::Linear(_, found) => {
             return Err(UnitError::NotAThroughput {

@@ -97,7 +97,7 @@ use crate::contact::{
     SeparationDistribution,
 };
 use crate::fluid::{Conduction, FlowGeometry, Fluid};
-use crate::leak::FlatSeal;
+use crate::seal::FlatSeal;
 use crate::math::interp::UniformCubic;
 use crate::math::quadrature::gauss_legendre;
 use crate::math::special::erfc;
@@ -769,7 +769,7 @@ impl MotionSpec {
 
     /// `point` with only a fraction of its channels carrying flow: the drag (rate, film,
     /// stroke volume) scaled by `drag_scale` and the stroke volumes rebuilt on the static leak
-    /// rate `static_leak_rate` (used under particle clogging, [`crate::simulate`]). The speed
+    /// rate `static_leak_rate` (used by the life loop under particle clogging). The speed
     /// bound, the IHL films (which do not flow through the channels) and the weights are
     /// unchanged; the volumes are blended again.
     pub fn rescale(

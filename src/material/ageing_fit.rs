@@ -2,7 +2,7 @@
 //! end-of-life criterion at each ageing temperature, an Arrhenius fit of those times, and the
 //! life extrapolated to a service temperature.
 //!
-//! * **Data** ([`crate::scenario::ageing_data::parse_ageing_data`], read at the input boundary): a CSV file `temperature,time,value` with a units row
+//! * **Data** (read at the input boundary, `scenario::ageing_data::parse_ageing_data`): a CSV file `temperature,time,value` with a units row
 //!   (`C,h,1`: an absolute temperature unit, a time unit, `1` or `%` for the value). The value
 //!   is a compression set (rising with time) or a retained-force fraction F/F0 (falling).
 //! * **Time to criterion** ([`time_to_criterion`]): the first pair of consecutive points

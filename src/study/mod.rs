@@ -2,7 +2,8 @@
 //! inputs ([`design`]), what a study keeps of each case ([`case`]), the statistics of a set of
 //! times to failure with censoring ([`survival`]), which input drives the life
 //! ([`sensitivity`]), and a study's summary of its cases ([`summary`]). Running the cases is
-//! [`crate::workflow::study`]'s; reading study files [`crate::scenario::study`]'s.
+//! the study workflow's (`workflow::study`); reading study files the input boundary's
+//! (`scenario::study`): both use this module, not the other way round.
 
 pub mod case;
 pub mod design;
