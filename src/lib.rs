@@ -99,27 +99,12 @@
 
 #[cfg(feature = "cli")]
 pub mod cli;
-pub mod clogging;
-pub mod contact;
-pub mod dynamic;
-pub mod extrusion;
-pub mod fluid;
-pub mod gas;
-pub mod gland;
-pub mod interface;
-pub mod leak;
-pub mod material;
-pub use sealsim_math as math;
-pub mod numerical;
-pub mod permeation;
-pub mod profile;
 pub mod report;
-pub mod roughness;
 pub mod scenario;
-pub mod seal;
-pub mod simulate;
-pub mod study;
-pub mod surface;
-pub mod units;
-pub mod validity;
 pub mod workflow;
+// The physics (crates/sealsim-core) and the numerics (crates/sealsim-math), under the paths
+// they had before the split.
+pub use sealsim_core::{
+    clogging, contact, dynamic, extrusion, fluid, gas, gland, interface, leak, material, math,
+    numerical, permeation, profile, roughness, seal, simulate, study, surface, units, validity,
+};

@@ -49,7 +49,7 @@ pub struct CompareArgs {
     pub plot: Option<PathBuf>,
 
     /// Override the scenario's simulation.fidelity.
-    #[arg(long, value_name = "LEVEL", value_enum)]
+    #[arg(long, value_name = "LEVEL", value_parser = super::FidelityArg)]
     pub fidelity: Option<Fidelity>,
 
     /// Write a self-contained HTML report to FILE: the table, the overlay chart, each

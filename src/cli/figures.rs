@@ -27,7 +27,7 @@ pub struct FiguresArgs {
     #[arg(
         long,
         value_name = "LEVEL",
-        value_enum,
+        value_parser = super::FidelityArg,
         default_value = "critical-junction"
     )]
     pub fidelity: Fidelity,

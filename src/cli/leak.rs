@@ -70,7 +70,7 @@ pub struct LeakArgs {
     pub points: Option<u32>,
 
     /// Fidelity level \[default: the scenario's simulation.fidelity, else critical-junction\].
-    #[arg(long, value_name = "LEVEL", value_enum)]
+    #[arg(long, value_name = "LEVEL", value_parser = super::FidelityArg)]
     pub fidelity: Option<Fidelity>,
 
     /// Write the CSV to FILE (atomically) instead of standard output.

@@ -92,23 +92,52 @@ pub(crate) fn print_shared_warnings<'a>(
 }
 
 /// `--fidelity LEVEL` of every command: the levels, their aliases and help all come from
-/// [`Fidelity::ALL`](crate::leak::Fidelity::ALL), so no command's help can miss one.
-impl clap::ValueEnum for crate::leak::Fidelity {
-    fn value_variants<'a>() -> &'a [Self] {
-        &Self::ALL
+/// [`Fidelity::ALL`](crate::leak::Fidelity::ALL), so no command's help can miss one. (A value
+/// parser rather than `clap::ValueEnum` on `Fidelity`: the type lives in `sealsim-core`, which
+/// knows no command line.)
+#[derive(Debug, Clone, Copy)]
+pub struct FidelityArg;
+
+impl FidelityArg {
+    fn possible_value(level: &crate::leak::Fidelity) -> clap::builder::PossibleValue {
+        let aliases = level.aliases();
+        let help = match aliases {
+            [] => level.description().to_owned(),
+            _ => format!("{} (alias: {})", level.description(), aliases.join(", ")),
+        };
+        clap::builder::PossibleValue::new(level.name())
+            .aliases(aliases.iter().copied())
+            .help(help)
+    }
+}
+
+impl clap::builder::TypedValueParser for FidelityArg {
+    type Value = crate::leak::Fidelity;
+
+    fn parse_ref(
+        &self,
+        cmd: &clap::Command,
+        arg: Option<&clap::Arg>,
+        value: &std::ffi::OsStr,
+    ) -> Result<Self::Value, clap::Error> {
+        // clap's own parser for the listed values gives its usual error and suggestions
+        let values: Vec<_> = crate::leak::Fidelity::ALL
+            .iter()
+            .map(Self::possible_value)
+            .collect();
+        let text = clap::builder::PossibleValuesParser::new(values).parse_ref(cmd, arg, value)?;
+        crate::leak::Fidelity::ALL
+            .into_iter()
+            .find(|level| level.name() == text || level.aliases().contains(&text.as_str()))
+            .ok_or_else(|| clap::Error::new(clap::error::ErrorKind::InvalidValue).with_cmd(cmd))
     }
 
-    fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
-        let aliases = self.aliases();
-        let help = match aliases {
-            [] => self.description().to_owned(),
-            _ => format!("{} (alias: {})", self.description(), aliases.join(", ")),
-        };
-        Some(
-            clap::builder::PossibleValue::new(self.name())
-                .aliases(aliases.iter().copied())
-                .help(help),
-        )
+    fn possible_values(
+        &self,
+    ) -> Option<Box<dyn Iterator<Item = clap::builder::PossibleValue> + '_>> {
+        Some(Box::new(
+            crate::leak::Fidelity::ALL.iter().map(Self::possible_value),
+        ))
     }
 }
 

@@ -71,7 +71,7 @@ pub struct RunArgs {
     pub leak_floor: Option<String>,
 
     /// Override the scenario's simulation.fidelity.
-    #[arg(long, value_name = "LEVEL", value_enum)]
+    #[arg(long, value_name = "LEVEL", value_parser = super::FidelityArg)]
     pub fidelity: Option<Fidelity>,
 
     #[command(flatten)]

@@ -1,5 +1,5 @@
 //! A [`Material`] written as a material TOML file (the schema in
-//! `src/material/compound.rs`), e.g. the output of `sealsim fit-prony`.
+//! `crates/sealsim-core/src/material/compound.rs`), e.g. the output of `sealsim fit-prony`.
 //!
 //! Quantities are written as strings in SI units with the shortest scientific form that
 //! round-trips to the same `f64` (`"4e6 Pa"`, `"3.6e3 s"`, `"2.9615e2 K"`), so that reading

@@ -17,7 +17,11 @@
 //! [`simulate::LifeProblem`]: crate::simulate::LifeProblem
 
 pub mod ageing_data;
+#[cfg(test)]
+mod ageing_fit_tests;
 pub mod as568;
+#[cfg(test)]
+mod library_tests;
 pub use crate::material::compatibility;
 mod contamination;
 mod error;

@@ -73,12 +73,18 @@ fn referenced_modules(text: &str) -> BTreeSet<String> {
 
 /// Module → the modules it references, from the library's source (unit-test modules left out).
 fn edges() -> BTreeMap<String, BTreeSet<String>> {
-    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let modules: BTreeSet<&str> = LAYERS.iter().map(|(m, _)| *m).collect();
     let mut files = Vec::new();
-    rust_files(&src, &mut files);
+    // the root package (input, workflow, report, cli) and the physics crate
+    for src in [root.join("src"), root.join("crates/sealsim-core/src")] {
+        let mut found = Vec::new();
+        rust_files(&src, &mut found);
+        files.extend(found.into_iter().map(|f| (src.clone(), f)));
+    }
     let mut graph: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
-    for file in files {
+    let mut seen = BTreeSet::new();
+    for (src, file) in files {
         let rel = file.strip_prefix(&src).unwrap();
         let first = rel
             .components()
@@ -94,6 +100,7 @@ fn edges() -> BTreeMap<String, BTreeSet<String>> {
             modules.contains(top.as_str()),
             "module `{top}` has no layer in LAYERS"
         );
+        seen.insert(top.clone());
         let text = fs::read_to_string(&file).unwrap();
         let code = text
             .find("#[cfg(test)]\nmod tests")
@@ -104,6 +111,15 @@ fn edges() -> BTreeMap<String, BTreeSet<String>> {
             }
         }
     }
+    // every module with a layer was found (the walk covers the whole library)
+    let missing: Vec<_> = modules
+        .iter()
+        .filter(|m| **m != "math" && !seen.contains(**m))
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "modules not found in the source: {missing:?}"
+    );
     graph
 }
 
@@ -210,4 +226,83 @@ fn the_cycle_finder_finds_a_planted_cycle_and_nothing_else() {
         referenced_modules("use crate::{leak, seal::Seal};\nlet x = crate::units::human(1.0, 3);"),
         BTreeSet::from(["leak".to_string(), "seal".into(), "units".into()])
     );
+}
+
+/// `[[package]]` name → its dependencies' names, from Cargo.lock.
+fn locked_graph() -> BTreeMap<String, Vec<String>> {
+    let lock =
+        fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("Cargo.lock")).unwrap();
+    let mut graph = BTreeMap::new();
+    for block in lock.split("[[package]]").skip(1) {
+        let name = block
+            .lines()
+            .find_map(|l| l.strip_prefix("name = \""))
+            .and_then(|n| n.strip_suffix('"'))
+            .unwrap()
+            .to_string();
+        let deps = block
+            .split_once("dependencies = [")
+            .map(|(_, rest)| {
+                rest.split(']')
+                    .next()
+                    .unwrap_or("")
+                    .split(',')
+                    .filter_map(|d| d.trim().trim_matches('"').split(' ').next())
+                    .filter(|d| !d.is_empty())
+                    .map(str::to_string)
+                    .collect()
+            })
+            .unwrap_or_default();
+        graph.insert(name, deps);
+    }
+    graph
+}
+
+/// The packages reachable from `root` in Cargo.lock, not entering those in `skip`. The lock
+/// does not tell normal from dev-dependencies, so a crate's dev-dependencies go in `skip`.
+fn closure(graph: &BTreeMap<String, Vec<String>>, root: &str, skip: &[&str]) -> BTreeSet<String> {
+    let mut seen = BTreeSet::new();
+    let mut todo = vec![root.to_string()];
+    while let Some(p) = todo.pop() {
+        if skip.contains(&p.as_str()) || !seen.insert(p.clone()) {
+            continue;
+        }
+        todo.extend(graph.get(&p).into_iter().flatten().cloned());
+    }
+    seen
+}
+
+/// The physics crate knows no file format, command line, chart or progress bar: none of serde,
+/// toml, csv, clap, plotters or indicatif is among its dependencies. The one exception is
+/// serde inside `ode_solvers` (a specified crate whose serde dependency is not optional): left
+/// out `ode_solvers`, the closure has none of them. `sealsim-math` has none at all.
+#[test]
+fn the_core_crates_depend_on_no_io_or_cli_crate() {
+    let graph = locked_graph();
+    let forbidden = [
+        "serde",
+        "serde_core",
+        "serde_derive",
+        "serde_json",
+        "toml",
+        "csv",
+        "clap",
+        "plotters",
+        "indicatif",
+    ];
+    // proptest: sealsim-core's only dev-dependency
+    let core = closure(&graph, "sealsim-core", &["ode_solvers", "proptest"]);
+    assert!(
+        core.contains("sealsim-math") && core.contains("statrs"),
+        "{core:?}"
+    );
+    let math = closure(&graph, "sealsim-math", &[]);
+    for name in forbidden {
+        assert!(!core.contains(name), "sealsim-core depends on {name}");
+        assert!(!math.contains(name), "sealsim-math depends on {name}");
+    }
+    // and the exception is what it says: serde comes in through ode_solvers only
+    assert!(closure(&graph, "ode_solvers", &[]).contains("serde"));
+    // the root package does use them (the check can see a dependency)
+    assert!(closure(&graph, "sealsim", &[]).contains("toml"));
 }

@@ -1,4 +1,4 @@
-//! Line traces → the isotropic 2-D spectrum (src/profile.rs) and the trace CSV reader.
+//! Line traces → the isotropic 2-D spectrum (crates/sealsim-core/src/profile.rs) and the trace CSV reader.
 
 use sealsim::profile::{
     ProfileOptions, Trace, abel_inverse, analyse, one_d_from_two_d, power_law_factor,

@@ -1,4 +1,4 @@
-//! Time–temperature superposition (src/material/tts.rs): master curves from relaxation
+//! Time–temperature superposition (crates/sealsim-core/src/material/tts.rs): master curves from relaxation
 //! isotherms synthesised from a known Prony series and a known shift law, noise-free and with
 //! 1 % multiplicative Gaussian noise (seeded SplitMix64, so every run is identical).
 //!

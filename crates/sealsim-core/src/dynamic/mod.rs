@@ -97,10 +97,10 @@ use crate::contact::{
     SeparationDistribution,
 };
 use crate::fluid::{Conduction, FlowGeometry, Fluid};
-use crate::seal::FlatSeal;
 use crate::math::interp::UniformCubic;
 use crate::math::quadrature::gauss_legendre;
 use crate::math::special::erfc;
+use crate::seal::FlatSeal;
 use ihl::{GradientSource, IhlCycle, InletGradients, SpeedRegime, ihl_weight, transition_onset};
 use std::f64::consts::{FRAC_1_SQRT_2, PI};
 

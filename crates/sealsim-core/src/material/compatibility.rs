@@ -144,39 +144,6 @@ impl fmt::Display for Compatibility {
 mod tests {
     use super::*;
 
-    /// The library compound's stored ratings.
-    fn of(id: &str, class: FluidClass) -> Option<Rating> {
-        let material = crate::scenario::library::get(id).unwrap().load().unwrap();
-        rating(&material.compatibility, class).map(|c| c.rating)
-    }
-
-    /// The field practice the issue names: EPDM, not standard FKM, in hot water and hot
-    /// coolant; EPDM not in mineral oil; NBR the mineral-oil default.
-    #[test]
-    fn hot_water_and_coolant_flag_fkm_and_mineral_oil_flags_epdm() {
-        let hot = FluidClass::of("water", 353.15).unwrap();
-        assert_eq!(hot, FluidClass::HotWater);
-        let coolant = FluidClass::of("ethylene-glycol-water-50", 383.15).unwrap();
-        assert_eq!(coolant, FluidClass::HotWater);
-        for class in [hot, coolant] {
-            assert_eq!(of("fkm-75", class), Some(Rating::NotRecommended));
-            assert_eq!(of("epdm-70", class), Some(Rating::Recommended));
-        }
-        let oil = FluidClass::of("iso-vg-46", 393.15).unwrap();
-        assert_eq!(of("epdm-70", oil), Some(Rating::NotRecommended));
-        assert_eq!(of("nbr-70", oil), Some(Rating::Recommended));
-        assert_eq!(of("fkm-75", oil), Some(Rating::Recommended));
-        // below 80 °C water is water; a coolant below it is a coolant
-        assert_eq!(FluidClass::of("water", 353.0), Some(FluidClass::Water));
-        assert_eq!(
-            FluidClass::of("ethylene-glycol-water-50", 300.0),
-            Some(FluidClass::WaterGlycol)
-        );
-        // unrated pairs and uncovered fluids say nothing
-        assert!(of("hnbr-75", oil).is_none());
-        assert!(FluidClass::of("helium", 300.0).is_none());
-    }
-
     #[test]
     fn keys_and_letters_round_trip() {
         for class in FluidClass::ALL {

@@ -556,10 +556,7 @@ pub fn parse_throughput(text: &str, temperature: f64) -> Result<f64, UnitError> 
         _ => None,
     };
     if let Some(per_unit) = standard {
-        return finite(
-            value * per_unit * temperature / STANDARD_TEMPERATURE,
-            text,
-        );
+        return finite(value * per_unit * temperature / STANDARD_TEMPERATURE, text);
     }
     if unit.is_empty() {
         return Err(UnitError::MissingUnit {
