@@ -11,6 +11,7 @@ pub mod figures;
 pub mod fit_prony;
 pub mod leak;
 pub mod materials;
+pub mod new;
 pub mod run;
 pub mod sizes;
 pub mod study;
@@ -185,6 +186,8 @@ pub enum Command {
     /// distribution (survival curve, B1/B10/B50 lives, Weibull fit, what drives the life);
     /// shards, their merge and a Slurm job array for clusters.
     Study(Box<study::StudyArgs>),
+    /// A commented, runnable scenario or study to start your own from (`--list` shows them).
+    New(new::NewArgs),
 }
 
 /// Why a command failed; decides the exit status.
@@ -274,6 +277,7 @@ pub fn run(command: Command) -> Result<(), CliError> {
         Command::Sizes(args) => sizes::run(args),
         Command::Surface(args) => surface::run(args),
         Command::Study(args) => study::run(*args),
+        Command::New(args) => new::run(args),
     }
 }
 

@@ -40,6 +40,7 @@ pub mod profile;
 mod psd;
 mod raw;
 pub mod study;
+pub mod templates;
 mod validate;
 
 pub use error::ScenarioError;

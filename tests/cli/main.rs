@@ -25,6 +25,7 @@ mod gland_pressure;
 mod leak;
 mod materials;
 mod motion;
+mod new;
 mod ranges;
 mod report;
 mod rubber;

@@ -470,3 +470,46 @@ fn no_unchecked_minimum_rust_version_is_claimed() {
         "the README does not say which toolchain it is tested with"
     );
 }
+
+/// The licence the manifests declare is the one the repository carries (both texts, the Rust
+/// convention "MIT OR Apache-2.0"), every crate of the workspace inherits it, and the citation
+/// file names this version and the paper sealsim implements.
+#[test]
+fn licence_and_citation_files_match_the_manifests() {
+    let manifest = fs::read_to_string(repo_file("Cargo.toml")).unwrap();
+    assert!(
+        manifest.contains("\nlicense = \"MIT OR Apache-2.0\"\n"),
+        "[workspace.package] declares the licence"
+    );
+    for krate in [
+        "Cargo.toml",
+        "crates/sealsim-core/Cargo.toml",
+        "crates/sealsim-math/Cargo.toml",
+    ] {
+        let text = fs::read_to_string(repo_file(krate)).unwrap();
+        assert!(
+            text.contains("\nlicense.workspace = true\n"),
+            "{krate} does not inherit the workspace licence"
+        );
+    }
+    let mit = fs::read_to_string(repo_file("LICENSE-MIT")).unwrap();
+    assert!(mit.starts_with("MIT License") && mit.contains("WITHOUT WARRANTY OF ANY KIND"));
+    let apache = fs::read_to_string(repo_file("LICENSE-APACHE")).unwrap();
+    assert!(apache.contains("Apache License") && apache.contains("Version 2.0, January 2004"));
+    assert!(apache.contains("END OF TERMS AND CONDITIONS"));
+
+    let version = manifest
+        .lines()
+        .find_map(|l| l.strip_prefix("version = \""))
+        .and_then(|rest| rest.strip_suffix('"'))
+        .expect("[workspace.package] version");
+    let cff = fs::read_to_string(repo_file("CITATION.cff")).unwrap();
+    assert!(cff.starts_with("# ") && cff.contains("\ncff-version: 1.2.0\n"));
+    assert!(
+        cff.contains(&format!("\nversion: {version}\n")),
+        "CITATION.cff names another version than Cargo.toml's {version}"
+    );
+    assert!(cff.contains("- MIT\n") && cff.contains("- Apache-2.0\n"));
+    assert!(cff.contains("title: \"Theory of the leak-rate of seals\""));
+    assert!(cff.contains("start: 315011"));
+}
