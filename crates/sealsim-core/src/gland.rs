@@ -32,6 +32,7 @@
 //!   100 % (the ring does not fit);
 //! * stretch warned above [`MAX_STRETCH_GUIDANCE`] = 5 %, refused at [`MAX_STRETCH`] = 50 %.
 
+use sealsim_math::roots;
 use std::f64::consts::PI;
 use std::fmt;
 
@@ -429,18 +430,8 @@ fn install(id: f64, d: f64, h: f64, w: f64, locator: Locator) -> Result<Installe
 
 /// The root of an increasing `f` in (lo, hi) with f(lo) < 0 ≤ f(hi), by bisection to the last
 /// bit.
-fn bisect(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if mid <= lo || mid >= hi {
-            break;
-        }
-        if f(mid) < 0.0 {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
+fn bisect(f: impl Fn(f64) -> f64, lo: f64, hi: f64) -> f64 {
+    let (lo, hi) = roots::bisect(lo, hi, 200, roots::to_the_last_bit, |x| f(x) < 0.0);
     0.5 * (lo + hi)
 }
 

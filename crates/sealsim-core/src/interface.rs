@@ -304,18 +304,14 @@ fn hertz_warm(
 /// The asperity pressure at which `sigma` stops conducting, between `conducting` (σ > 0) and
 /// `sealed` (σ = 0) \[Pa\]: bisection to 1e-13 relative (σ decreases with e).
 fn sealing_pressure(sigma: &dyn Fn(f64) -> f64, conducting: f64, sealed: f64) -> f64 {
-    let (mut lo, mut hi) = (conducting, sealed);
-    while hi - lo > 1e-13 * hi {
-        let mid = 0.5 * (lo + hi);
-        if mid <= lo || mid >= hi {
-            break;
-        }
-        if sigma(mid) > 0.0 {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
+    // the cap is never reached: the bracket reaches its last bit within ~2100 halvings
+    let (_, hi) = sealsim_math::roots::bisect(
+        conducting,
+        sealed,
+        usize::MAX,
+        |lo, hi| hi - lo <= 1e-13 * hi,
+        |e| sigma(e) > 0.0,
+    );
     hi
 }
 

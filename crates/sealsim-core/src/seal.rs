@@ -53,21 +53,13 @@ pub fn squeeze_function(eps: f64) -> f64 {
 /// The squeeze whose [`squeeze_function`] is `load` (≥ 0): g is increasing, so bisection on
 /// [0, 1] to the last bit (g(1) = 51.25; larger loads give 1).
 pub fn squeeze_from_load(load: f64) -> f64 {
-    let (mut lo, mut hi) = (0.0_f64, 1.0_f64);
     if load <= 0.0 {
         return 0.0;
     }
-    for _ in 0..64 {
-        let mid = 0.5 * (lo + hi);
-        if mid <= lo || mid >= hi {
-            break;
-        }
-        if squeeze_function(mid) < load {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
+    let (lo, hi) =
+        sealsim_math::roots::bisect(0.0, 1.0, 64, sealsim_math::roots::to_the_last_bit, |x| {
+            squeeze_function(x) < load
+        });
     0.5 * (lo + hi)
 }
 

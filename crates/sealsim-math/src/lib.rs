@@ -1,5 +1,5 @@
 //! Mathematical building blocks that are not physics (quadrature, interpolation, least squares,
-//! special functions, FFTs, linear solvers), each documented with its method and reference.
+//! special functions, FFTs, linear solvers, [`roots`]: bisection and golden-section search), each documented with its method and reference.
 //!
 //! Linear solvers: [`cg`] (preconditioned conjugate gradients, generic over the operator and the
 //! preconditioner), [`laplacian`] (the periodic five-point operator), [`multigrid`] (aggregation
@@ -15,6 +15,7 @@ pub mod multigrid;
 pub mod nnls;
 pub mod quadrature;
 pub mod rng;
+pub mod roots;
 pub mod special;
 
 /// Dot product `a · b` of two slices of equal length, with four partial sums: vectorisable and

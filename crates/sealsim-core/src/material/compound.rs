@@ -255,18 +255,13 @@ impl Material {
             return None;
         }
         // invariant: E(lo) ≥ target > E(hi)
-        let (mut lo, mut hi) = (lower, room);
-        for _ in 0..200 {
-            let mid = 0.5 * (lo + hi);
-            if mid <= lo || mid >= hi {
-                break;
-            }
-            if self.gehman_modulus(mid) >= target {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
+        let (lo, hi) = sealsim_math::roots::bisect(
+            lower,
+            room,
+            200,
+            sealsim_math::roots::to_the_last_bit,
+            |t| self.gehman_modulus(t) >= target,
+        );
         Some(0.5 * (lo + hi))
     }
 

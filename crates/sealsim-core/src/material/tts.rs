@@ -106,6 +106,7 @@ use super::shift::{GAS_CONSTANT, Shift};
 use super::{Prony, PronyTerm};
 use crate::units::show;
 use nalgebra::{DMatrix, DVector, Matrix2};
+use sealsim_math::roots::golden_section;
 use statrs::distribution::{ContinuousCDF, StudentsT};
 use std::f64::consts::LN_10;
 use std::fmt;
@@ -814,33 +815,6 @@ fn refine_shift(prony: &Prony, curve: &Curve, current: f64) -> f64 {
     }
 }
 
-/// Golden-section search for a minimum of `f` on `[a, b]` to a bracket width `tol`.
-fn golden_section(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64, tol: f64) -> f64 {
-    let g = 0.5 * (5f64.sqrt() - 1.0);
-    let mut c = b - g * (b - a);
-    let mut d = a + g * (b - a);
-    let (mut fc, mut fd) = (f(c), f(d));
-    for _ in 0..200 {
-        if b - a <= tol {
-            break;
-        }
-        if fc <= fd {
-            b = d;
-            d = c;
-            fd = fc;
-            c = b - g * (b - a);
-            fc = f(c);
-        } else {
-            a = c;
-            c = d;
-            fc = fd;
-            d = a + g * (b - a);
-            fd = f(d);
-        }
-    }
-    0.5 * (a + b)
-}
-
 /// The joint least-squares problem linearised in the shifts at a master curve (module docs,
 /// step 5): `Z = (I − P_A) J_s` and the Gauss–Newton pieces.
 struct Linearisation {
@@ -1218,12 +1192,6 @@ fn fit_law(law: ShiftLaw, td: f64, points: &[(f64, f64, f64)]) -> Result<RawLaw,
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn golden_section_finds_a_parabola_minimum() {
-        let x = golden_section(|x| (x - 0.3).powi(2), -1.0, 1.0, 1e-10);
-        assert!((x - 0.3).abs() < 1e-9, "{x}");
-    }
 
     #[test]
     fn reference_is_nearest_the_median() {

@@ -404,23 +404,19 @@ impl RadialPsd {
         let mean_square = |low: f64| -> Result<f64, SpectrumError> {
             Ok(self.tabulate(low, 1.0)?.rms_roughness().powi(2))
         };
-        let (mut lo, mut hi) = (-30.0f64, 30.0f64); // ln of the low factor
+        let (lo, hi) = (-30.0f64, 30.0f64); // ln of the low factor
         let has_low = self.q[0] < self.q_reliable;
         if !has_low || mean_square(lo.exp())? > target || mean_square(hi.exp())? < target {
             let uniform = target / mean_square(1.0)?;
             return Ok((uniform, uniform));
         }
-        for _ in 0..200 {
-            let mid = 0.5 * (lo + hi);
-            if mean_square(mid.exp())? < target {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-            if hi - lo < 1e-14 {
-                break;
-            }
-        }
+        let (lo, hi) = sealsim_math::roots::try_bisect(
+            lo,
+            hi,
+            200,
+            |lo, hi| hi - lo < 1e-14,
+            |ln_low| Ok(mean_square(ln_low.exp())? < target),
+        )?;
         Ok(((0.5 * (lo + hi)).exp(), 1.0))
     }
 

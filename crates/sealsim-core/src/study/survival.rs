@@ -198,21 +198,17 @@ impl Weibull {
             }
             num / den - 1.0 / beta - mean_ln_fail
         };
-        let (mut lo, mut hi) = ((1e-3_f64).ln(), (1e3_f64).ln());
+        let (lo, hi) = ((1e-3_f64).ln(), (1e3_f64).ln());
         if g(lo.exp()) > 0.0 || g(hi.exp()) < 0.0 {
             return None;
         }
-        for _ in 0..200 {
-            let mid = 0.5 * (lo + hi);
-            if g(mid.exp()) < 0.0 {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-            if hi - lo < 1e-14 {
-                break;
-            }
-        }
+        let (lo, hi) = sealsim_math::roots::bisect(
+            lo,
+            hi,
+            200,
+            |lo, hi| hi - lo < 1e-14,
+            |ln_beta| g(ln_beta.exp()) < 0.0,
+        );
         let shape = (0.5 * (lo + hi)).exp();
         let sum: f64 = all.iter().map(|(t, _)| (t / t_max).powf(shape)).sum();
         let scale = t_max * (sum / r).powf(1.0 / shape);
