@@ -413,8 +413,8 @@ fn readme_crate_versions_match_the_lock_file() {
     let packages = locked_packages();
     assert!(packages.iter().any(|(n, _)| n == "statrs"));
     // the README and the guide's install page, where the dependencies moved
-    let text = readme()
-        + &fs::read_to_string(repo_file("docs/src/getting-started/install.md")).unwrap();
+    let text =
+        readme() + &fs::read_to_string(repo_file("docs/src/getting-started/install.md")).unwrap();
     let named = versions_named_in(&text, &packages);
     // they name at least these
     for name in ["statrs", "nalgebra", "ode_solvers"] {
