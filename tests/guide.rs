@@ -20,7 +20,10 @@
 //!
 //! Run: `cargo test --release --test guide`. A failure shows the block's file (a copy in the
 //! temporary directory named after the original, `docs__src__tutorials__face-gland.md`), the
-//! command and a diff of the expected and the actual output.
+//! command and a diff of the expected and the actual output. After a deliberate change of an
+//! output, `TRYCMD=overwrite cargo test --release --test guide` writes the actual outputs into
+//! the Markdown files (keeping the `...`/`[..]` elisions where they still match); review the
+//! diff before committing it.
 
 #![allow(
     clippy::unwrap_used,
@@ -105,10 +108,12 @@ fn guide_commands_and_outputs() {
             name != "target" && !name.starts_with('.')
         })
         .collect();
+    let mut copies = Vec::new();
     for file in &files {
         let rel = file.strip_prefix(&root).unwrap();
         let name = rel.to_string_lossy().replace(['/', '\\'], "__");
         let copy = cases.join(&name);
+        copies.push((copy.clone(), file.clone()));
         fs::copy(file, &copy).unwrap();
         let stem = copy.with_extension("");
         let input = stem.with_extension("in");
@@ -127,6 +132,16 @@ fn guide_commands_and_outputs() {
         .timeout(std::time::Duration::from_secs(120))
         .case(cases.join("*.md"))
         .run();
+    // TRYCMD=overwrite rewrote the copies: bring the new outputs back to the sources.
+    if std::env::var_os("TRYCMD").is_some_and(|m| m == "overwrite") {
+        for (copy, source) in &copies {
+            let new = fs::read_to_string(copy).unwrap();
+            if new != fs::read_to_string(source).unwrap() {
+                fs::write(source, new).unwrap();
+                eprintln!("guide: updated {}", source.display());
+            }
+        }
+    }
 }
 
 /// The shipped fitted material of the lab-data tutorial is what the tutorial's `fit-prony`
