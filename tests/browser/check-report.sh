@@ -2,6 +2,7 @@
 # Browser check of sealsim's self-contained HTML reports in headless Chromium.
 #
 #   tests/browser/check-report.sh [--min-plots N] OUTDIR REPORT.html...
+#   tests/browser/check-report.sh --book BOOK_DIR OUTDIR PAGE.html...
 #
 # For each REPORT.html (e.g. OUTDIR/../study.html) runs check-report.mjs beside this script, which
 # fails on console errors/warnings, page errors, any request other than the report itself or a
@@ -10,6 +11,9 @@
 # Writes a full-page screenshot OUTDIR/<report name without .html>.png for each report and prints
 # one JSON summary line per report on stdout. Checks every report, then exits 1 if any failed
 # (2 on a usage error).
+#
+# With --book BOOK_DIR it checks pages of a built mdBook (PAGE paths relative to BOOK_DIR; scripts
+# and the book's own files allowed) with check-book.mjs instead; see its header (.ci/book uses it).
 #
 # Sets itself up as needed, so it works on a fresh machine:
 #   - Debian's chromium, only if /usr/bin/chromium is missing (apt-get update only if the plain
@@ -22,15 +26,22 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 
 usage() {
   echo "usage: $0 [--min-plots N] OUTDIR REPORT.html..." >&2
+  echo "       $0 --book BOOK_DIR OUTDIR PAGE.html..." >&2
   exit 2
 }
 
 node_opts=()
+book=""
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --min-plots)
       [[ $# -ge 2 ]] || usage
       node_opts+=(--min-plots "$2")
+      shift 2
+      ;;
+    --book)
+      [[ $# -ge 2 ]] || usage
+      book="$2"
       shift 2
       ;;
     --min-plots=*)
@@ -64,6 +75,10 @@ if [[ ! -d "$here/node_modules" ]]; then
   start=$SECONDS
   (cd "$here" && npm ci --no-audit --no-fund >&2)
   echo "check-report: npm ci done in $((SECONDS - start)) s" >&2
+fi
+
+if [[ -n "$book" ]]; then
+  exec node "$here/check-book.mjs" "$book" "$outdir" "$@"
 fi
 
 status=0
