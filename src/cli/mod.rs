@@ -9,6 +9,7 @@ pub mod ageing_fit;
 pub mod compare;
 pub mod figures;
 pub mod fit_prony;
+pub mod generate;
 pub mod leak;
 pub mod materials;
 pub mod new;
@@ -188,6 +189,8 @@ pub enum Command {
     Study(Box<study::StudyArgs>),
     /// A commented, runnable scenario or study to start your own from (`--list` shows them).
     New(new::NewArgs),
+    /// Documentation generated from the commands themselves: man pages and shell completions.
+    Generate(generate::GenerateArgs),
 }
 
 /// Why a command failed; decides the exit status.
@@ -278,6 +281,7 @@ pub fn run(command: Command) -> Result<(), CliError> {
         Command::Surface(args) => surface::run(args),
         Command::Study(args) => study::run(*args),
         Command::New(args) => new::run(args),
+        Command::Generate(args) => generate::run(args),
     }
 }
 
