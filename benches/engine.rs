@@ -1,6 +1,6 @@
 //! Speed of the static engine: exact evaluation per pressure point, contact-table build per
 //! surface, and table lookup (targets: ≤ 1 ms, ≤ 5 ms, ≤ 1 µs); the effective-medium level per
-//! state (target ≤ 1 ms with its table). Figures go in the README.
+//! state (target ≤ 1 ms with its table). Figures go in docs/src/performance.md.
 
 #![allow(
     clippy::unwrap_used,

@@ -4,7 +4,7 @@
 //! reduced peak and pressure difference — docs/model.md §3.6 — with the default `follow`
 //! asperity moduli and the two-network ageing with compression set of its `[ageing]`), contact
 //! table build included. Target: within 2× of the run before ageing and the consistent asperity
-//! moduli (43.8 ms, `relaxed`, no ageing), measured here too; the figures go in the README. The
+//! moduli (43.8 ms, `relaxed`, no ageing), measured here too; the figures go in docs/src/performance.md. The
 //! EPDM outdoor run has ≈ 9×10⁴ states (daily and yearly cycles over 30 years).
 //! With particle clogging (docs/model.md §7): the shipped dirty-oil gasket
 //! (`gasket-nbr-dirty-oil.toml`, a seal that leaks), clean and dirty, without and with re-routing;

@@ -1,6 +1,6 @@
 //! Speed of the viscoelastic material: E(t) of a 30-term Prony series, one exact recursive
 //! update of its 30 branch stresses, and a Prony fit to 100 relaxation points (targets:
-//! ≤ 100 ns, ≤ 300 ns, ≤ 10 ms). Figures go in the README.
+//! ≤ 100 ns, ≤ 300 ns, ≤ 10 ms). Figures go in docs/src/performance.md.
 
 #![allow(
     clippy::unwrap_used,

@@ -61,7 +61,7 @@ fn short(value: Option<f64>, unit: &str) -> String {
     }
 }
 
-/// A Markdown table of the study (what the terminal shows and the README quotes).
+/// A Markdown table of the study (what the terminal shows and the guide's fidelity page quotes).
 pub fn tradeoff_markdown(rows: &[TradeoffRow]) -> String {
     let mut out = String::from(
         "| section | level | setting | static time | leak rate (m³/s) | static error | life time | time to failure (s) | life error |\n\

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The real Slurm run of a study (issue 19; README "Studies on a Slurm cluster"): brings up a
+# The real Slurm run of a study (issue 19; docs/src/reference/studies.md, "Studies on a Slurm cluster"): brings up a
 # single-node Slurm cluster from Debian's packages (start-slurm.sh), generates the job-array
 # script with `sealsim study slurm`, submits it, waits for the shards and the dependent merge,
 # and checks the merged per-case table and summary against a local run of the same study, bit

@@ -79,7 +79,7 @@ impl Fidelity {
         }
     }
 
-    /// The level's measured error, as the README's fidelity ladder states it (reports).
+    /// The level's measured error, as the user guide's fidelity ladder (docs/src/reference/fidelity.md) states it (reports).
     pub fn measured_error(self) -> &'static str {
         match self {
             Fidelity::RuleOfThumb => {

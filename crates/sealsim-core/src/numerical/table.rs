@@ -9,7 +9,7 @@
 //! ([`NODE_FRACTIONS`]); between nodes `ln u_eff` is linear in `ln s`; below the first node it
 //! is held at the first node's slope; between the last percolating node and the first sealed
 //! one `u_eff` falls linearly in s to zero (the transition is not resolved finer than the
-//! nodes — an approximation, stated in the README); above it, sealed.
+//! nodes — an approximation, stated in docs/src/reference/fidelity.md); above it, sealed.
 
 use super::HeightMap;
 use super::reference::{NumericalError, NumericalSettings, Surfaces, evaluate};
