@@ -4,29 +4,11 @@
 
 use crate::material::ageing_fit::{AgeingPoint, AgeingSeries};
 use crate::units::{self, Dimension};
-use std::fmt;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-/// A data file or fit that cannot be used: the file, the 1-based line when the problem is on
-/// one line, and what is wrong. Displayed as `path:line: message`.
-#[derive(Debug, Clone, PartialEq)]
-pub struct AgeingFitError {
-    pub path: PathBuf,
-    pub line: Option<usize>,
-    pub message: String,
-}
-
-impl fmt::Display for AgeingFitError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}", self.path.display())?;
-        if let Some(line) = self.line {
-            write!(f, ":{line}")?;
-        }
-        write!(f, ": {}", self.message)
-    }
-}
-
-impl std::error::Error for AgeingFitError {}
+/// A data file or fit that cannot be used: the one data-file error, [`DataFileError`](crate::scenario::DataFileError)
+/// (`path:line: message`), under the name this module's callers know.
+pub type AgeingFitError = crate::scenario::DataFileError;
 
 type Located = (Option<usize>, String);
 

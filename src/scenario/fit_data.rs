@@ -25,8 +25,7 @@
 
 use crate::units::{self, Dimension, show};
 use std::f64::consts::TAU;
-use std::fmt;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 /// Which measurement a file holds (the `--kind` of `sealsim fit-prony`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -126,26 +125,9 @@ impl FitData {
 /// temperature step within one series) rather than scatter.
 pub const MONOTONIC_TOLERANCE: f64 = 0.05;
 
-/// A fit file that cannot be used: the file, the 1-based line when the problem is on one
-/// line, and what is wrong. Displayed as `path:line: message`.
-#[derive(Debug, Clone, PartialEq)]
-pub struct FitDataError {
-    pub path: PathBuf,
-    pub line: Option<usize>,
-    pub message: String,
-}
-
-impl fmt::Display for FitDataError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}", self.path.display())?;
-        if let Some(line) = self.line {
-            write!(f, ":{line}")?;
-        }
-        write!(f, ": {}", self.message)
-    }
-}
-
-impl std::error::Error for FitDataError {}
+/// A fit file that cannot be used: the one data-file error, [`DataFileError`](crate::scenario::DataFileError)
+/// (`path:line: message`), under the name this module's callers know.
+pub type FitDataError = crate::scenario::DataFileError;
 
 /// Reads and checks the fit file at `path`, which must hold data of `kind`.
 pub fn read_fit_data(path: &Path, kind: FitKind) -> Result<FitData, FitDataError> {

@@ -16,33 +16,14 @@
 
 use crate::profile::{MIN_POINTS, Trace};
 use crate::units::{Dimension, parse_unit};
-use std::fmt;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 /// Largest relative deviation of a step from the median step.
 pub const SPACING_TOLERANCE: f64 = 1e-2;
 
-/// A malformed trace file: `path:line: message` (no line when the whole file is at fault).
-#[derive(Debug, Clone, PartialEq)]
-pub struct TraceFileError {
-    /// The file.
-    pub path: PathBuf,
-    /// 1-based line, when one line is at fault.
-    pub line: Option<usize>,
-    /// What is wrong.
-    pub message: String,
-}
-
-impl fmt::Display for TraceFileError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self.line {
-            Some(line) => write!(f, "{}:{line}: {}", self.path.display(), self.message),
-            None => write!(f, "{}: {}", self.path.display(), self.message),
-        }
-    }
-}
-
-impl std::error::Error for TraceFileError {}
+/// A malformed trace file: the one data-file error, [`DataFileError`](crate::scenario::DataFileError)
+/// (`path:line: message`), under the name this module's callers know.
+pub type TraceFileError = crate::scenario::DataFileError;
 
 /// Reads a trace file (module docs).
 ///
