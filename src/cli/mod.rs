@@ -9,6 +9,7 @@ pub mod ageing_fit;
 pub mod compare;
 pub mod figures;
 pub mod fit_prony;
+pub mod generate;
 pub mod leak;
 pub mod materials;
 pub mod run;
@@ -185,6 +186,8 @@ pub enum Command {
     /// distribution (survival curve, B1/B10/B50 lives, Weibull fit, what drives the life);
     /// shards, their merge and a Slurm job array for clusters.
     Study(Box<study::StudyArgs>),
+    /// Files generated from the code's own definitions (the scenario key reference).
+    Generate(generate::GenerateArgs),
 }
 
 /// Why a command failed; decides the exit status.
@@ -274,6 +277,7 @@ pub fn run(command: Command) -> Result<(), CliError> {
         Command::Sizes(args) => sizes::run(args),
         Command::Surface(args) => surface::run(args),
         Command::Study(args) => study::run(*args),
+        Command::Generate(args) => generate::run(args),
     }
 }
 

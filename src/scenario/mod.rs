@@ -31,6 +31,9 @@ mod gland;
 pub mod gsf;
 mod height_map;
 mod history;
+pub mod keys;
+#[cfg(test)]
+mod keys_tests;
 pub mod library;
 pub mod library_check;
 pub mod life;

@@ -20,6 +20,7 @@ mod figures;
 mod fit;
 mod fuzz;
 mod gas;
+mod generate;
 mod gland;
 mod gland_pressure;
 mod leak;
