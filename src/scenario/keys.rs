@@ -36,8 +36,14 @@ pub(super) enum Kind {
     Choice(&'static [&'static str]),
     /// A whole number in \[lo, hi\].
     Integer(i64, i64),
+    /// A plain number within the bound.
+    Real(Bound),
+    /// A list of times (`["1 day", "1 year"]`), each > 0.
+    Times,
     /// Free text.
     Text,
+    /// A list of strings.
+    Texts,
     /// `true` or `false`.
     Bool,
     /// A file path, relative to the file's directory.
@@ -121,7 +127,7 @@ const fn key(name: &'static str, kind: Kind, default: Fallback, doc: &'static st
 use Fallback::{Absent, Derived, Literal, LiteralWhere, Required, SameAs};
 use Kind::{
     Bool, Choice, ChoiceOrQuantity, File, Files, Integer, Map, Quantities, Quantity, QuantityPair,
-    Table as Tbl, Tables, Temperature, TemperaturePair, Text,
+    Real, Table as Tbl, Tables, Temperature, TemperaturePair, Text, Texts, Times,
 };
 
 /// The library fluids (`fluid.library`); a test checks them against [`crate::fluid`].
@@ -1395,6 +1401,122 @@ pub(super) const TABLES: &[Table] = &[
     },
 ];
 
+/// The design of a study (`design`); a test checks them against
+/// [`crate::study::design::Design`].
+pub(super) const DESIGNS: &[&str] = &["grid", "monte-carlo", "latin-hypercube"];
+
+const STUDY: &[Key] = &[
+    key(
+        "name",
+        Text,
+        Derived("the file name without extension"),
+        "label of the study",
+    ),
+    key(
+        "base",
+        File,
+        Required(""),
+        "the base scenario, relative to the study file",
+    ),
+    key(
+        "design",
+        Choice(DESIGNS),
+        Required(""),
+        "every combination of the inputs' levels or lists (`grid`), random samples \
+         (`monte-carlo`), or stratified ones (`latin-hypercube`)",
+    ),
+    key(
+        "samples",
+        Integer(1, 10_000_000),
+        Required("monte-carlo, latin-hypercube; refused for a grid"),
+        "number of cases",
+    ),
+    key(
+        "levels",
+        Integer(1, 1000),
+        Literal("3", ""),
+        "a grid's levels of a continuous input",
+    ),
+    key(
+        "seed",
+        Integer(0, i64::MAX),
+        Literal("0", ""),
+        "seed of the sampling",
+    ),
+    key(
+        "confidence",
+        Real(Bound::Open(0.5, 1.0)),
+        Literal("0.95", ""),
+        "two-sided confidence of the bands and bounds",
+    ),
+    key(
+        "report_times",
+        Times,
+        Literal("[\"1 day\", \"1 year\", \"10 years\"]", ""),
+        "the times of the per-case leak rates",
+    ),
+    key(
+        "run_after_failure",
+        Bool,
+        Literal("false", ""),
+        "`true`: a case runs its whole duration; `false`: it ends at its failure",
+    ),
+    key(
+        "correlations",
+        Tables,
+        Absent("independent inputs"),
+        "rank correlations between inputs (Monte Carlo only; a Gaussian copula)",
+    ),
+    key(
+        "vary",
+        Map,
+        Required(""),
+        "scenario key path (`\"seal.squeeze\"`) → its distribution (below)",
+    ),
+];
+
+const CORRELATION: &[Key] = &[
+    key(
+        "inputs",
+        Texts,
+        Required(""),
+        "the two `vary` keys, `[\"a\", \"b\"]`",
+    ),
+    key(
+        "spearman",
+        Real(Bound::Open(-1.0, 1.0)),
+        Required(""),
+        "their Spearman rank correlation",
+    ),
+];
+
+/// The keys of a study file (`sealsim study`, docs/model.md §14.1).
+pub(super) const STUDY_TABLES: &[Table] = &[
+    Table {
+        path: "",
+        prose: "A study runs its base scenario with the `[vary]` inputs sampled (docs/model.md \
+                §14.1). Each input is addressed by its scenario key path and written into the \
+                base scenario in the unit of its first location parameter, so that a case obeys \
+                the rules and defaults of a scenario file; setting `material.library` or \
+                `material.file` replaces the compound. An entry of `[vary]` is an inline table \
+                `{ distribution = \"…\", … }` — `uniform`, `log-uniform` (`min`, `max`), \
+                `triangular` (`min`, `mode`, `max`), `normal` (`mean`, `std`, optional `min`, \
+                `max`), `lognormal` (`median`, `geometric_std`, optional `min`, `max`), `range`, \
+                `log-range` (`from`, `to`, `count`), `values` (`values = [...]`, no \
+                `distribution` needed), `tolerance` (`tolerance = \"±0.08 mm\"` or \
+                `\"scenario\"`, optional `nominal`, default the base's value, and `shape`, \
+                `\"normal\"` (±3σ, the default) or `\"uniform\"`) — or the shorthand \
+                `\"±0.05 mm\"`, a tolerance band about the base's value.",
+        keys: STUDY,
+    },
+    Table {
+        path: "correlations[i]",
+        prose: "One rank correlation: `correlations = [{ inputs = [\"a\", \"b\"], spearman = \
+                0.5 }]`.",
+        keys: CORRELATION,
+    },
+];
+
 /// The registry's table at `path`.
 #[cfg(test)]
 pub(super) fn table(path: &str) -> Option<&'static Table> {
@@ -1403,8 +1525,12 @@ pub(super) fn table(path: &str) -> Option<&'static Table> {
 
 /// The values a field accepts, as the messages state them.
 fn range(field: &Field) -> String {
-    let unit = field.unit();
-    let (open, lo, hi, close) = match field.bound() {
+    bound_text(field.bound(), field.unit())
+}
+
+/// `bound` with `unit` ("" for none).
+fn bound_text(bound: Bound, unit: &str) -> String {
+    let (open, lo, hi, close) = match bound {
         Bound::Open(lo, hi) => ("(", lo, hi, ")"),
         Bound::Closed(lo, hi) | Bound::Range(lo, hi) => ("[", lo, hi, "]"),
     };
@@ -1431,7 +1557,10 @@ fn unit_column(kind: &Kind) -> String {
         ChoiceOrQuantity(_, f) => format!("string or {}", si(f)),
         Temperature | TemperaturePair => "K (absolute)".into(),
         Choice(_) | Text => "string".into(),
+        Texts => "list of strings".into(),
         Integer(..) => "integer".into(),
+        Real(_) => "1".into(),
+        Times => "s (list)".into(),
         Bool => "boolean".into(),
         File => "file path".into(),
         Files => "file path(s)".into(),
@@ -1460,9 +1589,12 @@ fn range_column(kind: &Kind) -> String {
         ChoiceOrQuantity(w, f) => format!("{}, or {}", words(w), range(f)),
         Temperature | TemperaturePair => format!("[{}, {}] K", show(lo), show(hi)),
         Choice(w) => words(w),
+        Integer(lo, hi) if *hi == i64::MAX => format!("≥ {lo}"),
         Integer(lo, hi) => format!("{lo} … {hi}"),
+        Real(bound) => bound_text(*bound, ""),
+        Times => "each > 0".into(),
         Bool => "`true`, `false`".into(),
-        Text | File | Files | Tbl | Tables | Map => "—".into(),
+        Text | Texts | File | Files | Tbl | Tables | Map => "—".into(),
     }
 }
 
@@ -1493,7 +1625,15 @@ pub fn markdown() -> String {
     );
     out.push_str("# Scenario file keys\n\n");
     out.push_str(INTRO);
-    for table in TABLES {
+    render(&mut out, TABLES, "");
+    out.push_str(STUDY_INTRO);
+    render(&mut out, STUDY_TABLES, "Study file: ");
+    out
+}
+
+/// The tables in Markdown, each heading led by `lead`.
+fn render(out: &mut String, tables: &[Table], lead: &str) {
+    for table in tables {
         let heading = if table.path.is_empty() {
             "Top level".to_owned()
         } else if table.path.contains("[i]") || table.path.ends_with("CLASS") {
@@ -1502,7 +1642,7 @@ pub fn markdown() -> String {
         } else {
             format!("`[{}]`", table.path)
         };
-        let _ = write!(out, "\n## {heading}\n\n{}\n\n", table.prose);
+        let _ = write!(out, "\n## {lead}{heading}\n\n{}\n\n", table.prose);
         out.push_str("| key | meaning | unit (SI) | default | range |\n");
         out.push_str("|---|---|---|---|---|\n");
         for key in table.keys {
@@ -1517,8 +1657,11 @@ pub fn markdown() -> String {
             );
         }
     }
-    out
 }
+
+/// The introduction of the study files' part.
+const STUDY_INTRO: &str = "\n# Study file keys\n\nThe keys of a study file (`sealsim study`); \
+                           defaults are checked as the scenario's are.\n";
 
 /// The reference's introduction: how values are written.
 const INTRO: &str = "\

@@ -108,6 +108,7 @@ fn the_registry_names_exactly_the_keys_serde_accepts() {
     let raw_paths: BTreeSet<&str> = raw.iter().map(|(p, _)| *p).collect();
     let registry_paths: BTreeSet<&str> = TABLES.iter().map(|t| t.path).collect();
     assert_eq!(registry_paths, raw_paths, "the registry's tables");
+    let mut problems = Vec::new();
     for (path, fields) in &raw {
         let table = keys::table(path).unwrap();
         let names: Vec<&str> = table.keys.iter().map(|k| k.name).collect();
@@ -119,11 +120,31 @@ fn the_registry_names_exactly_the_keys_serde_accepts() {
         );
         let missing: Vec<_> = fields.difference(&registered).collect();
         let unknown: Vec<_> = registered.difference(fields).collect();
-        assert!(
-            missing.is_empty() && unknown.is_empty(),
-            "[{path}]: keys without a registry entry {missing:?}; registry entries that are no \
-             key {unknown:?} (src/scenario/keys.rs)"
-        );
+        if !(missing.is_empty() && unknown.is_empty()) {
+            problems.push(format!(
+                "[{path}]: keys without a registry entry {missing:?}; registry entries that are \
+                 no key {unknown:?}"
+            ));
+        }
+    }
+    assert!(
+        problems.is_empty(),
+        "src/scenario/keys.rs does not list the keys serde accepts:\n{}",
+        problems.join("\n")
+    );
+    // a study file
+    let study: Vec<(&str, BTreeSet<&str>)> = vec![
+        ("", accepted::<super::study::RawStudy>()),
+        (
+            "correlations[i]",
+            accepted::<super::study::RawCorrelation>(),
+        ),
+    ];
+    assert_eq!(keys::STUDY_TABLES.len(), study.len());
+    for ((path, fields), table) in study.iter().zip(keys::STUDY_TABLES) {
+        assert_eq!(table.path, *path);
+        let registered: BTreeSet<&str> = table.keys.iter().map(|k| k.name).collect();
+        assert_eq!(&registered, fields, "study file [{path}]");
     }
     // a material file is one [material] table
     assert_eq!(accepted::<RawMaterialFile>(), BTreeSet::from(["material"]));
@@ -196,6 +217,8 @@ fn the_listed_words_are_the_codes() {
         .map(|m| m.as_str())
         .to_vec();
     assert_eq!(keys::MEDIA, media.as_slice());
+    let designs = crate::study::design::Design::ALL.map(|d| d.name());
+    assert_eq!(keys::DESIGNS, designs.as_slice());
     let ratings: Vec<String> = crate::material::compatibility::Rating::ALL
         .map(|r| r.letter().to_string())
         .to_vec();
@@ -497,6 +520,52 @@ fn every_literal_default_is_what_an_absent_key_means() {
         checked * 4 >= defaults * 3,
         "{checked} of {defaults} defaults checked"
     );
+}
+
+#[test]
+fn every_literal_default_of_a_study_file_is_what_an_absent_key_means() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/studies");
+    let bases: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.to_string_lossy().ends_with(".study.toml"))
+        .collect();
+    assert!(!bases.is_empty());
+    // a study as validated, but for its text, the fingerprint of the text and its inputs'
+    // lines (inserting a line moves them)
+    let load = |text: &str, path: &Path| {
+        super::study::Study::from_str(text, path).ok().map(|mut s| {
+            s.fingerprint.clear();
+            for input in &mut s.inputs {
+                input.line = 0;
+            }
+            format!("{s:?}").replace(&format!("{text:?}"), "TEXT")
+        })
+    };
+    let mut checked = 0;
+    for table in keys::STUDY_TABLES {
+        for key in table.keys {
+            let Fallback::Literal(value, _) = key.default else {
+                continue;
+            };
+            let mut compared = 0;
+            for path in &bases {
+                let text = std::fs::read_to_string(path).unwrap();
+                let Some((with, without)) = with_and_without(&text, table.path, key.name, value)
+                else {
+                    continue;
+                };
+                let (Some(a), Some(b)) = (load(&without, path), load(&with, path)) else {
+                    continue;
+                };
+                assert!(a == b, "study {}: absent is not `{value}`", key.name);
+                compared += 1;
+            }
+            assert!(compared > 0, "study {}: no base could check it", key.name);
+            checked += 1;
+        }
+    }
+    assert_eq!(checked, 5);
 }
 
 /// The committed reference.
