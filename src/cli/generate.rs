@@ -1,7 +1,9 @@
 //! `sealsim generate …`: files generated from the code's own definitions, so that the
 //! documentation cannot drift from it. `generate keys [-o FILE]` renders the scenario key
 //! reference (`docs/src/reference/keys.md`) from the key registry
-//! ([`crate::scenario::keys`]); a test checks that the committed file is what it renders.
+//! ([`crate::scenario::keys`]), `generate columns` the CSV column reference
+//! (`docs/src/reference/columns.md`) from [`crate::report::columns`]; tests check that the
+//! committed files are what they render.
 
 use super::{CliError, write_output};
 use clap::{Args, Subcommand};
@@ -21,6 +23,10 @@ pub enum Generated {
     /// registry.
     #[command(hide = true)]
     Keys(OutputArgs),
+    /// The CSV column reference in Markdown (docs/src/reference/columns.md), from the column
+    /// registry.
+    #[command(hide = true)]
+    Columns(OutputArgs),
 }
 
 /// Where a generated file goes.
@@ -37,6 +43,10 @@ pub fn run(args: GenerateArgs) -> Result<(), CliError> {
         Generated::Keys(out) => write_output(
             out.output.as_deref(),
             crate::scenario::keys::markdown().as_bytes(),
+        ),
+        Generated::Columns(out) => write_output(
+            out.output.as_deref(),
+            crate::report::columns::markdown().as_bytes(),
         ),
     }
 }

@@ -186,7 +186,8 @@ pub enum Command {
     /// distribution (survival curve, B1/B10/B50 lives, Weibull fit, what drives the life);
     /// shards, their merge and a Slurm job array for clusters.
     Study(Box<study::StudyArgs>),
-    /// Files generated from the code's own definitions (the scenario key reference).
+    /// Files generated from the code's own definitions (the scenario key and CSV column
+    /// references).
     Generate(generate::GenerateArgs),
 }
 
