@@ -1,7 +1,7 @@
 //! The key registry: every key of a scenario file (and of a material file, whose one table is
 //! `[material]`) defined once, with its kind, default and meaning.
 //!
-//! A numeric key's entry holds the very [`Field`] the validator checks it with (dimension, SI
+//! A numeric key's entry holds the very `Field` the validator checks it with (dimension, SI
 //! unit, range), so that the reference cannot disagree with the code. [`markdown`] renders the
 //! registry as `docs/src/reference/keys.md` (`sealsim generate keys`); the tests check that the
 //! registry names exactly the keys the raw TOML structs accept (table by table, from serde's own
