@@ -1,7 +1,11 @@
-//! `sealsim generate man|completions`: documentation generated from the one clap definition
-//! of the commands ([`super::Cli`]), so that it cannot drift from the program — man pages
-//! (roff, by clap_mangen: `sealsim.1` and one `sealsim-COMMAND.1` per command and subcommand)
-//! and shell completion scripts (by clap_complete).
+//! `sealsim generate …`: files generated from the code's own definitions, so that the
+//! documentation cannot drift from the program. From the one clap definition of the commands
+//! ([`super::Cli`]): man pages (roff, by clap_mangen: `sealsim.1` and one `sealsim-COMMAND.1`
+//! per command and subcommand) and shell completion scripts (by clap_complete). Hidden, for the
+//! guide: `generate keys [-o FILE]` renders the scenario key reference
+//! (`docs/src/reference/keys.md`) from the key registry ([`crate::scenario::keys`]), `generate
+//! columns` the CSV column reference (`docs/src/reference/columns.md`) from
+//! [`crate::report::columns`]; tests check that the committed files are what they render.
 
 use super::{CliError, write_output};
 use clap::{Args, CommandFactory, Subcommand};
@@ -34,6 +38,22 @@ pub enum Generate {
         #[arg(short, long, value_name = "FILE")]
         output: Option<PathBuf>,
     },
+    /// The scenario key reference in Markdown (docs/src/reference/keys.md), from the key
+    /// registry.
+    #[command(hide = true)]
+    Keys(OutputArgs),
+    /// The CSV column reference in Markdown (docs/src/reference/columns.md), from the column
+    /// registry.
+    #[command(hide = true)]
+    Columns(OutputArgs),
+}
+
+/// Where a generated file goes.
+#[derive(Debug, Clone, Args)]
+pub struct OutputArgs {
+    /// Write to FILE (atomically) instead of standard output.
+    #[arg(short, long, value_name = "FILE")]
+    pub output: Option<PathBuf>,
 }
 
 /// Runs `sealsim generate`.
@@ -46,6 +66,14 @@ pub fn run(args: GenerateArgs) -> Result<(), CliError> {
             clap_complete::generate(shell, &mut command, "sealsim", &mut script);
             write_output(output.as_deref(), &script)
         }
+        Generate::Keys(out) => write_output(
+            out.output.as_deref(),
+            crate::scenario::keys::markdown().as_bytes(),
+        ),
+        Generate::Columns(out) => write_output(
+            out.output.as_deref(),
+            crate::report::columns::markdown().as_bytes(),
+        ),
     }
 }
 

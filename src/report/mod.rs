@@ -3,6 +3,7 @@
 //! Units are printed only here (column names carry them); the physics hands over SI values.
 
 pub mod ageing_fit;
+pub mod columns;
 pub mod csv;
 pub mod findings;
 pub mod html;

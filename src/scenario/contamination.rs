@@ -13,49 +13,49 @@ use crate::clogging::{Contamination, DEFAULT_TOLERANCE, SizeDistribution};
 use crate::units::{self, Dimension, show};
 use toml::Spanned;
 
-const NUMBER_CONCENTRATION: Field = field(
+pub(super) const NUMBER_CONCENTRATION: Field = field(
     "contamination.number_concentration",
     Dimension::NUMBER_DENSITY,
     "1/m^3",
     Bound::Range(0.0, 1e30),
 );
-const VOLUME_FRACTION: Field = field(
+pub(super) const VOLUME_FRACTION: Field = field(
     "contamination.volume_fraction",
     Dimension::DIMENSIONLESS,
     "",
     Bound::Closed(0.0, 1.0),
 );
-const DIAMETER: Field = field(
+pub(super) const DIAMETER: Field = field(
     "contamination.size_distribution.diameter",
     Dimension::LENGTH,
     "m",
     Bound::Range(1e-9, 1e-2),
 );
-const MEDIAN: Field = field(
+pub(super) const MEDIAN: Field = field(
     "contamination.size_distribution.median",
     Dimension::LENGTH,
     "m",
     Bound::Range(1e-9, 1e-2),
 );
-const GEOMETRIC_STD: Field = field(
+pub(super) const GEOMETRIC_STD: Field = field(
     "contamination.size_distribution.geometric_std",
     Dimension::DIMENSIONLESS,
     "",
     Bound::Range(1e-3, 1e2),
 );
-const SCALE: Field = field(
+pub(super) const SCALE: Field = field(
     "contamination.size_distribution.scale",
     Dimension::LENGTH,
     "m",
     Bound::Range(1e-9, 1e-2),
 );
-const SHAPE: Field = field(
+pub(super) const SHAPE: Field = field(
     "contamination.size_distribution.shape",
     Dimension::DIMENSIONLESS,
     "",
     Bound::Range(1e-2, 1e2),
 );
-const CLOGGING_TOLERANCE: Field = field(
+pub(super) const CLOGGING_TOLERANCE: Field = field(
     "simulation.clogging_tolerance",
     Dimension::DIMENSIONLESS,
     "",

@@ -20,6 +20,9 @@ use super::as568;
 use super::error::{ScenarioError, Source};
 use super::life::{HousingExpansion, SealSpec};
 use super::raw::{Quantity, RawSeal};
+// `seal.cross_section` and `seal.squeeze` are the keys of a ring between plates too: one
+// definition each, in `life` (the key registry, `super::keys`, names them once).
+use super::life::{CROSS_SECTION, SQUEEZE};
 use super::validate::{Bound, Field, field};
 use crate::gland::{
     GlandDesign, GlandError, GlandKind, Locator, MAX_FILL_GUIDANCE, MAX_STRETCH_GUIDANCE,
@@ -35,25 +38,21 @@ const fn length(key: &'static str, bound: Bound) -> Field {
     field(key, Dimension::LENGTH, "m", bound)
 }
 
-const CROSS_SECTION: Field = length("seal.cross_section", Bound::Range(1e-9, 10.0));
-const INNER_DIAMETER: Field = length("seal.inner_diameter", Bound::Range(1e-9, 10.0));
-const GROOVE_DEPTH: Field = length("seal.groove_depth", Bound::Range(1e-9, 10.0));
-const GROOVE_DEPTH_TOLERANCE: Field =
+pub(super) const INNER_DIAMETER: Field = length("seal.inner_diameter", Bound::Range(1e-9, 10.0));
+pub(super) const GROOVE_DEPTH: Field = length("seal.groove_depth", Bound::Range(1e-9, 10.0));
+pub(super) const GROOVE_DEPTH_TOLERANCE: Field =
     length("seal.groove_depth_tolerance", Bound::Range(0.0, 10.0));
-const GROOVE_WIDTH: Field = length("seal.groove_width", Bound::Range(1e-9, 10.0));
-const DIAMETRAL_CLEARANCE: Field = length("seal.diametral_clearance", Bound::Range(0.0, 10.0));
-const EXTRUSION_GAP: Field = length("seal.extrusion_gap", Bound::Range(0.0, 10.0));
-const BORE_DIAMETER: Field = length("seal.bore_diameter", Bound::Range(1e-9, 10.0));
-const ROD_DIAMETER: Field = length("seal.rod_diameter", Bound::Range(1e-9, 10.0));
-const GROOVE_OUTER_DIAMETER: Field = length("seal.groove_outer_diameter", Bound::Range(1e-9, 10.0));
-const GROOVE_INNER_DIAMETER: Field = length("seal.groove_inner_diameter", Bound::Range(1e-9, 10.0));
-const SQUEEZE: Field = field(
-    "seal.squeeze",
-    Dimension::DIMENSIONLESS,
-    "",
-    Bound::Open(0.0, 1.0),
-);
-const ENERGISATION_FACTOR: Field = field(
+pub(super) const GROOVE_WIDTH: Field = length("seal.groove_width", Bound::Range(1e-9, 10.0));
+pub(super) const DIAMETRAL_CLEARANCE: Field =
+    length("seal.diametral_clearance", Bound::Range(0.0, 10.0));
+pub(super) const EXTRUSION_GAP: Field = length("seal.extrusion_gap", Bound::Range(0.0, 10.0));
+pub(super) const BORE_DIAMETER: Field = length("seal.bore_diameter", Bound::Range(1e-9, 10.0));
+pub(super) const ROD_DIAMETER: Field = length("seal.rod_diameter", Bound::Range(1e-9, 10.0));
+pub(super) const GROOVE_OUTER_DIAMETER: Field =
+    length("seal.groove_outer_diameter", Bound::Range(1e-9, 10.0));
+pub(super) const GROOVE_INNER_DIAMETER: Field =
+    length("seal.groove_inner_diameter", Bound::Range(1e-9, 10.0));
+pub(super) const ENERGISATION_FACTOR: Field = field(
     "seal.energisation_factor",
     Dimension::DIMENSIONLESS,
     "",

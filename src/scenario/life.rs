@@ -18,85 +18,85 @@ use crate::units::{Dimension, show};
 use std::path::PathBuf;
 use toml::Spanned;
 
-const NOMINAL_PRESSURE: Field = field(
+pub(super) const NOMINAL_PRESSURE: Field = field(
     "seal.nominal_pressure",
     Dimension::PRESSURE,
     "Pa",
     Bound::Range(1.0, 1e10),
 );
-const THICKNESS: Field = field(
+pub(super) const THICKNESS: Field = field(
     "seal.thickness",
     Dimension::LENGTH,
     "m",
     Bound::Range(1e-6, 1.0),
 );
-const WIDTH: Field = field(
+pub(super) const WIDTH: Field = field(
     "seal.width",
     Dimension::LENGTH,
     "m",
     Bound::Range(1e-9, 10.0),
 );
-const LENGTH: Field = field(
+pub(super) const LENGTH: Field = field(
     "seal.length",
     Dimension::LENGTH,
     "m",
     Bound::Range(1e-9, 10.0),
 );
-const CROSS_SECTION: Field = field(
+pub(super) const CROSS_SECTION: Field = field(
     "seal.cross_section",
     Dimension::LENGTH,
     "m",
     Bound::Range(1e-9, 10.0),
 );
-const MEAN_DIAMETER: Field = field(
+pub(super) const MEAN_DIAMETER: Field = field(
     "seal.mean_diameter",
     Dimension::LENGTH,
     "m",
     Bound::Range(1e-9, 10.0),
 );
-const SQUEEZE: Field = field(
+pub(super) const SQUEEZE: Field = field(
     "seal.squeeze",
     Dimension::DIMENSIONLESS,
     "",
     Bound::Open(0.0, 1.0),
 );
-const HOUSING_EXPANSION: Field = field(
+pub(super) const HOUSING_EXPANSION: Field = field(
     "seal.housing_expansion",
     Dimension::THERMAL_EXPANSION,
     "1/K",
     Bound::Range(0.0, 1e-2),
 );
-const DAILY_AMPLITUDE: Field = field(
+pub(super) const DAILY_AMPLITUDE: Field = field(
     "environment.daily_amplitude",
     Dimension::TEMPERATURE,
     "K",
     Bound::Range(0.0, 500.0),
 );
-const YEARLY_AMPLITUDE: Field = field(
+pub(super) const YEARLY_AMPLITUDE: Field = field(
     "environment.yearly_amplitude",
     Dimension::TEMPERATURE,
     "K",
     Bound::Range(0.0, 500.0),
 );
-const MAX_LEAK_RATE: Field = field(
+pub(super) const MAX_LEAK_RATE: Field = field(
     "failure.max_leak_rate",
     Dimension::VOLUME_FLOW,
     "m^3/s",
     Bound::Range(1e-30, 1.0),
 );
-const MAX_LEAKED_VOLUME: Field = field(
+pub(super) const MAX_LEAKED_VOLUME: Field = field(
     "failure.max_leaked_volume",
     Dimension::VOLUME,
     "m^3",
     Bound::Range(1e-30, 1e6),
 );
-const REFERENCE_PRESSURE: Field = field(
+pub(super) const REFERENCE_PRESSURE: Field = field(
     "failure.reference_pressure",
     Dimension::PRESSURE,
     "Pa",
     Bound::Range(1.0, 1e10),
 );
-const MINIMUM_PRESSURE_DIFFERENCE: Field = field(
+pub(super) const MINIMUM_PRESSURE_DIFFERENCE: Field = field(
     "failure.minimum_pressure_difference",
     Dimension::PRESSURE,
     "Pa",
@@ -105,43 +105,43 @@ const MINIMUM_PRESSURE_DIFFERENCE: Field = field(
 /// The default shutdown temperature's upper end \[K\]: 23 °C, the laboratory's standard
 /// temperature (ISO 23529), a plant at rest indoors (docs/model.md §8.2).
 pub const DEFAULT_SHUTDOWN_TEMPERATURE: f64 = 296.15;
-const MIN_RETAINED_FORCE: Field = field(
+pub(super) const MIN_RETAINED_FORCE: Field = field(
     "failure.min_retained_force",
     Dimension::DIMENSIONLESS,
     "",
     Bound::Open(0.0, 1.0),
 );
-const RETAINED_FORCE_REFERENCE: Field = field(
+pub(super) const RETAINED_FORCE_REFERENCE: Field = field(
     "failure.retained_force_reference",
     Dimension::TIME,
     "s",
     Bound::Range(0.0, MAX_DURATION),
 );
-const MIN_SEALING_FORCE: Field = field(
+pub(super) const MIN_SEALING_FORCE: Field = field(
     "failure.min_sealing_force",
     Dimension::FORCE_PER_LENGTH,
     "N/m",
     Bound::Open(0.0, 1e9),
 );
-const MIN_CONTACT_PRESSURE: Field = field(
+pub(super) const MIN_CONTACT_PRESSURE: Field = field(
     "failure.min_contact_pressure",
     Dimension::PRESSURE,
     "Pa",
     Bound::Open(0.0, 1e10),
 );
-const GASKET_FACTOR: Field = field(
+pub(super) const GASKET_FACTOR: Field = field(
     "failure.gasket_factor",
     Dimension::DIMENSIONLESS,
     "",
     Bound::Range(0.0, 100.0),
 );
-const MAX_COMPRESSION_SET: Field = field(
+pub(super) const MAX_COMPRESSION_SET: Field = field(
     "failure.max_compression_set",
     Dimension::DIMENSIONLESS,
     "",
     Bound::Open(0.0, 1.0),
 );
-const INSTALLATION_TIME: Field = field(
+pub(super) const INSTALLATION_TIME: Field = field(
     "seal.installation_time",
     Dimension::TIME,
     "s",
@@ -153,37 +153,37 @@ pub const DEFAULT_RETAINED_FORCE_REFERENCE: f64 = 1800.0;
 /// An O-ring is pressed into its gland, or a flange bolted up, within seconds: the squeeze's
 /// ramp at installation (docs/model.md §5.2).
 pub const DEFAULT_INSTALLATION_TIME: f64 = 1.0;
-const AGEING_ACTIVATION_ENERGY: Field = field(
+pub(super) const AGEING_ACTIVATION_ENERGY: Field = field(
     "ageing.activation_energy",
     Dimension::MOLAR_ENERGY,
     "J/mol",
     Bound::Range(1.0, 1e6),
 );
-const AGEING_RATE: Field = field(
+pub(super) const AGEING_RATE: Field = field(
     "ageing.rate",
     Dimension::FREQUENCY,
     "1/s",
     Bound::Range(1e-30, 1e3),
 );
-const AGEING_CROSSLINKING: Field = field(
+pub(super) const AGEING_CROSSLINKING: Field = field(
     "ageing.crosslinking",
     Dimension::DIMENSIONLESS,
     "",
     Bound::Range(0.0, 10.0),
 );
-const DURATION: Field = field(
+pub(super) const DURATION: Field = field(
     "simulation.duration",
     Dimension::TIME,
     "s",
     Bound::Range(1e-9, MAX_DURATION),
 );
-const START: Field = field(
+pub(super) const START: Field = field(
     "simulation.start",
     Dimension::TIME,
     "s",
     Bound::Range(1e-9, MAX_DURATION),
 );
-const POINTS_PER_DECADE: Field = field(
+pub(super) const POINTS_PER_DECADE: Field = field(
     "simulation.points_per_decade",
     Dimension::DIMENSIONLESS,
     "",

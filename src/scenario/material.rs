@@ -57,96 +57,96 @@ pub const PARAMETERS: [&str; 9] = [
 /// was fitted to (`fit-prony` says where its data temperature came from).
 pub const DATA_WINDOWS: [&str; 2] = ["data_reduced_time", "data_temperature"];
 
-const YOUNGS_MODULUS: Field = field(
+pub(super) const YOUNGS_MODULUS: Field = field(
     "material.youngs_modulus",
     Dimension::PRESSURE,
     "Pa",
     Bound::Range(1e3, 1e12),
 );
-const POISSON_RATIO: Field = field(
+pub(super) const POISSON_RATIO: Field = field(
     "material.poisson_ratio",
     Dimension::DIMENSIONLESS,
     "",
     Bound::Closed(0.0, 0.5),
 );
-const LONG_TERM_MODULUS: Field = field(
+pub(super) const LONG_TERM_MODULUS: Field = field(
     "material.long_term_modulus",
     Dimension::PRESSURE,
     "Pa",
     Bound::Range(0.0, 1e12),
 );
 /// `material.prony[i].modulus`; the key is replaced by the indexed one in errors.
-const TERM_MODULUS: Field = field(
+pub(super) const TERM_MODULUS: Field = field(
     "material.prony.modulus",
     Dimension::PRESSURE,
     "Pa",
     Bound::Range(1e-6, 1e12),
 );
 /// `material.prony[i].tau`; the key is replaced by the indexed one in errors.
-const TERM_TAU: Field = field(
+pub(super) const TERM_TAU: Field = field(
     "material.prony.tau",
     Dimension::TIME,
     "s",
     Bound::Range(1e-20, 1e20),
 );
-const DATA_REDUCED_TIME: Field = field(
+pub(super) const DATA_REDUCED_TIME: Field = field(
     "material.data_reduced_time",
     Dimension::TIME,
     "s",
     Bound::Range(1e-20, 1e30),
 );
-const THERMAL_EXPANSION: Field = field(
+pub(super) const THERMAL_EXPANSION: Field = field(
     "material.thermal_expansion",
     Dimension::THERMAL_EXPANSION,
     "1/K",
     Bound::Range(1e-8, 1e-2),
 );
 /// The linear CTE below T_g (glassy); used by the O-ring thermal strain below `glass_transition`.
-const GLASSY_THERMAL_EXPANSION: Field = field(
+pub(super) const GLASSY_THERMAL_EXPANSION: Field = field(
     "material.glassy_thermal_expansion",
     Dimension::THERMAL_EXPANSION,
     "1/K",
     Bound::Range(1e-8, 1e-2),
 );
-const WLF_C1: Field = field(
+pub(super) const WLF_C1: Field = field(
     "material.shift.c1",
     Dimension::DIMENSIONLESS,
     "",
     Bound::Range(1e-3, 1e3),
 );
 /// A temperature difference (a bare number or `"101.6 K"`; `"101.6 C"` is the same).
-const WLF_C2: Field = field(
+pub(super) const WLF_C2: Field = field(
     "material.shift.c2",
     Dimension::TEMPERATURE,
     "K",
     Bound::Range(1e-3, 1e3),
 );
-const SHIFT_ACTIVATION_ENERGY: Field = field(
+pub(super) const SHIFT_ACTIVATION_ENERGY: Field = field(
     "material.shift.activation_energy",
     Dimension::MOLAR_ENERGY,
     "J/mol",
     Bound::Range(1.0, 1e6),
 );
-const AGEING_ACTIVATION_ENERGY: Field = field(
+pub(super) const AGEING_ACTIVATION_ENERGY: Field = field(
     "material.ageing.activation_energy",
     Dimension::MOLAR_ENERGY,
     "J/mol",
     Bound::Range(1.0, 1e6),
 );
-const AGEING_RATE: Field = field(
+pub(super) const AGEING_RATE: Field = field(
     "material.ageing.rate",
     Dimension::FREQUENCY,
     "1/s",
     Bound::Range(1e-30, 1e3),
 );
-const AGEING_CROSSLINKING: Field = field(
+pub(super) const AGEING_CROSSLINKING: Field = field(
     "material.ageing.crosslinking",
     Dimension::DIMENSIONLESS,
     "",
     Bound::Range(0.0, 10.0),
 );
 /// A fixed asperity modulus (`asperity_modulus = "3 MPa"`).
-const ASPERITY_MODULUS: Field = field(
+pub(super) const ASPERITY_MODULUS: Field = field(
     "material.asperity_modulus",
     Dimension::PRESSURE,
     "Pa",

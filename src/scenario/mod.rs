@@ -11,7 +11,8 @@
 //!
 //! Every error is a [`ScenarioError`] naming the file, the line and the key, e.g.
 //! `scenarios/x.toml:7: surface.hurst_exponent: must lie strictly between 0 and 1, got 1.2`.
-//! The keys are documented in README.md, "Scenario file reference".
+//! Every key is defined once in the key registry, [`keys`], which renders the reference
+//! `docs/src/reference/keys.md` (`sealsim generate keys`).
 //!
 //! [`leak::StaticProblem`]: crate::leak::StaticProblem
 //! [`simulate::LifeProblem`]: crate::simulate::LifeProblem
@@ -31,6 +32,9 @@ mod gland;
 pub mod gsf;
 mod height_map;
 mod history;
+pub mod keys;
+#[cfg(test)]
+mod keys_tests;
 pub mod library;
 pub mod library_check;
 pub mod life;

@@ -21,13 +21,13 @@ use toml::Spanned;
 
 /// Pressure per length \[Pa/m\].
 const PRESSURE_GRADIENT: Dimension = Dimension::new(-2, 1, -2, 0, 0);
-const INLET_GRADIENT_OUT: Field = field(
+pub(super) const INLET_GRADIENT_OUT: Field = field(
     "motion.inlet_gradient_out",
     PRESSURE_GRADIENT,
     "Pa/m",
     Bound::Range(1.0, 1e15),
 );
-const INLET_GRADIENT_IN: Field = field(
+pub(super) const INLET_GRADIENT_IN: Field = field(
     "motion.inlet_gradient_in",
     PRESSURE_GRADIENT,
     "Pa/m",
@@ -35,37 +35,37 @@ const INLET_GRADIENT_IN: Field = field(
 );
 const CONTACT_PROFILE: &str = "motion.contact_profile";
 
-const SLIDING_SPEED: Field = field(
+pub(super) const SLIDING_SPEED: Field = field(
     "motion.sliding_speed",
     Dimension::VELOCITY,
     "m/s",
     Bound::Range(0.0, 100.0),
 );
-const STROKE: Field = field(
+pub(super) const STROKE: Field = field(
     "motion.stroke",
     Dimension::LENGTH,
     "m",
     Bound::Range(1e-9, 10.0),
 );
-const FREQUENCY: Field = field(
+pub(super) const FREQUENCY: Field = field(
     "motion.frequency",
     Dimension::FREQUENCY,
     "Hz",
     Bound::Range(1e-9, 1e6),
 );
-const OUT_SPEED: Field = field(
+pub(super) const OUT_SPEED: Field = field(
     "motion.out_speed",
     Dimension::VELOCITY,
     "m/s",
     Bound::Range(1e-9, 100.0),
 );
-const IN_SPEED: Field = field(
+pub(super) const IN_SPEED: Field = field(
     "motion.in_speed",
     Dimension::VELOCITY,
     "m/s",
     Bound::Range(1e-9, 100.0),
 );
-const JUNCTION_POSITION: Field = field(
+pub(super) const JUNCTION_POSITION: Field = field(
     "motion.junction_position",
     Dimension::DIMENSIONLESS,
     "",

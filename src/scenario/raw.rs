@@ -1,7 +1,8 @@
 //! The scenario file exactly as written: one struct per TOML table, every value spanned.
 //!
 //! Nothing here checks a value or knows a unit; that is [`super::validate`]'s job. Adding a
-//! key means adding a field here and reading it there. All tables reject unknown keys, so a
+//! key means adding a field here, reading it there, and its entry in the key registry
+//! ([`super::keys`]; a test fails until it has one). All tables reject unknown keys, so a
 //! misspelt key is an error with the key named, never silently ignored.
 
 use serde::de::{self, Deserialize, Deserializer, Visitor};

@@ -49,7 +49,7 @@ const DEFAULT_REPORT_TIMES: [f64; 3] = [86_400.0, 365.25 * 86_400.0, 3652.5 * 86
 
 #[derive(Debug, serde::Deserialize)]
 #[serde(deny_unknown_fields)]
-struct RawStudy {
+pub(super) struct RawStudy {
     name: Option<Spanned<String>>,
     base: Spanned<String>,
     design: Spanned<String>,
@@ -66,7 +66,7 @@ struct RawStudy {
 /// `correlations = [{ inputs = ["a", "b"], spearman = 0.5 }]`.
 #[derive(Debug, serde::Deserialize)]
 #[serde(deny_unknown_fields)]
-struct RawCorrelation {
+pub(super) struct RawCorrelation {
     inputs: Vec<String>,
     spearman: f64,
 }

@@ -102,6 +102,23 @@ pub(super) struct Field {
     bound: Bound,
 }
 
+impl Field {
+    /// The quantity's dimension (what units it accepts).
+    pub(super) fn dimension(&self) -> Dimension {
+        self.dimension
+    }
+
+    /// SI unit symbol ("" if dimensionless).
+    pub(super) fn unit(&self) -> &'static str {
+        self.unit
+    }
+
+    /// The values it accepts.
+    pub(super) fn bound(&self) -> Bound {
+        self.bound
+    }
+}
+
 pub(super) const fn field(
     key: &'static str,
     dimension: Dimension,
@@ -116,69 +133,69 @@ pub(super) const fn field(
     }
 }
 
-const RMS_ROUGHNESS: Field = field(
+pub(super) const RMS_ROUGHNESS: Field = field(
     "surface.rms_roughness",
     Dimension::LENGTH,
     "m",
     Bound::Range(1e-10, 1e-3),
 );
-const HURST_EXPONENT: Field = field(
+pub(super) const HURST_EXPONENT: Field = field(
     "surface.hurst_exponent",
     Dimension::DIMENSIONLESS,
     "",
     Bound::Open(0.0, 1.0),
 );
-const Q0: Field = field(
+pub(super) const Q0: Field = field(
     "surface.q0",
     Dimension::WAVEVECTOR,
     "1/m",
     Bound::Range(1.0, 1e12),
 );
-const Q1: Field = field(
+pub(super) const Q1: Field = field(
     "surface.q1",
     Dimension::WAVEVECTOR,
     "1/m",
     Bound::Range(1.0, 1e12),
 );
-const ROLLOFF: Field = field(
+pub(super) const ROLLOFF: Field = field(
     "surface.rolloff",
     Dimension::WAVEVECTOR,
     "1/m",
     Bound::Range(1.0, 1e12),
 );
-const PIXEL_SIZE: Field = field(
+pub(super) const PIXEL_SIZE: Field = field(
     "surface.pixel_size",
     Dimension::LENGTH,
     "m",
     Bound::Range(1e-10, 1e-2),
 );
-const RA: Field = field(
+pub(super) const RA: Field = field(
     "surface.ra",
     Dimension::LENGTH,
     "m",
     Bound::Range(1e-9, 1e-4),
 );
-const RQ: Field = field(
+pub(super) const RQ: Field = field(
     "surface.rq",
     Dimension::LENGTH,
     "m",
     Bound::Range(1e-9, 1.25e-4),
 );
-const RZ: Field = field(
+pub(super) const RZ: Field = field(
     "surface.rz",
     Dimension::LENGTH,
     "m",
     Bound::Range(5e-9, 1e-3),
 );
 /// λc: ISO 21920-3's sampling lengths run 0.08–8 mm; 10 µm – 100 mm is accepted.
-const CUTOFF: Field = field(
+pub(super) const CUTOFF: Field = field(
     "surface.cutoff",
     Dimension::LENGTH,
     "m",
     Bound::Range(1e-5, 0.1),
 );
 /// λs: ISO 3274's 0.8–25 µm; 10 nm (an AFM's reach) – 1 mm is accepted.
-const SHORT_CUTOFF: Field = field(
+pub(super) const SHORT_CUTOFF: Field = field(
     "surface.short_cutoff",
     Dimension::LENGTH,
     "m",
@@ -190,37 +207,37 @@ const SHORT_WAVELENGTH: &str = "surface.short_wavelength";
 const HEIGHT_MAP: &str = "surface.height_map";
 /// Key of the height map's unit, in messages.
 const HEIGHT_UNIT: &str = "surface.height_unit";
-const VISCOSITY: Field = field(
+pub(super) const VISCOSITY: Field = field(
     "fluid.viscosity",
     Dimension::VISCOSITY,
     "Pa·s",
     Bound::Range(1e-7, 1e6),
 );
-const VISCOSITY_40C: Field = field(
+pub(super) const VISCOSITY_40C: Field = field(
     "fluid.viscosity_40c",
     Dimension::KINEMATIC_VISCOSITY,
     "m²/s",
     Bound::Range(1e-7, 1e-1),
 );
-const VISCOSITY_100C: Field = field(
+pub(super) const VISCOSITY_100C: Field = field(
     "fluid.viscosity_100c",
     Dimension::KINEMATIC_VISCOSITY,
     "m²/s",
     Bound::Range(1e-7, 1e-1),
 );
-const DENSITY: Field = field(
+pub(super) const DENSITY: Field = field(
     "fluid.density",
     Dimension::DENSITY,
     "kg/m³",
     Bound::Range(100.0, 3e4),
 );
-const FLUID_EXPANSION: Field = field(
+pub(super) const FLUID_EXPANSION: Field = field(
     "fluid.thermal_expansion",
     Dimension::THERMAL_EXPANSION,
     "1/K",
     Bound::Range(0.0, 1e-2),
 );
-const VOLUME_SWELL: Field = field(
+pub(super) const VOLUME_SWELL: Field = field(
     "fluid.volume_swell",
     Dimension::DIMENSIONLESS,
     "",
@@ -228,49 +245,49 @@ const VOLUME_SWELL: Field = field(
 );
 /// ΔV/V0 above which a swell is out of seal practice (a warning): ≈ +30 %.
 const SWELL_PRACTICE: f64 = 0.30;
-const PRESSURE_DIFFERENCE: Field = field(
+pub(super) const PRESSURE_DIFFERENCE: Field = field(
     "fluid.pressure_difference",
     Dimension::PRESSURE,
     "Pa",
     Bound::Range(0.0, 1e10),
 );
-const INLET_PRESSURE: Field = field(
+pub(super) const INLET_PRESSURE: Field = field(
     "fluid.inlet_pressure",
     Dimension::PRESSURE,
     "Pa",
     Bound::Range(0.0, 1e10),
 );
-const OUTLET_PRESSURE: Field = field(
+pub(super) const OUTLET_PRESSURE: Field = field(
     "fluid.outlet_pressure",
     Dimension::PRESSURE,
     "Pa",
     Bound::Range(0.0, 1e10),
 );
-const MOLAR_MASS: Field = field(
+pub(super) const MOLAR_MASS: Field = field(
     "fluid.molar_mass",
     Dimension::new(0, 1, 0, 0, -1),
     "kg/mol",
     Bound::Range(1e-3, 1.0),
 );
-const MOLECULAR_DIAMETER: Field = field(
+pub(super) const MOLECULAR_DIAMETER: Field = field(
     "fluid.molecular_diameter",
     Dimension::LENGTH,
     "m",
     Bound::Range(1e-11, 1e-8),
 );
-const GAS_VISCOSITY: Field = field(
+pub(super) const GAS_VISCOSITY: Field = field(
     "fluid.viscosity",
     Dimension::VISCOSITY,
     "Pa·s",
     Bound::Range(1e-7, 1e-3),
 );
-const SUTHERLAND_VISCOSITY: Field = field(
+pub(super) const SUTHERLAND_VISCOSITY: Field = field(
     "fluid.sutherland_viscosity",
     Dimension::VISCOSITY,
     "Pa·s",
     Bound::Range(1e-7, 1e-3),
 );
-const SUTHERLAND_CONSTANT: Field = field(
+pub(super) const SUTHERLAND_CONSTANT: Field = field(
     "fluid.sutherland_constant",
     Dimension::TEMPERATURE,
     "K",
@@ -278,44 +295,44 @@ const SUTHERLAND_CONSTANT: Field = field(
 );
 /// Outlet pressure of a gas given only `pressure_difference`: 1 atm \[Pa\].
 const ATMOSPHERE: f64 = 101_325.0;
-const PERCOLATION_THRESHOLD: Field = field(
+pub(super) const PERCOLATION_THRESHOLD: Field = field(
     "model.percolation_threshold",
     Dimension::DIMENSIONLESS,
     "",
     Bound::Open(0.0, 1.0),
 );
-const SHAPE_FACTOR: Field = field(
+pub(super) const SHAPE_FACTOR: Field = field(
     "model.shape_factor",
     Dimension::DIMENSIONLESS,
     "",
     Bound::Range(1e-2, 1e2),
 );
-const GAMMA: Field = field(
+pub(super) const GAMMA: Field = field(
     "model.gamma",
     Dimension::DIMENSIONLESS,
     "",
     Bound::Closed(0.0, 1.0),
 );
 
-const NUMERICAL_BAND: Field = field(
+pub(super) const NUMERICAL_BAND: Field = field(
     "numerical.band",
     Dimension::DIMENSIONLESS,
     "",
     Bound::Closed(4.0, 512.0),
 );
-const NUMERICAL_PIXELS: Field = field(
+pub(super) const NUMERICAL_PIXELS: Field = field(
     "numerical.pixels_per_wavelength",
     Dimension::DIMENSIONLESS,
     "",
     Bound::Closed(2.0, 64.0),
 );
-const NUMERICAL_REALISATIONS: Field = field(
+pub(super) const NUMERICAL_REALISATIONS: Field = field(
     "numerical.realisations",
     Dimension::DIMENSIONLESS,
     "",
     Bound::Closed(1.0, 1000.0),
 );
-const NUMERICAL_SEED: Field = field(
+pub(super) const NUMERICAL_SEED: Field = field(
     "numerical.seed",
     Dimension::DIMENSIONLESS,
     "",

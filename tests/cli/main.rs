@@ -21,6 +21,7 @@ mod fit;
 mod fuzz;
 mod gas;
 mod generate;
+mod generate_reference;
 mod gland;
 mod gland_pressure;
 mod leak;
