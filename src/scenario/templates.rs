@@ -113,4 +113,77 @@ mod tests {
         names.dedup();
         assert_eq!(names.len(), TEMPLATES.len(), "template names are unique");
     }
+
+    /// Every key a scenario template writes is a registry key of its table, its comment
+    /// names the key's SI unit (a quantity) and, where the registry has a literal default,
+    /// states that default as the registry writes it; a "default X" the comment states is the
+    /// registry's. So the templates' comments cannot drift from the code's units and defaults.
+    #[test]
+    fn template_comments_agree_with_the_key_registry() {
+        use super::super::keys::{self, Fallback, Kind};
+        let mut checked = 0;
+        let mut wrong = Vec::new();
+        for t in TEMPLATES
+            .iter()
+            .filter(|t| t.kind == TemplateKind::Scenario)
+        {
+            let mut table = String::new();
+            for (number, line) in t.text.lines().enumerate() {
+                let line = line.trim_start_matches("# ");
+                let (code, comment) = line.split_once('#').unwrap_or((line, ""));
+                let code = code.trim();
+                if let Some(header) = code.strip_prefix('[').and_then(|c| c.strip_suffix(']')) {
+                    table = header.to_owned();
+                    continue;
+                }
+                let Some((name, _)) = code.split_once(" = ") else {
+                    continue;
+                };
+                let at = format!("{}:{}: {table}.{name}", t.name, number + 1);
+                // the interface surfaces take the keys of [surface]
+                let registry_table = match table.as_str() {
+                    "groove_surface" | "rubber_surface" => "surface",
+                    other => other,
+                };
+                let Some(key) = keys::table(registry_table)
+                    .and_then(|tab| tab.keys.iter().find(|k| k.name == name.trim()))
+                else {
+                    wrong.push(format!("{at}: not a key of the registry"));
+                    continue;
+                };
+                if let Kind::Quantity(field) = key.kind {
+                    let unit = field.unit();
+                    if !unit.is_empty() && !comment.is_empty() && key.name != "size" {
+                        if !comment.contains(unit) {
+                            wrong.push(format!("{at}: the comment does not name {unit}"));
+                        }
+                    }
+                }
+                let literal = match key.default {
+                    Fallback::Literal(value, _) | Fallback::LiteralWhere(value, _, _) => {
+                        Some(value)
+                    }
+                    _ => None,
+                };
+                if let Some((_, stated)) = comment.split_once("default ") {
+                    let stated = stated.split([';', '(']).next().unwrap_or("").trim();
+                    if stated.starts_with('"')
+                        || stated.chars().next().is_some_and(|c| c.is_ascii_digit())
+                    {
+                        if Some(stated) != literal {
+                            wrong.push(format!(
+                                "{at}: states default {stated}, the registry {literal:?}"
+                            ));
+                        }
+                    }
+                    checked += 1;
+                }
+            }
+        }
+        assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+        assert!(
+            checked >= 20,
+            "only {checked} defaults stated in the templates"
+        );
+    }
 }
