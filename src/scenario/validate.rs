@@ -1779,6 +1779,61 @@ impl Source<'_> {
         let raw = table.get_ref();
         let given = self.quantity(value, field)?;
         let hurst = self.optional(raw.hurst_exponent.as_ref(), &HURST_EXPONENT)?;
+        let band = self.callout_band(table)?;
+        let short = self.short_wavelengths(table, &band)?;
+        let q0 = self.optional(raw.q0.as_ref(), &Q0)?;
+        if let (Some(q0), Some(raw_q0)) = (q0, &raw.q0)
+            && q0 > band.q_lo()
+        {
+            return Err(self.error(
+                raw_q0.span(),
+                Q0.key,
+                format!(
+                    "must not exceed 2π/cutoff = {} 1/m (it would cut the measured band), got \
+                     {} 1/m",
+                    show(band.q_lo()),
+                    show(q0)
+                ),
+            ));
+        }
+        let (rq, how) = self.callout_rq(value, field, given, &band)?;
+        let callout = Callout {
+            rq,
+            hurst: hurst.unwrap_or(roughness::DEFAULT_HURST),
+            band,
+            q0,
+            short,
+        };
+        let spectrum = callout
+            .spectrum()
+            .map_err(|e| self.error(value.span(), field.key, e.to_string()))?;
+        let name = field.key.trim_start_matches("surface.");
+        let rule = Self::short_rule(short, &spectrum);
+        let note = self.error(
+            value.span(),
+            field.key,
+            format!(
+                "note: callout {name} = {} m over λs = {} m … λc = {} m read as Rq = {} m ({how}), \
+                 H = {}{}; roughness below λs: {rule}; the spectrum: q0 = {} 1/m, h_rms = {} m, \
+                 rms slope = {} [docs/model.md §2.1]",
+                show(given),
+                show(callout.band.short_cutoff),
+                show(callout.band.cutoff),
+                show(rq),
+                show(callout.hurst),
+                if hurst.is_none() { " (default)" } else { "" },
+                show(spectrum.q0()),
+                show(spectrum.rms_roughness()),
+                show(spectrum.rms_slope()),
+            ),
+        );
+        Ok((spectrum, note))
+    }
+
+    /// A callout's band: `cutoff` λc (default 0.8 mm) longer than `short_cutoff` λs (default
+    /// 2.5 µm).
+    fn callout_band(&self, table: &Spanned<RawSurface>) -> Result<Band, ScenarioError> {
+        let raw = table.get_ref();
         let cutoff = self
             .optional(raw.cutoff.as_ref(), &CUTOFF)?
             .unwrap_or(roughness::DEFAULT_CUTOFF);
@@ -1802,12 +1857,22 @@ impl Source<'_> {
                 ),
             ));
         }
-        let band = Band {
+        Ok(Band {
             cutoff,
             short_cutoff,
-        };
+        })
+    }
+
+    /// The roughness below λs: `short_wavelength = "extend"` (default) or `"stop"`, or `q1`
+    /// (at least the band's end).
+    fn short_wavelengths(
+        &self,
+        table: &Spanned<RawSurface>,
+        band: &Band,
+    ) -> Result<ShortWavelengths, ScenarioError> {
+        let raw = table.get_ref();
         let q1 = self.optional(raw.q1.as_ref(), &Q1)?;
-        let short = match (&raw.short_wavelength, q1) {
+        Ok(match (&raw.short_wavelength, q1) {
             (Some(rule), Some(_)) => {
                 return Err(self.error(
                     rule.span(),
@@ -1846,24 +1911,20 @@ impl Source<'_> {
                 }
             },
             (None, None) => ShortWavelengths::Extend,
-        };
-        let q0 = self.optional(raw.q0.as_ref(), &Q0)?;
-        if let (Some(q0), Some(raw_q0)) = (q0, &raw.q0)
-            && q0 > band.q_lo()
-        {
-            return Err(self.error(
-                raw_q0.span(),
-                Q0.key,
-                format!(
-                    "must not exceed 2π/cutoff = {} 1/m (it would cut the measured band), got \
-                     {} 1/m",
-                    show(band.q_lo()),
-                    show(q0)
-                ),
-            ));
-        }
-        let name = field.key.trim_start_matches("surface.");
-        let (rq, how) = if field.key == RA.key {
+        })
+    }
+
+    /// The Rq a callout's `given` value of `field` means (Ra and Rz converted for Gaussian
+    /// heights), and how it was read.
+    fn callout_rq(
+        &self,
+        value: &Quantity,
+        field: &Field,
+        given: f64,
+        band: &Band,
+    ) -> Result<(f64, String), ScenarioError> {
+        let (cutoff, short_cutoff) = (band.cutoff, band.short_cutoff);
+        Ok(if field.key == RA.key {
             (
                 roughness::rq_from_ra(given),
                 "Gaussian heights: Rq = √(π/2) Ra".to_owned(),
@@ -1894,18 +1955,12 @@ impl Source<'_> {
             )
         } else {
             (given, "Rq given".to_owned())
-        };
-        let callout = Callout {
-            rq,
-            hurst: hurst.unwrap_or(roughness::DEFAULT_HURST),
-            band,
-            q0,
-            short,
-        };
-        let spectrum = callout
-            .spectrum()
-            .map_err(|e| self.error(value.span(), field.key, e.to_string()))?;
-        let rule = match short {
+        })
+    }
+
+    /// What a callout's spectrum holds below λs, for its note.
+    fn short_rule(short: ShortWavelengths, spectrum: &Spectrum) -> String {
+        match short {
             ShortWavelengths::Extend => format!(
                 "extended as the power law to {} m (q1 = {} 1/m; short_wavelength = \"extend\", \
                  the default; \"stop\" ends it at λs)",
@@ -1921,26 +1976,7 @@ impl Source<'_> {
                     show(q1)
                 )
             }
-        };
-        let note = self.error(
-            value.span(),
-            field.key,
-            format!(
-                "note: callout {name} = {} m over λs = {} m … λc = {} m read as Rq = {} m ({how}), \
-                 H = {}{}; roughness below λs: {rule}; the spectrum: q0 = {} 1/m, h_rms = {} m, \
-                 rms slope = {} [docs/model.md §2.1]",
-                show(given),
-                show(short_cutoff),
-                show(cutoff),
-                show(rq),
-                show(callout.hurst),
-                if hurst.is_none() { " (default)" } else { "" },
-                show(spectrum.q0()),
-                show(spectrum.rms_roughness()),
-                show(spectrum.rms_slope()),
-            ),
-        );
-        Ok((spectrum, note))
+        }
     }
 
     /// `height_map` (relative to the scenario's directory): a CSV grid with `pixel_size` and the
