@@ -1273,6 +1273,62 @@ impl Source<'_> {
         if let Some(id) = &raw.gas {
             return self.gas(table, id);
         }
+        self.refuse_gas_keys(raw)?;
+        let Some(dp) = &raw.pressure_difference else {
+            return Err(self.error(
+                table.span(),
+                PRESSURE_DIFFERENCE.key,
+                "missing key `pressure_difference` in [fluid]",
+            ));
+        };
+        let pressure_difference = self.quantity(dp, &PRESSURE_DIFFERENCE)?;
+        let inline = raw.viscosity_40c.as_ref().or(raw.viscosity_100c.as_ref());
+        self.one_viscosity_source(raw, inline)?;
+        let with_law = |law: ViscosityLaw| {
+            let fluid = Fluid {
+                viscosity: 0.0,
+                pressure_difference,
+                law,
+                gas: None,
+            };
+            fluid.at(ROOM_TEMPERATURE)
+        };
+        if let Some(q) = &raw.viscosity {
+            return Ok(Fluid {
+                viscosity: self.quantity(q, &VISCOSITY)?,
+                pressure_difference,
+                law: ViscosityLaw::Constant,
+                gas: None,
+            });
+        }
+        if let Some(id) = &raw.library {
+            return match crate::fluid::library(id.get_ref()) {
+                Some(known) => Ok(with_law(known.law)),
+                None => Err(self.error(
+                    id.span(),
+                    "fluid.library",
+                    format!(
+                        "unknown fluid \"{}\"; known: {}",
+                        id.get_ref(),
+                        crate::fluid::library_ids().join(", ")
+                    ),
+                )),
+            };
+        }
+        let Some(first) = inline else {
+            return Err(self.error(
+                table.span(),
+                VISCOSITY.key,
+                "missing key `viscosity` in [fluid] (or `library`, or `viscosity_40c` and \
+                 `viscosity_100c` with `density`)",
+            ));
+        };
+        Ok(with_law(self.inline_viscosity_law(raw, first)?))
+    }
+
+    /// A liquid's `[fluid]` refuses the keys of a gas (`rarefaction`, absolute pressures, molar
+    /// mass, molecular diameter, Sutherland constants).
+    fn refuse_gas_keys(&self, raw: &RawFluid) -> Result<(), ScenarioError> {
         if let Some(b) = &raw.rarefaction {
             return Err(self.error(
                 b.span(),
@@ -1300,15 +1356,17 @@ impl Source<'_> {
                  `pressure_difference`)",
             ));
         }
-        let Some(dp) = &raw.pressure_difference else {
-            return Err(self.error(
-                table.span(),
-                PRESSURE_DIFFERENCE.key,
-                "missing key `pressure_difference` in [fluid]",
-            ));
-        };
-        let pressure_difference = self.quantity(dp, &PRESSURE_DIFFERENCE)?;
-        let inline = raw.viscosity_40c.as_ref().or(raw.viscosity_100c.as_ref());
+        Ok(())
+    }
+
+    /// At most one of a constant `viscosity`, a `library` fluid and the inline law
+    /// (`inline`: `viscosity_40c` or `viscosity_100c`); `density` and `thermal_expansion`
+    /// only with the inline law.
+    fn one_viscosity_source(
+        &self,
+        raw: &RawFluid,
+        inline: Option<&Quantity>,
+    ) -> Result<(), ScenarioError> {
         let given: Vec<(&str, std::ops::Range<usize>)> = [
             raw.viscosity.as_ref().map(|q| ("viscosity", q.span())),
             raw.library.as_ref().map(|l| ("library", l.span())),
@@ -1344,46 +1402,16 @@ impl Source<'_> {
                 ));
             }
         }
-        let constant = |viscosity: f64| Fluid {
-            viscosity,
-            pressure_difference,
-            law: ViscosityLaw::Constant,
-            gas: None,
-        };
-        let with_law = |law: ViscosityLaw| {
-            let fluid = Fluid {
-                viscosity: 0.0,
-                pressure_difference,
-                law,
-                gas: None,
-            };
-            fluid.at(ROOM_TEMPERATURE)
-        };
-        if let Some(q) = &raw.viscosity {
-            return Ok(constant(self.quantity(q, &VISCOSITY)?));
-        }
-        if let Some(id) = &raw.library {
-            return match crate::fluid::library(id.get_ref()) {
-                Some(known) => Ok(with_law(known.law)),
-                None => Err(self.error(
-                    id.span(),
-                    "fluid.library",
-                    format!(
-                        "unknown fluid \"{}\"; known: {}",
-                        id.get_ref(),
-                        crate::fluid::library_ids().join(", ")
-                    ),
-                )),
-            };
-        }
-        let Some(first) = inline else {
-            return Err(self.error(
-                table.span(),
-                VISCOSITY.key,
-                "missing key `viscosity` in [fluid] (or `library`, or `viscosity_40c` and \
-                 `viscosity_100c` with `density`)",
-            ));
-        };
+        Ok(())
+    }
+
+    /// The inline ASTM D341 law through `viscosity_40c` and `viscosity_100c` with `density` and
+    /// the optional `thermal_expansion` (`first`: the first of the two viscosities given).
+    fn inline_viscosity_law(
+        &self,
+        raw: &RawFluid,
+        first: &Quantity,
+    ) -> Result<ViscosityLaw, ScenarioError> {
         let required = |q: &Option<Quantity>, f: &Field, why: &str| {
             self.required(q, f, first.span(), &format!("in [fluid]: {why}"))
         };
@@ -1405,7 +1433,7 @@ impl Source<'_> {
             expansion,
             "inline ASTM D341 through ν40, ν100",
         ) {
-            Some(w) => Ok(with_law(ViscosityLaw::Walther(w))),
+            Some(w) => Ok(ViscosityLaw::Walther(w)),
             None => Err(self.error(
                 raw.viscosity_100c
                     .as_ref()
