@@ -149,6 +149,9 @@ struct TimeAxis {
     end: f64,
 }
 
+/// Points of a line: (time in the axis's unit, value).
+type Points = Vec<(f64, f64)>;
+
 /// One panel's drawing area.
 type Area<'b> = DrawingArea<SVGBackend<'b>, plotters::coord::Shift>;
 
@@ -435,7 +438,7 @@ fn temperature_panel(
 /// The temperature's daily envelope \[°C\] over the axis's time: at each of 4 000 log-spaced
 /// times the lowest and highest temperature within ±12 h (hourly samples), so a daily cycle
 /// shows as its range and a yearly one as the envelope's swing, never as aliased samples.
-fn daily_envelope(axis: &TimeAxis, problem: &LifeProblem) -> (Vec<(f64, f64)>, Vec<(f64, f64)>) {
+fn daily_envelope(axis: &TimeAxis, problem: &LifeProblem) -> (Points, Points) {
     let (first, end, unit) = (axis.first, axis.end, axis.unit);
     let grid = 4_000;
     let mut low = Vec::with_capacity(grid);
