@@ -1063,211 +1063,292 @@ pub fn human_summary(
     result: &LifeResult,
     floor: &LeakFloor,
 ) -> String {
-    let mut out = String::new();
-    let mut line = |label: &str, text: String| {
-        out += &format!("{label:<15}{text}\n");
+    let run = SummaryRun {
+        problem,
+        result,
+        floor,
+        duration: human_time(problem.time.duration),
     };
-    line("scenario", format!("{scenario} ({file})"));
-    let m: &Material = &problem.material;
+    let mut out = SummaryText::default();
+    out.line("scenario", format!("{scenario} ({file})"));
+    material_lines(&mut out, &problem.material);
+    out.line("seal", seal_description(problem));
+    out.line("fluid", fluid_line(problem));
+    out.line("temperature", temperature_line(&problem.environment));
+    out.line("ageing", ageing_line(problem));
+    if let (Some(first), Some(last)) = (result.rows.first(), result.rows.last()) {
+        out.line("sealing force", sealing_force_line(&run, first, last));
+        out.optional("lowest", lowest_line(&run, first));
+        out.optional("set", set_line(&run, last));
+        out.optional("shutdown", shutdown_line(&run, last));
+    }
+    out.line("state", state_line(result));
+    out.line("leak rate", leak_rate_line(&run));
+    if let Some((q, t)) = result.maximum_leak_rate()
+        && !floor.seals(q)
+    {
+        out.line(
+            "highest",
+            format!("leak rate {} {}", floor.flow(q), at_time(t)),
+        );
+    }
+    if let Some(p) = problem.fluid.mean_pressure() {
+        gas_flow_lines(&mut out, &run, p);
+    }
+    out.line("leaked volume", leaked_volume_line(&run));
+    if let Some(spec) = &problem.motion
+        && let Some(m) = MotionSummary::new(spec, result)
+    {
+        out.line("motion", motion_description(spec, &m, &run.duration));
+    }
+    out.line("result", verdict(problem, result).text);
+    out.text
+}
+
+/// The terminal summary being written: labelled lines.
+#[derive(Default)]
+struct SummaryText {
+    text: String,
+}
+
+impl SummaryText {
+    /// `text` under `label` (in a column 15 wide).
+    fn line(&mut self, label: &str, text: String) {
+        self.text += &format!("{label:<15}{text}\n");
+    }
+
+    /// `text`, if any, under `label`.
+    fn optional(&mut self, label: &str, text: Option<String>) {
+        if let Some(text) = text {
+            self.line(label, text);
+        }
+    }
+}
+
+/// The run a summary describes: the problem, its result, the leak floor and the run's
+/// duration for people.
+struct SummaryRun<'a> {
+    problem: &'a LifeProblem,
+    result: &'a LifeResult,
+    floor: &'a LeakFloor,
+    duration: String,
+}
+
+/// The compound, its status and T10, and the banner of illustrative data.
+fn material_lines(out: &mut SummaryText, m: &Material) {
     let t10 = m.low_temperature_limit().map_or(String::new(), |t| {
         format!(
             "; low-temperature limit T10 = {} (modulus at 10 s ten times its 23 °C value)",
             celsius(t)
         )
     });
-    line(
+    out.line(
         "material",
         format!("{} [{}]{t10}", m.name, m.status.as_str()),
     );
     if m.status == Status::Illustrative {
-        line(
+        out.line(
             "",
             "!!! ILLUSTRATIVE material data: at least one number is estimated, not measured; \
              the results show trends, they are NOT for design decisions !!!"
                 .to_owned(),
         );
     }
-    line("seal", seal_description(problem));
+}
+
+/// The gas and its pressures, or the liquid's viscosity and pressure difference.
+fn fluid_line(problem: &LifeProblem) -> String {
     if let (Some(gas), Some(p_mean)) = (problem.fluid.gas, problem.fluid.mean_pressure()) {
-        line(
-            "fluid",
-            format!(
-                "gas {} (μ = {} Pa·s at installation, following T(t); {}), P_a = {} Pa, P_b = {} \
-                 Pa absolute; leak rates below are volume flows at the mean pressure p̄ = {} Pa",
-                gas.gas.id,
-                human(problem.fluid.viscosity, 3),
-                gas.gas.source,
-                human(gas.outlet_pressure + problem.fluid.pressure_difference, 4),
-                human(gas.outlet_pressure, 4),
-                human(p_mean, 4)
-            ),
-        );
-    } else {
-        line(
-            "fluid",
-            match problem.fluid.law.source() {
-                None => format!(
-                    "η = {} Pa·s, ΔP = {} MPa",
-                    human(problem.fluid.viscosity, 3),
-                    human(problem.fluid.pressure_difference / 1e6, 4)
-                ),
-                Some(source) => format!(
-                    "η = {} Pa·s at installation, following T(t) ({source}), ΔP = {} MPa",
-                    human(problem.fluid.viscosity, 3),
-                    human(problem.fluid.pressure_difference / 1e6, 4)
-                ),
-            },
+        return format!(
+            "gas {} (μ = {} Pa·s at installation, following T(t); {}), P_a = {} Pa, P_b = {} \
+             Pa absolute; leak rates below are volume flows at the mean pressure p̄ = {} Pa",
+            gas.gas.id,
+            human(problem.fluid.viscosity, 3),
+            gas.gas.source,
+            human(gas.outlet_pressure + problem.fluid.pressure_difference, 4),
+            human(gas.outlet_pressure, 4),
+            human(p_mean, 4)
         );
     }
-    let env = &problem.environment;
-    line(
-        "temperature",
-        if env.is_constant() {
-            format!("{} (constant)", celsius(env.at(0.0)))
-        } else {
-            let (lo, hi) = env.range();
+    match problem.fluid.law.source() {
+        None => format!(
+            "η = {} Pa·s, ΔP = {} MPa",
+            human(problem.fluid.viscosity, 3),
+            human(problem.fluid.pressure_difference / 1e6, 4)
+        ),
+        Some(source) => format!(
+            "η = {} Pa·s at installation, following T(t) ({source}), ΔP = {} MPa",
+            human(problem.fluid.viscosity, 3),
+            human(problem.fluid.pressure_difference / 1e6, 4)
+        ),
+    }
+}
+
+/// The temperature: constant, or its bounds and start.
+fn temperature_line(env: &crate::material::TemperatureHistory) -> String {
+    if env.is_constant() {
+        format!("{} (constant)", celsius(env.at(0.0)))
+    } else {
+        let (lo, hi) = env.range();
+        format!(
+            "varies between {} and {} (bounds); {} at t = 0",
+            celsius(lo),
+            celsius(hi),
+            celsius(env.at(0.0))
+        )
+    }
+}
+
+/// The two-network ageing's constants and their source, or why there is none.
+fn ageing_line(problem: &LifeProblem) -> String {
+    match problem.ageing {
+        Some(ag) => format!(
+            "two networks: scission k = {} 1/s at {}, Ea = {} kJ/mol, new network at {} k \
+             in the compressed state; from {}{}",
+            human(ag.rate, 3),
+            celsius(ag.reference_temperature),
+            human(ag.activation_energy / 1e3, 3),
+            human(ag.crosslinking, 3),
+            problem.ageing_source.describe(),
+            problem
+                .material
+                .ageing_basis
+                .as_ref()
+                .filter(|_| problem.ageing_source == crate::simulate::AgeingSource::Compound)
+                .map_or(String::new(), |b| format!(", measured on {}", b.property)),
+        ),
+        None => problem.ageing_source.describe().to_owned(),
+    }
+}
+
+/// The sealing force at installation, at the reference and at the end, with the fraction
+/// retained.
+fn sealing_force_line(
+    run: &SummaryRun,
+    first: &crate::simulate::HistoryRow,
+    last: &crate::simulate::HistoryRow,
+) -> String {
+    let (problem, result, duration) = (run.problem, run.result, &run.duration);
+    let reference = problem.failure.retained_force_reference;
+    let at_reference = if reference > 0.0 {
+        format!(
+            ", {} N/mm at {} (the reference)",
+            human(result.reference_force / 1e3, 3),
+            human_time(reference)
+        )
+    } else {
+        " (the reference)".to_owned()
+    };
+    let fraction = retained_fraction(last.sealing_force, result.reference_force);
+    let (end_force, retained) = if result.reference_force > 0.0 && fraction < FULLY_SET {
+        // e^{-K} run to 1e-26 is arithmetic, not a force: what it means is "fully set"
+        (
+            "≈ 0".to_owned(),
+            " (fully set; the CSV keeps the figure)".to_owned(),
+        )
+    } else if result.reference_force > 0.0 {
+        (
+            human(last.sealing_force / 1e3, 3),
             format!(
-                "varies between {} and {} (bounds); {} at t = 0",
-                celsius(lo),
-                celsius(hi),
-                celsius(env.at(0.0))
-            )
+                " ({} % of the reference retained)",
+                human(100.0 * fraction, 3)
+            ),
+        )
+    } else {
+        (human(last.sealing_force / 1e3, 3), String::new())
+    };
+    format!(
+        "{} N/mm at installation{at_reference}, {end_force} N/mm after \
+         {duration}{retained}",
+        human(first.sealing_force / 1e3, 3),
+    )
+}
+
+/// The lowest sealing force and peak contact pressure, and when.
+fn lowest_line(run: &SummaryRun, first: &crate::simulate::HistoryRow) -> Option<String> {
+    let result = run.result;
+    let ((force, t_force), (peak, t_peak)) =
+        (result.minimum_force()?, result.minimum_peak_pressure()?);
+    let low = |v: f64, reference: f64, scale: f64| {
+        if reference > 0.0 && v < FULLY_SET * reference {
+            "≈ 0".to_owned()
+        } else {
+            human(v / scale, 3)
+        }
+    };
+    Some(format!(
+        "sealing force {} N/mm {}, peak contact pressure {} MPa {}",
+        low(force, result.reference_force, 1e3),
+        at_time(t_force),
+        low(peak, first.peak_pressure, 1e6),
+        at_time(t_peak),
+    ))
+}
+
+/// The chemical compression set at the end.
+fn set_line(run: &SummaryRun, last: &crate::simulate::HistoryRow) -> Option<String> {
+    let set = last.compression_set?;
+    Some(format!(
+        "chemical compression set {} % after {} (fully recovered: without the \
+         viscoelastic part a D395 reading 30 min after release adds)",
+        human(100.0 * set, 3),
+        run.duration
+    ))
+}
+
+/// The set ring's squeeze at the shutdown condition, and whether the interference holds.
+fn shutdown_line(run: &SummaryRun, last: &crate::simulate::HistoryRow) -> Option<String> {
+    let (Some(shutdown), Some(s)) = (run.problem.failure.shutdown, last.shutdown) else {
+        return None;
+    };
+    let result = run.result;
+    let located = result
+        .failure
+        .is_some_and(|f| f.mode == crate::simulate::FailureMode::LostInterference);
+    let lost = result.interference_lost().map_or_else(
+        || "holds throughout".to_owned(),
+        |t| {
+            if located {
+                format!("interference lost {}", at_time(t))
+            } else {
+                // not the run's failure: found on the output grid, not located
+                format!(
+                    "interference found lost by the output time {} (not located: the run \
+                     had failed before)",
+                    at_time(t).trim_start_matches("at ")
+                )
+            }
         },
     );
-    match problem.ageing {
-        Some(ag) => line(
-            "ageing",
-            format!(
-                "two networks: scission k = {} 1/s at {}, Ea = {} kJ/mol, new network at {} k \
-                 in the compressed state; from {}{}",
-                human(ag.rate, 3),
-                celsius(ag.reference_temperature),
-                human(ag.activation_energy / 1e3, 3),
-                human(ag.crosslinking, 3),
-                problem.ageing_source.describe(),
-                m.ageing_basis
-                    .as_ref()
-                    .filter(|_| problem.ageing_source == crate::simulate::AgeingSource::Compound)
-                    .map_or(String::new(), |b| format!(", measured on {}", b.property)),
-            ),
-        ),
-        None => line("ageing", problem.ageing_source.describe().to_owned()),
-    }
-    let duration = human_time(problem.time.duration);
-    if let (Some(first), Some(last)) = (result.rows.first(), result.rows.last()) {
-        let reference = problem.failure.retained_force_reference;
-        let at_reference = if reference > 0.0 {
-            format!(
-                ", {} N/mm at {} (the reference)",
-                human(result.reference_force / 1e3, 3),
-                human_time(reference)
-            )
-        } else {
-            " (the reference)".to_owned()
-        };
-        let fraction = retained_fraction(last.sealing_force, result.reference_force);
-        let (end_force, retained) = if result.reference_force > 0.0 && fraction < FULLY_SET {
-            // e^{-K} run to 1e-26 is arithmetic, not a force: what it means is "fully set"
-            (
-                "≈ 0".to_owned(),
-                " (fully set; the CSV keeps the figure)".to_owned(),
-            )
-        } else if result.reference_force > 0.0 {
-            (
-                human(last.sealing_force / 1e3, 3),
-                format!(
-                    " ({} % of the reference retained)",
-                    human(100.0 * fraction, 3)
-                ),
-            )
-        } else {
-            (human(last.sealing_force / 1e3, 3), String::new())
-        };
-        line(
-            "sealing force",
-            format!(
-                "{} N/mm at installation{at_reference}, {end_force} N/mm after \
-                 {duration}{retained}",
-                human(first.sealing_force / 1e3, 3),
-            ),
-        );
-        if let (Some((force, t_force)), Some((peak, t_peak))) =
-            (result.minimum_force(), result.minimum_peak_pressure())
-        {
-            let low = |v: f64, reference: f64, scale: f64| {
-                if reference > 0.0 && v < FULLY_SET * reference {
-                    "≈ 0".to_owned()
-                } else {
-                    human(v / scale, 3)
-                }
-            };
-            line(
-                "lowest",
-                format!(
-                    "sealing force {} N/mm {}, peak contact pressure {} MPa {}",
-                    low(force, result.reference_force, 1e3),
-                    at_time(t_force),
-                    low(peak, first.peak_pressure, 1e6),
-                    at_time(t_peak),
-                ),
-            );
-        }
-        if let Some(set) = last.compression_set {
-            line(
-                "set",
-                format!(
-                    "chemical compression set {} % after {duration} (fully recovered: without the \
-                     viscoelastic part a D395 reading 30 min after release adds)",
-                    human(100.0 * set, 3)
-                ),
-            );
-        }
-        if let (Some(shutdown), Some(s)) = (problem.failure.shutdown, last.shutdown) {
-            let located = result
-                .failure
-                .is_some_and(|f| f.mode == crate::simulate::FailureMode::LostInterference);
-            let lost = result.interference_lost().map_or_else(
-                || "holds throughout".to_owned(),
-                |t| {
-                    if located {
-                        format!("interference lost {}", at_time(t))
-                    } else {
-                        // not the run's failure: found on the output grid, not located
-                        format!(
-                            "interference found lost by the output time {} (not located: the run \
-                             had failed before)",
-                            at_time(t).trim_start_matches("at ")
-                        )
-                    }
-                },
-            );
-            line(
-                "shutdown",
-                format!(
-                    "at {} and ΔP = {} MPa: squeeze of the set ring {} % after {duration}; {lost}",
-                    celsius(shutdown.temperature),
-                    human(shutdown.pressure_difference / 1e6, 3),
-                    human(100.0 * s.remaining_squeeze, 3),
-                ),
-            );
-        }
-    }
-    let changes = result.state_changes();
-    line(
-        "state",
-        changes
-            .iter()
-            .map(|(state, t)| {
-                let name = state.label();
-                if *t == 0.0 {
-                    format!("{name} from installation")
-                } else {
-                    format!("{name} from t = {}", human_time(*t))
-                }
-            })
-            .collect::<Vec<_>>()
-            .join("; then "),
-    );
+    Some(format!(
+        "at {} and ΔP = {} MPa: squeeze of the set ring {} % after {}; {lost}",
+        celsius(shutdown.temperature),
+        human(shutdown.pressure_difference / 1e6, 3),
+        human(100.0 * s.remaining_squeeze, 3),
+        run.duration,
+    ))
+}
+
+/// The seal's states in order, with when each began.
+fn state_line(result: &LifeResult) -> String {
+    result
+        .state_changes()
+        .iter()
+        .map(|(state, t)| {
+            let name = state.label();
+            if *t == 0.0 {
+                format!("{name} from installation")
+            } else {
+                format!("{name} from t = {}", human_time(*t))
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("; then ")
+}
+
+/// The leak rate at installation and at the end (an open seal's a lower bound).
+fn leak_rate_line(run: &SummaryRun) -> String {
+    let floor = run.floor;
     let rate = |row: Option<&crate::simulate::HistoryRow>| match row {
         Some(r) if r.state == crate::simulate::SealState::LiftOff && floor.seals(r.leak_rate) => {
             "OPEN (the flow of an open seal is not modelled; the model's lower bound is ≈ 0)"
@@ -1280,111 +1361,102 @@ pub fn human_summary(
         Some(r) => floor.flow(r.leak_rate),
         None => floor.flow(0.0),
     };
-    line(
-        "leak rate",
-        format!(
-            "{} at installation, {} after {duration}",
-            rate(result.rows.first()),
-            rate(result.rows.last())
+    format!(
+        "{} at installation, {} after {}",
+        rate(run.result.rows.first()),
+        rate(run.result.rows.last()),
+        run.duration
+    )
+}
+
+/// A gas's throughput through the interface at the mean pressure `p`, with the flow law; the
+/// permeation through the rubber and the total, where computed.
+fn gas_flow_lines(out: &mut SummaryText, run: &SummaryRun, p: f64) {
+    let (problem, result, floor, duration) = (run.problem, run.result, run.floor, &run.duration);
+    let sealed = result.rows.iter().all(|r| r.leak_rate == 0.0);
+    let law = match result.continuum_leak_rate {
+        _ if sealed => "sealed through the interface: no channel percolates".to_owned(),
+        Some(c) if c > 0.0 && result.initial_leak_rate() > 0.0 => format!(
+            "rarefied flow; the continuum law would give {} at installation: rarefaction ×{}",
+            throughput(p * c),
+            human(result.initial_leak_rate() / c, 3)
         ),
-    );
-    if let Some((q, t)) = result.maximum_leak_rate()
-        && !floor.seals(q)
-    {
-        line(
-            "highest",
-            format!("leak rate {} {}", floor.flow(q), at_time(t)),
-        );
-    }
-    if let Some(p) = problem.fluid.mean_pressure() {
-        let sealed = result.rows.iter().all(|r| r.leak_rate == 0.0);
-        let law = match result.continuum_leak_rate {
-            _ if sealed => "sealed through the interface: no channel percolates".to_owned(),
-            Some(c) if c > 0.0 && result.initial_leak_rate() > 0.0 => format!(
-                "rarefied flow; the continuum law would give {} at installation: rarefaction ×{}",
-                throughput(p * c),
-                human(result.initial_leak_rate() / c, 3)
-            ),
-            Some(_) => "rarefied flow".to_owned(),
-            None if problem.fluid.mean_free_path().is_some() => "rarefied flow".to_owned(),
-            None => "continuum law".to_owned(),
-        };
-        line(
-            "throughput",
-            format!(
-                "{} at installation, {} after {duration} ({law}{})",
-                floored_throughput(floor, p, result.initial_leak_rate()),
-                floored_throughput(floor, p, result.final_leak_rate()),
-                if sealed {
-                    ""
-                } else {
-                    "; see the Knudsen warnings"
-                }
-            ),
-        );
-        let permeation = |r: Option<&crate::simulate::HistoryRow>| r.and_then(|r| r.permeation);
-        if let (Some(first), Some(last)) = (
-            permeation(result.rows.first()),
-            permeation(result.rows.last()),
-        ) {
-            let lag = match (problem.permeation, result.rows.last()) {
-                (Some(s), Some(r)) => s.time_lag(r.temperature).map_or_else(
-                    || "time lag unknown: steady flow from installation, an upper bound".to_owned(),
-                    |lag| {
-                        format!(
-                            "time lag {} s ({} h)",
-                            human(lag, 3),
-                            human(lag / 3600.0, 3)
-                        )
-                    },
-                ),
-                _ => String::new(),
-            };
-            line(
-                "permeation",
-                format!(
-                    "{} at installation, {} after {duration} (through the rubber; {lag}; \
-                     ILLUSTRATIVE data)",
-                    throughput(first),
-                    throughput(last)
-                ),
-            );
-            line(
-                "total",
-                format!(
-                    "{} at installation, {} after {duration} (interface + permeation: what a \
-                     leak detector sees, and what max_leak_rate is compared with)",
-                    throughput(p * result.initial_leak_rate() + first),
-                    throughput(p * result.final_leak_rate() + last)
-                ),
-            );
-        }
-    }
-    line(
-        "leaked volume",
+        Some(_) => "rarefied flow".to_owned(),
+        None if problem.fluid.mean_free_path().is_some() => "rarefied flow".to_owned(),
+        None => "continuum law".to_owned(),
+    };
+    out.line(
+        "throughput",
         format!(
-            "{}{} m³ ({} mL) in {duration}{}",
-            if result.leaked_volume_is_lower_bound() {
-                "≥ "
-            } else {
+            "{} at installation, {} after {duration} ({law}{})",
+            floored_throughput(floor, p, result.initial_leak_rate()),
+            floored_throughput(floor, p, result.final_leak_rate()),
+            if sealed {
                 ""
-            },
-            human(result.leaked_volume(), 3),
-            human(result.leaked_volume() * 1e6, 3),
-            if result.leaked_volume_is_lower_bound() {
-                " (a lower bound: it includes the lower bound of the open seal's flow)"
             } else {
-                ""
+                "; see the Knudsen warnings"
             }
         ),
     );
-    if let Some(spec) = &problem.motion
-        && let Some(m) = MotionSummary::new(spec, result)
-    {
-        line("motion", motion_description(spec, &m, &duration));
-    }
-    line("result", verdict(problem, result).text);
-    out
+    let permeation = |r: Option<&crate::simulate::HistoryRow>| r.and_then(|r| r.permeation);
+    let (Some(first), Some(last)) = (
+        permeation(result.rows.first()),
+        permeation(result.rows.last()),
+    ) else {
+        return;
+    };
+    let lag = match (problem.permeation, result.rows.last()) {
+        (Some(s), Some(r)) => s.time_lag(r.temperature).map_or_else(
+            || "time lag unknown: steady flow from installation, an upper bound".to_owned(),
+            |lag| {
+                format!(
+                    "time lag {} s ({} h)",
+                    human(lag, 3),
+                    human(lag / 3600.0, 3)
+                )
+            },
+        ),
+        _ => String::new(),
+    };
+    out.line(
+        "permeation",
+        format!(
+            "{} at installation, {} after {duration} (through the rubber; {lag}; \
+             ILLUSTRATIVE data)",
+            throughput(first),
+            throughput(last)
+        ),
+    );
+    out.line(
+        "total",
+        format!(
+            "{} at installation, {} after {duration} (interface + permeation: what a \
+             leak detector sees, and what max_leak_rate is compared with)",
+            throughput(p * result.initial_leak_rate() + first),
+            throughput(p * result.final_leak_rate() + last)
+        ),
+    );
+}
+
+/// The volume leaked over the run (a lower bound when the seal was open).
+fn leaked_volume_line(run: &SummaryRun) -> String {
+    let result = run.result;
+    format!(
+        "{}{} m³ ({} mL) in {}{}",
+        if result.leaked_volume_is_lower_bound() {
+            "≥ "
+        } else {
+            ""
+        },
+        human(result.leaked_volume(), 3),
+        human(result.leaked_volume() * 1e6, 3),
+        run.duration,
+        if result.leaked_volume_is_lower_bound() {
+            " (a lower bound: it includes the lower bound of the open seal's flow)"
+        } else {
+            ""
+        }
+    )
 }
 
 /// The retained fraction below which a force reads "≈ 0 (fully set)": e^{−K} at K ≈ 14, where

@@ -116,11 +116,56 @@ pub fn life_chart(
         .find(|t| *t > 0.0)
         .ok_or_else(|| PlotError("the run has no time after installation".into()))?;
     let (unit, unit_name) = time_unit(end);
-    let (x_lo, x_hi) = (first / unit, (end / unit).max(first / unit * 1.0001));
-    let x_label = format!("time after installation [{unit_name}]");
-    let failure = result.failure;
+    let axis = TimeAxis {
+        unit,
+        x_lo: first / unit,
+        x_hi: (end / unit).max(first / unit * 1.0001),
+        label: format!("time after installation [{unit_name}]"),
+        first,
+        end,
+    };
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (900, 1000)).into_drawing_area();
+        root.fill(&WHITE).map_err(err)?;
+        let root = root.titled(title, ("sans-serif", 22)).map_err(err)?;
+        let panels = root.split_evenly((3, 1));
+        leak_panel(&panels[0], &axis, problem, result, floor)?;
+        force_panel(&panels[1], &axis, problem, result)?;
+        temperature_panel(&panels[2], &axis, problem, rows)?;
+        root.present().map_err(err)?;
+    }
+    Ok(svg)
+}
 
-    // leak rate: log10 of the rate, never below the floor
+/// The time axis the three panels share: the reader's unit, the axis's range in it and its
+/// label; the first output time after installation and the run's end \[s\].
+struct TimeAxis {
+    unit: f64,
+    x_lo: f64,
+    x_hi: f64,
+    label: String,
+    first: f64,
+    end: f64,
+}
+
+/// Points of a line: (time in the axis's unit, value).
+type Points = Vec<(f64, f64)>;
+
+/// One panel's drawing area.
+type Area<'b> = DrawingArea<SVGBackend<'b>, plotters::coord::Shift>;
+
+/// Panel 1, the leak rate: log10 of the rate, never below the floor; the floor and the
+/// leak-rate threshold dashed, lift-off shaded, the failure marked.
+fn leak_panel(
+    area: &Area<'_>,
+    axis: &TimeAxis,
+    problem: &LifeProblem,
+    result: &LifeResult,
+    floor: &LeakFloor,
+) -> Result<(), PlotError> {
+    let (rows, failure) = (&result.rows, result.failure);
+    let (unit, x_lo, x_hi, x_label) = (axis.unit, axis.x_lo, axis.x_hi, &axis.label);
     let y_lo = leak_axis_bottom(floor);
     let clip = |q: f64| q.max(floor.rate).log10();
     let threshold = problem.failure.max_leak_rate;
@@ -131,276 +176,289 @@ pub fn life_chart(
         .fold(floor.rate * 10.0, f64::max);
     let y_hi = top.log10().ceil() + 0.5;
     let all_sealed = rows.iter().all(|r| floor.seals(r.leak_rate));
-    // the force panel's right axis: the compression set, with ageing
+    let mut chart = ChartBuilder::on(area)
+        .margin(12)
+        .x_label_area_size(40)
+        .y_label_area_size(90)
+        .build_cartesian_2d((x_lo..x_hi).log_scale(), y_lo..y_hi)
+        .map_err(err)?;
+    chart
+        .configure_mesh()
+        .x_desc(x_label)
+        .x_label_formatter(&|v| human(*v, 2))
+        .y_desc("leak rate [m³/s]")
+        .y_label_formatter(&decade_label)
+        .draw()
+        .map_err(err)?;
+    // lift-off shaded
+    let mut spans = Vec::new();
+    for w in rows.windows(2) {
+        if w[1].state == SealState::LiftOff && w[0].time > 0.0 {
+            spans.push((w[0].time / unit, w[1].time / unit));
+        }
+    }
+    chart
+        .draw_series(
+            spans
+                .iter()
+                .map(|&(a, b)| Rectangle::new([(a, y_lo), (b, y_hi)], ORANGE.mix(0.15).filled())),
+        )
+        .map_err(err)?;
+    let points: Vec<(f64, f64)> = rows
+        .iter()
+        .filter(|r| r.time > 0.0)
+        .map(|r| (r.time / unit, clip(r.leak_rate)))
+        .collect();
+    chart
+        .draw_series(LineSeries::new(points, BLUE.stroke_width(2)))
+        .map_err(err)?
+        .label(if all_sealed {
+            format!("leak rate: {}", floor.sealed())
+        } else {
+            "leak rate".to_owned()
+        })
+        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLUE.stroke_width(2)));
+    floor_line(&mut chart, (x_lo, x_hi), floor, ": below it reads sealed")?;
+    if let Some(q) = threshold {
+        chart
+            .draw_series(DashedLineSeries::new(
+                vec![(x_lo, clip(q)), (x_hi, clip(q))],
+                8,
+                5,
+                VERMILLION.stroke_width(2),
+            ))
+            .map_err(err)?
+            .label(format!("max_leak_rate {} m³/s", human(q, 3)))
+            .legend(|(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], VERMILLION.stroke_width(2))
+            });
+    }
+    if !spans.is_empty() {
+        chart
+            .draw_series(std::iter::empty::<Rectangle<(f64, f64)>>())
+            .map_err(err)?
+            .label("lift-off (shaded)")
+            .legend(|(x, y)| {
+                Rectangle::new([(x, y - 5), (x + 20, y + 5)], ORANGE.mix(0.3).filled())
+            });
+    }
+    if let Some(f) = failure {
+        let q = result.leak_rate_at(f.time).unwrap_or(0.0);
+        let x = (f.time / unit).clamp(x_lo, x_hi);
+        chart
+            .draw_series(std::iter::once(Cross::new(
+                (x, clip(q)),
+                8,
+                VERMILLION.stroke_width(3),
+            )))
+            .map_err(err)?
+            .label(format!(
+                "fails: {} after {}",
+                f.mode.as_str(),
+                super::life::human_time(f.time)
+            ))
+            .legend(|(x, y)| Cross::new((x + 10, y), 6, VERMILLION.stroke_width(3)));
+    }
+    legend(&mut chart, SeriesLabelPosition::UpperLeft)
+}
+
+/// Panel 2, the sealing force \[N/mm\]: the retained-force threshold dashed, the compression
+/// set on the right axis where ageing is modelled, the failure marked.
+fn force_panel(
+    area: &Area<'_>,
+    axis: &TimeAxis,
+    problem: &LifeProblem,
+    result: &LifeResult,
+) -> Result<(), PlotError> {
+    let (rows, failure) = (&result.rows, result.failure);
+    let (unit, x_lo, x_hi, x_label) = (axis.unit, axis.x_lo, axis.x_hi, &axis.label);
+    // the right axis: the compression set, with ageing
     let aged = rows.iter().any(|r| r.compression_set.is_some());
     let right = if aged { 70 } else { 0 };
-
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, (900, 1000)).into_drawing_area();
-        root.fill(&WHITE).map_err(err)?;
-        let root = root.titled(title, ("sans-serif", 22)).map_err(err)?;
-        let panels = root.split_evenly((3, 1));
-
-        // 1. leak rate
-        let mut chart = ChartBuilder::on(&panels[0])
-            .margin(12)
-            .x_label_area_size(40)
-            .y_label_area_size(90)
-            .build_cartesian_2d((x_lo..x_hi).log_scale(), y_lo..y_hi)
-            .map_err(err)?;
+    let force: Vec<(f64, f64)> = rows
+        .iter()
+        .filter(|r| r.time > 0.0)
+        .map(|r| (r.time / unit, r.sealing_force / 1e3))
+        .collect();
+    let f_max = force.iter().map(|p| p.1).fold(0.0, f64::max).max(1e-9) * 1.15;
+    let chart = ChartBuilder::on(area)
+        .margin(12)
+        .x_label_area_size(40)
+        .y_label_area_size(90)
+        .right_y_label_area_size(right)
+        .build_cartesian_2d((x_lo..x_hi).log_scale(), 0.0..f_max)
+        .map_err(err)?;
+    let set: Vec<(f64, f64)> = rows
+        .iter()
+        .filter(|r| r.time > 0.0)
+        .filter_map(|r| r.compression_set.map(|c| (r.time / unit, 100.0 * c)))
+        .collect();
+    let mut chart = chart.set_secondary_coord((x_lo..x_hi).log_scale(), 0.0..100.0);
+    chart
+        .configure_mesh()
+        .x_desc(x_label)
+        .x_label_formatter(&|v| human(*v, 2))
+        .y_desc("sealing force [N/mm]")
+        .draw()
+        .map_err(err)?;
+    if !set.is_empty() {
         chart
-            .configure_mesh()
-            .x_desc(&x_label)
-            .x_label_formatter(&|v| human(*v, 2))
-            .y_desc("leak rate [m³/s]")
-            .y_label_formatter(&decade_label)
+            .configure_secondary_axes()
+            .y_desc("compression set [%] (dotted)")
+            .y_label_formatter(&|v| human(*v, 3))
             .draw()
             .map_err(err)?;
-        // lift-off shaded
-        let mut spans = Vec::new();
-        for w in rows.windows(2) {
-            if w[1].state == SealState::LiftOff && w[0].time > 0.0 {
-                spans.push((w[0].time / unit, w[1].time / unit));
-            }
-        }
         chart
-            .draw_series(
-                spans.iter().map(|&(a, b)| {
-                    Rectangle::new([(a, y_lo), (b, y_hi)], ORANGE.mix(0.15).filled())
-                }),
-            )
-            .map_err(err)?;
-        let points: Vec<(f64, f64)> = rows
-            .iter()
-            .filter(|r| r.time > 0.0)
-            .map(|r| (r.time / unit, clip(r.leak_rate)))
-            .collect();
-        chart
-            .draw_series(LineSeries::new(points, BLUE.stroke_width(2)))
+            .draw_secondary_series(DashedLineSeries::new(set, 2, 3, GREY.stroke_width(2)))
             .map_err(err)?
-            .label(if all_sealed {
-                format!("leak rate: {}", floor.sealed())
-            } else {
-                "leak rate".to_owned()
-            })
-            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLUE.stroke_width(2)));
-        floor_line(&mut chart, (x_lo, x_hi), floor, ": below it reads sealed")?;
-        if let Some(q) = threshold {
-            chart
-                .draw_series(DashedLineSeries::new(
-                    vec![(x_lo, clip(q)), (x_hi, clip(q))],
-                    8,
-                    5,
-                    VERMILLION.stroke_width(2),
-                ))
-                .map_err(err)?
-                .label(format!("max_leak_rate {} m³/s", human(q, 3)))
-                .legend(|(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 20, y)], VERMILLION.stroke_width(2))
-                });
-        }
-        if !spans.is_empty() {
-            chart
-                .draw_series(std::iter::empty::<Rectangle<(f64, f64)>>())
-                .map_err(err)?
-                .label("lift-off (shaded)")
-                .legend(|(x, y)| {
-                    Rectangle::new([(x, y - 5), (x + 20, y + 5)], ORANGE.mix(0.3).filled())
-                });
-        }
-        if let Some(f) = failure {
-            let q = result.leak_rate_at(f.time).unwrap_or(0.0);
-            let x = (f.time / unit).clamp(x_lo, x_hi);
-            chart
-                .draw_series(std::iter::once(Cross::new(
-                    (x, clip(q)),
-                    8,
-                    VERMILLION.stroke_width(3),
-                )))
-                .map_err(err)?
-                .label(format!(
-                    "fails: {} after {}",
-                    f.mode.as_str(),
-                    super::life::human_time(f.time)
-                ))
-                .legend(|(x, y)| Cross::new((x + 10, y), 6, VERMILLION.stroke_width(3)));
-        }
-        legend(&mut chart, SeriesLabelPosition::UpperLeft)?;
-
-        // 2. sealing force [N/mm]
-        let force: Vec<(f64, f64)> = rows
-            .iter()
-            .filter(|r| r.time > 0.0)
-            .map(|r| (r.time / unit, r.sealing_force / 1e3))
-            .collect();
-        let f_max = force.iter().map(|p| p.1).fold(0.0, f64::max).max(1e-9) * 1.15;
-        let chart = ChartBuilder::on(&panels[1])
-            .margin(12)
-            .x_label_area_size(40)
-            .y_label_area_size(90)
-            .right_y_label_area_size(right)
-            .build_cartesian_2d((x_lo..x_hi).log_scale(), 0.0..f_max)
-            .map_err(err)?;
-        let set: Vec<(f64, f64)> = rows
-            .iter()
-            .filter(|r| r.time > 0.0)
-            .filter_map(|r| r.compression_set.map(|c| (r.time / unit, 100.0 * c)))
-            .collect();
-        let mut chart = chart.set_secondary_coord((x_lo..x_hi).log_scale(), 0.0..100.0);
-        chart
-            .configure_mesh()
-            .x_desc(&x_label)
-            .x_label_formatter(&|v| human(*v, 2))
-            .y_desc("sealing force [N/mm]")
-            .draw()
-            .map_err(err)?;
-        if !set.is_empty() {
-            chart
-                .configure_secondary_axes()
-                .y_desc("compression set [%] (dotted)")
-                .y_label_formatter(&|v| human(*v, 3))
-                .draw()
-                .map_err(err)?;
-            chart
-                .draw_secondary_series(DashedLineSeries::new(set, 2, 3, GREY.stroke_width(2)))
-                .map_err(err)?
-                .label("compression set (right axis)")
-                .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], GREY.stroke_width(2)));
-        }
-        chart
-            .draw_series(LineSeries::new(force, GREEN.stroke_width(2)))
-            .map_err(err)?
-            .label("sealing force per unit length")
-            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], GREEN.stroke_width(2)));
-        if let Some(r) = problem.failure.min_retained_force {
-            let level = r * result.reference_force / 1e3;
-            chart
-                .draw_series(DashedLineSeries::new(
-                    vec![(x_lo, level), (x_hi, level)],
-                    8,
-                    5,
-                    VERMILLION.stroke_width(2),
-                ))
-                .map_err(err)?
-                .label(format!(
-                    "min_retained_force {} % of {} N/mm",
-                    human(100.0 * r, 3),
-                    human(result.reference_force / 1e3, 3)
-                ))
-                .legend(|(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 20, y)], VERMILLION.stroke_width(2))
-                });
-        }
-        if let Some(f) = failure {
-            let x = (f.time / unit).clamp(x_lo, x_hi);
-            let k = rows
-                .partition_point(|r| r.time < f.time)
-                .min(rows.len() - 1);
-            chart
-                .draw_series(std::iter::once(Cross::new(
-                    (x, rows[k].sealing_force / 1e3),
-                    8,
-                    VERMILLION.stroke_width(3),
-                )))
-                .map_err(err)?;
-        }
-        legend(&mut chart, SeriesLabelPosition::UpperRight)?;
-
-        // 3. temperature [°C]: the daily envelope — at each of 4 000 log-spaced times the
-        // lowest and highest temperature within ±12 h (hourly samples), so a daily cycle shows
-        // as its range and a yearly one as the envelope's swing, never as aliased samples
-        let grid = 4_000;
-        let mut low = Vec::with_capacity(grid);
-        let mut high = Vec::with_capacity(grid);
-        for k in 0..grid {
-            let t = first * (end / first).powf(k as f64 / (grid - 1) as f64);
-            let (a, b) = (
-                (t - 12.0 * HOUR).max(0.0),
-                (t + 12.0 * HOUR).min(end.max(t)),
-            );
-            let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-            for m in 0..=24 {
-                let c = problem.environment.at(a + (b - a) * m as f64 / 24.0) - 273.15;
-                lo = lo.min(c);
-                hi = hi.max(c);
-            }
-            low.push((t / unit, lo));
-            high.push((t / unit, hi));
-        }
-        let t_lo = low.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
-        let t_hi = high.iter().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
-        let pad = ((t_hi - t_lo) * 0.15).max(2.0);
-        let mut chart = ChartBuilder::on(&panels[2])
-            .margin(12)
-            .x_label_area_size(40)
-            .y_label_area_size(90)
-            .build_cartesian_2d((x_lo..x_hi).log_scale(), (t_lo - pad)..(t_hi + pad))
-            .map_err(err)?;
-        chart
-            .configure_mesh()
-            .x_desc(&x_label)
-            .x_label_formatter(&|v| human(*v, 2))
-            .y_desc("temperature [°C]")
-            .draw()
-            .map_err(err)?;
-        // rows where the rubber is frozen (a_T undefined: at or below the WLF limit) shaded
-        let frozen: Vec<(f64, f64)> = rows
-            .windows(2)
-            .filter(|w| w[0].time > 0.0 && !w[1].shift_factor.is_finite())
-            .map(|w| (w[0].time / unit, w[1].time / unit))
-            .collect();
-        let (band_lo, band_hi) = (t_lo - pad, t_hi + pad);
-        chart
-            .draw_series(frozen.iter().map(|&(a, b)| {
-                Rectangle::new([(a, band_lo), (b, band_hi)], BLUE.mix(0.12).filled())
-            }))
-            .map_err(err)?;
-        if !frozen.is_empty() {
-            chart
-                .draw_series(std::iter::empty::<Rectangle<(f64, f64)>>())
-                .map_err(err)?
-                .label("frozen: below the WLF limit (shaded)")
-                .legend(|(x, y)| {
-                    Rectangle::new([(x, y - 5), (x + 20, y + 5)], BLUE.mix(0.25).filled())
-                });
-        }
-        let cycling = low.iter().zip(&high).any(|(l, h)| h.1 - l.1 > 1e-9);
-        if cycling {
-            let band: Vec<(f64, f64)> = low
-                .iter()
-                .copied()
-                .chain(high.iter().rev().copied())
-                .collect();
-            chart
-                .draw_series(std::iter::once(Polygon::new(
-                    band,
-                    ORANGE.mix(0.35).filled(),
-                )))
-                .map_err(err)?
-                .label("daily range (lowest to highest within ±12 h)")
-                .legend(|(x, y)| {
-                    Rectangle::new([(x, y - 5), (x + 20, y + 5)], ORANGE.mix(0.35).filled())
-                });
-        }
-        chart
-            .draw_series(LineSeries::new(high.clone(), VERMILLION.stroke_width(1)))
-            .map_err(err)?
-            .label(if cycling { "highest" } else { "temperature" })
-            .legend(|(x, y)| {
-                PathElement::new(vec![(x, y), (x + 20, y)], VERMILLION.stroke_width(1))
-            });
-        if cycling {
-            chart
-                .draw_series(LineSeries::new(low, BLUE.stroke_width(1)))
-                .map_err(err)?
-                .label("lowest")
-                .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLUE.stroke_width(1)));
-        }
-        legend(&mut chart, SeriesLabelPosition::UpperLeft)?;
-        root.present().map_err(err)?;
+            .label("compression set (right axis)")
+            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], GREY.stroke_width(2)));
     }
-    Ok(svg)
+    chart
+        .draw_series(LineSeries::new(force, GREEN.stroke_width(2)))
+        .map_err(err)?
+        .label("sealing force per unit length")
+        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], GREEN.stroke_width(2)));
+    if let Some(r) = problem.failure.min_retained_force {
+        let level = r * result.reference_force / 1e3;
+        chart
+            .draw_series(DashedLineSeries::new(
+                vec![(x_lo, level), (x_hi, level)],
+                8,
+                5,
+                VERMILLION.stroke_width(2),
+            ))
+            .map_err(err)?
+            .label(format!(
+                "min_retained_force {} % of {} N/mm",
+                human(100.0 * r, 3),
+                human(result.reference_force / 1e3, 3)
+            ))
+            .legend(|(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], VERMILLION.stroke_width(2))
+            });
+    }
+    if let Some(f) = failure {
+        let x = (f.time / unit).clamp(x_lo, x_hi);
+        let k = rows
+            .partition_point(|r| r.time < f.time)
+            .min(rows.len() - 1);
+        chart
+            .draw_series(std::iter::once(Cross::new(
+                (x, rows[k].sealing_force / 1e3),
+                8,
+                VERMILLION.stroke_width(3),
+            )))
+            .map_err(err)?;
+    }
+    legend(&mut chart, SeriesLabelPosition::UpperRight)
+}
+
+/// Panel 3, the temperature \[°C\]: its daily envelope, frozen spans shaded.
+fn temperature_panel(
+    area: &Area<'_>,
+    axis: &TimeAxis,
+    problem: &LifeProblem,
+    rows: &[crate::simulate::HistoryRow],
+) -> Result<(), PlotError> {
+    let (unit, x_lo, x_hi, x_label) = (axis.unit, axis.x_lo, axis.x_hi, &axis.label);
+    let (low, high) = daily_envelope(axis, problem);
+    let t_lo = low.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
+    let t_hi = high.iter().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
+    let pad = ((t_hi - t_lo) * 0.15).max(2.0);
+    let mut chart = ChartBuilder::on(area)
+        .margin(12)
+        .x_label_area_size(40)
+        .y_label_area_size(90)
+        .build_cartesian_2d((x_lo..x_hi).log_scale(), (t_lo - pad)..(t_hi + pad))
+        .map_err(err)?;
+    chart
+        .configure_mesh()
+        .x_desc(x_label)
+        .x_label_formatter(&|v| human(*v, 2))
+        .y_desc("temperature [°C]")
+        .draw()
+        .map_err(err)?;
+    // rows where the rubber is frozen (a_T undefined: at or below the WLF limit) shaded
+    let frozen: Vec<(f64, f64)> = rows
+        .windows(2)
+        .filter(|w| w[0].time > 0.0 && !w[1].shift_factor.is_finite())
+        .map(|w| (w[0].time / unit, w[1].time / unit))
+        .collect();
+    let (band_lo, band_hi) = (t_lo - pad, t_hi + pad);
+    chart
+        .draw_series(
+            frozen.iter().map(|&(a, b)| {
+                Rectangle::new([(a, band_lo), (b, band_hi)], BLUE.mix(0.12).filled())
+            }),
+        )
+        .map_err(err)?;
+    if !frozen.is_empty() {
+        chart
+            .draw_series(std::iter::empty::<Rectangle<(f64, f64)>>())
+            .map_err(err)?
+            .label("frozen: below the WLF limit (shaded)")
+            .legend(|(x, y)| {
+                Rectangle::new([(x, y - 5), (x + 20, y + 5)], BLUE.mix(0.25).filled())
+            });
+    }
+    let cycling = low.iter().zip(&high).any(|(l, h)| h.1 - l.1 > 1e-9);
+    if cycling {
+        let band: Vec<(f64, f64)> = low
+            .iter()
+            .copied()
+            .chain(high.iter().rev().copied())
+            .collect();
+        chart
+            .draw_series(std::iter::once(Polygon::new(
+                band,
+                ORANGE.mix(0.35).filled(),
+            )))
+            .map_err(err)?
+            .label("daily range (lowest to highest within ±12 h)")
+            .legend(|(x, y)| {
+                Rectangle::new([(x, y - 5), (x + 20, y + 5)], ORANGE.mix(0.35).filled())
+            });
+    }
+    chart
+        .draw_series(LineSeries::new(high.clone(), VERMILLION.stroke_width(1)))
+        .map_err(err)?
+        .label(if cycling { "highest" } else { "temperature" })
+        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], VERMILLION.stroke_width(1)));
+    if cycling {
+        chart
+            .draw_series(LineSeries::new(low, BLUE.stroke_width(1)))
+            .map_err(err)?
+            .label("lowest")
+            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLUE.stroke_width(1)));
+    }
+    legend(&mut chart, SeriesLabelPosition::UpperLeft)
+}
+
+/// The temperature's daily envelope \[°C\] over the axis's time: at each of 4 000 log-spaced
+/// times the lowest and highest temperature within ±12 h (hourly samples), so a daily cycle
+/// shows as its range and a yearly one as the envelope's swing, never as aliased samples.
+fn daily_envelope(axis: &TimeAxis, problem: &LifeProblem) -> (Points, Points) {
+    let (first, end, unit) = (axis.first, axis.end, axis.unit);
+    let grid = 4_000;
+    let mut low = Vec::with_capacity(grid);
+    let mut high = Vec::with_capacity(grid);
+    for k in 0..grid {
+        let t = first * (end / first).powf(k as f64 / (grid - 1) as f64);
+        let (a, b) = (
+            (t - 12.0 * HOUR).max(0.0),
+            (t + 12.0 * HOUR).min(end.max(t)),
+        );
+        let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+        for m in 0..=24 {
+            let c = problem.environment.at(a + (b - a) * m as f64 / 24.0) - 273.15;
+            lo = lo.min(c);
+            hi = hi.max(c);
+        }
+        low.push((t / unit, lo));
+        high.push((t / unit, hi));
+    }
+    (low, high)
 }
 
 /// The leak rates of several runs against time (`sealsim compare`): the reader's time unit, the

@@ -135,32 +135,59 @@ pub fn library_table(rows: &[(&str, &Material)]) -> String {
 
 /// Every parameter of `m` with its units and provenance (`sealsim materials show`).
 pub fn describe(id: &str, m: &Material) -> String {
-    const INDENT: &str = "                    ";
-    let mut out = format!("{id}: {}\n", m.name);
-    out += &format!(
+    let mut card = Card {
+        m,
+        out: format!("{id}: {}\n", m.name),
+    };
+    card.out += &format!(
         "status: {} - {}\n\n",
         m.status.as_str(),
         status_meaning(m.status)
     );
-    let mut param = |key: &str, value: String, extra: &[String]| {
-        out += &format!("{key:<19} {value}\n");
+    card.param("poisson_ratio", format!("ν = {}", m.poisson_ratio), &[]);
+    card.modulus();
+    card.shift();
+    card.thermal();
+    card.ageing();
+    card.derived();
+    card.compatibility();
+    card.out
+}
+
+/// The indent of a parameter's further lines.
+const INDENT: &str = "                    ";
+
+/// A compound's card being written (`sealsim materials show`): one parameter at a time.
+struct Card<'m> {
+    m: &'m Material,
+    out: String,
+}
+
+impl Card<'_> {
+    /// `key` and its `value`, the `extra` lines, then the key's source.
+    fn param(&mut self, key: &str, value: String, extra: &[String]) {
+        self.out += &format!("{key:<19} {value}\n");
         for line in extra {
-            out += &format!("{INDENT}{line}\n");
+            self.out += &format!("{INDENT}{line}\n");
         }
-        let source = m.provenance_of(key).unwrap_or("(none given)");
-        out += &format!("{INDENT}source: {source}\n");
-    };
-    param("poisson_ratio", format!("ν = {}", m.poisson_ratio), &[]);
-    let prony = &m.prony;
-    let terms = prony.terms();
-    if terms.is_empty() {
-        param(
-            "youngs_modulus",
-            format!("E = {} MPa (elastic)", human(prony.long_term() / 1e6, 6)),
-            &[],
-        );
-    } else {
-        param(
+        let source = self.m.provenance_of(key).unwrap_or("(none given)");
+        self.out += &format!("{INDENT}source: {source}\n");
+    }
+
+    /// The elastic modulus, or the relaxed modulus and the Prony series term by term.
+    fn modulus(&mut self) {
+        let m = self.m;
+        let prony = &m.prony;
+        let terms = prony.terms();
+        if terms.is_empty() {
+            self.param(
+                "youngs_modulus",
+                format!("E = {} MPa (elastic)", human(prony.long_term() / 1e6, 6)),
+                &[],
+            );
+            return;
+        }
+        self.param(
             "long_term_modulus",
             format!(
                 "E∞ = {} MPa (relaxed; the static leak problem uses it)",
@@ -195,7 +222,7 @@ pub fn describe(id: &str, m: &Material) -> String {
                 human(t.modulus / e0, 4)
             )
         }));
-        param(
+        self.param(
             "prony",
             format!(
                 "{} terms, E(t) = E∞ + Σ E_i exp(−t/τ_i), τ from {} s to {} s ({} decades), {at}",
@@ -207,135 +234,154 @@ pub fn describe(id: &str, m: &Material) -> String {
             &lines,
         );
     }
-    match m.shift {
-        Shift::None => {}
-        Shift::Wlf { reference, c1, c2 } => param(
-            "shift",
-            format!(
-                "WLF, log10 a_T = −C1 (T − T_ref)/(C2 + T − T_ref): T_ref = {}, C1 = {}, C2 = {} K",
-                temperature(reference),
-                human(c1, 6),
-                human(c2, 6)
-            ),
-            &[format!(
-                "frozen (no relaxation) at and below T_ref − C2 = {}",
-                temperature(reference - c2)
-            )],
-        ),
-        Shift::Arrhenius {
-            reference,
-            activation_energy,
-        } => param(
-            "shift",
-            format!(
-                "Arrhenius, ln a_T = (Ea/R)(1/T − 1/T_ref): T_ref = {}, Ea = {} kJ/mol",
-                temperature(reference),
-                human(activation_energy / 1e3, 6)
-            ),
-            &[],
-        ),
-    }
-    if let Some(tg) = m.glass_transition {
-        param(
-            "glass_transition",
-            format!("T_g = {}", temperature(tg)),
-            &[],
-        );
-    }
-    if let Some(alpha) = m.thermal_expansion {
-        param(
-            "thermal_expansion",
-            format!("α = {} 1/K (linear)", human(alpha, 6)),
-            &[],
-        );
-    }
-    if let Some(alpha) = m.glassy_thermal_expansion {
-        param(
-            "glassy_thermal_expansion",
-            format!("α_g = {} 1/K (linear, below T_g)", human(alpha, 6)),
-            &[],
-        );
-    }
-    match m.ageing {
-        Some(a) => {
-            let mut extra = vec![format!(
-                "two networks (docs/model.md §6.5): a new network forms at {} × k in the \
-                 compressed state{}",
-                human(a.crosslinking, 4),
-                if a.crosslinking == 1.0 {
-                    ": compression set = 1 − F/F0 at a constant squeeze"
-                } else {
-                    ""
-                }
-            )];
-            if let Some(b) = &m.ageing_basis {
-                extra.push(format!("property: {}", b.property));
-                extra.push(format!("criterion: {}", b.criterion));
-            }
-            param(
-                "ageing",
+
+    /// The temperature shift of the relaxation.
+    fn shift(&mut self) {
+        match self.m.shift {
+            Shift::None => {}
+            Shift::Wlf { reference, c1, c2 } => self.param(
+                "shift",
                 format!(
-                    "scission k_ref = {} 1/s at {}, Ea = {} kJ/mol (Arrhenius)",
-                    human(a.rate, 6),
-                    temperature(a.reference_temperature),
-                    human(a.activation_energy / 1e3, 6)
+                    "WLF, log10 a_T = −C1 (T − T_ref)/(C2 + T − T_ref): T_ref = {}, C1 = {}, C2 = {} K",
+                    temperature(reference),
+                    human(c1, 6),
+                    human(c2, 6)
                 ),
-                &extra,
+                &[format!(
+                    "frozen (no relaxation) at and below T_ref − C2 = {}",
+                    temperature(reference - c2)
+                )],
+            ),
+            Shift::Arrhenius {
+                reference,
+                activation_energy,
+            } => self.param(
+                "shift",
+                format!(
+                    "Arrhenius, ln a_T = (Ea/R)(1/T − 1/T_ref): T_ref = {}, Ea = {} kJ/mol",
+                    temperature(reference),
+                    human(activation_energy / 1e3, 6)
+                ),
+                &[],
+            ),
+        }
+    }
+
+    /// The glass transition and the thermal expansions.
+    fn thermal(&mut self) {
+        let m = self.m;
+        if let Some(tg) = m.glass_transition {
+            self.param(
+                "glass_transition",
+                format!("T_g = {}", temperature(tg)),
+                &[],
             );
         }
-        None => {
-            if let Some(why) = m.provenance_of("ageing") {
-                out += &format!(
-                    "{:<19} none
-{INDENT}source: {why}
-",
-                    "ageing"
+        if let Some(alpha) = m.thermal_expansion {
+            self.param(
+                "thermal_expansion",
+                format!("α = {} 1/K (linear)", human(alpha, 6)),
+                &[],
+            );
+        }
+        if let Some(alpha) = m.glassy_thermal_expansion {
+            self.param(
+                "glassy_thermal_expansion",
+                format!("α_g = {} 1/K (linear, below T_g)", human(alpha, 6)),
+                &[],
+            );
+        }
+    }
+
+    /// The two-network ageing and its basis, or why there is none.
+    fn ageing(&mut self) {
+        let m = self.m;
+        match m.ageing {
+            Some(a) => {
+                let mut extra = vec![format!(
+                    "two networks (docs/model.md §6.5): a new network forms at {} × k in the \
+                     compressed state{}",
+                    human(a.crosslinking, 4),
+                    if a.crosslinking == 1.0 {
+                        ": compression set = 1 − F/F0 at a constant squeeze"
+                    } else {
+                        ""
+                    }
+                )];
+                if let Some(b) = &m.ageing_basis {
+                    extra.push(format!("property: {}", b.property));
+                    extra.push(format!("criterion: {}", b.criterion));
+                }
+                self.param(
+                    "ageing",
+                    format!(
+                        "scission k_ref = {} 1/s at {}, Ea = {} kJ/mol (Arrhenius)",
+                        human(a.rate, 6),
+                        temperature(a.reference_temperature),
+                        human(a.activation_energy / 1e3, 6)
+                    ),
+                    &extra,
                 );
+            }
+            None => {
+                if let Some(why) = m.provenance_of("ageing") {
+                    self.out += &format!("{:<19} none\n{INDENT}source: {why}\n", "ageing");
+                }
             }
         }
     }
-    if let Some(t10) = m.low_temperature_limit() {
-        out += &format!(
-            "{:<19} T10 = {} (derived, not a parameter)\n",
-            "low_temperature",
-            temperature(t10)
-        );
-        out += &format!(
-            "{INDENT}where E(10 s/a_T(T)) = 10 × E(10 s/a_T(23 °C)): the stiffening limit of a \
-             Gehman test (ASTM D1053, ISO 1432) computed from the Prony series and the shift\n"
-        );
+
+    /// What follows from the parameters: the low-temperature limit T10 and a library
+    /// compound's helium/nitrogen permeation ratio.
+    fn derived(&mut self) {
+        let m = self.m;
+        if let Some(t10) = m.low_temperature_limit() {
+            self.out += &format!(
+                "{:<19} T10 = {} (derived, not a parameter)\n",
+                "low_temperature",
+                temperature(t10)
+            );
+            self.out += &format!(
+                "{INDENT}where E(10 s/a_T(T)) = 10 × E(10 s/a_T(23 °C)): the stiffening limit of a \
+                 Gehman test (ASTM D1053, ISO 1432) computed from the Prony series and the shift\n"
+            );
+        }
+        if let Some((ratio, basis)) = m
+            .library_id
+            .as_deref()
+            .and_then(crate::permeation::family_of)
+            .and_then(crate::permeation::helium_nitrogen_ratio)
+        {
+            self.out += &format!(
+                "{:<19} He/N2 = {} at 23 °C (docs/model.md §13.4)\n{INDENT}basis: {basis}\n",
+                "permeation",
+                human(ratio, 3)
+            );
+        }
     }
-    if let Some((ratio, basis)) = m
-        .library_id
-        .as_deref()
-        .and_then(crate::permeation::family_of)
-        .and_then(crate::permeation::helium_nitrogen_ratio)
-    {
-        out += &format!(
-            "{:<19} He/N2 = {} at 23 °C (docs/model.md §13.4)\n{INDENT}basis: {basis}\n",
-            "permeation",
-            human(ratio, 3)
-        );
+
+    /// The compound's fluid-compatibility ratings with their sources.
+    fn compatibility(&mut self) {
+        let m = self.m;
+        self.out += &format!("{:<19} ", "compatibility");
+        if m.compatibility.is_empty() {
+            self.out += "not rated in any fluid class (no source read rates it)\n";
+        }
+        for (i, c) in m.compatibility.iter().enumerate() {
+            let lead = if i == 0 {
+                String::new()
+            } else {
+                INDENT.to_owned()
+            };
+            self.out += &format!(
+                "{lead}{} {} ({})\n{INDENT}source: {}\n",
+                c.class.key(),
+                c.rating.letter(),
+                c.rating.words(),
+                c.source
+            );
+        }
     }
-    out += &format!("{:<19} ", "compatibility");
-    if m.compatibility.is_empty() {
-        out += "not rated in any fluid class (no source read rates it)\n";
-    }
-    for (i, c) in m.compatibility.iter().enumerate() {
-        let lead = if i == 0 {
-            String::new()
-        } else {
-            INDENT.to_owned()
-        };
-        out += &format!(
-            "{lead}{} {} ({})\n{INDENT}source: {}\n",
-            c.class.key(),
-            c.rating.letter(),
-            c.rating.words(),
-            c.source
-        );
-    }
-    out
 }
 
 /// A number for solver input: exact (round-trip) and in a form both Abaqus and ANSYS read.

@@ -121,15 +121,60 @@ pub fn read_part(
     path: &Path,
     text: &str,
 ) -> Result<Vec<CaseOutcome>, ScenarioError> {
-    let error = |line: Option<usize>, key: Option<&str>, message: String| ScenarioError::Invalid {
+    let body = part_body(study, path, text)?;
+    let mut reader = csv::ReaderBuilder::new().from_reader(body.as_bytes());
+    let expected = columns(study);
+    let found: Vec<String> = reader
+        .headers()
+        .map_err(|e| part_error(path, Some(2), None, e.to_string()))?
+        .iter()
+        .map(str::to_owned)
+        .collect();
+    if found != expected {
+        return Err(part_error(
+            path,
+            Some(2),
+            None,
+            "the columns are not this study's".into(),
+        ));
+    }
+    let mut out = Vec::new();
+    for (r, record) in reader.records().enumerate() {
+        let line = r + 3;
+        let record = record.map_err(|e| part_error(path, Some(line), None, e.to_string()))?;
+        let row = PartRow {
+            study,
+            path,
+            line,
+            record: &record,
+            expected: &expected,
+        };
+        out.push(row.case(design)?);
+    }
+    Ok(out)
+}
+
+/// An error in the part file at `path`.
+fn part_error(
+    path: &Path,
+    line: Option<usize>,
+    key: Option<&str>,
+    message: String,
+) -> ScenarioError {
+    ScenarioError::Invalid {
         path: path.to_path_buf(),
         line,
         key: key.map(str::to_owned),
         message,
-    };
+    }
+}
+
+/// A part file's text after its first line, which must name `study` by its fingerprint.
+fn part_body<'t>(study: &Study, path: &Path, text: &'t str) -> Result<&'t str, ScenarioError> {
     let (first, body) = text.split_once('\n').unwrap_or((text, ""));
     let Some(header) = first.strip_prefix(PART_PREFIX) else {
-        return Err(error(
+        return Err(part_error(
+            path,
             Some(1),
             None,
             "not a part file of `sealsim study --shard` (its first line names the study)".into(),
@@ -137,7 +182,8 @@ pub fn read_part(
     };
     let fingerprint = header.split_whitespace().next().unwrap_or("");
     if fingerprint != study.fingerprint {
-        return Err(error(
+        return Err(part_error(
+            path,
             Some(1),
             None,
             format!(
@@ -148,132 +194,81 @@ pub fn read_part(
             ),
         ));
     }
-    let mut reader = csv::ReaderBuilder::new().from_reader(body.as_bytes());
-    let expected = columns(study);
-    let found: Vec<String> = reader
-        .headers()
-        .map_err(|e| error(Some(2), None, e.to_string()))?
-        .iter()
-        .map(str::to_owned)
-        .collect();
-    if found != expected {
-        return Err(error(
-            Some(2),
-            None,
-            "the columns are not this study's".into(),
-        ));
+    Ok(body)
+}
+
+/// One case's row of a part file being read: its `line`, and the study's columns
+/// (`expected`) for the messages.
+struct PartRow<'a> {
+    study: &'a Study,
+    path: &'a Path,
+    line: usize,
+    record: &'a csv::StringRecord,
+    expected: &'a [String],
+}
+
+impl PartRow<'_> {
+    /// An error on this row at `key`.
+    fn error(&self, key: &str, message: String) -> ScenarioError {
+        part_error(self.path, Some(self.line), Some(key), message)
     }
-    let n_inputs = study.inputs.len();
-    let times = study.report_times.len();
-    let mut out = Vec::new();
-    for (r, record) in reader.records().enumerate() {
-        let line = r + 3;
-        let record = record.map_err(|e| error(Some(line), None, e.to_string()))?;
-        let field = |k: usize| record.get(k).unwrap_or("");
-        let number = |k: usize| -> Result<f64, ScenarioError> {
-            field(k)
-                .parse::<f64>()
-                .ok()
-                .filter(|x| x.is_finite())
-                .ok_or_else(|| {
-                    error(
-                        Some(line),
-                        Some(&expected[k]),
-                        format!("\"{}\" is not a number", field(k)),
-                    )
-                })
-        };
-        let optional = |k: usize| -> Result<Option<f64>, ScenarioError> {
-            if field(k).is_empty() {
-                Ok(None)
-            } else {
-                number(k).map(Some)
-            }
-        };
-        let index: usize = field(0).parse().map_err(|_| {
-            error(
-                Some(line),
-                Some("case"),
-                format!("\"{}\" is not a case index", field(0)),
-            )
-        })?;
-        if index >= design.len() {
-            return Err(error(
-                Some(line),
-                Some("case"),
-                format!("case {index} is beyond the study's {} cases", study.cases()),
-            ));
-        }
-        let values = &design[index];
-        let mut inputs = Vec::with_capacity(n_inputs);
-        for (j, input) in study.inputs.iter().enumerate() {
-            let cell = match input.kind {
-                InputKind::Words(_) => Cell::Word(field(1 + j).to_owned()),
-                InputKind::Quantity { .. } => Cell::Number(number(1 + j)?),
-            };
-            if input.cell(values[j]) != cell {
-                return Err(error(
-                    Some(line),
-                    Some(&expected[1 + j]),
-                    format!("case {index}'s input is not the one the study's design gives it"),
-                ));
-            }
-            inputs.push(cell);
-        }
-        let k = 1 + n_inputs;
-        let status = field(k + 1);
-        let mode = match (status, field(k + 2)) {
-            ("censored" | "invalid", "") => None,
-            ("failed", m) => Some(FailureMode::from_name(m).ok_or_else(|| {
-                error(
-                    Some(line),
-                    Some("mode"),
-                    format!("unknown failure mode \"{m}\""),
+
+    /// The cell of column `k` (empty when the row is short).
+    fn field(&self, k: usize) -> &str {
+        self.record.get(k).unwrap_or("")
+    }
+
+    /// The finite number in column `k`.
+    fn number(&self, k: usize) -> Result<f64, ScenarioError> {
+        self.field(k)
+            .parse::<f64>()
+            .ok()
+            .filter(|x| x.is_finite())
+            .ok_or_else(|| {
+                self.error(
+                    &self.expected[k],
+                    format!("\"{}\" is not a number", self.field(k)),
                 )
-            })?),
-            (s, _) => {
-                return Err(error(
-                    Some(line),
-                    Some("status"),
-                    format!("\"{s}\": failed (with a mode), censored or invalid"),
-                ));
-            }
-        };
+            })
+    }
+
+    /// The number in column `k`, if the cell is not empty.
+    fn optional(&self, k: usize) -> Result<Option<f64>, ScenarioError> {
+        if self.field(k).is_empty() {
+            Ok(None)
+        } else {
+            self.number(k).map(Some)
+        }
+    }
+
+    /// The case, checked against the study's `design` (every case's values).
+    fn case(&self, design: &[Vec<f64>]) -> Result<CaseOutcome, ScenarioError> {
+        let index = self.index(design.len())?;
+        let inputs = self.inputs(index, &design[index])?;
+        let k = 1 + self.study.inputs.len();
+        let status = self.field(k + 1);
+        let mode = self.mode(status, self.field(k + 2))?;
+        let times = self.study.report_times.len();
         let leak_rates = (0..times)
-            .map(|t| optional(k + 3 + t))
+            .map(|t| self.optional(k + 3 + t))
             .collect::<Result<_, _>>()?;
         let e = k + 3 + times;
-        let final_state = field(e + 4);
-        if final_state != crate::study::case::INVALID_STATE
-            && !crate::leak::SealState::ALL
-                .iter()
-                .any(|s| s.as_str() == final_state)
-        {
-            return Err(error(
-                Some(line),
-                Some("state_end"),
-                format!("unknown state \"{final_state}\""),
-            ));
+        let final_state = self.final_state(self.field(e + 4))?;
+        let warnings = self.field(e + 5);
+        let invalid = (status == "invalid").then(|| self.field(e + 6).to_owned());
+        if status == "invalid" && self.field(e + 6).is_empty() {
+            return Err(self.error("invalid_reason", "an invalid case needs its reason".into()));
         }
-        let warnings = field(e + 5);
-        let invalid = (status == "invalid").then(|| field(e + 6).to_owned());
-        if status == "invalid" && field(e + 6).is_empty() {
-            return Err(error(
-                Some(line),
-                Some("invalid_reason"),
-                "an invalid case needs its reason".into(),
-            ));
-        }
-        out.push(CaseOutcome {
+        Ok(CaseOutcome {
             index,
             inputs,
-            life: number(k)?,
+            life: self.number(k)?,
             mode,
             leak_rates,
-            final_force: number(e)?,
-            retained_force: number(e + 1)?,
-            leaked_volume: number(e + 2)?,
-            compression_set: optional(e + 3)?,
+            final_force: self.number(e)?,
+            retained_force: self.number(e + 1)?,
+            leaked_volume: self.number(e + 2)?,
+            compression_set: self.optional(e + 3)?,
             final_state: final_state.to_owned(),
             warnings: if warnings.is_empty() {
                 Vec::new()
@@ -281,9 +276,71 @@ pub fn read_part(
                 warnings.split(';').map(str::to_owned).collect()
             },
             invalid,
-        });
+        })
     }
-    Ok(out)
+
+    /// The case index, one of the `cases` of the design.
+    fn index(&self, cases: usize) -> Result<usize, ScenarioError> {
+        let index: usize = self.field(0).parse().map_err(|_| {
+            self.error("case", format!("\"{}\" is not a case index", self.field(0)))
+        })?;
+        if index >= cases {
+            return Err(self.error(
+                "case",
+                format!(
+                    "case {index} is beyond the study's {} cases",
+                    self.study.cases()
+                ),
+            ));
+        }
+        Ok(index)
+    }
+
+    /// The case's inputs, each the one the study's design gives it (`values`).
+    fn inputs(&self, index: usize, values: &[f64]) -> Result<Vec<Cell>, ScenarioError> {
+        let mut inputs = Vec::with_capacity(self.study.inputs.len());
+        for (j, input) in self.study.inputs.iter().enumerate() {
+            let cell = match input.kind {
+                InputKind::Words(_) => Cell::Word(self.field(1 + j).to_owned()),
+                InputKind::Quantity { .. } => Cell::Number(self.number(1 + j)?),
+            };
+            if input.cell(values[j]) != cell {
+                return Err(self.error(
+                    &self.expected[1 + j],
+                    format!("case {index}'s input is not the one the study's design gives it"),
+                ));
+            }
+            inputs.push(cell);
+        }
+        Ok(inputs)
+    }
+
+    /// The failure mode of a failed case (`status`, `mode`); none for a censored or invalid
+    /// one.
+    fn mode(&self, status: &str, mode: &str) -> Result<Option<FailureMode>, ScenarioError> {
+        match (status, mode) {
+            ("censored" | "invalid", "") => Ok(None),
+            ("failed", m) => Ok(Some(FailureMode::from_name(m).ok_or_else(|| {
+                self.error("mode", format!("unknown failure mode \"{m}\""))
+            })?)),
+            (s, _) => Err(self.error(
+                "status",
+                format!("\"{s}\": failed (with a mode), censored or invalid"),
+            )),
+        }
+    }
+
+    /// The state at the end: a seal state, or an invalid case's.
+    fn final_state<'s>(&self, state: &'s str) -> Result<&'s str, ScenarioError> {
+        if state != crate::study::case::INVALID_STATE
+            && !crate::leak::SealState::ALL
+                .iter()
+                .any(|s| s.as_str() == state)
+        {
+            return Err(self.error("state_end", format!("unknown state \"{state}\"")));
+        }
+        Ok(state)
+    }
 }
 
 /// The summary as JSON.

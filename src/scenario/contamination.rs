@@ -102,8 +102,10 @@ impl Source<'_> {
             return Err(self.error(
                 table.span(),
                 SIZE_KEY,
-                "missing key `size_distribution` in [contamination], e.g. { kind = \
-                 \"lognormal\", median = \"1 um\", geometric_std = 1.8 }",
+                concat!(
+                    "missing key `size_distribution` in [contamination], e.g. ",
+                    "{ kind = \"lognormal\", median = \"1 um\", geometric_std = 1.8 }",
+                ),
             ));
         };
         let size_distribution = self.size_distribution(sizes)?;
@@ -221,27 +223,7 @@ impl Source<'_> {
             }
             "table" => {
                 takes(&["file"], "file")?;
-                let Some(file) = &raw.file else {
-                    return Err(self.error(
-                        table.span(),
-                        &format!("{SIZE_KEY}.file"),
-                        "missing key `file` of a table size distribution (a CSV of d, F)",
-                    ));
-                };
-                let path = self.relative_path(file.get_ref());
-                let key = format!("{SIZE_KEY}.file");
-                let text = std::fs::read_to_string(&path).map_err(|e| {
-                    self.error(
-                        file.span(),
-                        &key,
-                        format!("cannot read size table {}: {e}", path.display()),
-                    )
-                })?;
-                let (diameter, cdf) = parse_size_table(&text).map_err(|(line, message)| {
-                    let at = line.map_or(String::new(), |l| format!(":{l}"));
-                    self.error(file.span(), &key, format!("{}{at}: {message}", path.display()))
-                })?;
-                Ok(SizeDistribution::Table { diameter, cdf })
+                self.size_table(table)
             }
             other => Err(self.error(
                 raw.kind.span(),
@@ -251,6 +233,38 @@ impl Source<'_> {
                 ),
             )),
         }
+    }
+    /// A table size distribution: `file`, a CSV of d, F (relative to the scenario's directory).
+    fn size_table(
+        &self,
+        table: &Spanned<RawSizeDistribution>,
+    ) -> Result<SizeDistribution, ScenarioError> {
+        let raw = table.get_ref();
+        let Some(file) = &raw.file else {
+            return Err(self.error(
+                table.span(),
+                &format!("{SIZE_KEY}.file"),
+                "missing key `file` of a table size distribution (a CSV of d, F)",
+            ));
+        };
+        let path = self.relative_path(file.get_ref());
+        let key = format!("{SIZE_KEY}.file");
+        let text = std::fs::read_to_string(&path).map_err(|e| {
+            self.error(
+                file.span(),
+                &key,
+                format!("cannot read size table {}: {e}", path.display()),
+            )
+        })?;
+        let (diameter, cdf) = parse_size_table(&text).map_err(|(line, message)| {
+            let at = line.map_or(String::new(), |l| format!(":{l}"));
+            self.error(
+                file.span(),
+                &key,
+                format!("{}{at}: {message}", path.display()),
+            )
+        })?;
+        Ok(SizeDistribution::Table { diameter, cdf })
     }
 }
 

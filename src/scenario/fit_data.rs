@@ -268,14 +268,62 @@ fn parse(text: &str, kind: FitKind) -> Result<FitData, Located> {
         ));
     };
     let mut columns = header_columns(header_line, header, kind)?;
-    // pyvisco style: a second header row of units, required (a bare 24 could be seconds or
-    // hours). Its first cell is never a number (a retention's unit may be `1`, so the other
-    // cells are not a test).
-    match rows.next() {
+    units_row(rows.next(), header_line, &mut columns)?;
+    let width = columns.len();
+    let temperature_index = columns
+        .iter()
+        .position(|c| c.quantity == Quantity::Temperature);
+    let mut series: Vec<Series> = Vec::new();
+    let mut dma: Vec<Vec<f64>> = vec![Vec::new(); width];
+    let mut last_line = header_line;
+    for (line, row) in rows {
+        last_line = line;
+        let row_cells = cells(row);
+        let values = row_values(line, &row_cells, &columns)?;
+        let temperature = temperature_index.map(|k| values[k]);
+        let current = series_of(&mut series, temperature, line);
+        let axis = current.check_row(line, &row_cells, &values, &columns)?;
+        match kind {
+            FitKind::Relaxation => {
+                let v = columns
+                    .iter()
+                    .position(|c| c.quantity.is_relaxation())
+                    .map_or(f64::NAN, |k| values[k]);
+                current.isotherm.times.push(axis);
+                current.isotherm.values.push(v);
+            }
+            FitKind::Dma => {
+                current.isotherm.times.push(axis);
+                for (column, value) in dma.iter_mut().zip(values) {
+                    column.push(value);
+                }
+            }
+        }
+    }
+    enough_points(&series, last_line)?;
+    Ok(fit_data(
+        kind,
+        &columns,
+        series,
+        dma,
+        temperature_index,
+        header_line,
+    ))
+}
+
+/// The row of units after the header (pyvisco style), required: a bare 24 could be seconds or
+/// hours. Its first cell is never a number (a retention's unit may be `1`, so the other cells
+/// are not a test).
+fn units_row<'a>(
+    row: Option<(usize, &'a str)>,
+    header_line: usize,
+    columns: &mut [Column<'a>],
+) -> Result<(), Located> {
+    match row {
         Some((units_line, units_row))
             if cells(units_row).first().is_some_and(|c| !is_number(c)) =>
         {
-            read_units(units_line, units_row, &mut columns)?;
+            read_units(units_line, units_row, columns)
         }
         Some((line, _)) => {
             let example: Vec<&str> = columns
@@ -290,137 +338,168 @@ fn parse(text: &str, kind: FitKind) -> Result<FitData, Located> {
                     _ => "MPa",
                 })
                 .collect();
-            return Err(at(
+            Err(at(
                 line,
                 format!(
                     "no units row: add one after the header, e.g. `{}` — without it a time of \
                      24 could be seconds or hours",
                     example.join(",")
                 ),
-            ));
+            ))
         }
-        None => {
-            return Err(at(
-                header_line,
-                "no units row and no data: expected a units row after the header, then data \
-                 rows"
-                    .into(),
-            ));
-        }
+        None => Err(at(
+            header_line,
+            "no units row and no data: expected a units row after the header, then data \
+             rows"
+                .into(),
+        )),
     }
+}
+
+/// A data row's values in SI, one per column.
+fn row_values(line: usize, row_cells: &[&str], columns: &[Column]) -> Result<Vec<f64>, Located> {
     let width = columns.len();
-    let position = |wanted: fn(Quantity) -> bool| columns.iter().position(|c| wanted(c.quantity));
-    let temperature_index = position(|q| q == Quantity::Temperature);
-    let mut series: Vec<Series> = Vec::new();
-    let mut dma: Vec<Vec<f64>> = vec![Vec::new(); width];
-    let mut last_line = header_line;
-    for (line, row) in rows {
-        last_line = line;
-        let row_cells = cells(row);
-        if row_cells.len() != width {
-            let names: Vec<&str> = columns.iter().map(|c| c.name).collect();
-            return Err(at(
-                line,
-                format!(
-                    "expected {width} comma-separated columns ({}), found {}",
-                    names.join(", "),
-                    row_cells.len()
-                ),
-            ));
+    if row_cells.len() != width {
+        let names: Vec<&str> = columns.iter().map(|c| c.name).collect();
+        return Err(at(
+            line,
+            format!(
+                "expected {width} comma-separated columns ({}), found {}",
+                names.join(", "),
+                row_cells.len()
+            ),
+        ));
+    }
+    let mut values = Vec::with_capacity(width);
+    for (cell, column) in row_cells.iter().zip(columns) {
+        values.push(cell_value(line, cell, column)?);
+    }
+    Ok(values)
+}
+
+/// The series of `temperature` (a new one, first on `line`, if none yet).
+fn series_of<'s, 'a>(
+    series: &'s mut Vec<Series<'a>>,
+    temperature: Option<f64>,
+    line: usize,
+) -> &'s mut Series<'a> {
+    let k = match series
+        .iter()
+        .position(|s| s.isotherm.temperature == temperature)
+    {
+        Some(k) => k,
+        None => {
+            series.push(Series {
+                isotherm: Isotherm {
+                    temperature,
+                    times: Vec::new(),
+                    values: Vec::new(),
+                    first_line: line,
+                },
+                last: None,
+                minimum: None,
+            });
+            series.len() - 1
         }
-        let mut values = Vec::with_capacity(width);
-        for (cell, column) in row_cells.iter().zip(&columns) {
-            values.push(cell_value(line, cell, column)?);
-        }
-        let temperature = temperature_index.map(|k| values[k]);
-        let k = match series
-            .iter()
-            .position(|s| s.isotherm.temperature == temperature)
-        {
-            Some(k) => k,
-            None => {
-                series.push(Series {
-                    isotherm: Isotherm {
-                        temperature,
-                        times: Vec::new(),
-                        values: Vec::new(),
-                        first_line: line,
-                    },
-                    last: None,
-                    minimum: None,
-                });
-                series.len() - 1
-            }
-        };
-        let current = &mut series[k];
+    };
+    &mut series[k]
+}
+
+impl<'a> Series<'a> {
+    /// Checks a data row against the series' rows before it (the axis increases strictly, the
+    /// force or retention does not rise beyond scatter); the row's axis value.
+    fn check_row(
+        &mut self,
+        line: usize,
+        row_cells: &[&'a str],
+        values: &[f64],
+        columns: &[Column],
+    ) -> Result<f64, Located> {
         let mut axis = f64::NAN;
         for (j, column) in columns.iter().enumerate() {
             let value = values[j];
             if column.quantity.is_axis() {
-                if let Some((previous_line, previous, previous_cell)) = current.last
-                    && value <= previous
-                {
-                    let within = if temperature.is_some() {
-                        " within one temperature"
-                    } else {
-                        " from row to row"
-                    };
-                    return Err(at(
-                        line,
-                        format!(
-                            "{}: must increase strictly{within}, got {} after {previous_cell} (line {previous_line})",
-                            column.name, row_cells[j]
-                        ),
-                    ));
-                }
-                current.last = Some((line, value, row_cells[j]));
+                self.check_axis(line, row_cells[j], value, column)?;
                 axis = value;
             }
             if matches!(column.quantity, Quantity::Force | Quantity::Retained) {
-                let first = current.isotherm.values.first().copied().unwrap_or(value);
-                match current.minimum {
-                    Some((min_line, min)) if value > min + MONOTONIC_TOLERANCE * first => {
-                        return Err(at(
-                            line,
-                            format!(
-                                "{}: the force rises from {} (line {min_line}) to {}, by {:.1} % of \
-                                 its first value: stress relaxation at a fixed deformation never \
-                                 raises the force (check the column order, a re-loaded test piece \
-                                 or a temperature step; rises up to {:.0} % are taken as scatter)",
-                                column.name,
-                                show(min / column.factor),
-                                row_cells[j],
-                                100.0 * (value - min) / first,
-                                100.0 * MONOTONIC_TOLERANCE
-                            ),
-                        ));
-                    }
-                    Some((_, min)) if value >= min => {}
-                    _ => current.minimum = Some((line, value)),
-                }
+                self.check_relaxes(line, row_cells[j], value, column)?;
             }
         }
-        match kind {
-            FitKind::Relaxation => {
-                let v = position(Quantity::is_relaxation).map_or(f64::NAN, |k| values[k]);
-                current.isotherm.times.push(axis);
-                current.isotherm.values.push(v);
-            }
-            FitKind::Dma => {
-                current.isotherm.times.push(axis);
-                for (column, value) in dma.iter_mut().zip(values) {
-                    column.push(value);
-                }
-            }
-        }
+        Ok(axis)
     }
+
+    /// The axis `value` (written `cell`) increases strictly over the series.
+    fn check_axis(
+        &mut self,
+        line: usize,
+        cell: &'a str,
+        value: f64,
+        column: &Column,
+    ) -> Result<(), Located> {
+        if let Some((previous_line, previous, previous_cell)) = self.last
+            && value <= previous
+        {
+            let within = if self.isotherm.temperature.is_some() {
+                " within one temperature"
+            } else {
+                " from row to row"
+            };
+            return Err(at(
+                line,
+                format!(
+                    "{}: must increase strictly{within}, got {} after {previous_cell} (line {previous_line})",
+                    column.name, cell
+                ),
+            ));
+        }
+        self.last = Some((line, value, cell));
+        Ok(())
+    }
+
+    /// A force or retention `value` (written `cell`) does not rise above the running minimum by
+    /// more than the scatter allowed.
+    fn check_relaxes(
+        &mut self,
+        line: usize,
+        cell: &str,
+        value: f64,
+        column: &Column,
+    ) -> Result<(), Located> {
+        let first = self.isotherm.values.first().copied().unwrap_or(value);
+        match self.minimum {
+            Some((min_line, min)) if value > min + MONOTONIC_TOLERANCE * first => {
+                return Err(at(
+                    line,
+                    format!(
+                        "{}: the force rises from {} (line {min_line}) to {}, by {:.1} % of \
+                         its first value: stress relaxation at a fixed deformation never \
+                         raises the force (check the column order, a re-loaded test piece \
+                         or a temperature step; rises up to {:.0} % are taken as scatter)",
+                        column.name,
+                        show(min / column.factor),
+                        cell,
+                        100.0 * (value - min) / first,
+                        100.0 * MONOTONIC_TOLERANCE
+                    ),
+                ));
+            }
+            Some((_, min)) if value >= min => {}
+            _ => self.minimum = Some((line, value)),
+        }
+        Ok(())
+    }
+}
+
+/// At least 3 points in every series (the error at the file's `last_line`).
+fn enough_points(series: &[Series], last_line: usize) -> Result<(), Located> {
     if series.is_empty() {
         return Err(at(
             last_line,
             "too few points: 0 data rows, a fit needs at least 3".to_string(),
         ));
     }
-    for s in &series {
+    for s in series {
         let points = s.isotherm.times.len();
         if points < 3 {
             let which = match s.isotherm.temperature {
@@ -439,7 +518,20 @@ fn parse(text: &str, kind: FitKind) -> Result<FitData, Located> {
             ));
         }
     }
-    Ok(match kind {
+    Ok(())
+}
+
+/// The data read: a relaxation's isotherms, or a DMA's columns.
+fn fit_data(
+    kind: FitKind,
+    columns: &[Column],
+    series: Vec<Series>,
+    mut dma: Vec<Vec<f64>>,
+    temperature_index: Option<usize>,
+    header_line: usize,
+) -> FitData {
+    let position = |wanted: fn(Quantity) -> bool| columns.iter().position(|c| wanted(c.quantity));
+    match kind {
         FitKind::Relaxation => {
             let measured = match position(Quantity::is_relaxation).map(|k| columns[k].quantity) {
                 Some(Quantity::Force) => Measured::Force,
@@ -464,7 +556,7 @@ fn parse(text: &str, kind: FitKind) -> Result<FitData, Located> {
                 loss: take(|q| q == Quantity::Loss),
             }
         }
-    })
+    }
 }
 
 /// A temperature for messages: `296.15 K (23 °C)`.

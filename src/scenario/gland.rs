@@ -25,8 +25,8 @@ use super::raw::{Quantity, RawSeal};
 use super::life::{CROSS_SECTION, SQUEEZE};
 use super::validate::{Bound, Field, field};
 use crate::gland::{
-    GlandDesign, GlandError, GlandKind, Locator, MAX_FILL_GUIDANCE, MAX_STRETCH_GUIDANCE,
-    MIN_FILL_GUIDANCE, NOMINAL_FILL_GUIDANCE, Ring,
+    GlandDesign, GlandError, GlandKind, Installed, Locator, MAX_FILL_GUIDANCE,
+    MAX_STRETCH_GUIDANCE, MIN_FILL_GUIDANCE, NOMINAL_FILL_GUIDANCE, Ring,
 };
 use crate::seal::{SealGeometry, VolumeSwell};
 use crate::simulate::Loading;
@@ -114,388 +114,35 @@ impl Source<'_> {
         swell: Option<&VolumeSwell>,
     ) -> Result<SealSpec, ScenarioError> {
         let raw = table.get_ref();
-        let a_gland = format!("a {} gland", kind.name());
-        if let Some(q) = &raw.mean_diameter {
-            return Err(self.error(
-                q.span(),
-                "seal.mean_diameter",
-                format!(
-                    "not a key of a groove-seated ring ({a_gland}): its mean diameter follows \
-                     from the ring (size, or cross_section and inner_diameter) stretched onto its \
-                     seat; remove mean_diameter, or remove gland for a ring squeezed between \
-                     plates"
-                ),
-            ));
-        }
-        let refuse = |present: &Option<Quantity>, key: &str, instead: &str| match present {
-            Some(q) => Err(self.error(
-                q.span(),
-                &format!("seal.{key}"),
-                format!("not a key of {a_gland}, which takes {instead}"),
-            )),
-            None => Ok(()),
+        let gland = GlandTable {
+            source: self,
+            table,
+            raw,
+            kind,
+            a_gland: format!("a {} gland", kind.name()),
         };
-        let missing = |key: &str, what: &str| {
-            self.error(
-                table.span(),
-                &format!("seal.{key}"),
-                format!("missing key `{key}` in [seal]: {a_gland} needs {what}"),
-            )
-        };
-
-        // the ring
-        let ring = match (&raw.size, &raw.cross_section, &raw.inner_diameter) {
-            (Some(size), cs, id) => {
-                for (present, key) in [(cs, "cross_section"), (id, "inner_diameter")] {
-                    if let Some(q) = present {
-                        return Err(self.error(
-                            q.span(),
-                            &format!("seal.{key}"),
-                            format!(
-                                "size ({}) gives the ring's dimensions; remove {key} (or remove \
-                                 size and give cross_section and inner_diameter)",
-                                size.get_ref()
-                            ),
-                        ));
-                    }
-                }
-                as568::lookup(size.get_ref())
-                    .map_err(|e| self.error(size.span(), "seal.size", e.to_string()))?
-                    .ring()
-            }
-            (None, Some(cs), Some(id)) => Ring {
-                inner_diameter: self.quantity(id, &INNER_DIAMETER)?,
-                inner_diameter_tolerance: 0.0,
-                cross_section: self.quantity(cs, &CROSS_SECTION)?,
-                cross_section_tolerance: 0.0,
-            },
-            (None, Some(_), None) => {
-                return Err(missing(
-                    "inner_diameter",
-                    "the ring's free inside diameter with its cross_section (or a size such as \
-                     \"AS568-214\")",
-                ));
-            }
-            (None, None, _) => {
-                return Err(missing(
-                    "size",
-                    "its ring: a size such as \"AS568-214\", or cross_section and \
-                     inner_diameter",
-                ));
-            }
-        };
-
-        // the clearance and the diameter that fixes the stretch
-        let (extrusion_gap, locator, locator_key) = match kind {
-            GlandKind::Face => {
-                refuse(
-                    &raw.diametral_clearance,
-                    "diametral_clearance",
-                    "extrusion_gap (the flange separation, default 0)",
-                )?;
-                refuse(
-                    &raw.bore_diameter,
-                    "bore_diameter",
-                    "groove_outer_diameter or groove_inner_diameter",
-                )?;
-                refuse(
-                    &raw.rod_diameter,
-                    "rod_diameter",
-                    "groove_outer_diameter or groove_inner_diameter",
-                )?;
-                let gap = self
-                    .optional(raw.extrusion_gap.as_ref(), &EXTRUSION_GAP)?
-                    .unwrap_or(0.0);
-                let (locator, key) = match (&raw.groove_outer_diameter, &raw.groove_inner_diameter)
-                {
-                    (Some(_), Some(q)) => {
-                        return Err(self.error(
-                            q.span(),
-                            GROOVE_INNER_DIAMETER.key,
-                            "the ring rests on one wall: give groove_outer_diameter (pressure \
-                             inside: the ring's OD on the outer wall) or groove_inner_diameter \
-                             (pressure outside: its ID on the inner wall), not both",
-                        ));
-                    }
-                    (Some(q), None) => (
-                        Locator::GrooveOuter(self.quantity(q, &GROOVE_OUTER_DIAMETER)?),
-                        GROOVE_OUTER_DIAMETER.key,
-                    ),
-                    (None, Some(q)) => (
-                        Locator::GrooveInner(self.quantity(q, &GROOVE_INNER_DIAMETER)?),
-                        GROOVE_INNER_DIAMETER.key,
-                    ),
-                    (None, None) => (Locator::Free, "seal.gland"),
-                };
-                (gap, locator, key)
-            }
-            GlandKind::Piston | GlandKind::Rod => {
-                refuse(
-                    &raw.extrusion_gap,
-                    "extrusion_gap",
-                    "diametral_clearance (the extrusion gap is half of it)",
-                )?;
-                for (present, key) in [
-                    (&raw.groove_outer_diameter, "groove_outer_diameter"),
-                    (&raw.groove_inner_diameter, "groove_inner_diameter"),
-                ] {
-                    refuse(
-                        present,
-                        key,
-                        if kind == GlandKind::Piston {
-                            "bore_diameter"
-                        } else {
-                            "rod_diameter"
-                        },
-                    )?;
-                }
-                let clearance = match &raw.diametral_clearance {
-                    Some(q) => self.quantity(q, &DIAMETRAL_CLEARANCE)?,
-                    None => {
-                        return Err(missing(
-                            "diametral_clearance",
-                            "the diametral clearance (bore minus piston, or housing bore minus \
-                             rod; 0 for none), which decides extrusion",
-                        ));
-                    }
-                };
-                let (own, other, field) = if kind == GlandKind::Piston {
-                    (&raw.bore_diameter, &raw.rod_diameter, &BORE_DIAMETER)
-                } else {
-                    (&raw.rod_diameter, &raw.bore_diameter, &ROD_DIAMETER)
-                };
-                let own_key = field.key.trim_start_matches("seal.");
-                refuse(
-                    other,
-                    if kind == GlandKind::Piston {
-                        "rod_diameter"
-                    } else {
-                        "bore_diameter"
-                    },
-                    own_key,
-                )?;
-                let diameter = match own {
-                    Some(q) => self.quantity(q, field)?,
-                    None => {
-                        return Err(missing(
-                            own_key,
-                            "the diameter the ring is stretched on (the groove bottom is \
-                             bore − 2·groove_depth for a piston, the ring sits on the rod of a \
-                             rod gland)",
-                        ));
-                    }
-                };
-                let locator = if kind == GlandKind::Piston {
-                    Locator::Bore(diameter)
-                } else {
-                    Locator::Rod(diameter)
-                };
-                (0.5 * clearance, locator, field.key)
-            }
-        };
-
-        let groove_width = match &raw.groove_width {
-            Some(q) => self.quantity(q, &GROOVE_WIDTH)?,
-            None => {
-                return Err(missing(
-                    "groove_width",
-                    "the groove's width (for the gland fill)",
-                ));
-            }
-        };
+        gland.refuse_mean_diameter()?;
+        let ring = gland.ring()?;
+        let seat = gland.seat()?;
+        let groove_width = gland.groove_width()?;
         let mut design = GlandDesign {
             kind,
             ring,
-            locator,
+            locator: seat.locator,
             gland_depth: 0.0,
             gland_depth_tolerance: 0.0,
             groove_width,
-            extrusion_gap,
+            extrusion_gap: seat.extrusion_gap,
         };
-        // the gland depth h: from groove_depth, or from squeeze
-        let gap_in_depth = if kind == GlandKind::Face {
-            extrusion_gap
-        } else {
-            0.0
-        };
-        let (depth_span, depth_key) = match (&raw.groove_depth, &raw.squeeze) {
-            (Some(_), Some(s)) => {
-                return Err(self.error(
-                    s.span(),
-                    SQUEEZE.key,
-                    "squeeze and groove_depth are two sources of truth for one number: give \
-                     groove_depth (the squeeze then follows from the ring) or squeeze (the \
-                     depth then follows), not both",
-                ));
-            }
-            (Some(q), None) => {
-                let depth = self.quantity(q, &GROOVE_DEPTH)?;
-                design.gland_depth = depth + gap_in_depth;
-                if let Some(t) = &raw.groove_depth_tolerance {
-                    let tolerance = self.quantity(t, &GROOVE_DEPTH_TOLERANCE)?;
-                    if tolerance >= depth {
-                        return Err(self.error(
-                            t.span(),
-                            GROOVE_DEPTH_TOLERANCE.key,
-                            format!(
-                                "must be smaller than groove_depth ({} m), got {} m",
-                                show(depth),
-                                show(tolerance)
-                            ),
-                        ));
-                    }
-                    design.gland_depth_tolerance = tolerance;
-                }
-                (q.span(), GROOVE_DEPTH.key)
-            }
-            (None, Some(s)) => {
-                if let Some(t) = &raw.groove_depth_tolerance {
-                    return Err(self.error(
-                        t.span(),
-                        GROOVE_DEPTH_TOLERANCE.key,
-                        "applies to groove_depth, which squeeze replaces here; remove it (or \
-                         give groove_depth instead of squeeze)",
-                    ));
-                }
-                let squeeze = self.quantity(s, &SQUEEZE)?;
-                design.gland_depth = design
-                    .depth_for_squeeze(squeeze)
-                    .map_err(|e| self.gland_error(&e, s.span(), SQUEEZE.key, table, locator_key))?;
-                (s.span(), SQUEEZE.key)
-            }
-            (None, None) => {
-                return Err(missing(
-                    "groove_depth",
-                    "the depth the cord is squeezed into (or squeeze instead)",
-                ));
-            }
-        };
-        if kind == GlandKind::Face && design.gland_depth <= gap_in_depth {
-            // squeeze given: the implied groove depth would not be positive
-            return Err(self.error(
-                depth_span,
-                depth_key,
-                format!(
-                    "the squeeze implies a gland depth of {} m, not more than the flange \
-                     separation extrusion_gap ({} m): no groove is left",
-                    show(design.gland_depth),
-                    show(extrusion_gap)
-                ),
-            ));
-        }
-        // the fluid's volume swell (docs/model.md §3.8): the ring's free dimensions × λ_s in
-        // the gland designed for the dry ring (its depth, from groove_depth or the dry squeeze)
-        let swollen = swell.map_or(String::new(), |s| {
-            let l = s.linear_stretch();
-            design.ring.cross_section *= l;
-            design.ring.cross_section_tolerance *= l;
-            design.ring.inner_diameter *= l;
-            design.ring.inner_diameter_tolerance *= l;
-            format!(
-                " (the ring swollen by the fluid's volume_swell of {} %: its free dimensions × {})",
-                show(100.0 * s.volume_change),
-                show(l)
-            )
-        });
-        let with_swell = |e: ScenarioError| match e {
-            ScenarioError::Invalid {
-                path,
-                line,
-                key,
-                message,
-            } => ScenarioError::Invalid {
-                path,
-                line,
-                key,
-                message: format!("{message}{swollen}"),
-            },
-            other => other,
-        };
+        let depth = gland.gland_depth(&mut design, seat.key)?;
+        let swollen = swell_ring(&mut design, swell);
         let installed = design.installed().map_err(|e| {
-            with_swell(self.gland_error(&e, depth_span.clone(), depth_key, table, locator_key))
+            with_swell(
+                self.gland_error(&e, depth.span.clone(), depth.key, table, seat.key),
+                &swollen,
+            )
         })?;
-
-        let mut warnings = Vec::new();
-        let range = design
-            .squeeze_range()
-            .map_err(|e| self.gland_error(&e, depth_span.clone(), depth_key, table, locator_key))?;
-        if range.min <= 0.0 {
-            warnings.push(
-                self.error(
-                    depth_span.clone(),
-                    depth_key,
-                    format!(
-                        "at the tolerance limits the squeeze falls to {} % (nominal {} %): the \
-                         cord may not touch both walls",
-                        show(100.0 * range.min),
-                        show(100.0 * range.nominal)
-                    ),
-                )
-                .to_string(),
-            );
-        }
-        let fill = design
-            .max_material_fill()
-            .map_err(|e| self.gland_error(&e, depth_span.clone(), depth_key, table, locator_key))?;
-        let width_span = raw
-            .groove_width
-            .as_ref()
-            .map_or(table.span(), Spanned::span);
-        let percent = |x: f64| show((1000.0 * x).round() / 10.0);
-        if fill > MAX_FILL_GUIDANCE || installed.fill > NOMINAL_FILL_GUIDANCE {
-            warnings.push(
-                self.error(
-                    width_span.clone(),
-                    GROOVE_WIDTH.key,
-                    format!(
-                        "gland fill {} % nominal, {} % at maximum material condition: above the \
-                         85 % nominal (O-Ring Supply Co.) or 90 % maximum-material (Parker, gland \
-                         overfill) guidance: little room for thermal expansion or swell{swollen}; \
-                         widen the groove [docs/model.md §6.2]",
-                        percent(installed.fill),
-                        percent(fill)
-                    ),
-                )
-                .to_string(),
-            );
-        } else if installed.fill < MIN_FILL_GUIDANCE {
-            warnings.push(
-                self.error(
-                    width_span,
-                    GROOVE_WIDTH.key,
-                    format!(
-                        "gland fill {} %: the ring fills less than half its groove (the usual \
-                         range is 65–85 %, O-Ring Supply Co.): it can shift and roll — is the \
-                         groove width or depth in the intended unit? [docs/model.md §6.2]",
-                        percent(installed.fill)
-                    ),
-                )
-                .to_string(),
-            );
-        }
-        if installed.stretch > MAX_STRETCH_GUIDANCE {
-            let span = match locator_key {
-                "seal.groove_outer_diameter" => raw.groove_outer_diameter.as_ref(),
-                "seal.groove_inner_diameter" => raw.groove_inner_diameter.as_ref(),
-                "seal.bore_diameter" => raw.bore_diameter.as_ref(),
-                "seal.rod_diameter" => raw.rod_diameter.as_ref(),
-                _ => None,
-            }
-            .map_or(table.span(), Spanned::span);
-            warnings.push(
-                self.error(
-                    span,
-                    locator_key,
-                    format!(
-                        "the ring is stretched {} % onto its seat, above the 5 % recommended \
-                         (Parker; Apple Rubber: more ages it faster and thins its cord): choose \
-                         a ring with a larger inside diameter [docs/model.md §6.2]",
-                        percent(installed.stretch)
-                    ),
-                )
-                .to_string(),
-            );
-        }
+        let warnings = gland.warnings(&design, &installed, &depth, seat.key, &swollen)?;
 
         let energisation_factor = self
             .optional(raw.energisation_factor.as_ref(), &ENERGISATION_FACTOR)?
@@ -510,25 +157,8 @@ impl Source<'_> {
             Some(q) => self.absolute_temperature(q, "seal.installation_temperature")?,
             None => DEFAULT_INSTALLATION_TEMPERATURE,
         };
-        let backup_rings = match &raw.backup_rings {
-            None => 0,
-            Some(n) => match *n.get_ref() {
-                k @ 0..=2 => k as u8,
-                k => {
-                    return Err(self.error(
-                        n.span(),
-                        "seal.backup_rings",
-                        format!(
-                            "{k} back-up rings: give 0 (none), 1 (on the low-pressure side) or 2 \
-                             (one each side, for a pressure that may reverse) \
-                             [docs/model.md §6.3]"
-                        ),
-                    ));
-                }
-            },
-        };
         let gland = crate::gland::Gland {
-            backup_rings,
+            backup_rings: gland.backup_rings()?,
             ..design.gland()
         };
         Ok(SealSpec {
@@ -588,6 +218,515 @@ impl Source<'_> {
             GlandError::CannotSeat { .. } | GlandError::Overstretched { .. } => {
                 self.error(span_of(locator_key), locator_key, e.to_string())
             }
+        }
+    }
+}
+
+/// A `[seal]` table of a groove-seated ring being read: the file, the table, the gland's kind
+/// and its name in the messages ("a piston gland").
+struct GlandTable<'s, 'a> {
+    source: &'s Source<'a>,
+    table: &'s Spanned<RawSeal>,
+    raw: &'s RawSeal,
+    kind: GlandKind,
+    a_gland: String,
+}
+
+/// The clearance and the diameter that fixes the stretch.
+struct Seat {
+    /// The extrusion gap \[m\]: the flange separation of a face gland, half the diametral
+    /// clearance of a piston or rod gland.
+    extrusion_gap: f64,
+    locator: Locator,
+    /// The key of the seat's diameter (`seal.gland` for a free face-gland ring).
+    key: &'static str,
+}
+
+/// The key the gland depth came from (`groove_depth` or `squeeze`) and its value's span.
+struct DepthSource {
+    span: Range<usize>,
+    key: &'static str,
+}
+
+/// A fraction as a percentage rounded to 0.1 %.
+fn percent(x: f64) -> String {
+    show((1000.0 * x).round() / 10.0)
+}
+
+/// The fluid's volume swell (docs/model.md §3.8): the ring's free dimensions × λ_s in the gland
+/// designed for the dry ring (its depth, from groove_depth or the dry squeeze); the words the
+/// messages then add (empty without swell).
+fn swell_ring(design: &mut GlandDesign, swell: Option<&VolumeSwell>) -> String {
+    swell.map_or(String::new(), |s| {
+        let l = s.linear_stretch();
+        design.ring.cross_section *= l;
+        design.ring.cross_section_tolerance *= l;
+        design.ring.inner_diameter *= l;
+        design.ring.inner_diameter_tolerance *= l;
+        format!(
+            " (the ring swollen by the fluid's volume_swell of {} %: its free dimensions × {})",
+            show(100.0 * s.volume_change),
+            show(l)
+        )
+    })
+}
+
+/// `e` with the swell's words (`swollen`) after its message.
+fn with_swell(e: ScenarioError, swollen: &str) -> ScenarioError {
+    match e {
+        ScenarioError::Invalid {
+            path,
+            line,
+            key,
+            message,
+        } => ScenarioError::Invalid {
+            path,
+            line,
+            key,
+            message: format!("{message}{swollen}"),
+        },
+        other => other,
+    }
+}
+
+impl GlandTable<'_, '_> {
+    /// `present`, a key this gland does not take, refused with the keys it takes `instead`.
+    fn refuse(
+        &self,
+        present: &Option<Quantity>,
+        key: &str,
+        instead: &str,
+    ) -> Result<(), ScenarioError> {
+        match present {
+            Some(q) => Err(self.source.error(
+                q.span(),
+                &format!("seal.{key}"),
+                format!("not a key of {}, which takes {instead}", self.a_gland),
+            )),
+            None => Ok(()),
+        }
+    }
+
+    /// `key`, which this gland needs for `what`, missing from the table.
+    fn missing(&self, key: &str, what: &str) -> ScenarioError {
+        self.source.error(
+            self.table.span(),
+            &format!("seal.{key}"),
+            format!(
+                "missing key `{key}` in [seal]: {} needs {what}",
+                self.a_gland
+            ),
+        )
+    }
+
+    /// `mean_diameter` is refused: it follows from the ring stretched onto its seat.
+    fn refuse_mean_diameter(&self) -> Result<(), ScenarioError> {
+        if let Some(q) = &self.raw.mean_diameter {
+            return Err(self.source.error(
+                q.span(),
+                "seal.mean_diameter",
+                format!(
+                    "not a key of a groove-seated ring ({}): its mean diameter follows \
+                     from the ring (size, or cross_section and inner_diameter) stretched onto its \
+                     seat; remove mean_diameter, or remove gland for a ring squeezed between \
+                     plates",
+                    self.a_gland
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    /// The ring: `size`, or `cross_section` and `inner_diameter`.
+    fn ring(&self) -> Result<Ring, ScenarioError> {
+        let raw = self.raw;
+        Ok(match (&raw.size, &raw.cross_section, &raw.inner_diameter) {
+            (Some(size), cs, id) => {
+                for (present, key) in [(cs, "cross_section"), (id, "inner_diameter")] {
+                    if let Some(q) = present {
+                        return Err(self.source.error(
+                            q.span(),
+                            &format!("seal.{key}"),
+                            format!(
+                                "size ({}) gives the ring's dimensions; remove {key} (or remove \
+                                 size and give cross_section and inner_diameter)",
+                                size.get_ref()
+                            ),
+                        ));
+                    }
+                }
+                as568::lookup(size.get_ref())
+                    .map_err(|e| self.source.error(size.span(), "seal.size", e.to_string()))?
+                    .ring()
+            }
+            (None, Some(cs), Some(id)) => Ring {
+                inner_diameter: self.source.quantity(id, &INNER_DIAMETER)?,
+                inner_diameter_tolerance: 0.0,
+                cross_section: self.source.quantity(cs, &CROSS_SECTION)?,
+                cross_section_tolerance: 0.0,
+            },
+            (None, Some(_), None) => {
+                return Err(self.missing(
+                    "inner_diameter",
+                    "the ring's free inside diameter with its cross_section (or a size such as \
+                     \"AS568-214\")",
+                ));
+            }
+            (None, None, _) => {
+                return Err(self.missing(
+                    "size",
+                    "its ring: a size such as \"AS568-214\", or cross_section and \
+                     inner_diameter",
+                ));
+            }
+        })
+    }
+
+    /// The clearance and the diameter that fixes the stretch, by the gland's kind.
+    fn seat(&self) -> Result<Seat, ScenarioError> {
+        match self.kind {
+            GlandKind::Face => self.face_seat(),
+            GlandKind::Piston | GlandKind::Rod => self.radial_seat(),
+        }
+    }
+
+    /// A face gland: `extrusion_gap` (default 0) and the groove wall the ring rests on.
+    fn face_seat(&self) -> Result<Seat, ScenarioError> {
+        let raw = self.raw;
+        self.refuse(
+            &raw.diametral_clearance,
+            "diametral_clearance",
+            "extrusion_gap (the flange separation, default 0)",
+        )?;
+        self.refuse(
+            &raw.bore_diameter,
+            "bore_diameter",
+            "groove_outer_diameter or groove_inner_diameter",
+        )?;
+        self.refuse(
+            &raw.rod_diameter,
+            "rod_diameter",
+            "groove_outer_diameter or groove_inner_diameter",
+        )?;
+        let gap = self
+            .source
+            .optional(raw.extrusion_gap.as_ref(), &EXTRUSION_GAP)?
+            .unwrap_or(0.0);
+        let (locator, key) = match (&raw.groove_outer_diameter, &raw.groove_inner_diameter) {
+            (Some(_), Some(q)) => {
+                return Err(self.source.error(
+                    q.span(),
+                    GROOVE_INNER_DIAMETER.key,
+                    "the ring rests on one wall: give groove_outer_diameter (pressure \
+                     inside: the ring's OD on the outer wall) or groove_inner_diameter \
+                     (pressure outside: its ID on the inner wall), not both",
+                ));
+            }
+            (Some(q), None) => (
+                Locator::GrooveOuter(self.source.quantity(q, &GROOVE_OUTER_DIAMETER)?),
+                GROOVE_OUTER_DIAMETER.key,
+            ),
+            (None, Some(q)) => (
+                Locator::GrooveInner(self.source.quantity(q, &GROOVE_INNER_DIAMETER)?),
+                GROOVE_INNER_DIAMETER.key,
+            ),
+            (None, None) => (Locator::Free, "seal.gland"),
+        };
+        Ok(Seat {
+            extrusion_gap: gap,
+            locator,
+            key,
+        })
+    }
+
+    /// A piston or rod gland: `diametral_clearance` (the extrusion gap is half of it) and the
+    /// bore or rod diameter the ring is stretched on.
+    fn radial_seat(&self) -> Result<Seat, ScenarioError> {
+        let (raw, kind) = (self.raw, self.kind);
+        self.refuse(
+            &raw.extrusion_gap,
+            "extrusion_gap",
+            "diametral_clearance (the extrusion gap is half of it)",
+        )?;
+        for (present, key) in [
+            (&raw.groove_outer_diameter, "groove_outer_diameter"),
+            (&raw.groove_inner_diameter, "groove_inner_diameter"),
+        ] {
+            self.refuse(
+                present,
+                key,
+                if kind == GlandKind::Piston {
+                    "bore_diameter"
+                } else {
+                    "rod_diameter"
+                },
+            )?;
+        }
+        let clearance = match &raw.diametral_clearance {
+            Some(q) => self.source.quantity(q, &DIAMETRAL_CLEARANCE)?,
+            None => {
+                return Err(self.missing(
+                    "diametral_clearance",
+                    "the diametral clearance (bore minus piston, or housing bore minus \
+                     rod; 0 for none), which decides extrusion",
+                ));
+            }
+        };
+        let (own, other, field) = if kind == GlandKind::Piston {
+            (&raw.bore_diameter, &raw.rod_diameter, &BORE_DIAMETER)
+        } else {
+            (&raw.rod_diameter, &raw.bore_diameter, &ROD_DIAMETER)
+        };
+        let own_key = field.key.trim_start_matches("seal.");
+        self.refuse(
+            other,
+            if kind == GlandKind::Piston {
+                "rod_diameter"
+            } else {
+                "bore_diameter"
+            },
+            own_key,
+        )?;
+        let diameter = match own {
+            Some(q) => self.source.quantity(q, field)?,
+            None => {
+                return Err(self.missing(
+                    own_key,
+                    "the diameter the ring is stretched on (the groove bottom is \
+                     bore − 2·groove_depth for a piston, the ring sits on the rod of a \
+                     rod gland)",
+                ));
+            }
+        };
+        let locator = if kind == GlandKind::Piston {
+            Locator::Bore(diameter)
+        } else {
+            Locator::Rod(diameter)
+        };
+        Ok(Seat {
+            extrusion_gap: 0.5 * clearance,
+            locator,
+            key: field.key,
+        })
+    }
+
+    /// `groove_width` (required).
+    fn groove_width(&self) -> Result<f64, ScenarioError> {
+        match &self.raw.groove_width {
+            Some(q) => self.source.quantity(q, &GROOVE_WIDTH),
+            None => Err(self.missing("groove_width", "the groove's width (for the gland fill)")),
+        }
+    }
+
+    /// The gland depth h of `design`, from `groove_depth` (with its tolerance) or from
+    /// `squeeze`; a face gland's depth includes the flange separation.
+    fn gland_depth(
+        &self,
+        design: &mut GlandDesign,
+        locator_key: &str,
+    ) -> Result<DepthSource, ScenarioError> {
+        let raw = self.raw;
+        let gap_in_depth = if self.kind == GlandKind::Face {
+            design.extrusion_gap
+        } else {
+            0.0
+        };
+        let depth = match (&raw.groove_depth, &raw.squeeze) {
+            (Some(_), Some(s)) => {
+                return Err(self.source.error(
+                    s.span(),
+                    SQUEEZE.key,
+                    "squeeze and groove_depth are two sources of truth for one number: give \
+                     groove_depth (the squeeze then follows from the ring) or squeeze (the \
+                     depth then follows), not both",
+                ));
+            }
+            (Some(q), None) => {
+                let depth = self.source.quantity(q, &GROOVE_DEPTH)?;
+                design.gland_depth = depth + gap_in_depth;
+                design.gland_depth_tolerance = self.depth_tolerance(depth)?;
+                DepthSource {
+                    span: q.span(),
+                    key: GROOVE_DEPTH.key,
+                }
+            }
+            (None, Some(s)) => {
+                if let Some(t) = &raw.groove_depth_tolerance {
+                    return Err(self.source.error(
+                        t.span(),
+                        GROOVE_DEPTH_TOLERANCE.key,
+                        "applies to groove_depth, which squeeze replaces here; remove it (or \
+                         give groove_depth instead of squeeze)",
+                    ));
+                }
+                let squeeze = self.source.quantity(s, &SQUEEZE)?;
+                design.gland_depth = design.depth_for_squeeze(squeeze).map_err(|e| {
+                    self.source
+                        .gland_error(&e, s.span(), SQUEEZE.key, self.table, locator_key)
+                })?;
+                DepthSource {
+                    span: s.span(),
+                    key: SQUEEZE.key,
+                }
+            }
+            (None, None) => {
+                return Err(self.missing(
+                    "groove_depth",
+                    "the depth the cord is squeezed into (or squeeze instead)",
+                ));
+            }
+        };
+        if self.kind == GlandKind::Face && design.gland_depth <= gap_in_depth {
+            // squeeze given: the implied groove depth would not be positive
+            return Err(self.source.error(
+                depth.span,
+                depth.key,
+                format!(
+                    "the squeeze implies a gland depth of {} m, not more than the flange \
+                     separation extrusion_gap ({} m): no groove is left",
+                    show(design.gland_depth),
+                    show(design.extrusion_gap)
+                ),
+            ));
+        }
+        Ok(depth)
+    }
+
+    /// `groove_depth_tolerance` (±, default 0), smaller than the groove's `depth`.
+    fn depth_tolerance(&self, depth: f64) -> Result<f64, ScenarioError> {
+        let Some(t) = &self.raw.groove_depth_tolerance else {
+            return Ok(0.0);
+        };
+        let tolerance = self.source.quantity(t, &GROOVE_DEPTH_TOLERANCE)?;
+        if tolerance >= depth {
+            return Err(self.source.error(
+                t.span(),
+                GROOVE_DEPTH_TOLERANCE.key,
+                format!(
+                    "must be smaller than groove_depth ({} m), got {} m",
+                    show(depth),
+                    show(tolerance)
+                ),
+            ));
+        }
+        Ok(tolerance)
+    }
+
+    /// The design's warnings, in order: the squeeze at the tolerance limits, the gland fill,
+    /// the stretch.
+    fn warnings(
+        &self,
+        design: &GlandDesign,
+        installed: &Installed,
+        depth: &DepthSource,
+        locator_key: &'static str,
+        swollen: &str,
+    ) -> Result<Vec<String>, ScenarioError> {
+        let at_depth = |e: &GlandError| {
+            self.source
+                .gland_error(e, depth.span.clone(), depth.key, self.table, locator_key)
+        };
+        let mut warnings = Vec::new();
+        let range = design.squeeze_range().map_err(|e| at_depth(&e))?;
+        if range.min <= 0.0 {
+            warnings.push(
+                self.source
+                    .error(
+                        depth.span.clone(),
+                        depth.key,
+                        format!(
+                            "at the tolerance limits the squeeze falls to {} % (nominal {} %): \
+                             the cord may not touch both walls",
+                            show(100.0 * range.min),
+                            show(100.0 * range.nominal)
+                        ),
+                    )
+                    .to_string(),
+            );
+        }
+        let fill = design.max_material_fill().map_err(|e| at_depth(&e))?;
+        warnings.extend(self.fill_warning(installed.fill, fill, swollen));
+        warnings.extend(self.stretch_warning(installed.stretch, locator_key));
+        Ok(warnings)
+    }
+
+    /// A gland fill above the guidance (`nominal` or at maximum material condition,
+    /// `max_material`) or below half the groove [docs/model.md §6.2].
+    fn fill_warning(&self, nominal: f64, max_material: f64, swollen: &str) -> Option<String> {
+        let width_span = self
+            .raw
+            .groove_width
+            .as_ref()
+            .map_or(self.table.span(), Spanned::span);
+        let message = if max_material > MAX_FILL_GUIDANCE || nominal > NOMINAL_FILL_GUIDANCE {
+            format!(
+                "gland fill {} % nominal, {} % at maximum material condition: above the \
+                 85 % nominal (O-Ring Supply Co.) or 90 % maximum-material (Parker, gland \
+                 overfill) guidance: little room for thermal expansion or swell{swollen}; \
+                 widen the groove [docs/model.md §6.2]",
+                percent(nominal),
+                percent(max_material)
+            )
+        } else if nominal < MIN_FILL_GUIDANCE {
+            format!(
+                "gland fill {} %: the ring fills less than half its groove (the usual \
+                 range is 65–85 %, O-Ring Supply Co.): it can shift and roll — is the \
+                 groove width or depth in the intended unit? [docs/model.md §6.2]",
+                percent(nominal)
+            )
+        } else {
+            return None;
+        };
+        Some(
+            self.source
+                .error(width_span, GROOVE_WIDTH.key, message)
+                .to_string(),
+        )
+    }
+
+    /// A ring stretched onto its seat (at `locator_key`) beyond the 5 % recommended.
+    fn stretch_warning(&self, stretch: f64, locator_key: &'static str) -> Option<String> {
+        let raw = self.raw;
+        let span = match locator_key {
+            "seal.groove_outer_diameter" => raw.groove_outer_diameter.as_ref(),
+            "seal.groove_inner_diameter" => raw.groove_inner_diameter.as_ref(),
+            "seal.bore_diameter" => raw.bore_diameter.as_ref(),
+            "seal.rod_diameter" => raw.rod_diameter.as_ref(),
+            _ => None,
+        }
+        .map_or(self.table.span(), Spanned::span);
+        (stretch > MAX_STRETCH_GUIDANCE).then(|| {
+            self.source
+                .error(
+                    span,
+                    locator_key,
+                    format!(
+                        "the ring is stretched {} % onto its seat, above the 5 % recommended \
+                         (Parker; Apple Rubber: more ages it faster and thins its cord): choose \
+                         a ring with a larger inside diameter [docs/model.md §6.2]",
+                        percent(stretch)
+                    ),
+                )
+                .to_string()
+        })
+    }
+
+    /// `backup_rings`: 0 (default), 1 or 2.
+    fn backup_rings(&self) -> Result<u8, ScenarioError> {
+        match &self.raw.backup_rings {
+            None => Ok(0),
+            Some(n) => match *n.get_ref() {
+                k @ 0..=2 => Ok(k as u8),
+                k => Err(self.source.error(
+                    n.span(),
+                    "seal.backup_rings",
+                    format!(
+                        "{k} back-up rings: give 0 (none), 1 (on the low-pressure side) or 2 \
+                         (one each side, for a pressure that may reverse) \
+                         [docs/model.md §6.3]"
+                    ),
+                )),
+            },
         }
     }
 }

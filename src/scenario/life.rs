@@ -271,172 +271,20 @@ impl Source<'_> {
     ) -> Result<SealSpec, ScenarioError> {
         let raw = table.get_ref();
         let kind = raw.kind.as_ref().map_or("flat", |k| k.get_ref().as_str());
-        // the kind with its article, for the messages (the other kinds are rejected below)
-        let a_seal = match kind {
-            "o-ring" => "an O-ring seal",
-            _ => "a flat seal",
-        };
-        let loading = match &raw.loading {
-            None => Loading::Displacement,
-            Some(l) => match l.get_ref().as_str() {
-                "displacement" => Loading::Displacement,
-                "force" => Loading::Force,
-                other => {
-                    return Err(self.error(
-                        l.span(),
-                        "seal.loading",
-                        format!(
-                            "must be \"displacement\" (fixed squeeze, e.g. an O-ring in a groove) \
-                             or \"force\" (fixed load, e.g. spring-loaded), got {other:?}"
-                        ),
-                    ));
-                }
+        let seal = SealTable {
+            source: self,
+            table,
+            raw,
+            // the kind with its article, for the messages (the other kinds are rejected below)
+            a_seal: match kind {
+                "o-ring" => "an O-ring seal",
+                _ => "a flat seal",
             },
         };
-        let required = |q: &Option<Quantity>, f: &Field, keys: &str| {
-            self.required(
-                q,
-                f,
-                table.span(),
-                &format!("in [seal] ({a_seal} needs {keys})"),
-            )
-        };
-        let foreign = |keys: &[(&Option<Quantity>, &str)], takes: &str| {
-            for (present, key) in keys {
-                if let Some(q) = present {
-                    return Err(self.error(
-                        q.span(),
-                        &format!("seal.{key}"),
-                        format!("not a key of {a_seal}, which takes {takes}"),
-                    ));
-                }
-            }
-            Ok(())
-        };
+        let loading = self.loading(raw)?;
         match kind {
-            "flat" => {
-                foreign(
-                    &[
-                        (&raw.cross_section, "cross_section"),
-                        (&raw.mean_diameter, "mean_diameter"),
-                        (&raw.squeeze, "squeeze"),
-                        (&raw.housing_expansion, "housing_expansion"),
-                        (&raw.installation_temperature, "installation_temperature"),
-                    ],
-                    FLAT_KEYS,
-                )?;
-                for (key, span) in [
-                    ("gland", raw.gland.as_ref().map(Spanned::span)),
-                    ("housing", raw.housing.as_ref().map(Spanned::span)),
-                ]
-                .into_iter()
-                .chain(super::gland::gland_only_keys(raw))
-                {
-                    if let Some(span) = span {
-                        return Err(self.error(
-                            span,
-                            &format!("seal.{key}"),
-                            format!("not a key of {a_seal}, which takes {FLAT_KEYS}"),
-                        ));
-                    }
-                }
-                Ok(SealSpec {
-                    geometry: SealGeometry::Flat {
-                        nominal_pressure: required(
-                            &raw.nominal_pressure,
-                            &NOMINAL_PRESSURE,
-                            FLAT_KEYS,
-                        )?,
-                        width: required(&raw.width, &WIDTH, FLAT_KEYS)?,
-                        length: required(&raw.length, &LENGTH, FLAT_KEYS)?,
-                    },
-                    gland: None,
-                    energisation_factor: 0.0,
-                    loading,
-                    housing_expansion: None,
-                    installation_temperature: None,
-                    fitting_temperature: None,
-                    design: None,
-                    warnings: Vec::new(),
-                    thickness: self.optional(raw.thickness.as_ref(), &THICKNESS)?,
-                })
-            }
-            "o-ring" => {
-                foreign(
-                    &[
-                        (&raw.nominal_pressure, "nominal_pressure"),
-                        (&raw.width, "width"),
-                        (&raw.length, "length"),
-                        (&raw.thickness, "thickness"),
-                    ],
-                    ORING_KEYS,
-                )?;
-                if let Some(gland) = &raw.gland {
-                    let kind = self.gland_kind(gland)?;
-                    return self.gland_seal(table, kind, gland.span(), loading, swell);
-                }
-                for (key, span) in super::gland::gland_only_keys(raw) {
-                    if let Some(span) = span {
-                        return Err(self.error(
-                            span,
-                            &format!("seal.{key}"),
-                            "only applies to a groove-seated ring: set gland = \"face\", \
-                             \"piston\" or \"rod\" (without gland the ring is squeezed \
-                             between plates, given by cross_section, mean_diameter and squeeze)",
-                        ));
-                    }
-                }
-                let cross_section = required(&raw.cross_section, &CROSS_SECTION, ORING_KEYS)?;
-                let mean_diameter = required(&raw.mean_diameter, &MEAN_DIAMETER, ORING_KEYS)?;
-                let squeeze = required(&raw.squeeze, &SQUEEZE, ORING_KEYS)?;
-                if mean_diameter <= cross_section {
-                    let span = raw
-                        .mean_diameter
-                        .as_ref()
-                        .map_or(table.span(), Spanned::span);
-                    return Err(self.error(
-                        span,
-                        MEAN_DIAMETER.key,
-                        format!(
-                            "must exceed the cross_section ({} m), got {} m",
-                            show(cross_section),
-                            show(mean_diameter)
-                        ),
-                    ));
-                }
-                let housing_expansion = self.housing_expansion(raw)?;
-                let installation_temperature = match &raw.installation_temperature {
-                    Some(q) if housing_expansion.is_none() => {
-                        return Err(self.error(
-                            q.span(),
-                            "seal.installation_temperature",
-                            "the thermal strain it is the reference of is modelled only with \
-                             housing or housing_expansion (or in a gland); set one \
-                             (housing_expansion = 0 for a housing that does not expand) or \
-                             remove installation_temperature",
-                        ));
-                    }
-                    Some(q) => Some(self.absolute_temperature(q, "seal.installation_temperature")?),
-                    None => None,
-                };
-                let geometry = SealGeometry::ORing {
-                    cross_section,
-                    mean_diameter,
-                    squeeze,
-                };
-                Ok(SealSpec {
-                    geometry: swell.map_or(geometry, |s| s.geometry(geometry)),
-                    gland: None,
-                    energisation_factor: 0.0,
-                    loading,
-                    housing_expansion,
-                    installation_temperature,
-                    fitting_temperature: installation_temperature,
-                    design: None,
-                    warnings: Vec::new(),
-                    thickness: None,
-                })
-            }
+            "flat" => seal.flat(loading),
+            "o-ring" => seal.o_ring(loading, swell),
             other => {
                 let span = raw.kind.as_ref().map_or(table.span(), Spanned::span);
                 Err(self.error(
@@ -445,6 +293,25 @@ impl Source<'_> {
                     format!("must be \"flat\" or \"o-ring\", got {other:?}"),
                 ))
             }
+        }
+    }
+
+    /// `seal.loading`: displacement (default) or force.
+    fn loading(&self, raw: &RawSeal) -> Result<Loading, ScenarioError> {
+        match &raw.loading {
+            None => Ok(Loading::Displacement),
+            Some(l) => match l.get_ref().as_str() {
+                "displacement" => Ok(Loading::Displacement),
+                "force" => Ok(Loading::Force),
+                other => Err(self.error(
+                    l.span(),
+                    "seal.loading",
+                    format!(
+                        "must be \"displacement\" (fixed squeeze, e.g. an O-ring in a groove) \
+                         or \"force\" (fixed load, e.g. spring-loaded), got {other:?}"
+                    ),
+                )),
+            },
         }
     }
 
@@ -1163,6 +1030,194 @@ impl ReferenceState {
     /// `v` counted at this state: the same moles `p_ref v/(R T_ref)` carry `p_ref v t/T_ref`.
     fn throughput(self, v: f64, t: f64) -> f64 {
         self.pressure * v * t / self.temperature
+    }
+}
+
+/// A `[seal]` table being read: the file, the table, and the seal's kind with its article for
+/// the messages ("a flat seal").
+struct SealTable<'s, 'a> {
+    source: &'s Source<'a>,
+    table: &'s Spanned<RawSeal>,
+    raw: &'s RawSeal,
+    a_seal: &'static str,
+}
+
+impl SealTable<'_, '_> {
+    /// The value of `q`, a key this seal needs (its kind's `keys` named when missing).
+    fn required(&self, q: &Option<Quantity>, f: &Field, keys: &str) -> Result<f64, ScenarioError> {
+        self.source.required(
+            q,
+            f,
+            self.table.span(),
+            &format!("in [seal] ({} needs {keys})", self.a_seal),
+        )
+    }
+
+    /// The first of `keys` present, refused: this seal `takes` other keys.
+    fn foreign(
+        &self,
+        keys: &[(&Option<Quantity>, &str)],
+        takes: &str,
+    ) -> Result<(), ScenarioError> {
+        for (present, key) in keys {
+            if let Some(q) = present {
+                return Err(self.source.error(
+                    q.span(),
+                    &format!("seal.{key}"),
+                    format!("not a key of {}, which takes {takes}", self.a_seal),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// A flat seal: `nominal_pressure`, `width`, `length`, optional `thickness`.
+    fn flat(&self, loading: Loading) -> Result<SealSpec, ScenarioError> {
+        let raw = self.raw;
+        self.foreign(
+            &[
+                (&raw.cross_section, "cross_section"),
+                (&raw.mean_diameter, "mean_diameter"),
+                (&raw.squeeze, "squeeze"),
+                (&raw.housing_expansion, "housing_expansion"),
+                (&raw.installation_temperature, "installation_temperature"),
+            ],
+            FLAT_KEYS,
+        )?;
+        for (key, span) in [
+            ("gland", raw.gland.as_ref().map(Spanned::span)),
+            ("housing", raw.housing.as_ref().map(Spanned::span)),
+        ]
+        .into_iter()
+        .chain(super::gland::gland_only_keys(raw))
+        {
+            if let Some(span) = span {
+                return Err(self.source.error(
+                    span,
+                    &format!("seal.{key}"),
+                    format!("not a key of {}, which takes {FLAT_KEYS}", self.a_seal),
+                ));
+            }
+        }
+        Ok(SealSpec {
+            geometry: SealGeometry::Flat {
+                nominal_pressure: self.required(
+                    &raw.nominal_pressure,
+                    &NOMINAL_PRESSURE,
+                    FLAT_KEYS,
+                )?,
+                width: self.required(&raw.width, &WIDTH, FLAT_KEYS)?,
+                length: self.required(&raw.length, &LENGTH, FLAT_KEYS)?,
+            },
+            gland: None,
+            energisation_factor: 0.0,
+            loading,
+            housing_expansion: None,
+            installation_temperature: None,
+            fitting_temperature: None,
+            design: None,
+            warnings: Vec::new(),
+            thickness: self.source.optional(raw.thickness.as_ref(), &THICKNESS)?,
+        })
+    }
+
+    /// An O-ring: seated in a gland (`gland`), or squeezed between plates.
+    fn o_ring(
+        &self,
+        loading: Loading,
+        swell: Option<&VolumeSwell>,
+    ) -> Result<SealSpec, ScenarioError> {
+        let raw = self.raw;
+        self.foreign(
+            &[
+                (&raw.nominal_pressure, "nominal_pressure"),
+                (&raw.width, "width"),
+                (&raw.length, "length"),
+                (&raw.thickness, "thickness"),
+            ],
+            ORING_KEYS,
+        )?;
+        if let Some(gland) = &raw.gland {
+            let kind = self.source.gland_kind(gland)?;
+            return self
+                .source
+                .gland_seal(self.table, kind, gland.span(), loading, swell);
+        }
+        for (key, span) in super::gland::gland_only_keys(raw) {
+            if let Some(span) = span {
+                return Err(self.source.error(
+                    span,
+                    &format!("seal.{key}"),
+                    "only applies to a groove-seated ring: set gland = \"face\", \
+                     \"piston\" or \"rod\" (without gland the ring is squeezed \
+                     between plates, given by cross_section, mean_diameter and squeeze)",
+                ));
+            }
+        }
+        self.plate_o_ring(loading, swell)
+    }
+
+    /// An O-ring between plates: `cross_section`, `mean_diameter` and `squeeze`, with the
+    /// thermal strain's `housing` and `installation_temperature`.
+    fn plate_o_ring(
+        &self,
+        loading: Loading,
+        swell: Option<&VolumeSwell>,
+    ) -> Result<SealSpec, ScenarioError> {
+        let raw = self.raw;
+        let cross_section = self.required(&raw.cross_section, &CROSS_SECTION, ORING_KEYS)?;
+        let mean_diameter = self.required(&raw.mean_diameter, &MEAN_DIAMETER, ORING_KEYS)?;
+        let squeeze = self.required(&raw.squeeze, &SQUEEZE, ORING_KEYS)?;
+        if mean_diameter <= cross_section {
+            let span = raw
+                .mean_diameter
+                .as_ref()
+                .map_or(self.table.span(), Spanned::span);
+            return Err(self.source.error(
+                span,
+                MEAN_DIAMETER.key,
+                format!(
+                    "must exceed the cross_section ({} m), got {} m",
+                    show(cross_section),
+                    show(mean_diameter)
+                ),
+            ));
+        }
+        let housing_expansion = self.source.housing_expansion(raw)?;
+        let installation_temperature = match &raw.installation_temperature {
+            Some(q) if housing_expansion.is_none() => {
+                return Err(self.source.error(
+                    q.span(),
+                    "seal.installation_temperature",
+                    "the thermal strain it is the reference of is modelled only with \
+                     housing or housing_expansion (or in a gland); set one \
+                     (housing_expansion = 0 for a housing that does not expand) or \
+                     remove installation_temperature",
+                ));
+            }
+            Some(q) => Some(
+                self.source
+                    .absolute_temperature(q, "seal.installation_temperature")?,
+            ),
+            None => None,
+        };
+        let geometry = SealGeometry::ORing {
+            cross_section,
+            mean_diameter,
+            squeeze,
+        };
+        Ok(SealSpec {
+            geometry: swell.map_or(geometry, |s| s.geometry(geometry)),
+            gland: None,
+            energisation_factor: 0.0,
+            loading,
+            housing_expansion,
+            installation_temperature,
+            fitting_temperature: installation_temperature,
+            design: None,
+            warnings: Vec::new(),
+            thickness: None,
+        })
     }
 }
 

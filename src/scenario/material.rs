@@ -1136,9 +1136,22 @@ ageing = "test: ageing"
         );
     }
 
+    /// Each case replaces `from` by `to` in [`TEST_RUBBER`]; the error must name the file, the
+    /// line and the key, and contain `expected`.
+    fn assert_bounds(cases: &[(&str, &str, &str)]) {
+        for (from, to, expected) in cases {
+            let e = error(&with(from, to));
+            assert!(
+                e.starts_with("materials/x.toml:") && e.contains(expected),
+                "{from} → {to}:\n  got      {e}\n  expected {expected}"
+            );
+        }
+    }
+
+    /// The Poisson ratio, the relaxed modulus and the Prony terms.
     #[test]
-    fn every_bound_is_checked_with_file_line_and_key() {
-        let cases: &[(&str, &str, &str)] = &[
+    fn elastic_and_prony_bounds_are_checked_with_file_line_and_key() {
+        assert_bounds(&[
             (
                 "poisson_ratio = 0.5",
                 "poisson_ratio = 0.6",
@@ -1179,6 +1192,13 @@ ageing = "test: ageing"
                 "\"1 m\"",
                 ":6: material.prony[0].tau: expected a time",
             ),
+        ]);
+    }
+
+    /// The glass transition and the thermal expansion.
+    #[test]
+    fn temperature_and_expansion_bounds_are_checked_with_file_line_and_key() {
+        assert_bounds(&[
             ("\"-30 C\"", "\"-300 C\"", ":7: material.glass_transition: "),
             (
                 "\"-30 C\"",
@@ -1200,6 +1220,13 @@ ageing = "test: ageing"
                 "0",
                 ":8: material.thermal_expansion: must be positive, got 0 1/K",
             ),
+        ]);
+    }
+
+    /// A WLF shift: its kind, reference, C1 and C2, and no foreign or missing key.
+    #[test]
+    fn wlf_shift_bounds_are_checked_with_file_line_and_key() {
+        assert_bounds(&[
             (
                 "kind = \"wlf\"",
                 "kind = \"vft\"",
@@ -1250,6 +1277,13 @@ ageing = "test: ageing"
                 "",
                 ":9: material.shift.c2: missing key `c2` (a WLF shift needs reference_temperature, c1 and c2)",
             ),
+        ]);
+    }
+
+    /// The ageing constants.
+    #[test]
+    fn ageing_bounds_are_checked_with_file_line_and_key() {
+        assert_bounds(&[
             (
                 "activation_energy = \"90 kJ/mol\"",
                 "activation_energy = \"-90 kJ/mol\"",
@@ -1270,14 +1304,12 @@ ageing = "test: ageing"
                 "\"-500 F\"",
                 ":17: material.ageing.reference_temperature: ",
             ),
-        ];
-        for (from, to, expected) in cases {
-            let e = error(&with(from, to));
-            assert!(
-                e.starts_with("materials/x.toml:") && e.contains(expected),
-                "{from} → {to}:\n  got      {e}\n  expected {expected}"
-            );
-        }
+        ]);
+    }
+
+    /// An Arrhenius shift takes its own keys only, with a positive activation energy.
+    #[test]
+    fn arrhenius_shift_keys_are_checked_with_file_line_and_key() {
         let arrhenius = with(
             "kind = \"wlf\"\nreference_temperature = \"23 C\"\nc1 = 8.86\nc2 = \"101.6 K\"",
             "kind = \"arrhenius\"\nreference_temperature = \"23 C\"\nactivation_energy = 0\nc1 = 1",
@@ -1292,7 +1324,11 @@ ageing = "test: ageing"
             e.contains(":12: material.shift.activation_energy: must be positive, got 0 J/mol"),
             "{e}"
         );
-        // the index names the offending term
+    }
+
+    /// A Prony term's error names the offending term by its index.
+    #[test]
+    fn prony_errors_name_the_term() {
         let two = with(
             "prony = [ { modulus = \"6 MPa\", tau = \"1000 h\" } ]",
             "prony = [\n  { modulus = \"6 MPa\", tau = \"1000 h\" },\n  { modulus = \"1 MPa\", tau = \"10 s\" },\n  { modulus = \"1 MPa\", tau = \"-1 s\" },\n]",
@@ -1455,9 +1491,11 @@ ageing = "test: ageing"
     /// and every malformed entry refused naming the file, line and key.
     #[test]
     fn compatibility_ratings_are_read_written_and_checked() {
-        let table = "[material.compatibility]\n\
-                     water = { rating = \"A\", source = \"test chart, row water\" }\n\
-                     mineral-oil = { rating = \"X\", source = \"test chart, row oil\" }\n";
+        let table = concat!(
+            "[material.compatibility]\n",
+            "water = { rating = \"A\", source = \"test chart, row water\" }\n",
+            "mineral-oil = { rating = \"X\", source = \"test chart, row oil\" }\n",
+        );
         let text = format!("{TEST_RUBBER}{table}");
         let m = parse(&text).unwrap();
         let found: Vec<_> = m

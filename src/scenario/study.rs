@@ -202,153 +202,14 @@ impl Study {
             source.error(raw.base.span(), "base", e.message().to_owned())
         })?;
 
-        let design = match Design::ALL
-            .into_iter()
-            .find(|d| d.name() == raw.design.get_ref())
-        {
-            Some(d) => d,
-            None => {
-                return Err(source.error(
-                    raw.design.span(),
-                    "design",
-                    format!(
-                        "unknown design \"{}\": one of grid, monte-carlo, latin-hypercube",
-                        raw.design.get_ref()
-                    ),
-                ));
-            }
-        };
-        let count = |v: &Option<Spanned<i64>>, key: &str, default: i64, max: i64| match v {
-            None => Ok(default as usize),
-            Some(s) if (1..=max).contains(s.get_ref()) => Ok(*s.get_ref() as usize),
-            Some(s) => Err(source.error(
-                s.span(),
-                key,
-                format!(
-                    "must be a whole number from 1 to {max}, got {}",
-                    s.get_ref()
-                ),
-            )),
-        };
-        let samples = match (&raw.samples, design) {
-            (None, Design::MonteCarlo | Design::LatinHypercube) => {
-                return Err(source.error(
-                    raw.design.span(),
-                    "samples",
-                    format!("a {} design needs `samples`", design.name()),
-                ));
-            }
-            (Some(s), Design::Grid) => {
-                return Err(source.error(
-                    s.span(),
-                    "samples",
-                    "a grid's cases are the product of its levels: give `levels` (for \
-                     continuous inputs) or lists, not `samples`",
-                ));
-            }
-            _ => count(&raw.samples, "samples", 1, 10_000_000)?,
-        };
-        let levels = count(&raw.levels, "levels", 3, 1000)?;
-        let seed = match &raw.seed {
-            None => 0,
-            Some(s) if *s.get_ref() >= 0 => *s.get_ref() as u64,
-            Some(s) => return Err(source.error(s.span(), "seed", "must be ≥ 0")),
-        };
-        let confidence = match &raw.confidence {
-            None => 0.95,
-            Some(c) if *c.get_ref() > 0.5 && *c.get_ref() < 1.0 => *c.get_ref(),
-            Some(c) => {
-                return Err(source.error(
-                    c.span(),
-                    "confidence",
-                    "must lie strictly between 0.5 and 1",
-                ));
-            }
-        };
-        let report_times = match &raw.report_times {
-            None => DEFAULT_REPORT_TIMES.to_vec(),
-            Some(list) => list
-                .get_ref()
-                .iter()
-                .map(|t| {
-                    units::parse_quantity(t.get_ref(), Dimension::TIME)
-                        .ok()
-                        .filter(|v| *v > 0.0)
-                        .ok_or_else(|| {
-                            source.error(
-                                t.span(),
-                                "report_times",
-                                format!("\"{}\" is not a time > 0 (e.g. \"1 year\")", t.get_ref()),
-                            )
-                        })
-                })
-                .collect::<Result<_, _>>()?,
-        };
-
-        // The inputs in file order.
-        let mut entries: Vec<(&String, &Spanned<toml::Value>)> =
-            raw.vary.get_ref().iter().collect();
-        entries.sort_by_key(|(_, v)| v.span().start);
-        if entries.is_empty() {
-            return Err(source.error(raw.vary.span(), "vary", "names no input to vary"));
-        }
-        let mut inputs = Vec::new();
-        let mut distributions = Vec::new();
-        for (key, value) in entries {
-            let entry = Entry {
-                source: &source,
-                key,
-                span: value.span(),
-                base: &base,
-            };
-            let (input, distribution) = entry.parse(value.get_ref())?;
-            inputs.push(input);
-            distributions.push(distribution);
-        }
-        let correlation = match &raw.correlations {
-            None => None,
-            Some(list) => {
-                if design != Design::MonteCarlo {
-                    return Err(source.error(
-                        list.span(),
-                        "correlations",
-                        "correlated inputs need design = \"monte-carlo\"",
-                    ));
-                }
-                let mut pairs = Vec::new();
-                for c in list.get_ref() {
-                    let bad = |m: String| source.error(c.span(), "correlations", m);
-                    let raw = c.get_ref();
-                    let index = |name: &String| {
-                        inputs
-                            .iter()
-                            .position(|i: &StudyInput| i.key == *name)
-                            .ok_or_else(|| bad(format!("\"{name}\" is not an input in [vary]")))
-                    };
-                    let [a, b] = raw.inputs.as_slice() else {
-                        return Err(bad("`inputs` names two inputs".into()));
-                    };
-                    let (i, j) = (index(a)?, index(b)?);
-                    if i == j {
-                        return Err(bad("`inputs` names two different inputs".into()));
-                    }
-                    if raw.spearman.is_nan() || raw.spearman.abs() >= 1.0 {
-                        return Err(bad("`spearman` must lie strictly between −1 and 1".into()));
-                    }
-                    if pairs
-                        .iter()
-                        .any(|&(p, q, _)| (p, q) == (i, j) || (p, q) == (j, i))
-                    {
-                        return Err(bad(format!("{a} and {b} are correlated twice")));
-                    }
-                    pairs.push((i, j, raw.spearman));
-                }
-                Some(
-                    crate::study::design::correlation_factor(inputs.len(), &pairs)
-                        .map_err(|m| source.error(list.span(), "correlations", m))?,
-                )
-            }
-        };
+        let design = raw.design(&source)?;
+        let samples = raw.samples(&source, design)?;
+        let levels = count(&source, &raw.levels, "levels", 3, 1000)?;
+        let seed = raw.seed(&source)?;
+        let confidence = raw.confidence(&source)?;
+        let report_times = raw.report_times(&source)?;
+        let (inputs, distributions) = raw.inputs(&source, &base)?;
+        let correlation = raw.correlation(&source, design, &inputs)?;
         let plan = Plan {
             design,
             inputs: distributions,
@@ -364,12 +225,7 @@ impl Study {
                 format!("the grid has {} cases; at most 10 000 000", plan.cases()),
             ));
         }
-        // sealsim's version, the study and its base, each closed by a 0 byte
-        let mut hash = crate::math::fnv::Fnv1a::default();
-        for part in [env!("CARGO_PKG_VERSION"), text, &base_text] {
-            hash.bytes(part.as_bytes()).bytes(&[0]);
-        }
-        let fingerprint = format!("{:016x}", hash.0);
+        let fingerprint = fingerprint(text, &base_text);
         let study = Study {
             name: raw
                 .name
@@ -530,6 +386,211 @@ impl Study {
     pub fn text(&self) -> &str {
         &self.text
     }
+}
+
+/// A hash of sealsim's version, the study and its base, each closed by a 0 byte: shards of
+/// different studies never merge.
+fn fingerprint(text: &str, base_text: &str) -> String {
+    let mut hash = crate::math::fnv::Fnv1a::default();
+    for part in [env!("CARGO_PKG_VERSION"), text, base_text] {
+        hash.bytes(part.as_bytes()).bytes(&[0]);
+    }
+    format!("{:016x}", hash.0)
+}
+
+/// A count key (`samples`, `levels`): a whole number from 1 to `max`, `default` when absent.
+fn count(
+    source: &Source,
+    v: &Option<Spanned<i64>>,
+    key: &str,
+    default: i64,
+    max: i64,
+) -> Result<usize, ScenarioError> {
+    match v {
+        None => Ok(default as usize),
+        Some(s) if (1..=max).contains(s.get_ref()) => Ok(*s.get_ref() as usize),
+        Some(s) => Err(source.error(
+            s.span(),
+            key,
+            format!(
+                "must be a whole number from 1 to {max}, got {}",
+                s.get_ref()
+            ),
+        )),
+    }
+}
+
+impl RawStudy {
+    /// `design`: grid, monte-carlo or latin-hypercube.
+    fn design(&self, source: &Source) -> Result<Design, ScenarioError> {
+        match Design::ALL
+            .into_iter()
+            .find(|d| d.name() == self.design.get_ref())
+        {
+            Some(d) => Ok(d),
+            None => Err(source.error(
+                self.design.span(),
+                "design",
+                format!(
+                    "unknown design \"{}\": one of grid, monte-carlo, latin-hypercube",
+                    self.design.get_ref()
+                ),
+            )),
+        }
+    }
+
+    /// `samples`: required by a sampling design, refused by a grid.
+    fn samples(&self, source: &Source, design: Design) -> Result<usize, ScenarioError> {
+        match (&self.samples, design) {
+            (None, Design::MonteCarlo | Design::LatinHypercube) => Err(source.error(
+                self.design.span(),
+                "samples",
+                format!("a {} design needs `samples`", design.name()),
+            )),
+            (Some(s), Design::Grid) => Err(source.error(
+                s.span(),
+                "samples",
+                "a grid's cases are the product of its levels: give `levels` (for \
+                 continuous inputs) or lists, not `samples`",
+            )),
+            _ => count(source, &self.samples, "samples", 1, 10_000_000),
+        }
+    }
+
+    /// `seed` (≥ 0, default 0).
+    fn seed(&self, source: &Source) -> Result<u64, ScenarioError> {
+        match &self.seed {
+            None => Ok(0),
+            Some(s) if *s.get_ref() >= 0 => Ok(*s.get_ref() as u64),
+            Some(s) => Err(source.error(s.span(), "seed", "must be ≥ 0")),
+        }
+    }
+
+    /// `confidence` (strictly between 0.5 and 1, default 0.95).
+    fn confidence(&self, source: &Source) -> Result<f64, ScenarioError> {
+        match &self.confidence {
+            None => Ok(0.95),
+            Some(c) if *c.get_ref() > 0.5 && *c.get_ref() < 1.0 => Ok(*c.get_ref()),
+            Some(c) => Err(source.error(
+                c.span(),
+                "confidence",
+                "must lie strictly between 0.5 and 1",
+            )),
+        }
+    }
+
+    /// `report_times` (times > 0), [`DEFAULT_REPORT_TIMES`] when absent.
+    fn report_times(&self, source: &Source) -> Result<Vec<f64>, ScenarioError> {
+        match &self.report_times {
+            None => Ok(DEFAULT_REPORT_TIMES.to_vec()),
+            Some(list) => list
+                .get_ref()
+                .iter()
+                .map(|t| {
+                    units::parse_quantity(t.get_ref(), Dimension::TIME)
+                        .ok()
+                        .filter(|v| *v > 0.0)
+                        .ok_or_else(|| {
+                            source.error(
+                                t.span(),
+                                "report_times",
+                                format!("\"{}\" is not a time > 0 (e.g. \"1 year\")", t.get_ref()),
+                            )
+                        })
+                })
+                .collect(),
+        }
+    }
+
+    /// The inputs of `[vary]` in file order, with their distributions; `base` is the base
+    /// scenario's table.
+    fn inputs(
+        &self,
+        source: &Source,
+        base: &toml::Table,
+    ) -> Result<(Vec<StudyInput>, Vec<Distribution>), ScenarioError> {
+        let mut entries: Vec<(&String, &Spanned<toml::Value>)> =
+            self.vary.get_ref().iter().collect();
+        entries.sort_by_key(|(_, v)| v.span().start);
+        if entries.is_empty() {
+            return Err(source.error(self.vary.span(), "vary", "names no input to vary"));
+        }
+        let mut inputs = Vec::new();
+        let mut distributions = Vec::new();
+        for (key, value) in entries {
+            let entry = Entry {
+                source,
+                key,
+                span: value.span(),
+                base,
+            };
+            let (input, distribution) = entry.parse(value.get_ref())?;
+            inputs.push(input);
+            distributions.push(distribution);
+        }
+        Ok((inputs, distributions))
+    }
+
+    /// `correlations` (a Monte Carlo design's only) → the correlation factor of `inputs`.
+    fn correlation(
+        &self,
+        source: &Source,
+        design: Design,
+        inputs: &[StudyInput],
+    ) -> Result<Option<Vec<f64>>, ScenarioError> {
+        let Some(list) = &self.correlations else {
+            return Ok(None);
+        };
+        if design != Design::MonteCarlo {
+            return Err(source.error(
+                list.span(),
+                "correlations",
+                "correlated inputs need design = \"monte-carlo\"",
+            ));
+        }
+        let mut pairs = Vec::new();
+        for c in list.get_ref() {
+            pairs.push(correlation_pair(source, c, inputs, &pairs)?);
+        }
+        crate::study::design::correlation_factor(inputs.len(), &pairs)
+            .map(Some)
+            .map_err(|m| source.error(list.span(), "correlations", m))
+    }
+}
+
+/// One `correlations` entry: the indices of its two inputs among `inputs` and its Spearman
+/// coefficient, checked against the `pairs` before it.
+fn correlation_pair(
+    source: &Source,
+    c: &Spanned<RawCorrelation>,
+    inputs: &[StudyInput],
+    pairs: &[(usize, usize, f64)],
+) -> Result<(usize, usize, f64), ScenarioError> {
+    let bad = |m: String| source.error(c.span(), "correlations", m);
+    let raw = c.get_ref();
+    let index = |name: &String| {
+        inputs
+            .iter()
+            .position(|i: &StudyInput| i.key == *name)
+            .ok_or_else(|| bad(format!("\"{name}\" is not an input in [vary]")))
+    };
+    let [a, b] = raw.inputs.as_slice() else {
+        return Err(bad("`inputs` names two inputs".into()));
+    };
+    let (i, j) = (index(a)?, index(b)?);
+    if i == j {
+        return Err(bad("`inputs` names two different inputs".into()));
+    }
+    if raw.spearman.is_nan() || raw.spearman.abs() >= 1.0 {
+        return Err(bad("`spearman` must lie strictly between −1 and 1".into()));
+    }
+    if pairs
+        .iter()
+        .any(|&(p, q, _)| (p, q) == (i, j) || (p, q) == (j, i))
+    {
+        return Err(bad(format!("{a} and {b} are correlated twice")));
+    }
+    Ok((i, j, raw.spearman))
 }
 
 /// Sets `key` (dotted) in `table`, creating tables on the way.

@@ -397,25 +397,13 @@ impl Source<'_> {
         let fluid = self.fluid(&raw.fluid)?;
         let seal = self.seal(&raw.seal, swell.as_ref().map(|s| &s.0))?;
         let installation_time = self.installation_time(&raw.seal)?;
-        let (groove, groove_notes) =
-            self.groove_surface(raw.groove_surface.as_ref(), seal.gland.is_some())?;
-        notes.extend(groove_notes);
-        let (spectrum, groove) = match &raw.rubber_surface {
-            None => (spectrum, groove),
-            Some(table) => {
-                let (rubber, rubber_notes) = self.rubber_surface(table, height_map.is_some())?;
-                notes.extend(rubber_notes);
-                let sum = |s: &Spectrum| {
-                    s.sum(&rubber)
-                        .map_err(|e| self.error(table.span(), "rubber_surface", e.to_string()))
-                };
-                let groove = match groove {
-                    GrooveInterface::Own(g) => GrooveInterface::Own(sum(&g)?),
-                    other => other,
-                };
-                (sum(&spectrum)?, groove)
-            }
-        };
+        let (spectrum, groove) = self.interface_surfaces(
+            raw,
+            spectrum,
+            seal.gland.is_some(),
+            height_map.is_some(),
+            &mut notes,
+        )?;
         let (contact, shape_factor) = match &raw.model {
             Some(model) => self.model(model.get_ref())?,
             None => (ContactSettings::default(), DEFAULT_SHAPE_FACTOR),
@@ -424,16 +412,7 @@ impl Source<'_> {
         // the static problem's viscosity is the law's at the installation temperature
         let fluid = fluid.at(environment.at(0.0));
         let cold_fitting = self.fitting_temperature(raw, &seal, &material, &environment)?;
-        // a ring fitted at another temperature than the environment's first: its temperature
-        // settles to the environment's over its thermal time (docs/model.md §5.2)
-        let environment = match (seal.fitting_temperature, seal.geometry) {
-            (Some(fitted), SealGeometry::ORing { cross_section, .. })
-                if fitted != environment.at(0.0) =>
-            {
-                environment.with_lead_in(fitted, thermal_settling_time(cross_section))
-            }
-            _ => environment,
-        };
+        let environment = settling_environment(environment, &seal);
         let thermal_strain = self.thermal_strain(
             &seal,
             &material,
@@ -444,53 +423,8 @@ impl Source<'_> {
                 "thermal_expansion",
             ),
         )?;
-        let (ageing, ageing_source) =
-            self.scenario_ageing(raw.ageing.as_ref(), &material, replacement.is_some())?;
-        let failure = self.failure(raw.failure.as_ref(), &fluid, &environment)?;
-        let (time, fidelity) = self.simulation(raw.simulation.as_ref())?;
-        self.cycle_budget(
-            raw.simulation.as_ref(),
-            raw.environment.as_ref(),
-            &environment,
-            &time,
-        )?;
-        let clogging_tolerance = self.clogging_tolerance(raw.simulation.as_ref())?;
-        let contamination = self.contamination(raw.contamination.as_ref(), clogging_tolerance)?;
-        let numerical = self.numerical(raw.numerical.as_ref())?;
-        let motion = self.motion(raw.motion.as_ref())?;
-        if fluid.gas.is_some() {
-            // a gas's interface flow is modelled for a static seal only (docs/model.md §3.9)
-            let stray = [
-                raw.motion.as_ref().map(|m| (m.span(), "motion")),
-                raw.contamination
-                    .as_ref()
-                    .map(|c| (c.span(), "contamination")),
-            ];
-            if let Some((span, key)) = stray.into_iter().flatten().next() {
-                return Err(self.error(
-                    span,
-                    key,
-                    format!(
-                        "[{key}] is modelled for a liquid only, but [fluid] is a gas (the \
-                         drag films of a reciprocating seal and particle clogging are liquid \
-                         models): remove [{key}] or give a liquid"
-                    ),
-                ));
-            }
-        }
-        // permeation through the rubber for a gas (docs/model.md §13.7): the compound's library
-        // id names its class (a `compare` compound's too)
-        let (permeation, permeation_note) = match fluid.gas {
-            Some(gas) => crate::permeation::SealPermeation::for_seal(
-                material.library_id.as_deref(),
-                gas.gas.id,
-                &seal.geometry,
-                seal.thickness,
-                gas.outlet_pressure + fluid.pressure_difference,
-                gas.outlet_pressure,
-            ),
-            None => (None, None),
-        };
+        let service = self.service(raw, &material, replacement.is_some(), &fluid, &environment)?;
+        let (permeation, permeation_note) = permeation(&material, &fluid, &seal);
         let life = LifeProblem {
             material: material.clone(),
             asperity_modulus,
@@ -506,14 +440,14 @@ impl Source<'_> {
             installation_time,
             environment,
             thermal_strain,
-            ageing,
-            ageing_source,
-            failure,
-            time,
-            fidelity,
+            ageing: service.ageing,
+            ageing_source: service.ageing_source,
+            failure: service.failure,
+            time: service.time,
+            fidelity: service.fidelity,
             strips: STRIPS,
-            contamination,
-            motion,
+            contamination: service.contamination,
+            motion: service.motion,
             permeation,
         };
         let mut warnings = seal.warnings;
@@ -528,204 +462,19 @@ impl Source<'_> {
             warnings.push(w.to_string());
         }
         warnings.extend(cold_fitting.map(|w| w.to_string()));
-        let known = raw
-            .fluid
-            .get_ref()
-            .library
-            .as_ref()
-            .and_then(|l| crate::fluid::library(l.get_ref()).map(|f| (l, f)));
-        // the compound's fluid compatibility (docs/model.md §6.8): a note, or a warning when
-        // not recommended
-        let compatibility = known.and_then(|(library, fluid)| {
-            let (_, hi) = life.environment.range();
-            super::compatibility::FluidClass::of(fluid.id, hi)
-                .and_then(|class| super::compatibility::rating(&material.compatibility, class))
-                .map(|c| (c.clone(), library.span()))
-        });
-        if let Some((c, span)) = &compatibility {
-            let not = c.rating == super::compatibility::Rating::NotRecommended;
-            let message = format!(
-                "{}{} is rated {c} [docs/model.md §6.8]",
-                if not { "" } else { "note: " },
-                material.library_id.as_deref().unwrap_or("the compound"),
-            );
-            warnings.push(
-                self.error(span.clone(), "fluid.library", message)
-                    .to_string(),
-            );
-        }
-        let compatibility = compatibility.map(|(c, _)| c);
-        // ageing constants measured in another medium than the run's fluid (§6.8)
-        if let (Some(basis), true) = (&material.ageing_basis, life.ageing.is_some()) {
-            use crate::material::AgeingMedium;
-            let run_medium = match (known, &life.fluid.gas) {
-                (Some((_, fluid)), _) => match fluid.id {
-                    "water" => Some(AgeingMedium::Water),
-                    "ethylene-glycol-water-50" => Some(AgeingMedium::WaterGlycol),
-                    id if id.starts_with("iso-vg-") => Some(AgeingMedium::MineralOil),
-                    _ => None,
-                },
-                (None, Some(g)) if g.gas.id == "air" || g.gas.id == "oxygen" => {
-                    Some(AgeingMedium::Air)
-                }
-                _ => None,
-            };
-            if let (Some(measured), Some(run)) = (basis.medium, run_medium)
-                && measured != run
-            {
-                warnings.push(
-                    self.error(
-                        raw.fluid.span(),
-                        "fluid",
-                        format!(
-                            "the compound's ageing constants were measured in {}, this run's \
-                             fluid is {}: ageing specific to the medium (hydrolysis in water, \
-                             oxidation in air, swelling and extraction in oil) is not modelled, \
-                             so the ageing rate is the measured medium's [docs/model.md §6.8]",
-                            measured.as_str(),
-                            run.as_str()
-                        ),
-                    )
-                    .to_string(),
-                );
-            }
-        }
-        if let Some((
-            library,
-            LibraryFluid {
-                id,
-                liquid_range: Some((melting, boiling)),
-                ..
-            },
-        )) = known
-        {
-            let (lo, hi) = life.environment.range();
-            if lo < melting || hi > boiling {
-                warnings.push(
-                    self.error(
-                        library.span(),
-                        "fluid.library",
-                        format!(
-                            "the temperature reaches {} … {}, but {id} is liquid at 1 atm only \
-                             from {} to {} (it freezes or boils): {} K below / {} K above; \
-                             the viscosity law there is an extrapolation [docs/model.md §3.7]",
-                            show_temperature(lo, 6),
-                            show_temperature(hi, 6),
-                            show_temperature(melting, 6),
-                            show_temperature(boiling, 6),
-                            show((melting - lo).max(0.0)),
-                            show((hi - boiling).max(0.0)),
-                        ),
-                    )
-                    .to_string(),
-                );
-            }
-        }
-        // a library compound above its class's rated temperature (docs/model.md §6.7): its
-        // life there is the Arrhenius extrapolation beyond "1,000 hours continuous service"
-        if let Some(published) = material
-            .library_id
-            .as_deref()
-            .and_then(super::library_check::published)
-        {
-            let (_, hi) = life.environment.range();
-            if hi > published.rated {
-                let span = raw.environment.as_ref().map_or(raw.fluid.span(), |e| {
-                    e.get_ref()
-                        .temperature
-                        .as_ref()
-                        .map_or(e.span(), |t| t.span())
-                });
-                warnings.push(
-                    self.error(
-                        span,
-                        "environment.temperature",
-                        format!(
-                            "the temperature reaches {}, {} K above the rated {} of the compound's \
-                             class ({}): a seal there is expected to lose 30-50 % of its \
-                             properties within 1,000 h, and beyond the rating the compound may \
-                             decompose; the ageing constants are extrapolated \
-                             [docs/model.md §6.7]",
-                            show_temperature(hi, 4),
-                            show(((hi - published.rated) * 10.0).round() / 10.0),
-                            show_temperature(published.rated, 4),
-                            published.source
-                        ),
-                    )
-                    .to_string(),
-                );
-            }
-        }
-        if let Some(service) = &life.fluid.gas
-            && let Some(condenses) = crate::gas::condensation_point(service.gas.id)
-        {
-            let (lo, _) = life.environment.range();
-            if lo <= condenses {
-                let span = raw.environment.as_ref().map_or(raw.fluid.span(), |e| {
-                    e.get_ref()
-                        .temperature
-                        .as_ref()
-                        .map_or(e.span(), |t| t.span())
-                });
-                return Err(self.error(
-                    span,
-                    "environment.temperature",
-                    format!(
-                        "the temperature reaches {}, but {} is a gas at 1 atm only above {} \
-                         (below it condenses, and the gas laws do not apply): give a \
-                         temperature above it, e.g. \"{} K\" [docs/model.md §3.9]",
-                        show_temperature(lo, 6),
-                        service.gas.id,
-                        show_temperature(condenses, 6),
-                        show((condenses + 10.0).ceil())
-                    ),
-                ));
-            }
-        }
-        if let Some((swell, span)) = &swell
-            && swell.volume_change > SWELL_PRACTICE
-        {
-            warnings.push(
-                self.error(
-                    span.clone(),
-                    VOLUME_SWELL.key,
-                    format!(
-                        "{} % volume swell is beyond seal practice (≈ {} %: the compound is \
-                             not compatible with this fluid); the swell relations are applied \
-                             as given [docs/model.md §3.9]",
-                        show(100.0 * swell.volume_change),
-                        show(100.0 * SWELL_PRACTICE)
-                    ),
-                )
-                .to_string(),
-            );
-        }
-        if material.shift == crate::material::Shift::None
-            && material.data_temperature.is_none()
-            && !material.prony.terms().is_empty()
-        {
-            // the series was measured at some temperature; without a shift or that temperature
-            // the run cannot tell how far from it it goes, so say so once
-            let (lo, hi) = life.environment.range();
-            warnings.push(
-                self.error(
-                    raw.material.span(),
-                    "material",
-                    format!(
-                        "{} has no temperature shift and no data temperature: its relaxation is \
-                         taken as measured, at every temperature of this run ({}–{} K); give \
-                         `data_temperature` (fit-prony --temperature) so that a run away from it \
-                         is warned about, or a [material.shift] (a master curve from data at \
-                         several temperatures, or a library compound's shift copied by \
-                         fit-prony --like) [docs/model.md §9.13]",
-                        material.name,
-                        show(lo),
-                        show(hi)
-                    ),
-                )
-                .to_string(),
-            );
-        }
+        let run = Run {
+            raw,
+            material: &material,
+            life: &life,
+            swell: swell.as_ref(),
+            known_fluid: raw
+                .fluid
+                .get_ref()
+                .library
+                .as_ref()
+                .and_then(|l| crate::fluid::library(l.get_ref()).map(|f| (l, f))),
+        };
+        let compatibility = self.run_warnings(&run, &mut warnings)?;
         let static_seal = static_seal(&life);
         // the static problem sees the asperity modulus of the installed state, as the first row
         // of a life run does
@@ -747,11 +496,321 @@ impl Source<'_> {
             },
             life,
             height_map,
-            numerical,
+            numerical: service.numerical,
             gland: seal.design,
             warnings,
             compatibility,
             inputs: self.data_files(raw),
+        })
+    }
+
+    /// `[groove_surface]` (the gland's own interface) and `[rubber_surface]` (the rubber's
+    /// roughness, summed into the counterface's `spectrum` and the groove's), their notes
+    /// added to `notes`.
+    fn interface_surfaces(
+        &self,
+        raw: &RawScenario,
+        spectrum: Spectrum,
+        in_gland: bool,
+        counterface_map: bool,
+        notes: &mut Vec<ScenarioError>,
+    ) -> Result<(Spectrum, GrooveInterface), ScenarioError> {
+        let (groove, groove_notes) = self.groove_surface(raw.groove_surface.as_ref(), in_gland)?;
+        notes.extend(groove_notes);
+        let Some(table) = &raw.rubber_surface else {
+            return Ok((spectrum, groove));
+        };
+        let (rubber, rubber_notes) = self.rubber_surface(table, counterface_map)?;
+        notes.extend(rubber_notes);
+        let sum = |s: &Spectrum| {
+            s.sum(&rubber)
+                .map_err(|e| self.error(table.span(), "rubber_surface", e.to_string()))
+        };
+        let groove = match groove {
+            GrooveInterface::Own(g) => GrooveInterface::Own(sum(&g)?),
+            other => other,
+        };
+        Ok((sum(&spectrum)?, groove))
+    }
+
+    /// The run's own tables: `[ageing]`, `[failure]`, `[simulation]` (with its cycle budget
+    /// and clogging tolerance), `[contamination]`, `[numerical]` and `[motion]`; the last two
+    /// of a liquid's only.
+    fn service(
+        &self,
+        raw: &RawScenario,
+        material: &Material,
+        replaced: bool,
+        fluid: &Fluid,
+        environment: &crate::material::TemperatureHistory,
+    ) -> Result<Service, ScenarioError> {
+        let (ageing, ageing_source) =
+            self.scenario_ageing(raw.ageing.as_ref(), material, replaced)?;
+        let failure = self.failure(raw.failure.as_ref(), fluid, environment)?;
+        let (time, fidelity) = self.simulation(raw.simulation.as_ref())?;
+        self.cycle_budget(
+            raw.simulation.as_ref(),
+            raw.environment.as_ref(),
+            environment,
+            &time,
+        )?;
+        let clogging_tolerance = self.clogging_tolerance(raw.simulation.as_ref())?;
+        let contamination = self.contamination(raw.contamination.as_ref(), clogging_tolerance)?;
+        let numerical = self.numerical(raw.numerical.as_ref())?;
+        let motion = self.motion(raw.motion.as_ref())?;
+        if fluid.gas.is_some() {
+            self.liquid_only_tables(raw)?;
+        }
+        Ok(Service {
+            ageing,
+            ageing_source,
+            failure,
+            time,
+            fidelity,
+            contamination,
+            numerical,
+            motion,
+        })
+    }
+
+    /// A gas's interface flow is modelled for a static seal only (docs/model.md §3.9): no
+    /// `[motion]`, no `[contamination]`.
+    fn liquid_only_tables(&self, raw: &RawScenario) -> Result<(), ScenarioError> {
+        let stray = [
+            raw.motion.as_ref().map(|m| (m.span(), "motion")),
+            raw.contamination
+                .as_ref()
+                .map(|c| (c.span(), "contamination")),
+        ];
+        if let Some((span, key)) = stray.into_iter().flatten().next() {
+            return Err(self.error(
+                span,
+                key,
+                format!(
+                    "[{key}] is modelled for a liquid only, but [fluid] is a gas (the \
+                     drag films of a reciprocating seal and particle clogging are liquid \
+                     models): remove [{key}] or give a liquid"
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    /// The warnings on the whole run, added to `warnings` in order (the fluid's compatibility
+    /// with the compound, the ageing's medium, the fluid's liquid range, the class's rated
+    /// temperature, the swell, an unshifted relaxation), or the error of a gas that
+    /// condenses; the compound's compatibility rating with the fluid.
+    fn run_warnings(
+        &self,
+        run: &Run,
+        warnings: &mut Vec<String>,
+    ) -> Result<Option<super::compatibility::Compatibility>, ScenarioError> {
+        let compatibility = self.fluid_compatibility(run);
+        if let Some((c, span)) = &compatibility {
+            let not = c.rating == super::compatibility::Rating::NotRecommended;
+            let message = format!(
+                "{}{} is rated {c} [docs/model.md §6.8]",
+                if not { "" } else { "note: " },
+                run.material.library_id.as_deref().unwrap_or("the compound"),
+            );
+            warnings.push(
+                self.error(span.clone(), "fluid.library", message)
+                    .to_string(),
+            );
+        }
+        warnings.extend(self.ageing_medium_warning(run));
+        warnings.extend(self.liquid_range_warning(run));
+        warnings.extend(self.rated_temperature_warning(run));
+        self.gas_condensation(run)?;
+        warnings.extend(self.swell_warning(run));
+        warnings.extend(self.unshifted_warning(run));
+        Ok(compatibility.map(|(c, _)| c))
+    }
+
+    /// The compound's fluid compatibility (docs/model.md §6.8), with the span of
+    /// `fluid.library`.
+    fn fluid_compatibility(
+        &self,
+        run: &Run,
+    ) -> Option<(super::compatibility::Compatibility, Range<usize>)> {
+        run.known_fluid.and_then(|(library, fluid)| {
+            let (_, hi) = run.life.environment.range();
+            super::compatibility::FluidClass::of(fluid.id, hi)
+                .and_then(|class| super::compatibility::rating(&run.material.compatibility, class))
+                .map(|c| (c.clone(), library.span()))
+        })
+    }
+
+    /// Ageing constants measured in another medium than the run's fluid (docs/model.md §6.8).
+    fn ageing_medium_warning(&self, run: &Run) -> Option<String> {
+        use crate::material::AgeingMedium;
+        let (Some(basis), true) = (&run.material.ageing_basis, run.life.ageing.is_some()) else {
+            return None;
+        };
+        let run_medium = match (run.known_fluid, &run.life.fluid.gas) {
+            (Some((_, fluid)), _) => match fluid.id {
+                "water" => Some(AgeingMedium::Water),
+                "ethylene-glycol-water-50" => Some(AgeingMedium::WaterGlycol),
+                id if id.starts_with("iso-vg-") => Some(AgeingMedium::MineralOil),
+                _ => None,
+            },
+            (None, Some(g)) if g.gas.id == "air" || g.gas.id == "oxygen" => Some(AgeingMedium::Air),
+            _ => None,
+        };
+        let (Some(measured), Some(medium)) = (basis.medium, run_medium) else {
+            return None;
+        };
+        (measured != medium).then(|| {
+            self.error(
+                run.raw.fluid.span(),
+                "fluid",
+                format!(
+                    "the compound's ageing constants were measured in {}, this run's \
+                     fluid is {}: ageing specific to the medium (hydrolysis in water, \
+                     oxidation in air, swelling and extraction in oil) is not modelled, \
+                     so the ageing rate is the measured medium's [docs/model.md §6.8]",
+                    measured.as_str(),
+                    medium.as_str()
+                ),
+            )
+            .to_string()
+        })
+    }
+
+    /// A library liquid taken outside the range where it is liquid at 1 atm (docs/model.md
+    /// §3.7).
+    fn liquid_range_warning(&self, run: &Run) -> Option<String> {
+        let Some((
+            library,
+            LibraryFluid {
+                id,
+                liquid_range: Some((melting, boiling)),
+                ..
+            },
+        )) = run.known_fluid
+        else {
+            return None;
+        };
+        let (lo, hi) = run.life.environment.range();
+        (lo < melting || hi > boiling).then(|| {
+            self.error(
+                library.span(),
+                "fluid.library",
+                format!(
+                    "the temperature reaches {} … {}, but {id} is liquid at 1 atm only \
+                     from {} to {} (it freezes or boils): {} K below / {} K above; \
+                     the viscosity law there is an extrapolation [docs/model.md §3.7]",
+                    show_temperature(lo, 6),
+                    show_temperature(hi, 6),
+                    show_temperature(melting, 6),
+                    show_temperature(boiling, 6),
+                    show((melting - lo).max(0.0)),
+                    show((hi - boiling).max(0.0)),
+                ),
+            )
+            .to_string()
+        })
+    }
+
+    /// A library compound above its class's rated temperature (docs/model.md §6.7): its life
+    /// there is the Arrhenius extrapolation beyond "1,000 hours continuous service".
+    fn rated_temperature_warning(&self, run: &Run) -> Option<String> {
+        let published = run
+            .material
+            .library_id
+            .as_deref()
+            .and_then(super::library_check::published)?;
+        let (_, hi) = run.life.environment.range();
+        (hi > published.rated).then(|| {
+            self.error(
+                temperature_span(run.raw),
+                "environment.temperature",
+                format!(
+                    "the temperature reaches {}, {} K above the rated {} of the compound's \
+                     class ({}): a seal there is expected to lose 30-50 % of its \
+                     properties within 1,000 h, and beyond the rating the compound may \
+                     decompose; the ageing constants are extrapolated \
+                     [docs/model.md §6.7]",
+                    show_temperature(hi, 4),
+                    show(((hi - published.rated) * 10.0).round() / 10.0),
+                    show_temperature(published.rated, 4),
+                    published.source
+                ),
+            )
+            .to_string()
+        })
+    }
+
+    /// A gas taken down to where it condenses at 1 atm is refused (docs/model.md §3.9).
+    fn gas_condensation(&self, run: &Run) -> Result<(), ScenarioError> {
+        if let Some(service) = &run.life.fluid.gas
+            && let Some(condenses) = crate::gas::condensation_point(service.gas.id)
+        {
+            let (lo, _) = run.life.environment.range();
+            if lo <= condenses {
+                return Err(self.error(
+                    temperature_span(run.raw),
+                    "environment.temperature",
+                    format!(
+                        "the temperature reaches {}, but {} is a gas at 1 atm only above {} \
+                         (below it condenses, and the gas laws do not apply): give a \
+                         temperature above it, e.g. \"{} K\" [docs/model.md §3.9]",
+                        show_temperature(lo, 6),
+                        service.gas.id,
+                        show_temperature(condenses, 6),
+                        show((condenses + 10.0).ceil())
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// A volume swell beyond seal practice (docs/model.md §3.9).
+    fn swell_warning(&self, run: &Run) -> Option<String> {
+        let (swell, span) = run.swell?;
+        (swell.volume_change > SWELL_PRACTICE).then(|| {
+            self.error(
+                span.clone(),
+                VOLUME_SWELL.key,
+                format!(
+                    "{} % volume swell is beyond seal practice (≈ {} %: the compound is \
+                         not compatible with this fluid); the swell relations are applied \
+                         as given [docs/model.md §3.9]",
+                    show(100.0 * swell.volume_change),
+                    show(100.0 * SWELL_PRACTICE)
+                ),
+            )
+            .to_string()
+        })
+    }
+
+    /// A relaxation series without a temperature shift or a data temperature: the series was
+    /// measured at some temperature; without a shift or that temperature the run cannot tell
+    /// how far from it it goes, so say so once (docs/model.md §9.13).
+    fn unshifted_warning(&self, run: &Run) -> Option<String> {
+        let material = run.material;
+        let unshifted = material.shift == crate::material::Shift::None
+            && material.data_temperature.is_none()
+            && !material.prony.terms().is_empty();
+        unshifted.then(|| {
+            let (lo, hi) = run.life.environment.range();
+            self.error(
+                run.raw.material.span(),
+                "material",
+                format!(
+                    "{} has no temperature shift and no data temperature: its relaxation is \
+                     taken as measured, at every temperature of this run ({}–{} K); give \
+                     `data_temperature` (fit-prony --temperature) so that a run away from it \
+                     is warned about, or a [material.shift] (a master curve from data at \
+                     several temperatures, or a library compound's shift copied by \
+                     fit-prony --like) [docs/model.md §9.13]",
+                    material.name,
+                    show(lo),
+                    show(hi)
+                ),
+            )
+            .to_string()
         })
     }
 
@@ -1231,6 +1290,62 @@ impl Source<'_> {
         if let Some(id) = &raw.gas {
             return self.gas(table, id);
         }
+        self.refuse_gas_keys(raw)?;
+        let Some(dp) = &raw.pressure_difference else {
+            return Err(self.error(
+                table.span(),
+                PRESSURE_DIFFERENCE.key,
+                "missing key `pressure_difference` in [fluid]",
+            ));
+        };
+        let pressure_difference = self.quantity(dp, &PRESSURE_DIFFERENCE)?;
+        let inline = raw.viscosity_40c.as_ref().or(raw.viscosity_100c.as_ref());
+        self.one_viscosity_source(raw, inline)?;
+        let with_law = |law: ViscosityLaw| {
+            let fluid = Fluid {
+                viscosity: 0.0,
+                pressure_difference,
+                law,
+                gas: None,
+            };
+            fluid.at(ROOM_TEMPERATURE)
+        };
+        if let Some(q) = &raw.viscosity {
+            return Ok(Fluid {
+                viscosity: self.quantity(q, &VISCOSITY)?,
+                pressure_difference,
+                law: ViscosityLaw::Constant,
+                gas: None,
+            });
+        }
+        if let Some(id) = &raw.library {
+            return match crate::fluid::library(id.get_ref()) {
+                Some(known) => Ok(with_law(known.law)),
+                None => Err(self.error(
+                    id.span(),
+                    "fluid.library",
+                    format!(
+                        "unknown fluid \"{}\"; known: {}",
+                        id.get_ref(),
+                        crate::fluid::library_ids().join(", ")
+                    ),
+                )),
+            };
+        }
+        let Some(first) = inline else {
+            return Err(self.error(
+                table.span(),
+                VISCOSITY.key,
+                "missing key `viscosity` in [fluid] (or `library`, or `viscosity_40c` and \
+                 `viscosity_100c` with `density`)",
+            ));
+        };
+        Ok(with_law(self.inline_viscosity_law(raw, first)?))
+    }
+
+    /// A liquid's `[fluid]` refuses the keys of a gas (`rarefaction`, absolute pressures, molar
+    /// mass, molecular diameter, Sutherland constants).
+    fn refuse_gas_keys(&self, raw: &RawFluid) -> Result<(), ScenarioError> {
         if let Some(b) = &raw.rarefaction {
             return Err(self.error(
                 b.span(),
@@ -1258,15 +1373,17 @@ impl Source<'_> {
                  `pressure_difference`)",
             ));
         }
-        let Some(dp) = &raw.pressure_difference else {
-            return Err(self.error(
-                table.span(),
-                PRESSURE_DIFFERENCE.key,
-                "missing key `pressure_difference` in [fluid]",
-            ));
-        };
-        let pressure_difference = self.quantity(dp, &PRESSURE_DIFFERENCE)?;
-        let inline = raw.viscosity_40c.as_ref().or(raw.viscosity_100c.as_ref());
+        Ok(())
+    }
+
+    /// At most one of a constant `viscosity`, a `library` fluid and the inline law
+    /// (`inline`: `viscosity_40c` or `viscosity_100c`); `density` and `thermal_expansion`
+    /// only with the inline law.
+    fn one_viscosity_source(
+        &self,
+        raw: &RawFluid,
+        inline: Option<&Quantity>,
+    ) -> Result<(), ScenarioError> {
         let given: Vec<(&str, std::ops::Range<usize>)> = [
             raw.viscosity.as_ref().map(|q| ("viscosity", q.span())),
             raw.library.as_ref().map(|l| ("library", l.span())),
@@ -1302,46 +1419,16 @@ impl Source<'_> {
                 ));
             }
         }
-        let constant = |viscosity: f64| Fluid {
-            viscosity,
-            pressure_difference,
-            law: ViscosityLaw::Constant,
-            gas: None,
-        };
-        let with_law = |law: ViscosityLaw| {
-            let fluid = Fluid {
-                viscosity: 0.0,
-                pressure_difference,
-                law,
-                gas: None,
-            };
-            fluid.at(ROOM_TEMPERATURE)
-        };
-        if let Some(q) = &raw.viscosity {
-            return Ok(constant(self.quantity(q, &VISCOSITY)?));
-        }
-        if let Some(id) = &raw.library {
-            return match crate::fluid::library(id.get_ref()) {
-                Some(known) => Ok(with_law(known.law)),
-                None => Err(self.error(
-                    id.span(),
-                    "fluid.library",
-                    format!(
-                        "unknown fluid \"{}\"; known: {}",
-                        id.get_ref(),
-                        crate::fluid::library_ids().join(", ")
-                    ),
-                )),
-            };
-        }
-        let Some(first) = inline else {
-            return Err(self.error(
-                table.span(),
-                VISCOSITY.key,
-                "missing key `viscosity` in [fluid] (or `library`, or `viscosity_40c` and \
-                 `viscosity_100c` with `density`)",
-            ));
-        };
+        Ok(())
+    }
+
+    /// The inline ASTM D341 law through `viscosity_40c` and `viscosity_100c` with `density` and
+    /// the optional `thermal_expansion` (`first`: the first of the two viscosities given).
+    fn inline_viscosity_law(
+        &self,
+        raw: &RawFluid,
+        first: &Quantity,
+    ) -> Result<ViscosityLaw, ScenarioError> {
         let required = |q: &Option<Quantity>, f: &Field, why: &str| {
             self.required(q, f, first.span(), &format!("in [fluid]: {why}"))
         };
@@ -1363,7 +1450,7 @@ impl Source<'_> {
             expansion,
             "inline ASTM D341 through ν40, ν100",
         ) {
-            Some(w) => Ok(with_law(ViscosityLaw::Walther(w))),
+            Some(w) => Ok(ViscosityLaw::Walther(w)),
             None => Err(self.error(
                 raw.viscosity_100c
                     .as_ref()
@@ -1737,6 +1824,61 @@ impl Source<'_> {
         let raw = table.get_ref();
         let given = self.quantity(value, field)?;
         let hurst = self.optional(raw.hurst_exponent.as_ref(), &HURST_EXPONENT)?;
+        let band = self.callout_band(table)?;
+        let short = self.short_wavelengths(table, &band)?;
+        let q0 = self.optional(raw.q0.as_ref(), &Q0)?;
+        if let (Some(q0), Some(raw_q0)) = (q0, &raw.q0)
+            && q0 > band.q_lo()
+        {
+            return Err(self.error(
+                raw_q0.span(),
+                Q0.key,
+                format!(
+                    "must not exceed 2π/cutoff = {} 1/m (it would cut the measured band), got \
+                     {} 1/m",
+                    show(band.q_lo()),
+                    show(q0)
+                ),
+            ));
+        }
+        let (rq, how) = self.callout_rq(value, field, given, &band)?;
+        let callout = Callout {
+            rq,
+            hurst: hurst.unwrap_or(roughness::DEFAULT_HURST),
+            band,
+            q0,
+            short,
+        };
+        let spectrum = callout
+            .spectrum()
+            .map_err(|e| self.error(value.span(), field.key, e.to_string()))?;
+        let name = field.key.trim_start_matches("surface.");
+        let rule = Self::short_rule(short, &spectrum);
+        let note = self.error(
+            value.span(),
+            field.key,
+            format!(
+                "note: callout {name} = {} m over λs = {} m … λc = {} m read as Rq = {} m ({how}), \
+                 H = {}{}; roughness below λs: {rule}; the spectrum: q0 = {} 1/m, h_rms = {} m, \
+                 rms slope = {} [docs/model.md §2.1]",
+                show(given),
+                show(callout.band.short_cutoff),
+                show(callout.band.cutoff),
+                show(rq),
+                show(callout.hurst),
+                if hurst.is_none() { " (default)" } else { "" },
+                show(spectrum.q0()),
+                show(spectrum.rms_roughness()),
+                show(spectrum.rms_slope()),
+            ),
+        );
+        Ok((spectrum, note))
+    }
+
+    /// A callout's band: `cutoff` λc (default 0.8 mm) longer than `short_cutoff` λs (default
+    /// 2.5 µm).
+    fn callout_band(&self, table: &Spanned<RawSurface>) -> Result<Band, ScenarioError> {
+        let raw = table.get_ref();
         let cutoff = self
             .optional(raw.cutoff.as_ref(), &CUTOFF)?
             .unwrap_or(roughness::DEFAULT_CUTOFF);
@@ -1760,12 +1902,22 @@ impl Source<'_> {
                 ),
             ));
         }
-        let band = Band {
+        Ok(Band {
             cutoff,
             short_cutoff,
-        };
+        })
+    }
+
+    /// The roughness below λs: `short_wavelength = "extend"` (default) or `"stop"`, or `q1`
+    /// (at least the band's end).
+    fn short_wavelengths(
+        &self,
+        table: &Spanned<RawSurface>,
+        band: &Band,
+    ) -> Result<ShortWavelengths, ScenarioError> {
+        let raw = table.get_ref();
         let q1 = self.optional(raw.q1.as_ref(), &Q1)?;
-        let short = match (&raw.short_wavelength, q1) {
+        Ok(match (&raw.short_wavelength, q1) {
             (Some(rule), Some(_)) => {
                 return Err(self.error(
                     rule.span(),
@@ -1804,24 +1956,20 @@ impl Source<'_> {
                 }
             },
             (None, None) => ShortWavelengths::Extend,
-        };
-        let q0 = self.optional(raw.q0.as_ref(), &Q0)?;
-        if let (Some(q0), Some(raw_q0)) = (q0, &raw.q0)
-            && q0 > band.q_lo()
-        {
-            return Err(self.error(
-                raw_q0.span(),
-                Q0.key,
-                format!(
-                    "must not exceed 2π/cutoff = {} 1/m (it would cut the measured band), got \
-                     {} 1/m",
-                    show(band.q_lo()),
-                    show(q0)
-                ),
-            ));
-        }
-        let name = field.key.trim_start_matches("surface.");
-        let (rq, how) = if field.key == RA.key {
+        })
+    }
+
+    /// The Rq a callout's `given` value of `field` means (Ra and Rz converted for Gaussian
+    /// heights), and how it was read.
+    fn callout_rq(
+        &self,
+        value: &Quantity,
+        field: &Field,
+        given: f64,
+        band: &Band,
+    ) -> Result<(f64, String), ScenarioError> {
+        let (cutoff, short_cutoff) = (band.cutoff, band.short_cutoff);
+        Ok(if field.key == RA.key {
             (
                 roughness::rq_from_ra(given),
                 "Gaussian heights: Rq = √(π/2) Ra".to_owned(),
@@ -1852,18 +2000,12 @@ impl Source<'_> {
             )
         } else {
             (given, "Rq given".to_owned())
-        };
-        let callout = Callout {
-            rq,
-            hurst: hurst.unwrap_or(roughness::DEFAULT_HURST),
-            band,
-            q0,
-            short,
-        };
-        let spectrum = callout
-            .spectrum()
-            .map_err(|e| self.error(value.span(), field.key, e.to_string()))?;
-        let rule = match short {
+        })
+    }
+
+    /// What a callout's spectrum holds below λs, for its note.
+    fn short_rule(short: ShortWavelengths, spectrum: &Spectrum) -> String {
+        match short {
             ShortWavelengths::Extend => format!(
                 "extended as the power law to {} m (q1 = {} 1/m; short_wavelength = \"extend\", \
                  the default; \"stop\" ends it at λs)",
@@ -1879,26 +2021,7 @@ impl Source<'_> {
                     show(q1)
                 )
             }
-        };
-        let note = self.error(
-            value.span(),
-            field.key,
-            format!(
-                "note: callout {name} = {} m over λs = {} m … λc = {} m read as Rq = {} m ({how}), \
-                 H = {}{}; roughness below λs: {rule}; the spectrum: q0 = {} 1/m, h_rms = {} m, \
-                 rms slope = {} [docs/model.md §2.1]",
-                show(given),
-                show(short_cutoff),
-                show(cutoff),
-                show(rq),
-                show(callout.hurst),
-                if hurst.is_none() { " (default)" } else { "" },
-                show(spectrum.q0()),
-                show(spectrum.rms_roughness()),
-                show(spectrum.rms_slope()),
-            ),
-        );
-        Ok((spectrum, note))
+        }
     }
 
     /// `height_map` (relative to the scenario's directory): a CSV grid with `pixel_size` and the
@@ -2186,6 +2309,75 @@ fn renamed(error: ScenarioError, table: &str) -> ScenarioError {
             message: message.replace("surface.", &format!("{table}.")),
         },
         other => other,
+    }
+}
+
+/// The run's own tables, read by [`Source::service`].
+struct Service {
+    ageing: Option<crate::material::Ageing>,
+    ageing_source: crate::simulate::AgeingSource,
+    failure: crate::simulate::FailureCriteria,
+    time: crate::simulate::TimeGrid,
+    fidelity: crate::leak::Fidelity,
+    contamination: Option<crate::clogging::Contamination>,
+    numerical: NumericalSettings,
+    motion: Option<crate::dynamic::MotionSpec>,
+}
+
+/// A checked run and what its closing warnings look at: the file, the compound, the life
+/// problem, the fluid's volume swell (with its span) and the library fluid `fluid.library`
+/// names (with that key).
+struct Run<'r> {
+    raw: &'r RawScenario,
+    material: &'r Material,
+    life: &'r LifeProblem,
+    swell: Option<&'r (VolumeSwell, Range<usize>)>,
+    known_fluid: Option<(&'r Spanned<String>, LibraryFluid)>,
+}
+
+/// The span of `environment.temperature` (or of its table, or of `[fluid]` without one).
+fn temperature_span(raw: &RawScenario) -> Range<usize> {
+    raw.environment.as_ref().map_or(raw.fluid.span(), |e| {
+        e.get_ref()
+            .temperature
+            .as_ref()
+            .map_or(e.span(), |t| t.span())
+    })
+}
+
+/// A ring fitted at another temperature than the environment's first: its temperature settles
+/// to the environment's over its thermal time (docs/model.md §5.2).
+fn settling_environment(
+    environment: crate::material::TemperatureHistory,
+    seal: &super::life::SealSpec,
+) -> crate::material::TemperatureHistory {
+    match (seal.fitting_temperature, seal.geometry) {
+        (Some(fitted), SealGeometry::ORing { cross_section, .. })
+            if fitted != environment.at(0.0) =>
+        {
+            environment.with_lead_in(fitted, thermal_settling_time(cross_section))
+        }
+        _ => environment,
+    }
+}
+
+/// Permeation through the rubber for a gas (docs/model.md §13.7), with its note: the
+/// compound's library id names its class (a `compare` compound's too).
+fn permeation(
+    material: &Material,
+    fluid: &Fluid,
+    seal: &super::life::SealSpec,
+) -> (Option<crate::permeation::SealPermeation>, Option<String>) {
+    match fluid.gas {
+        Some(gas) => crate::permeation::SealPermeation::for_seal(
+            material.library_id.as_deref(),
+            gas.gas.id,
+            &seal.geometry,
+            seal.thickness,
+            gas.outlet_pressure + fluid.pressure_difference,
+            gas.outlet_pressure,
+        ),
+        None => (None, None),
     }
 }
 
