@@ -153,10 +153,12 @@ mod tests {
                 };
                 if let Kind::Quantity(field) = key.kind {
                     let unit = field.unit();
-                    if !unit.is_empty() && !comment.is_empty() && key.name != "size" {
-                        if !comment.contains(unit) {
-                            wrong.push(format!("{at}: the comment does not name {unit}"));
-                        }
+                    if !unit.is_empty()
+                        && !comment.is_empty()
+                        && key.name != "size"
+                        && !comment.contains(unit)
+                    {
+                        wrong.push(format!("{at}: the comment does not name {unit}"));
                     }
                 }
                 let literal = match key.default {
@@ -167,14 +169,12 @@ mod tests {
                 };
                 if let Some((_, stated)) = comment.split_once("default ") {
                     let stated = stated.split([';', '(']).next().unwrap_or("").trim();
-                    if stated.starts_with('"')
-                        || stated.chars().next().is_some_and(|c| c.is_ascii_digit())
-                    {
-                        if Some(stated) != literal {
-                            wrong.push(format!(
-                                "{at}: states default {stated}, the registry {literal:?}"
-                            ));
-                        }
+                    let literal_text = stated.starts_with('"')
+                        || stated.chars().next().is_some_and(|c| c.is_ascii_digit());
+                    if literal_text && Some(stated) != literal {
+                        wrong.push(format!(
+                            "{at}: states default {stated}, the registry {literal:?}"
+                        ));
                     }
                     checked += 1;
                 }
