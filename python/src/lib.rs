@@ -252,9 +252,8 @@ impl PyScenario {
         for (k, v) in values.iter() {
             assignments.push((k.extract::<String>()?, toml_value(&v)?));
         }
-        let (text, scenario) =
-            workflow::replace(&self.text, Path::new(&self.file), &assignments)
-                .map_err(scenario_error)?;
+        let (text, scenario) = workflow::replace(&self.text, Path::new(&self.file), &assignments)
+            .map_err(scenario_error)?;
         Ok(PyScenario {
             inner: Arc::new(scenario),
             text,
@@ -304,8 +303,7 @@ impl PyScenario {
         let (history, summary) = blocking(py, move || {
             let result = workflow::life::run(&scenario, &mut |_, _| {});
             let history = history_table_for(&result, &scenario.life.fluid);
-            let summary =
-                Summary::new(&scenario.name, &file, &scenario.life, &result).to_json();
+            let summary = Summary::new(&scenario.name, &file, &scenario.life, &result).to_json();
             (history, summary)
         })?;
         let history = history.map_err(internal)?;
@@ -526,16 +524,13 @@ fn quantity(text: &str, dimension: Option<&str>) -> PyResult<f64> {
     match dimension {
         Some("temperature") => units::parse_temperature(text).map_err(|e| bad(e.to_string())),
         Some(name) => {
-            let (_, d) = DIMENSIONS
-                .iter()
-                .find(|(n, _)| *n == name)
-                .ok_or_else(|| {
-                    let names: Vec<&str> = DIMENSIONS.iter().map(|(n, _)| *n).collect();
-                    PyValueError::new_err(format!(
-                        "unknown dimension \"{name}\": one of temperature, {}",
-                        names.join(", ")
-                    ))
-                })?;
+            let (_, d) = DIMENSIONS.iter().find(|(n, _)| *n == name).ok_or_else(|| {
+                let names: Vec<&str> = DIMENSIONS.iter().map(|(n, _)| *n).collect();
+                PyValueError::new_err(format!(
+                    "unknown dimension \"{name}\": one of temperature, {}",
+                    names.join(", ")
+                ))
+            })?;
             units::parse_quantity(text, *d).map_err(|e| bad(e.to_string()))
         }
         None => {
