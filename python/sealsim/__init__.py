@@ -43,6 +43,7 @@ __all__ = [
     "compare",
     "study",
     "materials",
+    "contact",
     "quantity",
     "__version__",
 ]
@@ -259,3 +260,37 @@ def materials() -> Any:
     """The material library: id, name, status, E0_Pa, E_inf_Pa, glass_transition_K,
     low_temperature_limit_K (NaN where a compound has none)."""
     return _table(_sealsim._materials())
+
+
+def contact(
+    pressures: Sequence[Union[float, str]],
+    scenario: Optional[Scenario] = None,
+    *,
+    youngs_modulus: Optional[float] = None,
+    poisson_ratio: float = 0.5,
+    rms_roughness: Optional[float] = None,
+    hurst_exponent: Optional[float] = None,
+    q0: Optional[float] = None,
+    q1: Optional[float] = None,
+) -> Any:
+    """Persson's contact mechanics on its own (docs/model.md §2): at each nominal pressure (Pa
+    floats or strings with units) the reduced pressure P0/E*, the relative contact area
+    ``area_fraction`` A/A0 at full magnification (q1), the mean gap ``mean_gap_m`` ū(ζ = 1) of
+    the interface, and the
+    critical junction ``zeta_c``, ``u_c_m``, ``lambda_c_m`` (NaN where sealed).
+
+    The surface and the rubber are ``scenario``'s (its spectrum, relaxed modulus and ``[model]``
+    settings), or a self-affine surface (``rms_roughness`` m, ``hurst_exponent``, ``q0``,
+    ``q1`` 1/m) on an elastic rubber (``youngs_modulus`` Pa, ``poisson_ratio``)."""
+    return _table(
+        _sealsim._contact(
+            list(pressures),
+            None if scenario is None else scenario._inner,
+            youngs_modulus,
+            poisson_ratio,
+            rms_roughness,
+            hurst_exponent,
+            q0,
+            q1,
+        )
+    )

@@ -551,6 +551,108 @@ fn quantity(text: &str, dimension: Option<&str>) -> PyResult<f64> {
     }
 }
 
+/// Persson's contact mechanics on its own (docs/model.md §2, the exact path): at each nominal
+/// pressure \[Pa\] the relative contact area A/A0 at full magnification (q1), the mean gap
+/// ū(ζ = 1) of the interface, and the critical junction (ζc, u_c, λc; NaN where no channel percolates). The surface
+/// and the rubber are the scenario's (relaxed modulus E∞ and ν, its spectrum and `[model]`
+/// settings), or, without one, a self-affine spectrum (h_rms, H, q0, q1 \[m, 1/m\]) on an
+/// elastic half-space (E, ν) with default settings.
+#[pyfunction]
+#[pyo3(signature = (pressures, scenario = None, youngs_modulus = None, poisson_ratio = 0.5,
+                    rms_roughness = None, hurst_exponent = None, q0 = None, q1 = None))]
+#[allow(clippy::too_many_arguments)]
+fn _contact<'py>(
+    py: Python<'py>,
+    pressures: Vec<Bound<'py, PyAny>>,
+    scenario: Option<&PyScenario>,
+    youngs_modulus: Option<f64>,
+    poisson_ratio: f64,
+    rms_roughness: Option<f64>,
+    hurst_exponent: Option<f64>,
+    q0: Option<f64>,
+    q1: Option<f64>,
+) -> PyResult<Bound<'py, PyDict>> {
+    use sealsim::contact::{ContactSettings, Elastic, Junction, PerssonContact};
+    use sealsim::surface::Spectrum;
+    let pressures = pressures
+        .iter()
+        .map(pressure)
+        .collect::<PyResult<Vec<f64>>>()?;
+    let (spectrum, settings, e_star) = match scenario {
+        Some(s) => {
+            let pb = &s.inner.problem;
+            (
+                pb.spectrum.clone(),
+                pb.contact,
+                pb.material.effective_modulus(),
+            )
+        }
+        None => {
+            let need = |name: &str, v: Option<f64>| {
+                v.ok_or_else(|| {
+                    PyValueError::new_err(format!("contact: give {name} (or a scenario)"))
+                })
+            };
+            let e = need("youngs_modulus", youngs_modulus)?;
+            if !(e.is_finite() && e > 0.0 && poisson_ratio > -1.0 && poisson_ratio <= 0.5) {
+                return Err(PyValueError::new_err(
+                    "contact: youngs_modulus must be positive and poisson_ratio in (-1, 0.5]",
+                ));
+            }
+            let spectrum = Spectrum::self_affine(
+                need("rms_roughness", rms_roughness)?,
+                need("hurst_exponent", hurst_exponent)?,
+                need("q0", q0)?,
+                need("q1", q1)?,
+                None,
+            )
+            .map_err(|e| PyValueError::new_err(format!("contact: {e}")))?;
+            let elastic = Elastic {
+                youngs_modulus: e,
+                poisson_ratio,
+            };
+            (
+                spectrum,
+                ContactSettings::default(),
+                elastic.effective_modulus(),
+            )
+        }
+    };
+    let rows = blocking(py, move || {
+        let contact = PerssonContact::new(spectrum, settings);
+        let zeta1 = contact.spectrum().q1() / contact.spectrum().q0();
+        pressures
+            .iter()
+            .map(|&p| {
+                let s = p / e_star;
+                // ū at magnification 1: the mean gap of the whole interface
+                let gap = contact.separation(1.0, s).mean;
+                let j = match contact.critical_junction(s) {
+                    Junction::Leaking(j) => [j.zeta_c, j.u_c, j.lambda_c],
+                    Junction::Sealed => [f64::NAN; 3],
+                };
+                [p, s, contact.area_fraction(zeta1, s), gap, j[0], j[1], j[2]]
+            })
+            .collect::<Vec<[f64; 7]>>()
+    })?;
+    let dict = PyDict::new(py);
+    for (k, name) in [
+        "nominal_pressure_Pa",
+        "reduced_pressure",
+        "area_fraction",
+        "mean_gap_m",
+        "zeta_c",
+        "u_c_m",
+        "lambda_c_m",
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        dict.set_item(name, rows.iter().map(|r| r[k]).collect::<Vec<f64>>())?;
+    }
+    Ok(dict)
+}
+
 /// The compiled module.
 #[pymodule]
 fn _sealsim(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -562,6 +664,7 @@ fn _sealsim(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(_compare, m)?)?;
     m.add_function(wrap_pyfunction!(_study, m)?)?;
     m.add_function(wrap_pyfunction!(_materials, m)?)?;
+    m.add_function(wrap_pyfunction!(_contact, m)?)?;
     m.add_function(wrap_pyfunction!(quantity, m)?)?;
     Ok(())
 }

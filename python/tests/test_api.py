@@ -215,3 +215,35 @@ def test_the_gil_is_released_during_a_run():
     t.join()
     during = [x for x in ticks if start < x < start + elapsed]
     assert elapsed > 0.2 and len(during) >= 10, (elapsed, len(during))
+
+
+def test_contact_on_its_own():
+    # PY08 §3: E = 10 MPa, ν = 0.5, h_rms = 2 µm, H = 0.8, q0 = 1e4 1/m, q1 = 7.8e9 1/m; the
+    # paper's critical junction at 0.2 MPa: ζc ≈ 16.19, u_c ≈ 0.1236 µm (the library's doc
+    # example)
+    params = dict(youngs_modulus=10e6, poisson_ratio=0.5, rms_roughness=2e-6, hurst_exponent=0.8, q0=1e4, q1=7.8e9)
+    t = sealsim.contact([1e5, "0.2 MPa", 1e6, 1e7], **params)
+    assert list(t.columns) == [
+        "nominal_pressure_Pa", "reduced_pressure", "area_fraction", "mean_gap_m", "zeta_c", "u_c_m", "lambda_c_m",
+    ]
+    assert t["zeta_c"][1] == pytest.approx(16.19, abs=0.01)
+    assert t["u_c_m"][1] == pytest.approx(0.1236e-6, abs=1e-10)
+    # E* = E/(1 − ν²)
+    assert t["reduced_pressure"][1] == pytest.approx(2e5 / (10e6 / 0.75), rel=1e-15)
+    # λc = 2π/(ζc q0) by definition
+    for z, lam in zip(t["zeta_c"][:3], t["lambda_c_m"][:3]):
+        assert lam == pytest.approx(2 * math.pi / (z * 1e4), rel=1e-12)
+    # more pressure: more contact, a smaller gap; at 10 MPa no channel percolates
+    assert list(t["area_fraction"]) == sorted(t["area_fraction"])
+    assert 0 < t["area_fraction"][0] < t["area_fraction"][3] < 1
+    assert list(t["mean_gap_m"]) == sorted(t["mean_gap_m"], reverse=True)
+    # for small P0/E* the area grows in proportion (Persson: A/A0 ∝ P0)
+    assert t["area_fraction"][1] / t["area_fraction"][0] == pytest.approx(2, rel=0.01)
+    assert math.isnan(t["zeta_c"][3]) and math.isnan(t["u_c_m"][3])
+    # the paper's scenario has the same surface and rubber
+    s = sealsim.contact([2e5], sealsim.Scenario.from_file(PAPER))
+    assert s["zeta_c"][0] == pytest.approx(t["zeta_c"][1], rel=1e-12)
+    with pytest.raises(ValueError, match="rms_roughness"):
+        sealsim.contact([1e5], youngs_modulus=1e7)
+    with pytest.raises(ValueError, match="Hurst"):
+        sealsim.contact([1e5], **{**params, "hurst_exponent": 1.5})
