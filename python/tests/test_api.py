@@ -247,3 +247,21 @@ def test_contact_on_its_own():
         sealsim.contact([1e5], youngs_modulus=1e7)
     with pytest.raises(ValueError, match="Hurst"):
         sealsim.contact([1e5], **{**params, "hurst_exponent": 1.5})
+
+
+def test_stubs_and_docstrings_cover_the_api():
+    import ast
+    import inspect
+
+    stub = pathlib.Path(sealsim.__file__).with_name("__init__.pyi")
+    assert stub.with_name("py.typed").exists()
+    tree = ast.parse(stub.read_text())
+    declared = {n.name for n in tree.body if isinstance(n, (ast.FunctionDef, ast.ClassDef))}
+    declared |= {t.id for n in tree.body if isinstance(n, ast.AnnAssign) for t in [n.target]}
+    assert set(sealsim.__all__) <= declared, set(sealsim.__all__) - declared
+    for name in sealsim.__all__:
+        obj = getattr(sealsim, name)
+        if callable(obj):
+            assert inspect.getdoc(obj), name
+    for name in ("from_file", "from_toml", "replace", "run", "leak"):
+        assert inspect.getdoc(getattr(sealsim.Scenario, name)), name
