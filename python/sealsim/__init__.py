@@ -81,15 +81,24 @@ class RunResult:
         warnings: the validity findings, a list of dicts (as in the summary JSON).
     """
 
-    def __init__(self, scenario: "Scenario", history: Any, summary: Dict[str, Any]):
+    def __init__(self, scenario: "Scenario", columns: Mapping[str, list], summary: Dict[str, Any]):
         self.scenario = scenario
-        self.history = history
+        self._columns = columns
+        self._history: Any = None
         self.summary = summary
         self.time_to_failure: Optional[float] = summary.get("time_to_failure_s")
         self.failure_mode: str = summary["failure_mode"]
         self.verdict: str = summary["verdict"]
         self.verdict_text: str = summary["verdict_text"]
         self.warnings: List[Dict[str, Any]] = summary.get("warnings", [])
+
+    @property
+    def history(self) -> Any:
+        """The history table (built on first use: a loop that wants only the summary does not
+        pay for a DataFrame per run)."""
+        if self._history is None:
+            self._history = _table(self._columns)
+        return self._history
 
     def __repr__(self) -> str:
         return f"RunResult({self.scenario.name!r}: {self.verdict_text})"
@@ -216,7 +225,7 @@ class Scenario:
         """The seal's life (``sealsim run``), at ``fidelity`` if given (``exact``,
         ``critical-junction``, ``effective-medium``, ``rule-of-thumb``, ``numerical``)."""
         history, summary = self._inner._run(fidelity)
-        return RunResult(self, _table(history), json.loads(summary))
+        return RunResult(self, history, json.loads(summary))
 
     def leak(
         self,
