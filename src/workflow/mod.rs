@@ -111,3 +111,50 @@ pub fn replace(
     })?;
     Ok((new_text, scenario))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::path::Path;
+
+    const PAPER: &str = include_str!("../../scenarios/persson-yang-2008.toml");
+
+    #[test]
+    fn replace_equals_the_edited_file_and_names_the_key_of_an_error() {
+        let path = Path::new("dir/x.toml");
+        let values = [
+            (
+                "seal.nominal_pressure".to_owned(),
+                toml::Value::String("0.3 MPa".into()),
+            ),
+            ("model.shape_factor".to_owned(), toml::Value::Integer(2)),
+        ];
+        let (text, replaced) = replace(PAPER, path, &values).unwrap();
+        // the same scenario as the file edited by hand
+        let edited = PAPER.replace("\"0.2 MPa\"", "\"0.3 MPa\"") + "\n[model]\nshape_factor = 2\n";
+        let direct = Scenario::from_str(&edited, path).unwrap();
+        assert_eq!(replaced, direct);
+        assert_eq!(replaced.problem.seal.nominal_pressure, 3e5);
+        assert_eq!(replaced.problem.shape_factor, 2.0);
+        // the new text validates to the same scenario again
+        assert_eq!(Scenario::from_str(&text, path).unwrap(), replaced);
+        // an invalid value: the file and the replaced key, no line of the rewritten text
+        let bad = [(
+            "seal.nominal_pressure".to_owned(),
+            toml::Value::String("3 m".into()),
+        )];
+        let e = replace(PAPER, path, &bad).unwrap_err().to_string();
+        assert!(
+            e.starts_with("dir/x.toml: seal.nominal_pressure: expected a pressure"),
+            "{e}"
+        );
+        assert!(e.ends_with("(with seal.nominal_pressure = \"3 m\")"), "{e}");
+        // a key path through a value
+        let through = [("seal.width.x".to_owned(), toml::Value::Integer(1))];
+        let e = replace(PAPER, path, &through).unwrap_err().to_string();
+        assert!(
+            e.contains("seal.width.x: `width` in the base scenario is not a table"),
+            "{e}"
+        );
+    }
+}
