@@ -108,7 +108,10 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
             duration: run.scenario.life.time.duration,
             mean_pressure: run.scenario.life.fluid.mean_pressure(),
             floor: LeakFloor::of(&run.scenario.life.fluid, floor),
-            notes: degraded(&run.scenario.life, run.scenario.compatibility.as_ref()),
+            notes: workflow::compare::notes(
+                &run.scenario.life,
+                run.scenario.compatibility.as_ref(),
+            ),
         })
         .collect();
     let csv = args
@@ -245,30 +248,4 @@ fn resolve(spec: &str) -> Result<Material, CliError> {
             "--materials: {unknown} (or give the path of a material file)"
         ))),
     }
-}
-
-/// What a compound's run left out for want of data: ageing the scenario asks for, permeation
-/// of a gas (docs/model.md §6.5, §13.7).
-fn degraded(
-    life: &crate::simulate::LifeProblem,
-    compatibility: Option<&crate::scenario::compatibility::Compatibility>,
-) -> String {
-    let mut notes = Vec::new();
-    let flag;
-    if let Some(c) = compatibility {
-        flag = format!(
-            "{} in {}: {} (docs/model.md §6.8)",
-            c.rating.words(),
-            c.class.as_str(),
-            c.rating.letter()
-        );
-        notes.push(flag.as_str());
-    }
-    if life.ageing_source == crate::simulate::AgeingSource::MissingInComparison {
-        notes.push("no ageing constants: run without ageing");
-    }
-    if life.fluid.gas.is_some() && life.permeation.is_none() {
-        notes.push("no permeation data: interface only");
-    }
-    notes.join("; ")
 }

@@ -594,7 +594,7 @@ fn correlation_pair(
 }
 
 /// Sets `key` (dotted) in `table`, creating tables on the way.
-fn set(table: &mut toml::Table, key: &str, value: toml::Value) -> Result<(), String> {
+pub(crate) fn set(table: &mut toml::Table, key: &str, value: toml::Value) -> Result<(), String> {
     let parts: Vec<&str> = key.split('.').collect();
     let (last, path) = parts.split_last().ok_or("an empty key path")?;
     let mut t = table;

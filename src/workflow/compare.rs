@@ -4,8 +4,9 @@ use super::{Progress, life_on, scenario_path};
 use crate::contact::ContactSettings;
 use crate::leak::{ContactPath, Fidelity};
 use crate::material::Material;
+use crate::scenario::compatibility::Compatibility;
 use crate::scenario::{Scenario, ScenarioError};
-use crate::simulate::LifeResult;
+use crate::simulate::{LifeProblem, LifeResult};
 use crate::surface::Spectrum;
 use crate::validity::Findings;
 use std::path::Path;
@@ -36,14 +37,24 @@ pub fn compare(
 ) -> Result<Vec<CompoundRun>, ScenarioError> {
     let scenarios: Vec<Scenario> = compounds
         .iter()
-        .map(|(_, m)| {
-            let mut s = Scenario::load_with_material(scenario_path_on_disk, m)?;
-            if let Some(f) = fidelity {
-                s.life.fidelity = f;
-            }
-            Ok(s)
-        })
+        .map(|(_, m)| Scenario::load_with_material(scenario_path_on_disk, m))
         .collect::<Result<_, ScenarioError>>()?;
+    Ok(compare_scenarios(scenarios, compounds, fidelity, progress))
+}
+
+/// [`compare`] on `scenarios` validated beforehand, one per compound of `compounds` (in
+/// order; e.g. [`Scenario::from_str_with_material`] of a text that is not on disk).
+pub fn compare_scenarios(
+    mut scenarios: Vec<Scenario>,
+    compounds: Vec<(String, Material)>,
+    fidelity: Option<Fidelity>,
+    progress: Progress<'_>,
+) -> Vec<CompoundRun> {
+    if let Some(f) = fidelity {
+        for s in &mut scenarios {
+            s.life.fidelity = f;
+        }
+    }
     // One contact table for all compounds: it depends only on the surface, the contact
     // settings and the level, which the variants share (checked, in case a material file
     // changed them).
@@ -68,5 +79,29 @@ pub fn compare(
             result,
         });
     }
-    Ok(runs)
+    runs
+}
+
+/// What a compound's run left out for want of data, "; "-separated (the `notes` column of
+/// `sealsim compare`): the compound's rating in the fluid's class when rated, ageing the
+/// scenario asks for, permeation of a gas (docs/model.md §6.5, §6.8, §13.7).
+pub fn notes(life: &LifeProblem, compatibility: Option<&Compatibility>) -> String {
+    let mut notes = Vec::new();
+    let flag;
+    if let Some(c) = compatibility {
+        flag = format!(
+            "{} in {}: {} (docs/model.md §6.8)",
+            c.rating.words(),
+            c.class.as_str(),
+            c.rating.letter()
+        );
+        notes.push(flag.as_str());
+    }
+    if life.ageing_source == crate::simulate::AgeingSource::MissingInComparison {
+        notes.push("no ageing constants: run without ageing");
+    }
+    if life.fluid.gas.is_some() && life.permeation.is_none() {
+        notes.push("no permeation data: interface only");
+    }
+    notes.join("; ")
 }

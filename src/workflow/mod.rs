@@ -61,3 +61,100 @@ fn life_on(life: &LifeProblem, path: ContactPath, mut findings: Findings) -> Lif
     result.findings = findings;
     result
 }
+
+/// Scenario `text` (read from `path`) with each dotted key of `values` set as a study's
+/// `[vary]` sets a case's value (`("seal.squeeze", "22 %")`; tables are created on the way, and
+/// setting `material.library` or `material.file` replaces the compound), then validated:
+/// the new scenario and its TOML text. Used by the Python package's `Scenario.replace`.
+///
+/// An invalid result is an error at `path` naming the key (the replaced key the validation
+/// names, else the first replaced), without a line: the lines of the rewritten text are not
+/// the file's.
+pub fn replace(
+    text: &str,
+    path: &std::path::Path,
+    values: &[(String, toml::Value)],
+) -> Result<(String, Scenario), crate::scenario::ScenarioError> {
+    use crate::scenario::ScenarioError;
+    let invalid = |key: Option<String>, message: String| ScenarioError::Invalid {
+        path: path.to_path_buf(),
+        line: None,
+        key,
+        message,
+    };
+    let mut table: toml::Table = text
+        .parse()
+        .map_err(|e: toml::de::Error| invalid(None, e.message().to_owned()))?;
+    for (key, value) in values {
+        crate::scenario::study::set(&mut table, key, value.clone())
+            .map_err(|m| invalid(Some(key.clone()), m))?;
+    }
+    let new_text = toml::to_string(&table).map_err(|e| invalid(None, e.to_string()))?;
+    let described = values
+        .iter()
+        .map(|(k, v)| format!("{k} = {v}"))
+        .collect::<Vec<_>>()
+        .join(", ");
+    let scenario = Scenario::from_str(&new_text, path).map_err(|e| match e {
+        ScenarioError::Invalid { key, message, .. } => {
+            let named = key
+                .clone()
+                .filter(|k| values.iter().any(|(v, _)| v == k))
+                .or_else(|| values.first().map(|(k, _)| k.clone()));
+            let inner = match &key {
+                Some(k) if Some(k) != named.as_ref() => format!("{k}: {message}"),
+                _ => message,
+            };
+            invalid(named, format!("{inner} (with {described})"))
+        }
+        other => other,
+    })?;
+    Ok((new_text, scenario))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::path::Path;
+
+    const PAPER: &str = include_str!("../../scenarios/persson-yang-2008.toml");
+
+    #[test]
+    fn replace_equals_the_edited_file_and_names_the_key_of_an_error() {
+        let path = Path::new("dir/x.toml");
+        let values = [
+            (
+                "seal.nominal_pressure".to_owned(),
+                toml::Value::String("0.3 MPa".into()),
+            ),
+            ("model.shape_factor".to_owned(), toml::Value::Integer(2)),
+        ];
+        let (text, replaced) = replace(PAPER, path, &values).unwrap();
+        // the same scenario as the file edited by hand
+        let edited = PAPER.replace("\"0.2 MPa\"", "\"0.3 MPa\"") + "\n[model]\nshape_factor = 2\n";
+        let direct = Scenario::from_str(&edited, path).unwrap();
+        assert_eq!(replaced, direct);
+        assert_eq!(replaced.problem.seal.nominal_pressure, 3e5);
+        assert_eq!(replaced.problem.shape_factor, 2.0);
+        // the new text validates to the same scenario again
+        assert_eq!(Scenario::from_str(&text, path).unwrap(), replaced);
+        // an invalid value: the file and the replaced key, no line of the rewritten text
+        let bad = [(
+            "seal.nominal_pressure".to_owned(),
+            toml::Value::String("3 m".into()),
+        )];
+        let e = replace(PAPER, path, &bad).unwrap_err().to_string();
+        assert!(
+            e.starts_with("dir/x.toml: seal.nominal_pressure: expected a pressure"),
+            "{e}"
+        );
+        assert!(e.ends_with("(with seal.nominal_pressure = \"3 m\")"), "{e}");
+        // a key path through a value
+        let through = [("seal.width.x".to_owned(), toml::Value::Integer(1))];
+        let e = replace(PAPER, path, &through).unwrap_err().to_string();
+        assert!(
+            e.contains("seal.width.x: `width` in the base scenario is not a table"),
+            "{e}"
+        );
+    }
+}
