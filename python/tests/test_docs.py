@@ -1,4 +1,4 @@
-"""The Python examples of the guide (docs/src/python.md) and of python/README.md run, and print
+"""The Python examples of the guide (docs/src/python.md), of python/README.md and of the README run, and print
 the headline's time to failure equal to the CLI's JSON."""
 
 import contextlib
@@ -9,7 +9,7 @@ import pytest
 
 from conftest import REPO, read_json
 
-PAGES = ["docs/src/python.md", "python/README.md"]
+PAGES = ["docs/src/python.md", "python/README.md", "README.md"]
 
 
 @pytest.mark.parametrize("page", PAGES)
