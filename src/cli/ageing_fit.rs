@@ -40,7 +40,7 @@ pub struct AgeingFitArgs {
     #[arg(long, value_name = "T")]
     pub service_temperature: Option<String>,
 
-    /// What the value column is \[default: inferred from the direction of every series\].
+    /// What the value column is (default: inferred from the direction of every series).
     #[arg(long, value_enum)]
     pub kind: Option<KindArg>,
 

@@ -68,7 +68,7 @@ pub struct FitPronyArgs {
     #[arg(short, long, value_name = "FILE")]
     pub output: Option<PathBuf>,
 
-    /// Material name \[default: the data file's name without extension\].
+    /// Material name (default: the data file's name without extension).
     #[arg(long, value_name = "NAME", value_parser = NonEmptyStringValueParser::new())]
     pub name: Option<String>,
 
@@ -96,13 +96,13 @@ pub struct FitPronyArgs {
 #[derive(Debug, Clone, Default, Args)]
 #[command(next_help_heading = "Master curves (data with a temperature column)")]
 pub struct TtsArgs {
-    /// The shift law fitted to the shift factors \[default: wlf when the data have several
-    /// temperatures\].
+    /// The shift law fitted to the shift factors (default: wlf when the data have several
+    /// temperatures).
     #[arg(long, value_enum)]
     pub shift: Option<ShiftArg>,
 
-    /// Reference temperature of the master curve and the law (e.g. 23C) \[default: the data
-    /// temperature nearest their median\].
+    /// Reference temperature of the master curve and the law (e.g. 23C) (default: the data
+    /// temperature nearest their median).
     #[arg(long, value_name = "T")]
     pub reference_temperature: Option<String>,
 

@@ -52,7 +52,7 @@ pub struct LeakArgs {
     #[arg(value_name = "SCENARIO")]
     pub scenario: PathBuf,
 
-    /// Comma-separated nominal pressures \[default: the scenario's seal.nominal_pressure\].
+    /// Comma-separated nominal pressures (default: the scenario's seal.nominal_pressure).
     // allow_hyphen_values: a negative pressure reaches parse_pressure (and its message)
     // instead of being read as an option
     #[arg(long, value_name = "P,...", value_delimiter = ',', value_parser = parse_pressure,
@@ -64,12 +64,12 @@ pub struct LeakArgs {
           allow_hyphen_values = true)]
     pub sweep: Option<Sweep>,
 
-    /// Number of points of --sweep \[default: 20\].
+    /// Number of points of --sweep (default: 20).
     #[arg(long, value_name = "N", requires = "sweep", allow_negative_numbers = true,
           value_parser = clap::value_parser!(u32).range(2..=MAX_SWEEP_POINTS))]
     pub points: Option<u32>,
 
-    /// Fidelity level \[default: the scenario's simulation.fidelity, else critical-junction\].
+    /// Fidelity level (default: the scenario's simulation.fidelity, else critical-junction).
     #[arg(long, value_name = "LEVEL", value_parser = super::FidelityArg)]
     pub fidelity: Option<Fidelity>,
 

@@ -103,7 +103,7 @@ pub struct CurveArgs {
     #[command(flatten)]
     pub material: MaterialRef,
 
-    /// Temperature of the curve \[default: the shift's reference temperature\].
+    /// Temperature of the curve (default: the shift's reference temperature).
     #[arg(long, value_name = "T", value_parser = parse_temperature, allow_hyphen_values = true)]
     pub temperature: Option<f64>,
 

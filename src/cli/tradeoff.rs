@@ -33,11 +33,11 @@ pub struct TradeoffArgs {
     #[arg(long, value_name = "FILE.svg")]
     pub plot: Option<PathBuf>,
 
-    /// Band q1/q0 resolved by the numerical level \[default: the scenario's numerical.band, 32\].
+    /// Band q1/q0 resolved by the numerical level (default: the scenario's numerical.band, 32).
     #[arg(long, allow_hyphen_values = true, value_parser = parse_band)]
     pub band: Option<f64>,
 
-    /// Seed of the synthetic surfaces \[default: the scenario's numerical.seed, 1\].
+    /// Seed of the synthetic surfaces (default: the scenario's numerical.seed, 1).
     #[arg(long)]
     pub seed: Option<u64>,
 

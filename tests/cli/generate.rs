@@ -99,3 +99,32 @@ fn completion_scripts_cover_every_command_and_are_valid_bash() {
         .assert()
         .code(2);
 }
+
+/// No help text prints a stray backslash: rustdoc's `\[` escapes in argument doc comments
+/// used to reach `--help` (and the man pages) verbatim.
+#[test]
+fn no_help_text_prints_a_backslash() {
+    let mut invocations: Vec<Vec<String>> = commands().into_iter().map(|c| vec![c]).collect();
+    for (command, sub) in [
+        ("materials", "list"),
+        ("materials", "show"),
+        ("materials", "curve"),
+        ("materials", "export"),
+        ("materials", "check"),
+        ("study", "merge"),
+        ("study", "slurm"),
+        ("generate", "man"),
+        ("generate", "completions"),
+    ] {
+        invocations.push(vec![command.to_owned(), sub.to_owned()]);
+    }
+    for args in invocations {
+        let out = sealsim().args(&args).arg("--help").output().unwrap();
+        assert!(out.status.success(), "{args:?}");
+        let help = String::from_utf8(out.stdout).unwrap();
+        assert!(
+            !help.contains('\\'),
+            "{args:?} --help prints a backslash:\n{help}"
+        );
+    }
+}
