@@ -17,7 +17,7 @@ use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
 use sealsim::leak::Fidelity;
 use sealsim::material::Material;
 use sealsim::report::csv::{gas_leak_table, leak_table, motion_leak_table};
-use sealsim::report::life::{CompareRow, LeakFloor, Summary, compare_table, history_table_for};
+use sealsim::report::life::{CompareRow, Summary, compare_table, history_table_for};
 use sealsim::scenario::study::Study;
 use sealsim::scenario::{Scenario, ScenarioError as RustScenarioError, library};
 use sealsim::units::{self, Dimension};
@@ -401,21 +401,7 @@ fn _compare<'py>(
     let (csv, findings) = blocking(py, move || {
         let runs =
             workflow::compare::compare_scenarios(scenarios, materials, level, &mut |_, _| {});
-        let rows: Vec<CompareRow<'_>> = runs
-            .iter()
-            .map(|run| CompareRow {
-                label: &run.label,
-                material: &run.material,
-                result: &run.result,
-                duration: run.scenario.life.time.duration,
-                mean_pressure: run.scenario.life.fluid.mean_pressure(),
-                floor: LeakFloor::of(&run.scenario.life.fluid, None),
-                notes: workflow::compare::notes(
-                    &run.scenario.life,
-                    run.scenario.compatibility.as_ref(),
-                ),
-            })
-            .collect();
+        let rows: Vec<CompareRow<'_>> = runs.iter().map(|run| CompareRow::of(run, None)).collect();
         let findings: serde_json::Map<String, serde_json::Value> = runs
             .iter()
             .map(|run| {

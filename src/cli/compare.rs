@@ -10,7 +10,7 @@
 use super::{CliError, print_findings, progress_bar, write_output};
 use crate::leak::Fidelity;
 use crate::material::Material;
-use crate::report::life::{CompareRow, LeakFloor, compare_cells, compare_table, compare_text};
+use crate::report::life::{CompareRow, compare_cells, compare_table, compare_text};
 use crate::report::life_chart::compare_chart;
 use crate::scenario::{library, load_material_file};
 use crate::workflow;
@@ -99,21 +99,7 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
         Some(r) => super::leak_floor_flag(args.leak_floor.as_deref(), &r.scenario.life.fluid)?,
         None => None,
     };
-    let rows: Vec<CompareRow<'_>> = runs
-        .iter()
-        .map(|run| CompareRow {
-            label: &run.label,
-            material: &run.material,
-            result: &run.result,
-            duration: run.scenario.life.time.duration,
-            mean_pressure: run.scenario.life.fluid.mean_pressure(),
-            floor: LeakFloor::of(&run.scenario.life.fluid, floor),
-            notes: workflow::compare::notes(
-                &run.scenario.life,
-                run.scenario.compatibility.as_ref(),
-            ),
-        })
-        .collect();
+    let rows: Vec<CompareRow<'_>> = runs.iter().map(|run| CompareRow::of(run, floor)).collect();
     let csv = args
         .output
         .as_ref()

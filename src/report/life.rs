@@ -1704,6 +1704,24 @@ pub struct CompareRow<'a> {
     pub notes: String,
 }
 
+impl<'a> CompareRow<'a> {
+    /// The row of one compound's run of [`crate::workflow::compare`]: its run length, mean
+    /// pressure and notes from the run's own scenario; leak rates below `floor` \[m³/s\]
+    /// (`--leak-floor`; `None`: one molecule a second) read "≈ 0".
+    pub fn of(run: &'a crate::workflow::compare::CompoundRun, floor: Option<f64>) -> Self {
+        let life = &run.scenario.life;
+        CompareRow {
+            label: &run.label,
+            material: &run.material,
+            result: &run.result,
+            duration: life.time.duration,
+            mean_pressure: life.fluid.mean_pressure(),
+            floor: LeakFloor::of(&life.fluid, floor),
+            notes: crate::workflow::compare::notes(life, run.scenario.compatibility.as_ref()),
+        }
+    }
+}
+
 /// The comparison's columns of the end of each run, after the leak rates (and throughputs).
 pub const COMPARE_END_COLUMNS: [&str; 6] = [
     "sealing_force_end_N_per_m",
