@@ -18,7 +18,7 @@
 import { existsSync, statSync } from 'node:fs';
 import { resolve, sep } from 'node:path';
 import { pathToFileURL } from 'node:url';
-import { chromium } from 'playwright-core';
+import { launchChromium } from './chromium.mjs';
 
 const USAGE = 'usage: node check-book.mjs BOOK_DIR OUTDIR PAGE.html...';
 function usage(msg) {
@@ -50,26 +50,7 @@ function allowed(u) {
   return u.startsWith('data:') || u.startsWith(bookUrl);
 }
 
-let browser;
-try {
-  browser = await chromium.launch({
-    executablePath,
-    timeout: 60_000,
-    args: [
-      '--headless',
-      '--no-sandbox', // we run as root
-      '--disable-gpu',
-      '--disable-quic',
-      '--no-first-run',
-      '--disable-background-networking',
-      '--disable-component-update',
-      '--disable-sync',
-    ],
-  });
-} catch (e) {
-  console.error(`check-book: could not start Chromium at ${executablePath}: ${e.message}`);
-  process.exit(2);
-}
+const browser = await launchChromium(executablePath, 'check-book');
 
 let failed = 0;
 try {

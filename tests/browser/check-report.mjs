@@ -21,7 +21,7 @@
 import { existsSync, statSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
-import { chromium } from 'playwright-core';
+import { launchChromium } from './chromium.mjs';
 
 const USAGE = 'usage: node check-report.mjs REPORT.html SCREENSHOT.png [--min-plots N]';
 
@@ -88,27 +88,7 @@ const failures = [];
 const fail = (msg) => failures.push(msg);
 const requests = [];
 
-let browser;
-try {
-  browser = await chromium.launch({
-    executablePath,
-    timeout: 60_000,
-    args: [
-      '--headless',
-      '--no-sandbox', // we run as root
-      '--disable-gpu',
-      // Without these Chromium opens connections of its own, which this closed network refuses.
-      '--disable-quic',
-      '--no-first-run',
-      '--disable-background-networking',
-      '--disable-component-update',
-      '--disable-sync',
-    ],
-  });
-} catch (e) {
-  console.error(`check-report: could not start Chromium at ${executablePath}: ${e.message}`);
-  process.exit(2);
-}
+const browser = await launchChromium(executablePath, 'check-report');
 
 let summary = null;
 try {
