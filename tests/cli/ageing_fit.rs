@@ -136,3 +136,39 @@ fn bad_input_exits_2_with_file_and_line() {
         "bad.csv:6: the series at 383.15 K rises",
     );
 }
+
+/// The lab-data tutorial's shipped ageing data (scenarios/lab-data/cs-ageing-nbr.csv) are made
+/// from CS = 1 − exp(−k t), k = ln 2 / 1000 h at 100 °C, Ea = 95 kJ/mol, with ±1.5 % scatter
+/// (its header): the fit recovers that law — the 95 % interval of Ea holds 95 kJ/mol, and each
+/// time to 50 % is within 3 % of 1000 h · exp((Ea/R)(1/T − 1/373.15 K)).
+#[test]
+fn the_tutorial_ageing_data_give_back_the_law_they_were_made_from() {
+    let path = crate::common::scenario_path("lab-data/cs-ageing-nbr.csv");
+    let out = sealsim()
+        .arg("ageing-fit")
+        .arg(&path)
+        .arg("--json")
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let (ea, r) = (95e3, 8.314_462_618);
+    let interval = &v["activation_energy_interval_J_per_mol"];
+    let (lo, hi) = (interval[0].as_f64().unwrap(), interval[1].as_f64().unwrap());
+    assert!(lo < ea && ea < hi, "Ea interval [{lo}, {hi}] misses {ea}");
+    let times = v["times_to_criterion"].as_array().unwrap();
+    assert_eq!(times.len(), 3);
+    for point in times {
+        let t = point["temperature_K"].as_f64().unwrap();
+        let fitted = point["time_s"].as_f64().unwrap();
+        let law = 1000.0 * 3600.0 * ((ea / r) * (1.0 / t - 1.0 / 373.15)).exp();
+        assert!(
+            (fitted / law - 1.0).abs() < 0.03,
+            "at {t} K: {fitted} s against the law's {law} s"
+        );
+    }
+}
