@@ -66,6 +66,53 @@ def _table(columns: Mapping[str, list]) -> Any:
     return pandas.DataFrame(arrays)
 
 
+class _TextBar:
+    """A plain text progress bar on standard error: ``what [=====     ] done/total``."""
+
+    def __init__(self, what: str):
+        self.what = what
+        self.width = 30
+
+    def __call__(self, done: int, total: int) -> None:
+        import sys
+
+        filled = self.width * done // total if total else 0
+        bar = "=" * filled + " " * (self.width - filled)
+        end = "\n" if done >= total else ""
+        sys.stderr.write(f"\r{self.what} [{bar}] {done}/{total}{end}")
+        sys.stderr.flush()
+
+
+def _progress(progress: Any, what: str) -> Any:
+    """The ``progress`` argument as a callable ``(done, total)``: None or False for none, True
+    for a text bar on standard error, a tqdm-style bar (an object with ``update``: its
+    ``total`` is set and it is advanced by the units done), or any callable taking
+    ``(done, total)``."""
+    if progress is None or progress is False:
+        return None
+    if progress is True:
+        return _TextBar(what)
+    if hasattr(progress, "update"):
+        bar = progress
+        state = {"done": 0}
+
+        def advance(done: int, total: int) -> None:
+            if getattr(bar, "total", None) != total:
+                bar.total = total
+                if hasattr(bar, "refresh"):
+                    bar.refresh()
+            bar.update(done - state["done"])
+            state["done"] = done
+
+        return advance
+    if callable(progress):
+        return progress
+    raise TypeError(
+        f"progress must be None, True, a tqdm-style bar or a callable (done, total), "
+        f"not {type(progress).__name__}"
+    )
+
+
 class RunResult:
     """The life of a scenario's seal (``sealsim run``).
 
@@ -221,22 +268,29 @@ class Scenario:
         guidance."""
         return self._inner.input_warnings
 
-    def run(self, fidelity: Optional[str] = None) -> RunResult:
+    def run(self, fidelity: Optional[str] = None, progress: Any = None) -> RunResult:
         """The seal's life (``sealsim run``), at ``fidelity`` if given (``exact``,
-        ``critical-junction``, ``effective-medium``, ``rule-of-thumb``, ``numerical``)."""
-        history, summary = self._inner._run(fidelity)
+        ``critical-junction``, ``effective-medium``, ``rule-of-thumb``, ``numerical``).
+        ``progress``: True for a text bar, a tqdm bar or a callable ``(done, total)``, told
+        of the numerical level's tabulated pressures (the other levels report nothing)."""
+        history, summary = self._inner._run(fidelity, _progress(progress, "numerical level"))
         return RunResult(self, history, json.loads(summary))
 
     def leak(
         self,
         pressures: Optional[Sequence[Union[float, str]]] = None,
         fidelity: Optional[str] = None,
+        progress: Any = None,
     ) -> Any:
         """The leak at each nominal pressure (``sealsim leak``): Pa floats or strings with
         units (``"2 bar"``); None for the scenario's own. The table has the columns of
         ``sealsim leak``'s CSV; its validity findings are ``.attrs["warnings"]`` of a
-        DataFrame."""
-        columns, findings = self._inner._leak(None if pressures is None else list(pressures), fidelity)
+        DataFrame. ``progress`` as for :meth:`run`."""
+        columns, findings = self._inner._leak(
+            None if pressures is None else list(pressures),
+            fidelity,
+            _progress(progress, "numerical level"),
+        )
         table = _table(columns)
         if hasattr(table, "attrs"):
             table.attrs["warnings"] = json.loads(findings)
@@ -246,22 +300,34 @@ class Scenario:
         return f"Scenario({self.name!r}, path={self.path!r})"
 
 
-def compare(scenario: Scenario, compounds: Iterable[str], fidelity: Optional[str] = None) -> Any:
+def compare(
+    scenario: Scenario,
+    compounds: Iterable[str],
+    fidelity: Optional[str] = None,
+    progress: Any = None,
+) -> Any:
     """The scenario run with each compound (library ids such as ``"nbr-70"`` or material-file
     paths) in place of its own (``sealsim compare``): one row per compound with the columns of
-    its CSV. Each compound's findings are ``.attrs["warnings"]`` of a DataFrame."""
-    columns, findings = _sealsim._compare(scenario._inner, list(compounds), fidelity)
+    its CSV. Each compound's findings are ``.attrs["warnings"]`` of a DataFrame. ``progress``
+    as for :meth:`Scenario.run`."""
+    columns, findings = _sealsim._compare(
+        scenario._inner, list(compounds), fidelity, _progress(progress, "numerical level")
+    )
     table = _table(columns)
     if hasattr(table, "attrs"):
         table.attrs["warnings"] = json.loads(findings)
     return table
 
 
-def study(source: Union[PathLike, str], threads: Optional[int] = None) -> StudyResult:
+def study(
+    source: Union[PathLike, str], threads: Optional[int] = None, progress: Any = None
+) -> StudyResult:
     """Runs a tolerance study (``sealsim study``): ``source`` is a study file's path or its
     TOML text (a text's ``base`` is relative to the working directory). ``threads``: None for
-    all cores."""
-    columns, summary = _sealsim._study(os.fspath(source), threads)
+    all cores. ``progress``: True for a text bar on standard error, a tqdm bar
+    (``progress=tqdm.tqdm()``), or a callable ``(cases_done, cases)``, called at most every
+    50 ms and once at the end."""
+    columns, summary = _sealsim._study(os.fspath(source), threads, _progress(progress, "cases"))
     return StudyResult(_table(columns), json.loads(summary))
 
 

@@ -2,7 +2,7 @@
 importable, else dicts of numpy arrays: typed ``Table`` here."""
 
 import os
-from typing import Any, Dict, Iterable, List, Mapping, Optional, Sequence, Union
+from typing import Any, Callable, Dict, Iterable, List, Mapping, Optional, Sequence, Union
 
 
 __version__: str
@@ -10,6 +10,8 @@ __version__: str
 PathLike = Union[str, os.PathLike[str]]
 # a pandas.DataFrame, or a Dict[str, numpy.ndarray] without pandas
 Table = Any
+# None, True (a text bar on stderr), a tqdm-style bar (has .update), or a callable (done, total)
+Progress = Union[None, bool, Any, Callable[[int, int], Any]]
 
 class ScenarioError(ValueError):
     """Invalid scenario, study or input: ``file:line: key: message`` as the CLI prints it."""
@@ -50,15 +52,23 @@ class Scenario:
     def fidelity(self) -> str: ...
     @property
     def input_warnings(self) -> List[str]: ...
-    def run(self, fidelity: Optional[str] = ...) -> RunResult: ...
+    def run(self, fidelity: Optional[str] = ..., progress: Progress = ...) -> RunResult: ...
     def leak(
         self,
         pressures: Optional[Sequence[Union[float, str]]] = ...,
         fidelity: Optional[str] = ...,
+        progress: Progress = ...,
     ) -> Table: ...
 
-def compare(scenario: Scenario, compounds: Iterable[str], fidelity: Optional[str] = ...) -> Table: ...
-def study(source: Union[PathLike, str], threads: Optional[int] = ...) -> StudyResult: ...
+def compare(
+    scenario: Scenario,
+    compounds: Iterable[str],
+    fidelity: Optional[str] = ...,
+    progress: Progress = ...,
+) -> Table: ...
+def study(
+    source: Union[PathLike, str], threads: Optional[int] = ..., progress: Progress = ...
+) -> StudyResult: ...
 def materials() -> Table: ...
 def quantity(text: str, dimension: Optional[str] = ...) -> float: ...
 def contact(

@@ -16,14 +16,16 @@ use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
 use sealsim::leak::Fidelity;
 use sealsim::material::Material;
+use sealsim::report::csv::{Cell, Table};
 use sealsim::report::csv::{gas_leak_table, leak_table, motion_leak_table};
-use sealsim::report::life::{CompareRow, Summary, compare_table, history_table_for};
+use sealsim::report::life::{CompareRow, Summary, compare_table, history_for};
 use sealsim::scenario::study::Study;
 use sealsim::scenario::{Scenario, ScenarioError as RustScenarioError, library};
 use sealsim::units::{self, Dimension};
 use sealsim::workflow;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::mpsc;
 use std::time::Duration;
 
@@ -70,14 +72,67 @@ where
     T: Send + 'static,
     F: FnOnce() -> T + Send + 'static,
 {
+    blocking_with_progress(py, None, move |_| work())
+}
+
+/// The progress of work on the worker thread: `done` of `total` units (cases, states), read by
+/// the waiting thread.
+#[derive(Default)]
+pub(crate) struct Meter {
+    done: AtomicUsize,
+    total: AtomicUsize,
+}
+
+impl Meter {
+    /// Records that `done` of `total` units are finished (from any thread).
+    pub(crate) fn set(&self, done: usize, total: usize) {
+        self.total.store(total, Ordering::Relaxed);
+        self.done.fetch_max(done, Ordering::Relaxed);
+    }
+
+    fn get(&self) -> (usize, usize) {
+        (
+            self.done.load(Ordering::Relaxed),
+            self.total.load(Ordering::Relaxed),
+        )
+    }
+}
+
+/// [`blocking`] with progress: `work` reports to its [`Meter`], and `progress(done, total)` is
+/// called on the calling thread (with the GIL) whenever that changed, at most every 50 ms and
+/// once at the end. An exception raised by `progress` ends the wait with it.
+pub(crate) fn blocking_with_progress<T, F>(
+    py: Python<'_>,
+    progress: Option<&Bound<'_, PyAny>>,
+    work: F,
+) -> PyResult<T>
+where
+    T: Send + 'static,
+    F: FnOnce(&Meter) -> T + Send + 'static,
+{
+    let meter = Arc::new(Meter::default());
     let (tx, rx) = mpsc::channel();
+    let worker_meter = Arc::clone(&meter);
     std::thread::Builder::new()
         .name("sealsim".into())
         .spawn(move || {
-            let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(work));
+            let outcome =
+                std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| work(&worker_meter)));
             let _ = tx.send(outcome);
         })
         .map_err(|e| PyOSError::new_err(format!("cannot start a worker thread: {e}")))?;
+    let mut shown = (0, 0);
+    let mut report = |meter: &Meter| -> PyResult<()> {
+        let now = meter.get();
+        if let Some(callback) = progress
+            && now != shown
+            && now.1 > 0
+        {
+            shown = now;
+            callback.call1(now)?;
+        }
+        Ok(())
+    };
     let mut rx = rx;
     loop {
         let (received, back) = py.detach(move || {
@@ -86,7 +141,10 @@ where
         });
         rx = back;
         match received {
-            Ok(Ok(value)) => return Ok(value),
+            Ok(Ok(value)) => {
+                report(&meter)?;
+                return Ok(value);
+            }
             Ok(Err(payload)) => {
                 let what = payload
                     .downcast_ref::<&str>()
@@ -95,7 +153,10 @@ where
                     .unwrap_or_else(|| "a panic".to_owned());
                 return Err(internal(format!("sealsim panicked: {what}")));
             }
-            Err(mpsc::RecvTimeoutError::Timeout) => py.check_signals()?,
+            Err(mpsc::RecvTimeoutError::Timeout) => {
+                py.check_signals()?;
+                report(&meter)?;
+            }
             Err(mpsc::RecvTimeoutError::Disconnected) => {
                 return Err(internal("the worker thread ended without a result"));
             }
@@ -134,6 +195,39 @@ fn columns<'py>(py: Python<'py>, csv_text: &str) -> PyResult<Bound<'py, PyDict>>
         match numbers {
             Some(v) => dict.set_item(name, v)?,
             None => dict.set_item(name, cells)?,
+        }
+    }
+    Ok(dict)
+}
+
+/// A report [`Table`] as an ordered dict of columns, as [`columns`] reads its CSV text: a
+/// column of numbers and blanks is a list of floats (a blank is NaN), any other a list of
+/// strings. The floats are the cells' own, which the CSV's round-trip notation carries bit for
+/// bit, so this equals `columns(table.to_csv())` without formatting and parsing every cell.
+fn table_columns<'py>(py: Python<'py>, table: &Table) -> PyResult<Bound<'py, PyDict>> {
+    let dict = PyDict::new(py);
+    for (j, name) in table.header.iter().enumerate() {
+        let cells = table.rows.iter().map(|r| r.get(j).unwrap_or(&Cell::Blank));
+        let numbers: Option<Vec<f64>> = cells
+            .clone()
+            .map(|c| match c {
+                Cell::Number(v) => Some(*v),
+                Cell::Blank => Some(f64::NAN),
+                Cell::Text(_) => None,
+            })
+            .collect();
+        match numbers {
+            Some(v) => dict.set_item(name, v)?,
+            None => {
+                let words: Vec<String> = cells
+                    .map(|c| match c {
+                        Cell::Number(v) => format!("{v:e}"),
+                        Cell::Blank => String::new(),
+                        Cell::Text(t) => t.clone(),
+                    })
+                    .collect();
+                dict.set_item(name, words)?;
+            }
         }
     }
     Ok(dict)
@@ -292,42 +386,72 @@ impl PyScenario {
     }
 
     /// `sealsim run`: (history columns, summary JSON text).
-    #[pyo3(signature = (fidelity = None))]
+    #[pyo3(signature = (fidelity = None, progress = None))]
     fn _run<'py>(
         &self,
         py: Python<'py>,
         fidelity: Option<&str>,
+        progress: Option<Bound<'py, PyAny>>,
     ) -> PyResult<(Bound<'py, PyDict>, String)> {
         let scenario = self.at(self::fidelity(fidelity)?);
         let file = self.file.clone();
-        let (history, summary) = blocking(py, move || {
-            let result = workflow::life::run(&scenario, &mut |_, _| {});
-            let history = history_table_for(&result, &scenario.life.fluid);
+        let (history, summary) = blocking_with_progress(py, progress.as_ref(), move |meter| {
+            let result = workflow::life::run(&scenario, &mut |done, total| meter.set(done, total));
+            let history = history_for(&result, &scenario.life.fluid);
             let summary = Summary::new(&scenario.name, &file, &scenario.life, &result).to_json();
             (history, summary)
         })?;
         let history = history.map_err(internal)?;
         let summary = summary.map_err(internal)?;
-        Ok((columns(py, &history)?, summary))
+        Ok((table_columns(py, &history)?, summary))
+    }
+
+    /// The in-process Rust reference of the overhead benchmark (python/benches/overhead.py):
+    /// the fastest of `repeats` runs of the life workflow alone, and of the workflow with the
+    /// history table and summary that `_run` returns (seconds, GIL released, on this thread).
+    fn _time_in_rust(&self, py: Python<'_>, repeats: usize) -> (f64, f64) {
+        let scenario = Arc::clone(&self.inner);
+        let file = self.file.clone();
+        py.detach(move || {
+            let (mut bare, mut reported) = (f64::INFINITY, f64::INFINITY);
+            for _ in 0..repeats.max(1) {
+                let start = std::time::Instant::now();
+                std::hint::black_box(workflow::life::run(&scenario, &mut |_, _| {}));
+                bare = bare.min(start.elapsed().as_secs_f64());
+                let start = std::time::Instant::now();
+                let result = workflow::life::run(&scenario, &mut |_, _| {});
+                let history = history_for(&result, &scenario.life.fluid);
+                let summary =
+                    Summary::new(&scenario.name, &file, &scenario.life, &result).to_json();
+                let _ = std::hint::black_box((history, summary));
+                reported = reported.min(start.elapsed().as_secs_f64());
+            }
+            (bare, reported)
+        })
     }
 
     /// `sealsim leak`: (table columns, findings JSON text). `pressures` in Pa (or strings with
     /// units); `None`: the scenario's own.
-    #[pyo3(signature = (pressures = None, fidelity = None))]
+    #[pyo3(signature = (pressures = None, fidelity = None, progress = None))]
     fn _leak<'py>(
         &self,
         py: Python<'py>,
         pressures: Option<Vec<Bound<'py, PyAny>>>,
         fidelity: Option<&str>,
+        progress: Option<Bound<'py, PyAny>>,
     ) -> PyResult<(Bound<'py, PyDict>, String)> {
         let pressures = pressures
             .map(|list| list.iter().map(pressure).collect::<PyResult<Vec<f64>>>())
             .transpose()?;
         let level = self::fidelity(fidelity)?.unwrap_or(self.inner.life.fidelity);
         let scenario = Arc::clone(&self.inner);
-        let (csv, findings) = blocking(py, move || {
-            let outcome =
-                workflow::leak::evaluate(&scenario, pressures.as_deref(), level, &mut |_, _| {});
+        let (csv, findings) = blocking_with_progress(py, progress.as_ref(), move |meter| {
+            let outcome = workflow::leak::evaluate(
+                &scenario,
+                pressures.as_deref(),
+                level,
+                &mut |done, total| meter.set(done, total),
+            );
             let csv = match (&outcome.motion, scenario.life.fluid.mean_pressure()) {
                 (None, Some(p)) => gas_leak_table(&outcome.points, p),
                 (None, None) => leak_table(&outcome.points),
@@ -379,12 +503,13 @@ fn compound(spec: &str) -> PyResult<Material> {
 
 /// `sealsim compare`: the comparison table's columns and each compound's findings (JSON).
 #[pyfunction]
-#[pyo3(signature = (scenario, compounds, fidelity = None))]
+#[pyo3(signature = (scenario, compounds, fidelity = None, progress = None))]
 fn _compare<'py>(
     py: Python<'py>,
     scenario: &PyScenario,
     compounds: Vec<String>,
     fidelity: Option<&str>,
+    progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<(Bound<'py, PyDict>, String)> {
     let level = self::fidelity(fidelity)?;
     let materials: Vec<(String, Material)> = compounds
@@ -398,9 +523,13 @@ fn _compare<'py>(
                 .map_err(scenario_error)
         })
         .collect::<PyResult<_>>()?;
-    let (csv, findings) = blocking(py, move || {
-        let runs =
-            workflow::compare::compare_scenarios(scenarios, materials, level, &mut |_, _| {});
+    let (csv, findings) = blocking_with_progress(py, progress.as_ref(), move |meter| {
+        let runs = workflow::compare::compare_scenarios(
+            scenarios,
+            materials,
+            level,
+            &mut |done, total| meter.set(done, total),
+        );
         let rows: Vec<CompareRow<'_>> = runs.iter().map(|run| CompareRow::of(run, None)).collect();
         let findings: serde_json::Map<String, serde_json::Value> = runs
             .iter()
@@ -421,11 +550,12 @@ fn _compare<'py>(
 /// `sealsim study`: (cases columns, summary JSON text). `source` is a study file's path or its
 /// TOML text (whose `base` is then relative to the working directory).
 #[pyfunction]
-#[pyo3(signature = (source, threads = None))]
+#[pyo3(signature = (source, threads = None, progress = None))]
 fn _study<'py>(
     py: Python<'py>,
     source: String,
     threads: Option<usize>,
+    progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<(Bound<'py, PyDict>, String)> {
     let study = if source.contains('\n') || source.contains('=') {
         Study::from_str(&source, Path::new(STRING_SOURCE))
@@ -433,8 +563,8 @@ fn _study<'py>(
         Study::load(Path::new(&source))
     }
     .map_err(scenario_error)?;
-    let (csv, json) = blocking(py, move || {
-        let progress = |_: usize, _: usize| {};
+    let (csv, json) = blocking_with_progress(py, progress.as_ref(), move |meter| {
+        let progress = |done: usize, total: usize| meter.set(done, total);
         workflow::study::run(&study, 0..study.cases(), threads, &progress).map(|outcomes| {
             let summary = sealsim::study::summary::StudySummary::new(&outcomes, study.confidence);
             (

@@ -23,11 +23,18 @@ def repo():
 
 
 @pytest.fixture(scope="session")
-def cli(pytestconfig):
+def cli_path(pytestconfig):
+    """The CLI binary's absolute path."""
     path = pytestconfig.getoption("--sealsim-cli") or str(REPO / "target/release/sealsim")
     path = str(pathlib.Path(path).resolve())
     if not os.access(path, os.X_OK):
         pytest.fail(f"the sealsim binary {path} is missing: build it (cargo build --release)")
+    return path
+
+
+@pytest.fixture(scope="session")
+def cli(cli_path):
+    path = cli_path
 
     def run(*args, cwd=REPO, expect=0):
         done = subprocess.run([path, *map(str, args)], cwd=cwd, capture_output=True, text=True)

@@ -215,6 +215,73 @@ fn table<'a>(
     finish(writer)
 }
 
+/// One cell of a report [`Table`]: a finite number, a blank (no value) or a word.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Cell {
+    /// A finite number, written in shortest round-trip scientific notation.
+    Number(f64),
+    /// No value: an empty cell (e.g. `u_c_m` where the strip is sealed).
+    Blank,
+    /// A word (a state, a regime).
+    Text(String),
+}
+
+impl Cell {
+    /// A number cell, checked finite: a non-finite value is a bug, reported with its `row`
+    /// (1-based, the header is row 0) and `column`.
+    pub fn number(row: usize, column: &'static str, value: f64) -> Result<Cell, ReportError> {
+        if value.is_finite() {
+            Ok(Cell::Number(value))
+        } else {
+            Err(ReportError::NonFinite { row, column, value })
+        }
+    }
+
+    /// [`Cell::number`] of `Some` value, [`Cell::Blank`] of `None`.
+    pub fn optional(
+        row: usize,
+        column: &'static str,
+        value: Option<f64>,
+    ) -> Result<Cell, ReportError> {
+        value.map_or(Ok(Cell::Blank), |v| Cell::number(row, column, v))
+    }
+
+    /// The cell's CSV text.
+    fn text(&self) -> String {
+        match self {
+            Cell::Number(v) => format!("{v:e}"),
+            Cell::Blank => String::new(),
+            Cell::Text(t) => t.clone(),
+        }
+    }
+}
+
+/// A report table: a header and rows of [`Cell`]s whose numbers were checked finite when they
+/// were made. [`Table::to_csv`] writes it; the Python package reads its columns as floats
+/// directly, which are the CSV's bit for bit (the CSV's notation round-trips), without
+/// formatting and parsing every cell.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Table {
+    /// The column names (SI units in them).
+    pub header: Vec<&'static str>,
+    /// The rows, each as long as the header.
+    pub rows: Vec<Vec<Cell>>,
+}
+
+impl Table {
+    /// The table as CSV text: the header, then one record per row.
+    pub fn to_csv(&self) -> Result<String, ReportError> {
+        let mut writer = ::csv::Writer::from_writer(Vec::new());
+        writer.write_record(&self.header).map_err(csv_error)?;
+        for row in &self.rows {
+            writer
+                .write_record(row.iter().map(Cell::text))
+                .map_err(csv_error)?;
+        }
+        finish(writer)
+    }
+}
+
 /// A finite value in shortest round-trip scientific notation.
 pub(crate) fn number(row: usize, column: &'static str, value: f64) -> Result<String, ReportError> {
     if value.is_finite() {
@@ -242,6 +309,30 @@ mod tests {
     use super::*;
     use crate::contact::CriticalJunction;
     use crate::leak::SealState;
+
+    #[test]
+    fn a_table_writes_numbers_blanks_and_words_and_refuses_non_finite_numbers() {
+        let table = Table {
+            header: vec!["gap_m", "state"],
+            rows: vec![
+                vec![Cell::Number(0.1), Cell::Text("sealed".into())],
+                vec![Cell::Blank, Cell::Text("a,b".into())],
+            ],
+        };
+        assert_eq!(
+            table.to_csv().expect("finite"),
+            "gap_m,state\n1e-1,sealed\n,\"a,b\"\n"
+        );
+        assert!(matches!(
+            Cell::number(3, "gap_m", f64::NAN),
+            Err(ReportError::NonFinite {
+                row: 3,
+                column: "gap_m",
+                ..
+            })
+        ));
+        assert_eq!(Cell::optional(1, "gap_m", None).ok(), Some(Cell::Blank));
+    }
 
     fn leaking(p0: f64, u_c: f64) -> LeakPoint {
         let j = CriticalJunction {

@@ -7,7 +7,7 @@
 //! written.
 
 use super::ReportError;
-use super::csv::{csv_error, finish, number};
+use super::csv::{Cell, Table, csv_error, finish, number};
 use super::plot::{LogLogChart, Series};
 use crate::dynamic::{Motion, MotionPoint, MotionSpec, StrokeCycle};
 use crate::fluid::Fluid;
@@ -98,7 +98,12 @@ pub fn history_table(result: &LifeResult) -> Result<String, ReportError> {
 /// [`history_table`] of a run whose fluid is `fluid`: a gas adds [`GAS_HISTORY_COLUMN`] and
 /// [`PERMEATION_HISTORY_COLUMN`].
 pub fn history_table_for(result: &LifeResult, fluid: &Fluid) -> Result<String, ReportError> {
-    history_table_with(result, fluid.mean_pressure())
+    history_cells(result, fluid.mean_pressure())?.to_csv()
+}
+
+/// The cells of [`history_table_for`] (what the Python package reads).
+pub fn history_for(result: &LifeResult, fluid: &Fluid) -> Result<Table, ReportError> {
+    history_cells(result, fluid.mean_pressure())
 }
 
 /// The history with the throughput column when `mean_pressure` p̄ \[Pa\] is given (a gas).
@@ -106,6 +111,11 @@ fn history_table_with(
     result: &LifeResult,
     mean_pressure: Option<f64>,
 ) -> Result<String, ReportError> {
+    history_cells(result, mean_pressure)?.to_csv()
+}
+
+/// The history's cells, with the throughput column when `mean_pressure` p̄ \[Pa\] is given.
+fn history_cells(result: &LifeResult, mean_pressure: Option<f64>) -> Result<Table, ReportError> {
     let motion = result.rows.iter().any(|r| r.motion.is_some());
     let stroke = result
         .rows
@@ -116,46 +126,22 @@ fn history_table_with(
         (true, false) => 1,
         (true, true) => MOTION_HISTORY_COLUMNS.len(),
     };
-    let mut writer = ::csv::Writer::from_writer(Vec::new());
-    writer
-        .write_record(
-            HISTORY_COLUMNS
-                .iter()
-                .chain(mean_pressure.map(|_| &GAS_HISTORY_COLUMN))
-                .chain(mean_pressure.map(|_| &PERMEATION_HISTORY_COLUMN))
-                .chain(&MOTION_HISTORY_COLUMNS[..extra]),
-        )
-        .map_err(csv_error)?;
+    let header: Vec<&'static str> = HISTORY_COLUMNS
+        .iter()
+        .chain(mean_pressure.map(|_| &GAS_HISTORY_COLUMN))
+        .chain(mean_pressure.map(|_| &PERMEATION_HISTORY_COLUMN))
+        .chain(&MOTION_HISTORY_COLUMNS[..extra])
+        .copied()
+        .collect();
+    let mut rows = Vec::with_capacity(result.rows.len());
     for (i, r) in result.rows.iter().enumerate() {
         let row = i + 1;
-        let cell = |column: usize, value: f64| number(row, HISTORY_COLUMNS[column], value);
-        let motion_cells = match r.motion {
-            _ if extra == 0 => Vec::new(),
-            None => vec![String::new(); extra],
-            Some(m) => {
-                let mut cells = vec![number(row, MOTION_HISTORY_COLUMNS[0], m.drag_leak_rate)?];
-                if extra == MOTION_HISTORY_COLUMNS.len() {
-                    cells.push(match m.cycle {
-                        Some(c) => number(row, MOTION_HISTORY_COLUMNS[1], c.net_volume)?,
-                        None => String::new(),
-                    });
-                    match m.ihl {
-                        Some(ihl) => {
-                            cells.push(number(row, MOTION_HISTORY_COLUMNS[2], ihl.out_film)?);
-                            cells.push(number(row, MOTION_HISTORY_COLUMNS[3], ihl.in_film)?);
-                        }
-                        None => cells.extend([String::new(), String::new()]),
-                    }
-                    cells.push(m.regime.id().to_owned());
-                }
-                cells
-            }
-        };
-        let optional = |column: usize, value: Option<f64>| {
-            value.map_or(Ok(String::new()), |v| cell(column, v))
-        };
+        let cell = |column: usize, value: f64| Cell::number(row, HISTORY_COLUMNS[column], value);
+        let optional =
+            |column: usize, value: Option<f64>| Cell::optional(row, HISTORY_COLUMNS[column], value);
         let shift = (r.shift_factor.is_finite()).then_some(r.shift_factor);
-        let record = [
+        let mut cells = Vec::with_capacity(header.len());
+        cells.extend([
             cell(0, r.time)?,
             cell(1, r.temperature)?,
             cell(2, r.reduced_time)?,
@@ -167,26 +153,51 @@ fn history_table_with(
             optional(8, r.u_c)?,
             cell(9, r.leak_rate)?,
             cell(10, r.leaked_volume)?,
-            r.state.as_str().to_owned(),
+            Cell::Text(r.state.as_str().to_owned()),
             cell(12, r.open_fraction)?,
             optional(13, r.compression_set)?,
             optional(14, r.shutdown.map(|s| s.remaining_squeeze))?,
-        ];
-        let gas_cells = match mean_pressure {
-            Some(p) => vec![
-                number(row, GAS_HISTORY_COLUMN, p * r.leak_rate)?,
-                match r.permeation {
-                    Some(q) => number(row, PERMEATION_HISTORY_COLUMN, q)?,
-                    None => String::new(),
-                },
-            ],
-            None => Vec::new(),
-        };
-        writer
-            .write_record(record.into_iter().chain(gas_cells).chain(motion_cells))
-            .map_err(csv_error)?;
+        ]);
+        if let Some(p) = mean_pressure {
+            cells.push(Cell::number(row, GAS_HISTORY_COLUMN, p * r.leak_rate)?);
+            cells.push(Cell::optional(
+                row,
+                PERMEATION_HISTORY_COLUMN,
+                r.permeation,
+            )?);
+        }
+        match r.motion {
+            _ if extra == 0 => {}
+            None => cells.extend(std::iter::repeat_n(Cell::Blank, extra)),
+            Some(m) => {
+                cells.push(Cell::number(
+                    row,
+                    MOTION_HISTORY_COLUMNS[0],
+                    m.drag_leak_rate,
+                )?);
+                if extra == MOTION_HISTORY_COLUMNS.len() {
+                    cells.push(Cell::optional(
+                        row,
+                        MOTION_HISTORY_COLUMNS[1],
+                        m.cycle.map(|c| c.net_volume),
+                    )?);
+                    cells.push(Cell::optional(
+                        row,
+                        MOTION_HISTORY_COLUMNS[2],
+                        m.ihl.map(|ihl| ihl.out_film),
+                    )?);
+                    cells.push(Cell::optional(
+                        row,
+                        MOTION_HISTORY_COLUMNS[3],
+                        m.ihl.map(|ihl| ihl.in_film),
+                    )?);
+                    cells.push(Cell::Text(m.regime.id().to_owned()));
+                }
+            }
+        }
+        rows.push(cells);
     }
-    finish(writer)
+    Ok(Table { header, rows })
 }
 
 /// The machine-readable summary of a run (`--summary`), serialised as JSON.
