@@ -631,8 +631,14 @@ const DIMENSIONS: [(&str, Dimension); 14] = [
     ("dimensionless", Dimension::DIMENSIONLESS),
 ];
 
-/// A quantity with its unit in SI, with the unit parser of scenario files. `dimension`: one
-/// of [`DIMENSIONS`]' names or `temperature` (absolute, K); `None`: whichever the unit has.
+/// The quantity ``text`` in SI, read by the scenario files' unit parser:
+/// ``quantity("210 bar")`` is 21000000.0 (Pa), ``quantity("0.4 um")`` 4e-07 (m).
+///
+/// ``dimension`` names what it must be: pressure, length, time, viscosity, volume_flow,
+/// volume, wavevector, force_per_length, force, velocity, frequency, area, thermal_expansion,
+/// dimensionless, or temperature (absolute, K: ``quantity("80 C", "temperature")`` is 353.15);
+/// None: whichever the unit is. An unknown unit, or one of another dimension, raises
+/// ``ValueError``.
 #[pyfunction]
 #[pyo3(signature = (text, dimension = None))]
 fn quantity(text: &str, dimension: Option<&str>) -> PyResult<f64> {
