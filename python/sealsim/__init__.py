@@ -114,7 +114,15 @@ def _progress(progress: Any, what: str) -> Any:
 
 
 class RunResult:
-    """The life of a scenario's seal (``sealsim run``).
+    """The life of a scenario's seal (``sealsim run``; docs/model.md §1 chains the model).
+
+    At each output time the relaxed modulus E(t_r) = E∞ + Σ E_i exp(−t_r/τ_i) in reduced time
+    t_r = ∫ dt/a_T(T) (WLF or Arrhenius, §5), aged by the two-network model (§6.5), gives the
+    sealing pressure of the gland (§6); Persson's contact at that pressure (§2) gives the
+    critical constriction u_c, and the leak rate Q̇ = (L_y/L_x) α u_c³ ΔP/(12η) (Persson &
+    Yang 2008, eq. 3; §3.1). The failure time is where a criterion of ``[failure]`` is first
+    crossed (§8), the state (sealed, leaking, pressure_held, lift_off) decided by the
+    tolerances of §8.1.
 
     Attributes:
         history: one row per output time (the first is the installation, t = 0) with the
@@ -283,7 +291,10 @@ class Scenario:
         progress: Any = None,
     ) -> Any:
         """The leak at each nominal pressure (``sealsim leak``): Pa floats or strings with
-        units (``"2 bar"``); None for the scenario's own. The table has the columns of
+        units (``"2 bar"``); None for the scenario's own. At nominal pressure P0 the critical
+        junction ζc is where the contact area A(ζc)/A0 falls to the percolation threshold a_c =
+        0.4 (``[model] percolation_threshold``); its gap u_c = u1(ζc) gives
+        Q̇ = (L_y/L_x) α u_c³ ΔP/(12η) (Persson & Yang 2008, eqs. 1–3; docs/model.md §3). The table has the columns of
         ``sealsim leak``'s CSV; its validity findings are ``.attrs["warnings"]`` of a
         DataFrame. ``progress`` as for :meth:`run`."""
         columns, findings = self._inner._leak(
