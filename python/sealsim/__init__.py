@@ -51,18 +51,22 @@ __all__ = [
 PathLike = Union[str, "os.PathLike[str]"]
 
 
-def _table(columns: Mapping[str, list]) -> Any:
-    """Columns (name -> list of floats or of strings) as a DataFrame, or a dict of arrays."""
+def _table(columns: Mapping[str, Any]) -> Any:
+    """Columns (name -> the bytes of native f64s, a list of floats, or a list of strings) as a
+    DataFrame, or a dict of arrays."""
     arrays = {}
     for name, values in columns.items():
-        if values and isinstance(values[0], str):
+        if isinstance(values, bytes):
+            arrays[name] = numpy.frombuffer(values, dtype=numpy.float64)
+        elif values and isinstance(values[0], str):
             arrays[name] = numpy.array(values, dtype=object)
         else:
             arrays[name] = numpy.array(values, dtype=numpy.float64)
     try:
         import pandas
     except ImportError:
-        return arrays
+        # frombuffer's arrays are read-only views of the bytes: give the caller its own
+        return {k: (v.copy() if not v.flags.writeable else v) for k, v in arrays.items()}
     return pandas.DataFrame(arrays)
 
 

@@ -13,7 +13,7 @@
 
 use pyo3::exceptions::{PyFileNotFoundError, PyOSError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
+use pyo3::types::{PyBool, PyBytes, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
 use sealsim::leak::Fidelity;
 use sealsim::material::Material;
 use sealsim::report::csv::{Cell, Table};
@@ -165,7 +165,7 @@ where
 }
 
 /// A CSV table (the report's text) as an ordered dict of columns: a column whose every
-/// non-empty cell is a number is a list of floats (an empty cell is NaN: no value), any other a
+/// non-empty cell is a number is [`float_column`] (an empty cell is NaN: no value), any other a
 /// list of strings. The reports write shortest round-trip numbers, so the floats are exact.
 fn columns<'py>(py: Python<'py>, csv_text: &str) -> PyResult<Bound<'py, PyDict>> {
     let mut reader = ::csv::Reader::from_reader(csv_text.as_bytes());
@@ -193,15 +193,22 @@ fn columns<'py>(py: Python<'py>, csv_text: &str) -> PyResult<Bound<'py, PyDict>>
             })
             .collect();
         match numbers {
-            Some(v) => dict.set_item(name, v)?,
+            Some(v) => dict.set_item(name, float_column(py, &v))?,
             None => dict.set_item(name, cells)?,
         }
     }
     Ok(dict)
 }
 
+/// A column of floats as the bytes of native-endian f64s, which the Python side reads with
+/// `numpy.frombuffer` (one copy, no Python float per cell).
+fn float_column<'py>(py: Python<'py>, values: &[f64]) -> Bound<'py, PyBytes> {
+    let bytes: Vec<u8> = values.iter().flat_map(|v| v.to_ne_bytes()).collect();
+    PyBytes::new(py, &bytes)
+}
+
 /// A report [`Table`] as an ordered dict of columns, as [`columns`] reads its CSV text: a
-/// column of numbers and blanks is a list of floats (a blank is NaN), any other a list of
+/// column of numbers and blanks is a [`float_column`] (a blank is NaN), any other a list of
 /// strings. The floats are the cells' own, which the CSV's round-trip notation carries bit for
 /// bit, so this equals `columns(table.to_csv())` without formatting and parsing every cell.
 fn table_columns<'py>(py: Python<'py>, table: &Table) -> PyResult<Bound<'py, PyDict>> {
@@ -217,7 +224,7 @@ fn table_columns<'py>(py: Python<'py>, table: &Table) -> PyResult<Bound<'py, PyD
             })
             .collect();
         match numbers {
-            Some(v) => dict.set_item(name, v)?,
+            Some(v) => dict.set_item(name, float_column(py, &v))?,
             None => {
                 let words: Vec<String> = cells
                     .map(|c| match c {
