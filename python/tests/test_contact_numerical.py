@@ -32,18 +32,20 @@ def rms_gradient(heights, pixel):
     return math.sqrt(numpy.sum((kx**2 + ky**2) * power))
 
 
-def self_affine(n, seed=7, band=BAND, hurst=HURST, h_rms=H_RMS, pixel=PIXEL):
+def self_affine(n, seed=7, band=BAND, hurst=HURST, h_rms=H_RMS, pixel=PIXEL, rolloff=4):
     """A periodic random-phase self-affine surface sampled on an n × n grid (m): Fourier modes
-    |k| = 1 … band (k in units of 2π/L) with amplitude |k|^−(1+H) and seeded phases, the real
-    part taken, scaled to ``h_rms`` about its mean. The modes do not depend on n, so every
-    n ≥ 2·band + 2 samples the same surface (for the refinement study). Returns the map and its
-    rms gradient (from the map itself, :func:`rms_gradient`)."""
+    |k| = 1 … band (k in units of 2π/L) with amplitude max(|k|, rolloff)^−(1+H) (flat below the
+    roll-off, as the numerical level's studies in docs/src/reference/fidelity.md, so that the
+    cell holds several of the longest waves) and seeded phases, the real part taken, scaled to
+    ``h_rms`` about its mean. The modes do not depend on n, so every n ≥ 2·band + 2 samples the
+    same surface (for the refinement study). Returns the map and its rms gradient (from the map
+    itself, :func:`rms_gradient`)."""
     rng = numpy.random.default_rng(seed)
     k = numpy.arange(-band, band + 1)
     kx, ky = numpy.meshgrid(k, k, indexing="xy")
     kk = numpy.hypot(kx, ky)
     inside = (kk >= 1) & (kk <= band)
-    amplitude = numpy.where(inside, numpy.maximum(kk, 1.0) ** -(1.0 + hurst), 0.0)
+    amplitude = numpy.where(inside, numpy.maximum(kk, rolloff) ** -(1.0 + hurst), 0.0)
     coeffs = amplitude * numpy.exp(2j * numpy.pi * rng.random(kk.shape))
     grid = numpy.zeros((n, n), dtype=complex)
     grid[ky % n, kx % n] = coeffs
@@ -138,23 +140,25 @@ def test_the_numerical_level_on_a_numpy_map_is_the_cli_s(solved, cli):
 
 
 def test_small_load_contact_area_gives_the_boundary_element_kappa(solved):
-    """κ = A/A0 · E* h′_rms / P0 at small load. Persson's theory: √(8/π) ≈ 1.596
-    (docs/src/validation.md). Boundary-element and Green's-function simulations of
-    self-affine surfaces find κ slightly above 2, weakly dependent on H (the introduction of
-    Tribol. Lett. (2018), doi:10.1007/s11249-018-1061-7), and larger on a narrow spectrum
-    (Yastrebov, Anciaux & Molinari, arXiv:1704.05650); a pixelated contact area converges
-    only to first order in the pixel size, from above (docs/src/reference/fidelity.md: −2.5 %
-    from 8 to 16 pixels per wavelength). On this 32-band map at 16 pixels per shortest
-    wavelength the measured κ is 2.1–2.2 (docs/src/validation.md): above Persson's, within
-    15 % of 2, falling with the load."""
+    """κ = A/A0 · E* h′_rms / P0 at small load, h′_rms the map's own rms gradient. Persson's
+    theory: √(8/π) ≈ 1.596 (docs/src/validation.md). Boundary-element and Green's-function
+    simulations of self-affine surfaces find κ slightly above 2, weakly dependent on H (the
+    introduction of Tribol. Lett. (2018), doi:10.1007/s11249-018-1061-7), larger on a narrow
+    spectrum (Yastrebov, Anciaux & Molinari, arXiv:1704.05650); a pixelated contact area
+    converges from above, slowly (docs/src/reference/fidelity.md). Measured on four such maps
+    at 16 pixels per shortest wavelength (docs/src/validation.md): κ = 2.1–2.6 at A/A0 ≈ 1–3 %,
+    falling with the load. So not within 2 % of Persson's value, and it should not be: the
+    boundary elements solve the contact that his theory approximates, and give 20–60 % more
+    contact area at small load."""
     heights, slope, pressures, _, _ = solved
     t = sealsim.contact(pressures, height_map=heights, pixel_size=PIXEL, youngs_modulus=E, poisson_ratio=NU).table
     kappa = [a * E_STAR * slope / p for a, p in zip(t["area_fraction"], pressures)]
     print(f"A/A0 = {list(t['area_fraction'])}, kappa = {kappa}")
-    assert 0.007 < t["area_fraction"][0] < 0.015 and 0.02 < t["area_fraction"][1] < 0.04
+    assert 0.008 < t["area_fraction"][0] < 0.016 and 0.025 < t["area_fraction"][1] < 0.04
     for k in kappa:
-        assert k > math.sqrt(8 / math.pi) * 1.15, kappa
-        assert 1.8 < k < 2.3, kappa
+        # well above Persson's √(8/π), near the simulations' "slightly above 2"
+        assert k > 1.2 * math.sqrt(8 / math.pi), kappa
+        assert 2.0 < k < 2.6, kappa
     # the area grows a little less than linearly: κ falls with the load
     assert kappa[1] < kappa[0]
 
