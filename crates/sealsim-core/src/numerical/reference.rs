@@ -294,6 +294,42 @@ mod tests {
     }
 
     #[test]
+    fn observed_fields_are_the_ensemble_s_solves() {
+        // 3 realisations of a 32² grid (band 8, 4 pixels per wavelength) at P0/E* = 0.02
+        let spectrum = Spectrum::self_affine(1e-6, 0.8, 1e5, 1e7, None).unwrap();
+        let settings = NumericalSettings {
+            band: 8.0,
+            pixels_per_wavelength: 4,
+            realisations: 3,
+            ..NumericalSettings::default()
+        };
+        let surfaces = Surfaces::Synthetic(&spectrum);
+        let plain = evaluate(surfaces, 1.0, 0.02, 1.0, &settings, &mut |_, _| {}).unwrap();
+        let mut seen = Vec::new();
+        let observed = evaluate_observed(
+            surfaces,
+            1.0,
+            0.02,
+            1.0,
+            &settings,
+            &mut |_, _| {},
+            &mut |map, contact, r| {
+                // the fields behind the scalars: contact is a positive pressure, ū the mean gap
+                let n2 = (map.n * map.n) as f64;
+                let touching = contact.pressure.iter().filter(|p| **p > 0.0).count();
+                assert_eq!(touching as f64 / n2, r.contact_fraction);
+                let mean = contact.gap.iter().sum::<f64>() / n2;
+                assert!((mean - r.mean_gap).abs() <= 1e-12 * r.mean_gap);
+                assert_eq!((map.n, contact.gap.len()), (32, 32 * 32));
+                seen.push(*r);
+            },
+        )
+        .unwrap();
+        assert_eq!(observed, plain, "observing changes no number");
+        assert_eq!(seen, plain.realisations);
+    }
+
+    #[test]
     fn grid_size_follows_band_and_resolution() {
         let mut s = NumericalSettings::default();
         assert_eq!(s.grid_size(), 256);

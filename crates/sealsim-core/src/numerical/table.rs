@@ -203,4 +203,14 @@ mod tests {
         assert_eq!(t.effective_gap(5000.0), 0.0);
         assert_eq!(table(&[0.0, 0.0]).effective_gap(1.0), 0.0);
     }
+
+    #[test]
+    fn full_contact_is_a_node_s_own_and_nothing_between_nodes() {
+        let mut t = table(&[8.0, 4.0]);
+        t.nodes[1].contact_fraction = 0.25;
+        t.nodes[1].mean_gap = 3e-7;
+        let at = t.full_contact(10.0).unwrap();
+        assert_eq!((at.area_fraction, at.mean_gap), (0.25, 3e-7));
+        assert_eq!(t.full_contact(5.0), None);
+    }
 }
