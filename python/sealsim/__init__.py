@@ -304,10 +304,12 @@ class ContactResult:
         self.effective_modulus: float = raw["effective_modulus"]
         self.viscosity: float = raw["viscosity"]
         self.table: Any = _table(raw["table"])
-        single = self.realisations == 1
+        # a height map is one surface (2-D fields); random realisations stack (3-D), even one
+        fields = raw["fields"]
+        single = not fields or not fields[0]["seed"] or fields[0]["seed"][0] is None
         shape = (self.n, self.n) if single else (self.realisations, self.n, self.n)
         self.fields: List[Dict[str, Any]] = []
-        for f in raw["fields"]:
+        for f in fields:
             entry: Dict[str, Any] = {}
             for name in ("heights_m", "gap_m", "pressure_Pa"):
                 entry[name] = numpy.frombuffer(f[name], dtype=numpy.float64).reshape(shape).copy()

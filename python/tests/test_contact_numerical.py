@@ -216,6 +216,12 @@ def test_random_realisations_of_a_scenario_are_the_cli_s(tmp_path, cli):
     for name in ("area_fraction", "mean_gap_m"):
         assert result.table[name][0] == float(rows[0][header.index(name)])
         assert result.table[name][0] == pytest.approx(numpy.mean(result.fields[0][name]), rel=1e-14)
+    # one random realisation still has its realisation axis (a height map has none)
+    one = sealsim.contact(
+        [5e4], sealsim.Scenario.from_file(path).replace({"numerical.realisations": 1}), fidelity="numerical"
+    )
+    assert one.fields[0]["gap_m"].shape == (1, 64, 64) and one.fields[0]["seed"] == [1]
+    assert numpy.array_equal(one.fields[0]["gap_m"][0], result.fields[0]["gap_m"][0])
 
 
 def test_the_leak_csv_s_contact_columns_are_sealsim_contact_s():
