@@ -44,6 +44,7 @@ __all__ = [
     "study",
     "materials",
     "contact",
+    "ContactResult",
     "quantity",
     "__version__",
 ]
@@ -60,6 +61,8 @@ def _table(columns: Mapping[str, Any]) -> Any:
             arrays[name] = numpy.frombuffer(values, dtype=numpy.float64)
         elif values and isinstance(values[0], str):
             arrays[name] = numpy.array(values, dtype=object)
+        elif values and isinstance(values[0], bool):
+            arrays[name] = numpy.array(values, dtype=bool)
         else:
             arrays[name] = numpy.array(values, dtype=numpy.float64)
     try:
@@ -352,35 +355,126 @@ def materials() -> Any:
     return _table(_sealsim._materials())
 
 
+class ContactResult:
+    """The numerical level of :func:`contact`: boundary-element contact, percolation and
+    Reynolds flow at each nominal pressure.
+
+    Attributes:
+        table: one row per pressure: ``nominal_pressure_Pa``, ``reduced_pressure`` (P0/E*),
+            ``area_fraction`` (A/A0, the fraction of pixels with a positive contact pressure),
+            ``mean_gap_m`` (ū, the mean of the gap field), ``percolates`` (bool: the non-contact
+            region connects the inlet to the outlet in some realisation), ``percolating_fraction``
+            (of the realisations), ``conductance_m3_per_Pa_s`` (the Reynolds conductance σ_eff
+            at ``viscosity``) and ``u_c_m`` (the effective gap (12 η σ_eff)^(1/3), NaN when
+            sealed). With several realisations every column is the ensemble mean, as in
+            ``sealsim leak``.
+        fields: one dict per pressure: ``gap_m`` and ``pressure_Pa`` (the contact pressure) and
+            ``heights_m`` (the surface the solver saw), float64 arrays of shape ``(n, n)`` for a
+            height map — row ``iy``, column ``ix`` along the flow, as the map — and
+            ``(realisations, n, n)`` for random realisations; and the per-realisation
+            ``area_fraction``, ``mean_gap_m``, ``percolates``, ``conductance_m3_per_Pa_s`` and
+            ``seed`` (None for a height map) as 1-D arrays.
+        n: grid points per side; pixel_size: their spacing (m); realisations: surfaces per
+            pressure; effective_modulus: E* (Pa); viscosity: η (Pa·s) of the conductance.
+    """
+
+    def __init__(self, raw: Mapping[str, Any]):
+        self.n: int = raw["n"]
+        self.pixel_size: float = raw["pixel_size"]
+        self.realisations: int = raw["realisations"]
+        self.effective_modulus: float = raw["effective_modulus"]
+        self.viscosity: float = raw["viscosity"]
+        self.table: Any = _table(raw["table"])
+        # a height map is one surface (2-D fields); random realisations stack (3-D), even one
+        fields = raw["fields"]
+        single = not fields or not fields[0]["seed"] or fields[0]["seed"][0] is None
+        shape = (self.n, self.n) if single else (self.realisations, self.n, self.n)
+        self.fields: List[Dict[str, Any]] = []
+        for f in fields:
+            entry: Dict[str, Any] = {}
+            for name in ("heights_m", "gap_m", "pressure_Pa"):
+                entry[name] = numpy.frombuffer(f[name], dtype=numpy.float64).reshape(shape).copy()
+            for name in ("area_fraction", "mean_gap_m", "conductance_m3_per_Pa_s"):
+                entry[name] = numpy.array(f[name], dtype=numpy.float64)
+            entry["percolates"] = numpy.array(f["percolates"], dtype=bool)
+            entry["seed"] = list(f["seed"])
+            self.fields.append(entry)
+
+    def __repr__(self) -> str:
+        return (
+            f"ContactResult({len(self.fields)} pressures, {self.realisations} realisation(s) of "
+            f"{self.n}² pixels of {self.pixel_size:.4g} m)"
+        )
+
+
 def contact(
     pressures: Sequence[Union[float, str]],
     scenario: Optional[Scenario] = None,
     *,
+    height_map: Any = None,
+    pixel_size: Optional[float] = None,
     youngs_modulus: Optional[float] = None,
     poisson_ratio: float = 0.5,
     rms_roughness: Optional[float] = None,
     hurst_exponent: Optional[float] = None,
     q0: Optional[float] = None,
     q1: Optional[float] = None,
+    fidelity: Optional[str] = None,
+    viscosity: Optional[float] = None,
 ) -> Any:
-    """Persson's contact mechanics on its own (docs/model.md §2): at each nominal pressure (Pa
-    floats or strings with units) the reduced pressure P0/E*, the relative contact area
-    ``area_fraction`` A/A0 at full magnification (q1), the mean gap ``mean_gap_m`` ū(ζ = 1) of
-    the interface, and the
-    critical junction ``zeta_c``, ``u_c_m``, ``lambda_c_m`` (NaN where sealed).
+    """The contact problem on its own (docs/model.md §2, §3.5) at each nominal pressure (Pa
+    floats or strings with units).
 
-    The surface and the rubber are ``scenario``'s (its spectrum, relaxed modulus and ``[model]``
-    settings), or a self-affine surface (``rms_roughness`` m, ``hurst_exponent``, ``q0``,
-    ``q1`` 1/m) on an elastic rubber (``youngs_modulus`` Pa, ``poisson_ratio``)."""
-    return _table(
-        _sealsim._contact(
-            list(pressures),
-            None if scenario is None else scenario._inner,
-            youngs_modulus,
-            poisson_ratio,
-            rms_roughness,
-            hurst_exponent,
-            q0,
-            q1,
-        )
+    The rubber is ``scenario``'s (its relaxed E* and ``[model]`` settings) or an elastic
+    half-space (``youngs_modulus`` Pa, ``poisson_ratio``). The surface is ``height_map`` (a 2-D
+    array of heights in m, row ``iy``, column ``ix`` along the flow, with ``pixel_size`` m; a
+    non-square map runs on its centred even square, as a scenario's), else ``scenario``'s, else
+    a self-affine spectrum (``rms_roughness`` m, ``hurst_exponent``, ``q0``, ``q1`` 1/m).
+
+    ``fidelity``: None (the numerical level for a height map or a scenario at that level, else
+    Persson's theory by quadrature, ``exact``), ``"numerical"``, or an analytic level
+    (``exact``, ``critical-junction``, ``effective-medium``, ``rule-of-thumb``).
+
+    Analytic levels return a table: ``nominal_pressure_Pa``, ``reduced_pressure`` P0/E*, the
+    relative contact area ``area_fraction`` A/A0 at full magnification (q1), the mean gap
+    ``mean_gap_m`` ū(ζ = 1) of the interface (both Persson's theory at every analytic level:
+    ``sealsim leak``'s columns of the same names), and the level's critical junction
+    ``zeta_c``, ``u_c_m``, ``lambda_c_m`` (NaN where sealed). A height map at an analytic level
+    uses its spectrum estimate, as a scenario does.
+
+    The numerical level returns a :class:`ContactResult` (its ``table`` and the ``fields``):
+    the solver, settings, threads and tolerances of ``sealsim leak --fidelity numerical`` and of
+    the life run (a scenario's ``[numerical]``, else the defaults), so a height map gives the
+    CLI's numbers bit for bit. ``viscosity`` (Pa·s) scales only ``conductance_m3_per_Pa_s``:
+    default the scenario's fluid's, else 1e-3 Pa·s (water near 20 °C)."""
+    shape = None
+    heights = None
+    if height_map is not None:
+        array = numpy.asarray(height_map)
+        if array.ndim != 2:
+            raise ScenarioError(
+                f"contact: height_map must be a 2-D array of heights (m), got {array.ndim} dimension(s)"
+            )
+        if not numpy.issubdtype(array.dtype, numpy.number) or numpy.iscomplexobj(array):
+            raise ScenarioError(f"contact: height_map must hold real numbers, got {array.dtype}")
+        array = numpy.ascontiguousarray(array, dtype=numpy.float64)
+        shape = array.shape
+        heights = array.tobytes()
+    raw = _sealsim._contact(
+        list(pressures),
+        None if scenario is None else scenario._inner,
+        youngs_modulus,
+        poisson_ratio,
+        rms_roughness,
+        hurst_exponent,
+        q0,
+        q1,
+        heights,
+        shape,
+        pixel_size,
+        fidelity,
+        viscosity,
     )
+    if raw["level"] == "numerical":
+        return ContactResult(raw)
+    return _table(raw["table"])

@@ -71,14 +71,27 @@ def study(
 ) -> StudyResult: ...
 def materials() -> Table: ...
 def quantity(text: str, dimension: Optional[str] = ...) -> float: ...
+class ContactResult:
+    table: Table
+    fields: List[Dict[str, Any]]
+    n: int
+    pixel_size: float
+    realisations: int
+    effective_modulus: float
+    viscosity: float
+
 def contact(
     pressures: Sequence[Union[float, str]],
     scenario: Optional[Scenario] = ...,
     *,
+    height_map: Any = ...,
+    pixel_size: Optional[float] = ...,
     youngs_modulus: Optional[float] = ...,
     poisson_ratio: float = ...,
     rms_roughness: Optional[float] = ...,
     hurst_exponent: Optional[float] = ...,
     q0: Optional[float] = ...,
     q1: Optional[float] = ...,
-) -> Table: ...
+    fidelity: Optional[str] = ...,
+    viscosity: Optional[float] = ...,
+) -> Union[Table, ContactResult]: ...

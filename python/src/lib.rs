@@ -11,13 +11,14 @@
 //! computation finishes in the background and its result is dropped). A panic in the library
 //! becomes `sealsim.InternalError` (a `RuntimeError`), never a crash of the interpreter.
 
+mod contact;
+
 use pyo3::exceptions::{PyFileNotFoundError, PyOSError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyBytes, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
 use sealsim::leak::Fidelity;
 use sealsim::material::Material;
-use sealsim::report::csv::{Cell, Table};
-use sealsim::report::csv::{gas_leak_table, leak_table, motion_leak_table};
+use sealsim::report::csv::{Cell, Table, leak_outcome_table};
 use sealsim::report::life::{CompareRow, Summary, compare_table, history_for};
 use sealsim::scenario::study::Study;
 use sealsim::scenario::{Scenario, ScenarioError as RustScenarioError, library};
@@ -61,13 +62,13 @@ fn scenario_error(e: RustScenarioError) -> PyErr {
     }
 }
 
-fn internal(e: impl std::fmt::Display) -> PyErr {
+pub(crate) fn internal(e: impl std::fmt::Display) -> PyErr {
     InternalError::new_err(format!("internal error: {e}"))
 }
 
 /// Runs `work` on a worker thread with the GIL released, checking for signals (Ctrl-C) every
 /// 50 ms; a panic is an [`InternalError`].
-fn blocking<T, F>(py: Python<'_>, work: F) -> PyResult<T>
+pub(crate) fn blocking<T, F>(py: Python<'_>, work: F) -> PyResult<T>
 where
     T: Send + 'static,
     F: FnOnce() -> T + Send + 'static,
@@ -193,7 +194,7 @@ fn columns<'py>(py: Python<'py>, csv_text: &str) -> PyResult<Bound<'py, PyDict>>
             })
             .collect();
         match numbers {
-            Some(v) => dict.set_item(name, float_column(py, &v))?,
+            Some(v) => dict.set_item(name, float_column(py, v))?,
             None => dict.set_item(name, cells)?,
         }
     }
@@ -202,8 +203,11 @@ fn columns<'py>(py: Python<'py>, csv_text: &str) -> PyResult<Bound<'py, PyDict>>
 
 /// A column of floats as the bytes of native-endian f64s, which the Python side reads with
 /// `numpy.frombuffer` (one copy, no Python float per cell).
-fn float_column<'py>(py: Python<'py>, values: &[f64]) -> Bound<'py, PyBytes> {
-    let bytes: Vec<u8> = values.iter().flat_map(|v| v.to_ne_bytes()).collect();
+pub(crate) fn float_column<'py>(
+    py: Python<'py>,
+    values: impl IntoIterator<Item = f64>,
+) -> Bound<'py, PyBytes> {
+    let bytes: Vec<u8> = values.into_iter().flat_map(f64::to_ne_bytes).collect();
     PyBytes::new(py, &bytes)
 }
 
@@ -224,7 +228,7 @@ fn table_columns<'py>(py: Python<'py>, table: &Table) -> PyResult<Bound<'py, PyD
             })
             .collect();
         match numbers {
-            Some(v) => dict.set_item(name, float_column(py, &v))?,
+            Some(v) => dict.set_item(name, float_column(py, v))?,
             None => {
                 let words: Vec<String> = cells
                     .map(|c| match c {
@@ -241,7 +245,7 @@ fn table_columns<'py>(py: Python<'py>, table: &Table) -> PyResult<Bound<'py, PyD
 }
 
 /// A fidelity level by its name (`exact`, `critical-junction`, …), as `--fidelity` takes it.
-fn fidelity(name: Option<&str>) -> PyResult<Option<Fidelity>> {
+pub(crate) fn fidelity(name: Option<&str>) -> PyResult<Option<Fidelity>> {
     name.map(|n| {
         Fidelity::ALL
             .into_iter()
@@ -294,8 +298,8 @@ fn toml_value(value: &Bound<'_, PyAny>) -> PyResult<toml::Value> {
 
 /// A scenario: the validated model (SI), its TOML text and its file.
 #[pyclass(name = "Scenario", module = "sealsim._sealsim", frozen)]
-struct PyScenario {
-    inner: Arc<Scenario>,
+pub(crate) struct PyScenario {
+    pub(crate) inner: Arc<Scenario>,
     text: String,
     /// The file as given (the summary's `scenario_file`, as the CLI's).
     file: String,
@@ -459,11 +463,7 @@ impl PyScenario {
                 level,
                 &mut |done, total| meter.set(done, total),
             );
-            let csv = match (&outcome.motion, scenario.life.fluid.mean_pressure()) {
-                (None, Some(p)) => gas_leak_table(&outcome.points, p),
-                (None, None) => leak_table(&outcome.points),
-                (Some(motion), _) => motion_leak_table(&outcome.points, motion, outcome.stroke),
-            };
+            let csv = leak_outcome_table(&outcome, scenario.life.fluid.mean_pressure());
             let findings =
                 serde_json::to_string(&sealsim::report::findings::records(&outcome.findings));
             (csv, findings)
@@ -478,7 +478,7 @@ impl PyScenario {
 }
 
 /// A nominal pressure: a float in Pa, or a string with its unit ("2 bar").
-fn pressure(value: &Bound<'_, PyAny>) -> PyResult<f64> {
+pub(crate) fn pressure(value: &Bound<'_, PyAny>) -> PyResult<f64> {
     let p = if value.is_instance_of::<PyString>() {
         let text: String = value.extract()?;
         units::parse_quantity(&text, Dimension::PRESSURE)
@@ -680,108 +680,6 @@ fn quantity(text: &str, dimension: Option<&str>) -> PyResult<f64> {
     }
 }
 
-/// Persson's contact mechanics on its own (docs/model.md §2, the exact path): at each nominal
-/// pressure \[Pa\] the relative contact area A/A0 at full magnification (q1), the mean gap
-/// ū(ζ = 1) of the interface, and the critical junction (ζc, u_c, λc; NaN where no channel percolates). The surface
-/// and the rubber are the scenario's (relaxed modulus E∞ and ν, its spectrum and `[model]`
-/// settings), or, without one, a self-affine spectrum (h_rms, H, q0, q1 \[m, 1/m\]) on an
-/// elastic half-space (E, ν) with default settings.
-#[pyfunction]
-#[pyo3(signature = (pressures, scenario = None, youngs_modulus = None, poisson_ratio = 0.5,
-                    rms_roughness = None, hurst_exponent = None, q0 = None, q1 = None))]
-#[allow(clippy::too_many_arguments)]
-fn _contact<'py>(
-    py: Python<'py>,
-    pressures: Vec<Bound<'py, PyAny>>,
-    scenario: Option<&PyScenario>,
-    youngs_modulus: Option<f64>,
-    poisson_ratio: f64,
-    rms_roughness: Option<f64>,
-    hurst_exponent: Option<f64>,
-    q0: Option<f64>,
-    q1: Option<f64>,
-) -> PyResult<Bound<'py, PyDict>> {
-    use sealsim::contact::{ContactSettings, Elastic, Junction, PerssonContact};
-    use sealsim::surface::Spectrum;
-    let pressures = pressures
-        .iter()
-        .map(pressure)
-        .collect::<PyResult<Vec<f64>>>()?;
-    let (spectrum, settings, e_star) = match scenario {
-        Some(s) => {
-            let pb = &s.inner.problem;
-            (
-                pb.spectrum.clone(),
-                pb.contact,
-                pb.material.effective_modulus(),
-            )
-        }
-        None => {
-            let need = |name: &str, v: Option<f64>| {
-                v.ok_or_else(|| {
-                    PyValueError::new_err(format!("contact: give {name} (or a scenario)"))
-                })
-            };
-            let e = need("youngs_modulus", youngs_modulus)?;
-            if !(e.is_finite() && e > 0.0 && poisson_ratio > -1.0 && poisson_ratio <= 0.5) {
-                return Err(PyValueError::new_err(
-                    "contact: youngs_modulus must be positive and poisson_ratio in (-1, 0.5]",
-                ));
-            }
-            let spectrum = Spectrum::self_affine(
-                need("rms_roughness", rms_roughness)?,
-                need("hurst_exponent", hurst_exponent)?,
-                need("q0", q0)?,
-                need("q1", q1)?,
-                None,
-            )
-            .map_err(|e| PyValueError::new_err(format!("contact: {e}")))?;
-            let elastic = Elastic {
-                youngs_modulus: e,
-                poisson_ratio,
-            };
-            (
-                spectrum,
-                ContactSettings::default(),
-                elastic.effective_modulus(),
-            )
-        }
-    };
-    let rows = blocking(py, move || {
-        let contact = PerssonContact::new(spectrum, settings);
-        let zeta1 = contact.spectrum().q1() / contact.spectrum().q0();
-        pressures
-            .iter()
-            .map(|&p| {
-                let s = p / e_star;
-                // ū at magnification 1: the mean gap of the whole interface
-                let gap = contact.separation(1.0, s).mean;
-                let j = match contact.critical_junction(s) {
-                    Junction::Leaking(j) => [j.zeta_c, j.u_c, j.lambda_c],
-                    Junction::Sealed => [f64::NAN; 3],
-                };
-                [p, s, contact.area_fraction(zeta1, s), gap, j[0], j[1], j[2]]
-            })
-            .collect::<Vec<[f64; 7]>>()
-    })?;
-    let dict = PyDict::new(py);
-    for (k, name) in [
-        "nominal_pressure_Pa",
-        "reduced_pressure",
-        "area_fraction",
-        "mean_gap_m",
-        "zeta_c",
-        "u_c_m",
-        "lambda_c_m",
-    ]
-    .into_iter()
-    .enumerate()
-    {
-        dict.set_item(name, rows.iter().map(|r| r[k]).collect::<Vec<f64>>())?;
-    }
-    Ok(dict)
-}
-
 /// The compiled module.
 #[pymodule]
 fn _sealsim(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -793,7 +691,7 @@ fn _sealsim(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(_compare, m)?)?;
     m.add_function(wrap_pyfunction!(_study, m)?)?;
     m.add_function(wrap_pyfunction!(_materials, m)?)?;
-    m.add_function(wrap_pyfunction!(_contact, m)?)?;
+    contact::register(m)?;
     m.add_function(wrap_pyfunction!(quantity, m)?)?;
     Ok(())
 }

@@ -3,7 +3,7 @@
 use super::{CliError, print_findings, print_scenario_warnings, progress_bar, write_output};
 use crate::leak::Fidelity;
 use crate::math::log_spaced;
-use crate::report::csv::{gas_leak_table, leak_table, motion_leak_table};
+use crate::report::csv::leak_outcome_table;
 use crate::scenario::Scenario;
 use crate::units::{self, Dimension};
 use crate::workflow;
@@ -21,7 +21,10 @@ const MAX_SWEEP_POINTS: i64 = 1_000_000;
     after_help = "Pressures need their units (\"0.2 MPa\", \"2bar\", \"30psi\"): a bare number is \
     refused.\n\
     Output columns: nominal_pressure_Pa, zeta_c, lambda_c_m, u_c_m, ubar_c_m, hrms_c_m, \
-    leak_rate_m3_per_s, state (leaking|sealed|lift_off); lambda_c = 2π/(zeta_c q0). The fluid \
+    leak_rate_m3_per_s, state (leaking|sealed|lift_off), area_fraction, mean_gap_m; lambda_c = \
+    2π/(zeta_c q0); area_fraction (A/A0) and mean_gap_m (ū) are the interface at full \
+    magnification at the nominal pressure (Persson's theory at the analytic levels, the \
+    boundary-element ensemble means at the numerical level; blank for an O-ring). The fluid \
     pressure inside the interface relieves the asperities (docs/model.md §3.6); a flat seal lifts \
     off when ΔP reaches its nominal pressure.\n\
     An O-ring scenario is evaluated in the state `sealsim run` starts from: its installed Hertz \
@@ -35,7 +38,7 @@ const MAX_SWEEP_POINTS: i64 = 1_000_000;
     With [motion] (a reciprocating seal, PY08 §8) the columns drag_leak_rate_m3_per_s (the drag \
     L_y d v at the sliding speed, or at the out-stroke speed of a stroke cycle), film_thickness_m \
     (the film d = β u_c the countersurface carries out, PY08 eq. 16) and speed_bound_m_per_s (the \
-    validity bound of PY08's second eq. 17; blank when sealed) follow state, and for a stroke \
+    validity bound of PY08's second eq. 17; blank when sealed) follow mean_gap_m, and for a stroke \
     cycle out_stroke_volume_m3, in_stroke_volume_m3 and net_volume_per_cycle_m3 (one cycle's \
     volumes, positive from the pressurised side to the outside), cycle_mean_leak_rate_m3_per_s, \
     out_stroke_film_m and in_stroke_film_m (the inverse-hydrodynamic films h* = √(8ηv/(9w)) of \
@@ -146,11 +149,7 @@ pub fn run(args: LeakArgs) -> Result<(), CliError> {
         fidelity,
         &mut progress_bar("numerical level"),
     );
-    let csv = match (&outcome.motion, scenario.life.fluid.mean_pressure()) {
-        (None, Some(p)) => gas_leak_table(&outcome.points, p)?,
-        (None, None) => leak_table(&outcome.points)?,
-        (Some(motion), _) => motion_leak_table(&outcome.points, motion, outcome.stroke)?,
-    };
+    let csv = leak_outcome_table(&outcome, scenario.life.fluid.mean_pressure())?;
     print_scenario_warnings(None, &scenario);
     print_findings(None, &outcome.findings);
     if let Some(note) = oring_state_note(&scenario) {

@@ -79,6 +79,20 @@ const LEAK: &[Column] = &[
         "`leaking`; `sealed` (no channel percolates: the junction columns empty, the rate 0); \
          `lift_off` (ΔP reaches the contact pressure: the rate at the onset, a lower bound)",
     ),
+    column(
+        "area_fraction",
+        "1",
+        "relative contact area A/A0 at the nominal pressure at full magnification: Persson's \
+         A(q1/q0)/A0 at every analytic level, the boundary-element contact fraction (ensemble \
+         mean) at the numerical level; blank for an O-ring",
+    ),
+    column(
+        "mean_gap_m",
+        "m",
+        "mean interfacial separation ū at the nominal pressure: Persson's ū(ζ = 1) at every \
+         analytic level, the mean of the boundary-element gap (ensemble mean) at the numerical \
+         level; blank for an O-ring",
+    ),
 ];
 
 const LEAK_GAS: &[Column] = &[
@@ -366,7 +380,9 @@ mod tests {
     #![allow(clippy::unwrap_used)]
 
     use super::*;
-    use crate::report::csv::{LEAK_COLUMNS, gas_leak_table, leak_table, motion_leak_table};
+    use crate::report::csv::{
+        CONTACT_COLUMNS, LEAK_COLUMNS, gas_leak_table, leak_table, motion_leak_table,
+    };
     use crate::report::life::{
         GAS_HISTORY_COLUMN, HISTORY_COLUMNS, MOTION_HISTORY_COLUMNS, PERMEATION_HISTORY_COLUMN,
     };
@@ -384,20 +400,21 @@ mod tests {
     #[test]
     fn the_leak_headers_the_writers_produce_are_the_registry_s() {
         let groups = FILES[0].groups;
-        assert_eq!(names(&groups[..1]), LEAK_COLUMNS);
-        assert_eq!(header(&leak_table(&[]).unwrap()), names(&groups[..1]));
+        let always: Vec<&str> = LEAK_COLUMNS.into_iter().chain(CONTACT_COLUMNS).collect();
+        assert_eq!(names(&groups[..1]), always);
+        assert_eq!(header(&leak_table(&[], &[]).unwrap()), names(&groups[..1]));
         assert_eq!(
-            header(&gas_leak_table(&[], 1e5).unwrap()),
+            header(&gas_leak_table(&[], &[], 1e5).unwrap()),
             names(&groups[..2])
         );
         let motion = [groups[0], groups[2]];
         assert_eq!(
-            header(&motion_leak_table(&[], &[], false).unwrap()),
+            header(&motion_leak_table(&[], &[], &[], false).unwrap()),
             names(&motion)
         );
         let stroke = [groups[0], groups[2], groups[3]];
         assert_eq!(
-            header(&motion_leak_table(&[], &[], true).unwrap()),
+            header(&motion_leak_table(&[], &[], &[], true).unwrap()),
             names(&stroke)
         );
     }

@@ -6,7 +6,7 @@
 //! formatted: a non-finite result is a bug, reported as [`ReportError::NonFinite`].
 
 use super::ReportError;
-use crate::contact::Junction;
+use crate::contact::{FullContact, Junction};
 use crate::dynamic::MotionPoint;
 use crate::leak::LeakPoint;
 
@@ -55,59 +55,135 @@ pub const MOTION_COLUMNS: [&str; 12] = [
     "film_regime",
 ];
 
-/// The leak table of `points` (header plus one row per point), as CSV text.
-pub fn leak_table(points: &[LeakPoint]) -> Result<String, ReportError> {
-    table(None, &[], points.iter().map(|p| ("", p, Ok(Vec::new()))))
+/// Columns of `sealsim leak`'s table after [`LEAK_COLUMNS`]: the interface at full
+/// magnification at the nominal pressure ([`crate::leak::ContactPath::full_contact`]):
+///
+/// * `area_fraction`: the relative contact area A/A0 (Persson's A(q1/q0)/A0 at every analytic
+///   level, the ensemble-mean boundary-element contact fraction at the numerical level);
+/// * `mean_gap_m`: the mean interfacial separation ū (ū(ζ = 1), or the ensemble-mean gap).
+///
+/// Blank for an O-ring (its contact pressure varies across the profile).
+pub const CONTACT_COLUMNS: [&str; 2] = ["area_fraction", "mean_gap_m"];
+
+/// `sealsim leak`'s table of `outcome` (the CLI's `-o` file and the Python package's
+/// `Scenario.leak`): [`motion_leak_table`] with `[motion]`, else [`gas_leak_table`] for a gas
+/// of mean pressure `mean_pressure` \[Pa\], else [`leak_table`].
+pub fn leak_outcome_table(
+    outcome: &crate::workflow::leak::LeakOutcome,
+    mean_pressure: Option<f64>,
+) -> Result<String, ReportError> {
+    match (&outcome.motion, mean_pressure) {
+        (Some(motion), _) => {
+            motion_leak_table(&outcome.points, &outcome.contact, motion, outcome.stroke)
+        }
+        (None, Some(p)) => gas_leak_table(&outcome.points, &outcome.contact, p),
+        (None, None) => leak_table(&outcome.points, &outcome.contact),
+    }
 }
 
-/// The leak table of a gas (docs/model.md §3.9): [`LEAK_COLUMNS`] and
+/// The leak table of `points` with the [`CONTACT_COLUMNS`] of `contact` (`contact[i]` belongs
+/// to `points[i]`; `None` leaves its cells blank), header plus one row per point, as CSV text.
+pub fn leak_table(
+    points: &[LeakPoint],
+    contact: &[Option<FullContact>],
+) -> Result<String, ReportError> {
+    same_length(points, contact.len(), "contact")?;
+    table(
+        None,
+        &CONTACT_COLUMNS,
+        points
+            .iter()
+            .zip(contact)
+            .enumerate()
+            .map(|(i, (p, c))| ("", p, contact_cells(i + 1, c.as_ref()))),
+    )
+}
+
+/// The leak table of a gas (docs/model.md §3.9): [`LEAK_COLUMNS`], [`CONTACT_COLUMNS`] and
 /// `throughput_Pa_m3_per_s`, the pV flow `p̄ × leak_rate_m3_per_s` at the gas temperature (a
 /// gas's leak rate is its volume flow at the mean pressure `mean_pressure` p̄ \[Pa\]), and the
 /// same in the leak-test trade's unit, `throughput_mbar_L_per_s` (1 mbar·L/s = 0.1 Pa·m³/s).
 /// Flow through the interface only: permeation through the rubber is not in these columns.
-pub fn gas_leak_table(points: &[LeakPoint], mean_pressure: f64) -> Result<String, ReportError> {
+pub fn gas_leak_table(
+    points: &[LeakPoint],
+    contact: &[Option<FullContact>],
+    mean_pressure: f64,
+) -> Result<String, ReportError> {
     const COLUMNS: [&str; 2] = ["throughput_Pa_m3_per_s", "throughput_mbar_L_per_s"];
     /// Pa·m³/s per mbar·L/s: 100 Pa × 1e-3 m³.
     const MBAR_L: f64 = 0.1;
+    same_length(points, contact.len(), "contact")?;
+    let columns: Vec<&str> = CONTACT_COLUMNS.into_iter().chain(COLUMNS).collect();
     table(
         None,
-        &COLUMNS,
-        points.iter().enumerate().map(|(i, p)| {
+        &columns,
+        points.iter().zip(contact).enumerate().map(|(i, (p, c))| {
             let q = mean_pressure * p.leak_rate;
-            (
-                "",
-                p,
-                number(i + 1, COLUMNS[0], q)
-                    .and_then(|a| number(i + 1, COLUMNS[1], q / MBAR_L).map(|b| vec![a, b])),
-            )
+            let cells = contact_cells(i + 1, c.as_ref()).and_then(|mut cells| {
+                cells.push(number(i + 1, COLUMNS[0], q)?);
+                cells.push(number(i + 1, COLUMNS[1], q / MBAR_L)?);
+                Ok(cells)
+            });
+            ("", p, cells)
         }),
     )
 }
 
-/// The leak table with the [`MOTION_COLUMNS`] of each point's motion (`motion[i]` belongs to
-/// `points[i]`); the stroke columns only when `stroke`.
+/// The leak table with the [`CONTACT_COLUMNS`] of `contact` and the [`MOTION_COLUMNS`] of each
+/// point's motion (`contact[i]` and `motion[i]` belong to `points[i]`); the stroke columns only
+/// when `stroke`.
 pub fn motion_leak_table(
     points: &[LeakPoint],
+    contact: &[Option<FullContact>],
     motion: &[MotionPoint],
     stroke: bool,
 ) -> Result<String, ReportError> {
-    if points.len() != motion.len() {
-        return Err(ReportError::Csv(format!(
-            "{} leak points but {} motion points",
-            points.len(),
-            motion.len()
-        )));
-    }
-    let columns = if stroke { MOTION_COLUMNS.len() } else { 3 };
+    same_length(points, motion.len(), "motion")?;
+    same_length(points, contact.len(), "contact")?;
+    let count = if stroke { MOTION_COLUMNS.len() } else { 3 };
+    let columns: Vec<&str> = CONTACT_COLUMNS
+        .into_iter()
+        .chain(MOTION_COLUMNS[..count].iter().copied())
+        .collect();
     table(
         None,
-        &MOTION_COLUMNS[..columns],
+        &columns,
         points
             .iter()
+            .zip(contact)
             .zip(motion)
             .enumerate()
-            .map(|(i, (p, m))| ("", p, motion_cells(i + 1, m, columns))),
+            .map(|(i, ((p, c), m))| {
+                let cells = contact_cells(i + 1, c.as_ref()).and_then(|mut cells| {
+                    cells.extend(motion_cells(i + 1, m, count)?);
+                    Ok(cells)
+                });
+                ("", p, cells)
+            }),
     )
+}
+
+/// An error unless there are as many `what` values (`len`) as `points`.
+fn same_length(points: &[LeakPoint], len: usize, what: &str) -> Result<(), ReportError> {
+    if points.len() == len {
+        Ok(())
+    } else {
+        Err(ReportError::Csv(format!(
+            "{} leak points but {len} {what} points",
+            points.len()
+        )))
+    }
+}
+
+/// The [`CONTACT_COLUMNS`] cells of data row `row` (1-based); blank without a value.
+fn contact_cells(row: usize, contact: Option<&FullContact>) -> Result<Vec<String>, ReportError> {
+    match contact {
+        Some(c) => Ok(vec![
+            number(row, CONTACT_COLUMNS[0], c.area_fraction)?,
+            number(row, CONTACT_COLUMNS[1], c.mean_gap)?,
+        ]),
+        None => Ok(vec![String::new(), String::new()]),
+    }
 }
 
 /// The motion cells of data row `row` (1-based).
@@ -358,17 +434,25 @@ mod tests {
             leak_rate: 0.0,
             state: SealState::Sealed,
         };
-        let text = leak_table(&[leaking(2e5, 0.1), sealed]).unwrap();
+        let contact = FullContact {
+            area_fraction: 0.125,
+            mean_gap: 3e-7,
+        };
+        let text = leak_table(&[leaking(2e5, 0.1), sealed], &[Some(contact), None]).unwrap();
         let lines: Vec<&str> = text.lines().collect();
-        assert_eq!(lines[0], LEAK_COLUMNS.join(","));
+        assert_eq!(
+            lines[0],
+            format!("{},{}", LEAK_COLUMNS.join(","), CONTACT_COLUMNS.join(","))
+        );
         assert_eq!(
             lines[1],
-            "2e5,1.65e1,3.8e-5,1e-1,2e-7,1e-7,1.25e-12,leaking"
+            "2e5,1.65e1,3.8e-5,1e-1,2e-7,1e-7,1.25e-12,leaking,1.25e-1,3e-7"
         );
-        assert_eq!(lines[2], "3e6,,,,,,0e0,sealed");
+        // no contact value (an O-ring): blank cells
+        assert_eq!(lines[2], "3e6,,,,,,0e0,sealed,,");
         assert_eq!(lines.len(), 3);
         let x = 0.1 + 0.2;
-        let t = leak_table(&[leaking(2e5, x)]).unwrap();
+        let t = leak_table(&[leaking(2e5, x)], &[None]).unwrap();
         let cell: f64 = t
             .lines()
             .nth(1)
@@ -411,21 +495,23 @@ mod tests {
             regime: crate::dynamic::ihl::SpeedRegime::NoProfile,
         };
         let points = [leaking(2e5, 0.1), sealed];
-        let text = motion_leak_table(&points, &[moving, still], false).unwrap();
+        let contact = [None, None];
+        let text = motion_leak_table(&points, &contact, &[moving, still], false).unwrap();
         let lines: Vec<&str> = text.lines().collect();
         assert_eq!(
             lines[0],
             format!(
-                "{},{}",
+                "{},{},{}",
                 LEAK_COLUMNS.join(","),
+                CONTACT_COLUMNS.join(","),
                 MOTION_COLUMNS[..3].join(",")
             )
         );
         assert_eq!(
             lines[1],
-            "2e5,1.65e1,3.8e-5,1e-1,2e-7,1e-7,1.25e-12,leaking,4e-11,8e-9,6e-3"
+            "2e5,1.65e1,3.8e-5,1e-1,2e-7,1e-7,1.25e-12,leaking,,,4e-11,8e-9,6e-3"
         );
-        assert_eq!(lines[2], "3e6,,,,,,0e0,sealed,0e0,0e0,");
+        assert_eq!(lines[2], "3e6,,,,,,0e0,sealed,,,0e0,0e0,");
         // a stroke cycle: three more columns
         let cycle = StrokeCycle {
             period: 2.0,
@@ -440,11 +526,16 @@ mod tests {
             cycle: Some(cycle),
             ..moving
         };
-        let text = motion_leak_table(&points[..1], &[stroke], true).unwrap();
+        let text = motion_leak_table(&points[..1], &contact[..1], &[stroke], true).unwrap();
         let lines: Vec<&str> = text.lines().collect();
         assert_eq!(
             lines[0],
-            format!("{},{}", LEAK_COLUMNS.join(","), MOTION_COLUMNS.join(","))
+            format!(
+                "{},{},{}",
+                LEAK_COLUMNS.join(","),
+                CONTACT_COLUMNS.join(","),
+                MOTION_COLUMNS.join(",")
+            )
         );
         assert!(
             lines[1]
@@ -458,19 +549,20 @@ mod tests {
             ..moving
         };
         assert!(matches!(
-            motion_leak_table(&points[..1], &[bad], false),
+            motion_leak_table(&points[..1], &contact[..1], &[bad], false),
             Err(ReportError::NonFinite {
                 row: 1,
                 column: "film_thickness_m",
                 ..
             })
         ));
-        assert!(motion_leak_table(&points, &[moving], false).is_err());
+        assert!(motion_leak_table(&points, &contact, &[moving], false).is_err());
+        assert!(motion_leak_table(&points, &contact[..1], &[moving, still], false).is_err());
     }
 
     #[test]
     fn non_finite_values_are_refused() {
-        let err = leak_table(&[leaking(2e5, f64::NAN)]).unwrap_err();
+        let err = leak_table(&[leaking(2e5, f64::NAN)], &[None]).unwrap_err();
         assert!(err.to_string().contains("u_c_m"));
         assert!(matches!(
             err,
@@ -480,5 +572,18 @@ mod tests {
                 ..
             }
         ));
+        let nan_area = FullContact {
+            area_fraction: f64::NAN,
+            mean_gap: 1e-6,
+        };
+        assert!(matches!(
+            leak_table(&[leaking(2e5, 0.1)], &[Some(nan_area)]),
+            Err(ReportError::NonFinite {
+                row: 1,
+                column: "area_fraction",
+                ..
+            })
+        ));
+        assert!(leak_table(&[leaking(2e5, 0.1)], &[]).is_err());
     }
 }

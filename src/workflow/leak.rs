@@ -2,6 +2,7 @@
 //! pressures, with the drag of a sliding countersurface when the scenario has `[motion]`.
 
 use super::{Progress, scenario_path};
+use crate::contact::FullContact;
 use crate::dynamic::{DragCoefficients, DragSettings, IhlInput, MotionPoint, MotionSpec};
 use crate::leak::{ContactPath, Fidelity, FlatSeal, LeakPoint, StaticSolver};
 use crate::scenario::Scenario;
@@ -21,6 +22,12 @@ pub struct LeakOutcome {
     pub motion: Option<Vec<MotionPoint>>,
     /// Whether the motion is a stroke cycle (its per-stroke volumes are reported).
     pub stroke: bool,
+    /// The interface at full magnification at each point's nominal pressure (`contact[i]`
+    /// belongs to `points[i]`): A/A0 and ū ([`ContactPath::full_contact`] at P0/E*, the
+    /// reduced pressure of the point's junction). `None` for an O-ring, whose contact pressure
+    /// varies across its profile and whose asperities see the installation's moduli, and at
+    /// the numerical level where a node's solve failed.
+    pub contact: Vec<Option<FullContact>>,
     /// The validity findings: the contact path's, the surface's, the seal's installation
     /// state (temperature, squeeze), every point's contact state and sliding speed.
     pub findings: Findings,
@@ -89,6 +96,17 @@ pub fn evaluate_on(
         solver.assess(point, &mut findings);
     }
     let oring = matches!(scenario.life.geometry, SealGeometry::ORing { .. });
+    let e_star = pb.material.effective_modulus();
+    let contact = points
+        .iter()
+        .map(|point| {
+            if oring {
+                None
+            } else {
+                solver.path().full_contact(point.nominal_pressure / e_star)
+            }
+        })
+        .collect();
     let motion = scenario.life.motion.as_ref().map(|spec| {
         points
             .iter_mut()
@@ -103,6 +121,7 @@ pub fn evaluate_on(
             .motion
             .as_ref()
             .is_some_and(MotionSpec::is_stroke),
+        contact,
         findings,
     }
 }

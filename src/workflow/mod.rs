@@ -45,8 +45,9 @@ pub fn scenario_path(
 }
 
 /// The scenario's `[numerical]` settings as its contact path uses them: a rarefied gas's cells
-/// rarefy at p̄ and the installation temperature.
-fn numerical_settings(scenario: &Scenario) -> crate::numerical::reference::NumericalSettings {
+/// rarefy at p̄ and the installation temperature (also the Python package's `sealsim.contact`
+/// at the numerical level).
+pub fn numerical_settings(scenario: &Scenario) -> crate::numerical::reference::NumericalSettings {
     let mut numerical = scenario.numerical.clone();
     let life = &scenario.life;
     numerical.flow.gas = life.fluid.at(life.environment.at(0.0)).mean_free_path();

@@ -12,8 +12,7 @@ use tempfile::TempDir;
 const PSD_EXAMPLE: &str = include_str!("../../scenarios/psd-example.toml");
 const PSD_EXAMPLE_CSV: &str = include_str!("../../scenarios/psd-example.csv");
 
-const HEADER: &str =
-    "nominal_pressure_Pa,zeta_c,lambda_c_m,u_c_m,ubar_c_m,hrms_c_m,leak_rate_m3_per_s,state";
+const HEADER: &str = "nominal_pressure_Pa,zeta_c,lambda_c_m,u_c_m,ubar_c_m,hrms_c_m,leak_rate_m3_per_s,state,area_fraction,mean_gap_m";
 
 /// Reference values at P0 = 0.2 MPa from tests/reference/persson_reference.py (scipy).
 const REFERENCE_ZETA_C: f64 = 16.1860614;
@@ -47,8 +46,8 @@ fn parse_csv(text: &str) -> Vec<Row> {
     lines
         .map(|line| {
             let cells: Vec<String> = line.split(',').map(str::to_owned).collect();
-            assert_eq!(cells.len(), 8, "row {line:?}");
-            for cell in &cells[..7] {
+            assert_eq!(cells.len(), 10, "row {line:?}");
+            for cell in cells[..7].iter().chain(&cells[8..]) {
                 assert!(
                     !cell.contains("NaN") && !cell.contains("inf"),
                     "row {line:?}"
@@ -130,6 +129,57 @@ fn exact_and_table_fidelity_agree() {
 }
 
 #[test]
+fn contact_area_and_mean_gap_follow_persson_at_every_analytic_level() {
+    // PY08 §3: E* = 10 MPa/(1 − 0.25), h_rms = 2 µm, H = 0.8, q0 = 1e4 1/m, q1 = 7.8e9 1/m.
+    // Persson: A/A0 = erf(√2 P0/(E* h′_rms)) with h′²_rms = 2π ∫ q³C dq in closed form for the
+    // power law C ∝ q^−2(1+H) on [q0, q1] (docs/model.md §2)
+    let (h, hurst, q0, q1) = (2e-6f64, 0.8f64, 1e4f64, 7.8e9f64);
+    let e_star = 10e6 / 0.75;
+    let slope2 = h
+        * h
+        * (2.0 * hurst / (2.0 - 2.0 * hurst))
+        * (q1.powf(2.0 - 2.0 * hurst) - q0.powf(2.0 - 2.0 * hurst))
+        / (q0.powf(-2.0 * hurst) - q1.powf(-2.0 * hurst));
+    let path = scenario_path("persson-yang-2008.toml");
+    let path = path.to_str().unwrap();
+    let levels = [
+        "exact",
+        "critical-junction",
+        "rule-of-thumb",
+        "effective-medium",
+    ];
+    let runs: Vec<Vec<Row>> = levels
+        .iter()
+        .map(|level| {
+            leak_ok(&[
+                path,
+                "--pressures",
+                "0.05MPa,0.2MPa,1MPa,3MPa",
+                "--fidelity",
+                level,
+            ])
+        })
+        .collect();
+    let value = |r: &Row, i: usize| r.cells[i].parse::<f64>().unwrap();
+    for (k, row) in runs[0].iter().enumerate() {
+        let s = row.pressure / e_star;
+        let area = sealsim::math::special::erf(2f64.sqrt() * s / slope2.sqrt());
+        assert!(rel(value(row, 8), area) < 1e-6, "{row:?} vs {area}");
+        // the same theory at every analytic level (one function underneath), sealed or not
+        for run in &runs[1..] {
+            assert_eq!(run[k].cells[8..], row.cells[8..], "{:?}", run[k]);
+        }
+    }
+    // more load: more contact and a smaller mean gap, above the critical junction's ū_c
+    for w in runs[0].windows(2) {
+        assert!(value(&w[1], 8) > value(&w[0], 8));
+        assert!(value(&w[1], 9) < value(&w[0], 9));
+    }
+    let leaking = &runs[0][1];
+    assert!(value(leaking, 9) > value(leaking, 4), "{leaking:?}");
+}
+
+#[test]
 fn pressure_above_sealing_is_sealed_with_blank_cells() {
     let path = scenario_path("persson-yang-2008.toml");
     let rows = leak_ok(&[path.to_str().unwrap(), "--pressures", "0.2MPa,3MPa"]);
@@ -206,7 +256,7 @@ fn psd_file_is_found_relative_to_the_scenario_not_the_working_directory() {
         .args(["leak", "../scenarios/psd-example.toml"])
         .assert()
         .success()
-        .stdout(predicate::str::contains(",leaking\n"));
+        .stdout(predicate::str::contains(",leaking,"));
 }
 
 #[test]

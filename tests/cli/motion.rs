@@ -15,8 +15,7 @@ use tempfile::TempDir;
 const WIPER: &str = include_str!("../../scenarios/wiper-blade-water.toml");
 const ROD: &str = include_str!("../../scenarios/hydraulic-rod-seal.toml");
 
-const LEAK_HEADER: &str =
-    "nominal_pressure_Pa,zeta_c,lambda_c_m,u_c_m,ubar_c_m,hrms_c_m,leak_rate_m3_per_s,state";
+const LEAK_HEADER: &str = "nominal_pressure_Pa,zeta_c,lambda_c_m,u_c_m,ubar_c_m,hrms_c_m,leak_rate_m3_per_s,state,area_fraction,mean_gap_m";
 const DRAG_COLUMNS: &str = "drag_leak_rate_m3_per_s,film_thickness_m,speed_bound_m_per_s";
 const STROKE_COLUMNS: &str = "out_stroke_volume_m3,in_stroke_volume_m3,net_volume_per_cycle_m3,\
      cycle_mean_leak_rate_m3_per_s,out_stroke_film_m,in_stroke_film_m,film_parameter,speed_regime,\
@@ -85,9 +84,9 @@ fn wiper_leak_has_the_drag_columns_and_warns_above_the_speed_bound() {
     assert_eq!(header, format!("{LEAK_HEADER},{DRAG_COLUMNS}"));
     assert_eq!(rows.len(), 1);
     let r = &rows[0];
-    assert_eq!(r.len(), 11);
+    assert_eq!(r.len(), 13);
     assert_eq!(r[7], "leaking");
-    let (leak_rate, drag, film, bound) = (num(&r[6]), num(&r[8]), num(&r[9]), num(&r[10]));
+    let (leak_rate, drag, film, bound) = (num(&r[6]), num(&r[10]), num(&r[11]), num(&r[12]));
     let u_c = num(&r[3]);
     eprintln!(
         "wiper: u_c = {u_c:.4e} m, d = {film:.4e} m, bound = {bound:.4e} m/s, drag = {drag:.4e} m³/s"
@@ -116,7 +115,7 @@ fn wiper_leak_has_the_drag_columns_and_warns_above_the_speed_bound() {
     let slow = Case::new(&WIPER.replace(WIPER_SPEED, "sliding_speed = \"3 mm/s\""));
     let (_, rows, stderr) = leak(&slow.scenario(), &[]);
     assert!(!stderr.contains("lift-off"), "{stderr}");
-    assert!(rel(num(&rows[0][8]), 0.5 * film * 3e-3) < 1e-9);
+    assert!(rel(num(&rows[0][10]), 0.5 * film * 3e-3) < 1e-9);
 }
 
 #[test]
@@ -134,19 +133,19 @@ fn zero_speed_gives_exactly_the_static_csv() {
         "the sweep reaches sealing"
     );
     for (a, b) in static_rows.iter().zip(&rows) {
-        assert_eq!(a[..], b[..8], "the static cells, byte for byte");
-        assert_eq!(b[8], "0e0");
+        assert_eq!(a[..], b[..10], "the static cells, byte for byte");
+        assert_eq!(b[10], "0e0");
         if b[7] == "sealed" {
             // sealed: no film, no bound (blank)
-            assert_eq!((b[9].as_str(), b[10].as_str()), ("0e0", ""));
+            assert_eq!((b[11].as_str(), b[12].as_str()), ("0e0", ""));
         } else {
-            assert!(num(&b[9]) > 0.0 && num(&b[10]) > 0.0);
+            assert!(num(&b[11]) > 0.0 && num(&b[12]) > 0.0);
         }
     }
     // the wiper at rest: ΔP = 0, nothing leaks
     let wiper = Case::new(&WIPER.replace(WIPER_SPEED, "sliding_speed = \"0 m/s\""));
     let (_, rows, _) = leak(&wiper.scenario(), &[]);
-    assert_eq!((rows[0][6].as_str(), rows[0][8].as_str()), ("0e0", "0e0"));
+    assert_eq!((rows[0][6].as_str(), rows[0][10].as_str()), ("0e0", "0e0"));
 }
 
 #[test]
@@ -159,14 +158,18 @@ fn drag_is_linear_in_speed_and_adds_to_the_static_leak() {
     };
     let (one, two) = (at("1 mm/s"), at("2 mm/s"));
     for ((s, a), b) in static_rows.iter().zip(&one).zip(&two) {
-        let (d1, d2) = (num(&a[8]), num(&b[8]));
+        let (d1, d2) = (num(&a[10]), num(&b[10]));
         assert!(d1 > 0.0);
         assert_eq!(d2, 2.0 * d1, "doubling the speed doubles the drag exactly");
-        assert_eq!(a[9..], b[9..], "film and bound do not depend on the speed");
+        assert_eq!(
+            a[11..],
+            b[11..],
+            "film and bound do not depend on the speed"
+        );
         assert_eq!(num(&a[6]), num(&s[6]) + d1, "leak = static + drag");
         assert_eq!(num(&b[6]), num(&s[6]) + d2);
         // L_y d v with L_y = 1 mm
-        assert!(rel(d1, 1e-3 * num(&a[9]) * 1e-3) < 1e-9);
+        assert!(rel(d1, 1e-3 * num(&a[11]) * 1e-3) < 1e-9);
     }
     // the drag uses the exact critical junction whatever the level
     let case = Case::new(&format!("{PAPER}[motion]\nsliding_speed = \"1 mm/s\"\n"));

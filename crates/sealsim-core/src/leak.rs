@@ -2,7 +2,7 @@
 
 use crate::contact::{
     ContactSettings, ContactTable, CriticalJunction, EffectiveMediumSettings, EffectiveMediumTable,
-    Elastic, Junction, PerssonContact, TableSettings,
+    Elastic, FullContact, Junction, PerssonContact, TableSettings,
 };
 use crate::fluid::{Fluid, junction_conductance};
 use crate::interface::{self, InterfaceFlow, InterfaceSettings};
@@ -412,6 +412,19 @@ impl ContactPath {
             ContactPath::Table(t) => t.exact(),
             ContactPath::EffectiveMedium(t) => t.junctions().exact(),
             ContactPath::Numerical { junctions, .. } => junctions.exact(),
+        }
+    }
+
+    /// The interface at full magnification at reduced pressure `s = P0/E*`: the relative
+    /// contact area A/A0 and the mean gap ū. The analytic levels all give Persson's theory by
+    /// quadrature ([`PerssonContact::full_contact`]: A(q1/q0)/A0 and ū(ζ = 1)); the numerical
+    /// level the ensemble means of the boundary-element solutions at a node of its table
+    /// ([`NumericalTable::full_contact`]: a pressure sweep solves at exactly its pressures),
+    /// `None` between nodes.
+    pub fn full_contact(&self, s: f64) -> Option<FullContact> {
+        match self {
+            ContactPath::Numerical { table, .. } => table.full_contact(s),
+            _ => Some(self.exact().full_contact(s)),
         }
     }
 

@@ -155,6 +155,17 @@ impl Separation {
 /// Where the integrand is cut off: beyond `x = w p/E* = X_CUT` the kernel is below e^{−64}.
 const X_CUT: f64 = 8.0;
 
+/// The interface at full magnification (PY08 §2): what a contact study reports at one
+/// nominal pressure.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FullContact {
+    /// Relative contact area A(ζ1)/A0 at full magnification ζ1 = q1/q0 (1).
+    pub area_fraction: f64,
+    /// Mean interfacial separation ū of the whole interface (m): ū(ζ = 1) in Persson's theory,
+    /// the mean of the gap field in the numerical level.
+    pub mean_gap: f64,
+}
+
 /// Persson's contact theory on one spectrum: the exact (quadrature) path.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PerssonContact {
@@ -195,6 +206,18 @@ impl PerssonContact {
             return 1.0;
         }
         erf(s / (PI * m3).sqrt())
+    }
+
+    /// The interface at full magnification at reduced pressure `s = P0/E*`:
+    /// `A(q1/q0)/A0 = erf(s/√(π M3(q1)))` and the mean separation ū(ζ = 1) (PY08 §2; the
+    /// quadrature of [`Self::separation`]). `sealsim leak`'s `area_fraction` and `mean_gap_m` at
+    /// every analytic level, and the Python package's `sealsim.contact`.
+    pub fn full_contact(&self, s: f64) -> FullContact {
+        let zeta1 = self.spectrum.q1() / self.spectrum.q0();
+        FullContact {
+            area_fraction: self.area_fraction(zeta1, s),
+            mean_gap: self.separation(1.0, s).mean,
+        }
     }
 
     /// The reduced pressure `P0/E*` above which no channel percolates below q1:

@@ -182,9 +182,34 @@ pub fn evaluate(
     settings: &NumericalSettings,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<NumericalState, NumericalError> {
+    evaluate_observed(
+        surfaces,
+        e_star,
+        p0,
+        viscosity,
+        settings,
+        progress,
+        &mut |_, _, _| {},
+    )
+}
+
+/// [`evaluate`], handing each realisation's fields to `observe(map, contact, realisation)` as
+/// it is solved: the surface (heights in m), the boundary-element solution (contact pressure in
+/// Pa and gap in m on the map's grid, [`bem::ContactSolution`]) and its scalars. The same
+/// solves as [`evaluate`], number for number (the Python package's `sealsim.contact` at the
+/// numerical level).
+pub fn evaluate_observed(
+    surfaces: Surfaces<'_>,
+    e_star: f64,
+    p0: f64,
+    viscosity: f64,
+    settings: &NumericalSettings,
+    progress: &mut dyn FnMut(usize, usize),
+    observe: &mut dyn FnMut(&HeightMap, &bem::ContactSolution, &Realisation),
+) -> Result<NumericalState, NumericalError> {
     let realisations = match surfaces {
         Surfaces::Map(map) => {
-            let r = realise(map, None, e_star, p0, viscosity, settings)?;
+            let r = realise(map, None, e_star, p0, viscosity, settings, observe)?;
             progress(1, 1);
             vec![r]
         }
@@ -199,7 +224,15 @@ pub fn evaluate(
             for k in 0..total {
                 let seed = settings.seed.wrapping_add(k as u64);
                 let map = synthesize(&band, n, seed);
-                out.push(realise(&map, Some(seed), e_star, p0, viscosity, settings)?);
+                out.push(realise(
+                    &map,
+                    Some(seed),
+                    e_star,
+                    p0,
+                    viscosity,
+                    settings,
+                    observe,
+                )?);
                 progress(k + 1, total);
             }
             out
@@ -215,12 +248,13 @@ fn realise(
     p0: f64,
     viscosity: f64,
     settings: &NumericalSettings,
+    observe: &mut dyn FnMut(&HeightMap, &bem::ContactSolution, &Realisation),
 ) -> Result<Realisation, NumericalError> {
     let contact = bem::solve(map, e_star, p0, Boundary::Periodic, &settings.bem)
         .map_err(NumericalError::Contact)?;
     let flow = flow::solve(&contact.gap, map.n, map.pixel, viscosity, &settings.flow)
         .map_err(NumericalError::Flow)?;
-    Ok(Realisation {
+    let realisation = Realisation {
         seed,
         contact_fraction: contact.contact_fraction,
         mean_gap: contact.mean_gap,
@@ -228,7 +262,9 @@ fn realise(
         percolates: flow.percolates,
         bem_iterations: contact.iterations,
         flow_iterations: flow.iterations,
-    })
+    };
+    observe(map, &contact, &realisation);
+    Ok(realisation)
 }
 
 fn summarise(p0: f64, realisations: Vec<Realisation>) -> NumericalState {
@@ -255,6 +291,42 @@ mod tests {
         assert_eq!((s.mean, s.min, s.max), (2.5, 1.0, 4.0));
         assert!((s.std_dev - (5.0f64 / 3.0).sqrt()).abs() < 1e-15);
         assert_eq!(Spread::of(&[7.0]).std_dev, 0.0);
+    }
+
+    #[test]
+    fn observed_fields_are_the_ensemble_s_solves() {
+        // 3 realisations of a 32² grid (band 8, 4 pixels per wavelength) at P0/E* = 0.02
+        let spectrum = Spectrum::self_affine(1e-6, 0.8, 1e5, 1e7, None).unwrap();
+        let settings = NumericalSettings {
+            band: 8.0,
+            pixels_per_wavelength: 4,
+            realisations: 3,
+            ..NumericalSettings::default()
+        };
+        let surfaces = Surfaces::Synthetic(&spectrum);
+        let plain = evaluate(surfaces, 1.0, 0.02, 1.0, &settings, &mut |_, _| {}).unwrap();
+        let mut seen = Vec::new();
+        let observed = evaluate_observed(
+            surfaces,
+            1.0,
+            0.02,
+            1.0,
+            &settings,
+            &mut |_, _| {},
+            &mut |map, contact, r| {
+                // the fields behind the scalars: contact is a positive pressure, ū the mean gap
+                let n2 = (map.n * map.n) as f64;
+                let touching = contact.pressure.iter().filter(|p| **p > 0.0).count();
+                assert_eq!(touching as f64 / n2, r.contact_fraction);
+                let mean = contact.gap.iter().sum::<f64>() / n2;
+                assert!((mean - r.mean_gap).abs() <= 1e-12 * r.mean_gap);
+                assert_eq!((map.n, contact.gap.len()), (32, 32 * 32));
+                seen.push(*r);
+            },
+        )
+        .unwrap();
+        assert_eq!(observed, plain, "observing changes no number");
+        assert_eq!(seen, plain.realisations);
     }
 
     #[test]

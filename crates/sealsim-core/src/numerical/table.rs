@@ -13,6 +13,7 @@
 
 use super::HeightMap;
 use super::reference::{NumericalError, NumericalSettings, Surfaces, evaluate};
+use crate::contact::FullContact;
 use crate::surface::Spectrum;
 
 /// Node pressures as fractions of the critical-junction sealing pressure `s_seal` of the
@@ -29,6 +30,8 @@ pub struct Node {
     pub cubed_gap: f64,
     /// Mean contact fraction A/A0.
     pub contact_fraction: f64,
+    /// Mean interfacial separation ū (m), the ensemble mean.
+    pub mean_gap: f64,
 }
 
 /// `u_eff(s)` of the numerical level for one surface.
@@ -72,6 +75,7 @@ impl NumericalTable {
                     s,
                     cubed_gap: 12.0 * state.conductance.mean,
                     contact_fraction: state.contact_fraction.mean,
+                    mean_gap: state.mean_gap.mean,
                 }),
                 Err(e) => failures.push((s, e)),
             }
@@ -111,6 +115,16 @@ impl NumericalTable {
     /// The tabulated nodes.
     pub fn nodes(&self) -> &[Node] {
         &self.nodes
+    }
+
+    /// The ensemble-mean contact fraction A/A0 and mean gap ū (m) at a node's reduced
+    /// pressure `s` exactly (a pressure sweep solves at its own pressures); `None` between
+    /// nodes (the table interpolates only the effective gap) or at a node that failed.
+    pub fn full_contact(&self, s: f64) -> Option<FullContact> {
+        self.nodes.iter().find(|n| n.s == s).map(|n| FullContact {
+            area_fraction: n.contact_fraction,
+            mean_gap: n.mean_gap,
+        })
     }
 
     /// The effective gap `u_eff` (m) at reduced pressure `s` (module docs); 0 when sealed.
@@ -164,6 +178,7 @@ mod tests {
                 s: 10f64.powi(i as i32),
                 cubed_gap: u * u * u,
                 contact_fraction: 0.0,
+                mean_gap: 0.0,
             })
             .collect();
         let last_open = nodes.iter().rposition(|n| n.cubed_gap > 0.0);
@@ -187,5 +202,15 @@ mod tests {
         assert_eq!(t.effective_gap(1000.0), 0.0);
         assert_eq!(t.effective_gap(5000.0), 0.0);
         assert_eq!(table(&[0.0, 0.0]).effective_gap(1.0), 0.0);
+    }
+
+    #[test]
+    fn full_contact_is_a_node_s_own_and_nothing_between_nodes() {
+        let mut t = table(&[8.0, 4.0]);
+        t.nodes[1].contact_fraction = 0.25;
+        t.nodes[1].mean_gap = 3e-7;
+        let at = t.full_contact(10.0).unwrap();
+        assert_eq!((at.area_fraction, at.mean_gap), (0.25, 3e-7));
+        assert_eq!(t.full_contact(5.0), None);
     }
 }

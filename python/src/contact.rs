@@ -1,0 +1,487 @@
+//! `sealsim.contact`: the contact problem on its own (issue 34), as contact researchers use it.
+//!
+//! * Analytic levels: Persson's theory at each nominal pressure — the relative contact area
+//!   A(q1/q0)/A0 and the mean gap ū(ζ = 1) ([`ContactPath::full_contact`], the very function
+//!   behind `sealsim leak`'s `area_fraction` and `mean_gap_m`), and the level's critical
+//!   junction (ζc, u_c, λc).
+//! * The numerical level: the boundary-element contact, the percolation of the non-contact
+//!   region and the Reynolds flow of the scenario's numerical level
+//!   ([`reference::evaluate_observed`], called exactly as the numerical table of `sealsim leak`
+//!   and of the life run calls it: E* = 1 at the reduced pressure P0/E*, η = 1, the same
+//!   `[numerical]` settings, threads and tolerances), on a height map handed over as raw `f64`
+//!   bytes (bit for bit) or on the scenario's random realisations; with the fields (heights, gap
+//!   and contact pressure of every realisation) as `f64` bytes for numpy.
+
+use crate::{PyScenario, ScenarioError, blocking, fidelity, float_column, internal, pressure};
+use pyo3::prelude::*;
+use pyo3::types::{PyBytes, PyDict, PyList};
+use sealsim::contact::{ContactSettings, Elastic, Junction};
+use sealsim::leak::{ContactPath, Fidelity, PathOptions};
+use sealsim::numerical::reference::{self, NumericalSettings, Surfaces};
+use sealsim::numerical::{HeightMap, Topography, psd};
+use sealsim::surface::Spectrum;
+
+/// Smallest side of a height map, as a scenario's height map file (`scenario::height_map`).
+const MIN_SIDE: usize = 8;
+
+/// Viscosity of the conductance column without a scenario (Pa·s): water near 20 °C. σ_eff is
+/// inversely proportional to it; `u_c_m = (12 η σ_eff)^{1/3}` does not depend on it.
+const DEFAULT_VISCOSITY: f64 = 1e-3;
+
+/// Invalid input: `sealsim.ScenarioError` (a `ValueError`).
+fn bad(message: String) -> PyErr {
+    ScenarioError::new_err(format!("contact: {message}"))
+}
+
+/// A 2-D grid of heights from numpy: `heights` the native-endian `f64` bytes of a C-contiguous
+/// `ny × nx` array (row `iy`, column `ix` along the flow), `pixel` the spacing (m). Every height
+/// must be finite, each side at least [`MIN_SIDE`].
+fn topography(heights: &[u8], shape: (usize, usize), pixel: Option<f64>) -> PyResult<Topography> {
+    let (ny, nx) = shape;
+    if nx < MIN_SIDE || ny < MIN_SIDE {
+        return Err(bad(format!(
+            "height_map is {ny} × {nx}: each side needs at least {MIN_SIDE} samples"
+        )));
+    }
+    if heights.len() != nx * ny * 8 {
+        return Err(bad(format!(
+            "height_map has {} bytes, not the {} of {ny} × {nx} float64 values",
+            heights.len(),
+            nx * ny * 8
+        )));
+    }
+    let pixel = pixel.ok_or_else(|| {
+        bad("height_map needs pixel_size, the spacing of its samples (m)".to_owned())
+    })?;
+    if !(pixel.is_finite() && pixel > 0.0) {
+        return Err(bad(format!(
+            "pixel_size must be positive and finite, got {pixel} m"
+        )));
+    }
+    let heights: Vec<f64> = heights
+        .chunks_exact(8)
+        .map(|b| f64::from_ne_bytes([b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7]]))
+        .collect();
+    if let Some(i) = heights.iter().position(|h| !h.is_finite()) {
+        return Err(bad(format!(
+            "height_map[{}, {}] is {}: every height must be a finite number (m)",
+            i / nx,
+            i % nx,
+            heights[i]
+        )));
+    }
+    Ok(Topography {
+        nx,
+        ny,
+        pixel,
+        heights,
+    })
+}
+
+/// What the contact is solved on.
+struct Problem {
+    spectrum: Option<Spectrum>,
+    settings: ContactSettings,
+    e_star: f64,
+    viscosity: f64,
+    map: Option<HeightMap>,
+    numerical: NumericalSettings,
+    /// The analytic level (`None`: the numerical level).
+    level: Option<Fidelity>,
+}
+
+/// The surface, the rubber and the level from the arguments (see `sealsim.contact`).
+#[allow(clippy::too_many_arguments)]
+fn problem(
+    scenario: Option<&PyScenario>,
+    map: Option<Topography>,
+    youngs_modulus: Option<f64>,
+    poisson_ratio: f64,
+    rms_roughness: Option<f64>,
+    hurst_exponent: Option<f64>,
+    q0: Option<f64>,
+    q1: Option<f64>,
+    level: Option<Fidelity>,
+    viscosity: Option<f64>,
+) -> PyResult<Problem> {
+    let level = match level {
+        Some(Fidelity::Numerical) => None,
+        Some(analytic) => Some(analytic),
+        // a height map is the numerical level's surface; a scenario at the numerical level
+        // runs it, as the CLI does; otherwise Persson's theory by quadrature
+        None if map.is_some() => None,
+        None if scenario.is_some_and(|s| s.inner.life.fidelity == Fidelity::Numerical) => None,
+        None => Some(Fidelity::Exact),
+    };
+    if let Some(eta) = viscosity
+        && !(eta.is_finite() && eta > 0.0)
+    {
+        return Err(bad(format!(
+            "viscosity must be positive and finite, got {eta} Pa·s"
+        )));
+    }
+    // a measured map: the numerical level's single realisation; its spectrum estimate (as a
+    // scenario's height map gets it) for the analytic levels
+    let estimated = match (&map, level) {
+        (Some(t), Some(_)) => Some(
+            psd::estimate_topography(t, &psd::PsdOptions::default())
+                .map_err(|e| bad(format!("the height map's spectrum: {e}")))?,
+        ),
+        _ => None,
+    };
+    // the array's map, else the scenario's own (its height map file, cropped as read)
+    let map = map.map(|t| t.square_crop().0).or_else(|| {
+        level
+            .is_none()
+            .then(|| scenario.and_then(|s| s.inner.height_map.clone()))
+            .flatten()
+    });
+    let need =
+        |name: &str, v: Option<f64>| v.ok_or_else(|| bad(format!("give {name} (or a scenario)")));
+    let (spectrum, settings, e_star, eta, numerical) = match scenario {
+        Some(s) => {
+            let pb = &s.inner.problem;
+            (
+                estimated.or_else(|| map.is_none().then(|| pb.spectrum.clone())),
+                pb.contact,
+                pb.material.effective_modulus(),
+                viscosity.unwrap_or(pb.fluid.viscosity),
+                sealsim::workflow::numerical_settings(&s.inner),
+            )
+        }
+        None => {
+            let e = need("youngs_modulus", youngs_modulus)?;
+            if !(e.is_finite() && e > 0.0 && poisson_ratio > -1.0 && poisson_ratio <= 0.5) {
+                return Err(bad(
+                    "youngs_modulus must be positive and poisson_ratio in (-1, 0.5]".to_owned(),
+                ));
+            }
+            let spectrum = match (&map, estimated) {
+                (_, Some(sp)) => Some(sp),
+                (Some(_), None) => None,
+                (None, None) => Some(
+                    Spectrum::self_affine(
+                        need("rms_roughness", rms_roughness)?,
+                        need("hurst_exponent", hurst_exponent)?,
+                        need("q0", q0)?,
+                        need("q1", q1)?,
+                        None,
+                    )
+                    .map_err(|e| bad(e.to_string()))?,
+                ),
+            };
+            let elastic = Elastic {
+                youngs_modulus: e,
+                poisson_ratio,
+            };
+            (
+                spectrum,
+                ContactSettings::default(),
+                elastic.effective_modulus(),
+                viscosity.unwrap_or(DEFAULT_VISCOSITY),
+                NumericalSettings::default(),
+            )
+        }
+    };
+    Ok(Problem {
+        spectrum,
+        settings,
+        e_star,
+        viscosity: eta,
+        map,
+        numerical,
+        level,
+    })
+}
+
+/// Persson's theory at `level` (analytic): one row per pressure.
+fn analytic_rows(
+    spectrum: Spectrum,
+    settings: ContactSettings,
+    level: Fidelity,
+    e_star: f64,
+    pressures: &[f64],
+) -> Vec<[f64; 7]> {
+    let path = ContactPath::build(
+        &spectrum,
+        settings,
+        level,
+        &PathOptions::default(),
+        &mut |_, _| {},
+    );
+    pressures
+        .iter()
+        .map(|&p| {
+            let s = p / e_star;
+            let full = path
+                .full_contact(s)
+                .map_or([f64::NAN; 2], |c| [c.area_fraction, c.mean_gap]);
+            let j = match path.critical_junction(s) {
+                Junction::Leaking(j) => [j.zeta_c, j.u_c, j.lambda_c],
+                Junction::Sealed => [f64::NAN; 3],
+            };
+            [p, s, full[0], full[1], j[0], j[1], j[2]]
+        })
+        .collect()
+}
+
+/// One realisation's fields and scalars, as the boundary elements left them.
+struct Solved {
+    seed: Option<u64>,
+    /// Grid side and pixel size (m).
+    n: usize,
+    pixel: f64,
+    heights: Vec<f64>,
+    gap: Vec<f64>,
+    /// Contact pressure at E* = 1 (the reduced pressure P/E*).
+    reduced_pressure: Vec<f64>,
+    area_fraction: f64,
+    mean_gap: f64,
+    percolates: bool,
+    /// σ_eff at η = 1.
+    unit_conductance: f64,
+}
+
+/// The numerical level at one pressure: its ensemble and every realisation's fields.
+struct NumericalPoint {
+    state: reference::NumericalState,
+    solved: Vec<Solved>,
+}
+
+/// The numerical level at each reduced pressure, as [`sealsim::numerical::table`] solves its
+/// nodes: E* = 1, P0 = s, η = 1.
+fn numerical_points(
+    surfaces: Surfaces<'_>,
+    reduced: &[f64],
+    settings: &NumericalSettings,
+) -> Result<Vec<NumericalPoint>, String> {
+    reduced
+        .iter()
+        .map(|&s| {
+            let mut solved = Vec::new();
+            let mut observe = |map: &HeightMap,
+                               c: &sealsim::numerical::bem::ContactSolution,
+                               r: &reference::Realisation| {
+                solved.push(Solved {
+                    seed: r.seed,
+                    n: map.n,
+                    pixel: map.pixel,
+                    heights: map.heights.clone(),
+                    gap: c.gap.clone(),
+                    reduced_pressure: c.pressure.clone(),
+                    area_fraction: r.contact_fraction,
+                    mean_gap: r.mean_gap,
+                    percolates: r.percolates,
+                    unit_conductance: r.conductance,
+                });
+            };
+            let state = reference::evaluate_observed(
+                surfaces,
+                1.0,
+                s,
+                1.0,
+                settings,
+                &mut |_, _| {},
+                &mut observe,
+            )
+            .map_err(|e| format!("numerical level at P0/E* = {s:e}: {e}"))?;
+            Ok(NumericalPoint { state, solved })
+        })
+        .collect()
+}
+
+/// The result dict at the numerical level: `table` (columns), `fields` (one dict per pressure:
+/// `heights_m`, `gap_m`, `pressure_Pa` as f64 bytes of `realisations × n × n`, and the
+/// per-realisation scalars), `n`, `pixel_size`, `realisations`, `effective_modulus`.
+fn numerical_result<'py>(
+    py: Python<'py>,
+    points: &[NumericalPoint],
+    pressures: &[f64],
+    e_star: f64,
+    viscosity: f64,
+) -> PyResult<Bound<'py, PyDict>> {
+    let (n, pixel) = points
+        .first()
+        .and_then(|p| p.solved.first())
+        .map_or((0, f64::NAN), |s| (s.n, s.pixel));
+    let table = PyDict::new(py);
+    let column = |f: &dyn Fn(usize, &NumericalPoint) -> f64| -> Vec<f64> {
+        points.iter().enumerate().map(|(i, p)| f(i, p)).collect()
+    };
+    table.set_item("nominal_pressure_Pa", pressures.to_vec())?;
+    table.set_item("reduced_pressure", column(&|i, _| pressures[i] / e_star))?;
+    table.set_item(
+        "area_fraction",
+        column(&|_, p| p.state.contact_fraction.mean),
+    )?;
+    table.set_item("mean_gap_m", column(&|_, p| p.state.mean_gap.mean))?;
+    table.set_item(
+        "percolates",
+        points
+            .iter()
+            .map(|p| p.state.percolating_fraction > 0.0)
+            .collect::<Vec<bool>>(),
+    )?;
+    table.set_item(
+        "percolating_fraction",
+        column(&|_, p| p.state.percolating_fraction),
+    )?;
+    table.set_item(
+        "conductance_m3_per_Pa_s",
+        column(&|_, p| p.state.conductance.mean / viscosity),
+    )?;
+    // the numerical table's node value, as `sealsim leak` reports it (blank there: NaN here)
+    table.set_item(
+        "u_c_m",
+        column(&|_, p| {
+            let cubed = 12.0 * p.state.conductance.mean;
+            if cubed > 0.0 { cubed.cbrt() } else { f64::NAN }
+        }),
+    )?;
+    let fields = PyList::empty(py);
+    for point in points {
+        let f = PyDict::new(py);
+        let all = |get: fn(&Solved) -> &Vec<f64>| point.solved.iter().flat_map(get).copied();
+        f.set_item("heights_m", float_column(py, all(|s| &s.heights)))?;
+        f.set_item("gap_m", float_column(py, all(|s| &s.gap)))?;
+        f.set_item(
+            "pressure_Pa",
+            float_column(py, all(|s| &s.reduced_pressure).map(|p| p * e_star)),
+        )?;
+        let scalar = |get: fn(&Solved) -> f64| point.solved.iter().map(get).collect::<Vec<f64>>();
+        f.set_item("area_fraction", scalar(|s| s.area_fraction))?;
+        f.set_item("mean_gap_m", scalar(|s| s.mean_gap))?;
+        f.set_item(
+            "percolates",
+            point
+                .solved
+                .iter()
+                .map(|s| s.percolates)
+                .collect::<Vec<_>>(),
+        )?;
+        f.set_item(
+            "conductance_m3_per_Pa_s",
+            point
+                .solved
+                .iter()
+                .map(|s| s.unit_conductance / viscosity)
+                .collect::<Vec<f64>>(),
+        )?;
+        f.set_item(
+            "seed",
+            point.solved.iter().map(|s| s.seed).collect::<Vec<_>>(),
+        )?;
+        fields.append(f)?;
+    }
+    let out = PyDict::new(py);
+    out.set_item("level", "numerical")?;
+    out.set_item("table", table)?;
+    out.set_item("fields", fields)?;
+    out.set_item("n", n)?;
+    out.set_item("pixel_size", pixel)?;
+    out.set_item("realisations", points.first().map_or(0, |p| p.solved.len()))?;
+    out.set_item("effective_modulus", e_star)?;
+    out.set_item("viscosity", viscosity)?;
+    Ok(out)
+}
+
+/// The contact problem on its own (python/sealsim/__init__.py `contact` documents it): at each
+/// nominal pressure \[Pa\], at an analytic level Persson's A/A0 at full magnification, ū(ζ = 1)
+/// and the critical junction; at the numerical level the boundary-element A/A0 and ū, the
+/// percolation verdict, the Reynolds conductance and the fields. `height_map`: the native
+/// `f64` bytes of a C-contiguous array of `shape` (ny, nx), heights in m, `pixel_size` m.
+#[pyfunction]
+#[pyo3(signature = (pressures, scenario = None, youngs_modulus = None, poisson_ratio = 0.5,
+                    rms_roughness = None, hurst_exponent = None, q0 = None, q1 = None,
+                    height_map = None, shape = None, pixel_size = None, fidelity = None,
+                    viscosity = None))]
+#[allow(clippy::too_many_arguments)]
+fn _contact<'py>(
+    py: Python<'py>,
+    pressures: Vec<Bound<'py, PyAny>>,
+    scenario: Option<&PyScenario>,
+    youngs_modulus: Option<f64>,
+    poisson_ratio: f64,
+    rms_roughness: Option<f64>,
+    hurst_exponent: Option<f64>,
+    q0: Option<f64>,
+    q1: Option<f64>,
+    height_map: Option<Bound<'py, PyBytes>>,
+    shape: Option<(usize, usize)>,
+    pixel_size: Option<f64>,
+    fidelity: Option<&str>,
+    viscosity: Option<f64>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let pressures = pressures
+        .iter()
+        .map(pressure)
+        .collect::<PyResult<Vec<f64>>>()?;
+    let map = match (height_map, shape) {
+        (Some(h), Some(shape)) => Some(topography(h.as_bytes(), shape, pixel_size)?),
+        (Some(_), None) => return Err(bad("height_map needs its shape".to_owned())),
+        (None, _) => None,
+    };
+    let level = self::fidelity(fidelity)?;
+    let pb = problem(
+        scenario,
+        map,
+        youngs_modulus,
+        poisson_ratio,
+        rms_roughness,
+        hurst_exponent,
+        q0,
+        q1,
+        level,
+        viscosity,
+    )?;
+    let Problem {
+        spectrum,
+        settings,
+        e_star,
+        viscosity,
+        map,
+        numerical,
+        level,
+    } = pb;
+    if let Some(level) = level {
+        let spectrum = spectrum.ok_or_else(|| internal("no spectrum for an analytic level"))?;
+        let rows = blocking(py, move || {
+            analytic_rows(spectrum, settings, level, e_star, &pressures)
+        })?;
+        let table = PyDict::new(py);
+        for (k, name) in [
+            "nominal_pressure_Pa",
+            "reduced_pressure",
+            "area_fraction",
+            "mean_gap_m",
+            "zeta_c",
+            "u_c_m",
+            "lambda_c_m",
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            table.set_item(name, rows.iter().map(|r| r[k]).collect::<Vec<f64>>())?;
+        }
+        let out = PyDict::new(py);
+        out.set_item("level", level.name())?;
+        out.set_item("table", table)?;
+        return Ok(out);
+    }
+    let reduced: Vec<f64> = pressures.iter().map(|p| p / e_star).collect();
+    let points = blocking(py, move || {
+        let surfaces = match (&map, &spectrum) {
+            (Some(m), _) => Surfaces::Map(m),
+            (None, Some(sp)) => Surfaces::Synthetic(sp),
+            (None, None) => return Err("no surface".to_owned()),
+        };
+        numerical_points(surfaces, &reduced, &numerical)
+    })?
+    .map_err(internal)?;
+    numerical_result(py, &points, &pressures, e_star, viscosity)
+}
+
+/// Adds `_contact` to the module.
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(_contact, m)?)
+}
