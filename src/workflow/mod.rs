@@ -8,6 +8,7 @@
 
 pub mod compare;
 pub mod figures;
+pub mod fit_prony;
 pub mod leak;
 pub mod life;
 pub mod study;
