@@ -11,6 +11,9 @@
 //! computation finishes in the background and its result is dropped). A panic in the library
 //! becomes `sealsim.InternalError` (a `RuntimeError`), never a crash of the interpreter.
 
+mod fit;
+mod surface;
+
 use pyo3::exceptions::{PyFileNotFoundError, PyOSError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
@@ -652,5 +655,7 @@ fn _sealsim(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(_materials, m)?)?;
     m.add_function(wrap_pyfunction!(_contact, m)?)?;
     m.add_function(wrap_pyfunction!(quantity, m)?)?;
+    fit::register(m)?;
+    surface::register(m)?;
     Ok(())
 }
