@@ -225,8 +225,8 @@ def surface(
         text = "\n".join(",".join(repr(float(v)) for v in row) for row in grid) + "\n"
         raw = _sealsim._surface(grid=text, name=name, **options)
     else:
-        items = [source] if _is_trace(source) else list(source)
-        if not items or not all(_is_trace(t) for t in items):
+        items = [source] if _is_trace(source) else source
+        if not isinstance(items, (list, tuple)) or not items or not all(map(_is_trace, items)):
             raise ValueError(
                 "surface: give a path, a list of paths, a 2-D array of heights or traces (x, z)"
             )

@@ -25,7 +25,7 @@ fn fit_error(e: FitPronyError) -> PyErr {
 }
 
 /// A positive quantity: a float in SI, or a string with its unit; `name` leads the message.
-fn positive(
+pub(crate) fn positive(
     value: Option<&Bound<'_, PyAny>>,
     name: &str,
     dimension: Dimension,
@@ -124,7 +124,11 @@ fn _fit_prony<'py>(
     if name.as_deref() == Some("") {
         return Err(PyValueError::new_err("name: must not be empty"));
     }
-    let like = like.as_deref().map(Like::of).transpose().map_err(fit_error)?;
+    let like = like
+        .as_deref()
+        .map(Like::of)
+        .transpose()
+        .map_err(fit_error)?;
     let (file, text) = match (text, path) {
         (Some(text), _) => (
             PathBuf::from(source.unwrap_or_else(|| "<data>".to_owned())),
@@ -139,12 +143,17 @@ fn _fit_prony<'py>(
                     PyOSError::new_err(message)
                 }
             })?;
-            (PathBuf::from(source.unwrap_or_else(|| path.display().to_string())), text)
+            (
+                PathBuf::from(source.unwrap_or_else(|| path.display().to_string())),
+                text,
+            )
         }
         (None, None) => return Err(PyValueError::new_err("fit_prony: give a path or columns")),
     };
-    let data = parse_fit_data(&text, &file, kind).map_err(|e| ScenarioError::new_err(e.to_string()))?;
-    let length = |v: &Option<Bound<'py, PyAny>>, n: &str| positive(v.as_ref(), n, Dimension::LENGTH);
+    let data =
+        parse_fit_data(&text, &file, kind).map_err(|e| ScenarioError::new_err(e.to_string()))?;
+    let length =
+        |v: &Option<Bound<'py, PyAny>>, n: &str| positive(v.as_ref(), n, Dimension::LENGTH);
     let options = FitOptions {
         settings: FitSettings {
             terms_per_decade,
@@ -196,8 +205,7 @@ fn _fit_prony<'py>(
         },
     };
     let outcome = blocking(py, move || {
-        fit(&data, &file, like.as_ref(), &options)
-            .map(|o| (material_file(&o), summary(&o), o))
+        fit(&data, &file, like.as_ref(), &options).map(|o| (material_file(&o), summary(&o), o))
     })?
     .map_err(fit_error)?;
     let (toml_text, summary_text, o) = outcome;
@@ -207,10 +215,17 @@ fn _fit_prony<'py>(
     dict.set_item("summary", summary_text)?;
     dict.set_item("name", &o.material.name)?;
     dict.set_item("source", &o.source)?;
-    dict.set_item("tau_s", prony.terms().iter().map(|t| t.tau).collect::<Vec<f64>>())?;
+    dict.set_item(
+        "tau_s",
+        prony.terms().iter().map(|t| t.tau).collect::<Vec<f64>>(),
+    )?;
     dict.set_item(
         "E_i_Pa",
-        prony.terms().iter().map(|t| t.modulus).collect::<Vec<f64>>(),
+        prony
+            .terms()
+            .iter()
+            .map(|t| t.modulus)
+            .collect::<Vec<f64>>(),
     )?;
     dict.set_item("E_inf_Pa", prony.long_term())?;
     dict.set_item("E0_Pa", prony.instantaneous())?;

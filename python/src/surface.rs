@@ -6,7 +6,6 @@
 use crate::{ScenarioError, blocking, internal, scenario_error};
 use pyo3::exceptions::{PyFileNotFoundError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::PyString;
 use sealsim::report::surface::SurfaceReport;
 use sealsim::scenario::parse_height_map;
 use sealsim::scenario::profile::parse_trace;
@@ -18,21 +17,7 @@ use std::path::{Path, PathBuf};
 
 /// A positive length: a float in m, or a string with its unit; `name` leads the message.
 fn length(value: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<Option<f64>> {
-    let Some(value) = value else { return Ok(None) };
-    let v = if value.is_instance_of::<PyString>() {
-        let text: String = value.extract()?;
-        units::parse_quantity(&text, Dimension::LENGTH)
-            .map_err(|e| ScenarioError::new_err(format!("{name}: {e}")))?
-    } else {
-        value.extract::<f64>()?
-    };
-    if v.is_finite() && v > 0.0 {
-        Ok(Some(v))
-    } else {
-        Err(ScenarioError::new_err(format!(
-            "{name}: must be positive, got {v}"
-        )))
-    }
+    crate::fit::positive(value, name, Dimension::LENGTH)
 }
 
 /// A surface error as the Python exception: a source that does not exist
@@ -110,8 +95,8 @@ fn _surface<'py>(
             let name = name.unwrap_or_else(|| "<heights>".to_owned());
             let map = parse_height_map(&grid, Path::new(&name), pixel, unit.unwrap_or(1.0))
                 .map_err(|e| ScenarioError::new_err(e.to_string()))?;
-            let report = blocking(py, move || map_report(name, &map, options.cutoff))?
-                .map_err(input)?;
+            let report =
+                blocking(py, move || map_report(name, &map, options.cutoff))?.map_err(input)?;
             outcome(&report)
         }
         (None, None, Some(traces)) => {

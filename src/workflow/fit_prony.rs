@@ -285,16 +285,7 @@ pub fn fit(
         ));
     }
     if let Some((n, measured)) = &normalisation {
-        let note = format!(
-            "; moduli from the {} by {}",
-            measured.describe(),
-            describe(n)
-        );
-        for (key, text) in material.provenance.iter_mut() {
-            if key == "prony" || key == "long_term_modulus" {
-                text.push_str(&note);
-            }
-        }
+        note_fit(&mut material, &moduli_note(n, *measured));
     }
     let copied = like
         .map(|l| copy_like(&mut material, l, false, &source))
@@ -368,17 +359,9 @@ fn master(
     );
     let mut note = format!("; {superposition}");
     if let Some(n) = normalisation {
-        note.push_str(&format!(
-            "; moduli from the {} by {}",
-            measured.describe(),
-            describe(n)
-        ));
+        note.push_str(&moduli_note(n, measured));
     }
-    for (key, text) in material.provenance.iter_mut() {
-        if key == "prony" || key == "long_term_modulus" {
-            text.push_str(&note);
-        }
-    }
+    note_fit(&mut material, &note);
     material.provenance.push((
         "shift".into(),
         format!(
@@ -403,6 +386,24 @@ fn master(
         copied,
         master: Some(m),
     })
+}
+
+/// How the measured column became moduli, as a provenance note: "; moduli from the … by …".
+fn moduli_note(n: &Normalisation, measured: Measured) -> String {
+    format!(
+        "; moduli from the {} by {}",
+        measured.describe(),
+        describe(n)
+    )
+}
+
+/// Appends `note` to the provenance of the fitted parameters (`prony`, `long_term_modulus`).
+fn note_fit(material: &mut Material, note: &str) {
+    for (key, text) in material.provenance.iter_mut() {
+        if key == "prony" || key == "long_term_modulus" {
+            text.push_str(note);
+        }
+    }
 }
 
 /// Today's date (UTC, `YYYY-MM-DD`) for provenance, or the date of `SOURCE_DATE_EPOCH` when
