@@ -30,6 +30,7 @@ from typing import Any, Dict, Iterable, List, Mapping, Optional, Sequence, Union
 import numpy
 
 from . import _sealsim
+from ._fit import FitResult, SurfaceResult, fit_prony, surface
 from ._sealsim import InternalError, ScenarioError, quantity
 
 __version__ = _sealsim.__version__
@@ -46,6 +47,10 @@ __all__ = [
     "contact",
     "ContactResult",
     "quantity",
+    "fit_prony",
+    "FitResult",
+    "surface",
+    "SurfaceResult",
     "__version__",
 ]
 

@@ -2,7 +2,7 @@
 importable, else dicts of numpy arrays: typed ``Table`` here."""
 
 import os
-from typing import Any, Callable, Dict, Iterable, List, Mapping, Optional, Sequence, Union
+from typing import Any, Callable, Dict, Iterable, List, Mapping, Optional, Sequence, Tuple, Union
 
 
 __version__: str
@@ -95,3 +95,57 @@ def contact(
     fidelity: Optional[str] = ...,
     viscosity: Optional[float] = ...,
 ) -> Union[Table, ContactResult]: ...
+
+class FitResult:
+    material_toml: str
+    terms: Table
+    E_inf: float
+    E0: float
+    summary: List[str]
+    warnings: List[str]
+    name: str
+    source: str
+    points: int
+    rms_relative_residual: float
+    max_relative_residual: float
+    window: Tuple[float, float]
+    def relaxation(self, t: Any) -> Any: ...
+    def write(self, path: PathLike) -> None: ...
+
+def fit_prony(
+    data: Any,
+    kind: str,
+    *,
+    terms_per_decade: float = ...,
+    regularisation: str = ...,
+    name: Optional[str] = ...,
+    temperature: Union[float, str, None] = ...,
+    like: Optional[str] = ...,
+    test_piece: Optional[str] = ...,
+    squeeze: Union[float, str, None] = ...,
+    cross_section: Union[float, str, None] = ...,
+    mean_diameter: Union[float, str, None] = ...,
+    diameter: Union[float, str, None] = ...,
+    height: Union[float, str, None] = ...,
+    initial_force: Union[float, str, None] = ...,
+    reference_modulus: Union[float, str, None] = ...,
+    shift: Optional[str] = ...,
+    reference_temperature: Union[float, str, None] = ...,
+    units: Optional[Mapping[str, str]] = ...,
+    source: Optional[str] = ...,
+) -> FitResult: ...
+
+class SurfaceResult(Dict[str, Any]):
+    spectrum: Table
+    law: Table
+
+def surface(
+    source: Any,
+    *,
+    pixel_size: Union[float, str, None] = ...,
+    height_unit: Optional[str] = ...,
+    cutoff: Union[float, str, None] = ...,
+    short_cutoff: Union[float, str, None] = ...,
+    tip_radius: Union[float, str, None] = ...,
+    name: Union[str, Sequence[str], None] = ...,
+) -> SurfaceResult: ...

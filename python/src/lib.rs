@@ -12,6 +12,8 @@
 //! becomes `sealsim.InternalError` (a `RuntimeError`), never a crash of the interpreter.
 
 mod contact;
+mod fit;
+mod surface;
 
 use pyo3::exceptions::{PyFileNotFoundError, PyOSError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
@@ -693,5 +695,7 @@ fn _sealsim(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(_materials, m)?)?;
     contact::register(m)?;
     m.add_function(wrap_pyfunction!(quantity, m)?)?;
+    fit::register(m)?;
+    surface::register(m)?;
     Ok(())
 }

@@ -4,43 +4,10 @@
 //! T with the fitted law).
 
 use super::plot::{LogLogChart, Series};
-use crate::material::tts::{FittedLaw, MasterCurve, Parameter};
+use crate::material::tts::{FittedLaw, MasterCurve};
 use crate::units::show;
+use crate::workflow::fit_prony::law_text;
 use std::fmt::Write;
-
-/// `value (95 % interval lo – hi)`, or `value ± std error (no interval: …)`.
-fn parameter(p: &Parameter, scale: f64, digits: usize) -> String {
-    match p.interval {
-        Some((lo, hi)) => format!(
-            "{:.digits$} (95 % interval {:.digits$} – {:.digits$})",
-            p.value * scale,
-            lo * scale,
-            hi * scale
-        ),
-        None => format!(
-            "{:.digits$} ± {:.digits$} (standard error; no interval)",
-            p.value * scale,
-            p.std_error * scale
-        ),
-    }
-}
-
-/// The shift law in words with its parameters and intervals.
-pub fn law_text(m: &MasterCurve) -> String {
-    match m.law.law {
-        FittedLaw::Wlf { c1, c2 } => format!(
-            "WLF log10 a_T = −C1 (T − Tref)/(C2 + T − Tref), Tref = {:.2} K: C1 = {}, C2 = {} K",
-            m.reference,
-            parameter(&c1, 1.0, 3),
-            parameter(&c2, 1.0, 2)
-        ),
-        FittedLaw::Arrhenius { activation_energy } => format!(
-            "Arrhenius ln a_T = (Ea/R)(1/T − 1/Tref), Tref = {:.2} K: Ea = {} kJ/mol",
-            m.reference,
-            parameter(&activation_energy, 1e-3, 2)
-        ),
-    }
-}
 
 /// The human-readable summary (stderr of `fit-prony`).
 pub fn text(source: &str, m: &MasterCurve) -> String {

@@ -6,6 +6,7 @@ pub mod ageing_fit;
 pub mod columns;
 pub mod csv;
 pub mod findings;
+pub mod fit_prony;
 pub mod html;
 pub mod life;
 #[cfg(feature = "cli")]

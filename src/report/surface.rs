@@ -1,51 +1,15 @@
-//! The result of `sealsim surface`: what a roughness source says about the contact's input
-//! spectrum — profile parameters (Ra, Rq, Rz), h_rms and rms slope, the Hurst exponent with
-//! its interval, the cut-offs and roll-off — as text, JSON and a C(q) chart.
+//! The result of `sealsim surface` ([`crate::workflow::surface`]): what a roughness source says
+//! about the contact's input spectrum — profile parameters (Ra, Rq, Rz), h_rms and rms slope,
+//! the Hurst exponent with its interval, the cut-offs and roll-off — as text, JSON and a C(q)
+//! chart.
+
+pub use crate::workflow::surface::SurfaceReport;
 
 use super::ReportError;
 use super::plot::{LogLogChart, Series};
 use crate::units::show;
 use serde_json::json;
 use std::fmt::Write;
-
-/// Everything `sealsim surface` reports; SI units (m, 1/m, m⁴).
-#[derive(Debug, Clone, PartialEq)]
-pub struct SurfaceReport {
-    /// The source as given (file name(s)).
-    pub source: String,
-    /// What the source is: `trace`, `traces`, `scenario`, `psd file`, `height map`.
-    pub kind: String,
-    /// Ra, Rq, Rz \[m\] and how they were obtained (measured on traces, or from the spectrum
-    /// over the callout band for Gaussian heights).
-    pub ra: f64,
-    pub rq: f64,
-    pub rz: Option<f64>,
-    pub parameters_basis: String,
-    /// rms roughness \[m\] and rms slope of the spectrum over `band`.
-    pub h_rms: f64,
-    pub rms_slope: f64,
-    /// The band of q the figures above cover \[1/m\] (for traces: the trusted band).
-    pub band: (f64, f64),
-    /// Hurst exponent with its 95 % interval when it was fitted.
-    pub hurst: Option<(f64, Option<(f64, f64)>)>,
-    /// The band of q the Hurst exponent was fitted over \[1/m\], when it is not `band`
-    /// (height maps).
-    pub fit_band: Option<(f64, f64)>,
-    /// For a height map: its rms height about its mean (or best-fit plane) \[m\] and its rms
-    /// slope from finite differences, measured on the map directly (beside the spectrum's).
-    pub map_figures: Option<(f64, f64)>,
-    /// Lower and upper cut-off of the spectrum \[1/m\].
-    pub q0: f64,
-    pub q1: f64,
-    /// Roll-off wavevector \[1/m\], when there is one.
-    pub rolloff: Option<f64>,
-    /// Warnings: validity of the small-slope theory, the band, the data.
-    pub warnings: Vec<String>,
-    /// The spectrum to plot: (q, C) points.
-    pub spectrum_points: Vec<(f64, f64)>,
-    /// The fitted or given law over its range: (q, C) points.
-    pub law_points: Vec<(f64, f64)>,
-}
 
 impl SurfaceReport {
     /// The human-readable summary.

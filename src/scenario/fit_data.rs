@@ -125,6 +125,21 @@ impl FitData {
 /// temperature step within one series) rather than scatter.
 pub const MONOTONIC_TOLERANCE: f64 = 0.05;
 
+/// The SI unit of a data column named `name` (as the header row names it: `t`, `force`,
+/// `E_stor`, `T`, …) as the units row takes it (`s`, `N`, `Pa`, `K`, `Hz`, `rad/s`, `1`), or
+/// `None` for a name the fit does not know. Used by the Python package to write columns in SI.
+pub fn si_unit(name: &str) -> Option<&'static str> {
+    Quantity::from_name(name).map(|q| match q {
+        Quantity::Time => "s",
+        Quantity::Frequency => "Hz",
+        Quantity::Omega => "rad/s",
+        Quantity::Force => "N",
+        Quantity::Retained => "1",
+        Quantity::Temperature => "K",
+        Quantity::Relaxation | Quantity::Storage | Quantity::Loss => "Pa",
+    })
+}
+
 /// A fit file that cannot be used: the one data-file error, [`DataFileError`](crate::scenario::DataFileError)
 /// (`path:line: message`), under the name this module's callers know.
 pub type FitDataError = crate::scenario::DataFileError;

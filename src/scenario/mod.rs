@@ -210,7 +210,23 @@ pub fn read_height_map(
         ));
     };
     let text = read(path).map_err(|e| error(None, e.to_string()))?;
-    let (nx, ny, heights) = height_map::parse(&text, unit).map_err(|e| error(e.line, e.message))?;
+    parse_height_map(&text, path, pixel, unit)
+}
+
+/// A CSV height grid's `text` (`height_map` format: one row of heights per line, times
+/// `unit`) as a [`crate::numerical::Topography`] of spacing `pixel` \[m\]; `path` only
+/// names the grid in errors.
+pub fn parse_height_map(
+    text: &str,
+    path: &Path,
+    pixel: f64,
+    unit: f64,
+) -> Result<crate::numerical::Topography, DataFileError> {
+    let (nx, ny, heights) = height_map::parse(text, unit).map_err(|e| DataFileError {
+        path: path.to_path_buf(),
+        line: e.line,
+        message: e.message,
+    })?;
     Ok(crate::numerical::Topography {
         nx,
         ny,

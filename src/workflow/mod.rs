@@ -1,6 +1,7 @@
 //! What each command does, as library calls: the static leak of a scenario ([`leak`]), its life
-//! ([`life`]), the same life with other compounds ([`compare`]), figure sets ([`figures`]) and
-//! the fidelity trade-off ([`tradeoff`]). The command line only parses arguments, calls these,
+//! ([`life`]), the same life with other compounds ([`compare`]), figure sets ([`figures`]), the
+//! fidelity trade-off ([`tradeoff`]), a Prony series fitted to lab data ([`fit_prony`]) and the
+//! summary of a roughness source ([`surface`]). The command line only parses arguments, calls these,
 //! renders and writes; a library user (or a binding) reaches the same results.
 //!
 //! Every workflow returns its validity [`Findings`] (docs/model.md §9) with its results, so
@@ -8,9 +9,11 @@
 
 pub mod compare;
 pub mod figures;
+pub mod fit_prony;
 pub mod leak;
 pub mod life;
 pub mod study;
+pub mod surface;
 pub mod tradeoff;
 
 use crate::leak::{ContactPath, Fidelity, PathOptions};
