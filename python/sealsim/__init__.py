@@ -15,7 +15,9 @@ importable, else dicts of numpy arrays, with the column names of the command lin
 (24302880.0, 'retained_force')
 >>> result.history["leak_rate_m3_per_s"]                 # doctest: +SKIP
 
-Long calls release the GIL and can be interrupted with Ctrl-C (``KeyboardInterrupt``). Invalid
+Every call releases the GIL. Studies, comparisons and numerical-level calls run on a worker
+thread: Ctrl-C (``KeyboardInterrupt``) stops the wait at once, and ``progress=`` reports them.
+An analytic run or leak table (milliseconds) runs on the calling thread. Invalid
 input raises :class:`ScenarioError` (a ``ValueError``) with the command line's
 ``file:line: key: message``; a bug in sealsim raises :class:`InternalError` (a
 ``RuntimeError``), never a crash.

@@ -78,6 +78,29 @@ where
     blocking_with_progress(py, None, move |_| work())
 }
 
+/// Runs `work` on the calling thread with the GIL released (other Python threads run
+/// meanwhile); a panic is an [`InternalError`]. For work of milliseconds to about a second (an
+/// analytic life run or leak table): a worker thread on another CPU runs it 5–10 % slower on a
+/// small VM (cold caches; measured by python/benches/overhead.py), and Ctrl-C is honoured when
+/// it returns. Long work (studies, comparisons, the numerical level) goes to [`blocking`].
+fn inline<T, F>(py: Python<'_>, work: F) -> PyResult<T>
+where
+    T: Send,
+    F: FnOnce() -> T + Send,
+{
+    py.detach(|| std::panic::catch_unwind(std::panic::AssertUnwindSafe(work)))
+        .map_err(|payload| internal(format!("sealsim panicked: {}", panic_text(&*payload))))
+}
+
+/// The message of a panic's payload.
+fn panic_text(payload: &(dyn std::any::Any + Send)) -> String {
+    payload
+        .downcast_ref::<&str>()
+        .map(|s| (*s).to_owned())
+        .or_else(|| payload.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "a panic".to_owned())
+}
+
 /// The progress of work on the worker thread: `done` of `total` units (cases, states), read by
 /// the waiting thread.
 #[derive(Default)]
@@ -101,6 +124,54 @@ impl Meter {
     }
 }
 
+/// A job for a worker thread.
+type Job = Box<dyn FnOnce() + Send + 'static>;
+
+/// Idle worker threads, each waiting on its own channel. A call reuses one rather than starting
+/// a thread (whose start, and whose first allocations in a fresh arena, cost a tenth of a
+/// millisecond, a few per cent of a life run); concurrent calls from several Python threads
+/// each get their own.
+static IDLE: std::sync::Mutex<Vec<mpsc::Sender<Job>>> = std::sync::Mutex::new(Vec::new());
+
+/// Idle workers kept; one finishing beyond this ends.
+const MAX_IDLE: usize = 4;
+
+/// Runs `job` on an idle worker, or on a new one.
+fn submit(mut job: Job) -> std::io::Result<()> {
+    let idle = || {
+        IDLE.lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner)
+    };
+    loop {
+        let Some(worker) = idle().pop() else { break };
+        match worker.send(job) {
+            Ok(()) => return Ok(()),
+            // that worker has ended: try the next
+            Err(mpsc::SendError(back)) => job = back,
+        }
+    }
+    let (tx, rx) = mpsc::channel::<Job>();
+    std::thread::Builder::new()
+        .name("sealsim".into())
+        .spawn(move || {
+            job();
+            loop {
+                {
+                    let mut pool = idle();
+                    if pool.len() >= MAX_IDLE {
+                        break;
+                    }
+                    pool.push(tx.clone());
+                }
+                match rx.recv() {
+                    Ok(next) => next(),
+                    Err(_) => break,
+                }
+            }
+        })
+        .map(|_| ())
+}
+
 /// [`blocking`] with progress: `work` reports to its [`Meter`], and `progress(done, total)` is
 /// called on the calling thread (with the GIL) whenever that changed, at most every 50 ms and
 /// once at the end. An exception raised by `progress` ends the wait with it.
@@ -116,14 +187,12 @@ where
     let meter = Arc::new(Meter::default());
     let (tx, rx) = mpsc::channel();
     let worker_meter = Arc::clone(&meter);
-    std::thread::Builder::new()
-        .name("sealsim".into())
-        .spawn(move || {
-            let outcome =
-                std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| work(&worker_meter)));
-            let _ = tx.send(outcome);
-        })
-        .map_err(|e| PyOSError::new_err(format!("cannot start a worker thread: {e}")))?;
+    submit(Box::new(move || {
+        let outcome =
+            std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| work(&worker_meter)));
+        let _ = tx.send(outcome);
+    }))
+    .map_err(|e| PyOSError::new_err(format!("cannot start a worker thread: {e}")))?;
     let mut shown = (0, 0);
     let mut report = |meter: &Meter| -> PyResult<()> {
         let now = meter.get();
@@ -149,12 +218,10 @@ where
                 return Ok(value);
             }
             Ok(Err(payload)) => {
-                let what = payload
-                    .downcast_ref::<&str>()
-                    .map(|s| (*s).to_owned())
-                    .or_else(|| payload.downcast_ref::<String>().cloned())
-                    .unwrap_or_else(|| "a panic".to_owned());
-                return Err(internal(format!("sealsim panicked: {what}")));
+                return Err(internal(format!(
+                    "sealsim panicked: {}",
+                    panic_text(&*payload)
+                )));
             }
             Err(mpsc::RecvTimeoutError::Timeout) => {
                 py.check_signals()?;
@@ -298,6 +365,21 @@ fn toml_value(value: &Bound<'_, PyAny>) -> PyResult<toml::Value> {
     )))
 }
 
+/// A life run with its history table and `--summary` JSON, as `sealsim run` writes them.
+fn life_report(
+    scenario: &Scenario,
+    file: &str,
+    progress: workflow::Progress<'_>,
+) -> (
+    Result<Table, sealsim::report::ReportError>,
+    Result<String, sealsim::report::ReportError>,
+) {
+    let result = workflow::life::run(scenario, progress);
+    let history = history_for(&result, &scenario.life.fluid);
+    let summary = Summary::new(&scenario.name, file, &scenario.life, &result).to_json();
+    (history, summary)
+}
+
 /// A scenario: the validated model (SI), its TOML text and its file.
 #[pyclass(name = "Scenario", module = "sealsim._sealsim", frozen)]
 pub(crate) struct PyScenario {
@@ -408,12 +490,14 @@ impl PyScenario {
     ) -> PyResult<(Bound<'py, PyDict>, String)> {
         let scenario = self.at(self::fidelity(fidelity)?);
         let file = self.file.clone();
-        let (history, summary) = blocking_with_progress(py, progress.as_ref(), move |meter| {
-            let result = workflow::life::run(&scenario, &mut |done, total| meter.set(done, total));
-            let history = history_for(&result, &scenario.life.fluid);
-            let summary = Summary::new(&scenario.name, &file, &scenario.life, &result).to_json();
-            (history, summary)
-        })?;
+        // the numerical level takes minutes: a worker, so that Ctrl-C stops the wait at once
+        let (history, summary) = if scenario.life.fidelity == Fidelity::Numerical {
+            blocking_with_progress(py, progress.as_ref(), move |meter| {
+                life_report(&scenario, &file, &mut |done, total| meter.set(done, total))
+            })?
+        } else {
+            inline(py, || life_report(&scenario, &file, &mut |_, _| {}))?
+        };
         let history = history.map_err(internal)?;
         let summary = summary.map_err(internal)?;
         Ok((table_columns(py, &history)?, summary))
@@ -432,11 +516,7 @@ impl PyScenario {
                 std::hint::black_box(workflow::life::run(&scenario, &mut |_, _| {}));
                 bare = bare.min(start.elapsed().as_secs_f64());
                 let start = std::time::Instant::now();
-                let result = workflow::life::run(&scenario, &mut |_, _| {});
-                let history = history_for(&result, &scenario.life.fluid);
-                let summary =
-                    Summary::new(&scenario.name, &file, &scenario.life, &result).to_json();
-                let _ = std::hint::black_box((history, summary));
+                let _ = std::hint::black_box(life_report(&scenario, &file, &mut |_, _| {}));
                 reported = reported.min(start.elapsed().as_secs_f64());
             }
             (bare, reported)
@@ -458,18 +538,21 @@ impl PyScenario {
             .transpose()?;
         let level = self::fidelity(fidelity)?.unwrap_or(self.inner.life.fidelity);
         let scenario = Arc::clone(&self.inner);
-        let (csv, findings) = blocking_with_progress(py, progress.as_ref(), move |meter| {
-            let outcome = workflow::leak::evaluate(
-                &scenario,
-                pressures.as_deref(),
-                level,
-                &mut |done, total| meter.set(done, total),
-            );
+        let leak = move |progress: workflow::Progress<'_>| {
+            let outcome =
+                workflow::leak::evaluate(&scenario, pressures.as_deref(), level, progress);
             let csv = leak_outcome_table(&outcome, scenario.life.fluid.mean_pressure());
             let findings =
                 serde_json::to_string(&sealsim::report::findings::records(&outcome.findings));
             (csv, findings)
-        })?;
+        };
+        let (csv, findings) = if level == Fidelity::Numerical {
+            blocking_with_progress(py, progress.as_ref(), move |meter| {
+                leak(&mut |done, total| meter.set(done, total))
+            })?
+        } else {
+            inline(py, || leak(&mut |_, _| {}))?
+        };
         let csv = csv.map_err(internal)?;
         Ok((columns(py, &csv)?, findings.map_err(internal)?))
     }
