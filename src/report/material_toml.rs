@@ -212,24 +212,12 @@ mod tests {
             },
         ];
         Material {
-            name: "NBR \"70\"\\test".into(),
-            status: Status::User,
-            prony: Prony::new(4e6, &terms).unwrap(),
-            poisson_ratio: 0.5,
-            shift: Shift::None,
-            glass_transition: None,
-            thermal_expansion: None,
-            glassy_thermal_expansion: None,
-            ageing: None,
-            ageing_basis: None,
-            data_reduced_time: None,
-            data_temperature: None,
             provenance: vec![
                 ("poisson_ratio".into(), "assumed".into()),
                 ("prony".into(), "fitted\nby sealsim".into()),
             ],
-            compatibility: Vec::new(),
-            library_id: None,
+            ..Material::user("NBR \"70\"\\test", Prony::new(4e6, &terms).unwrap(), 0.5)
+
         }
     }
 

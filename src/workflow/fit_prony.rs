@@ -637,21 +637,9 @@ pub fn fitted_material(name: String, fit: &Fit, source: &str, terms_per_decade: 
         provenance.push(("prony".into(), fitted));
     }
     Material {
-        name,
-        status: Status::User,
-        prony: fit.prony.clone(),
-        poisson_ratio: ASSUMED_POISSON_RATIO,
-        shift: Shift::None,
-        glass_transition: None,
-        thermal_expansion: None,
-        glassy_thermal_expansion: None,
-        ageing: None,
-        ageing_basis: None,
         data_reduced_time: Some(fit.window),
-        data_temperature: None,
         provenance,
-        compatibility: Vec::new(),
-        library_id: None,
+        ..Material::user(name, fit.prony.clone(), ASSUMED_POISSON_RATIO)
     }
 }
 

@@ -195,16 +195,14 @@ pub struct Material {
 }
 
 impl Material {
-    /// A linear-elastic, temperature-independent material (a scenario's `youngs_modulus`).
-    pub fn elastic(
-        name: impl Into<String>,
-        youngs_modulus: f64,
-        poisson_ratio: f64,
-    ) -> Option<Self> {
-        Some(Material {
+    /// A user's material of relaxation modulus `prony` and `poisson_ratio`, and nothing else: no
+    /// temperature shift, glass transition, thermal expansion, ageing, data window,
+    /// provenance or compatibility (set what the data give with struct update syntax).
+    pub fn user(name: impl Into<String>, prony: Prony, poisson_ratio: f64) -> Self {
+        Material {
             name: name.into(),
             status: Status::User,
-            prony: Prony::elastic(youngs_modulus).ok()?,
+            prony,
             poisson_ratio,
             shift: Shift::None,
             glass_transition: None,
@@ -217,7 +215,20 @@ impl Material {
             provenance: Vec::new(),
             compatibility: Vec::new(),
             library_id: None,
-        })
+        }
+    }
+
+    /// A linear-elastic, temperature-independent material (a scenario's `youngs_modulus`).
+    pub fn elastic(
+        name: impl Into<String>,
+        youngs_modulus: f64,
+        poisson_ratio: f64,
+    ) -> Option<Self> {
+        Some(Material::user(
+            name,
+            Prony::elastic(youngs_modulus).ok()?,
+            poisson_ratio,
+        ))
     }
 
     /// The TR-10-like low-temperature limit T10 \[K\]: the temperature at which the modulus read
