@@ -437,6 +437,8 @@ def contact(
     array of heights in m, row ``iy``, column ``ix`` along the flow, with ``pixel_size`` m; a
     non-square map runs on its centred even square, as a scenario's), else ``scenario``'s, else
     a self-affine spectrum (``rms_roughness`` m, ``hurst_exponent``, ``q0``, ``q1`` 1/m).
+    Keywords that would be ignored (a modulus or spectrum beside a scenario, a spectrum beside
+    a height map) raise :class:`ScenarioError`.
 
     ``fidelity``: None (the numerical level for a height map or a scenario at that level, else
     Persson's theory by quadrature, ``exact``), ``"numerical"``, or an analytic level
@@ -454,6 +456,21 @@ def contact(
     the life run (a scenario's ``[numerical]``, else the defaults), so a height map gives the
     CLI's numbers bit for bit. ``viscosity`` (Pa·s) scales only ``conductance_m3_per_Pa_s``:
     default the scenario's fluid's, else 1e-3 Pa·s (water near 20 °C)."""
+    spectrum = {"rms_roughness": rms_roughness, "hurst_exponent": hurst_exponent, "q0": q0, "q1": q1}
+    given = [k for k, v in spectrum.items() if v is not None]
+    if scenario is not None:
+        rubber = ["youngs_modulus"] * (youngs_modulus is not None)
+        rubber += ["poisson_ratio"] * (poisson_ratio != 0.5)
+        if rubber or given:
+            raise ScenarioError(
+                f"contact: {', '.join(rubber + given)} would be ignored: the rubber and the surface "
+                "are the scenario's; give either a scenario or the elastic half-space and its surface"
+            )
+    if height_map is not None and given:
+        raise ScenarioError(
+            f"contact: {', '.join(given)} would be ignored: the surface is the height map; give "
+            "either a height_map or a spectrum"
+        )
     shape = None
     heights = None
     if height_map is not None:

@@ -278,3 +278,14 @@ def test_bad_height_maps_and_pressures_are_refused():
     # an analytic level on a map: its spectrum estimate, as a scenario's height map
     a = sealsim.contact([1e4], height_map=good, fidelity="exact", **call)
     assert 0 < a["area_fraction"][0] < 1 and a["mean_gap_m"][0] > 0
+
+
+def test_inputs_that_would_be_ignored_are_refused():
+    scenario = sealsim.Scenario.from_file("scenarios/persson-yang-2008.toml")
+    with pytest.raises(sealsim.ScenarioError, match="youngs_modulus would be ignored"):
+        sealsim.contact([1e5], scenario, youngs_modulus=E)
+    with pytest.raises(sealsim.ScenarioError, match="poisson_ratio, q1 would be ignored"):
+        sealsim.contact([1e5], scenario, poisson_ratio=0.49, q1=1e9)
+    good, _ = self_affine(64, band=8)
+    with pytest.raises(sealsim.ScenarioError, match="hurst_exponent would be ignored"):
+        sealsim.contact([1e4], height_map=good, pixel_size=PIXEL, youngs_modulus=E, hurst_exponent=0.8)
