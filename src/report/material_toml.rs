@@ -217,7 +217,6 @@ mod tests {
                 ("prony".into(), "fitted\nby sealsim".into()),
             ],
             ..Material::user("NBR \"70\"\\test", Prony::new(4e6, &terms).unwrap(), 0.5)
-
         }
     }
 
