@@ -1,5 +1,5 @@
 """The guide's Python API page is the package's signatures and docstrings, as
-python/api_reference.py writes them."""
+python/tools/api_reference.py writes them."""
 
 import subprocess
 import sys
@@ -12,12 +12,12 @@ PAGE = REPO / "docs/src/reference/python-api.md"
 
 def test_the_committed_api_page_is_generated_from_the_package():
     done = subprocess.run(
-        [sys.executable, str(REPO / "python/api_reference.py")], capture_output=True, text=True
+        [sys.executable, str(REPO / "python/tools/api_reference.py")], capture_output=True, text=True
     )
     assert done.returncode == 0, done.stderr
     assert PAGE.read_text() == done.stdout, (
         "docs/src/reference/python-api.md is stale: run "
-        "`python python/api_reference.py > docs/src/reference/python-api.md`"
+        "`python python/tools/api_reference.py > docs/src/reference/python-api.md`"
     )
 
 

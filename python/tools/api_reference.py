@@ -2,7 +2,9 @@
 installed package's signatures and docstrings: one source, so the page cannot drift from the
 code (python/tests/test_api_reference.py checks the committed page equals this output).
 
-Usage: python python/api_reference.py > docs/src/reference/python-api.md
+Usage: python python/tools/api_reference.py > docs/src/reference/python-api.md
+(it imports the installed package; it lives in tools/ so that the source folder python/sealsim,
+which has no compiled extension, does not shadow it on sys.path)
 """
 
 from __future__ import annotations
@@ -15,7 +17,7 @@ import sealsim
 
 HEADER = """# Python API
 
-Generated from the package's signatures and docstrings by `python/api_reference.py` (a test
+Generated from the package's signatures and docstrings by `python/tools/api_reference.py` (a test
 checks this page equals its output: edit the docstrings, then rerun it). Every number is an SI
 float; a *table* is a pandas DataFrame when pandas is importable, else a dict of numpy arrays,
 with the column names of the command line's CSV files ([CSV columns](columns.md)). Install and a
