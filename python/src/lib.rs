@@ -299,13 +299,7 @@ fn table_columns<'py>(py: Python<'py>, table: &Table) -> PyResult<Bound<'py, PyD
         match numbers {
             Some(v) => dict.set_item(name, float_column(py, v))?,
             None => {
-                let words: Vec<String> = cells
-                    .map(|c| match c {
-                        Cell::Number(v) => format!("{v:e}"),
-                        Cell::Blank => String::new(),
-                        Cell::Text(t) => t.clone(),
-                    })
-                    .collect();
+                let words: Vec<String> = cells.map(Cell::text).collect();
                 dict.set_item(name, words)?;
             }
         }

@@ -322,8 +322,8 @@ impl Cell {
         value.map_or(Ok(Cell::Blank), |v| Cell::number(row, column, v))
     }
 
-    /// The cell's CSV text.
-    fn text(&self) -> String {
+    /// The cell's CSV text (a number in shortest round-trip scientific notation).
+    pub fn text(&self) -> String {
         match self {
             Cell::Number(v) => format!("{v:e}"),
             Cell::Blank => String::new(),
@@ -360,11 +360,7 @@ impl Table {
 
 /// A finite value in shortest round-trip scientific notation.
 pub(crate) fn number(row: usize, column: &'static str, value: f64) -> Result<String, ReportError> {
-    if value.is_finite() {
-        Ok(format!("{value:e}"))
-    } else {
-        Err(ReportError::NonFinite { row, column, value })
-    }
+    Cell::number(row, column, value).map(|cell| cell.text())
 }
 
 /// A CSV writer error as a report error.

@@ -92,26 +92,18 @@ pub const PERMEATION_HISTORY_COLUMN: &str = "permeation_Pa_m3_per_s";
 /// The history of a life run as CSV: the header and one row per output time (t = 0, the
 /// installation, first). With `[motion]` the rows carry [`MOTION_HISTORY_COLUMNS`] too.
 pub fn history_table(result: &LifeResult) -> Result<String, ReportError> {
-    history_table_with(result, None)
+    history_cells(result, None)?.to_csv()
 }
 
 /// [`history_table`] of a run whose fluid is `fluid`: a gas adds [`GAS_HISTORY_COLUMN`] and
 /// [`PERMEATION_HISTORY_COLUMN`].
 pub fn history_table_for(result: &LifeResult, fluid: &Fluid) -> Result<String, ReportError> {
-    history_cells(result, fluid.mean_pressure())?.to_csv()
+    history_for(result, fluid)?.to_csv()
 }
 
 /// The cells of [`history_table_for`] (what the Python package reads).
 pub fn history_for(result: &LifeResult, fluid: &Fluid) -> Result<Table, ReportError> {
     history_cells(result, fluid.mean_pressure())
-}
-
-/// The history with the throughput column when `mean_pressure` p̄ \[Pa\] is given (a gas).
-fn history_table_with(
-    result: &LifeResult,
-    mean_pressure: Option<f64>,
-) -> Result<String, ReportError> {
-    history_cells(result, mean_pressure)?.to_csv()
 }
 
 /// The history's cells, with the throughput column when `mean_pressure` p̄ \[Pa\] is given.

@@ -2,7 +2,7 @@
 //! back in the JSON with every field, and bad input exits with status 2, names the file and
 //! line, and writes nothing.
 
-use crate::support::sealsim;
+use crate::support::{sealsim, sealsim_ok};
 use predicates::prelude::*;
 use std::fmt::Write;
 use std::fs;
@@ -144,18 +144,8 @@ fn bad_input_exits_2_with_file_and_line() {
 #[test]
 fn the_tutorial_ageing_data_give_back_the_law_they_were_made_from() {
     let path = crate::common::scenario_path("lab-data/cs-ageing-nbr.csv");
-    let out = sealsim()
-        .arg("ageing-fit")
-        .arg(&path)
-        .arg("--json")
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let out = sealsim_ok(&[&"ageing-fit", &path, &"--json"]);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     let (ea, r) = (95e3, 8.314_462_618);
     let interval = &v["activation_energy_interval_J_per_mol"];
     let (lo, hi) = (interval[0].as_f64().unwrap(), interval[1].as_f64().unwrap());
