@@ -890,16 +890,24 @@ pub struct Verdict {
 /// waived lift-off), else "survives …" with the state it ended in.
 pub fn verdict(problem: &LifeProblem, result: &LifeResult) -> Verdict {
     let duration = human_time(problem.time.duration);
-    let open = result.rows.iter().find(|r| r.state.is_open());
+    // the states with their located times (docs/model.md §10.1), not the output rows
+    let states = &result.course.states;
+    let open = states.iter().find(|(s, _)| s.is_open());
     match (result.failure, open) {
         (Some(f), _) => {
+            // the open state the lift-off failure found: in effect at its time, or beginning
+            // within the simultaneous-events window after it (docs/model.md §8)
+            let window = f.time * (1.0 + crate::simulate::events::SIMULTANEOUS_EVENTS);
             let how = match f.mode {
-                crate::simulate::FailureMode::LiftOff => result
-                    .rows
+                crate::simulate::FailureMode::LiftOff => states
                     .iter()
-                    .find(|r| r.state.is_open() && r.time >= f.time)
-                    .map_or(String::new(), |r| {
-                        format!(": {}, {}", r.state.label(), r.state.meaning())
+                    .enumerate()
+                    .find(|&(i, (s, t))| {
+                        let until = states.get(i + 1).map_or(f64::INFINITY, |n| n.1);
+                        s.is_open() && *t <= window && until > f.time
+                    })
+                    .map_or(String::new(), |(_, (s, _))| {
+                        format!(": {}, {}", s.label(), s.meaning())
                     }),
                 _ => String::new(),
             };
@@ -913,17 +921,17 @@ pub fn verdict(problem: &LifeProblem, result: &LifeResult) -> Verdict {
                 text: format!("FAILS {when} by {}{how}", f.mode.as_str()),
             }
         }
-        (None, Some(r)) => Verdict {
+        (None, Some(&(state, time))) => Verdict {
             kind: VerdictKind::Open,
             text: format!(
                 "{} ({}) from {}: not counted as a failure only because [failure] lift_off = \
                  false waives it",
-                r.state.label(),
-                r.state.meaning(),
-                if r.time == 0.0 {
+                state.label(),
+                state.meaning(),
+                if time == 0.0 {
                     "installation".to_owned()
                 } else {
-                    format!("t = {}", human_time(r.time))
+                    format!("t = {}", human_time(time))
                 }
             ),
         },
@@ -1376,7 +1384,7 @@ fn leak_rate_line(run: &SummaryRun) -> String {
 /// permeation through the rubber and the total, where computed.
 fn gas_flow_lines(out: &mut SummaryText, run: &SummaryRun, p: f64) {
     let (problem, result, floor, duration) = (run.problem, run.result, run.floor, &run.duration);
-    let sealed = result.rows.iter().all(|r| r.leak_rate == 0.0);
+    let sealed = result.course.max_leak_rate.0 == 0.0;
     let law = match result.continuum_leak_rate {
         _ if sealed => "sealed through the interface: no channel percolates".to_owned(),
         Some(c) if c > 0.0 && result.initial_leak_rate() > 0.0 => format!(
@@ -1441,25 +1449,30 @@ fn gas_flow_lines(out: &mut SummaryText, run: &SummaryRun, p: f64) {
     );
 }
 
-/// The volume leaked over the run (a lower bound when the seal was open).
+/// The volume leaked over the run; "≥" when the seal was ever lifted off, where the model gives
+/// only a lower bound of the flow (docs/model.md §8.1) — also when that bound is 0.
 fn leaked_volume_line(run: &SummaryRun) -> String {
     let result = run.result;
-    format!(
-        "{}{} m³ ({} mL) in {}{}",
-        if result.leaked_volume_is_lower_bound() {
-            "≥ "
-        } else {
-            ""
-        },
-        human(result.leaked_volume(), 3),
-        human(result.leaked_volume() * 1e6, 3),
-        run.duration,
-        if result.leaked_volume_is_lower_bound() {
-            " (a lower bound: it includes the lower bound of the open seal's flow)"
-        } else {
-            ""
-        }
-    )
+    let volume = result.leaked_volume();
+    let amount = format!("{} m³ ({} mL)", human(volume, 3), human(volume * 1e6, 3));
+    if !result.leaked_volume_is_lower_bound() {
+        return format!("{amount} in {}", run.duration);
+    }
+    let course = &result.course;
+    let lifted = human_time(course.lifted_duration);
+    let bound = if course.lifted_volume > 0.0 {
+        format!(
+            "{} mL of it while lifted off for {lifted}, where the model gives only a lower \
+             bound of the flow",
+            human(course.lifted_volume * 1e6, 3)
+        )
+    } else {
+        format!(
+            "lifted off for {lifted}, where the model's lower bound of the flow is 0: the \
+             true volume is larger by an unknown amount"
+        )
+    };
+    format!("≥ {amount} in {} (a lower bound: {bound})", run.duration)
 }
 
 /// The retained fraction below which a force reads "≈ 0 (fully set)": e^{−K} at K ≈ 14, where
@@ -1988,6 +2001,7 @@ mod tests {
 
     fn result(rows: Vec<HistoryRow>) -> LifeResult {
         LifeResult {
+            course: crate::simulate::Course::from_rows(&rows),
             rows,
             failure: Some(FailureEvent {
                 time: 2.5 * YEAR,

@@ -1084,7 +1084,15 @@ const SIMULATION: &[Key] = &[
         "points_per_decade",
         Quantity(life::POINTS_PER_DECADE),
         Literal("20", ""),
-        "output points per decade of time",
+        "output points per decade of time (the history's rows only: the internal steps, the \
+         volumes, states and failure times do not depend on it)",
+    ),
+    key(
+        "tolerance",
+        Quantity(life::TOLERANCE),
+        Literal("1e-3", ""),
+        "relative tolerance of the internal steps' error control: the leaked volume, the \
+         located state changes and extremes (docs/model.md §10.1)",
     ),
     key(
         "fidelity",
@@ -1372,8 +1380,9 @@ pub(super) const TABLES: &[Table] = &[
     },
     Table {
         path: "simulation",
-        prose: "The time grid of `sealsim run`: the installation row at t = 0, then log-uniform \
-                times from `start` to `duration`; and the contact model's fidelity.",
+        prose: "The output grid of `sealsim run`: the installation row at t = 0, then \
+                log-uniform times from `start` to `duration`; the tolerance of the internal \
+                steps, which the output grid only samples; and the contact model's fidelity.",
         keys: SIMULATION,
     },
     Table {

@@ -190,6 +190,13 @@ pub(super) const POINTS_PER_DECADE: Field = field(
     Bound::Range(0.1, MAX_POINTS_PER_DECADE),
 );
 
+pub(super) const TOLERANCE: Field = field(
+    "simulation.tolerance",
+    Dimension::DIMENSIONLESS,
+    "",
+    Bound::Range(1e-8, 0.1),
+);
+
 /// Default `simulation.duration` \[s\]: 30 years.
 pub const DEFAULT_DURATION: f64 = 30.0 * YEAR;
 /// Default `simulation.start` \[s\].
@@ -895,6 +902,7 @@ impl Source<'_> {
                     start: DEFAULT_START,
                     duration: DEFAULT_DURATION,
                     points_per_decade: DEFAULT_POINTS_PER_DECADE,
+                    tolerance: TimeGrid::DEFAULT_TOLERANCE,
                 },
                 Fidelity::Table,
             ));
@@ -925,6 +933,9 @@ impl Source<'_> {
         let points_per_decade = self
             .optional(raw.points_per_decade.as_ref(), &POINTS_PER_DECADE)?
             .unwrap_or(DEFAULT_POINTS_PER_DECADE);
+        let tolerance = self
+            .optional(raw.tolerance.as_ref(), &TOLERANCE)?
+            .unwrap_or(TimeGrid::DEFAULT_TOLERANCE);
         let fidelity = match &raw.fidelity {
             None => Fidelity::Table,
             Some(f) => parse_fidelity(f.get_ref())
@@ -935,6 +946,7 @@ impl Source<'_> {
                 start,
                 duration,
                 points_per_decade,
+                tolerance,
             },
             fidelity,
         ))
@@ -1289,7 +1301,8 @@ squeeze = 0.2
             TimeGrid {
                 start: 1.0,
                 duration: 30.0 * YEAR,
-                points_per_decade: 20.0
+                points_per_decade: 20.0,
+                tolerance: TimeGrid::DEFAULT_TOLERANCE,
             }
         );
         assert_eq!((life.fidelity, life.strips), (Fidelity::Table, 16));
@@ -1705,7 +1718,8 @@ squeeze = 0.2
             TimeGrid {
                 start: 1e-3,
                 duration: YEAR,
-                points_per_decade: 5.0
+                points_per_decade: 5.0,
+                tolerance: TimeGrid::DEFAULT_TOLERANCE,
             }
         );
         assert_eq!(s.life.fidelity, Fidelity::Exact);

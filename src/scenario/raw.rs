@@ -366,6 +366,7 @@ pub(super) struct RawSimulation {
     pub duration: Option<Quantity>,
     pub start: Option<Quantity>,
     pub points_per_decade: Option<Quantity>,
+    pub tolerance: Option<Quantity>,
     pub fidelity: Option<Spanned<String>>,
     pub clogging_tolerance: Option<Quantity>,
 }

@@ -24,6 +24,7 @@ mod generate;
 mod generate_reference;
 mod gland;
 mod gland_pressure;
+mod integration;
 mod leak;
 mod materials;
 mod motion;

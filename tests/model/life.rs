@@ -78,6 +78,7 @@ pub(crate) fn oring_problem(material: Material) -> LifeProblem {
             start: 1.0,
             duration: 30.0 * YEAR,
             points_per_decade: 20.0,
+            tolerance: TimeGrid::DEFAULT_TOLERANCE,
         },
         fidelity: Fidelity::Table,
         strips: 16,
@@ -259,6 +260,7 @@ fn extremes_stay_finite() {
             start: 1e-3_f64.min(duration / 10.0),
             duration,
             points_per_decade: 20.0,
+            tolerance: TimeGrid::DEFAULT_TOLERANCE,
         };
         assert!(all_finite(&simulate(&p)), "duration {duration}");
     }
@@ -317,6 +319,7 @@ fn a_cold_snap_inside_one_step_is_resolved() {
         start: 1.0,
         duration: 2e5,
         points_per_decade: 2.0,
+        tolerance: TimeGrid::DEFAULT_TOLERANCE,
     };
     let coarse = simulate(&p);
     p.time.points_per_decade = 400.0;

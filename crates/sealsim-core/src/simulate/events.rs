@@ -2,6 +2,12 @@
 
 use crate::surface::expm1_over_x;
 
+/// Two failure events within this fraction of their time count as simultaneous: the run
+/// reports the earlier time and the mode that comes first in the tie order (the damage first;
+/// docs/model.md §8). A thousandth is the precision a summary states a time with (three
+/// figures), far above the location's 1e-12, and far below any physical separation of causes.
+pub const SIMULTANEOUS_EVENTS: f64 = 1e-3;
+
 /// Which criterion ended the seal's life.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum FailureMode {
@@ -148,8 +154,8 @@ impl FailureCriteria {
     }
 
     /// The criteria in the order a tie is broken (several crossed at once, e.g. at
-    /// installation): the damage first.
-    const MODES: [FailureMode; 9] = [
+    /// installation, or within [`SIMULTANEOUS_EVENTS`] of each other): the damage first.
+    pub const MODES: [FailureMode; 9] = [
         FailureMode::Extrusion,
         FailureMode::LiftOff,
         FailureMode::LostInterference,
@@ -160,6 +166,14 @@ impl FailureCriteria {
         FailureMode::RetainedForce,
         FailureMode::CompressionSet,
     ];
+
+    /// The rank of `mode` in the tie order [`Self::MODES`] (0 first).
+    pub fn precedence(&self, mode: FailureMode) -> usize {
+        Self::MODES
+            .iter()
+            .position(|&m| m == mode)
+            .unwrap_or(Self::MODES.len())
+    }
 
     /// Whether criterion `mode` (if set) has failed in state `x`.
     pub fn crossed(&self, mode: FailureMode, x: &EventInput) -> bool {
