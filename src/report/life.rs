@@ -15,7 +15,7 @@ use crate::material::shift::{DAY, YEAR};
 use crate::material::{Material, Status};
 use crate::report::findings::{FindingRecord, records};
 use crate::seal::SealGeometry;
-use crate::simulate::{AsperityModulus, LifeProblem, LifeResult, Loading};
+use crate::simulate::{AsperityModulus, LevelBand, LifeProblem, LifeResult, Loading, Outcome};
 use crate::units::human;
 use crate::validity::Limit;
 use serde::Serialize;
@@ -224,6 +224,10 @@ pub struct Summary {
     pub verdict: &'static str,
     /// The verdict as the terminal summary prints it.
     pub verdict_text: String,
+    /// The same life at the neighbouring fidelity level (docs/model.md §4.1; absent where it was
+    /// not run).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub level_band: Option<BandSummary>,
     /// The state at the end of the run: `sealed`, `leaking`, `pressure_held` or `lift_off`.
     pub final_state: &'static str,
     /// The states in the order the run passed through them, each with the first output time
@@ -290,6 +294,38 @@ pub struct Summary {
     /// A gas's pressures and throughputs (absent for a liquid; docs/model.md §3.9).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub gas: Option<GasSummary>,
+}
+
+/// The summary's `level_band`: the outcome and figures at the neighbouring fidelity level.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct BandSummary {
+    /// The neighbouring level.
+    pub level: &'static str,
+    /// `fails`, `open` or `survives` there.
+    pub verdict: &'static str,
+    /// Whether that differs from this level's outcome (the verdict is then `undecided`).
+    pub undecided: bool,
+    pub time_to_failure_s: Option<f64>,
+    pub failure_mode: String,
+    pub leaked_volume_m3: f64,
+    pub leaked_volume_is_lower_bound: bool,
+    pub maximum_leak_rate_m3_per_s: f64,
+}
+
+impl BandSummary {
+    fn new(result: &LifeResult) -> Option<Self> {
+        let band = result.band.as_ref()?;
+        Some(BandSummary {
+            level: band.level.name(),
+            verdict: VerdictKind::of(band.outcome()).as_str(),
+            undecided: result.undecided(),
+            time_to_failure_s: band.failure.map(|f| f.time),
+            failure_mode: band.failure.map_or("none", |f| f.mode.as_str()).to_owned(),
+            leaked_volume_m3: band.leaked_volume,
+            leaked_volume_is_lower_bound: band.leaked_volume_is_lower_bound,
+            maximum_leak_rate_m3_per_s: band.maximum_leak_rate,
+        })
+    }
 }
 
 /// One entry of the summary's `states`.
@@ -727,6 +763,7 @@ impl Summary {
             fidelity: problem.fidelity.name().to_owned(),
             verdict: verdict(problem, result).kind.as_str(),
             verdict_text: verdict(problem, result).text,
+            level_band: BandSummary::new(result),
             final_state: result.final_state().as_str(),
             states: result
                 .state_changes()
@@ -865,15 +902,28 @@ pub enum VerdictKind {
     Open,
     /// No criterion crossed, and the seal held by its squeeze throughout.
     Survives,
+    /// The neighbouring fidelity level gives another outcome: the model, not the physics it
+    /// resolves, would decide (docs/model.md §4.1). Never read as a pass.
+    Undecided,
 }
 
 impl VerdictKind {
-    /// `fails`, `open` or `survives` (JSON, the HTML verdict's class).
+    /// `fails`, `open`, `survives` or `undecided` (JSON, the HTML verdict's class).
     pub fn as_str(self) -> &'static str {
         match self {
             VerdictKind::Fails => "fails",
             VerdictKind::Open => "open",
             VerdictKind::Survives => "survives",
+            VerdictKind::Undecided => "undecided",
+        }
+    }
+
+    /// The kind of an outcome.
+    fn of(outcome: Outcome) -> Self {
+        match outcome {
+            Outcome::Fails => VerdictKind::Fails,
+            Outcome::Open => VerdictKind::Open,
+            Outcome::Survives => VerdictKind::Survives,
         }
     }
 }
@@ -887,8 +937,45 @@ pub struct Verdict {
 
 /// The verdict of `result`, a run of `problem` (docs/model.md §8.1): "FAILS after … by …", or,
 /// without a failure, "OPEN …" when the seal was ever open or held by the pressure alone (a
-/// waived lift-off), else "survives …" with the state it ended in.
+/// waived lift-off), else "survives …" with the state it ended in — or "UNDECIDED by the
+/// model" with both when the neighbouring fidelity level gives another outcome (§4.1).
 pub fn verdict(problem: &LifeProblem, result: &LifeResult) -> Verdict {
+    let own = level_verdict(problem, result);
+    match &result.band {
+        Some(band) if result.undecided() => Verdict {
+            kind: VerdictKind::Undecided,
+            text: format!(
+                "UNDECIDED by the model: {} at {}, but {} at {} (the neighbouring fidelity \
+                 level; docs/model.md §4.1)",
+                own.text,
+                problem.fidelity.name(),
+                band_outcome_text(problem, band),
+                band.level.name()
+            ),
+        },
+        _ => own,
+    }
+}
+
+/// The outcome at the neighbouring level in a few words.
+fn band_outcome_text(problem: &LifeProblem, band: &LevelBand) -> String {
+    match (band.failure, band.open_since) {
+        (Some(f), _) => format!(
+            "FAILS {} by {}",
+            if f.time == 0.0 {
+                "at installation".to_owned()
+            } else {
+                format!("after {}", human_time(f.time))
+            },
+            f.mode.as_str()
+        ),
+        (None, Some(t)) => format!("OPEN from {}", at_time(t)),
+        (None, None) => format!("survives {}", human_time(problem.time.duration)),
+    }
+}
+
+/// The verdict at the run's own level (see [`verdict`]).
+fn level_verdict(problem: &LifeProblem, result: &LifeResult) -> Verdict {
     let duration = human_time(problem.time.duration);
     // the states with their located times (docs/model.md §10.1), not the output rows
     let states = &result.course.states;
@@ -1111,6 +1198,9 @@ pub fn human_summary(
         && let Some(m) = MotionSummary::new(spec, result)
     {
         out.line("motion", motion_description(spec, &m, &run.duration));
+    }
+    if let Some(band) = &result.band {
+        out.line("level band", band_line(problem, result, band));
     }
     out.line("result", verdict(problem, result).text);
     out.text
@@ -1475,6 +1565,34 @@ fn leaked_volume_line(run: &SummaryRun) -> String {
     format!("≥ {amount} in {} (a lower bound: {bound})", run.duration)
 }
 
+/// How far the result moves at the neighbouring fidelity level (docs/model.md §4.1).
+fn band_line(problem: &LifeProblem, result: &LifeResult, band: &LevelBand) -> String {
+    let own = result.leaked_volume();
+    let ratio = if own > 0.0 && band.leaked_volume > 0.0 {
+        format!(" (×{} this level's)", human(band.leaked_volume / own, 2))
+    } else {
+        String::new()
+    };
+    let decided = if result.undecided() {
+        "another outcome: UNDECIDED by the model"
+    } else {
+        "the same outcome: the model does not decide the verdict"
+    };
+    format!(
+        "at {} (the neighbouring level): leaked volume {}{} m³{ratio}, highest leak rate {} \
+         m³/s; {}; {decided}",
+        band.level.name(),
+        if band.leaked_volume_is_lower_bound {
+            "≥ "
+        } else {
+            ""
+        },
+        human(band.leaked_volume, 3),
+        human(band.maximum_leak_rate, 3),
+        band_outcome_text(problem, band),
+    )
+}
+
 /// The retained fraction below which a force reads "≈ 0 (fully set)": e^{−K} at K ≈ 14, where
 /// the first-order ageing law has long left its data (docs/model.md §15.2).
 pub const FULLY_SET: f64 = 1e-6;
@@ -1739,16 +1857,29 @@ impl<'a> CompareRow<'a> {
 }
 
 /// The comparison's columns of the end of each run, after the leak rates (and throughputs).
-pub const COMPARE_END_COLUMNS: [&str; 6] = [
+pub const COMPARE_END_COLUMNS: [&str; 10] = [
     "sealing_force_end_N_per_m",
     "retained_force_end",
     "leaked_volume_end_m3",
+    "leaked_volume_is_lower_bound",
     "compression_set_end",
     "state_end",
+    "verdict",
+    "neighbour_level",
+    "neighbour_verdict",
     "notes",
 ];
 
 impl CompareRow<'_> {
+    /// The run's verdict kind (`undecided` where the neighbouring level gives another outcome).
+    fn verdict_kind(&self) -> VerdictKind {
+        if self.result.undecided() {
+            VerdictKind::Undecided
+        } else {
+            VerdictKind::of(self.result.outcome())
+        }
+    }
+
     /// The end of the run: sealing force \[N/m\], retained force (over the reference),
     /// leaked volume \[m³\], compression set, state.
     fn end(&self) -> (f64, f64, f64, Option<f64>, &'static str) {
@@ -1840,10 +1971,18 @@ pub fn compare_table(rows: &[CompareRow<'_>]) -> Result<String, ReportError> {
         record.push(number(row, COMPARE_END_COLUMNS[0], force)?);
         record.push(number(row, COMPARE_END_COLUMNS[1], retained)?);
         record.push(number(row, COMPARE_END_COLUMNS[2], volume)?);
+        record.push(r.result.leaked_volume_is_lower_bound().to_string());
         record.push(set.map_or(Ok(String::new()), |c| {
-            number(row, COMPARE_END_COLUMNS[3], c)
+            number(row, COMPARE_END_COLUMNS[4], c)
         })?);
         record.push(state.to_owned());
+        record.push(r.verdict_kind().as_str().to_owned());
+        let band = r.result.band.as_ref();
+        record.push(band.map_or("", |b| b.level.name()).to_owned());
+        record.push(
+            band.map_or("", |b| VerdictKind::of(b.outcome()).as_str())
+                .to_owned(),
+        );
         record.push(r.notes.clone());
         writer.write_record(record).map_err(csv_error)?;
     }
@@ -1923,13 +2062,21 @@ pub fn compare_cells(rows: &[CompareRow<'_>]) -> Vec<Vec<String>> {
         cells.push(vec![
             r.label.to_owned(),
             r.material.status.as_str().to_owned(),
-            match (r.result.failure, r.result.open_since()) {
-                (Some(f), _) if f.time == 0.0 => "at installation".to_owned(),
-                (Some(f), _) => human_time(f.time),
-                // a waived lift-off: never "survives"
-                (None, Some(_)) => "OPEN (not counted)".to_owned(),
-                (None, None) => "survives".to_owned(),
-            },
+            format!(
+                "{}{}",
+                if r.result.undecided() {
+                    "UNDECIDED: "
+                } else {
+                    ""
+                },
+                match (r.result.failure, r.result.open_since()) {
+                    (Some(f), _) if f.time == 0.0 => "at installation".to_owned(),
+                    (Some(f), _) => human_time(f.time),
+                    // a waived lift-off: never "survives"
+                    (None, Some(_)) => "OPEN (not counted)".to_owned(),
+                    (None, None) => "survives".to_owned(),
+                }
+            ),
             failure_mode(r.result).to_owned(),
             rate(day),
             rate(year),
@@ -1945,7 +2092,15 @@ pub fn compare_cells(rows: &[CompareRow<'_>]) -> Vec<Vec<String>> {
             } else {
                 format!("{} %", human(100.0 * retained, 2))
             },
-            human(volume * 1e6, 2),
+            format!(
+                "{}{}",
+                if r.result.leaked_volume_is_lower_bound() {
+                    "≥ "
+                } else {
+                    ""
+                },
+                human(volume * 1e6, 2)
+            ),
             set.map_or_else(|| "-".to_owned(), |c| format!("{} %", human(100.0 * c, 2))),
             state.to_owned(),
             r.notes.clone(),
@@ -2002,6 +2157,7 @@ mod tests {
     fn result(rows: Vec<HistoryRow>) -> LifeResult {
         LifeResult {
             course: crate::simulate::Course::from_rows(&rows),
+            band: None,
             rows,
             failure: Some(FailureEvent {
                 time: 2.5 * YEAR,

@@ -1,6 +1,6 @@
 //! `sealsim compare` as a library call: one life scenario with each of several compounds.
 
-use super::{Progress, life_on, scenario_path};
+use super::{Progress, life_on, scenario_path, with_band};
 use crate::contact::ContactSettings;
 use crate::leak::{ContactPath, Fidelity};
 use crate::material::Material;
@@ -59,6 +59,8 @@ pub fn compare_scenarios(
     // settings and the level, which the variants share (checked, in case a material file
     // changed them).
     let mut shared: Option<(PathKey, ContactPath)> = None;
+    // the neighbouring level's path for the bands (docs/model.md §4.1), shared the same way
+    let mut shared_band: Option<(PathKey, ContactPath)> = None;
     let mut runs = Vec::with_capacity(scenarios.len());
     for ((label, material), scenario) in compounds.into_iter().zip(scenarios) {
         let life = &scenario.life;
@@ -71,7 +73,17 @@ pub fn compare_scenarios(
                 (path, findings)
             }
         };
-        let result = life_on(life, path, findings);
+        let neighbour = life.fidelity.neighbour();
+        let band_key = (life.spectrum.clone(), life.contact, neighbour);
+        let band_path = match &shared_band {
+            Some((first, path)) if *first == band_key => path.clone(),
+            _ => {
+                let (path, _) = scenario_path(&scenario, neighbour, None, &mut |_, _| {});
+                shared_band = Some((band_key, path.clone()));
+                path
+            }
+        };
+        let result = with_band(life, life_on(life, path, findings), band_path);
         runs.push(CompoundRun {
             label,
             material,

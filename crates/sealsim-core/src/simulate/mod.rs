@@ -44,8 +44,8 @@ mod problem;
 mod stepping;
 
 pub use problem::{
-    AgeingSource, AsperityModulus, Course, GrooveInterface, HistoryRow, LifeProblem, LifeResult,
-    Loading, SealState, TimeGrid,
+    AgeingSource, AsperityModulus, Course, GrooveInterface, HistoryRow, LevelBand, LifeProblem,
+    LifeResult, Loading, Outcome, SealState, TimeGrid,
 };
 
 use crate::contact::{ContactSettings, Elastic, Junction, PerssonContact};
@@ -473,6 +473,7 @@ impl<'a> Simulator<'a> {
         course.evaluations += stepper.evaluations.get();
         LifeResult {
             rows,
+            band: None,
             course,
             failure,
             findings,

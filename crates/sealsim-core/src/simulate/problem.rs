@@ -351,6 +351,10 @@ impl HistoryRow {
 pub struct LifeResult {
     /// The history at the output times (samples of the run; `points_per_decade`).
     pub rows: Vec<HistoryRow>,
+    /// The same problem at the neighbouring fidelity level ([`Fidelity::neighbour`]), where the
+    /// caller ran it (`sealsim run` and `compare` do; a study's cases do not): how far the
+    /// model's own uncertainty moves the result (docs/model.md §4.1).
+    pub band: Option<LevelBand>,
     /// What the internal steps found (states with their located times, extremes, the leaked
     /// volume): independent of the output grid (docs/model.md §10.1).
     pub course: Course,
@@ -363,6 +367,63 @@ pub struct LifeResult {
     /// A rarefied gas: the leak rate at installation \[m³/s\] the continuum law would give
     /// instead (docs/model.md §3.10), to show what rarefaction changes; `None` otherwise.
     pub continuum_leak_rate: Option<f64>,
+}
+
+/// A life run's outcome, as its verdict names it (docs/model.md §8.1).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Outcome {
+    /// A failure criterion was crossed.
+    Fails,
+    /// No criterion crossed, but the seal was open (a waived lift-off) or held by the fluid
+    /// pressure alone at some time.
+    Open,
+    /// No criterion crossed, and the seal held by its squeeze throughout.
+    Survives,
+}
+
+/// The same life at the neighbouring fidelity level (docs/model.md §4.1): the figures a summary
+/// sets beside its own, and the outcome that decides whether the model decides the verdict.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LevelBand {
+    /// The neighbouring level.
+    pub level: Fidelity,
+    pub failure: Option<FailureEvent>,
+    /// When the seal was first open there \[s\].
+    pub open_since: Option<f64>,
+    /// Its leaked volume \[m³\], and whether that is a lower bound.
+    pub leaked_volume: f64,
+    pub leaked_volume_is_lower_bound: bool,
+    /// Its highest leak rate \[m³/s\].
+    pub maximum_leak_rate: f64,
+    pub final_state: SealState,
+}
+
+impl LevelBand {
+    /// The band of `result`, a run of the same problem at `level`.
+    pub fn of(level: Fidelity, result: &LifeResult) -> Self {
+        LevelBand {
+            level,
+            failure: result.failure,
+            open_since: result.open_since(),
+            leaked_volume: result.leaked_volume(),
+            leaked_volume_is_lower_bound: result.leaked_volume_is_lower_bound(),
+            maximum_leak_rate: result.course.max_leak_rate.0,
+            final_state: result.final_state(),
+        }
+    }
+
+    /// The outcome at the neighbouring level.
+    pub fn outcome(&self) -> Outcome {
+        outcome(self.failure, self.open_since)
+    }
+}
+
+fn outcome(failure: Option<FailureEvent>, open_since: Option<f64>) -> Outcome {
+    match (failure, open_since) {
+        (Some(_), _) => Outcome::Fails,
+        (None, Some(_)) => Outcome::Open,
+        (None, None) => Outcome::Survives,
+    }
 }
 
 /// The course of a life run over its internal steps (docs/model.md §10.1): what the summary
@@ -461,6 +522,19 @@ impl LifeResult {
     /// The state at the end of the run.
     pub fn final_state(&self) -> SealState {
         self.rows.last().map_or(SealState::Sealed, |r| r.state)
+    }
+
+    /// The run's outcome (docs/model.md §8.1).
+    pub fn outcome(&self) -> Outcome {
+        outcome(self.failure, self.open_since())
+    }
+
+    /// Whether the model does not decide the verdict: the neighbouring fidelity level gives
+    /// another outcome (docs/model.md §4.1). `false` where the band was not computed.
+    pub fn undecided(&self) -> bool {
+        self.band
+            .as_ref()
+            .is_some_and(|b| b.outcome() != self.outcome())
     }
 
     /// The states in the order the run passed through them, each with the time it began \[s\],
