@@ -149,7 +149,8 @@ impl ScaleMarch {
             return (1.0, 1.0);
         }
         let t = x.ln();
-        if t < LN_X_HI {
+        let t1 = self.t_end();
+        if t < t1 {
             let (l, dl) = self.hermite(t);
             return ((l - t).exp(), dl);
         }
@@ -158,7 +159,7 @@ impl ScaleMarch {
         // one fixed-point step from Φ̃ = Φ1 + c0(x − x1) leaves an error O(b²/(c0²Φ)) < 1e-15.
         let c0 = self.coefficients[0];
         let b = self.coefficients[1] * 4.0 / (PI * PI);
-        let x1 = LN_X_HI.exp();
+        let x1 = t1.exp();
         let phi1 = self.ln_phi[self.ln_phi.len() - 1].exp();
         if !x.is_finite() {
             return (c0, 1.0);
@@ -196,7 +197,7 @@ impl ScaleMarch {
             let c0 = self.coefficients[0];
             let b = self.coefficients[1] * 4.0 / (PI * PI);
             let phi1 = self.ln_phi[last].exp();
-            return LN_X_HI.exp()
+            return self.t_end().exp()
                 + ((phi - phi1) - (b / c0) * ((c0 * phi + b) / (c0 * phi1 + b)).ln()) / c0;
         }
         // the node interval, then bisection on the Hermite cubic (monotone in it)
@@ -212,6 +213,11 @@ impl ScaleMarch {
             }
         }
         (0.5 * (lo + hi)).exp()
+    }
+
+    /// The last node's `t = ln x` (≈ [`LN_X_HI`]): the tail takes over above it.
+    fn t_end(&self) -> f64 {
+        LN_X_LO + (self.ln_phi.len() - 1) as f64 / NODES_PER_UNIT
     }
 
     /// `(L, dL/dt)` at `t` inside the table: cubic Hermite on the nodes' values and slopes.
@@ -280,8 +286,8 @@ mod tests {
         // full contact: Φ = x
         assert_eq!(m.scaled(1e-4), (1.0, 1.0));
         // small load: Φ/x → γ, and across the table's end the tail is continuous
-        let below = m.scaled(LN_X_HI.exp() * (1.0 - 1e-9));
-        let above = m.scaled(LN_X_HI.exp() * (1.0 + 1e-9));
+        let below = m.scaled(m.t_end().exp() * (1.0 - 1e-9));
+        let above = m.scaled(m.t_end().exp() * (1.0 + 1e-9));
         assert!((below.0 / above.0 - 1.0).abs() < 1e-9, "{below:?} {above:?}");
         assert!((below.1 - above.1).abs() < 1e-8, "{below:?} {above:?}");
         let (r, _) = m.scaled(1e30);
