@@ -1079,6 +1079,7 @@ pub fn human_summary(
     out.line("fluid", fluid_line(problem));
     out.line("temperature", temperature_line(&problem.environment));
     out.line("ageing", ageing_line(problem));
+    out.optional("contact area", contact_area_line(problem));
     if let (Some(first), Some(last)) = (result.rows.first(), result.rows.last()) {
         out.line("sealing force", sealing_force_line(&run, first, last));
         out.optional("lowest", lowest_line(&run, first));
@@ -1106,6 +1107,18 @@ pub fn human_summary(
     }
     out.line("result", verdict(problem, result).text);
     out.text
+}
+
+/// The contact-area relation when it is not the default (`[model] area`, docs/model.md §2).
+fn contact_area_line(problem: &LifeProblem) -> Option<String> {
+    match problem.contact.area {
+        crate::contact::AreaModel::Persson => None,
+        crate::contact::AreaModel::Corrected => Some(
+            "corrected (Wang & Müser 2017; the default \"persson\" gives a smaller contact area \
+             and a larger leak)"
+                .to_owned(),
+        ),
+    }
 }
 
 /// The terminal summary being written: labelled lines.

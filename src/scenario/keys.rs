@@ -1354,7 +1354,9 @@ pub(super) const TABLES: &[Table] = &[
     },
     Table {
         path: "model",
-        prose: "Settings of the contact theory of the analytic levels (critical junction, effective medium): the percolation threshold, the leak shape factor, the γ of the mean-separation kernel and the contact-area relation.",
+        prose: "Settings of the contact theory of the analytic levels (critical junction, \
+                effective medium): the percolation threshold, the leak's shape factor, the γ of \
+                the mean-separation kernel and the contact-area relation.",
         keys: MODEL,
     },
     Table {

@@ -288,7 +288,10 @@ mod tests {
         // small load: Φ/x → γ, and across the table's end the tail is continuous
         let below = m.scaled(m.t_end().exp() * (1.0 - 1e-9));
         let above = m.scaled(m.t_end().exp() * (1.0 + 1e-9));
-        assert!((below.0 / above.0 - 1.0).abs() < 1e-9, "{below:?} {above:?}");
+        assert!(
+            (below.0 / above.0 - 1.0).abs() < 1e-9,
+            "{below:?} {above:?}"
+        );
         assert!((below.1 - above.1).abs() < 1e-8, "{below:?} {above:?}");
         let (r, _) = m.scaled(1e30);
         assert!((r / (5.0 / 9.0) - 1.0).abs() < 1e-12);
