@@ -219,6 +219,10 @@ pub struct Summary {
     pub loading: String,
     /// `critical-junction` (contact table) or `exact`.
     pub fidelity: String,
+    /// The contact-area relation when it is not the default: `corrected` (docs/model.md §2;
+    /// absent for Persson's).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub contact_area: Option<&'static str>,
     /// `fails`, `open` (no criterion crossed, but the seal was open or held by the fluid
     /// pressure alone: a waived lift-off) or `survives` (docs/model.md §8.1).
     pub verdict: &'static str,
@@ -725,6 +729,8 @@ impl Summary {
             seal: seal_kind(&problem.geometry).to_owned(),
             loading: loading_name(problem.loading).to_owned(),
             fidelity: problem.fidelity.name().to_owned(),
+            contact_area: (problem.contact.area != crate::contact::AreaModel::default())
+                .then(|| problem.contact.area.name()),
             verdict: verdict(problem, result).kind.as_str(),
             verdict_text: verdict(problem, result).text,
             final_state: result.final_state().as_str(),

@@ -61,8 +61,9 @@ fn a_corrected_area_has_more_contact_and_less_leak_on_the_paper_scenario() {
 
 #[test]
 fn the_run_summary_names_a_corrected_area_and_only_then() {
-    let (code, stdout, _, _, _) = run_text(&paper_with("[model]\narea = \"corrected\"\n"));
+    let (code, stdout, _, _, json) = run_text(&paper_with("[model]\narea = \"corrected\"\n"));
     assert_eq!(code, Some(0));
+    assert!(json.unwrap().contains("\"contact_area\": \"corrected\""));
     let line = stdout
         .lines()
         .find(|l| l.starts_with("contact area"))
@@ -71,9 +72,10 @@ fn the_run_summary_names_a_corrected_area_and_only_then() {
         line.contains("corrected") && line.contains("Wang & Müser"),
         "{line}"
     );
-    let (code, stdout, _, _, _) = run_text(&paper_with(""));
+    let (code, stdout, _, _, json) = run_text(&paper_with(""));
     assert_eq!(code, Some(0));
     assert!(!stdout.contains("contact area"), "{stdout}");
+    assert!(!json.unwrap().contains("contact_area"));
 }
 
 #[test]
