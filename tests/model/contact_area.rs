@@ -55,10 +55,11 @@ fn corrected_area_reproduces_the_gfmd_reference_table() {
         let a_p = persson.area_fraction(zeta1, s);
         let a_c = corrected.area_fraction(zeta1, s);
         let a_yp = yang_persson.area(m3 / (s * s));
-        // the same relations, evaluated independently (a coarser implicit march): within 1.5 %
+        // the same relations, evaluated independently (an implicit march of 500 steps, given to
+        // 3–4 digits): within 0.3 % (measured ≤ 0.07 %)
         for (ours, theirs, what) in [(a_p, p01, "Persson"), (a_c, wm, "WM"), (a_yp, yp, "YP")] {
             assert!(
-                (ours / theirs - 1.0).abs() < 0.015,
+                (ours / theirs - 1.0).abs() < 0.003,
                 "{what} at p/E* = {s}: {ours} vs {theirs}"
             );
         }
@@ -71,7 +72,8 @@ fn corrected_area_reproduces_the_gfmd_reference_table() {
         worst[0] = worst[0].max((a_p / gfmd - 1.0).abs());
         worst[1] = worst[1].max((a_c / gfmd - 1.0).abs());
     }
-    // against GFMD: Persson's area is up to 33 % low, the corrected within 11 % at every load
+    // against GFMD: Persson's area is up to 33 % low, the corrected within 10.1 % at every load
+    // (0.899 at the smallest load, 0.94–1.05 above)
     assert!(worst[0] > 0.3, "{worst:?}");
     assert!(worst[1] < 0.11, "{worst:?}");
 }
