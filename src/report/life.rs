@@ -1121,7 +1121,7 @@ fn contact_area_line(problem: &LifeProblem) -> Option<String> {
         crate::contact::AreaModel::Persson => None,
         crate::contact::AreaModel::Corrected => Some(
             "corrected (Wang & Müser 2017; the default \"persson\" gives a smaller contact area \
-             and a larger leak)"
+             and, mostly, a larger leak)"
                 .to_owned(),
         ),
     }
