@@ -145,7 +145,7 @@ impl ScaleMarch {
     /// `(Φ(x)/x, d ln Φ/d ln x)` at `x = M3/s² ≥ 0` (both 1 in full contact, → γ and 1 at
     /// small load). `x = ∞` (s² underflowed) gives the limit `(γ, 1)`.
     pub fn scaled(&self, x: f64) -> (f64, f64) {
-        if !(x > 0.0) || x.ln() <= LN_X_LO {
+        if x.is_nan() || x <= 0.0 || x.ln() <= LN_X_LO {
             return (1.0, 1.0);
         }
         let t = x.ln();
@@ -177,7 +177,7 @@ impl ScaleMarch {
 
     /// `A/A0 = erf(1/√(π Φ(x)))` at `x = M3/s²`.
     pub fn area(&self, x: f64) -> f64 {
-        if !(x > 0.0) {
+        if x.is_nan() || x <= 0.0 {
             return 1.0;
         }
         area_of(self.phi(x))
@@ -185,7 +185,7 @@ impl ScaleMarch {
 
     /// The `x` at which `Φ(x) = phi` (Φ increases strictly: dΦ/dx = f > 0).
     pub fn inverse(&self, phi: f64) -> f64 {
-        if !(phi > 0.0) {
+        if phi.is_nan() || phi <= 0.0 {
             return 0.0;
         }
         let lp = phi.ln();
@@ -243,7 +243,7 @@ impl ScaleMarch {
 
 /// `A = erf(1/√(π Φ))` (1 at Φ = 0).
 fn area_of(phi: f64) -> f64 {
-    if !(phi > 0.0) {
+    if phi.is_nan() || phi <= 0.0 {
         return 1.0;
     }
     erf(1.0 / (PI * phi).sqrt())
