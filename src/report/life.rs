@@ -219,6 +219,10 @@ pub struct Summary {
     pub loading: String,
     /// `critical-junction` (contact table) or `exact`.
     pub fidelity: String,
+    /// The contact-area relation when it is not the default: `corrected` (docs/model.md §2;
+    /// absent for Persson's).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub contact_area: Option<&'static str>,
     /// `fails`, `open` (no criterion crossed, but the seal was open or held by the fluid
     /// pressure alone: a waived lift-off) or `survives` (docs/model.md §8.1).
     pub verdict: &'static str,
@@ -761,6 +765,8 @@ impl Summary {
             seal: seal_kind(&problem.geometry).to_owned(),
             loading: loading_name(problem.loading).to_owned(),
             fidelity: problem.fidelity.name().to_owned(),
+            contact_area: (problem.contact.area != crate::contact::AreaModel::default())
+                .then(|| problem.contact.area.name()),
             verdict: verdict(problem, result).kind.as_str(),
             verdict_text: verdict(problem, result).text,
             level_band: BandSummary::new(result),
@@ -1174,6 +1180,7 @@ pub fn human_summary(
     out.line("fluid", fluid_line(problem));
     out.line("temperature", temperature_line(&problem.environment));
     out.line("ageing", ageing_line(problem));
+    out.optional("contact area", contact_area_line(problem));
     if let (Some(first), Some(last)) = (result.rows.first(), result.rows.last()) {
         out.line("sealing force", sealing_force_line(&run, first, last));
         out.optional("lowest", lowest_line(&run, first));
@@ -1204,6 +1211,18 @@ pub fn human_summary(
     }
     out.line("result", verdict(problem, result).text);
     out.text
+}
+
+/// The contact-area relation when it is not the default (`[model] area`, docs/model.md §2).
+fn contact_area_line(problem: &LifeProblem) -> Option<String> {
+    match problem.contact.area {
+        crate::contact::AreaModel::Persson => None,
+        crate::contact::AreaModel::Corrected => Some(
+            "corrected (Wang & Müser 2017; the default \"persson\" gives a smaller contact area \
+             and, mostly, a larger leak)"
+                .to_owned(),
+        ),
+    }
 }
 
 /// The terminal summary being written: labelled lines.

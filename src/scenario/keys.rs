@@ -901,6 +901,14 @@ const MODEL: &[Key] = &[
         Literal("0.4", ""),
         "γ of the mean-separation kernel",
     ),
+    key(
+        "area",
+        Choice(&["persson", "corrected"]),
+        Literal("\"persson\"", ""),
+        "the contact area A(ζ)/A0: `\"persson\"` (Persson 2001, κ = √(8/π) ≈ 1.60: the smaller \
+         area, so the larger leak) or `\"corrected\"` (Wang & Müser 2017, κ ≈ 2.14, within 10 % \
+         of the numerical level's area; docs/model.md §2, docs/src/validation.md)",
+    ),
 ];
 
 const ENVIRONMENT: &[Key] = &[
@@ -1354,7 +1362,9 @@ pub(super) const TABLES: &[Table] = &[
     },
     Table {
         path: "model",
-        prose: "Settings of the critical-junction theory.",
+        prose: "Settings of the contact theory of the analytic levels (critical junction, \
+                effective medium): the percolation threshold, the leak's shape factor, the γ of \
+                the mean-separation kernel and the contact-area relation.",
         keys: MODEL,
     },
     Table {

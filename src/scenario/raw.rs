@@ -421,4 +421,6 @@ pub(super) struct RawModel {
     pub percolation_threshold: Option<Quantity>,
     pub shape_factor: Option<Quantity>,
     pub gamma: Option<Quantity>,
+    /// `"persson"` (default) or `"corrected"` (docs/model.md §2).
+    pub area: Option<Spanned<String>>,
 }

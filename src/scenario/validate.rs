@@ -10,7 +10,7 @@ use super::psd;
 use super::raw::{
     Quantity, RawFluid, RawModel, RawNumerical, RawQuantity, RawScenario, RawSurface,
 };
-use crate::contact::ContactSettings;
+use crate::contact::{AreaModel, ContactSettings};
 use crate::fluid::{Fluid, GasService, LibraryFluid, MINERAL_OIL_EXPANSION, ViscosityLaw, Walther};
 use crate::leak::{FlatSeal, StaticProblem};
 use crate::material::Material;
@@ -1474,12 +1474,33 @@ impl Source<'_> {
             gamma: self
                 .optional(raw.gamma.as_ref(), &GAMMA)?
                 .unwrap_or(defaults.gamma),
+            area: self.area_model(raw.area.as_ref())?,
             quadrature: Default::default(),
         };
         let shape_factor = self
             .optional(raw.shape_factor.as_ref(), &SHAPE_FACTOR)?
             .unwrap_or(DEFAULT_SHAPE_FACTOR);
         Ok((contact, shape_factor))
+    }
+
+    /// `[model] area` (docs/model.md §2): `"persson"` (the default) or `"corrected"`.
+    fn area_model(&self, raw: Option<&Spanned<String>>) -> Result<AreaModel, ScenarioError> {
+        let Some(area) = raw else {
+            return Ok(AreaModel::default());
+        };
+        match area.get_ref().as_str() {
+            "persson" => Ok(AreaModel::Persson),
+            "corrected" => Ok(AreaModel::Corrected),
+            other => Err(self.error(
+                area.span(),
+                "model.area",
+                format!(
+                    "must be \"persson\" (Persson 2001, the default: the smaller contact area, \
+                     so the larger leak) or \"corrected\" (Wang & Müser 2017's scale march, \
+                     closer to boundary-element contact areas), got {other:?}"
+                ),
+            )),
+        }
     }
 
     /// `[groove_surface]`: the groove bottom's surface of a groove-seated ring, in the keys of
