@@ -423,7 +423,14 @@ impl Source<'_> {
                 "thermal_expansion",
             ),
         )?;
-        let service = self.service(raw, &material, replacement.is_some(), &fluid, &environment)?;
+        let service = self.service(
+            raw,
+            &material,
+            replacement.is_some(),
+            &fluid,
+            &environment,
+            &seal.geometry,
+        )?;
         let (permeation, permeation_note) = permeation(&material, &fluid, &seal);
         let life = LifeProblem {
             material: material.clone(),
@@ -543,10 +550,26 @@ impl Source<'_> {
         replaced: bool,
         fluid: &Fluid,
         environment: &crate::material::TemperatureHistory,
+        geometry: &SealGeometry,
     ) -> Result<Service, ScenarioError> {
         let (ageing, ageing_source) =
             self.scenario_ageing(raw.ageing.as_ref(), material, replaced)?;
-        let failure = self.failure(raw.failure.as_ref(), fluid, environment)?;
+        let motion = self.motion(raw.motion.as_ref())?;
+        let failure = self.failure(
+            raw.failure.as_ref(),
+            fluid,
+            environment,
+            &super::life::FailureContext {
+                low_temperature_limit: material.low_temperature_limit(),
+                moving: motion.is_some(),
+                cooling_time: match geometry {
+                    SealGeometry::ORing { cross_section, .. } => {
+                        thermal_settling_time(*cross_section)
+                    }
+                    SealGeometry::Flat { .. } => 0.0,
+                },
+            },
+        )?;
         let (time, fidelity) = self.simulation(raw.simulation.as_ref())?;
         self.cycle_budget(
             raw.simulation.as_ref(),
@@ -557,7 +580,6 @@ impl Source<'_> {
         let clogging_tolerance = self.clogging_tolerance(raw.simulation.as_ref())?;
         let contamination = self.contamination(raw.contamination.as_ref(), clogging_tolerance)?;
         let numerical = self.numerical(raw.numerical.as_ref())?;
-        let motion = self.motion(raw.motion.as_ref())?;
         if fluid.gas.is_some() {
             self.liquid_only_tables(raw)?;
         }

@@ -184,6 +184,34 @@ impl TemperatureHistory {
         self.points.iter().map(|p| p.0)
     }
 
+    /// The coldest temperature over `[a, b]` \[K\] and its first time \[s\]: the table's
+    /// points and the ends exactly; with cycles, each cycle's period split into eighths (where
+    /// the sum is smooth) and the coldest of those points refined by golden-section search on
+    /// its two neighbouring pieces.
+    pub fn coldest(&self, a: f64, b: f64) -> (f64, f64) {
+        let points = self.breakpoints(a, b.max(a));
+        let mut best = (self.at(a), a);
+        for &t in &points {
+            let y = self.at(t);
+            if y < best.0 {
+                best = (y, t);
+            }
+        }
+        if self.shortest_period().is_some() {
+            let k = points.partition_point(|&t| t < best.1);
+            let lo = points[k.saturating_sub(1)];
+            let hi = points[(k + 1).min(points.len() - 1)];
+            if hi > lo {
+                let t = sealsim_math::roots::golden_section(|t| self.at(t), lo, hi, 1e-9 * (hi - lo));
+                let y = self.at(t);
+                if y < best.0 {
+                    best = (y, t);
+                }
+            }
+        }
+        best
+    }
+
     /// Lowest and highest temperature the history can reach \[K\] (bounds, for warnings).
     pub fn range(&self) -> (f64, f64) {
         let amp: f64 = self.cycles.iter().map(|c| c.amplitude.abs()).sum();

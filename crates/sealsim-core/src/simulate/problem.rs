@@ -239,11 +239,16 @@ impl LifeProblem {
     }
 
     /// Whether any criterion can end the life: one of `[failure]`'s, the extrusion check of a
-    /// groove-seated ring, or the shutdown check of an O-ring under displacement loading.
+    /// groove-seated ring, the shutdown check of an O-ring under displacement loading, or the
+    /// cold limit where the temperature history can reach below it.
     pub fn can_fail(&self) -> bool {
         !self.failure.is_empty()
             || (self.failure.extrusion && self.gland.is_some())
             || self.has_shutdown_check()
+            || self
+                .failure
+                .low_temperature
+                .is_some_and(|c| self.environment.range().0 < c.threshold())
     }
 
     /// Whether the shutdown check applies (docs/model.md §8.2): an O-ring under displacement
@@ -406,6 +411,21 @@ impl LifeResult {
                 self.rows
                     .iter()
                     .find(|r| r.shutdown.is_some_and(|s| !s.holds))
+                    .map(|r| r.time)
+            })
+    }
+
+    /// When the rubber first went colder than the cold limit `threshold` \[K\] (docs/model.md
+    /// §8.3): the located failure time when `low_temperature` is the run's failure, else the
+    /// first output time (`None`: never).
+    pub fn cold_limit_crossed(&self, threshold: f64) -> Option<f64> {
+        self.failure
+            .filter(|f| f.mode == super::FailureMode::LowTemperature)
+            .map(|f| f.time)
+            .or_else(|| {
+                self.rows
+                    .iter()
+                    .find(|r| r.temperature < threshold)
                     .map(|r| r.time)
             })
     }
