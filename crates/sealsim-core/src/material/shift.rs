@@ -212,6 +212,38 @@ impl TemperatureHistory {
         best
     }
 
+    /// The first time in `[a, b]` at which T(t) < `threshold` \[s\] (`None`: never), by
+    /// bisection on T(t) within the first piece between breakpoints that goes below it (a
+    /// table's piece is linear: its end decides; with cycles its coldest point, found by
+    /// golden-section search, does).
+    pub fn first_below(&self, threshold: f64, a: f64, b: f64) -> Option<f64> {
+        if self.at(a) < threshold {
+            return Some(a);
+        }
+        let cycles = self.shortest_period().is_some();
+        let points = self.breakpoints(a, b.max(a));
+        points.windows(2).find_map(|w| {
+            let (lo, hi) = (w[0], w[1]);
+            let cold = if cycles {
+                sealsim_math::roots::golden_section(|t| self.at(t), lo, hi, 1e-9 * (hi - lo))
+            } else {
+                hi
+            };
+            let end = if self.at(hi) < threshold { hi } else { cold };
+            (self.at(end) < threshold).then(|| {
+                // invariant: T(lo) ≥ threshold > T(end)
+                let (_, t) = sealsim_math::roots::bisect(
+                    lo,
+                    end,
+                    200,
+                    sealsim_math::roots::to_the_last_bit,
+                    |t| self.at(t) >= threshold,
+                );
+                t
+            })
+        })
+    }
+
     /// Lowest and highest temperature the history can reach \[K\] (bounds, for warnings).
     pub fn range(&self) -> (f64, f64) {
         let amp: f64 = self.cycles.iter().map(|c| c.amplitude.abs()).sum();

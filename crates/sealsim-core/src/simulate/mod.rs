@@ -1373,6 +1373,24 @@ impl Snapshot {
     }
 }
 
+impl LifeProblem {
+    /// When the rubber first went colder than the cold limit (docs/model.md §8.3) \[s\]: the
+    /// located failure time when `low_temperature` is `result`'s failure, else the first time
+    /// the temperature history goes below `T10 − margin` within the run (`None`: never, or
+    /// no cold limit).
+    pub fn cold_limit_crossed(&self, result: &LifeResult) -> Option<f64> {
+        let limit = self.failure.low_temperature?;
+        result
+            .failure
+            .filter(|f| f.mode == FailureMode::LowTemperature)
+            .map(|f| f.time)
+            .or_else(|| {
+                self.environment
+                    .first_below(limit.threshold(), 0.0, self.time.duration)
+            })
+    }
+}
+
 /// Runs a life problem (convenience wrapper around [`Simulator`]).
 pub fn simulate(problem: &LifeProblem) -> LifeResult {
     Simulator::new(problem).run()

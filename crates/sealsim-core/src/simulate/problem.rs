@@ -415,21 +415,6 @@ impl LifeResult {
             })
     }
 
-    /// When the rubber first went colder than the cold limit `threshold` \[K\] (docs/model.md
-    /// §8.3): the located failure time when `low_temperature` is the run's failure, else the
-    /// first output time (`None`: never).
-    pub fn cold_limit_crossed(&self, threshold: f64) -> Option<f64> {
-        self.failure
-            .filter(|f| f.mode == super::FailureMode::LowTemperature)
-            .map(|f| f.time)
-            .or_else(|| {
-                self.rows
-                    .iter()
-                    .find(|r| r.temperature < threshold)
-                    .map(|r| r.time)
-            })
-    }
-
     /// The row where `key` is least (the first, on a tie).
     fn least_by(&self, key: impl Fn(&HistoryRow) -> f64) -> Option<&HistoryRow> {
         self.rows
