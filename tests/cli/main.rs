@@ -15,6 +15,7 @@ mod support;
 
 mod ageing_fit;
 mod callout;
+mod cold;
 mod engineering_units;
 mod figures;
 mod fit;
