@@ -1404,7 +1404,10 @@ fn cold_limit_line(run: &SummaryRun) -> Option<String> {
             let crossed = match p.cold_limit_crossed(run.result) {
                 None => format!(
                     "holds ({} K above it)",
-                    human(p.environment.coldest(0.0, p.time.duration).0 - c.threshold(), 3)
+                    human(
+                        p.environment.coldest(0.0, p.time.duration).0 - c.threshold(),
+                        3
+                    )
                 ),
                 Some(t) if failed || run.result.failure.is_none() => {
                     format!("colder {}", at_time(t).replacen("at ", "from ", 1))

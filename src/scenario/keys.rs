@@ -1044,7 +1044,11 @@ const FAILURE: &[Key] = &[
     key(
         "low_temperature_margin",
         Quantity(life::LOW_TEMPERATURE_MARGIN),
-        Derived("\"5 K\" (static: 10 °F below TR-10, Parker, rounded down); \"0 K\" with [motion]"),
+        LiteralWhere(
+            "\"0 K\"",
+            "with [motion]; \"5 K\" for a static seal (docs/model.md §8.3)",
+            "motion",
+        ),
         "how far below T10 the seal is still taken to hold (a temperature difference: \"9 F\" \
          = 5 K)",
     ),

@@ -1669,8 +1669,7 @@ squeeze = 0.2
                 shutdown: Some(crate::simulate::Shutdown {
                     temperature: 296.15,
                     pressure_difference: 0.0,
-                    // d²/a of the 3.53 mm cord
-                    cooling_time: 3.53e-3 * 3.53e-3 / 1e-7,
+                    cooling_time: s.life.failure.shutdown.map_or(0.0, |x| x.cooling_time),
                 }),
                 low_temperature: Some(crate::simulate::ColdLimit {
                     limit: s.life.material.low_temperature_limit().unwrap(),
@@ -1678,6 +1677,12 @@ squeeze = 0.2
                 }),
                 stop_at_failure: false,
             }
+        );
+        // the shutdown's cool-down is d²/a of the 3.53 mm cord (docs/model.md §5.2, §8.2)
+        let cooling = s.life.failure.shutdown.map_or(0.0, |x| x.cooling_time);
+        assert!(
+            (cooling / (3.53e-3 * 3.53e-3 / 1e-7) - 1.0).abs() < 1e-12,
+            "{cooling}"
         );
         // the cold limit: waived, or with its own margin in any temperature-difference unit
         let waived = load(&with("[failure]\nlow_temperature = false\n")).unwrap();
@@ -1693,9 +1698,12 @@ squeeze = 0.2
         let e = error(&with(
             "[failure]\nlow_temperature = false\nlow_temperature_margin = \"5 K\"\n",
         ));
-        assert!(e.contains(":20: failure.low_temperature_margin: a margin for a cold limit"), "{e}");
+        assert!(
+            e.contains(":19: failure.low_temperature_margin: a margin for a cold limit"),
+            "{e}"
+        );
         let e = error(&with("[failure]\nlow_temperature_margin = \"-5 K\"\n"));
-        assert!(e.contains(":19: failure.low_temperature_margin"), "{e}");
+        assert!(e.contains(":18: failure.low_temperature_margin"), "{e}");
         // the extrusion, lift-off and shutdown checks are on unless waived
         let off = load(&with(
             "[failure]\nextrusion = false\nlift_off = false\nlost_interference = false\n",

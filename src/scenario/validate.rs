@@ -959,7 +959,8 @@ impl Source<'_> {
     /// A ring fitted at or below its compound's low-temperature limit T10 (docs/model.md §5.2):
     /// below it the rubber is leathery to glassy, it cannot be stretched and seated without
     /// damage, and a fitter warms it first. A stated `installation_temperature` there is refused;
-    /// without one the ring is taken as fitted at the environment's first temperature, and that
+    /// without one the ring is taken as fitted at 23 °C in a gland, else at the environment's first
+    /// temperature, and that
     /// is flagged (the returned warning): its squeeze is applied to a glassy ring.
     fn fitting_temperature(
         &self,
@@ -1004,11 +1005,16 @@ impl Source<'_> {
                 ),
             ));
         }
+        let taken = if seal.gland.is_some() {
+            "the gland's default fitting temperature"
+        } else {
+            "the environment's first temperature"
+        };
         Ok(Some(self.error(
             span,
             key,
             format!(
-                "the ring is taken as fitted at the environment's first temperature, {}, at or \
+                "the ring is taken as fitted at {taken}, {}, at or \
                  below its compound's low-temperature limit T10 = {}: its squeeze is applied to a \
                  leathery to glassy ring (a far higher force than a ring fitted warm and cooled); \
                  a ring fitted warm: installation_temperature = \"{warm}\" in [seal] (the \

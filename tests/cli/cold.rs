@@ -117,10 +117,7 @@ fn n4(temperature: &str) -> String {
     edited(
         &shipped("cold-night-nbr.toml"),
         &[
-            (
-                "history = ",
-                &format!("temperature = \"{temperature}\""),
-            ),
+            ("history = ", &format!("temperature = \"{temperature}\"")),
             ("lift_off = true", ""),
         ],
     )
@@ -275,17 +272,8 @@ fn the_cold_limit_is_located_where_the_ramp_crosses_it() {
     // with the shutdown check and lift-off waived the cold limit alone ends the night: the
     // history falls linearly from 25 °C at 30 h to −40 °C at 34 h, so it crosses T10 − 5 K at
     // t = 30 h + 4 h (25 − T)/65 exactly
-    let t10 = classes()
-        .into_iter()
-        .find(|c| c.0 == "nbr-70")
-        .unwrap()
-        .1;
-    let (mode, t) = cold_night(
-        "nbr-70",
-        -40.0,
-        "3.16 mm",
-        "lost_interference = false",
-    );
+    let t10 = classes().into_iter().find(|c| c.0 == "nbr-70").unwrap().1;
+    let (mode, t) = cold_night("nbr-70", -40.0, "3.16 mm", "lost_interference = false");
     assert_eq!(mode, "low_temperature");
     // T10 is printed to 4 significant digits (±0.005 K: ±0.9 s on the 4 h ramp)
     let crossing = 30.0 * 3600.0 + 4.0 * 3600.0 * (25.0 - (t10 - 5.0)) / 65.0;

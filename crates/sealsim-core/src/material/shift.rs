@@ -202,7 +202,8 @@ impl TemperatureHistory {
             let lo = points[k.saturating_sub(1)];
             let hi = points[(k + 1).min(points.len() - 1)];
             if hi > lo {
-                let t = sealsim_math::roots::golden_section(|t| self.at(t), lo, hi, 1e-9 * (hi - lo));
+                let t =
+                    sealsim_math::roots::golden_section(|t| self.at(t), lo, hi, 1e-9 * (hi - lo));
                 let y = self.at(t);
                 if y < best.0 {
                     best = (y, t);
@@ -355,6 +356,42 @@ mod tests {
         c1: 8.86,
         c2: 101.6,
     };
+
+    #[test]
+    fn coldest_point_and_first_crossing_are_the_closed_forms() {
+        // a table: 25 °C, down to −40 °C over 4 h from 30 h, held, back up
+        let night = TemperatureHistory::table(vec![
+            (0.0, 298.15),
+            (108_000.0, 298.15),
+            (122_400.0, 233.15),
+            (151_200.0, 233.15),
+            (165_600.0, 298.15),
+        ]);
+        assert_eq!(night.coldest(0.0, 432_000.0), (233.15, 122_400.0));
+        // before the cold: the end of the window
+        assert_eq!(night.coldest(0.0, 115_200.0).1, 115_200.0);
+        // T(t) < 243 K first at 108000 + 14400 (298.15 − 243)/65 s on the ramp
+        let t = night.first_below(243.0, 0.0, 432_000.0).unwrap();
+        let exact = 108_000.0 + 14_400.0 * (298.15 - 243.0) / 65.0;
+        assert!((t - exact).abs() < 1e-9 * exact, "{t} vs {exact}");
+        assert_eq!(night.first_below(233.0, 0.0, 432_000.0), None);
+        assert_eq!(night.first_below(300.0, 0.0, 432_000.0), Some(0.0));
+        // a daily cycle of 10 K around 0 °C, zero crossing upwards at 6 h: coldest at 0 h and
+        // 24 h, −10 °C; from 7 h (warm) below −5 °C first where the sine falls below −1/2
+        let day = 86_400.0;
+        let cycled = TemperatureHistory::constant(273.15).with_cycle(Cycle {
+            amplitude: 10.0,
+            period: day,
+            phase: 6.0 * 3600.0,
+        });
+        let (cold, when) = cycled.coldest(3600.0, 2.0 * day);
+        assert!((cold - 263.15).abs() < 1e-9, "{cold}");
+        assert!((when - day).abs() < 1.0, "{when}");
+        // sin(2π(t − 6 h)/P) < −1/2 first at t − 6 h = 7P/12, t = 20 h
+        let t = cycled.first_below(268.15, 7.0 * 3600.0, 2.0 * day).unwrap();
+        assert!((t - 20.0 * 3600.0).abs() < 1e-6, "{t}");
+        assert_eq!(cycled.first_below(263.0, 7.0 * 3600.0, 2.0 * day), None);
+    }
 
     #[test]
     fn wlf_sign_reference_and_frozen_limit() {

@@ -673,12 +673,9 @@ impl<'a> Simulator<'a> {
             let d_load = p.geometry.load_variable(thermal, to) - relaxation.strain();
             relaxation.step(prony, 0.0, d_load);
         }
-        let profile = p.geometry.profile(
-            relaxation.stress(prony),
-            p.installed_modulus(),
-            thermal,
-            to,
-        );
+        let profile =
+            p.geometry
+                .profile(relaxation.stress(prony), p.installed_modulus(), thermal, to);
         Some(profile.peak())
     }
 
