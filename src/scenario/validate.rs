@@ -409,10 +409,11 @@ impl Source<'_> {
             None => (ContactSettings::default(), DEFAULT_SHAPE_FACTOR),
         };
         let environment = self.environment(raw.environment.as_ref(), &material)?;
-        // the static problem's viscosity is the law's at the installation temperature
-        let fluid = fluid.at(environment.at(0.0));
         let cold_fitting = self.fitting_temperature(raw, &seal, &material, &environment)?;
         let environment = settling_environment(environment, &seal);
+        // the static problem's viscosity is the law's at the installation (fitting) temperature,
+        // the first row's of a run
+        let fluid = fluid.at(environment.at(0.0));
         let thermal_strain = self.thermal_strain(
             &seal,
             &material,

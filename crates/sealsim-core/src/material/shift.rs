@@ -222,9 +222,22 @@ impl TemperatureHistory {
             return Some(a);
         }
         let cycles = self.shortest_period().is_some();
+        // a bound on the slope of the cycles' sum, Σ A 2π/P: with the table's own (linear
+        // within a piece) it keeps a piece whose ends are far enough above the threshold above
+        // it throughout, and spares its search
+        let cycle_slope: f64 = self
+            .cycles
+            .iter()
+            .map(|c| c.amplitude.abs() * std::f64::consts::TAU / c.period)
+            .sum();
         let points = self.breakpoints(a, b.max(a));
         points.windows(2).find_map(|w| {
             let (lo, hi) = (w[0], w[1]);
+            let (y_lo, y_hi) = (self.at(lo), self.at(hi));
+            let slope = cycle_slope + ((self.base(hi) - self.base(lo)) / (hi - lo)).abs();
+            if cycles && 0.5 * (y_lo + y_hi) - 0.5 * slope * (hi - lo) >= threshold {
+                return None;
+            }
             let cold = if cycles {
                 sealsim_math::roots::golden_section(|t| self.at(t), lo, hi, 1e-9 * (hi - lo))
             } else {
