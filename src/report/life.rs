@@ -281,6 +281,14 @@ pub struct Summary {
     /// The shutdown check (docs/model.md §8.2), where it applies.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub shutdown: Option<ShutdownSummary>,
+    /// The coldest temperature over the run \[K\] and its first time \[s\].
+    #[serde(rename = "coldest_temperature_K")]
+    pub coldest_temperature_k: f64,
+    pub coldest_temperature_time_s: f64,
+    /// The cold limit (docs/model.md §8.3), where it applies (a compound with a T10, not
+    /// waived).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub low_temperature: Option<ColdLimitSummary>,
     /// Length of the run \[s\].
     pub duration_s: f64,
     /// Open fraction of the critical channels at the end of the run (1 without
@@ -358,6 +366,23 @@ pub struct ShutdownSummary {
     /// When the interference was lost \[s\] (the located failure time when it is the failure;
     /// else the first output time), `null` when it held throughout.
     pub lost_s: Option<f64>,
+}
+
+/// The `low_temperature` object of the summary (docs/model.md §8.3).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ColdLimitSummary {
+    /// The compound's T10 \[K\].
+    #[serde(rename = "limit_K")]
+    pub limit_k: f64,
+    /// The margin below T10 the seal is taken to hold to \[K\].
+    #[serde(rename = "margin_K")]
+    pub margin_k: f64,
+    /// T10 − margin \[K\]: colder fails.
+    #[serde(rename = "threshold_K")]
+    pub threshold_k: f64,
+    /// When the rubber first went colder than the threshold \[s\] (the located failure time
+    /// when it is the failure; else the first output time), `null` when it never did.
+    pub crossed_s: Option<f64>,
 }
 
 /// The `gas` object of the summary: the throughput (pV flow at the gas temperature) that goes
@@ -810,6 +835,14 @@ impl Summary {
                 }),
                 _ => None,
             },
+            coldest_temperature_k: problem.environment.coldest(0.0, problem.time.duration).0,
+            coldest_temperature_time_s: problem.environment.coldest(0.0, problem.time.duration).1,
+            low_temperature: problem.failure.low_temperature.map(|c| ColdLimitSummary {
+                limit_k: c.limit,
+                margin_k: c.margin,
+                threshold_k: c.threshold(),
+                crossed_s: problem.cold_limit_crossed(result),
+            }),
             duration_s: problem.time.duration,
             final_open_fraction: result.final_open_fraction(),
             warnings: records(&result.findings),
@@ -862,6 +895,11 @@ impl Summary {
             ),
             ("duration_s", self.duration_s),
             ("final_open_fraction", self.final_open_fraction),
+            ("coldest_temperature_K", self.coldest_temperature_k),
+            (
+                "coldest_temperature_time_s",
+                self.coldest_temperature_time_s,
+            ),
             (
                 "retained_force_reference_s",
                 self.retained_force_reference_s,
@@ -1187,6 +1225,7 @@ pub fn human_summary(
         out.optional("set", set_line(&run, last));
         out.optional("shutdown", shutdown_line(&run, last));
     }
+    out.optional("cold limit", cold_limit_line(&run));
     out.line("state", state_line(result));
     out.line("leak rate", leak_rate_line(&run));
     if let Some((q, t)) = result.maximum_leak_rate()
@@ -1440,13 +1479,69 @@ fn shutdown_line(run: &SummaryRun, last: &crate::simulate::HistoryRow) -> Option
             }
         },
     );
+    // below T10 the ring was also cooled through its hereditary response (§8.2)
+    let glassy = s.glassy_peak_pressure.map_or(String::new(), |peak| {
+        format!(
+            "; below T10, cooled from service over {}: contact pressure {} MPa after {}",
+            human_time(shutdown.cooling_time),
+            human(peak / 1e6, 3),
+            run.duration,
+        )
+    });
     Some(format!(
-        "at {} and ΔP = {} MPa: squeeze of the set ring {} % after {}; {lost}",
+        "at {} and ΔP = {} MPa: squeeze of the set ring {} % after {}{glassy}; {lost}",
         celsius(shutdown.temperature),
         human(shutdown.pressure_difference / 1e6, 3),
         human(100.0 * s.remaining_squeeze, 3),
         run.duration,
     ))
+}
+
+/// The cold limit (docs/model.md §8.3): the compound's T10, the margin, the coldest temperature
+/// and whether (and when) the run went colder. Shown where the run goes below T10, or the cold
+/// limit is its failure; the JSON always carries it.
+fn cold_limit_line(run: &SummaryRun) -> Option<String> {
+    let p = run.problem;
+    let t10 = p.material.low_temperature_limit()?;
+    let (coldest, when) = p.environment.coldest(0.0, p.time.duration);
+    let failed = run
+        .result
+        .failure
+        .is_some_and(|f| f.mode == crate::simulate::FailureMode::LowTemperature);
+    if coldest >= t10 && !failed {
+        return None;
+    }
+    let coldest = format!("coldest {} {}", celsius(coldest), at_time(when));
+    Some(match p.failure.low_temperature {
+        None => format!(
+            "T10 = {}, {coldest}; not checked: [failure] low_temperature = false waives it",
+            celsius(t10)
+        ),
+        Some(c) => {
+            let crossed = match p.cold_limit_crossed(run.result) {
+                None => format!(
+                    "holds ({} K above it)",
+                    human(
+                        p.environment.coldest(0.0, p.time.duration).0 - c.threshold(),
+                        3
+                    )
+                ),
+                Some(t) if failed || run.result.failure.is_none() => {
+                    format!("colder {}", at_time(t).replacen("at ", "from ", 1))
+                }
+                Some(t) => format!(
+                    "colder {} (after the run had failed)",
+                    at_time(t).replacen("at ", "from ", 1)
+                ),
+            };
+            format!(
+                "T10 = {} less the margin {} K: holds to {}; {coldest}; {crossed}",
+                celsius(t10),
+                human(c.margin, 3),
+                celsius(c.threshold()),
+            )
+        }
+    })
 }
 
 /// The seal's states in order, with when each began.

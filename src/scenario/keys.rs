@@ -784,7 +784,8 @@ const SEAL: &[Key] = &[
         "installation_temperature",
         Temperature,
         Derived("the environment's temperature at t = 0; 23 °C in a gland"),
-        "O-ring: T_install, the reference of the thermal strain",
+        "O-ring: T_install, the fitting temperature (the ring then settles to the environment over \
+         its thermal time, docs/model.md §5.2) and the reference of the thermal strain",
     ),
     key(
         "installation_time",
@@ -1037,8 +1038,27 @@ const FAILURE: &[Key] = &[
         "minimum_pressure_difference",
         Quantity(life::MINIMUM_PRESSURE_DIFFERENCE),
         Literal("\"0 bar\"", ""),
-        "ΔP_min, the lowest pressure difference the seal must hold at a restart (at most the \
-         service ΔP)",
+        "ΔP_min, the lowest pressure difference the seal must hold at a restart, on its \
+         unenergised squeeze (p_sq > ΔP_min whatever k_e; at most the service ΔP; docs/model.md \
+         §8.2)",
+    ),
+    key(
+        "low_temperature",
+        Bool,
+        Literal("true", ""),
+        "the rubber colder than its compound's T10 less `low_temperature_margin` (docs/model.md \
+         §8.3); a compound without a T10 has no cold limit",
+    ),
+    key(
+        "low_temperature_margin",
+        Quantity(life::LOW_TEMPERATURE_MARGIN),
+        LiteralWhere(
+            "\"0 K\"",
+            "with [motion]; \"5 K\" for a static seal (docs/model.md §8.3)",
+            "motion",
+        ),
+        "how far below T10 the seal is still taken to hold (a temperature difference: \"9 F\" \
+         = 5 K)",
     ),
 ];
 

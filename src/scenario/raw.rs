@@ -335,6 +335,8 @@ pub(super) struct RawFailure {
     pub lost_interference: Option<Spanned<bool>>,
     pub shutdown_temperature: Option<Quantity>,
     pub minimum_pressure_difference: Option<Quantity>,
+    pub low_temperature: Option<Spanned<bool>>,
+    pub low_temperature_margin: Option<Quantity>,
 }
 
 /// A scenario's `[ageing]`: each constant defaults to the material's `[material.ageing]`.

@@ -409,10 +409,11 @@ impl Source<'_> {
             None => (ContactSettings::default(), DEFAULT_SHAPE_FACTOR),
         };
         let environment = self.environment(raw.environment.as_ref(), &material)?;
-        // the static problem's viscosity is the law's at the installation temperature
-        let fluid = fluid.at(environment.at(0.0));
         let cold_fitting = self.fitting_temperature(raw, &seal, &material, &environment)?;
         let environment = settling_environment(environment, &seal);
+        // the static problem's viscosity is the law's at the installation (fitting) temperature,
+        // the first row's of a run
+        let fluid = fluid.at(environment.at(0.0));
         let thermal_strain = self.thermal_strain(
             &seal,
             &material,
@@ -423,7 +424,14 @@ impl Source<'_> {
                 "thermal_expansion",
             ),
         )?;
-        let service = self.service(raw, &material, replacement.is_some(), &fluid, &environment)?;
+        let service = self.service(
+            raw,
+            &material,
+            replacement.is_some(),
+            &fluid,
+            &environment,
+            &seal.geometry,
+        )?;
         let (permeation, permeation_note) = permeation(&material, &fluid, &seal);
         let life = LifeProblem {
             material: material.clone(),
@@ -543,10 +551,26 @@ impl Source<'_> {
         replaced: bool,
         fluid: &Fluid,
         environment: &crate::material::TemperatureHistory,
+        geometry: &SealGeometry,
     ) -> Result<Service, ScenarioError> {
         let (ageing, ageing_source) =
             self.scenario_ageing(raw.ageing.as_ref(), material, replaced)?;
-        let failure = self.failure(raw.failure.as_ref(), fluid, environment)?;
+        let motion = self.motion(raw.motion.as_ref())?;
+        let failure = self.failure(
+            raw.failure.as_ref(),
+            fluid,
+            environment,
+            &super::life::FailureContext {
+                low_temperature_limit: material.low_temperature_limit(),
+                moving: motion.is_some(),
+                cooling_time: match geometry {
+                    SealGeometry::ORing { cross_section, .. } => {
+                        thermal_settling_time(*cross_section)
+                    }
+                    SealGeometry::Flat { .. } => 0.0,
+                },
+            },
+        )?;
         let (time, fidelity) = self.simulation(raw.simulation.as_ref())?;
         self.cycle_budget(
             raw.simulation.as_ref(),
@@ -557,7 +581,6 @@ impl Source<'_> {
         let clogging_tolerance = self.clogging_tolerance(raw.simulation.as_ref())?;
         let contamination = self.contamination(raw.contamination.as_ref(), clogging_tolerance)?;
         let numerical = self.numerical(raw.numerical.as_ref())?;
-        let motion = self.motion(raw.motion.as_ref())?;
         if fluid.gas.is_some() {
             self.liquid_only_tables(raw)?;
         }
@@ -937,7 +960,8 @@ impl Source<'_> {
     /// A ring fitted at or below its compound's low-temperature limit T10 (docs/model.md §5.2):
     /// below it the rubber is leathery to glassy, it cannot be stretched and seated without
     /// damage, and a fitter warms it first. A stated `installation_temperature` there is refused;
-    /// without one the ring is taken as fitted at the environment's first temperature, and that
+    /// without one the ring is taken as fitted at 23 °C in a gland, else at the environment's first
+    /// temperature, and that
     /// is flagged (the returned warning): its squeeze is applied to a glassy ring.
     fn fitting_temperature(
         &self,
@@ -982,11 +1006,16 @@ impl Source<'_> {
                 ),
             ));
         }
+        let taken = if seal.gland.is_some() {
+            "the gland's default fitting temperature"
+        } else {
+            "the environment's first temperature"
+        };
         Ok(Some(self.error(
             span,
             key,
             format!(
-                "the ring is taken as fitted at the environment's first temperature, {}, at or \
+                "the ring is taken as fitted at {taken}, {}, at or \
                  below its compound's low-temperature limit T10 = {}: its squeeze is applied to a \
                  leathery to glassy ring (a far higher force than a ring fitted warm and cooled); \
                  a ring fitted warm: installation_temperature = \"{warm}\" in [seal] (the \

@@ -15,6 +15,7 @@ mod support;
 
 mod ageing_fit;
 mod callout;
+mod cold;
 mod contact_area;
 mod engineering_units;
 mod figures;

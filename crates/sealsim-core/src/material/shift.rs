@@ -184,6 +184,80 @@ impl TemperatureHistory {
         self.points.iter().map(|p| p.0)
     }
 
+    /// The coldest temperature over `[a, b]` \[K\] and its first time \[s\]: the table's
+    /// points and the ends exactly; with cycles, each cycle's period split into eighths (where
+    /// the sum is smooth) and the coldest of those points refined by golden-section search on
+    /// its two neighbouring pieces.
+    pub fn coldest(&self, a: f64, b: f64) -> (f64, f64) {
+        let points = self.breakpoints(a, b.max(a));
+        let mut best = (self.at(a), a);
+        for &t in &points {
+            let y = self.at(t);
+            if y < best.0 {
+                best = (y, t);
+            }
+        }
+        if self.shortest_period().is_some() {
+            let k = points.partition_point(|&t| t < best.1);
+            let lo = points[k.saturating_sub(1)];
+            let hi = points[(k + 1).min(points.len() - 1)];
+            if hi > lo {
+                let t =
+                    sealsim_math::roots::golden_section(|t| self.at(t), lo, hi, 1e-9 * (hi - lo));
+                let y = self.at(t);
+                if y < best.0 {
+                    best = (y, t);
+                }
+            }
+        }
+        best
+    }
+
+    /// The first time in `[a, b]` at which T(t) < `threshold` \[s\] (`None`: never), by
+    /// bisection on T(t) within the first piece between breakpoints that goes below it (a
+    /// table's piece is linear: its end decides; with cycles its coldest point, found by
+    /// golden-section search, does).
+    pub fn first_below(&self, threshold: f64, a: f64, b: f64) -> Option<f64> {
+        if self.at(a) < threshold {
+            return Some(a);
+        }
+        let cycles = self.shortest_period().is_some();
+        // a bound on the slope of the cycles' sum, Σ A 2π/P: with the table's own (linear
+        // within a piece) it keeps a piece whose ends are far enough above the threshold above
+        // it throughout, and spares its search
+        let cycle_slope: f64 = self
+            .cycles
+            .iter()
+            .map(|c| c.amplitude.abs() * std::f64::consts::TAU / c.period)
+            .sum();
+        let points = self.breakpoints(a, b.max(a));
+        points.windows(2).find_map(|w| {
+            let (lo, hi) = (w[0], w[1]);
+            let (y_lo, y_hi) = (self.at(lo), self.at(hi));
+            let slope = cycle_slope + ((self.base(hi) - self.base(lo)) / (hi - lo)).abs();
+            if cycles && 0.5 * (y_lo + y_hi) - 0.5 * slope * (hi - lo) >= threshold {
+                return None;
+            }
+            let cold = if cycles {
+                sealsim_math::roots::golden_section(|t| self.at(t), lo, hi, 1e-9 * (hi - lo))
+            } else {
+                hi
+            };
+            let end = if self.at(hi) < threshold { hi } else { cold };
+            (self.at(end) < threshold).then(|| {
+                // invariant: T(lo) ≥ threshold > T(end)
+                let (_, t) = sealsim_math::roots::bisect(
+                    lo,
+                    end,
+                    200,
+                    sealsim_math::roots::to_the_last_bit,
+                    |t| self.at(t) >= threshold,
+                );
+                t
+            })
+        })
+    }
+
     /// Lowest and highest temperature the history can reach \[K\] (bounds, for warnings).
     pub fn range(&self) -> (f64, f64) {
         let amp: f64 = self.cycles.iter().map(|c| c.amplitude.abs()).sum();
@@ -295,6 +369,42 @@ mod tests {
         c1: 8.86,
         c2: 101.6,
     };
+
+    #[test]
+    fn coldest_point_and_first_crossing_are_the_closed_forms() {
+        // a table: 25 °C, down to −40 °C over 4 h from 30 h, held, back up
+        let night = TemperatureHistory::table(vec![
+            (0.0, 298.15),
+            (108_000.0, 298.15),
+            (122_400.0, 233.15),
+            (151_200.0, 233.15),
+            (165_600.0, 298.15),
+        ]);
+        assert_eq!(night.coldest(0.0, 432_000.0), (233.15, 122_400.0));
+        // before the cold: the end of the window
+        assert_eq!(night.coldest(0.0, 115_200.0).1, 115_200.0);
+        // T(t) < 243 K first at 108000 + 14400 (298.15 − 243)/65 s on the ramp
+        let t = night.first_below(243.0, 0.0, 432_000.0).unwrap();
+        let exact = 108_000.0 + 14_400.0 * (298.15 - 243.0) / 65.0;
+        assert!((t - exact).abs() < 1e-9 * exact, "{t} vs {exact}");
+        assert_eq!(night.first_below(233.0, 0.0, 432_000.0), None);
+        assert_eq!(night.first_below(300.0, 0.0, 432_000.0), Some(0.0));
+        // a daily cycle of 10 K around 0 °C, zero crossing upwards at 6 h: coldest at 0 h and
+        // 24 h, −10 °C; from 7 h (warm) below −5 °C first where the sine falls below −1/2
+        let day = 86_400.0;
+        let cycled = TemperatureHistory::constant(273.15).with_cycle(Cycle {
+            amplitude: 10.0,
+            period: day,
+            phase: 6.0 * 3600.0,
+        });
+        let (cold, when) = cycled.coldest(3600.0, 2.0 * day);
+        assert!((cold - 263.15).abs() < 1e-9, "{cold}");
+        assert!((when - day).abs() < 1.0, "{when}");
+        // sin(2π(t − 6 h)/P) < −1/2 first at t − 6 h = 7P/12, t = 20 h
+        let t = cycled.first_below(268.15, 7.0 * 3600.0, 2.0 * day).unwrap();
+        assert!((t - 20.0 * 3600.0).abs() < 1e-6, "{t}");
+        assert_eq!(cycled.first_below(263.0, 7.0 * 3600.0, 2.0 * day), None);
+    }
 
     #[test]
     fn wlf_sign_reference_and_frozen_limit() {

@@ -55,12 +55,12 @@ use crate::fluid::Conduction;
 use crate::interface::{self, HertzContact, HertzMemo, InterfaceFlow, InterfaceSettings};
 use crate::leak::{ContactPath, FlatSeal};
 use crate::material::shift::reduced_time;
-use crate::material::{ChemicalStep, RelaxationState, Shift};
+use crate::material::{ChemicalStep, RelaxationState, Shift, TemperatureHistory};
 use crate::math::quadrature::gauss_legendre;
 use crate::seal::Profile;
 pub use crate::seal::ThermalStrain;
 use crate::validity::{self, At, ContactState, Findings};
-pub use events::{FailureCriteria, FailureEvent, FailureMode, Shutdown};
+pub use events::{ColdLimit, FailureCriteria, FailureEvent, FailureMode, Shutdown};
 
 /// ΔP over the contact pressure below which the fluid pressure inside the interface changes the
 /// leak by rounding only (the mean of σ over [P0 − ΔP, P0] is σ(P0) to ≈ 1e-16).
@@ -162,6 +162,13 @@ struct Snapshot {
     permeation_flow: f64,
 }
 
+/// The energisation factor of the restart check (docs/model.md §8.2): 0. A restart starts from
+/// ΔP = 0, so the ring must first seal on its squeeze alone before the pressure can push it
+/// against the groove flank — the criterion Green & English state, leakage once ΔP exceeds the
+/// *unenergised* peak contact stress (§6.3). With the service's k_e = 1 the check would ask
+/// only `p_sq > τ ΔP_min` and ignore ΔP_min.
+pub const RESTART_ENERGISATION: f64 = 0.0;
+
 /// The shutdown check of one state (docs/model.md §8.2; computed by `Simulator::shutdown`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ShutdownState {
@@ -169,7 +176,12 @@ pub struct ShutdownState {
     pub remaining_squeeze: f64,
     /// Its fully relaxed peak contact pressure there \[Pa\].
     pub peak_pressure: f64,
-    /// Whether it still closes the roughness and holds the minimum pressure difference.
+    /// Below the compound's T10: the peak contact pressure of the ring cooled to the shutdown
+    /// temperature through its hereditary response \[Pa\] (`Simulator::glassy_shutdown`;
+    /// `None` at or above T10).
+    pub glassy_peak_pressure: Option<f64>,
+    /// Whether it still closes the roughness and holds the minimum pressure difference (and,
+    /// below T10, still presses on the face once cooled).
     pub holds: bool,
 }
 
@@ -319,6 +331,9 @@ pub struct Simulator<'a> {
     groove: Option<(ContactPath, InterfaceSolver)>,
     /// `[motion]`: the motion and the table of I (built once; `None` for a static seal).
     drag: Option<(MotionSpec, DragTable)>,
+    /// The compound's T10 \[K\] (`None`: none), below which the shutdown check follows the
+    /// hereditary response ([`Self::glassy_shutdown`]).
+    low_temperature_limit: Option<f64>,
 }
 
 impl<'a> Simulator<'a> {
@@ -378,6 +393,7 @@ impl<'a> Simulator<'a> {
                 _ => None,
             },
             drag,
+            low_temperature_limit: problem.material.low_temperature_limit(),
         };
         simulator.reference_force = simulator.force_at_reference();
         simulator
@@ -609,11 +625,16 @@ impl<'a> Simulator<'a> {
     /// pressure at its minimum ΔP_min. Its remaining squeeze is the squeeze at T_sd beyond the
     /// set, over the recovered cord, `ε_r = (ε(T_sd) − s)/(1 − s)` (s = y/c, the networks' set
     /// strain); its contact pressure the fully relaxed one, `f = c E∞ d (1 − s) g(ε_r)` over
-    /// Lindley's width (the long-term modulus: a shutdown lasts, and it is the least force). The
+    /// Lindley's width (the long-term modulus: the least force of a ring that stays rubbery). The
     /// ring has lost its interference when `(ε(T_sd) − s) d` is no more than the counterface's rms
     /// roughness (it no longer closes the roughness it seals on), or, with ΔP_min > 0, when the
-    /// squeeze cannot hold ΔP_min at a restart ([`crate::leak::opening`]). `None` when the check
-    /// does not apply (a flat seal, force loading, or `[failure] lost_interference = false`).
+    /// squeeze cannot hold ΔP_min at a restart: a restart starts from ΔP = 0, so the ring must
+    /// seal on its unenergised squeeze, `p_sq > ΔP_min` ([`crate::leak::opening`] with
+    /// [`RESTART_ENERGISATION`] = 0, Green & English's criterion, §6.3), whatever the service's
+    /// k_e. Below the compound's T10 the ring is glassy on the time scale of a shutdown and the
+    /// relaxed force is not the least one: the check must also hold for the ring cooled through
+    /// its hereditary response ([`Self::glassy_shutdown`]). `None` when the check does not apply
+    /// (a flat seal, force loading, or `[failure] lost_interference = false`).
     fn shutdown(&self, state: &Mechanics) -> Option<ShutdownState> {
         let p = self.problem;
         let shutdown = p.failure.shutdown?;
@@ -636,18 +657,79 @@ impl<'a> Simulator<'a> {
             crate::seal::oring_contact_width(cord, remaining).max(f64::MIN_POSITIVE),
         );
         let touches = interference > p.spectrum.rms_roughness();
-        let holds = touches
-            && crate::leak::opening(
-                profile.peak(),
-                p.energisation_factor,
-                shutdown.pressure_difference,
-            )
-            .is_none();
+        let restarts = |peak: f64| {
+            crate::leak::opening(peak, RESTART_ENERGISATION, shutdown.pressure_difference).is_none()
+        };
+        let glassy_peak = self.glassy_shutdown(state, &shutdown);
+        // the glassy ring must still press on the face (a force, not a rounding) and restart
+        let glassy_holds = glassy_peak.is_none_or(|peak| peak > 0.0 && restarts(peak));
         Some(ShutdownState {
             remaining_squeeze: remaining,
             peak_pressure: profile.peak(),
-            holds,
+            glassy_peak_pressure: glassy_peak,
+            holds: touches && restarts(profile.peak()) && glassy_holds,
         })
+    }
+
+    /// The glassy branch of the shutdown check (docs/model.md §8.2): below the compound's T10
+    /// (`Shutdown::temperature` < [`crate::material::Material::low_temperature_limit`]) the ring
+    /// cooled from the state's temperature T(t) to T_sd does not relax to E∞ within a shutdown —
+    /// the contraction is unloaded with the stiff modulus the cold gives it, and that stress is
+    /// frozen in. So the state's hereditary stress is carried through a linear cool-down from
+    /// T(t) to T_sd over `Shutdown::cooling_time` (the cord's thermal settling time d²/a: the
+    /// fastest the ring follows its surroundings, the least relaxation on the way) by the exact
+    /// Prony update the run uses, split as the run splits a thermal step (a_T by at most half a
+    /// decade, T by at most 10 K a piece), with the squeeze the thermal strain gives. Returns the
+    /// peak contact pressure of the Hertz profile at the end \[Pa\] (0 when the ring has come
+    /// off the face: a tensile stress is no contact); `None` at or above T10, where the rubber
+    /// relaxes within the shutdown and the relaxed check is the least force. The chemical
+    /// ageing over the cool-down (minutes) is left out.
+    fn glassy_shutdown(&self, state: &Mechanics, shutdown: &Shutdown) -> Option<f64> {
+        let p = self.problem;
+        let limit = self.low_temperature_limit?;
+        if shutdown.temperature >= limit {
+            return None;
+        }
+        let shift = &p.material.shift;
+        let prony = &p.material.prony;
+        let thermal = p.thermal_strain.as_ref();
+        let from = p.environment.at(state.time);
+        let to = shutdown.temperature;
+        let mut relaxation = state.relaxation.clone();
+        let duration = shutdown.cooling_time;
+        if duration > 0.0 {
+            let ramp = TemperatureHistory::table(vec![(0.0, from), (duration, to)]);
+            // a_T is monotone in T along the ramp: its ends bound its change
+            let (la, lb) = (shift.log10_factor(from), shift.log10_factor(to));
+            let swing = (to - from).abs();
+            let by_shift = match (la.is_finite(), lb.is_finite()) {
+                (true, true) => (lb - la).abs() / MAX_STEP_LOG_SHIFT,
+                (true, false) | (false, true) => swing / MAX_STEP_TEMPERATURE_FROZEN_EDGE,
+                (false, false) => 0.0,
+            };
+            let pieces = (swing / MAX_STEP_TEMPERATURE)
+                .max(by_shift)
+                .ceil()
+                .clamp(1.0, MAX_THERMAL_PIECES);
+            let n = pieces as usize;
+            for k in 1..=n {
+                let (a, b) = (
+                    duration * (k - 1) as f64 / pieces,
+                    duration * k as f64 / pieces,
+                );
+                let d_xi = reduced_time(&ramp, shift, a, b);
+                let d_load = p.geometry.load_variable(thermal, ramp.at(b)) - relaxation.strain();
+                relaxation.step(prony, d_xi, d_load);
+            }
+        } else {
+            // cooled at once: the glassy jump
+            let d_load = p.geometry.load_variable(thermal, to) - relaxation.strain();
+            relaxation.step(prony, 0.0, d_load);
+        }
+        let profile =
+            p.geometry
+                .profile(relaxation.stress(prony), p.installed_modulus(), thermal, to);
+        Some(profile.peak())
     }
 
     /// The leak through `profile` with the fluid pressure inside the interface (docs/model.md
@@ -1401,7 +1483,26 @@ impl Snapshot {
             contact_peak: self.profile.peak(),
             contact_mean: self.profile.mean(),
             pressure_difference,
+            temperature: self.temperature,
         }
+    }
+}
+
+impl LifeProblem {
+    /// When the rubber first went colder than the cold limit (docs/model.md §8.3) \[s\]: the
+    /// located failure time when `low_temperature` is `result`'s failure, else the first time
+    /// the temperature history goes below `T10 − margin` within the run (`None`: never, or
+    /// no cold limit).
+    pub fn cold_limit_crossed(&self, result: &LifeResult) -> Option<f64> {
+        let limit = self.failure.low_temperature?;
+        result
+            .failure
+            .filter(|f| f.mode == FailureMode::LowTemperature)
+            .map(|f| f.time)
+            .or_else(|| {
+                self.environment
+                    .first_below(limit.threshold(), 0.0, self.time.duration)
+            })
     }
 }
 

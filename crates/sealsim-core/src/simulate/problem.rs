@@ -247,11 +247,16 @@ impl LifeProblem {
     }
 
     /// Whether any criterion can end the life: one of `[failure]`'s, the extrusion check of a
-    /// groove-seated ring, or the shutdown check of an O-ring under displacement loading.
+    /// groove-seated ring, the shutdown check of an O-ring under displacement loading, or the
+    /// cold limit where the temperature history can reach below it.
     pub fn can_fail(&self) -> bool {
         !self.failure.is_empty()
             || (self.failure.extrusion && self.gland.is_some())
             || self.has_shutdown_check()
+            || self
+                .failure
+                .low_temperature
+                .is_some_and(|c| self.environment.range().0 < c.threshold())
     }
 
     /// Whether the shutdown check applies (docs/model.md §8.2): an O-ring under displacement
