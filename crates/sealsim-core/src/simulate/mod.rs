@@ -423,7 +423,7 @@ impl<'a> Simulator<'a> {
     }
 
     /// Runs the whole life: internal steps chosen by the physics and the error control of
-    /// [`stepping`] (docs/model.md §10.1), the history sampled at the output times.
+    /// `simulate::stepping` (docs/model.md §10.1), the history sampled at the output times.
     pub fn run(&self) -> LifeResult {
         let p = self.problem;
         let mut findings = Findings::default();
