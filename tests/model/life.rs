@@ -42,6 +42,8 @@ fn material(long_term: f64, terms: &[(f64, f64)], shift: Shift) -> Material {
         provenance: Vec::new(),
         compatibility: Vec::new(),
         library_id: None,
+        class: None,
+        permeation: Vec::new(),
     }
 }
 
@@ -335,6 +337,7 @@ fn aged_elastic(crosslinking: f64) -> LifeProblem {
     let mut p = oring_problem(material(5e6, &[], Shift::None));
     p.ageing = Some(Ageing {
         activation_energy: AGED_EA,
+        activation_energy_above: AGED_EA,
         rate: AGED_RATE,
         reference_temperature: AGED_T1,
         crosslinking,
@@ -365,6 +368,7 @@ fn follow_modulus_keeps_the_leak_rate_constant() {
         p.fluid.pressure_difference = 1e-7;
         p.ageing = crosslinking.map(|r| Ageing {
             activation_energy: 80e3,
+            activation_energy_above: 80e3,
             rate: 1e-8,
             reference_temperature: TREF,
             crosslinking: r,
@@ -416,6 +420,59 @@ fn compression_set_and_force_at_constant_temperature_follow_the_closed_forms() {
         let last = res.rows.last().unwrap();
         assert!(last.compression_set.unwrap() > 0.99 * r, "{last:?}");
     }
+}
+
+/// A band of activation energies about the anchor (docs/model.md §6.5): the run's compression
+/// set is 1 − e^{−K} with K = k(T) t, k from the low Ea below T_ref and the high one above, at
+/// constant temperatures on both sides (closed form); and across a ramp through T_ref, K is the
+/// sum of the two one-sided integrals split at the crossing time (t* = 50 days here).
+#[test]
+fn a_two_sided_ageing_law_takes_each_sides_energy() {
+    use sealsim::material::shift::reduced_time;
+    let (below, above) = (50e3, 150e3);
+    let k = |t: f64| {
+        let e = if t > AGED_T1 { above } else { below };
+        AGED_RATE * (-(e / 8.314462618) * (1.0 / t - 1.0 / AGED_T1)).exp()
+    };
+    for temperature in [AGED_T1 - 20.0, AGED_T1 + 10.0] {
+        let mut p = aged_elastic(1.0);
+        if let Some(a) = p.ageing.as_mut() {
+            a.activation_energy = below;
+            a.activation_energy_above = above;
+        }
+        p.environment = TemperatureHistory::constant(temperature);
+        let res = simulate(&p);
+        let mut worst: f64 = 0.0;
+        for row in res.rows.iter().skip(1) {
+            let set = -(-k(temperature) * row.time).exp_m1();
+            worst = worst.max((row.compression_set.unwrap() - set).abs());
+        }
+        assert!(worst < 1e-9, "{temperature} K: {worst:e}");
+    }
+    // a ramp from T_ref − 20 K to T_ref + 20 K over 100 days
+    let mut p = aged_elastic(1.0);
+    if let Some(a) = p.ageing.as_mut() {
+        a.activation_energy = below;
+        a.activation_energy_above = above;
+    }
+    let span = 100.0 * 86400.0;
+    p.environment = TemperatureHistory::table(vec![(0.0, AGED_T1 - 20.0), (span, AGED_T1 + 20.0)]);
+    p.time.duration = span;
+    let res = simulate(&p);
+    let one = |e: f64| sealsim::material::Shift::Arrhenius {
+        reference: AGED_T1,
+        activation_energy: e,
+    };
+    let last = res.rows.last().unwrap();
+    let big_k = AGED_RATE
+        * (reduced_time(&p.environment, &one(below), 0.0, span / 2.0)
+            + reduced_time(&p.environment, &one(above), span / 2.0, last.time));
+    let set = -(-big_k).exp_m1();
+    assert!(
+        (last.compression_set.unwrap() - set).abs() < 1e-9,
+        "{} vs {set}",
+        last.compression_set.unwrap()
+    );
 }
 
 /// `sealsim ageing-fit` on the histories `run` writes for an elastic ring aged at four
