@@ -89,6 +89,11 @@ pub const GAS_HISTORY_COLUMN: &str = "throughput_Pa_m3_per_s";
 /// run carries no permeation; the notes say why). Not included in `throughput_Pa_m3_per_s`.
 pub const PERMEATION_HISTORY_COLUMN: &str = "permeation_Pa_m3_per_s";
 
+/// Column after [`PERMEATION_HISTORY_COLUMN`] for a gas: how the permeation figure was obtained
+/// (`published`, `illustrative`, `bound` — NOT SOURCED, a stated conservative bound — or
+/// `user`; docs/model.md §13.4), so that a bound is never read as a figure.
+pub const PERMEATION_BASIS_HISTORY_COLUMN: &str = "permeation_basis";
+
 /// The history of a life run as CSV: the header and one row per output time (t = 0, the
 /// installation, first). With `[motion]` the rows carry [`MOTION_HISTORY_COLUMNS`] too.
 pub fn history_table(result: &LifeResult) -> Result<String, ReportError> {
@@ -122,6 +127,7 @@ fn history_cells(result: &LifeResult, mean_pressure: Option<f64>) -> Result<Tabl
         .iter()
         .chain(mean_pressure.map(|_| &GAS_HISTORY_COLUMN))
         .chain(mean_pressure.map(|_| &PERMEATION_HISTORY_COLUMN))
+        .chain(mean_pressure.map(|_| &PERMEATION_BASIS_HISTORY_COLUMN))
         .chain(&MOTION_HISTORY_COLUMNS[..extra])
         .copied()
         .collect();
@@ -157,6 +163,10 @@ fn history_cells(result: &LifeResult, mean_pressure: Option<f64>) -> Result<Tabl
                 PERMEATION_HISTORY_COLUMN,
                 r.permeation,
             )?);
+            cells.push(match (r.permeation, result.permeation_status) {
+                (Some(_), Some(status)) => Cell::Text(status.as_str().to_owned()),
+                _ => Cell::Blank,
+            });
         }
         match r.motion {
             _ if extra == 0 => {}
@@ -428,6 +438,13 @@ pub struct GasSummary {
         skip_serializing_if = "Option::is_none"
     )]
     pub permeation_time_lag: Option<f64>,
+    /// How the permeation figure was obtained: `published`, `illustrative`, `bound` (NOT
+    /// SOURCED: a stated conservative bound) or `user` (docs/model.md §13.4).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub permeation_basis: Option<&'static str>,
+    /// Where the figure comes from (or how the bound was chosen), and whether D is a bound.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub permeation_source: Option<String>,
     /// `"rarefied"` or `"continuum"`: the flow law through the constrictions (docs/model.md
     /// §3.10).
     pub flow_law: &'static str,
@@ -447,7 +464,7 @@ impl GasSummary {
         let p = fluid.mean_pressure()?;
         let (first, last) = (p * result.initial_leak_rate(), p * result.final_leak_rate());
         let final_permeation = result.rows.last().and_then(|r| r.permeation);
-        let permeation_time_lag = match (problem.permeation, result.rows.last()) {
+        let permeation_time_lag = match (&problem.permeation, result.rows.last()) {
             // a diffusivity that underflows (a very cold rubber) has no finite lag: absent
             (Some(s), Some(r)) => s.time_lag(r.temperature).filter(|x| x.is_finite()),
             _ => None,
@@ -464,6 +481,8 @@ impl GasSummary {
             final_permeation,
             final_total: last + final_permeation.unwrap_or(0.0),
             permeation_time_lag,
+            permeation_basis: problem.permeation.as_ref().map(|s| s.data.status.as_str()),
+            permeation_source: problem.permeation.as_ref().map(|s| s.data.basis()),
             flow_law: match gas.flow_law {
                 crate::gas::FlowLaw::Rarefied => "rarefied",
                 crate::gas::FlowLaw::Continuum => "continuum",
@@ -1620,7 +1639,7 @@ fn gas_flow_lines(out: &mut SummaryText, run: &SummaryRun, p: f64) {
     ) else {
         return;
     };
-    let lag = match (problem.permeation, result.rows.last()) {
+    let lag = match (&problem.permeation, result.rows.last()) {
         (Some(s), Some(r)) => s.time_lag(r.temperature).map_or_else(
             || "time lag unknown: steady flow from installation, an upper bound".to_owned(),
             |lag| {
@@ -1633,11 +1652,14 @@ fn gas_flow_lines(out: &mut SummaryText, run: &SummaryRun, p: f64) {
         ),
         _ => String::new(),
     };
+    let basis = problem
+        .permeation
+        .as_ref()
+        .map_or_else(String::new, |s| format!("; {}", s.data.basis()));
     out.line(
         "permeation",
         format!(
-            "{} at installation, {} after {duration} (through the rubber; {lag}; \
-             ILLUSTRATIVE data)",
+            "{} at installation, {} after {duration} (through the rubber; {lag}{basis})",
             throughput(first),
             throughput(last)
         ),
@@ -1948,8 +1970,13 @@ pub struct CompareRow<'a> {
     /// Leak rates below it read "≈ 0" in the text table (the CSV keeps them).
     pub floor: LeakFloor,
     /// What this compound's run left out for want of data (`compare` degrades rather than
-    /// aborts: no ageing constants, no permeation data), "; "-separated; empty when nothing.
+    /// aborts: no ageing constants), "; "-separated; empty when nothing.
     pub notes: String,
+    /// Where the compound's ageing activation energy comes from
+    /// ([`crate::workflow::compare::ageing_source`]).
+    pub ageing_source: String,
+    /// A gas: the permeation figure's basis (sourced, derived, NOT SOURCED bound, user's).
+    pub permeation_source: Option<String>,
 }
 
 impl<'a> CompareRow<'a> {
@@ -1966,6 +1993,8 @@ impl<'a> CompareRow<'a> {
             mean_pressure: life.fluid.mean_pressure(),
             floor: LeakFloor::of(&life.fluid, floor),
             notes: crate::workflow::compare::notes(life, run.scenario.compatibility.as_ref()),
+            ageing_source: crate::workflow::compare::ageing_source(life, &run.material),
+            permeation_source: crate::workflow::compare::permeation_source(life),
         }
     }
 }
@@ -1983,6 +2012,10 @@ pub const COMPARE_END_COLUMNS: [&str; 10] = [
     "neighbour_verdict",
     "notes",
 ];
+
+/// The comparison's last columns: where each compound's ageing activation energy comes from,
+/// and (a gas) its permeation figure's basis (docs/model.md §6.5, §13.4).
+pub const COMPARE_SOURCE_COLUMNS: [&str; 2] = ["activation_energy_source", "permeation_source"];
 
 impl CompareRow<'_> {
     /// The run's verdict kind (`undecided` where the neighbouring level gives another outcome).
@@ -2054,6 +2087,10 @@ pub fn compare_table(rows: &[CompareRow<'_>]) -> Result<String, ReportError> {
         header.extend(COMPARE_GAS_COLUMNS);
     }
     header.extend(COMPARE_END_COLUMNS);
+    header.push(COMPARE_SOURCE_COLUMNS[0]);
+    if gas.is_some() {
+        header.push(COMPARE_SOURCE_COLUMNS[1]);
+    }
     writer.write_record(&header).map_err(csv_error)?;
     for (i, r) in rows.iter().enumerate() {
         let row = i + 1;
@@ -2098,6 +2135,10 @@ pub fn compare_table(rows: &[CompareRow<'_>]) -> Result<String, ReportError> {
                 .to_owned(),
         );
         record.push(r.notes.clone());
+        record.push(r.ageing_source.clone());
+        if gas.is_some() {
+            record.push(r.permeation_source.clone().unwrap_or_default());
+        }
         writer.write_record(record).map_err(csv_error)?;
     }
     finish(writer)
@@ -2156,7 +2197,11 @@ pub fn compare_cells(rows: &[CompareRow<'_>]) -> Vec<Vec<String>> {
         "set".to_owned(),
         "state at end".to_owned(),
         "notes".to_owned(),
+        "ageing Ea: source".to_owned(),
     ]];
+    if rows.first().is_some_and(|r| r.mean_pressure.is_some()) {
+        cells[0].push("permeation: basis".to_owned());
+    }
     for r in rows {
         let scale = r.mean_pressure.unwrap_or(1.0);
         let rate = |q: Option<f64>| {
@@ -2218,7 +2263,13 @@ pub fn compare_cells(rows: &[CompareRow<'_>]) -> Vec<Vec<String>> {
             set.map_or_else(|| "-".to_owned(), |c| format!("{} %", human(100.0 * c, 2))),
             state.to_owned(),
             r.notes.clone(),
+            r.ageing_source.clone(),
         ]);
+        if let Some(p) = &r.permeation_source {
+            if let Some(row) = cells.last_mut() {
+                row.push(p.clone());
+            }
+        }
     }
     if rows.first().is_some_and(|r| r.mean_pressure.is_some()) {
         cells.push(vec![
@@ -2280,6 +2331,7 @@ mod tests {
             findings: Default::default(),
             reference_force: 1000.0,
             continuum_leak_rate: None,
+            permeation_status: None,
         }
     }
 
@@ -2397,6 +2449,8 @@ mod tests {
                 given: true,
             },
             notes: String::new(),
+            ageing_source: "no ageing constants".into(),
+            permeation_source: None,
         }];
         let text = compare_table(&rows).unwrap();
         let line = text.lines().nth(1).unwrap();
@@ -2405,7 +2459,7 @@ mod tests {
         let volume_cell =
             |line: &str, k: usize| -> f64 { line.split(',').nth(k).unwrap().parse().unwrap() };
         let (head, tail) = line.rsplit_once(",,leaking,").unwrap();
-        assert_eq!(tail, "");
+        assert_eq!(tail, ",no ageing constants");
         assert!(
             head.starts_with("x,rubber,user,7.8894e7,leak_rate,1e-12,,,1e3,1e0,"),
             "{line}"
@@ -2415,6 +2469,7 @@ mod tests {
         // a gas at p̄ = 1.5 bar: the throughputs p̄ Q̇ after the volume flows (a format test)
         let gas = [CompareRow {
             mean_pressure: Some(1.5e5),
+            permeation_source: Some("NOT SOURCED bound: x".into()),
             ..rows[0].clone()
         }];
         let text = compare_table(&gas).unwrap();
@@ -2423,14 +2478,17 @@ mod tests {
              throughput_10years_Pa_m3_per_s,total_throughput_1day_Pa_m3_per_s,\
              total_throughput_1year_Pa_m3_per_s,total_throughput_10years_Pa_m3_per_s,\
              sealing_force_end_N_per_m,retained_force_end,leaked_volume_end_m3,\
-             compression_set_end,state_end,notes"
+             compression_set_end,state_end,notes,activation_energy_source,permeation_source"
         ));
         let line = text.lines().nth(1).unwrap();
         assert!(
             line.starts_with("x,rubber,user,7.8894e7,leak_rate,1e-12,,,1.5e-7,,,1.5e-7,,,1e3,1e0,"),
             "{line}"
         );
-        assert!(line.ends_with(",,leaking,"), "{line}");
+        assert!(
+            line.ends_with(",,leaking,,no ageing constants,NOT SOURCED bound: x"),
+            "{line}"
+        );
         assert!((volume_cell(line, 16) / (1e-12 * 2.0 * DAY) - 1.0).abs() < 1e-12);
         assert!(compare_text(&gas).contains("Q 1 day [Pa·m³/s]"));
     }

@@ -370,6 +370,25 @@ const MATERIAL: &[Key] = &[
          source = \"…\" }` (docs/model.md §6.8)",
     ),
     key(
+        "class",
+        Choice(CLASSES),
+        Absent(
+            "a library compound's class comes from its id; another material has none, and a \
+             gas run then needs the gas's figure in `[material.permeation]`",
+        ),
+        "the compound class whose data kept by class apply: gas permeation (docs/model.md \
+         §13.4; sourced figures or stated NOT SOURCED bounds). Not with `library` or `file`",
+    ),
+    key(
+        "permeation",
+        Map,
+        Absent("the class's figures"),
+        "gas (`helium`, `hydrogen`, `nitrogen`, `oxygen`, `air`, `carbon-dioxide`, `methane`, \
+         `argon`, or `custom` for a custom gas) → `{ permeability = \"5 barrer\", diffusivity \
+         = \"3e-10 m^2/s\", source = \"…\" }`: the compound's own figure at 23 °C, used \
+         instead of its class's (docs/model.md §13.4); allowed next to `library` and `file`",
+    ),
+    key(
         "provenance",
         Map,
         Absent("required in library files"),
@@ -439,7 +458,19 @@ const MATERIAL_AGEING: &[Key] = &[
         "activation_energy",
         Quantity(mat::AGEING_ACTIVATION_ENERGY),
         Required(""),
-        "Ea of the scission rate",
+        "Ea of the scission rate (at and below `reference_temperature` when \
+         `activation_energy_above` is given)",
+    ),
+    key(
+        "activation_energy_above",
+        Quantity(mat::AGEING_ACTIVATION_ENERGY_ABOVE),
+        SameAs(
+            "material.ageing.activation_energy",
+            "`activation_energy`: one Arrhenius law",
+        ),
+        "Ea above `reference_temperature`: a band [low, high] of Ea about a rating anchor takes \
+         the low end below the anchor and the high end above it, the shorter life on both sides \
+         (docs/model.md §6.5)",
     ),
     key(
         "rate",
@@ -478,6 +509,35 @@ const MATERIAL_AGEING: &[Key] = &[
         Absent(""),
         "the medium the compound was aged in",
     ),
+    key(
+        "source",
+        Text,
+        Absent("every library file has one"),
+        "where the activation energy comes from, in a line (`sealsim compare` prints it beside \
+         each compound)",
+    ),
+];
+
+/// The compound classes of `material.class` ([`crate::permeation::FAMILIES`]; a test checks
+/// them against it).
+pub(super) const CLASSES: &[&str] = &[
+    "acm", "cr", "epdm", "ffkm", "fkm", "fvmq", "hnbr", "iir", "nbr", "vmq",
+];
+
+const PERMEATION: &[Key] = &[
+    key(
+        "permeability",
+        Quantity(mat::PERMEABILITY),
+        Required(""),
+        "Π at 23 °C, in `barrer` (1e-10 cm³(STP)·cm/(cm²·s·cmHg)) or `mol/(m*s*Pa)`",
+    ),
+    key(
+        "diffusivity",
+        Quantity(mat::DIFFUSIVITY),
+        Absent("the steady flow from installation (an upper bound)"),
+        "D at 23 °C, for the build-up over the time lag w²/6D",
+    ),
+    key("source", Text, Absent(""), "where the figure comes from"),
 ];
 
 const COMPATIBILITY: &[Key] = &[
@@ -744,7 +804,7 @@ const SEAL: &[Key] = &[
     key(
         "thickness",
         Quantity(life::THICKNESS),
-        Absent("no permeation"),
+        Absent("a liquid needs none; a gas run on a flat seal is refused without it"),
         "flat: compressed thickness, the edge a gas permeates through (docs/model.md §13.3)",
     ),
     key(
@@ -1346,6 +1406,13 @@ pub(super) const TABLES: &[Table] = &[
         prose: "The compound's rating in a fluid class (`mineral-oil`, `water`, `hot-water`, \
                 `water-glycol`), an inline table.",
         keys: COMPATIBILITY,
+    },
+    Table {
+        path: "material.permeation.GAS",
+        prose: "The compound's own gas permeation figure for one gas (an inline table), used \
+                instead of its class's; E_P and E_D are the table's for that gas (docs/model.md \
+                §13.4).",
+        keys: PERMEATION,
     },
     Table {
         path: "surface",

@@ -914,10 +914,14 @@ impl Source<'_> {
                 ),
             )
         };
-        let activation_energy = match &raw.activation_energy {
-            Some(q) => self.quantity(q, &AGEING_ACTIVATION_ENERGY)?,
+        // a scenario's energy is one law on both sides; the compound's keeps its band
+        let (activation_energy, activation_energy_above) = match &raw.activation_energy {
+            Some(q) => {
+                let e = self.quantity(q, &AGEING_ACTIVATION_ENERGY)?;
+                (e, e)
+            }
             None => own
-                .map(|a| a.activation_energy)
+                .map(|a| (a.activation_energy, a.activation_energy_above))
                 .ok_or_else(|| missing("activation_energy"))?,
         };
         let rate = match &raw.rate {
@@ -946,6 +950,7 @@ impl Source<'_> {
         Ok((
             Some(Ageing {
                 activation_energy,
+                activation_energy_above,
                 rate,
                 reference_temperature,
                 crosslinking,
@@ -1794,6 +1799,7 @@ squeeze = 0.2
             s.life.ageing,
             Some(Ageing {
                 activation_energy: 8e4,
+                activation_energy_above: 8e4,
                 rate: 1e-9,
                 reference_temperature: 373.15,
                 crosslinking: 1.0,

@@ -432,7 +432,8 @@ impl Source<'_> {
             &environment,
             &seal.geometry,
         )?;
-        let (permeation, permeation_note) = permeation(&material, &fluid, &seal);
+        let (permeation, permeation_note) =
+            self.permeation(raw, &material, &fluid, &seal, replacement.is_some())?;
         let life = LifeProblem {
             material: material.clone(),
             asperity_modulus,
@@ -510,6 +511,91 @@ impl Source<'_> {
             compatibility,
             inputs: self.data_files(raw),
         })
+    }
+
+    /// Permeation through the rubber for a gas (docs/model.md §13.7), with its note. The
+    /// figure is the compound's own (`[material.permeation]`) or its class's (sourced, or a
+    /// stated NOT SOURCED bound, every output says which). Missing data never read as zero: a
+    /// compound without class or figure, a gas the table lacks, a flat seal without its
+    /// thickness are refused at the key that supplies them.
+    fn permeation(
+        &self,
+        raw: &RawScenario,
+        material: &Material,
+        fluid: &Fluid,
+        seal: &super::life::SealSpec,
+        replaced: bool,
+    ) -> Result<(Option<crate::permeation::SealPermeation>, Option<String>), ScenarioError> {
+        use crate::permeation::{Missing, SealPermeation, figure};
+        let Some(gas) = fluid.gas else {
+            return Ok((None, None));
+        };
+        let id = gas.gas.id;
+        let refuse = |missing: Missing| -> ScenarioError {
+            let own = format!(
+                "[material.permeation] {id} = {{ permeability = \"5 barrer\", diffusivity = \
+                 \"3e-10 m^2/s\", source = \"<where the figure comes from>\" }}"
+            );
+            let material_span = raw.material.span();
+            match missing {
+                Missing::NoClass => self.error(
+                    material_span,
+                    "material.class",
+                    format!(
+                        "no permeation figure for {id} through the rubber: the material ({}) \
+                         names no compound class and gives no figure of its own, and a gas run \
+                         never takes a missing figure as zero (docs/model.md §13.4). {}: \
+                         `class = \"nbr\"` (one of {}; its figure is sourced or a stated NOT \
+                         SOURCED bound, `sealsim materials show ID` prints it), or the \
+                         compound's own figure `{own}`",
+                        material.name,
+                        if replaced {
+                            "Add to [material] in the compared compound's material file"
+                        } else if raw.material.get_ref().file.is_some() {
+                            "Add to [material] in the material file itself"
+                        } else {
+                            "Add to [material]"
+                        },
+                        crate::permeation::FAMILIES.join(", "),
+                    ),
+                ),
+                Missing::NoRow { family } => self.error(
+                    raw.fluid.span(),
+                    "fluid.gas",
+                    format!(
+                        "no permeation figure for {id} in {family}: sealsim's table has {} \
+                         (docs/model.md §13.4), and a gas run never takes a missing figure as \
+                         zero; give the compound's own figure in the scenario: `{own}`",
+                        crate::permeation::GASES.join(", "),
+                    ),
+                ),
+                Missing::NoThickness => self.error(
+                    raw.seal.span(),
+                    "seal.thickness",
+                    format!(
+                        "missing key `thickness` in [seal]: {id} permeates through the flat \
+                         gasket's exposed edge, whose compressed thickness sets its area \
+                         (docs/model.md §13.3), and a gas run never takes the unknown \
+                         permeation as zero; give e.g. thickness = \"2.8 mm\""
+                    ),
+                ),
+                Missing::Path(e) => self.error(
+                    raw.seal.span(),
+                    "seal",
+                    format!("the permeation path: {e} [docs/model.md §13.3]"),
+                ),
+            }
+        };
+        let data = figure(material.class.as_deref(), &material.permeation, id).map_err(refuse)?;
+        let (permeation, note) = SealPermeation::for_seal(
+            data,
+            &seal.geometry,
+            seal.thickness,
+            gas.outlet_pressure + fluid.pressure_difference,
+            gas.outlet_pressure,
+        )
+        .map_err(refuse)?;
+        Ok((Some(permeation), note))
     }
 
     /// `[groove_surface]` (the gland's own interface) and `[rubber_surface]` (the rubber's
@@ -2408,26 +2494,6 @@ fn settling_environment(
             environment.with_lead_in(fitted, thermal_settling_time(cross_section))
         }
         _ => environment,
-    }
-}
-
-/// Permeation through the rubber for a gas (docs/model.md §13.7), with its note: the
-/// compound's library id names its class (a `compare` compound's too).
-fn permeation(
-    material: &Material,
-    fluid: &Fluid,
-    seal: &super::life::SealSpec,
-) -> (Option<crate::permeation::SealPermeation>, Option<String>) {
-    match fluid.gas {
-        Some(gas) => crate::permeation::SealPermeation::for_seal(
-            material.library_id.as_deref(),
-            gas.gas.id,
-            &seal.geometry,
-            seal.thickness,
-            gas.outlet_pressure + fluid.pressure_difference,
-            gas.outlet_pressure,
-        ),
-        None => (None, None),
     }
 }
 

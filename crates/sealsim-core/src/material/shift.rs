@@ -315,6 +315,98 @@ pub fn reduced_time(history: &TemperatureHistory, shift: &Shift, a: f64, b: f64)
         .sum()
 }
 
+/// Reduced time of a two-sided Arrhenius law anchored at `reference` T_a \[K\]:
+/// `∫_a^b exp(−E(T)/R (1/T − 1/T_a)) dt` \[s\], with `E(T) = below` for T ≤ T_a and
+/// `E(T) = above` for T > T_a \[J/mol\] (a band of activation energies about an anchor,
+/// docs/model.md §6.5). The rate is continuous at T_a (1 there on both sides); only its slope
+/// in 1/T jumps.
+///
+/// Exact for a constant temperature. Otherwise each smooth piece of [`reduced_time`] (between
+/// the history's kinks and eighths of its cycles) is split again where T(t) crosses T_a (sign
+/// changes of T − T_a on 16 sub-steps, each bisected to the last bit), so every piece sees one
+/// Arrhenius law and is integrated like [`reduced_time`] to 1e-12 relative. With
+/// `below == above` it is [`reduced_time`] of that one law.
+pub fn reduced_time_two_sided(
+    history: &TemperatureHistory,
+    reference: f64,
+    below: f64,
+    above: f64,
+    a: f64,
+    b: f64,
+) -> f64 {
+    let law = |activation_energy: f64| Shift::Arrhenius {
+        reference,
+        activation_energy,
+    };
+    let side = |t: f64| if t > reference { above } else { below };
+    if below == above {
+        return reduced_time(history, &law(below), a, b);
+    }
+    if b <= a {
+        return 0.0;
+    }
+    if history.is_constant() {
+        return reduced_time(history, &law(side(history.at(a))), a, b);
+    }
+    // a history that never reaches the anchor (or never leaves the side below it) sees one law
+    let (coldest, hottest) = history.range();
+    if hottest <= reference {
+        return reduced_time(history, &law(below), a, b);
+    }
+    if coldest > reference {
+        return reduced_time(history, &law(above), a, b);
+    }
+    let mut total = 0.0;
+    for w in history.breakpoints(a, b).windows(2) {
+        let mut cuts = vec![w[0]];
+        cuts.extend(crossings(history, reference, w[0], w[1]));
+        cuts.push(w[1]);
+        for c in cuts.windows(2) {
+            if c[1] <= c[0] {
+                continue;
+            }
+            let shift = law(side(history.at(0.5 * (c[0] + c[1]))));
+            let rate = |t: f64| shift.ln_rate(history.at(t)).exp();
+            total += adaptive(&rate, c[0], c[1]);
+        }
+    }
+    total
+}
+
+/// Times in `(a, b)` where `history` crosses `level` \[K\]: sign changes of T − level on 16
+/// equal sub-steps, each bisected until the bracket stops shrinking.
+fn crossings(history: &TemperatureHistory, level: f64, a: f64, b: f64) -> Vec<f64> {
+    const STEPS: usize = 16;
+    let above = |t: f64| history.at(t) > level;
+    let mut out = Vec::new();
+    let mut t0 = a;
+    for k in 1..=STEPS {
+        let t1 = if k == STEPS {
+            b
+        } else {
+            a + (b - a) * k as f64 / STEPS as f64
+        };
+        if above(t0) != above(t1) {
+            let (mut lo, mut hi) = (t0, t1);
+            let side = above(lo);
+            loop {
+                let mid = 0.5 * (lo + hi);
+                if mid <= lo || mid >= hi {
+                    break;
+                }
+                if above(mid) == side {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            out.push(0.5 * (lo + hi));
+        }
+        t0 = t1;
+    }
+    out
+}
+
 fn rules() -> &'static [(Vec<f64>, Vec<f64>); 2] {
     static RULES: OnceLock<[(Vec<f64>, Vec<f64>); 2]> = OnceLock::new();
     RULES.get_or_init(|| [gauss_legendre(8), gauss_legendre(16)])
@@ -478,6 +570,59 @@ mod tests {
         assert!((ten / (10.0 * one) - 1.0).abs() < 1e-11);
         // hotter half-days dominate: more than the mean-temperature value
         assert!(one > DAY / s.factor(320.0));
+    }
+
+    /// The two-sided law: closed forms at constant temperature on both sides of the anchor, a
+    /// ramp through the anchor against the one-sided integrals split at the known crossing
+    /// time t* = (T_a − T0)/slope and against a 1e6-point midpoint rule, a daily cycle that
+    /// crosses the anchor twice a day against the midpoint rule.
+    #[test]
+    fn two_sided_arrhenius_is_exact_on_each_side() {
+        let (ta, lo, hi) = (373.15, 50e3, 105e3);
+        let one = |e: f64| Shift::Arrhenius {
+            reference: ta,
+            activation_energy: e,
+        };
+        for (t, e) in [(300.0, lo), (373.15, lo), (420.0, hi)] {
+            let h = TemperatureHistory::constant(t);
+            let xi = reduced_time_two_sided(&h, ta, lo, hi, 0.0, 1e6);
+            let closed = 1e6 * (-(e / GAS_CONSTANT) * (1.0 / t - 1.0 / ta)).exp();
+            assert!((xi / closed - 1.0).abs() < 1e-14, "{t}: {xi} vs {closed}");
+        }
+        // 353.15 → 393.15 K over 1000 s: crosses T_a at t* = 500 s
+        let ramp = TemperatureHistory::table(vec![(0.0, 353.15), (1000.0, 393.15)]);
+        let xi = reduced_time_two_sided(&ramp, ta, lo, hi, 0.0, 1000.0);
+        let split = reduced_time(&ramp, &one(lo), 0.0, 500.0)
+            + reduced_time(&ramp, &one(hi), 500.0, 1000.0);
+        assert!((xi / split - 1.0).abs() < 1e-12, "{xi} vs {split}");
+        let midpoint = |h: &TemperatureHistory, span: f64| {
+            let n = 1_000_000;
+            let dt = span / n as f64;
+            (0..n)
+                .map(|i| {
+                    let t = h.at((i as f64 + 0.5) * dt);
+                    let e = if t > ta { hi } else { lo };
+                    dt / one(e).factor(t)
+                })
+                .sum::<f64>()
+        };
+        assert!((xi / midpoint(&ramp, 1000.0) - 1.0).abs() < 1e-9);
+        // a single law over the same ramp differs: the split matters
+        let single = reduced_time(&ramp, &one(lo), 0.0, 1000.0);
+        assert!(xi / single > 1.05, "{xi} vs {single}");
+        // a daily cycle of ±20 K about T_a + 5 K
+        let cycle = TemperatureHistory::constant(ta + 5.0).with_cycle(Cycle {
+            amplitude: 20.0,
+            period: DAY,
+            phase: 0.0,
+        });
+        let day = reduced_time_two_sided(&cycle, ta, lo, hi, 0.0, DAY);
+        assert!((day / midpoint(&cycle, DAY) - 1.0).abs() < 1e-9);
+        // equal energies: the one-sided reduced time itself
+        assert_eq!(
+            reduced_time_two_sided(&ramp, ta, lo, lo, 0.0, 1000.0),
+            reduced_time(&ramp, &one(lo), 0.0, 1000.0)
+        );
     }
 
     #[test]

@@ -55,7 +55,7 @@ use crate::fluid::Conduction;
 use crate::interface::{self, HertzContact, HertzMemo, InterfaceFlow, InterfaceSettings};
 use crate::leak::{ContactPath, FlatSeal};
 use crate::material::shift::reduced_time;
-use crate::material::{ChemicalStep, RelaxationState, Shift, TemperatureHistory};
+use crate::material::{ChemicalStep, RelaxationState, TemperatureHistory};
 use crate::math::quadrature::gauss_legendre;
 use crate::seal::Profile;
 pub use crate::seal::ThermalStrain;
@@ -495,6 +495,7 @@ impl<'a> Simulator<'a> {
             findings,
             reference_force: self.reference_force,
             continuum_leak_rate: self.continuum_leak_rate(),
+            permeation_status: self.problem.permeation.as_ref().map(|p| p.data.status),
         }
     }
 
@@ -1083,16 +1084,10 @@ impl<'a> Simulator<'a> {
             Loading::Force => 0.0,
         };
         let chem = match &p.ageing {
-            Some(ag) => {
-                let arrhenius = Shift::Arrhenius {
-                    reference: ag.reference_temperature,
-                    activation_energy: ag.activation_energy,
-                };
-                ChemicalStep {
-                    scission: ag.rate * reduced_time(&p.environment, &arrhenius, a, b),
-                    crosslinking: ag.crosslinking,
-                }
-            }
+            Some(ag) => ChemicalStep {
+                scission: ag.scission(&p.environment, a, b),
+                crosslinking: ag.crosslinking,
+            },
             None => ChemicalStep {
                 scission: 0.0,
                 crosslinking: 0.0,
@@ -1170,7 +1165,7 @@ impl<'a> Simulator<'a> {
     fn open_snapshot_at(&self, state: &Mechanics, t: f64) -> Snapshot {
         let p = self.problem;
         let temperature = p.environment.at(t);
-        let permeation = p.permeation.map(|s| s.throughput(t, temperature));
+        let permeation = p.permeation.as_ref().map(|s| s.throughput(t, temperature));
         let permeation_flow = match (permeation, p.fluid.mean_pressure()) {
             (Some(q), Some(mean)) if mean > 0.0 => q / mean,
             _ => 0.0,

@@ -372,6 +372,10 @@ pub struct LifeResult {
     /// A rarefied gas: the leak rate at installation \[m³/s\] the continuum law would give
     /// instead (docs/model.md §3.10), to show what rarefaction changes; `None` otherwise.
     pub continuum_leak_rate: Option<f64>,
+    /// A gas: how the permeation figure was obtained (sourced, derived, a stated NOT SOURCED
+    /// bound, the user's), which every output states beside the permeation (docs/model.md
+    /// §13.4); `None` without permeation.
+    pub permeation_status: Option<crate::permeation::DataStatus>,
 }
 
 /// A life run's outcome, as its verdict names it (docs/model.md §8.1).
