@@ -131,6 +131,8 @@ mod tests {
             reference_force: 0.0,
             continuum_leak_rate: None,
             permeation_status,
+            course: crate::simulate::Course::from_rows(&[]),
+            band: None,
         }
     }
 
