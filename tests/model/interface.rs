@@ -311,8 +311,13 @@ fn a_gas_follows_its_own_pressure_profile_through_a_hertz_contact() {
         }
         .at(t);
         let local = |e: f64, pf: f64| {
-            path.gas_conductance(e / e_star, 1.0, fluid.viscosity, fluid.free_path_at(pf))
-                * fluid.density_weight(pf)
+            path.gas_conductance(
+                e / e_star,
+                1.0,
+                fluid.viscosity,
+                fluid.free_path_at(pf),
+                fluid.molecular_size(),
+            ) * fluid.density_weight(pf)
         };
         let dp = pa - pb;
         let offset = 0.35e6;

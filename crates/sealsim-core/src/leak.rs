@@ -4,7 +4,7 @@ use crate::contact::{
     ContactSettings, ContactTable, CriticalJunction, EffectiveMediumSettings, EffectiveMediumTable,
     Elastic, FullContact, Junction, PerssonContact, TableSettings,
 };
-use crate::fluid::{Fluid, junction_conductance};
+use crate::fluid::{Fluid, junction_conductance, passes_molecule};
 use crate::interface::{self, InterfaceFlow, InterfaceSettings};
 use crate::numerical::HeightMap;
 use crate::numerical::reference::NumericalSettings;
@@ -295,9 +295,9 @@ pub enum ContactPath {
     },
 }
 
-/// How the levels that have one build their table, and where the numerical level gets its
-/// surfaces.
-#[derive(Debug, Clone, Default)]
+/// How the levels that have one build their table, where the numerical level gets its
+/// surfaces, and the fluid's molecule the averaging levels build with.
+#[derive(Debug, Clone)]
 pub struct PathOptions<'a> {
     /// Spacing of the critical-junction table (the effective-medium table uses ⅔ of its
     /// points per decade, over [`TableSettings::effective_medium`]'s range).
@@ -310,12 +310,30 @@ pub struct PathOptions<'a> {
     /// Reduced pressures P0/E* at which the numerical level solves (a pressure sweep: exactly
     /// the pressures asked for); `None`: its default nodes, for a life run.
     pub numerical_nodes: Option<Vec<f64>>,
+    /// The size of one molecule of the fluid \[m\] ([`Fluid::molecular_size`]; default a
+    /// liquid's, [`crate::fluid::liquid_molecular_size`]): the effective-medium and numerical
+    /// levels tabulate with every local gap no wider conducting nothing (docs/model.md §3.3,
+    /// §3.5, §8.1). The critical-junction levels apply the same rule when evaluated
+    /// ([`ContactPath::conductance`]), whatever this is.
+    pub molecular_size: f64,
+}
+
+impl Default for PathOptions<'_> {
+    fn default() -> Self {
+        PathOptions {
+            table: TableSettings::default(),
+            numerical: NumericalSettings::default(),
+            height_map: None,
+            numerical_nodes: None,
+            molecular_size: crate::fluid::liquid_molecular_size(),
+        }
+    }
 }
 
 impl ContactPath {
     /// Builds the path for `spectrum` with the default options (critical-junction table ≈ 3 ms;
     /// effective-medium table ≈ 0.5 s; the numerical level: an ensemble at 10 pressures,
-    /// ≈ 10–30 s). See [`Self::build`].
+    /// ≈ 10–30 s), for a liquid. See [`Self::build`].
     pub fn new(spectrum: &Spectrum, settings: ContactSettings, fidelity: Fidelity) -> Self {
         Self::build(
             spectrum,
@@ -324,6 +342,21 @@ impl ContactPath {
             &PathOptions::default(),
             &mut |_, _| {},
         )
+    }
+
+    /// [`Self::new`] for `fluid`: the averaging levels tabulate with its molecule
+    /// ([`PathOptions::molecular_size`]).
+    pub fn for_fluid(
+        spectrum: &Spectrum,
+        settings: ContactSettings,
+        fidelity: Fidelity,
+        fluid: &Fluid,
+    ) -> Self {
+        let options = PathOptions {
+            molecular_size: fluid.molecular_size(),
+            ..PathOptions::default()
+        };
+        Self::build(spectrum, settings, fidelity, &options, &mut |_, _| {})
     }
 
     /// Builds the path; `progress(done, total)` reports the numerical level's realisations.
@@ -353,17 +386,22 @@ impl ContactPath {
                 ContactPath::EffectiveMedium(Box::new(EffectiveMediumTable::build(
                     exact,
                     em_table,
-                    EffectiveMediumSettings::default(),
+                    EffectiveMediumSettings {
+                        molecular_size: options.molecular_size,
+                        ..EffectiveMediumSettings::default()
+                    },
                 )))
             }
             Fidelity::Numerical => {
                 let s_seal = exact.sealing_reduced_pressure();
+                let mut settings = options.numerical.clone();
+                settings.flow.molecular_size = options.molecular_size;
                 let numerical = NumericalTable::for_surface(
                     spectrum,
                     options.height_map,
                     options.numerical_nodes.as_deref(),
                     s_seal,
-                    &options.numerical,
+                    &settings,
                     progress,
                 );
                 ContactPath::Numerical {
@@ -506,19 +544,38 @@ impl ContactPath {
 
     /// Conductance per unit width of the interface at `s` \[m³/(Pa·s)\]: `α u_c³/(12η)` for the
     /// critical-junction levels (PY08 eq. 1), `σ_eff = u_eff³/(12η)` for the effective medium
-    /// (α does not enter); 0 when sealed.
-    pub fn conductance(&self, s: f64, shape_factor: f64, viscosity: f64) -> f64 {
+    /// (α does not enter); 0 when sealed, and 0 where the level's gap (u_c, u_eff) is no wider
+    /// than `molecular_size` \[m\], one molecule of the fluid ([`Fluid::molecular_size`],
+    /// [`crate::fluid::passes_molecule`]; docs/model.md §3.6, §8.1). Since the gap is a function
+    /// of `s` alone, the cut is one reduced pressure for a surface and a fluid, and every strip of
+    /// the interface (§3.6) meets it where the outlet's junction does.
+    pub fn conductance(
+        &self,
+        s: f64,
+        shape_factor: f64,
+        viscosity: f64,
+        molecular_size: f64,
+    ) -> f64 {
         if let ContactPath::Table(t) = self {
-            return t.critical_gap(s).map_or(0.0, |u_c| {
-                junction_conductance(u_c, shape_factor, viscosity)
-            });
+            return t
+                .critical_gap(s)
+                .filter(|&u_c| passes_molecule(u_c, molecular_size))
+                .map_or(0.0, |u_c| {
+                    junction_conductance(u_c, shape_factor, viscosity)
+                });
         }
-        self.channel_conductance(&self.critical_junction(s), shape_factor, viscosity)
+        self.channel_conductance(
+            &self.critical_junction(s),
+            shape_factor,
+            viscosity,
+            molecular_size,
+        )
     }
 
     /// [`Self::conductance`] of a gas with the mean free path of the local pressure (`gas`;
     /// `None`: a liquid, or the continuum law), docs/model.md §3.10 — a gap no wider than a
-    /// molecule conducts nothing:
+    /// molecule (`molecular_size`, the gas's diameter) conducts nothing, at every level as in
+    /// [`Self::conductance`]:
     /// * critical-junction levels: `α u_c³ f(λ/u_c, λc/u_c)/(12η)`, f the slit rarefaction
     ///   factor ([`crate::gas::slit_rarefaction`]) at the critical constriction's own Knudsen
     ///   number, the constriction λc wide;
@@ -534,12 +591,17 @@ impl ContactPath {
         shape_factor: f64,
         viscosity: f64,
         gas: Option<crate::gas::Rarefied>,
+        molecular_size: f64,
     ) -> f64 {
         let Some(l) = gas else {
-            return self.conductance(s, shape_factor, viscosity);
+            return self.conductance(s, shape_factor, viscosity, molecular_size);
         };
         let alpha = match self {
             ContactPath::EffectiveMedium(t) => {
+                // the level's gap (the reported u_eff) below a molecule: as every level
+                if !passes_molecule(t.effective_gap(s), molecular_size) {
+                    return 0.0;
+                }
                 return t.rarefied_cubed_gap(s, l) / (12.0 * viscosity);
             }
             ContactPath::Numerical {
@@ -550,7 +612,7 @@ impl ContactPath {
                 // cell by cell at the table's mean free path; the local pressure's change of it
                 // carried by the critical constriction's own factor
                 let u = table.effective_gap(s);
-                if u <= 0.0 {
+                if !passes_molecule(u, molecular_size) {
                     return 0.0;
                 }
                 let ratio = match junctions.critical_junction(s) {
@@ -566,7 +628,7 @@ impl ContactPath {
         };
         // the channel: u_c (u_eff for the numerical level) and its lateral extent λc
         match self.critical_junction(s) {
-            Junction::Leaking(j) if j.u_c > 0.0 => {
+            Junction::Leaking(j) if j.u_c > 0.0 && passes_molecule(j.u_c, molecular_size) => {
                 junction_conductance(j.u_c, alpha, viscosity) * l.factor(j.u_c, j.lambda_c)
             }
             _ => 0.0,
@@ -579,14 +641,31 @@ impl ContactPath {
         junction: &Junction,
         shape_factor: f64,
         viscosity: f64,
+        molecular_size: f64,
     ) -> f64 {
         let alpha = match self {
             ContactPath::EffectiveMedium(_) | ContactPath::Numerical { .. } => 1.0,
             _ => shape_factor,
         };
         match junction {
-            Junction::Leaking(j) => junction_conductance(j.u_c, alpha, viscosity),
-            Junction::Sealed => 0.0,
+            Junction::Leaking(j) if passes_molecule(j.u_c, molecular_size) => {
+                junction_conductance(j.u_c, alpha, viscosity)
+            }
+            _ => 0.0,
+        }
+    }
+
+    /// The state of an interface that conducts nothing under the fluid pressure (docs/model.md
+    /// §3.6, §8.1), from its least-loaded strip — the one the fluid pressure relieves most, at
+    /// reduced asperity pressure `s_least` (`(P0 − ΔP)/E*` for a uniform contact, the peak less
+    /// the whole ΔP for a profile): [`SealState::BelowMolecule`] when a channel percolates there
+    /// (every percolating strip's gap is then no wider than a molecule: the molecule is what
+    /// seals), [`SealState::Sealed`] when none does (percolation falls with the pressure, so
+    /// no strip percolates).
+    pub fn sealed_state(&self, s_least: f64) -> SealState {
+        match self.critical_junction(s_least.max(f64::MIN_POSITIVE)) {
+            Junction::Leaking(_) => SealState::BelowMolecule,
+            Junction::Sealed => SealState::Sealed,
         }
     }
 }
@@ -594,7 +673,8 @@ impl ContactPath {
 impl StaticSolver {
     /// Prepares the solver (builds the level's table, if it has one).
     pub fn new(problem: StaticProblem, fidelity: Fidelity) -> Self {
-        let path = ContactPath::new(&problem.spectrum, problem.contact, fidelity);
+        let path =
+            ContactPath::for_fluid(&problem.spectrum, problem.contact, fidelity, &problem.fluid);
         StaticSolver { problem, path }
     }
 
@@ -618,13 +698,17 @@ impl StaticSolver {
     /// [`ContactPath::conductance`] ([`interface::uniform`]). Lifted off when P0 ≤ ΔP
     /// ([`opening`] with k_e = 0), with the leak at the threshold of lift-off, P0 = ΔP
     /// ([`interface::uniform_onset`], a lower bound that does not grow with P0). The junction is
-    /// the outlet's (asperity pressure P0), where the asperities carry most; a critical gap
-    /// narrower than a molecule of the fluid conducts nothing ([`SealState::BelowMolecule`]).
+    /// the outlet's (asperity pressure P0), where the asperities carry most. Every strip whose
+    /// critical gap is no wider than a molecule of the fluid conducts nothing
+    /// ([`ContactPath::conductance`]); an interface that conducts nowhere is sealed, by the
+    /// molecule ([`SealState::BelowMolecule`]) when a channel percolates in its least-loaded
+    /// strip ([`ContactPath::sealed_state`]).
     pub fn evaluate(&self, p0: f64) -> LeakPoint {
         let pb = &self.problem;
         let dp = pb.fluid.pressure_difference;
         let e_star = pb.material.effective_modulus();
         let junction = self.path.critical_junction(p0 / e_star);
+        let molecule = pb.fluid.molecular_size();
         // a gas: σ(e) weighed by the local density (P_b + p_f)/p̄, p_f = top − e, each
         // constriction rarefied at the local pressure (docs/model.md §3.9, §3.10); 1 for a liquid
         let sigma = |top: f64| {
@@ -634,6 +718,7 @@ impl StaticSolver {
                     pb.shape_factor,
                     pb.fluid.viscosity,
                     pb.fluid.free_path_at(top - e),
+                    molecule,
                 ) * pb.fluid.density_weight(top - e)
             }
         };
@@ -655,20 +740,11 @@ impl StaticSolver {
                     ..InterfaceSettings::default()
                 },
             ) {
-                InterfaceFlow::Conducting(conduction) => {
-                    if junction
-                        .leaking()
-                        .is_some_and(|j| j.u_c <= pb.fluid.molecular_size())
-                    {
-                        (0.0, SealState::BelowMolecule)
-                    } else {
-                        (
-                            pb.fluid.leak_rate(pb.seal.geometry(), conduction),
-                            SealState::Leaking,
-                        )
-                    }
-                }
-                InterfaceFlow::Sealed => (0.0, SealState::Sealed),
+                InterfaceFlow::Conducting(conduction) => (
+                    pb.fluid.leak_rate(pb.seal.geometry(), conduction),
+                    SealState::Leaking,
+                ),
+                InterfaceFlow::Sealed => (0.0, self.path.sealed_state((p0 - dp) / e_star)),
                 InterfaceFlow::LiftOff => (0.0, SealState::LiftOff),
             }
         };

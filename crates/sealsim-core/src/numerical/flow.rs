@@ -128,6 +128,11 @@ pub struct FlowSettings {
     /// factor f(λ/u, pixel/u) at this mean free path, 0 for a gap no wider than a molecule
     /// (`None`: a liquid, the default).
     pub gas: Option<crate::gas::Rarefied>,
+    /// The size of one molecule of the fluid \[m\] ([`crate::fluid::Fluid::molecular_size`]): a
+    /// cell whose gap is no wider conducts nothing and counts as contact
+    /// ([`crate::fluid::passes_molecule`], docs/model.md §8.1). 0 (the default): every open cell
+    /// conducts; a contact path sets its fluid's ([`crate::leak::PathOptions::molecular_size`]).
+    pub molecular_size: f64,
 }
 
 impl Default for FlowSettings {
@@ -138,6 +143,7 @@ impl Default for FlowSettings {
             preconditioner: Preconditioner::default(),
             direction: Direction::default(),
             gas: None,
+            molecular_size: 0.0,
         }
     }
 }
@@ -325,8 +331,12 @@ fn solve_x(
     // Cell conductances u³/(12η) (a gas: times its slit factor, a cell as wide as a pixel),
     // scaled by their maximum. A gap so thin that its scaled conductance is below
     // √(f64::MIN_POSITIVE) ≈ 1.5e-154 (u below ~1e-51 of the widest gap) counts as contact, so
-    // that no face conductance underflows to zero inside a cluster.
+    // that no face conductance underflows to zero inside a cluster; so does a gap no wider than
+    // a molecule of the fluid (it passes nothing, docs/model.md §8.1).
     let sigma_of = |u: f64| {
+        if !crate::fluid::passes_molecule(u, settings.molecular_size) {
+            return 0.0;
+        }
         let liquid = u * u * u / (12.0 * viscosity);
         match settings.gas {
             Some(g) if u > 0.0 => liquid * g.factor(u, pixel),

@@ -320,7 +320,12 @@ impl<'a> Simulator<'a> {
     /// and the fidelity, so runs that share those (e.g. `sealsim compare` across materials)
     /// can build it once.
     pub fn contact_path(problem: &LifeProblem) -> ContactPath {
-        ContactPath::new(&problem.spectrum, problem.contact, problem.fidelity)
+        ContactPath::for_fluid(
+            &problem.spectrum,
+            problem.contact,
+            problem.fidelity,
+            &problem.fluid,
+        )
     }
 
     /// Prepares the run with a contact path built beforehand by [`Self::contact_path`] for a
@@ -361,7 +366,12 @@ impl<'a> Simulator<'a> {
             counterface: InterfaceSolver::new(problem),
             groove: match &problem.groove {
                 GrooveInterface::Own(spectrum) => Some((
-                    ContactPath::new(spectrum, problem.contact, problem.fidelity),
+                    ContactPath::for_fluid(
+                        spectrum,
+                        problem.contact,
+                        problem.fidelity,
+                        &problem.fluid,
+                    ),
                     InterfaceSolver::new(problem),
                 )),
                 _ => None,
@@ -659,9 +669,11 @@ impl<'a> Simulator<'a> {
     /// against the contact pressure (≤ 1e-8 of it) the strips in series at the contact pressure
     /// (§3.2). Lifted off (`lifted` by the stresses, or found so by the interface): the leak of
     /// the interface loaded just to its threshold of lift-off (contact peak = ΔP), a lower bound
-    /// that less load never lowers ([`Self::onset_leak`]). A
-    /// critical gap no wider than a molecule of the fluid conducts nothing
-    /// ([`SealState::BelowMolecule`], docs/model.md §8.1).
+    /// that less load never lowers ([`Self::onset_leak`]). Every strip whose critical gap is no
+    /// wider than a molecule of the fluid conducts nothing ([`ContactPath::conductance`],
+    /// docs/model.md §3.6, §8.1); an interface that conducts nowhere is sealed — by the molecule
+    /// ([`SealState::BelowMolecule`]) when a channel percolates in its least-loaded strip
+    /// ([`ContactPath::sealed_state`]).
     fn interface_leak(
         &self,
         path: &ContactPath,
@@ -675,7 +687,8 @@ impl<'a> Simulator<'a> {
         let dp = p.fluid.pressure_difference;
         let offset = p.energisation_factor * dp;
         let viscosity = fluid.viscosity;
-        let sigma_hat = |s: f64| path.conductance(s, p.shape_factor, viscosity);
+        let molecule = fluid.molecular_size();
+        let sigma_hat = |s: f64| path.conductance(s, p.shape_factor, viscosity, molecule);
         // σ(e, p_f) at asperity pressure e and gauge fluid pressure p_f: for a gas weighed by
         // the local density (P_b + p_f)/p̄, each constriction rarefied at the local pressure
         // (docs/model.md §3.9, §3.10); σ(e) for a liquid
@@ -685,6 +698,7 @@ impl<'a> Simulator<'a> {
                 p.shape_factor,
                 viscosity,
                 fluid.free_path_at(fluid_pressure),
+                molecule,
             ) * fluid.density_weight(fluid_pressure)
         };
         // under a uniform contact pressure `top` the fluid pressure is top − e
@@ -715,25 +729,23 @@ impl<'a> Simulator<'a> {
         if lifted {
             return open();
         }
-        // a conducting interface whose critical gap is no wider than a molecule passes nothing
-        let conducting = |leak_rate: f64, junction: (Junction, f64)| {
-            if junction
-                .0
-                .leaking()
-                .is_some_and(|j| j.u_c <= fluid.molecular_size())
-            {
-                InterfaceLeak::new(0.0, junction, SealState::BelowMolecule)
+        // the strips' σ is already 0 below a molecule: the interface leaks, or it is sealed,
+        // by the molecule when its least-loaded strip (asperity pressure `least`) percolates
+        let outcome = |leak_rate: f64, junction: (Junction, f64), least: f64| {
+            let state = if leak_rate > 0.0 {
+                SealState::Leaking
             } else {
-                let state = if leak_rate > 0.0 {
-                    SealState::Leaking
-                } else {
-                    SealState::Sealed
-                };
-                InterfaceLeak::new(leak_rate, junction, state)
-            }
+                path.sealed_state(least / e_star)
+            };
+            InterfaceLeak::new(
+                if state.is_sealed() { 0.0 } else { leak_rate },
+                junction,
+                state,
+            )
         };
         if dp <= NEGLIGIBLE_PRESSURE_RATIO * top {
-            return conducting(series(), junction_at(top));
+            // every strip at its contact pressure: the peak's decides
+            return outcome(series(), junction_at(top), top);
         }
         let (flow, junction) = match *profile {
             Profile::Uniform { pressure, .. } => (
@@ -766,9 +778,10 @@ impl<'a> Simulator<'a> {
         };
         match flow {
             InterfaceFlow::Conducting(conduction) => {
-                conducting(p.fluid.leak_rate(geometry, conduction), junction)
+                outcome(p.fluid.leak_rate(geometry, conduction), junction, top - dp)
             }
-            InterfaceFlow::Sealed => InterfaceLeak::new(0.0, junction, SealState::Sealed),
+            // no strip conducts even with the whole ΔP relieving it
+            InterfaceFlow::Sealed => outcome(0.0, junction, top - dp),
             InterfaceFlow::LiftOff => open(),
         }
     }
@@ -1011,9 +1024,15 @@ impl<'a> Simulator<'a> {
                     0.0
                 };
                 let s = junction_s;
+                // a critical gap below a molecule carries no film either (§8.1), also where
+                // the strips the fluid pressure relieves leak
+                let below_molecule = peak_junction.leaking().is_some_and(|j| {
+                    !crate::fluid::passes_molecule(j.u_c, p.fluid.molecular_size())
+                });
                 let junction = match self.path {
-                    // a critical gap below a molecule carries no film either (§8.1)
-                    _ if leak.state == SealState::BelowMolecule => Junction::Sealed,
+                    _ if leak.state == SealState::BelowMolecule || below_molecule => {
+                        Junction::Sealed
+                    }
                     ContactPath::Table(_) | ContactPath::Exact(_) => peak_junction,
                     _ => self.path.persson_junction(s),
                 };
