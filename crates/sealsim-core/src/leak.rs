@@ -275,6 +275,8 @@ pub fn lift_off_threshold(energisation: f64, pressure_difference: f64) -> f64 {
 pub struct StaticSolver {
     problem: StaticProblem,
     path: ContactPath,
+    /// [`ContactPath::molecular_cut`] for the problem's fluid.
+    cut: f64,
 }
 
 /// The contact-and-gap model of one surface at the chosen [`Fidelity`], prepared once (a table
@@ -655,17 +657,79 @@ impl ContactPath {
         }
     }
 
+    /// The reduced pressure `s_m = e/E*` at and above which the level's gap (u_c; u_eff) is no
+    /// wider than `molecular_size` \[m\], so that [`Self::conductance`] is 0 (docs/model.md
+    /// §3.6, §8.1). The gap falls with the pressure, so the cut is one reduced pressure for a
+    /// surface and a fluid: found once by bisection in ln s to 1e-10 — between the
+    /// level's own sealing pressure and 1e-6 of it (the effective medium's table), or 1e-30 and
+    /// 1e3 — and handed to the uniform interface's quadrature as its ceiling
+    /// ([`crate::interface::InterfaceSettings::ceiling`]), which then integrates the smooth
+    /// part of σ(e) only. `∞` if the gap is wider at 1e3 (no surface seals that late); 1e-30 if
+    /// it is no wider even there.
+    pub fn molecular_cut(&self, molecular_size: f64) -> f64 {
+        let passes = |s: f64| {
+            let gap = match self {
+                ContactPath::Table(t) => t.critical_gap(s),
+                ContactPath::EffectiveMedium(t) => Some(t.effective_gap(s)),
+                ContactPath::Numerical { table, .. } => Some(table.effective_gap(s)),
+                _ => self.critical_junction(s).leaking().map(|j| j.u_c),
+            };
+            gap.is_some_and(|u| passes_molecule(u, molecular_size))
+        };
+        // where the level's gap is 0 at and above its sealing pressure, the cut lies below it;
+        // the effective medium's table spans 6 decades beneath (outside it every gap is a solve)
+        let narrow = match self {
+            ContactPath::EffectiveMedium(t) => {
+                let s = t.sealing_reduced_pressure();
+                Some((1e-6 * s, s))
+            }
+            _ => None,
+        };
+        let (lo, hi) = match narrow {
+            Some((a, b)) if passes(a) && !passes(b) => (a.ln(), b.ln()),
+            _ => (1e-30f64.ln(), 1e3f64.ln()),
+        };
+        if passes(hi.exp()) {
+            return f64::INFINITY;
+        }
+        if !passes(lo.exp()) {
+            return lo.exp();
+        }
+        let (_, hi) = crate::math::roots::bisect(
+            lo,
+            hi,
+            usize::MAX,
+            // 1e-10 of s: the integral misses or adds σ(e_m) e_m 1e-10 at most
+            |a, b| b - a <= 1e-10,
+            |x| passes(x.exp()),
+        );
+        hi.exp()
+    }
+
     /// The state of an interface that conducts nothing under the fluid pressure (docs/model.md
     /// §3.6, §8.1), from its least-loaded strip — the one the fluid pressure relieves most, at
     /// reduced asperity pressure `s_least` (`(P0 − ΔP)/E*` for a uniform contact, the peak less
     /// the whole ΔP for a profile): [`SealState::BelowMolecule`] when a channel percolates there
     /// (every percolating strip's gap is then no wider than a molecule: the molecule is what
     /// seals), [`SealState::Sealed`] when none does (percolation falls with the pressure, so
-    /// no strip percolates).
+    /// no strip percolates). The effective medium counts its sub-molecular gaps as contact, so
+    /// its channel percolates where the contact fraction alone is below the threshold ½; the
+    /// numerical level's cells are cut when its table is built, and it reads `Sealed` unless its
+    /// effective gap is positive.
     pub fn sealed_state(&self, s_least: f64) -> SealState {
-        match self.critical_junction(s_least.max(f64::MIN_POSITIVE)) {
-            Junction::Leaking(_) => SealState::BelowMolecule,
-            Junction::Sealed => SealState::Sealed,
+        let s = s_least.max(f64::MIN_POSITIVE);
+        let percolates = match self {
+            ContactPath::EffectiveMedium(t) => {
+                let exact = t.junctions().exact();
+                let sp = exact.spectrum();
+                exact.area_fraction(sp.q1() / sp.q0(), s) < 0.5
+            }
+            _ => self.critical_junction(s).leaking().is_some(),
+        };
+        if percolates {
+            SealState::BelowMolecule
+        } else {
+            SealState::Sealed
         }
     }
 }
@@ -675,7 +739,7 @@ impl StaticSolver {
     pub fn new(problem: StaticProblem, fidelity: Fidelity) -> Self {
         let path =
             ContactPath::for_fluid(&problem.spectrum, problem.contact, fidelity, &problem.fluid);
-        StaticSolver { problem, path }
+        Self::with_path(problem, path)
     }
 
     /// The path the solver evaluates.
@@ -685,7 +749,8 @@ impl StaticSolver {
 
     /// A solver on an already prepared path (built for the same spectrum and contact settings).
     pub fn with_path(problem: StaticProblem, path: ContactPath) -> Self {
-        StaticSolver { problem, path }
+        let cut = path.molecular_cut(problem.fluid.molecular_size());
+        StaticSolver { problem, path, cut }
     }
 
     pub fn problem(&self) -> &StaticProblem {
@@ -722,10 +787,19 @@ impl StaticSolver {
                 ) * pb.fluid.density_weight(top - e)
             }
         };
+        // σ is 0 at and above the molecular cut: the quadratures end there
+        let ceiling = self.cut * e_star;
         let (leak_rate, state) = if opening(p0, 0.0, dp).is_some() {
             let top = dp;
-            let conduction =
-                interface::uniform_onset(&sigma(top), top, dp, &InterfaceSettings::default());
+            let conduction = interface::uniform_onset(
+                &sigma(top),
+                top,
+                dp,
+                &InterfaceSettings {
+                    ceiling,
+                    ..InterfaceSettings::default()
+                },
+            );
             (
                 pb.fluid.leak_rate(pb.seal.geometry(), conduction),
                 SealState::LiftOff,
@@ -737,6 +811,7 @@ impl StaticSolver {
                 dp,
                 &InterfaceSettings {
                     outlet_breaks: pb.fluid.outlet_breaks(),
+                    ceiling,
                     ..InterfaceSettings::default()
                 },
             ) {

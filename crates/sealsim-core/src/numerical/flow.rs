@@ -717,6 +717,35 @@ mod tests {
     }
 
     #[test]
+    fn a_liquid_s_gap_below_a_molecule_conducts_nothing() {
+        // a strip of 0.2 nm gaps across the flow (below a water molecule, 0.31 nm): with the
+        // liquid's molecular size it is contact and nothing percolates; without it the cells
+        // conduct u³/(12η) in series (the defect of docs/model.md §8.1: a flow through gaps
+        // no wider than one molecule); a strip of 0.5 nm gaps still conducts, in series
+        let n = 32;
+        let molecule = crate::fluid::liquid_molecular_size();
+        let set = FlowSettings {
+            molecular_size: molecule,
+            ..FlowSettings::default()
+        };
+        let u2 = 5.0e-9;
+        let strip = |u: f64| grid(n, move |ix, _| if ix == n / 2 { u } else { u2 });
+        let s = solve(&strip(0.2e-9), n, PIXEL, ETA, &set).unwrap();
+        assert_eq!(s.conductance, 0.0);
+        assert!(!s.percolates);
+        let s = solve(&strip(0.2e-9), n, PIXEL, ETA, &FlowSettings::default()).unwrap();
+        assert!(s.percolates && s.conductance > 0.0, "{s:?}");
+        // wider than a molecule: the harmonic mean of the faces along x, as without it
+        let u1 = 0.5e-9;
+        // faces: n − 2 between open cells, 2 harmonic means 2σ1σ2/(σ1 + σ2) beside the strip
+        let series = n as f64 / ((n - 2) as f64 / sigma(u2) + 1.0 / sigma(u1) + 1.0 / sigma(u2));
+        let s = solve(&strip(u1), n, PIXEL, ETA, &set).unwrap();
+        assert!(rel(s.conductance, series) <= 1e-8, "{s:?} vs {series}");
+        let plain = solve(&strip(u1), n, PIXEL, ETA, &FlowSettings::default()).unwrap();
+        assert_eq!(s.conductance, plain.conductance);
+    }
+
+    #[test]
     fn a_contact_line_across_the_flow_seals_exactly() {
         let n = 32;
         let gap = grid(n, |ix, iy| {

@@ -74,6 +74,7 @@ const INTERFACE: InterfaceSettings = InterfaceSettings {
     steps: 128,
     tolerance: 1e-9,
     outlet_breaks: 0,
+    ceiling: f64::INFINITY,
 };
 
 /// Quadrature of the clogging contact path (the detour junctions and the reach): both
@@ -208,14 +209,18 @@ impl InterfaceLeak {
 /// modulus changes over the run, `follow`).
 struct InterfaceSolver {
     memo: HertzMemo,
+    /// The reduced pressure at and above which its path conducts nothing for the run's fluid
+    /// ([`ContactPath::molecular_cut`]).
+    cut: f64,
 }
 
 impl InterfaceSolver {
-    fn new(problem: &LifeProblem) -> Self {
+    fn new(problem: &LifeProblem, path: &ContactPath) -> Self {
         let pressure_spacing = (problem.asperity_modulus == AsperityModulus::Follow)
             .then_some(interface::MEMO_PRESSURE_SPACING);
         InterfaceSolver {
             memo: HertzMemo::new(interface::MEMO_SPACING, pressure_spacing),
+            cut: path.molecular_cut(problem.fluid.molecular_size()),
         }
     }
 
@@ -351,7 +356,6 @@ impl<'a> Simulator<'a> {
         });
         let mut simulator = Simulator {
             problem,
-            path,
             rule: gauss_legendre(problem.strips.max(2)),
             load0,
             deformation0: problem.geometry.deformation(
@@ -363,19 +367,21 @@ impl<'a> Simulator<'a> {
             creep: problem.material.prony.creep(),
             clogging_contact,
             reference_memo: std::cell::Cell::new(None),
-            counterface: InterfaceSolver::new(problem),
+            counterface: InterfaceSolver::new(problem, &path),
             groove: match &problem.groove {
-                GrooveInterface::Own(spectrum) => Some((
-                    ContactPath::for_fluid(
+                GrooveInterface::Own(spectrum) => {
+                    let own = ContactPath::for_fluid(
                         spectrum,
                         problem.contact,
                         problem.fidelity,
                         &problem.fluid,
-                    ),
-                    InterfaceSolver::new(problem),
-                )),
+                    );
+                    let solver = InterfaceSolver::new(problem, &own);
+                    Some((own, solver))
+                }
                 _ => None,
             },
+            path,
             drag,
         };
         simulator.reference_force = simulator.force_at_reference();
@@ -704,14 +710,19 @@ impl<'a> Simulator<'a> {
         // under a uniform contact pressure `top` the fluid pressure is top − e
         let weighted = |top: f64| move |e: f64| local(e, top - e);
         let geometry = profile.geometry(p.geometry.sealing_length());
+        let top = profile.peak() + offset;
         let series = || {
             // ΔP negligible: every strip at p̄ (gauge ΔP/2)
             let resistance =
                 profile.series_resistance(&self.rule, |pc| local(pc + offset, 0.5 * dp));
-            p.fluid
-                .leak_rate(geometry, Conduction::Series { resistance })
+            // the peak strip itself too: the rule's nodes need not fall where it seals
+            let conducts = resistance.is_finite() && local(top, 0.5 * dp) > 0.0;
+            (
+                conducts,
+                p.fluid
+                    .leak_rate(geometry, Conduction::Series { resistance }),
+            )
         };
-        let top = profile.peak() + offset;
         let junction_at = |e: f64| (path.critical_junction(e.max(0.0) / e_star), e.max(0.0));
         let open = || {
             // the profile loaded just to the threshold: its contact peak is ΔP
@@ -721,7 +732,7 @@ impl<'a> Simulator<'a> {
                 *profile
             };
             InterfaceLeak::new(
-                self.onset_leak(&local, &threshold, offset),
+                self.onset_leak(&local, &threshold, offset, solver.cut * e_star),
                 junction_at(top),
                 SealState::LiftOff,
             )
@@ -731,21 +742,20 @@ impl<'a> Simulator<'a> {
         }
         // the strips' σ is already 0 below a molecule: the interface leaks, or it is sealed,
         // by the molecule when its least-loaded strip (asperity pressure `least`) percolates
-        let outcome = |leak_rate: f64, junction: (Junction, f64), least: f64| {
-            let state = if leak_rate > 0.0 {
-                SealState::Leaking
+        // (a conducting interface under no pressure difference leaks nothing: `sealed`, as ever)
+        let outcome = |conducts: bool, leak_rate: f64, junction: (Junction, f64), least: f64| {
+            if !conducts {
+                InterfaceLeak::new(0.0, junction, path.sealed_state(least / e_star))
+            } else if leak_rate > 0.0 {
+                InterfaceLeak::new(leak_rate, junction, SealState::Leaking)
             } else {
-                path.sealed_state(least / e_star)
-            };
-            InterfaceLeak::new(
-                if state.is_sealed() { 0.0 } else { leak_rate },
-                junction,
-                state,
-            )
+                InterfaceLeak::new(leak_rate, junction, SealState::Sealed)
+            }
         };
         if dp <= NEGLIGIBLE_PRESSURE_RATIO * top {
             // every strip at its contact pressure: the peak's decides
-            return outcome(series(), junction_at(top), top);
+            let (conducts, leak_rate) = series();
+            return outcome(conducts, leak_rate, junction_at(top), top);
         }
         let (flow, junction) = match *profile {
             Profile::Uniform { pressure, .. } => (
@@ -755,6 +765,7 @@ impl<'a> Simulator<'a> {
                     dp,
                     &InterfaceSettings {
                         outlet_breaks: fluid.outlet_breaks(),
+                        ceiling: solver.cut * e_star,
                         ..INTERFACE
                     },
                 ),
@@ -778,10 +789,10 @@ impl<'a> Simulator<'a> {
         };
         match flow {
             InterfaceFlow::Conducting(conduction) => {
-                outcome(p.fluid.leak_rate(geometry, conduction), junction, top - dp)
+                outcome(true, p.fluid.leak_rate(geometry, conduction), junction, top - dp)
             }
             // no strip conducts even with the whole ΔP relieving it
-            InterfaceFlow::Sealed => outcome(0.0, junction, top - dp),
+            InterfaceFlow::Sealed => outcome(false, 0.0, junction, top - dp),
             InterfaceFlow::LiftOff => open(),
         }
     }
@@ -789,15 +800,25 @@ impl<'a> Simulator<'a> {
     /// The leak at the onset of lift-off (docs/model.md §3.6): the interface with the fluid
     /// pressure in it at its largest — the peak contact pressure, less 1e-9 of it for a Hertz
     /// profile — driving the flux; the last value the model gives for an open seal, a lower
-    /// bound.
-    fn onset_leak(&self, local: &dyn Fn(f64, f64) -> f64, profile: &Profile, offset: f64) -> f64 {
+    /// bound. σ is 0 at and above `ceiling` \[Pa\] (the molecular cut, §8.1).
+    fn onset_leak(
+        &self,
+        local: &dyn Fn(f64, f64) -> f64,
+        profile: &Profile,
+        offset: f64,
+        ceiling: f64,
+    ) -> f64 {
         let p = self.problem;
         let geometry = profile.geometry(p.geometry.sealing_length());
         let dp = p.fluid.pressure_difference;
         let conduction = match *profile {
             Profile::Uniform { pressure, .. } => {
                 let top = pressure + offset;
-                interface::uniform_onset(&|e| local(e, top - e), top, dp, &INTERFACE)
+                let settings = InterfaceSettings {
+                    ceiling,
+                    ..INTERFACE
+                };
+                interface::uniform_onset(&|e| local(e, top - e), top, dp, &settings)
             }
             Profile::Hertz { peak, width } => {
                 let onset = (peak + offset) * (1.0 - 1e-9);
