@@ -187,7 +187,10 @@ fn a_gap_below_a_molecule_counts_as_contact_in_the_bruggeman_average() {
     for (c, w) in [(0.1, 0.1), (0.2, 0.25), (0.3, 0.19)] {
         let g = medium(c, w).bruggeman_cubed_gap(cut);
         let expected = u0.powi(3) * (1.0 - 2.0 * (c + w));
-        assert!((g / expected - 1.0).abs() < 1e-9, "c {c} w {w}: {g} vs {expected}");
+        assert!(
+            (g / expected - 1.0).abs() < 1e-9,
+            "c {c} w {w}: {g} vs {expected}"
+        );
     }
     for (c, w) in [(0.3, 0.2), (0.3, 0.25), (0.0, 0.6)] {
         // sealed by the molecule: every gap that would carry the flow is below it
@@ -223,7 +226,10 @@ fn with_a_molecule_the_table_seals_where_half_the_gaps_are_below_it() {
     assert!(below(s_half) >= 0.5 && below(s_half * (1.0 - 1e-9)) < 0.5);
     // the direct solve agrees: open just below, sealed at and above
     assert!(EffectiveMedium::persson(&exact, s_half * 0.999, settings).cubed_gap > 0.0);
-    assert_eq!(EffectiveMedium::persson(&exact, s_half, settings).cubed_gap, 0.0);
+    assert_eq!(
+        EffectiveMedium::persson(&exact, s_half, settings).cubed_gap,
+        0.0
+    );
     assert_eq!(table.effective_gap(s_half * 1.001), 0.0);
     // and the table, laid against this threshold, matches the direct solve off its nodes
     let mut worst: f64 = 0.0;

@@ -230,7 +230,11 @@ fn a_load_sweep_never_goes_from_sealed_back_to_leaking_at_any_analytic_level() {
             let p0 = from * (to / from).powf(k as f64 / (points - 1) as f64);
             let pt = s.evaluate(p0);
             assert!(pt.leak_rate.is_finite() && pt.leak_rate >= 0.0, "{pt:?}");
-            assert_eq!(pt.state == SealState::LiftOff, p0 <= dp, "{fidelity:?} {pt:?}");
+            assert_eq!(
+                pt.state == SealState::LiftOff,
+                p0 <= dp,
+                "{fidelity:?} {pt:?}"
+            );
             if pt.state == SealState::LiftOff {
                 continue;
             }
@@ -254,11 +258,18 @@ fn a_load_sweep_never_goes_from_sealed_back_to_leaking_at_any_analytic_level() {
         }
         // the sweep crosses the cut: it leaks just past lift-off and is sealed by the molecule
         // (not by the loss of percolation) well before 60 kPa
-        assert_eq!(seen.first(), Some(&SealState::Leaking), "{fidelity:?} {seen:?}");
+        assert_eq!(
+            seen.first(),
+            Some(&SealState::Leaking),
+            "{fidelity:?} {seen:?}"
+        );
         assert!(
             seen.contains(&SealState::BelowMolecule),
             "{fidelity:?} {seen:?}"
         );
-        assert!(seen.last().is_some_and(|s| s.is_sealed()), "{fidelity:?} {seen:?}");
+        assert!(
+            seen.last().is_some_and(|s| s.is_sealed()),
+            "{fidelity:?} {seen:?}"
+        );
     }
 }

@@ -494,8 +494,7 @@ fn molecular_threshold(
     if !(m > 0.0) {
         return s_contact;
     }
-    let sealed =
-        |s: f64| super::SeparationDistribution::persson(exact, s, settings).cdf(m) >= 0.5;
+    let sealed = |s: f64| super::SeparationDistribution::persson(exact, s, settings).cdf(m) >= 0.5;
     let last = s_contact * (1.0 - upper_gap);
     if !sealed(last) {
         return s_contact;

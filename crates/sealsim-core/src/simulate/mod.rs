@@ -924,9 +924,12 @@ impl<'a> Simulator<'a> {
             }
         };
         match flow {
-            InterfaceFlow::Conducting(conduction) => {
-                outcome(true, p.fluid.leak_rate(geometry, conduction), junction, top - dp)
-            }
+            InterfaceFlow::Conducting(conduction) => outcome(
+                true,
+                p.fluid.leak_rate(geometry, conduction),
+                junction,
+                top - dp,
+            ),
             // no strip conducts even with the whole ΔP relieving it
             InterfaceFlow::Sealed => outcome(false, 0.0, junction, top - dp),
             InterfaceFlow::LiftOff => open(),
