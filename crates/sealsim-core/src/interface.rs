@@ -87,7 +87,8 @@ pub fn uniform(
     let lo = p0 - dp;
     // the strips at and above the ceiling conduct nothing
     let top = p0.min(settings.ceiling);
-    if !(top > lo) {
+    // (at ΔP = 0, lo = top = P0 below the ceiling: σ(P0), not sealed)
+    if settings.ceiling <= lo {
         return InterfaceFlow::Sealed;
     }
     // below ΔP/P0 ≈ 1e-8 the mean over [P0 − ΔP, P0] is σ(P0) to rounding
