@@ -179,8 +179,13 @@ fn motion_point(
         pb.fluid.viscosity,
         pb.shape_factor,
     );
-    // a critical gap below a molecule carries no film either (docs/model.md §8.1)
-    let coeffs = if point.state == crate::leak::SealState::BelowMolecule {
+    // a critical gap below a molecule carries no film either (docs/model.md §8.1), also where
+    // the strips the fluid pressure relieves leak
+    let below_molecule = point
+        .junction
+        .leaking()
+        .is_some_and(|j| !crate::fluid::passes_molecule(j.u_c, pb.fluid.molecular_size()));
+    let coeffs = if point.state == crate::leak::SealState::BelowMolecule || below_molecule {
         DragCoefficients::sealed(&seal)
     } else {
         DragCoefficients::compute(solver.path().exact(), &seal, &DragSettings::default())

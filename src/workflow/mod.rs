@@ -38,6 +38,7 @@ pub fn scenario_path(
         height_map: scenario.height_map.as_ref(),
         numerical: numerical_settings(scenario),
         numerical_nodes,
+        molecular_size: scenario.life.fluid.molecular_size(),
         ..PathOptions::default()
     };
     let pb = &scenario.problem;
@@ -48,12 +49,13 @@ pub fn scenario_path(
 }
 
 /// The scenario's `[numerical]` settings as its contact path uses them: a rarefied gas's cells
-/// rarefy at p̄ and the installation temperature (also the Python package's `sealsim.contact`
-/// at the numerical level).
+/// rarefy at p̄ and the installation temperature, and a cell no wider than a molecule of the
+/// fluid conducts nothing (also the Python package's `sealsim.contact` at the numerical level).
 pub fn numerical_settings(scenario: &Scenario) -> crate::numerical::reference::NumericalSettings {
     let mut numerical = scenario.numerical.clone();
     let life = &scenario.life;
     numerical.flow.gas = life.fluid.at(life.environment.at(0.0)).mean_free_path();
+    numerical.flow.molecular_size = life.fluid.molecular_size();
     numerical
 }
 

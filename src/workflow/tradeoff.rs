@@ -223,6 +223,7 @@ fn with_settings(problem: &LifeProblem, setting: &Setting) -> LifeProblem {
 fn analytic_path(life: &LifeProblem, setting: &Setting) -> ContactPath {
     let options = PathOptions {
         table: setting.table,
+        molecular_size: life.fluid.molecular_size(),
         ..PathOptions::default()
     };
     ContactPath::build(
@@ -450,6 +451,7 @@ fn band_limited_section(
                 p0 / e_star,
                 pb.shape_factor,
                 pb.fluid.viscosity,
+                pb.fluid.molecular_size(),
             )
         });
         let leak_rate = leak_rate_of(conductance);

@@ -165,6 +165,86 @@ fn conductance_vanishes_linearly_at_the_2d_threshold() {
     }
 }
 
+/// A water molecule's size (docs/model.md §8.1).
+fn molecule() -> f64 {
+    sealsim::fluid::liquid_molecular_size()
+}
+
+#[test]
+fn a_gap_below_a_molecule_counts_as_contact_in_the_bruggeman_average() {
+    // contact c, a sub-molecular phase w at 0.2 nm and an open phase at u0 (docs/model.md §3.3,
+    // §8.1): with the molecule the 0.2 nm gaps conduct nothing, so the closed form of one open
+    // separation among non-conductors holds with c + w: g = u0³ (1 − 2(c + w)), 0 at c + w ≥ ½
+    let u0: f64 = 1e-6;
+    let cut = EffectiveMediumSettings {
+        molecular_size: molecule(),
+        ..EffectiveMediumSettings::default()
+    };
+    let plain = EffectiveMediumSettings::default();
+    let medium = |c: f64, w: f64| {
+        SeparationDistribution::new(c, vec![point(w, 0.2e-9), point(1.0 - c - w, u0)])
+    };
+    for (c, w) in [(0.1, 0.1), (0.2, 0.25), (0.3, 0.19)] {
+        let g = medium(c, w).bruggeman_cubed_gap(cut);
+        let expected = u0.powi(3) * (1.0 - 2.0 * (c + w));
+        assert!(
+            (g / expected - 1.0).abs() < 1e-9,
+            "c {c} w {w}: {g} vs {expected}"
+        );
+    }
+    for (c, w) in [(0.3, 0.2), (0.3, 0.25), (0.0, 0.6)] {
+        // sealed by the molecule: every gap that would carry the flow is below it
+        assert_eq!(medium(c, w).bruggeman_cubed_gap(cut), 0.0, "c {c} w {w}");
+        // without it the 0.2 nm gaps percolate and conduct (the defect: a flow of gaps no
+        // wider than a molecule)
+        assert!(medium(c, w).bruggeman_cubed_gap(plain) > 0.0, "c {c} w {w}");
+    }
+    // a gap wider than the molecule is untouched: 0.5 nm conducts as before
+    let wide = SeparationDistribution::new(0.3, vec![point(0.25, 0.5e-9), point(0.45, u0)]);
+    assert_eq!(
+        wide.bruggeman_cubed_gap(cut),
+        wide.bruggeman_cubed_gap(plain)
+    );
+}
+
+#[test]
+fn with_a_molecule_the_table_seals_where_half_the_gaps_are_below_it() {
+    use sealsim::contact::{EffectiveMediumTable, TableSettings};
+    // the paper's surface: at 0.2 MPa 4.1 % of the area has a gap between 0 and 0.31 nm, so the
+    // medium seals where P(u ≤ 0.31 nm) reaches ½, before the contact fraction alone does
+    let exact = paper_contact();
+    let settings = EffectiveMediumSettings {
+        molecular_size: molecule(),
+        ..EffectiveMediumSettings::default()
+    };
+    let table =
+        EffectiveMediumTable::build(exact.clone(), TableSettings::effective_medium(), settings);
+    let s_half = table.sealing_reduced_pressure();
+    let zeta1 = exact.spectrum().q1() / exact.spectrum().q0();
+    assert!(exact.area_fraction(zeta1, s_half) < 0.5);
+    let below = |s: f64| SeparationDistribution::persson(&exact, s, settings).cdf(molecule());
+    assert!(below(s_half) >= 0.5 && below(s_half * (1.0 - 1e-9)) < 0.5);
+    // the direct solve agrees: open just below, sealed at and above
+    assert!(EffectiveMedium::persson(&exact, s_half * 0.999, settings).cubed_gap > 0.0);
+    assert_eq!(
+        EffectiveMedium::persson(&exact, s_half, settings).cubed_gap,
+        0.0
+    );
+    assert_eq!(table.effective_gap(s_half * 1.001), 0.0);
+    // and the table, laid against this threshold, matches the direct solve off its nodes
+    let mut worst: f64 = 0.0;
+    for k in 0..40 {
+        let r = 10f64.powf(-6.0 + 6.0 * (k as f64 + 0.37) / 40.0).min(0.999);
+        let s = r * s_half;
+        let direct = EffectiveMedium::persson(&exact, s, settings).effective_gap();
+        let looked_up = table.effective_gap(s);
+        assert!(direct > 0.0 && looked_up > 0.0, "r = {r}");
+        worst = worst.max((looked_up / direct - 1.0).abs());
+    }
+    eprintln!("effective-medium table with a molecule vs direct: worst {worst:.2e}");
+    assert!(worst < 1e-3, "worst relative error {worst:e}");
+}
+
 #[test]
 fn persson_effective_medium_seals_exactly_at_half_contact() {
     let c = paper_contact();

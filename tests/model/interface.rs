@@ -311,8 +311,13 @@ fn a_gas_follows_its_own_pressure_profile_through_a_hertz_contact() {
         }
         .at(t);
         let local = |e: f64, pf: f64| {
-            path.gas_conductance(e / e_star, 1.0, fluid.viscosity, fluid.free_path_at(pf))
-                * fluid.density_weight(pf)
+            path.gas_conductance(
+                e / e_star,
+                1.0,
+                fluid.viscosity,
+                fluid.free_path_at(pf),
+                fluid.molecular_size(),
+            ) * fluid.density_weight(pf)
         };
         let dp = pa - pb;
         let offset = 0.35e6;
@@ -376,5 +381,52 @@ fn a_gas_follows_its_own_pressure_profile_through_a_hertz_contact() {
             "{}: 128 steps {coarse} vs {uniform_flux}",
             g.id
         );
+    }
+}
+
+#[test]
+fn the_molecular_ceiling_ends_the_uniform_integral_in_closed_form() {
+    // σ(e) = c (e_s − e)² for e < e_s (docs/model.md §3.6), a ceiling e_m < e_s (§8.1: σ = 0
+    // at and above it): σ_eff = c [(e_s − lo)³ − (e_s − e_m)³] / (3 ΔP) with lo = P0 − ΔP
+    let (c, e_s, e_m, p0) = (1e-20, 1e5, 6e4, 8e4);
+    let sigma = |e: f64| if e < e_s { c * (e_s - e).powi(2) } else { 0.0 };
+    let cut = InterfaceSettings {
+        ceiling: e_m,
+        ..InterfaceSettings::default()
+    };
+    for dp in [3e4, 5e4, 7.9e4] {
+        let lo: f64 = p0 - dp;
+        let expected = c * ((e_s - lo).powi(3) - (e_s - e_m).powi(3)) / (3.0 * dp);
+        match uniform(&sigma, p0, dp, &cut) {
+            InterfaceFlow::Conducting(Conduction::Uniform { conductance }) => {
+                assert!(
+                    (conductance / expected - 1.0).abs() < 1e-9,
+                    "{conductance} vs {expected}"
+                )
+            }
+            other => panic!("ΔP {dp}: {other:?}"),
+        }
+    }
+    // every strip at or above the ceiling: sealed (ΔP = 2e4 leaves lo = 6e4 = e_m)
+    assert!(matches!(
+        uniform(&sigma, p0, 2e4, &cut),
+        InterfaceFlow::Sealed
+    ));
+    assert!(matches!(
+        uniform(&sigma, p0, 0.0, &cut),
+        InterfaceFlow::Sealed
+    ));
+    // ΔP = 0 below the ceiling: σ(P0), as without one (a wiper's drag needs the open junction)
+    let high = InterfaceSettings {
+        ceiling: 9e4,
+        ..InterfaceSettings::default()
+    };
+    for settings in [&high, &InterfaceSettings::default()] {
+        match uniform(&sigma, p0, 0.0, settings) {
+            InterfaceFlow::Conducting(Conduction::Uniform { conductance }) => {
+                assert!((conductance / sigma(p0) - 1.0).abs() < 1e-12)
+            }
+            other => panic!("ΔP = 0: {other:?}"),
+        }
     }
 }

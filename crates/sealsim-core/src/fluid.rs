@@ -358,6 +358,23 @@ pub enum Conduction {
 /// (25 °C), N_A = 6.02214076e23/mol.
 pub const WATER_MOLECULE_VOLUME: f64 = 0.018_015 / (997.05 * 6.022_140_76e23);
 
+/// The size of one molecule of every liquid \[m\] ([`Fluid::molecular_size`]): the edge of the
+/// cube one water molecule fills, `(M/(ρ N_A))^{1/3}` = 3.10e-10 m ([`WATER_MOLECULE_VOLUME`]).
+/// The default of the contact paths' [`crate::leak::PathOptions::molecular_size`].
+pub fn liquid_molecular_size() -> f64 {
+    WATER_MOLECULE_VOLUME.cbrt()
+}
+
+/// Whether a gap of height `gap` \[m\] passes a fluid whose molecule is `molecular_size` \[m\]
+/// ([`Fluid::molecular_size`]) — only if it is wider (docs/model.md §8.1). The one rule for every
+/// gap the model lets a fluid through, liquid or gas: the critical junction of each strip of the
+/// interface (§3.6) at every level, each local gap of the effective medium's Bruggeman average
+/// (§3.3) and each cell of the numerical level's Reynolds solve (§3.5); a rarefied gas's factor
+/// ([`crate::gas::Rarefied::factor`]) applies it too (§3.10).
+pub fn passes_molecule(gap: f64, molecular_size: f64) -> bool {
+    gap > molecular_size
+}
+
 impl Fluid {
     /// The dynamic viscosity at `temperature` \[K\] \[Pa·s\] by the fluid's law (its own
     /// [`Fluid::viscosity`], bit for bit, under [`ViscosityLaw::Constant`]).
@@ -446,7 +463,7 @@ impl Fluid {
     pub fn molecular_size(&self) -> f64 {
         match self.gas {
             Some(g) => g.gas.molecular_diameter,
-            None => WATER_MOLECULE_VOLUME.cbrt(),
+            None => liquid_molecular_size(),
         }
     }
 

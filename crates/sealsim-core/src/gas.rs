@@ -136,7 +136,7 @@ impl Rarefied {
     /// its continuum value: [`slit_rarefaction`] at Kn = λ_μ/u and aspect width/u, and 0 for a
     /// gap no wider than a molecule.
     pub fn factor(&self, u: f64, width: f64) -> f64 {
-        if u <= self.molecular_diameter {
+        if !crate::fluid::passes_molecule(u, self.molecular_diameter) {
             0.0
         } else {
             slit_rarefaction(self.free_path / u, width / u)

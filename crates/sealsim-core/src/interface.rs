@@ -50,6 +50,11 @@ pub struct InterfaceSettings {
     /// towards the outlet end e = P0 — for a rarefied gas against a vacuum, whose σ(e)·p goes
     /// like const − c p^0.4 there (docs/model.md §3.10); 0 otherwise.
     pub outlet_breaks: usize,
+    /// Uniform pressure: the asperity pressure \[Pa\] at and above which σ is 0 — the strips
+    /// whose critical gap is no wider than a molecule of the fluid (docs/model.md §3.6, §8.1;
+    /// `ContactPath::molecular_cut` times E*). σ jumps to 0 there, and the quadrature ends at
+    /// it, so that it integrates the smooth part only. ∞ (the default): none.
+    pub ceiling: f64,
 }
 
 impl Default for InterfaceSettings {
@@ -59,13 +64,16 @@ impl Default for InterfaceSettings {
             steps: 3200,
             tolerance: 1e-13,
             outlet_breaks: 0,
+            ceiling: f64::INFINITY,
         }
     }
 }
 
 /// Uniform contact pressure `contact_pressure` P0 \[Pa\] under `pressure_difference` ΔP \[Pa\],
 /// local conductance per unit width `sigma(e)` \[m³/(Pa·s)\] at asperity pressure e \[Pa\]:
-/// `σ_eff = (1/ΔP) ∫_{P0−ΔP}^{P0} σ(e) de` (σ(P0) at ΔP = 0); lift-off when ΔP ≥ P0.
+/// `σ_eff = (1/ΔP) ∫_{P0−ΔP}^{P0} σ(e) de` (σ(P0) at ΔP = 0); lift-off when ΔP ≥ P0. With a
+/// [`InterfaceSettings::ceiling`] e_m below P0 the integral ends there (σ = 0 above it):
+/// `(1/ΔP) ∫_{P0−ΔP}^{min(P0, e_m)} σ(e) de`, sealed when e_m ≤ P0 − ΔP.
 pub fn uniform(
     sigma: &dyn Fn(f64) -> f64,
     contact_pressure: f64,
@@ -77,20 +85,32 @@ pub fn uniform(
         return InterfaceFlow::LiftOff;
     }
     let lo = p0 - dp;
+    // the strips at and above the ceiling conduct nothing
+    let top = p0.min(settings.ceiling);
+    // (at ΔP = 0, lo = top = P0 below the ceiling: σ(P0), not sealed)
+    if settings.ceiling <= lo {
+        return InterfaceFlow::Sealed;
+    }
     // below ΔP/P0 ≈ 1e-8 the mean over [P0 − ΔP, P0] is σ(P0) to rounding
-    let conductance = if dp <= 1e-8 * p0 {
+    let conductance = if dp <= 1e-8 * p0 && top >= p0 {
         sigma(p0 - 0.5 * dp)
     } else if settings.outlet_breaks > 0 {
         // graded towards e = P0: the integral as a sum over [lo, b1], [b1, b2], …, [bn, P0]
         let mut edges = vec![lo];
-        edges.extend((1..=settings.outlet_breaks).map(|k| p0 - dp * 0.25f64.powi(k as i32)));
-        edges.push(p0);
+        edges.extend(
+            (1..=settings.outlet_breaks)
+                .map(|k| p0 - dp * 0.25f64.powi(k as i32))
+                .filter(|&b| b < top),
+        );
+        edges.push(top);
         edges
             .windows(2)
             .filter(|w| w[1] > w[0])
             .map(|w| mean_over(sigma, w[0], w[1], settings) * (w[1] - w[0]))
             .sum::<f64>()
             / dp
+    } else if top < p0 {
+        mean_over(sigma, lo, top, settings) * (top - lo) / dp
     } else {
         mean_over(sigma, lo, p0, settings)
     };
@@ -103,7 +123,8 @@ pub fn uniform(
 
 /// The uniform contact at the onset of lift-off, as the conduction the leak law takes at the
 /// actual ΔP \[Pa\]: the flux with the fluid pressure in the interface at its largest, P0,
-/// `q L_x = ∫_0^{P0} σ(e) de`, so `σ_eff = (1/ΔP) ∫_0^{P0} σ(e) de`. Once lifted off the seal is
+/// `q L_x = ∫_0^{P0} σ(e) de` (up to the [`InterfaceSettings::ceiling`] if that is lower), so
+/// `σ_eff = (1/ΔP) ∫_0^{P0} σ(e) de`. Once lifted off the seal is
 /// open and its leak is not the interface's any more: this is the last value the model gives, a
 /// lower bound (docs/model.md §3.6).
 pub fn uniform_onset(
@@ -113,9 +134,15 @@ pub fn uniform_onset(
     settings: &InterfaceSettings,
 ) -> Conduction {
     let p0 = contact_pressure;
-    // ∫_0^{P0}: the integrand σ(e)·e of the log rule vanishes as e → 0; start 1e-12 P0 below
+    // ∫_0^{P0}: the integrand σ(e)·e of the log rule vanishes as e → 0; start 1e-12 P0 below;
+    // end at the ceiling (σ = 0 above it)
     let floor = 1e-12 * p0;
-    let integral = mean_over(sigma, floor, p0, settings) * (p0 - floor);
+    let top = p0.min(settings.ceiling);
+    let integral = if top > floor {
+        mean_over(sigma, floor, top, settings) * (top - floor)
+    } else {
+        0.0
+    };
     Conduction::Uniform {
         conductance: integral / pressure_difference,
     }

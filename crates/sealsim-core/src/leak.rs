@@ -4,7 +4,7 @@ use crate::contact::{
     ContactSettings, ContactTable, CriticalJunction, EffectiveMediumSettings, EffectiveMediumTable,
     Elastic, FullContact, Junction, PerssonContact, TableSettings,
 };
-use crate::fluid::{Fluid, junction_conductance};
+use crate::fluid::{Fluid, junction_conductance, passes_molecule};
 use crate::interface::{self, InterfaceFlow, InterfaceSettings};
 use crate::numerical::HeightMap;
 use crate::numerical::reference::NumericalSettings;
@@ -287,6 +287,8 @@ pub fn lift_off_threshold(energisation: f64, pressure_difference: f64) -> f64 {
 pub struct StaticSolver {
     problem: StaticProblem,
     path: ContactPath,
+    /// [`ContactPath::molecular_cut`] for the problem's fluid.
+    cut: f64,
 }
 
 /// The contact-and-gap model of one surface at the chosen [`Fidelity`], prepared once (a table
@@ -307,9 +309,9 @@ pub enum ContactPath {
     },
 }
 
-/// How the levels that have one build their table, and where the numerical level gets its
-/// surfaces.
-#[derive(Debug, Clone, Default)]
+/// How the levels that have one build their table, where the numerical level gets its
+/// surfaces, and the fluid's molecule the averaging levels build with.
+#[derive(Debug, Clone)]
 pub struct PathOptions<'a> {
     /// Spacing of the critical-junction table (the effective-medium table uses ⅔ of its
     /// points per decade, over [`TableSettings::effective_medium`]'s range).
@@ -322,12 +324,30 @@ pub struct PathOptions<'a> {
     /// Reduced pressures P0/E* at which the numerical level solves (a pressure sweep: exactly
     /// the pressures asked for); `None`: its default nodes, for a life run.
     pub numerical_nodes: Option<Vec<f64>>,
+    /// The size of one molecule of the fluid \[m\] ([`Fluid::molecular_size`]; default a
+    /// liquid's, [`crate::fluid::liquid_molecular_size`]): the effective-medium and numerical
+    /// levels tabulate with every local gap no wider conducting nothing (docs/model.md §3.3,
+    /// §3.5, §8.1). The critical-junction levels apply the same rule when evaluated
+    /// ([`ContactPath::conductance`]), whatever this is.
+    pub molecular_size: f64,
+}
+
+impl Default for PathOptions<'_> {
+    fn default() -> Self {
+        PathOptions {
+            table: TableSettings::default(),
+            numerical: NumericalSettings::default(),
+            height_map: None,
+            numerical_nodes: None,
+            molecular_size: crate::fluid::liquid_molecular_size(),
+        }
+    }
 }
 
 impl ContactPath {
     /// Builds the path for `spectrum` with the default options (critical-junction table ≈ 3 ms;
     /// effective-medium table ≈ 0.5 s; the numerical level: an ensemble at 10 pressures,
-    /// ≈ 10–30 s). See [`Self::build`].
+    /// ≈ 10–30 s), for a liquid. See [`Self::build`].
     pub fn new(spectrum: &Spectrum, settings: ContactSettings, fidelity: Fidelity) -> Self {
         Self::build(
             spectrum,
@@ -336,6 +356,21 @@ impl ContactPath {
             &PathOptions::default(),
             &mut |_, _| {},
         )
+    }
+
+    /// [`Self::new`] for `fluid`: the averaging levels tabulate with its molecule
+    /// ([`PathOptions::molecular_size`]).
+    pub fn for_fluid(
+        spectrum: &Spectrum,
+        settings: ContactSettings,
+        fidelity: Fidelity,
+        fluid: &Fluid,
+    ) -> Self {
+        let options = PathOptions {
+            molecular_size: fluid.molecular_size(),
+            ..PathOptions::default()
+        };
+        Self::build(spectrum, settings, fidelity, &options, &mut |_, _| {})
     }
 
     /// Builds the path; `progress(done, total)` reports the numerical level's realisations.
@@ -365,17 +400,22 @@ impl ContactPath {
                 ContactPath::EffectiveMedium(Box::new(EffectiveMediumTable::build(
                     exact,
                     em_table,
-                    EffectiveMediumSettings::default(),
+                    EffectiveMediumSettings {
+                        molecular_size: options.molecular_size,
+                        ..EffectiveMediumSettings::default()
+                    },
                 )))
             }
             Fidelity::Numerical => {
                 let s_seal = exact.sealing_reduced_pressure();
+                let mut settings = options.numerical.clone();
+                settings.flow.molecular_size = options.molecular_size;
                 let numerical = NumericalTable::for_surface(
                     spectrum,
                     options.height_map,
                     options.numerical_nodes.as_deref(),
                     s_seal,
-                    &options.numerical,
+                    &settings,
                     progress,
                 );
                 ContactPath::Numerical {
@@ -518,19 +558,38 @@ impl ContactPath {
 
     /// Conductance per unit width of the interface at `s` \[m³/(Pa·s)\]: `α u_c³/(12η)` for the
     /// critical-junction levels (PY08 eq. 1), `σ_eff = u_eff³/(12η)` for the effective medium
-    /// (α does not enter); 0 when sealed.
-    pub fn conductance(&self, s: f64, shape_factor: f64, viscosity: f64) -> f64 {
+    /// (α does not enter); 0 when sealed, and 0 where the level's gap (u_c, u_eff) is no wider
+    /// than `molecular_size` \[m\], one molecule of the fluid ([`Fluid::molecular_size`],
+    /// [`crate::fluid::passes_molecule`]; docs/model.md §3.6, §8.1). Since the gap is a function
+    /// of `s` alone, the cut is one reduced pressure for a surface and a fluid, and every strip of
+    /// the interface (§3.6) meets it where the outlet's junction does.
+    pub fn conductance(
+        &self,
+        s: f64,
+        shape_factor: f64,
+        viscosity: f64,
+        molecular_size: f64,
+    ) -> f64 {
         if let ContactPath::Table(t) = self {
-            return t.critical_gap(s).map_or(0.0, |u_c| {
-                junction_conductance(u_c, shape_factor, viscosity)
-            });
+            return t
+                .critical_gap(s)
+                .filter(|&u_c| passes_molecule(u_c, molecular_size))
+                .map_or(0.0, |u_c| {
+                    junction_conductance(u_c, shape_factor, viscosity)
+                });
         }
-        self.channel_conductance(&self.critical_junction(s), shape_factor, viscosity)
+        self.channel_conductance(
+            &self.critical_junction(s),
+            shape_factor,
+            viscosity,
+            molecular_size,
+        )
     }
 
     /// [`Self::conductance`] of a gas with the mean free path of the local pressure (`gas`;
     /// `None`: a liquid, or the continuum law), docs/model.md §3.10 — a gap no wider than a
-    /// molecule conducts nothing:
+    /// molecule (`molecular_size`, the gas's diameter) conducts nothing, at every level as in
+    /// [`Self::conductance`]:
     /// * critical-junction levels: `α u_c³ f(λ/u_c, λc/u_c)/(12η)`, f the slit rarefaction
     ///   factor ([`crate::gas::slit_rarefaction`]) at the critical constriction's own Knudsen
     ///   number, the constriction λc wide;
@@ -546,12 +605,17 @@ impl ContactPath {
         shape_factor: f64,
         viscosity: f64,
         gas: Option<crate::gas::Rarefied>,
+        molecular_size: f64,
     ) -> f64 {
         let Some(l) = gas else {
-            return self.conductance(s, shape_factor, viscosity);
+            return self.conductance(s, shape_factor, viscosity, molecular_size);
         };
         let alpha = match self {
             ContactPath::EffectiveMedium(t) => {
+                // the level's gap (the reported u_eff) below a molecule: as every level
+                if !passes_molecule(t.effective_gap(s), molecular_size) {
+                    return 0.0;
+                }
                 return t.rarefied_cubed_gap(s, l) / (12.0 * viscosity);
             }
             ContactPath::Numerical {
@@ -562,7 +626,7 @@ impl ContactPath {
                 // cell by cell at the table's mean free path; the local pressure's change of it
                 // carried by the critical constriction's own factor
                 let u = table.effective_gap(s);
-                if u <= 0.0 {
+                if !passes_molecule(u, molecular_size) {
                     return 0.0;
                 }
                 let ratio = match junctions.critical_junction(s) {
@@ -578,7 +642,7 @@ impl ContactPath {
         };
         // the channel: u_c (u_eff for the numerical level) and its lateral extent λc
         match self.critical_junction(s) {
-            Junction::Leaking(j) if j.u_c > 0.0 => {
+            Junction::Leaking(j) if j.u_c > 0.0 && passes_molecule(j.u_c, molecular_size) => {
                 junction_conductance(j.u_c, alpha, viscosity) * l.factor(j.u_c, j.lambda_c)
             }
             _ => 0.0,
@@ -591,14 +655,93 @@ impl ContactPath {
         junction: &Junction,
         shape_factor: f64,
         viscosity: f64,
+        molecular_size: f64,
     ) -> f64 {
         let alpha = match self {
             ContactPath::EffectiveMedium(_) | ContactPath::Numerical { .. } => 1.0,
             _ => shape_factor,
         };
         match junction {
-            Junction::Leaking(j) => junction_conductance(j.u_c, alpha, viscosity),
-            Junction::Sealed => 0.0,
+            Junction::Leaking(j) if passes_molecule(j.u_c, molecular_size) => {
+                junction_conductance(j.u_c, alpha, viscosity)
+            }
+            _ => 0.0,
+        }
+    }
+
+    /// The reduced pressure `s_m = e/E*` at and above which the level's gap (u_c; u_eff) is no
+    /// wider than `molecular_size` \[m\], so that [`Self::conductance`] is 0 (docs/model.md
+    /// §3.6, §8.1). The gap falls with the pressure, so the cut is one reduced pressure for a
+    /// surface and a fluid: found once by bisection in ln s to 1e-10 — between the
+    /// level's own sealing pressure and 1e-6 of it (the effective medium's table), or 1e-30 and
+    /// 1e3 — and handed to the uniform interface's quadrature as its ceiling
+    /// ([`crate::interface::InterfaceSettings::ceiling`]), which then integrates the smooth
+    /// part of σ(e) only. `∞` if the gap is wider at 1e3 (no surface seals that late); 1e-30 if
+    /// it is no wider even there.
+    pub fn molecular_cut(&self, molecular_size: f64) -> f64 {
+        let passes = |s: f64| {
+            let gap = match self {
+                ContactPath::Table(t) => t.critical_gap(s),
+                ContactPath::EffectiveMedium(t) => Some(t.effective_gap(s)),
+                ContactPath::Numerical { table, .. } => Some(table.effective_gap(s)),
+                _ => self.critical_junction(s).leaking().map(|j| j.u_c),
+            };
+            gap.is_some_and(|u| passes_molecule(u, molecular_size))
+        };
+        // where the level's gap is 0 at and above its sealing pressure, the cut lies below it;
+        // the effective medium's table spans 6 decades beneath (outside it every gap is a solve)
+        let narrow = match self {
+            ContactPath::EffectiveMedium(t) => {
+                let s = t.sealing_reduced_pressure();
+                Some((1e-6 * s, s))
+            }
+            _ => None,
+        };
+        let (lo, hi) = match narrow {
+            Some((a, b)) if passes(a) && !passes(b) => (a.ln(), b.ln()),
+            _ => (1e-30f64.ln(), 1e3f64.ln()),
+        };
+        if passes(hi.exp()) {
+            return f64::INFINITY;
+        }
+        if !passes(lo.exp()) {
+            return lo.exp();
+        }
+        let (_, hi) = crate::math::roots::bisect(
+            lo,
+            hi,
+            usize::MAX,
+            // 1e-10 of s: the integral misses or adds σ(e_m) e_m 1e-10 at most
+            |a, b| b - a <= 1e-10,
+            |x| passes(x.exp()),
+        );
+        hi.exp()
+    }
+
+    /// The state of an interface that conducts nothing under the fluid pressure (docs/model.md
+    /// §3.6, §8.1), from its least-loaded strip — the one the fluid pressure relieves most, at
+    /// reduced asperity pressure `s_least` (`(P0 − ΔP)/E*` for a uniform contact, the peak less
+    /// the whole ΔP for a profile): [`SealState::BelowMolecule`] when a channel percolates there
+    /// (every percolating strip's gap is then no wider than a molecule: the molecule is what
+    /// seals), [`SealState::Sealed`] when none does (percolation falls with the pressure, so
+    /// no strip percolates). The effective medium counts its sub-molecular gaps as contact, so
+    /// its channel percolates where the contact fraction alone is below the threshold ½; the
+    /// numerical level's cells are cut when its table is built, and it reads `Sealed` unless its
+    /// effective gap is positive.
+    pub fn sealed_state(&self, s_least: f64) -> SealState {
+        let s = s_least.max(f64::MIN_POSITIVE);
+        let percolates = match self {
+            ContactPath::EffectiveMedium(t) => {
+                let exact = t.junctions().exact();
+                let sp = exact.spectrum();
+                exact.area_fraction(sp.q1() / sp.q0(), s) < 0.5
+            }
+            _ => self.critical_junction(s).leaking().is_some(),
+        };
+        if percolates {
+            SealState::BelowMolecule
+        } else {
+            SealState::Sealed
         }
     }
 }
@@ -606,8 +749,9 @@ impl ContactPath {
 impl StaticSolver {
     /// Prepares the solver (builds the level's table, if it has one).
     pub fn new(problem: StaticProblem, fidelity: Fidelity) -> Self {
-        let path = ContactPath::new(&problem.spectrum, problem.contact, fidelity);
-        StaticSolver { problem, path }
+        let path =
+            ContactPath::for_fluid(&problem.spectrum, problem.contact, fidelity, &problem.fluid);
+        Self::with_path(problem, path)
     }
 
     /// The path the solver evaluates.
@@ -617,7 +761,8 @@ impl StaticSolver {
 
     /// A solver on an already prepared path (built for the same spectrum and contact settings).
     pub fn with_path(problem: StaticProblem, path: ContactPath) -> Self {
-        StaticSolver { problem, path }
+        let cut = path.molecular_cut(problem.fluid.molecular_size());
+        StaticSolver { problem, path, cut }
     }
 
     pub fn problem(&self) -> &StaticProblem {
@@ -630,13 +775,17 @@ impl StaticSolver {
     /// [`ContactPath::conductance`] ([`interface::uniform`]). Lifted off when P0 ≤ ΔP
     /// ([`opening`] with k_e = 0), with the leak at the threshold of lift-off, P0 = ΔP
     /// ([`interface::uniform_onset`], a lower bound that does not grow with P0). The junction is
-    /// the outlet's (asperity pressure P0), where the asperities carry most; a critical gap
-    /// narrower than a molecule of the fluid conducts nothing ([`SealState::BelowMolecule`]).
+    /// the outlet's (asperity pressure P0), where the asperities carry most. Every strip whose
+    /// critical gap is no wider than a molecule of the fluid conducts nothing
+    /// ([`ContactPath::conductance`]); an interface that conducts nowhere is sealed, by the
+    /// molecule ([`SealState::BelowMolecule`]) when a channel percolates in its least-loaded
+    /// strip ([`ContactPath::sealed_state`]).
     pub fn evaluate(&self, p0: f64) -> LeakPoint {
         let pb = &self.problem;
         let dp = pb.fluid.pressure_difference;
         let e_star = pb.material.effective_modulus();
         let junction = self.path.critical_junction(p0 / e_star);
+        let molecule = pb.fluid.molecular_size();
         // a gas: σ(e) weighed by the local density (P_b + p_f)/p̄, p_f = top − e, each
         // constriction rarefied at the local pressure (docs/model.md §3.9, §3.10); 1 for a liquid
         let sigma = |top: f64| {
@@ -646,13 +795,23 @@ impl StaticSolver {
                     pb.shape_factor,
                     pb.fluid.viscosity,
                     pb.fluid.free_path_at(top - e),
+                    molecule,
                 ) * pb.fluid.density_weight(top - e)
             }
         };
+        // σ is 0 at and above the molecular cut: the quadratures end there
+        let ceiling = self.cut * e_star;
         let (leak_rate, state) = if opening(p0, 0.0, dp).is_some() {
             let top = dp;
-            let conduction =
-                interface::uniform_onset(&sigma(top), top, dp, &InterfaceSettings::default());
+            let conduction = interface::uniform_onset(
+                &sigma(top),
+                top,
+                dp,
+                &InterfaceSettings {
+                    ceiling,
+                    ..InterfaceSettings::default()
+                },
+            );
             (
                 pb.fluid.leak_rate(pb.seal.geometry(), conduction),
                 SealState::LiftOff,
@@ -664,23 +823,15 @@ impl StaticSolver {
                 dp,
                 &InterfaceSettings {
                     outlet_breaks: pb.fluid.outlet_breaks(),
+                    ceiling,
                     ..InterfaceSettings::default()
                 },
             ) {
-                InterfaceFlow::Conducting(conduction) => {
-                    if junction
-                        .leaking()
-                        .is_some_and(|j| j.u_c <= pb.fluid.molecular_size())
-                    {
-                        (0.0, SealState::BelowMolecule)
-                    } else {
-                        (
-                            pb.fluid.leak_rate(pb.seal.geometry(), conduction),
-                            SealState::Leaking,
-                        )
-                    }
-                }
-                InterfaceFlow::Sealed => (0.0, SealState::Sealed),
+                InterfaceFlow::Conducting(conduction) => (
+                    pb.fluid.leak_rate(pb.seal.geometry(), conduction),
+                    SealState::Leaking,
+                ),
+                InterfaceFlow::Sealed => (0.0, self.path.sealed_state((p0 - dp) / e_star)),
                 InterfaceFlow::LiftOff => (0.0, SealState::LiftOff),
             }
         };

@@ -19,7 +19,10 @@
 //! `∫ P(u) (σ_eff − σ(u))/(σ_eff + σ(u)) du = 0`. η cancels, so it is solved for
 //! `g = 12 η σ_eff = u_eff³` \[m³\] by bisection in ln g. The left-hand side increases
 //! monotonically from `2c − 1` (g → 0⁺) to 1 (g → ∞): a root exists only below the 2-D
-//! threshold c < 1/2; at and above it the interface is sealed, g = 0 exactly.
+//! threshold c < 1/2; at and above it the interface is sealed, g = 0 exactly. A gap no wider
+//! than one molecule of the fluid ([`EffectiveMediumSettings::molecular_size`]; a rarefied gas's
+//! diameter) conducts nothing (docs/model.md §8.1) and counts as contact: c is then
+//! `P(u ≤ molecule)`, and the medium seals where that reaches ½.
 //! The leak rate of a flat seal is `Q̇ = (L_y/L_x) σ_eff ΔP` (docs/model.md §3.3).
 
 use super::PerssonContact;
@@ -44,6 +47,12 @@ pub struct EffectiveMediumSettings {
     pub u_panels: usize,
     /// Gauss–Legendre points per u panel.
     pub u_order: usize,
+    /// The size of one molecule of the fluid \[m\] ([`crate::fluid::Fluid::molecular_size`]): a
+    /// local gap no wider conducts nothing in the Bruggeman average — it counts as contact
+    /// ([`crate::fluid::passes_molecule`], docs/model.md §3.3, §8.1). 0 (the default): every open
+    /// gap conducts; a contact path sets its fluid's
+    /// ([`crate::leak::PathOptions::molecular_size`]). A rarefied gas uses its own diameter.
+    pub molecular_size: f64,
 }
 
 impl Default for EffectiveMediumSettings {
@@ -53,6 +62,7 @@ impl Default for EffectiveMediumSettings {
             order: 8,
             u_panels: 4,
             u_order: 10,
+            molecular_size: 0.0,
         }
     }
 }
@@ -65,6 +75,7 @@ impl EffectiveMediumSettings {
             order: self.order,
             u_panels: self.u_panels * factor,
             u_order: self.u_order,
+            molecular_size: self.molecular_size,
         }
     }
 }
@@ -233,8 +244,9 @@ impl SeparationDistribution {
     }
 
     /// `12 η σ_eff` \[m³\] of the 2-D Bruggeman medium with local conductance `u³/(12η)`
-    /// (module docs); exactly 0 at and above the threshold `contact_fraction ≥ 1/2`, or when
-    /// no component has a positive gap.
+    /// (module docs), 0 for a gap no wider than `settings.molecular_size` m; exactly 0 at and
+    /// above the threshold — `P(u ≤ molecular size) ≥ 1/2`, the contact fraction alone when the
+    /// molecular size is 0 — or when no component has a positive gap.
     pub fn bruggeman_cubed_gap(&self, settings: EffectiveMediumSettings) -> f64 {
         self.bruggeman(settings, None)
     }
@@ -257,7 +269,13 @@ impl SeparationDistribution {
         settings: EffectiveMediumSettings,
         free_path: Option<(crate::gas::Rarefied, f64)>,
     ) -> f64 {
-        if self.contact >= 0.5 {
+        // the gaps no wider than a molecule count as contact (docs/model.md §8.1): as g → 0⁺
+        // the residual tends to 2 P(u ≤ molecule) − 1, so the medium conducts only below ½
+        let molecule = match free_path {
+            Some((l, _)) => l.molecular_diameter,
+            None => settings.molecular_size,
+        };
+        if self.contact >= 0.5 || (molecule > 0.0 && self.cdf(molecule) >= 0.5) {
             return 0.0;
         }
         // Wiener's upper bound: the arithmetic mean of the local conductance (where the
@@ -284,7 +302,14 @@ impl SeparationDistribution {
             }
         }
         let residual = |g: f64| {
-            self.bruggeman_residual(g, settings.u_panels.max(1), &nodes, &weights, gas.as_ref())
+            self.bruggeman_residual(
+                g,
+                settings.u_panels.max(1),
+                &nodes,
+                &weights,
+                gas.as_ref(),
+                settings.molecular_size,
+            )
         };
         let mut hi = upper.ln();
         if let Some((l, width)) = free_path {
@@ -438,8 +463,9 @@ impl SeparationDistribution {
         total
     }
 
-    /// `∫ P(u) (g − c(u))/(g + c(u)) du` with the local `c(u) = |u|³`, or `|u|³ f(λ/|u|)` for
-    /// a gas with mean free path `free_path` λ (monotonically increasing in g > 0).
+    /// `∫ P(u) (g − c(u))/(g + c(u)) du` with the local `c(u) = |u|³` (0 for |u| no wider than
+    /// `molecule` \[m\]), or `|u|³ f(λ/|u|)` for a gas with mean free path `free_path` λ (0 below
+    /// its own molecular diameter); monotonically increasing in g > 0.
     fn bruggeman_residual(
         &self,
         g: f64,
@@ -447,11 +473,13 @@ impl SeparationDistribution {
         nodes: &[f64],
         weights: &[f64],
         gas: Option<&GasConductance>,
+        molecule: f64,
     ) -> f64 {
         let local = |u: f64| {
             let a = u.abs();
             match gas {
                 Some(gas) => gas.at(a),
+                None if !crate::fluid::passes_molecule(a, molecule) => 0.0,
                 None => a * a * a,
             }
         };
@@ -476,13 +504,15 @@ impl SeparationDistribution {
                 (0.5 * (lo + hi)).exp()
             }
         };
-        // the kernel turns over at u*; a gas's conductance jumps at the molecular diameter
+        // the kernel turns over at u*; the local conductance jumps at the molecular size
         let mut breaks = vec![0.0];
         for x in [0.5, 1.0, 2.0, 4.0] {
             breaks.extend([x * u_eff, -x * u_eff]);
         }
-        if let Some(gas) = gas {
-            breaks.extend([gas.diameter, -gas.diameter]);
+        match gas {
+            Some(gas) => breaks.extend([gas.diameter, -gas.diameter]),
+            None if molecule > 0.0 => breaks.extend([molecule, -molecule]),
+            None => {}
         }
         self.expectation(self.contact, &breaks, panels, nodes, weights, &kernel)
     }
@@ -527,7 +557,7 @@ impl GasConductance {
 
     /// `u³ f(λ/u, w/u)` at `u` ≥ 0.
     fn at(&self, u: f64) -> f64 {
-        if u <= self.diameter {
+        if !crate::fluid::passes_molecule(u, self.diameter) {
             return 0.0;
         }
         let u3 = u * u * u;

@@ -287,7 +287,8 @@ impl EffectiveMediumTable {
         table: TableSettings,
         settings: EffectiveMediumSettings,
     ) -> Self {
-        let s_half = exact.reduced_pressure_at_area(0.5);
+        let s_contact = exact.reduced_pressure_at_area(0.5);
+        let s_half = molecular_threshold(&exact, settings, s_contact, table.upper_gap);
         let ln_h = exact.spectrum().rms_roughness().ln();
         let (lo, h, n) = table.logit_grid();
         // Each node is an independent Bruggeman solve of a few ms: two threads take alternate
@@ -453,20 +454,63 @@ impl EffectiveMediumTable {
         self.settings
     }
 
-    /// The reduced pressure at which the contact fraction reaches ½ (sealed at and above).
+    /// The reduced pressure the table is laid against, at and above which the medium is sealed:
+    /// where the contact fraction reaches ½, or — with a molecular size whose threshold lies
+    /// below the table's last node — where `P(u ≤ molecule)` does ([`molecular_threshold`]).
     pub fn sealing_reduced_pressure(&self) -> f64 {
         self.s_half
     }
 
     /// `u_eff` \[m\] at `s = P0/E*`: interpolated inside the table, solved outside; 0 when
-    /// sealed.
+    /// sealed (at and above [`Self::sealing_reduced_pressure`]).
     pub fn effective_gap(&self, s: f64) -> f64 {
+        if s >= self.s_half {
+            return 0.0;
+        }
         let v = logit(s / self.s_half);
         match &self.grid {
             Some(g) if v >= g.range().0 && v <= g.range().1 => (g.eval(v) + self.ln_h).exp(),
             _ => EffectiveMedium::persson(self.junctions.exact(), s, self.settings).effective_gap(),
         }
     }
+}
+
+/// The reduced pressure the effective medium of `settings` is tabulated against, at and above
+/// which it is sealed (docs/model.md §3.3): `s_contact`, where the contact fraction alone reaches
+/// ½, when every open gap conducts. With a molecular size m the gaps no wider than m count as
+/// contact and the medium seals where `P(u ≤ m)` reaches ½ ([`super::SeparationDistribution::cdf`],
+/// which rises with the pressure: more contact, narrower gaps). Where that happens above the
+/// table's last node, `(1 − upper_gap) s_contact`, the table is unchanged and the direct solves
+/// beyond its last node find the threshold (one distribution built to check); below it, the
+/// threshold is found by bisection in ln s (to 1e-10, over 15 decades) and the grid is laid
+/// against it, so that the approach to the medium's own threshold is tabulated.
+fn molecular_threshold(
+    exact: &PerssonContact,
+    settings: EffectiveMediumSettings,
+    s_contact: f64,
+    upper_gap: f64,
+) -> f64 {
+    let m = settings.molecular_size;
+    if !(m > 0.0) {
+        return s_contact;
+    }
+    let sealed = |s: f64| super::SeparationDistribution::persson(exact, s, settings).cdf(m) >= 0.5;
+    let last = s_contact * (1.0 - upper_gap);
+    if !sealed(last) {
+        return s_contact;
+    }
+    let floor = s_contact * 1e-15;
+    if sealed(floor) {
+        return floor;
+    }
+    let (_, hi) = crate::math::roots::bisect(
+        floor.ln(),
+        last.ln(),
+        200,
+        |lo, hi| hi - lo <= 1e-10,
+        |x| !sealed(x.exp()),
+    );
+    hi.exp()
 }
 
 /// `ln(r/(1−r))`: log-uniform for r → 0, stretched towards the sealing end r → 1 (the grid

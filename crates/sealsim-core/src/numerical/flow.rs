@@ -128,6 +128,11 @@ pub struct FlowSettings {
     /// factor f(λ/u, pixel/u) at this mean free path, 0 for a gap no wider than a molecule
     /// (`None`: a liquid, the default).
     pub gas: Option<crate::gas::Rarefied>,
+    /// The size of one molecule of the fluid \[m\] ([`crate::fluid::Fluid::molecular_size`]): a
+    /// cell whose gap is no wider conducts nothing and counts as contact
+    /// ([`crate::fluid::passes_molecule`], docs/model.md §8.1). 0 (the default): every open cell
+    /// conducts; a contact path sets its fluid's ([`crate::leak::PathOptions::molecular_size`]).
+    pub molecular_size: f64,
 }
 
 impl Default for FlowSettings {
@@ -138,6 +143,7 @@ impl Default for FlowSettings {
             preconditioner: Preconditioner::default(),
             direction: Direction::default(),
             gas: None,
+            molecular_size: 0.0,
         }
     }
 }
@@ -325,8 +331,12 @@ fn solve_x(
     // Cell conductances u³/(12η) (a gas: times its slit factor, a cell as wide as a pixel),
     // scaled by their maximum. A gap so thin that its scaled conductance is below
     // √(f64::MIN_POSITIVE) ≈ 1.5e-154 (u below ~1e-51 of the widest gap) counts as contact, so
-    // that no face conductance underflows to zero inside a cluster.
+    // that no face conductance underflows to zero inside a cluster; so does a gap no wider than
+    // a molecule of the fluid (it passes nothing, docs/model.md §8.1).
     let sigma_of = |u: f64| {
+        if !crate::fluid::passes_molecule(u, settings.molecular_size) {
+            return 0.0;
+        }
         let liquid = u * u * u / (12.0 * viscosity);
         match settings.gas {
             Some(g) if u > 0.0 => liquid * g.factor(u, pixel),
@@ -704,6 +714,35 @@ mod tests {
         let s = solve(&blocked, n, PIXEL, ETA, &set).unwrap();
         assert_eq!(s.conductance, 0.0);
         assert!(!s.percolates);
+    }
+
+    #[test]
+    fn a_liquid_s_gap_below_a_molecule_conducts_nothing() {
+        // a strip of 0.2 nm gaps across the flow (below a water molecule, 0.31 nm): with the
+        // liquid's molecular size it is contact and nothing percolates; without it the cells
+        // conduct u³/(12η) in series (the defect of docs/model.md §8.1: a flow through gaps
+        // no wider than one molecule); a strip of 0.5 nm gaps still conducts, in series
+        let n = 32;
+        let molecule = crate::fluid::liquid_molecular_size();
+        let set = FlowSettings {
+            molecular_size: molecule,
+            ..FlowSettings::default()
+        };
+        let u2 = 5.0e-9;
+        let strip = |u: f64| grid(n, move |ix, _| if ix == n / 2 { u } else { u2 });
+        let s = solve(&strip(0.2e-9), n, PIXEL, ETA, &set).unwrap();
+        assert_eq!(s.conductance, 0.0);
+        assert!(!s.percolates);
+        let s = solve(&strip(0.2e-9), n, PIXEL, ETA, &FlowSettings::default()).unwrap();
+        assert!(s.percolates && s.conductance > 0.0, "{s:?}");
+        // wider than a molecule: the harmonic mean of the faces along x, as without it
+        let u1 = 0.5e-9;
+        // faces: n − 2 between open cells, 2 harmonic means 2σ1σ2/(σ1 + σ2) beside the strip
+        let series = n as f64 / ((n - 2) as f64 / sigma(u2) + 1.0 / sigma(u1) + 1.0 / sigma(u2));
+        let s = solve(&strip(u1), n, PIXEL, ETA, &set).unwrap();
+        assert!(rel(s.conductance, series) <= 1e-8, "{s:?} vs {series}");
+        let plain = solve(&strip(u1), n, PIXEL, ETA, &FlowSettings::default()).unwrap();
+        assert_eq!(s.conductance, plain.conductance);
     }
 
     #[test]

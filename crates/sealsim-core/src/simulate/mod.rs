@@ -75,6 +75,7 @@ const INTERFACE: InterfaceSettings = InterfaceSettings {
     steps: 128,
     tolerance: 1e-9,
     outlet_breaks: 0,
+    ceiling: f64::INFINITY,
 };
 
 /// Quadrature of the clogging contact path (the detour junctions and the reach): both
@@ -231,14 +232,18 @@ impl InterfaceLeak {
 /// modulus changes over the run, `follow`).
 struct InterfaceSolver {
     memo: HertzMemo,
+    /// The reduced pressure at and above which its path conducts nothing for the run's fluid
+    /// ([`ContactPath::molecular_cut`]).
+    cut: f64,
 }
 
 impl InterfaceSolver {
-    fn new(problem: &LifeProblem) -> Self {
+    fn new(problem: &LifeProblem, path: &ContactPath) -> Self {
         let pressure_spacing = (problem.asperity_modulus == AsperityModulus::Follow)
             .then_some(interface::MEMO_PRESSURE_SPACING);
         InterfaceSolver {
             memo: HertzMemo::new(interface::MEMO_SPACING, pressure_spacing),
+            cut: path.molecular_cut(problem.fluid.molecular_size()),
         }
     }
 
@@ -346,7 +351,12 @@ impl<'a> Simulator<'a> {
     /// and the fidelity, so runs that share those (e.g. `sealsim compare` across materials)
     /// can build it once.
     pub fn contact_path(problem: &LifeProblem) -> ContactPath {
-        ContactPath::new(&problem.spectrum, problem.contact, problem.fidelity)
+        ContactPath::for_fluid(
+            &problem.spectrum,
+            problem.contact,
+            problem.fidelity,
+            &problem.fluid,
+        )
     }
 
     /// Prepares the run with a contact path built beforehand by [`Self::contact_path`] for a
@@ -372,7 +382,6 @@ impl<'a> Simulator<'a> {
         });
         let mut simulator = Simulator {
             problem,
-            path,
             rule: gauss_legendre(problem.strips.max(2)),
             load0,
             deformation0: problem.geometry.deformation(
@@ -384,14 +393,21 @@ impl<'a> Simulator<'a> {
             creep: problem.material.prony.creep(),
             clogging_contact,
             reference_memo: std::cell::Cell::new(None),
-            counterface: InterfaceSolver::new(problem),
+            counterface: InterfaceSolver::new(problem, &path),
             groove: match &problem.groove {
-                GrooveInterface::Own(spectrum) => Some((
-                    ContactPath::new(spectrum, problem.contact, problem.fidelity),
-                    InterfaceSolver::new(problem),
-                )),
+                GrooveInterface::Own(spectrum) => {
+                    let own = ContactPath::for_fluid(
+                        spectrum,
+                        problem.contact,
+                        problem.fidelity,
+                        &problem.fluid,
+                    );
+                    let solver = InterfaceSolver::new(problem, &own);
+                    Some((own, solver))
+                }
                 _ => None,
             },
+            path,
             drag,
             low_temperature_limit: problem.material.low_temperature_limit(),
         };
@@ -795,9 +811,11 @@ impl<'a> Simulator<'a> {
     /// against the contact pressure (≤ 1e-8 of it) the strips in series at the contact pressure
     /// (§3.2). Lifted off (`lifted` by the stresses, or found so by the interface): the leak of
     /// the interface loaded just to its threshold of lift-off (contact peak = ΔP), a lower bound
-    /// that less load never lowers ([`Self::onset_leak`]). A
-    /// critical gap no wider than a molecule of the fluid conducts nothing
-    /// ([`SealState::BelowMolecule`], docs/model.md §8.1).
+    /// that less load never lowers ([`Self::onset_leak`]). Every strip whose critical gap is no
+    /// wider than a molecule of the fluid conducts nothing ([`ContactPath::conductance`],
+    /// docs/model.md §3.6, §8.1); an interface that conducts nowhere is sealed — by the molecule
+    /// ([`SealState::BelowMolecule`]) when a channel percolates in its least-loaded strip
+    /// ([`ContactPath::sealed_state`]).
     fn interface_leak(
         &self,
         path: &ContactPath,
@@ -811,7 +829,8 @@ impl<'a> Simulator<'a> {
         let dp = p.fluid.pressure_difference;
         let offset = p.energisation_factor * dp;
         let viscosity = fluid.viscosity;
-        let sigma_hat = |s: f64| path.conductance(s, p.shape_factor, viscosity);
+        let molecule = fluid.molecular_size();
+        let sigma_hat = |s: f64| path.conductance(s, p.shape_factor, viscosity, molecule);
         // σ(e, p_f) at asperity pressure e and gauge fluid pressure p_f: for a gas weighed by
         // the local density (P_b + p_f)/p̄, each constriction rarefied at the local pressure
         // (docs/model.md §3.9, §3.10); σ(e) for a liquid
@@ -821,19 +840,25 @@ impl<'a> Simulator<'a> {
                 p.shape_factor,
                 viscosity,
                 fluid.free_path_at(fluid_pressure),
+                molecule,
             ) * fluid.density_weight(fluid_pressure)
         };
         // under a uniform contact pressure `top` the fluid pressure is top − e
         let weighted = |top: f64| move |e: f64| local(e, top - e);
         let geometry = profile.geometry(p.geometry.sealing_length());
+        let top = profile.peak() + offset;
         let series = || {
             // ΔP negligible: every strip at p̄ (gauge ΔP/2)
             let resistance =
                 profile.series_resistance(&self.rule, |pc| local(pc + offset, 0.5 * dp));
-            p.fluid
-                .leak_rate(geometry, Conduction::Series { resistance })
+            // the peak strip itself too: the rule's nodes need not fall where it seals
+            let conducts = resistance.is_finite() && local(top, 0.5 * dp) > 0.0;
+            (
+                conducts,
+                p.fluid
+                    .leak_rate(geometry, Conduction::Series { resistance }),
+            )
         };
-        let top = profile.peak() + offset;
         let junction_at = |e: f64| (path.critical_junction(e.max(0.0) / e_star), e.max(0.0));
         let open = || {
             // the profile loaded just to the threshold: its contact peak is ΔP
@@ -843,7 +868,7 @@ impl<'a> Simulator<'a> {
                 *profile
             };
             InterfaceLeak::new(
-                self.onset_leak(&local, &threshold, offset),
+                self.onset_leak(&local, &threshold, offset, solver.cut * e_star),
                 junction_at(top),
                 SealState::LiftOff,
             )
@@ -851,25 +876,22 @@ impl<'a> Simulator<'a> {
         if lifted {
             return open();
         }
-        // a conducting interface whose critical gap is no wider than a molecule passes nothing
-        let conducting = |leak_rate: f64, junction: (Junction, f64)| {
-            if junction
-                .0
-                .leaking()
-                .is_some_and(|j| j.u_c <= fluid.molecular_size())
-            {
-                InterfaceLeak::new(0.0, junction, SealState::BelowMolecule)
+        // the strips' σ is already 0 below a molecule: the interface leaks, or it is sealed,
+        // by the molecule when its least-loaded strip (asperity pressure `least`) percolates
+        // (a conducting interface under no pressure difference leaks nothing: `sealed`, as ever)
+        let outcome = |conducts: bool, leak_rate: f64, junction: (Junction, f64), least: f64| {
+            if !conducts {
+                InterfaceLeak::new(0.0, junction, path.sealed_state(least / e_star))
+            } else if leak_rate > 0.0 {
+                InterfaceLeak::new(leak_rate, junction, SealState::Leaking)
             } else {
-                let state = if leak_rate > 0.0 {
-                    SealState::Leaking
-                } else {
-                    SealState::Sealed
-                };
-                InterfaceLeak::new(leak_rate, junction, state)
+                InterfaceLeak::new(leak_rate, junction, SealState::Sealed)
             }
         };
         if dp <= NEGLIGIBLE_PRESSURE_RATIO * top {
-            return conducting(series(), junction_at(top));
+            // every strip at its contact pressure: the peak's decides
+            let (conducts, leak_rate) = series();
+            return outcome(conducts, leak_rate, junction_at(top), top);
         }
         let (flow, junction) = match *profile {
             Profile::Uniform { pressure, .. } => (
@@ -879,6 +901,7 @@ impl<'a> Simulator<'a> {
                     dp,
                     &InterfaceSettings {
                         outlet_breaks: fluid.outlet_breaks(),
+                        ceiling: solver.cut * e_star,
                         ..INTERFACE
                     },
                 ),
@@ -901,10 +924,14 @@ impl<'a> Simulator<'a> {
             }
         };
         match flow {
-            InterfaceFlow::Conducting(conduction) => {
-                conducting(p.fluid.leak_rate(geometry, conduction), junction)
-            }
-            InterfaceFlow::Sealed => InterfaceLeak::new(0.0, junction, SealState::Sealed),
+            InterfaceFlow::Conducting(conduction) => outcome(
+                true,
+                p.fluid.leak_rate(geometry, conduction),
+                junction,
+                top - dp,
+            ),
+            // no strip conducts even with the whole ΔP relieving it
+            InterfaceFlow::Sealed => outcome(false, 0.0, junction, top - dp),
             InterfaceFlow::LiftOff => open(),
         }
     }
@@ -912,15 +939,25 @@ impl<'a> Simulator<'a> {
     /// The leak at the onset of lift-off (docs/model.md §3.6): the interface with the fluid
     /// pressure in it at its largest — the peak contact pressure, less 1e-9 of it for a Hertz
     /// profile — driving the flux; the last value the model gives for an open seal, a lower
-    /// bound.
-    fn onset_leak(&self, local: &dyn Fn(f64, f64) -> f64, profile: &Profile, offset: f64) -> f64 {
+    /// bound. σ is 0 at and above `ceiling` \[Pa\] (the molecular cut, §8.1).
+    fn onset_leak(
+        &self,
+        local: &dyn Fn(f64, f64) -> f64,
+        profile: &Profile,
+        offset: f64,
+        ceiling: f64,
+    ) -> f64 {
         let p = self.problem;
         let geometry = profile.geometry(p.geometry.sealing_length());
         let dp = p.fluid.pressure_difference;
         let conduction = match *profile {
             Profile::Uniform { pressure, .. } => {
                 let top = pressure + offset;
-                interface::uniform_onset(&|e| local(e, top - e), top, dp, &INTERFACE)
+                let settings = InterfaceSettings {
+                    ceiling,
+                    ..INTERFACE
+                };
+                interface::uniform_onset(&|e| local(e, top - e), top, dp, &settings)
             }
             Profile::Hertz { peak, width } => {
                 let onset = (peak + offset) * (1.0 - 1e-9);
@@ -1193,9 +1230,15 @@ impl<'a> Simulator<'a> {
                     0.0
                 };
                 let s = junction_s;
+                // a critical gap below a molecule carries no film either (§8.1), also where
+                // the strips the fluid pressure relieves leak
+                let below_molecule = peak_junction.leaking().is_some_and(|j| {
+                    !crate::fluid::passes_molecule(j.u_c, p.fluid.molecular_size())
+                });
                 let junction = match self.path {
-                    // a critical gap below a molecule carries no film either (§8.1)
-                    _ if leak.state == SealState::BelowMolecule => Junction::Sealed,
+                    _ if leak.state == SealState::BelowMolecule || below_molecule => {
+                        Junction::Sealed
+                    }
                     ContactPath::Table(_) | ContactPath::Exact(_) => peak_junction,
                     _ => self.path.persson_junction(s),
                 };
