@@ -360,7 +360,7 @@ pub const WATER_MOLECULE_VOLUME: f64 = 0.018_015 / (997.05 * 6.022_140_76e23);
 
 /// The size of one molecule of every liquid \[m\] ([`Fluid::molecular_size`]): the edge of the
 /// cube one water molecule fills, `(M/(ρ N_A))^{1/3}` = 3.10e-10 m ([`WATER_MOLECULE_VOLUME`]).
-/// The default of the contact paths' [`crate::leak::PathOptions::molecular_size`].
+/// The default of the contact paths' `leak::PathOptions::molecular_size`.
 pub fn liquid_molecular_size() -> f64 {
     WATER_MOLECULE_VOLUME.cbrt()
 }

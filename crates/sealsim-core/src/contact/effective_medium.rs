@@ -51,7 +51,7 @@ pub struct EffectiveMediumSettings {
     /// local gap no wider conducts nothing in the Bruggeman average — it counts as contact
     /// ([`crate::fluid::passes_molecule`], docs/model.md §3.3, §8.1). 0 (the default): every open
     /// gap conducts; a contact path sets its fluid's
-    /// ([`crate::leak::PathOptions::molecular_size`]). A rarefied gas uses its own diameter.
+    /// (`leak::PathOptions::molecular_size`). A rarefied gas uses its own diameter.
     pub molecular_size: f64,
 }
 

@@ -131,7 +131,7 @@ pub struct FlowSettings {
     /// The size of one molecule of the fluid \[m\] ([`crate::fluid::Fluid::molecular_size`]): a
     /// cell whose gap is no wider conducts nothing and counts as contact
     /// ([`crate::fluid::passes_molecule`], docs/model.md §8.1). 0 (the default): every open cell
-    /// conducts; a contact path sets its fluid's ([`crate::leak::PathOptions::molecular_size`]).
+    /// conducts; a contact path sets its fluid's (`leak::PathOptions::molecular_size`).
     pub molecular_size: f64,
 }
 
