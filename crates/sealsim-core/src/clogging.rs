@@ -753,7 +753,7 @@ impl ArrivalDoses {
     /// `f = ∫ W(x) exp(−x³ Λ(x)) dx` over the relative heights x of the critical constrictions
     /// (`critical`, in units of u_c), W the flow share, Λ(x) the dose of the arrivals larger
     /// than x. Between two bins Λ is constant and the integral is taken by Gauss–Legendre
-    /// (order 4) on panels no wider than σ/4 in x nor 1 in x³Λ; beyond the largest arrival no channel is
+    /// (order 4) on panels no wider than σ/4 in x nor ½ in x³Λ; beyond the largest arrival no channel is
     /// blocked (the flow share above it, in closed form). One height (σ = 0): `exp(−μ³ Λ(μ))`.
     pub fn open_share(&self, critical: &Constrictions) -> f64 {
         let points: Vec<(f64, f64)> = self
@@ -801,7 +801,7 @@ impl ArrivalDoses {
     }
 
     /// `∫_a^b x³ g(x) exp(−x³ Λ) dx` (unnormalised) on panels no wider than σ/4 and no
-    /// wider than a step of 1 in x³Λ, Gauss–Legendre nodes on each; past x³Λ = 40 nothing
+    /// wider than a step of ½ in x³Λ, Gauss–Legendre nodes on each; past x³Λ = 40 nothing
     /// is left.
     fn blocked_interval(
         critical: &Constrictions,
@@ -827,9 +827,9 @@ impl ArrivalDoses {
         let mut sum = 0.0;
         let mut x0 = a;
         while x0 < b {
-            // the next panel: σ/4 in x, and one unit of x³Λ
+            // the next panel: σ/4 in x, and half a unit of x³Λ
             let by_dose = if dose > 0.0 {
-                ((x0.powi(3) * dose + 1.0) / dose).cbrt() - x0
+                ((x0.powi(3) * dose + 0.5) / dose).cbrt() - x0
             } else {
                 f64::INFINITY
             };
@@ -920,5 +920,207 @@ mod tests {
         assert!((effective_threshold(0.4, 0.6)).abs() < 1e-15);
         assert!(effective_threshold(0.4, 0.5) < 0.0);
         assert!((effective_threshold(0.4, 0.8) - 0.25).abs() < 1e-15);
+    }
+
+    /// `∫_a^b f` by the composite Simpson rule on `n` (even) panels.
+    fn simpson(f: impl Fn(f64) -> f64, a: f64, b: f64, n: usize) -> f64 {
+        let h = (b - a) / n as f64;
+        let mut sum = f(a) + f(b);
+        for i in 1..n {
+            sum += f(a + h * i as f64) * if i % 2 == 1 { 4.0 } else { 2.0 };
+        }
+        sum * h / 3.0
+    }
+
+    #[test]
+    fn folded_normal_moments_against_quadrature() {
+        for (mu, sigma) in [
+            (1.0, 1.31),
+            (1.0, 0.2),
+            (4.0, 3.7),
+            (0.0, 1.0),
+            (1.85, 4.31),
+        ] {
+            let c = Constrictions {
+                centre: mu,
+                spread: sigma,
+            };
+            let top = mu + 14.0 * sigma;
+            for k in 0..=3usize {
+                for (a, b) in [
+                    (0.0, f64::INFINITY),
+                    (0.0, 0.3 * sigma),
+                    (0.0, mu + 0.7 * sigma),
+                    (0.5 * mu, mu + 2.0 * sigma),
+                    (mu + 3.0 * sigma, f64::INFINITY),
+                ] {
+                    let got = c.moment_between(k, a, b);
+                    let want = simpson(|x| x.powi(k as i32) * c.density(x), a, b.min(top), 40_000);
+                    assert!(
+                        (got - want).abs() <= 1e-9 * want.abs().max(1e-6 * sigma.powi(k as i32)),
+                        "μ {mu} σ {sigma} k {k} [{a}, {b}]: {got} vs {want}"
+                    );
+                }
+            }
+            // the density integrates to 1
+            assert!((c.moment_between(0, 0.0, f64::INFINITY) - 1.0).abs() < 1e-14);
+        }
+        // closed forms: one height |μ|³; the half-normal E[u³] = 2√(2/π) σ³
+        let one = Constrictions {
+            centre: 1.5,
+            spread: 0.0,
+        };
+        assert_eq!(one.mean_cube(), 1.5f64.powi(3));
+        let half = Constrictions {
+            centre: 0.0,
+            spread: 2.0,
+        };
+        let want = 2.0 * (2.0 / PI).sqrt() * 8.0;
+        assert!((half.mean_cube() / want - 1.0).abs() < 1e-14);
+    }
+
+    #[test]
+    fn flux_shares_limits() {
+        let c = Constrictions {
+            centre: 1.0,
+            spread: 1.31,
+        };
+        for y in [1e-3, 0.5, 1.0, 2.0, 5.0, 20.0] {
+            let (below, above) = c.flux_split(y);
+            assert!((below + above - 1.0).abs() < 1e-15, "{y}");
+        }
+        // d → 0: the share narrower than y vanishes as y⁴ (the density is even at 0)
+        let (a, b) = (c.flux_split(1e-3).0, c.flux_split(2e-3).0);
+        assert!((b / a - 16.0).abs() < 1e-3, "{}", b / a);
+        // far in the tail the wider share is still a positive, falling number (no
+        // cancellation): at μ + 10σ it is of the order of the Gaussian tail
+        let far = c.flux_split(1.0 + 10.0 * 1.31).1;
+        let farther = c.flux_split(1.0 + 12.0 * 1.31).1;
+        assert!(
+            far > 0.0 && far < 1e-18 && farther < 1e-3 * far,
+            "{far} {farther}"
+        );
+        // one height: all of it below or above
+        let sieve = Constrictions {
+            centre: 1.0,
+            spread: 0.0,
+        };
+        assert_eq!(sieve.flux_split(0.99), (0.0, 1.0));
+        assert_eq!(sieve.flux_split(1.01), (1.0, 0.0));
+        // survival: 1 through nothing, falling with size, 0 far beyond every level
+        let levels = [
+            Constrictions {
+                centre: 1.9,
+                spread: 2.2,
+            },
+            Constrictions {
+                centre: 1.85,
+                spread: 4.3,
+            },
+        ];
+        assert_eq!(survival(&[], 7.0), 1.0);
+        let mut last = 1.0;
+        for y in [0.1, 1.0, 2.0, 5.0, 10.0, 20.0] {
+            let s = survival(&levels, y);
+            assert!(s < last && s > 0.0, "{y}: {s}");
+            last = s;
+        }
+        assert_eq!(survival(&levels, 200.0), 0.0);
+    }
+
+    #[test]
+    fn size_nodes_partition_the_distribution() {
+        let all = [
+            SizeDistribution::LogNormal {
+                median: 150e-9,
+                geometric_std: 2.5,
+            },
+            SizeDistribution::Weibull {
+                scale: 1e-6,
+                shape: 2.0,
+            },
+            SizeDistribution::Table {
+                diameter: vec![1e-6, 3e-6],
+                cdf: vec![0.2, 1.0],
+            },
+        ];
+        for d in &all {
+            let nodes = d.nodes();
+            assert!(nodes.len() <= SIZE_NODES && nodes.len() > 10, "{d:?}");
+            let w: f64 = nodes.iter().map(|n| n.weight).sum();
+            assert!((w - 1.0).abs() < 1e-12, "{d:?}: {w}");
+            for k in [2, 3] {
+                let sum: f64 = nodes.iter().map(|n| if k == 2 { n.m2 } else { n.m3 }).sum();
+                let full = d.partial_moment(k, 0.0);
+                assert!(
+                    (sum / full - 1.0).abs() < 1e-10,
+                    "{d:?} k {k}: {sum} vs {full}"
+                );
+            }
+            for n in &nodes {
+                assert!(n.lo <= n.diameter && n.diameter <= n.hi, "{n:?}");
+            }
+            // the diameter at a score has that score's cumulative fraction
+            for z in [-3.0, -0.5, 0.0, 1.0, 4.0] {
+                let p = 0.5 * erfc(-z / std::f64::consts::SQRT_2);
+                let f = d.cdf(d.at_score(z));
+                assert!((f - p).abs() < 1e-9, "{d:?} z {z}: {f} vs {p}");
+            }
+        }
+        let m = SizeDistribution::Monodisperse { diameter: 2e-6 };
+        assert_eq!(m.nodes().len(), 1);
+        assert!((m.nodes()[0].m3 / 8e-18 - 1.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn open_share_against_quadrature() {
+        let c = Constrictions {
+            centre: 1.0,
+            spread: 1.31,
+        };
+        let total = c.mean_cube();
+        assert_eq!(ArrivalDoses::default().open_share(&c), 1.0);
+        // one size y, dose m: ∫_0^y W e^{−x³ m} dx + the flow share above y
+        for (y, m) in [(0.7f64, 3.0), (1.5, 0.2), (3.0, 50.0), (6.0, 1e-3)] {
+            let mut doses = ArrivalDoses::default();
+            doses.add_point(y.ln(), m);
+            let blocked = simpson(
+                |x| x.powi(3) * c.density(x) * (-x.powi(3) * m).exp(),
+                0.0,
+                y,
+                40_000,
+            ) / total;
+            let want = blocked + c.flux_split(y).1;
+            let got = doses.open_share(&c);
+            assert!((got - want).abs() < 1e-9, "y {y} m {m}: {got} vs {want}");
+            // more dose, less open; a dose far below every channel changes nothing
+            doses.add_point(y.ln(), m);
+            assert!(doses.open_share(&c) < got);
+        }
+        // one height: exp(−μ³ Λ(μ)), counting only the arrivals wider than μ
+        let mut doses = ArrivalDoses::default();
+        doses.add_point(0.9f64.ln(), 5.0);
+        doses.add_point(1.2f64.ln(), 0.3);
+        let sieve = Constrictions {
+            centre: 1.0,
+            spread: 0.0,
+        };
+        assert!((doses.open_share(&sieve) - (-0.3f64).exp()).abs() < 1e-15);
+        // a dose spread over an interval equals many points across it
+        let (mut spread, mut points) = (ArrivalDoses::default(), ArrivalDoses::default());
+        spread.add_spread(0.0, 1.0, 2.0);
+        for i in 0..1000 {
+            points.add_point((i as f64 + 0.5) / 1000.0, 2.0 / 1000.0);
+        }
+        assert!((spread.open_share(&c) - points.open_share(&c)).abs() < 1e-6);
+        // doses too small to matter (down to denormals) are left out and cannot disorder the
+        // bins (a denormal dose once gave its bin a mean position of 0, y = 1)
+        let mut tiny = ArrivalDoses::default();
+        tiny.add_point(5.0, 5e-324);
+        tiny.add_point(5.2, 1e-300);
+        tiny.add_point(1.0, 0.1);
+        let mut plain = ArrivalDoses::default();
+        plain.add_point(1.0, 0.1);
+        assert_eq!(tiny.open_share(&c), plain.open_share(&c));
     }
 }
