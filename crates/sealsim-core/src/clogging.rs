@@ -401,6 +401,12 @@ fn gauss8() -> &'static (Vec<f64>, Vec<f64>) {
     RULE.get_or_init(|| gauss_legendre(8))
 }
 
+/// Gauss–Legendre nodes and weights of order 2 on \[−1, 1\] (computed once).
+fn gauss2() -> &'static (Vec<f64>, Vec<f64>) {
+    static RULE: std::sync::OnceLock<(Vec<f64>, Vec<f64>)> = std::sync::OnceLock::new();
+    RULE.get_or_init(|| gauss_legendre(2))
+}
+
 /// Gauss–Legendre nodes and weights of order 4 on \[−1, 1\] (computed once).
 fn gauss4() -> &'static (Vec<f64>, Vec<f64>) {
     static RULE: std::sync::OnceLock<(Vec<f64>, Vec<f64>)> = std::sync::OnceLock::new();
@@ -432,7 +438,8 @@ impl Constrictions {
 
     /// E\[u^k; a < u < b\] (k ≤ 3, 0 ≤ a ≤ b ≤ ∞): the two branches of the fold in closed form
     /// ([`normal_partial_moment`]), or by Gauss–Legendre (order 8) on an interval narrower than
-    /// σ/2, where the closed form would lose its digits to cancellation.
+    /// σ/2, where the closed form would lose its digits to cancellation, or from 0 to below σ/20
+    /// by the density's Taylor series at 0 (three terms).
     pub fn moment_between(&self, k: usize, a: f64, b: f64) -> f64 {
         let (mu, sigma) = (self.centre.abs(), self.spread);
         let a = a.max(0.0);
@@ -445,6 +452,18 @@ impl Constrictions {
             } else {
                 0.0
             };
+        }
+        if a == 0.0 && b < 0.05 * sigma {
+            // the density is even at 0: g(x) = g0 + g2 x²/2 + g4 x⁴/24 + …, with
+            // g^(2n)(0) = 2 He_2n(μ/σ) φ(μ/σ)/σ^(2n+1) (He the Hermite polynomials); three terms
+            // leave a relative error below (b/σ)⁶ ≈ 2e-8
+            let t = mu / sigma;
+            let g = 2.0 * std_normal_density(t) / sigma;
+            let (h2, h4) = (t * t - 1.0, t.powi(4) - 6.0 * t * t + 3.0);
+            let (s2, s4) = (h2 / (sigma * sigma), h4 / sigma.powi(4));
+            let k = k as i32;
+            let term = |n: i32| b.powi(k + n + 1) / f64::from(k + n + 1);
+            return g * (term(0) + 0.5 * s2 * term(2) + s4 / 24.0 * term(4));
         }
         if b - a < 0.5 * sigma {
             let (nodes, weights) = gauss8();
@@ -753,51 +772,52 @@ impl ArrivalDoses {
     /// `f = ∫ W(x) exp(−x³ Λ(x)) dx` over the relative heights x of the critical constrictions
     /// (`critical`, in units of u_c), W the flow share, Λ(x) the dose of the arrivals larger
     /// than x. Between two bins Λ is constant and the integral is taken by Gauss–Legendre
-    /// (order 4) on panels no wider than σ/4 in x nor ½ in x³Λ; beyond the largest arrival no channel is
+    /// (order 4; order 2 on slivers no wider than σ/16 and 0.05 in x³Λ) on panels no wider than
+    /// σ/4 in x nor ½ in x³Λ; beyond the largest arrival no channel is
     /// blocked (the flow share above it, in closed form). One height (σ = 0): `exp(−μ³ Λ(μ))`.
     pub fn open_share(&self, critical: &Constrictions) -> f64 {
-        let points: Vec<(f64, f64)> = self
-            .bins
-            .iter()
-            .filter(|b| b.0 > 0.0)
-            .map(|b| (b.1.exp(), b.0))
-            .collect();
-        if points.is_empty() {
+        let Some(last) = self.bins.iter().rev().find(|b| b.0 > 0.0) else {
             return 1.0;
-        }
+        };
         let (mu, sigma) = (critical.centre.abs(), critical.spread);
         if !(sigma > 0.0) {
-            let dose: f64 = points.iter().filter(|p| p.0 > mu).map(|p| p.1).sum();
+            let dose: f64 = self
+                .bins
+                .iter()
+                .filter(|b| b.0 > 0.0 && b.1.exp() > mu)
+                .map(|b| b.0)
+                .sum();
             return (-mu.powi(3) * dose).exp().clamp(0.0, 1.0);
         }
         let total = critical.mean_cube();
         if !(total > 0.0) {
             return 1.0;
         }
-        // doses above each point: Λ on (x_{i−1}, x_i) is the dose of points i, i + 1, …
-        let mut above = vec![0.0; points.len() + 1];
-        for i in (0..points.len()).rev() {
-            above[i] = above[i + 1] + points[i].1;
-        }
-        // the heights outside [μ − 10σ, μ + 10σ] carry no flow worth counting
+        // beyond the largest arrival nothing is blocked
+        let mut share = critical.flux_split(last.1.exp()).1 * total;
+        // downwards from it: on (x_{i−1}, x_i) Λ is the dose of the points i, i + 1, …; the
+        // heights above μ + 10σ carry no flow worth counting
         let support_hi = mu + 10.0 * sigma;
         let (nodes, weights) = gauss4();
-        let mut share = 0.0;
-        let mut lo = 0.0;
-        for (i, &(x_hi, _)) in points.iter().enumerate() {
-            let dose = above[i];
-            share +=
-                Self::blocked_interval(critical, lo, x_hi.min(support_hi), dose, nodes, weights);
-            lo = x_hi;
-            if lo >= support_hi {
-                break;
+        let mut dose = 0.0;
+        let mut upper = f64::NAN;
+        for bin in self.bins.iter().rev().filter(|b| b.0 > 0.0) {
+            let x = bin.1.exp();
+            if upper.is_finite() {
+                share += Self::blocked_interval(
+                    critical,
+                    x,
+                    upper.min(support_hi),
+                    dose,
+                    nodes,
+                    weights,
+                );
             }
+            dose += bin.0;
+            upper = x;
         }
-        // beyond the largest arrival nothing is blocked
-        let last = points.last().map_or(0.0, |p| p.0);
-        share /= total;
-        share += critical.flux_split(last).1;
-        share.clamp(0.0, 1.0)
+        share += Self::blocked_interval(critical, 0.0, upper.min(support_hi), dose, nodes, weights);
+        (share / total).clamp(0.0, 1.0)
     }
 
     /// `∫_a^b x³ g(x) exp(−x³ Λ) dx` (unnormalised) on panels no wider than σ/4 and no
@@ -811,21 +831,35 @@ impl ArrivalDoses {
         nodes: &[f64],
         weights: &[f64],
     ) -> f64 {
-        if !(b > a) {
+        if !(b > a) || a.powi(3) * dose > 40.0 {
             return 0.0;
         }
-        let cut = if dose > 0.0 {
+        let b = if b.powi(3) * dose > 40.0 {
             (40.0 / dose).cbrt()
         } else {
-            f64::INFINITY
+            b
         };
-        let b = b.min(cut);
-        if !(b > a) {
-            return 0.0;
-        }
         let width_x = 0.25 * critical.spread;
+        // a sliver between two neighbouring bins (≤ σ/16, ≤ 0.05 in x³Λ) takes two nodes
+        let (nodes, weights) = if b - a <= 0.25 * width_x && (b.powi(3) - a.powi(3)) * dose <= 0.05
+        {
+            let (n, w) = gauss2();
+            (n.as_slice(), w.as_slice())
+        } else {
+            (nodes, weights)
+        };
         let mut sum = 0.0;
         let mut x0 = a;
+        if b - a <= width_x && (b.powi(3) - a.powi(3)) * dose <= 0.5 {
+            // one panel
+            let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
+            for (z, w) in nodes.iter().zip(weights) {
+                let x = mid + half * z;
+                let c = x.powi(3);
+                sum += w * half * c * critical.density(x) * (-c * dose).exp();
+            }
+            return sum;
+        }
         while x0 < b {
             // the next panel: σ/4 in x, and half a unit of x³Λ
             let by_dose = if dose > 0.0 {
