@@ -160,6 +160,13 @@ PSP_RULE = ("the 10 K doubling rule ('chemical reactions typically double with a
 CTE_ASSUMED = ("assumed 160e-6 1/K, of the order of the sourced NBR and EPDM values; no source found for "
                "this polymer; illustrative")
 
+# FKM's Ea: the Arrhenius slope through its two anchors (BAM's 60 C set point, the 200 C rating)
+FKM_EA = two_anchor_ea(60.0, t50_hours(40, 0.65), 200.0, RULE_HOURS)
+# HNBR's band (docs/model.md 6.5): the low end of NBR's 50-65 kJ/mol in hydraulic fluid (Pazur et
+# al. 2012) and the Therban rule, life doubled per +10 K near the 150 C rating
+HNBR_EA_LOW = 50e3
+THERBAN_EA = ten_degree_doubling(150.0)
+
 # id, name, Shore A grade, T_g [C] with source, linear CTE [1/K] with source, ageing or None; optional
 # "m" (Chasset-Thirion exponent, default M_DEFAULT) and "e_g" (glassy modulus [Pa], default
 # E_GLASS_DEFAULT) per compound
@@ -180,31 +187,47 @@ COMPOUNDS = [
                      "elongation in air: 'A critical assessment of the Arrhenius oven-aging "
                      "methodology', 1993, abstract); service life 15 years at 23 C (the abstract "
                      "prints '230C', read as 23 C); k_ref from CS = 1 - exp(-k t) = 0.5 at 15 years "
-                     "(elongation criterion taken as a set criterion, an assumption); illustrative")),
+                     "(elongation criterion taken as a set criterion, an assumption); illustrative",
+                     ea_src="Pazur et al. 2012: 50-65 kJ/mol on NBR O-rings in hydraulic fluid "
+                     "(midpoint)")),
     dict(id="hnbr-75", name="HNBR (hydrogenated nitrile rubber), 75 Shore A", shore=75,
          low=-30, rated=150,
          tg=-30 - T10_ABOVE_TG, tg_src=f"calibrated: placed {T10_ABOVE_TG:g} K below the -30 C "
          f"standard low-temperature limit of {BODE} so that T10 meets it (the class's calorimetric "
          f"T_g is -30 C: {HANDBOOK}, Table 4.2: hydrogenated nitrile)",
          cte=160e-6, cte_src=CTE_ASSUMED,
-         ageing=dict(ea=two_anchor_ea(60.0, t50_hours(5, 0.85), 150.0, RULE_HOURS), medium="air",
+         ageing=dict(ea=HNBR_EA_LOW, ea_above=THERBAN_EA, medium="air",
                      rate=rate_for_hours(RULE_HOURS), tref=150.0,
-                     prop="compression set of O-rings aged at 25 % compression (60 C anchor); the "
-                     "rated-temperature rule (150 C anchor)",
-                     crit="50 % retained force (85 % compression set converted)",
-                     src=f"two anchors: 1000 h to 50 % retained force at the rated 150 C ({BODE}; "
-                     f"the rule: {PSP_LIFE}) and about 5 years to 85 % compression set at 60 C from "
-                     f"{KOMMLING} (abstract read), converted with CS = 1 - exp(-k t); Ea is the "
-                     "Arrhenius slope through both (Bayer's Therban rule of +10 C doubling the life "
-                     "at 150 C would give 105 kJ/mol and 380 years at 60 C, against the measured "
-                     "extrapolation: not used); illustrative")),
+                     prop="the rated-temperature rule (k at 150 C); Ea ASSUMED: a band about the "
+                     "rating",
+                     crit="50 % retained force",
+                     src=f"k at 150 C from 1000 h to 50 % retained force at the rated 150 C ({BODE}; "
+                     f"the rule: {PSP_LIFE}). Ea ASSUMED, no HNBR value found: the band "
+                     f"{HNBR_EA_LOW / 1e3:g}-{THERBAN_EA / 1e3:.4g} kJ/mol, the low end below the "
+                     "rating and the high end above it (the shorter life on both sides, docs/model.md "
+                     "6.5). Low end: the lower end of the 50-65 kJ/mol of NBR O-rings in hydraulic "
+                     "fluid (Pazur et al. 2012, abstract), HNBR's parent polymer: hydrogenation "
+                     "removes the double bonds oxidation attacks, so HNBR is taken to age no faster "
+                     "below its rating than NBR relative to its own. High end: Bayer's Therban rule, "
+                     "'This service temperature limit can be increased by ca. 10 C being equivalent to "
+                     "a doubling of the service life-time' near 150 C (Wrana, Reinartz, Winkelbach, "
+                     "Macromol. Mater. Eng. 286 (2001) 657, abstract), R ln2/(1/423.15 - 1/433.15) = "
+                     f"{THERBAN_EA / 1e3:.4g} kJ/mol. Not used for the slope: about 5 years to 85 % "
+                     f"compression set at 60 C from {KOMMLING} (abstract read), which through the 150 C "
+                     "anchor gives 36 kJ/mol (the value used before) and put HNBR below NBR under "
+                     "40 C; at 60 C set still holds much physical (viscoelastic) set, and that "
+                     "compound ages far faster at 150 C than the chart rating allows; this entry "
+                     "lives about 2.9x that extrapolation at 60 C (NOT conservative against that "
+                     "one point); illustrative",
+                     ea_src="ASSUMED band 50-105.6 kJ/mol: low end NBR's (Pazur et al. 2012), high "
+                     "end the Therban +10 C life-doubling rule at 150 C")),
     dict(id="fkm-75", name="FKM (fluoroelastomer), 75 Shore A", shore=75,
          low=-15, rated=200,
          tg=-15 - T10_ABOVE_TG, tg_src=f"calibrated: placed {T10_ABOVE_TG:g} K below the -15 C "
          f"standard low-temperature limit of {BODE} so that T10 meets it (Encyclopaedia Britannica, "
          "'elastomer', gives T_g = -10 C for fluoroelastomer; copolymer/terpolymer grades differ)",
          cte=160e-6, cte_src=CTE_ASSUMED,
-         ageing=dict(ea=two_anchor_ea(60.0, t50_hours(40, 0.65), 200.0, RULE_HOURS), medium="air",
+         ageing=dict(ea=FKM_EA, medium="air",
                      rate=rate_for_hours(RULE_HOURS), tref=200.0,
                      prop="compression set of O-rings (60 C anchor); the rated-temperature rule "
                      "(200 C anchor)",
@@ -214,8 +237,11 @@ COMPOUNDS = [
                      f"from {KOMMLING}, converted with CS = 1 - exp(-k t); Ea is the Arrhenius slope "
                      "through both, within the 47-214 kJ/mol of the European Sealing Association / "
                      "Cetim round robin on compression set (Valve World, August 2023, p. 53; its "
-                     "38 kJ/mol on stress relaxation, used before, put 4000 h at 200 C); "
-                     "illustrative")),
+                     "38 kJ/mol on stress relaxation, used before, put 4000 h at 200 C; "
+                     "74.9-159.6 kJ/mol on elongation, set and hardness of two ternary FKMs: Lee et "
+                     "al., Polymers 14 (2022) 2047, abstract); illustrative",
+                     ea_src="two anchors: Kommling et al. 2016 (40 years to 65 % set at 60 C) and "
+                     "1000 h at the rated 200 C; inside ESA/Cetim's 47-214 kJ/mol")),
     dict(id="epdm-70", name="EPDM (ethylene propylene diene rubber), 70 Shore A", shore=70,
          low=-50, rated=150,
          tg=-55, tg_src=f"{HANDBOOK}, Table 4.2: EPDM, T_g = -55 C",
@@ -229,7 +255,9 @@ COMPOUNDS = [
                      "compression set at 60 C, converted with CS = 1 - exp(-k t); Ea = 72 kJ/mol, "
                      "the midpoint of the 68.7 and 75.8 kJ/mol of two EPDM recipes (China "
                      "Rubber/Plastics Technology & Equipment, English edition, January 2026, p. 87, "
-                     "Table 7); different studies and properties: illustrative")),
+                     "Table 7); different studies and properties: illustrative",
+                     ea_src="68.7-75.8 kJ/mol on tensile strength x elongation of two EPDM recipes "
+                     "(China Rubber/Plastics Technology & Equipment, 2026), midpoint")),
     dict(id="vmq-70", name="VMQ (silicone rubber), 70 Shore A", shore=70,
          low=-55, rated=200,
          tg=-55 - T10_ABOVE_TG, tg_src=f"calibrated: placed {T10_ABOVE_TG:g} K below the -55 C "
@@ -248,7 +276,8 @@ COMPOUNDS = [
                      src="Ea = 67.7 kJ/mol on compression set: K. Xiang et al., 'Accelerated thermal "
                      "ageing studies of polydimethylsiloxane (PDMS) rubber', J. Polym. Res. 19 (2012) "
                      f"9869 (abstract); k at 200 C from 1000 h to 50 % retained force at the rated "
-                     f"200 C ({BODE}; the rule: {PSP_LIFE}); illustrative")),
+                     f"200 C ({BODE}; the rule: {PSP_LIFE}); illustrative",
+                     ea_src="Xiang et al. 2012: 67.7 kJ/mol on compression set of PDMS")),
     dict(id="cr-70", name="CR (polychloroprene), 70 Shore A", shore=70,
          low=-40, rated=100,
          tg=-45, tg_src=f"{HANDBOOK}, Table 4.2: polychloroprene, T_g = -45 C",
@@ -261,19 +290,15 @@ COMPOUNDS = [
                      "of neoprenes aged at 70-90 C: R. Bouaziz et al., 'Elastic properties of "
                      "polychloroprene rubbers in tension and compression during ageing', Polymers 12 "
                      f"(2020) 2354 (abstract); k at 100 C from 1000 h to 50 % retained force at the "
-                     f"rated 100 C ({BODE}; the rule: {PSP_LIFE}); illustrative")),
+                     f"rated 100 C ({BODE}; the rule: {PSP_LIFE}); illustrative",
+                     ea_src="Bouaziz et al. 2020: about 80 kJ/mol on modulus, hardness and "
+                     "elongation of neoprenes")),
 ]
 
-# The compounds added in issue 31. No class-specific ageing energy was found for them: each takes the
-# ESA/Cetim round robin's Arrhenius energy on stress relaxation (force retention, the property the
-# two-network model drives), 38 kJ/mol for an FKM, with k at the rated temperature from the 1000 h
-# rule. A low Ea is the conservative choice: below the rating it ages faster than a higher one would
-# (the 10 K doubling rule, ~100 kJ/mol at these ratings, would give lives 10-100x longer at 60 C).
-ESA_SR = ("Ea = 38 kJ/mol: the Arrhenius energy on stress relaxation (force retention) of an FKM in the "
-          "European Sealing Association / Cetim round robin (B. Omnes, 'Arrhenius seal life prediction "
-          "project', Valve World, August 2023, p. 53), ASSUMED for this class: no class-specific value "
-          "was found, and a low Ea is the conservative choice below the rating (the 10 K doubling rule "
-          "would give about 100 kJ/mol and lives 10-100x longer at 60 C)")
+# The compounds added in issue 31: k at the rated temperature from the 1000 h rule; Ea a band
+# [low, high] about that anchor, the low end below the rating and the high end above it, which
+# gives the shorter life on both sides (docs/model.md 6.5). Each band is its class's (or its
+# nearest relative's) from a source read; where none was found the band says so (ASSUMED).
 EMI = "EMI Seals, '308 Butyl rubber' data sheet (emiseals.com/data-sheet/308-butyl-rubber/)"
 PDB = "polymerdatabase.com, 'ACM' (Elastomers; the same text at clwydcompounders.com, 'ACM rubber')"
 MOLDED = ("Molded Dimensions 'Chemical resistance properties' chart (the maker's page source, mirrored at "
@@ -281,12 +306,43 @@ MOLDED = ("Molded Dimensions 'Chemical resistance properties' chart (the maker's
 DANCO = "Danco Industry, 'Chemical' engineering page (dancoindustry.com/engineering/chemical; secondary)"
 
 
-def rated_ageing(rated_c, medium="air"):
-    return dict(ea=38e3, rate=rate_for_hours(RULE_HOURS), tref=float(rated_c), medium=medium,
-                prop="stress relaxation (Ea); the rated-temperature rule (k at the rating)",
+def rated_ageing(rated_c, low, high, src, ea_src, medium="air"):
+    return dict(ea=low, ea_above=high, rate=rate_for_hours(RULE_HOURS), tref=float(rated_c),
+                medium=medium,
+                prop="the rated-temperature rule (k at the rating); Ea a band about the rating",
                 crit="50 % retained force",
-                src=f"{ESA_SR}; k at {rated_c} C from 1000 h to 50 % retained force at the rated "
-                    f"{rated_c} C (the rule: {PSP_LIFE}); illustrative")
+                src=f"k at {rated_c} C from 1000 h to 50 % retained force at the rated {rated_c} C "
+                    f"(the rule: {PSP_LIFE}); Ea the band {low / 1e3:.4g}-{high / 1e3:.4g} kJ/mol, the "
+                    "low end below the rating and the high end above it (the shorter life on both "
+                    f"sides, docs/model.md 6.5): {src}; illustrative",
+                ea_src=ea_src)
+
+
+PAZUR_BIIR = ("R.J. Pazur, T. Mengistu, 'Influence of the crosslink structure on the activation energy "
+              "calculated under thermo-oxidative conditions', Rubber Chem. Technol. 91 (2018) 205 "
+              "(abstract read): six bromobutyl (BIIR) compounds, 'The activation energy for the high "
+              "temperature oxidation process is in the range of 107 to 133 kJ/mol' (85-115 C) and 'The "
+              "low temperature activation energy is in the range of 55-60 kJ/mol' (23-85 C), on "
+              "hardness, mechanical properties and network chain density; bromobutyl stands in for "
+              "butyl")
+DOLE = ("P. Dole, J. Chauchard, 'Thermal aging of polyethylene-co-methyl acrylate elastomer: activation "
+        "energies of physical and physicochemical mechanisms', J. Appl. Polym. Sci. 65 (1997) 2507 "
+        "(abstract read): 'Relaxation mechanism has been found to have the lowest activation energy (45 "
+        "kJ/mol). Dominant chemical modification has been found to have the highest activation energy "
+        "(119 kJ/mol)', relaxation measured as compression set; the ethylene-acrylate elastomer (AEM) "
+        "stands in for ACM, the nearest acrylic elastomer with a value found")
+FVMQ_EA_SRC = ("ASSUMED, no FVMQ value found: low end VMQ's 67.7 kJ/mol on compression set (K. Xiang et "
+               "al., J. Polym. Res. 19 (2012) 9869, abstract), the same siloxane backbone (with it FVMQ "
+               "ages 2.6x faster than VMQ at every temperature below 175 C, from its 25 K lower "
+               f"rating); high end {PSP_RULE} at 175 C, R ln2/(1/448.15 - 1/458.15)")
+FFKM_EA_SRC = ("ASSUMED, no FFKM value found: low end the fkm-75 entry's own slope (two anchors, "
+               "Kommling et al. 2016 and the 200 C rating): an FFKM is taken to age no faster below "
+               "its rating than the FKM it perfluorinates (the ESA/Cetim round robin's 38 kJ/mol on "
+               "stress relaxation of an FKM, used before, put FFKM below FKM under 85 C, which no "
+               "source says); high end the highest of the round robin's compression-set energies, "
+               "214 kJ/mol (B. Omnes, 'Arrhenius seal life prediction project', Valve World, August "
+               "2023, p. 53; 74.9-159.6 kJ/mol for two ternary FKMs, Lee et al., Polymers 14 (2022) "
+               "2047, abstract)")
 
 
 COMPOUNDS += [
@@ -295,7 +351,10 @@ COMPOUNDS += [
          f"low-temperature limit of {EMI} ('Temperature Range: -55 C to +105 C') so that T10 meets it "
          f"(the class's calorimetric T_g: -66 C, {HANDBOOK}, Table 4.2; butyl's broad, highly damped "
          "transition is not modelled)",
-         cte=160e-6, cte_src=CTE_ASSUMED, ageing=rated_ageing(105),
+         cte=160e-6, cte_src=CTE_ASSUMED,
+         ageing=rated_ageing(105, 55e3, 133e3, PAZUR_BIIR,
+                             "Pazur & Mengistu 2018 (bromobutyl): 55-60 kJ/mol at 23-85 C, 107-133 "
+                             "at 85-115 C; band 55-133"),
          compat=[("mineral-oil", "X", f"{MOLDED}, row 'Oil and gasoline': Butyl P"),
                  ("water", "A", f"{MOLDED}, row 'Water resistance': Butyl E")]),
     dict(id="fvmq-70", name="FVMQ (fluorosilicone rubber), 70 Shore A", shore=70, low=-55, rated=175,
@@ -305,12 +364,18 @@ COMPOUNDS += [
          cte=200e-6, cte_src="ASSUMED equal to vmq-70's estimate for a filled silicone (engineeringniche.com, "
          "'Designing rubber and elastomeric materials to accommodate thermal expansion'); no FVMQ "
          "value found; illustrative",
-         ageing=rated_ageing(175), compat=[]),
+         ageing=rated_ageing(175, 67.7e3, ten_degree_doubling(175.0), FVMQ_EA_SRC,
+                             "ASSUMED band 67.7-118 kJ/mol: low end VMQ's (Xiang et al. 2012), high "
+                             "end the 10 K doubling rule at 175 C"),
+         compat=[]),
     dict(id="ffkm-75", name="FFKM (perfluoroelastomer), 75 Shore A", shore=75, low=-15, rated=260,
          tg=-15 - T10_ABOVE_TG, tg_src=f"calibrated: placed {T10_ABOVE_TG:g} K below the -15 C "
          f"standard low-temperature limit of {BODE} (FFKM column; special grades -35 C) so that T10 "
          "meets it",
-         cte=160e-6, cte_src=CTE_ASSUMED, ageing=rated_ageing(260),
+         cte=160e-6, cte_src=CTE_ASSUMED,
+         ageing=rated_ageing(260, FKM_EA, 214e3, FFKM_EA_SRC,
+                             f"ASSUMED band {FKM_EA / 1e3:.3g}-214 kJ/mol: low end the FKM entry's "
+                             "slope, high end ESA/Cetim's highest on compression set"),
          compat=[("hot-water", "A", "steam 'Above +200 C (> 14.6 bar) | FFKM': O-Ring Supply Co., "
                   "'Best O-ring material for steam' (secondary); 'FFKM - virtually everything': PTI "
                   "seal chemical compatibility glossary, pti-latam.com (tertiary)")]),
@@ -318,7 +383,10 @@ COMPOUNDS += [
          tg=-10 - T10_ABOVE_TG, tg_src=f"calibrated: placed {T10_ABOVE_TG:g} K below the -10 C of {PDB} "
          "('low temperature applications are usually limited to approximately -10 C'; a distributor "
          "glossary gives -15 C: the higher limit is the conservative one) so that T10 meets it",
-         cte=160e-6, cte_src=CTE_ASSUMED, ageing=rated_ageing(150),
+         cte=160e-6, cte_src=CTE_ASSUMED,
+         ageing=rated_ageing(150, 45e3, 119e3, DOLE,
+                             "Dole & Chauchard 1997 (AEM, ACM's nearest relative read): 45 kJ/mol on "
+                             "relaxation (compression set), 119 on the dominant chemical change"),
          compat=[("mineral-oil", "A", f"'resistant to heat, hydrocarbon oils and in particular, oil "
                   f"additives': {DANCO}"),
                  ("water", "X", f"'extremely susceptible to hydrolysis, hence their unsuitability for "
@@ -370,12 +438,15 @@ def toml_for(c, existing=None):
     ]
     if c["ageing"]:
         a = c["ageing"]
-        lines += ["", "[material.ageing]", f'activation_energy = "{a["ea"] / 1e3:.4g} kJ/mol"',
-                  f'rate = "{a["rate"]:.3e} 1/s"', f'reference_temperature = "{a["tref"]:g} C"',
+        lines += ["", "[material.ageing]", f'activation_energy = "{a["ea"] / 1e3:.4g} kJ/mol"']
+        if a.get("ea_above"):
+            lines.append(f'activation_energy_above = "{a["ea_above"] / 1e3:.4g} kJ/mol"')
+        lines += [f'rate = "{a["rate"]:.3e} 1/s"', f'reference_temperature = "{a["tref"]:g} C"',
                   "crosslinking = 1.0",
                   f'property = "{a["prop"]}"', f'criterion = "{a["crit"]}"']
         if a.get("medium"):
             lines.append(f'medium = "{a["medium"]}"')
+        lines.append(f'source = "{a["ea_src"]}"')
     lines += compatibility_block(c, existing)
     gent_src = (f"E(3 s, 23 C) = {d['e_test'] / 1e6:.4f} MPa from Gent's relation at {c['shore']} Shore A "
                 "(A.N. Gent 1958, 'On the relation between indentation hardness and Young's modulus', "

@@ -145,7 +145,7 @@ class RunResult:
         summary: the ``--summary`` JSON as a dict.
         time_to_failure: seconds, or None when the seal survives.
         failure_mode: ``leak_rate``, ``leaked_volume``, ``retained_force``, ``lift_off``, ...,
-            or ``none``.
+            ``low_temperature``, or ``none``.
         verdict: ``fails``, ``open`` or ``survives``; ``verdict_text`` the sentence.
         warnings: the validity findings, a list of dicts (as in the summary JSON).
     """

@@ -22,7 +22,7 @@ use std::path::{Path, PathBuf};
 #[command(
     after_help = "CSV columns: material, name, status, time_to_failure_s (blank when it \
     survives), failure_mode (leak_rate|leaked_volume|retained_force|compression_set|lift_off|\
-    extrusion|lost_interference|none), \
+    extrusion|lost_interference|sealing_force|contact_pressure|low_temperature|none), \
     leak_rate_1day_m3_per_s, leak_rate_1year_m3_per_s, leak_rate_10years_m3_per_s (blank beyond \
     the scenario's duration); for a gas also throughput_1day_Pa_m3_per_s, \
     throughput_1year_Pa_m3_per_s, throughput_10years_Pa_m3_per_s (the interface) and \

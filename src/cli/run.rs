@@ -160,6 +160,7 @@ fn report_page(
     let verdict = crate::report::life::verdict(life, result);
     let kind = match verdict.kind {
         crate::report::life::VerdictKind::Fails | crate::report::life::VerdictKind::Open => "fails",
+        crate::report::life::VerdictKind::Undecided => "undecided",
         crate::report::life::VerdictKind::Survives => "survives",
     };
     body += &html::verdict(kind, &verdict.text);

@@ -256,6 +256,13 @@ const HISTORY_GAS: &[Column] = &[
         "permeation through the rubber at the row's time and temperature, not in the \
          throughput (blank when the run carries none; docs/model.md §13.7)",
     ),
+    column(
+        "permeation_basis",
+        "",
+        "how the permeation figure was obtained: `published`, `illustrative` (derived or \
+         secondary), `bound` (NOT SOURCED: a stated conservative bound) or `user` \
+         (docs/model.md §13.4)",
+    ),
 ];
 
 const HISTORY_MOTION: &[Column] = &[column(
@@ -385,7 +392,8 @@ mod tests {
         CONTACT_COLUMNS, LEAK_COLUMNS, gas_leak_table, leak_table, motion_leak_table,
     };
     use crate::report::life::{
-        GAS_HISTORY_COLUMN, HISTORY_COLUMNS, MOTION_HISTORY_COLUMNS, PERMEATION_HISTORY_COLUMN,
+        GAS_HISTORY_COLUMN, HISTORY_COLUMNS, MOTION_HISTORY_COLUMNS,
+        PERMEATION_BASIS_HISTORY_COLUMN, PERMEATION_HISTORY_COLUMN,
     };
 
     /// The header row of a CSV text.
@@ -427,7 +435,11 @@ mod tests {
         assert_eq!(names(&groups[..1]), HISTORY_COLUMNS);
         assert_eq!(
             names(&groups[1..2]),
-            [GAS_HISTORY_COLUMN, PERMEATION_HISTORY_COLUMN]
+            [
+                GAS_HISTORY_COLUMN,
+                PERMEATION_HISTORY_COLUMN,
+                PERMEATION_BASIS_HISTORY_COLUMN
+            ]
         );
         assert_eq!(names(&groups[2..]), MOTION_HISTORY_COLUMNS);
     }

@@ -28,6 +28,7 @@ h2 { font-size: 1.2em; border-bottom: 1px solid #ccc; padding-bottom: 0.2em; mar
 .verdict.fails { background: #fbe3d6; border-left: 6px solid #d55e00; }
 .verdict.survives { background: #dcefe8; border-left: 6px solid #009e73; }
 .verdict.info { background: #e6f0f8; border-left: 6px solid #0072b2; }
+.verdict.undecided { background: #fdf3d0; border-left: 6px solid #e69f00; }
 .illustrative { background: #fff3cd; border: 1px solid #e6a700; padding: 0.5em 1em; border-radius: 4px; }
 table { border-collapse: collapse; margin: 0.5em 0; font-size: 0.92em; }
 th, td { border: 1px solid #ccc; padding: 0.25em 0.6em; text-align: left; vertical-align: top; }
@@ -64,7 +65,7 @@ pub fn paragraph(text: &str) -> String {
     format!("<p>{}</p>\n", escape(text))
 }
 
-/// The verdict box: `kind` is `fails`, `survives` or `info`.
+/// The verdict box: `kind` is `fails`, `survives`, `undecided` or `info`.
 pub fn verdict(kind: &str, text: &str) -> String {
     format!("<div class=\"verdict {kind}\">{}</div>\n", escape(text))
 }

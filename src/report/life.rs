@@ -15,7 +15,7 @@ use crate::material::shift::{DAY, YEAR};
 use crate::material::{Material, Status};
 use crate::report::findings::{FindingRecord, records};
 use crate::seal::SealGeometry;
-use crate::simulate::{AsperityModulus, LifeProblem, LifeResult, Loading};
+use crate::simulate::{AsperityModulus, LevelBand, LifeProblem, LifeResult, Loading, Outcome};
 use crate::units::human;
 use crate::validity::Limit;
 use serde::Serialize;
@@ -89,6 +89,11 @@ pub const GAS_HISTORY_COLUMN: &str = "throughput_Pa_m3_per_s";
 /// run carries no permeation; the notes say why). Not included in `throughput_Pa_m3_per_s`.
 pub const PERMEATION_HISTORY_COLUMN: &str = "permeation_Pa_m3_per_s";
 
+/// Column after [`PERMEATION_HISTORY_COLUMN`] for a gas: how the permeation figure was obtained
+/// (`published`, `illustrative`, `bound` — NOT SOURCED, a stated conservative bound — or
+/// `user`; docs/model.md §13.4), so that a bound is never read as a figure.
+pub const PERMEATION_BASIS_HISTORY_COLUMN: &str = "permeation_basis";
+
 /// The history of a life run as CSV: the header and one row per output time (t = 0, the
 /// installation, first). With `[motion]` the rows carry [`MOTION_HISTORY_COLUMNS`] too.
 pub fn history_table(result: &LifeResult) -> Result<String, ReportError> {
@@ -122,6 +127,7 @@ fn history_cells(result: &LifeResult, mean_pressure: Option<f64>) -> Result<Tabl
         .iter()
         .chain(mean_pressure.map(|_| &GAS_HISTORY_COLUMN))
         .chain(mean_pressure.map(|_| &PERMEATION_HISTORY_COLUMN))
+        .chain(mean_pressure.map(|_| &PERMEATION_BASIS_HISTORY_COLUMN))
         .chain(&MOTION_HISTORY_COLUMNS[..extra])
         .copied()
         .collect();
@@ -157,6 +163,10 @@ fn history_cells(result: &LifeResult, mean_pressure: Option<f64>) -> Result<Tabl
                 PERMEATION_HISTORY_COLUMN,
                 r.permeation,
             )?);
+            cells.push(match (r.permeation, result.permeation_status) {
+                (Some(_), Some(status)) => Cell::Text(status.as_str().to_owned()),
+                _ => Cell::Blank,
+            });
         }
         match r.motion {
             _ if extra == 0 => {}
@@ -219,11 +229,19 @@ pub struct Summary {
     pub loading: String,
     /// `critical-junction` (contact table) or `exact`.
     pub fidelity: String,
+    /// The contact-area relation when it is not the default: `corrected` (docs/model.md §2;
+    /// absent for Persson's).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub contact_area: Option<&'static str>,
     /// `fails`, `open` (no criterion crossed, but the seal was open or held by the fluid
     /// pressure alone: a waived lift-off) or `survives` (docs/model.md §8.1).
     pub verdict: &'static str,
     /// The verdict as the terminal summary prints it.
     pub verdict_text: String,
+    /// The same life at the neighbouring fidelity level (docs/model.md §4.1; absent where it was
+    /// not run).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub level_band: Option<BandSummary>,
     /// The state at the end of the run: `sealed`, `leaking`, `pressure_held` or `lift_off`.
     pub final_state: &'static str,
     /// The states in the order the run passed through them, each with the first output time
@@ -273,6 +291,14 @@ pub struct Summary {
     /// The shutdown check (docs/model.md §8.2), where it applies.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub shutdown: Option<ShutdownSummary>,
+    /// The coldest temperature over the run \[K\] and its first time \[s\].
+    #[serde(rename = "coldest_temperature_K")]
+    pub coldest_temperature_k: f64,
+    pub coldest_temperature_time_s: f64,
+    /// The cold limit (docs/model.md §8.3), where it applies (a compound with a T10, not
+    /// waived).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub low_temperature: Option<ColdLimitSummary>,
     /// Length of the run \[s\].
     pub duration_s: f64,
     /// Open fraction of the critical channels at the end of the run (1 without
@@ -290,6 +316,38 @@ pub struct Summary {
     /// A gas's pressures and throughputs (absent for a liquid; docs/model.md §3.9).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub gas: Option<GasSummary>,
+}
+
+/// The summary's `level_band`: the outcome and figures at the neighbouring fidelity level.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct BandSummary {
+    /// The neighbouring level.
+    pub level: &'static str,
+    /// `fails`, `open` or `survives` there.
+    pub verdict: &'static str,
+    /// Whether that differs from this level's outcome (the verdict is then `undecided`).
+    pub undecided: bool,
+    pub time_to_failure_s: Option<f64>,
+    pub failure_mode: String,
+    pub leaked_volume_m3: f64,
+    pub leaked_volume_is_lower_bound: bool,
+    pub maximum_leak_rate_m3_per_s: f64,
+}
+
+impl BandSummary {
+    fn new(result: &LifeResult) -> Option<Self> {
+        let band = result.band.as_ref()?;
+        Some(BandSummary {
+            level: band.level.name(),
+            verdict: VerdictKind::of(band.outcome()).as_str(),
+            undecided: result.undecided(),
+            time_to_failure_s: band.failure.map(|f| f.time),
+            failure_mode: band.failure.map_or("none", |f| f.mode.as_str()).to_owned(),
+            leaked_volume_m3: band.leaked_volume,
+            leaked_volume_is_lower_bound: band.leaked_volume_is_lower_bound,
+            maximum_leak_rate_m3_per_s: band.maximum_leak_rate,
+        })
+    }
 }
 
 /// One entry of the summary's `states`.
@@ -318,6 +376,23 @@ pub struct ShutdownSummary {
     /// When the interference was lost \[s\] (the located failure time when it is the failure;
     /// else the first output time), `null` when it held throughout.
     pub lost_s: Option<f64>,
+}
+
+/// The `low_temperature` object of the summary (docs/model.md §8.3).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ColdLimitSummary {
+    /// The compound's T10 \[K\].
+    #[serde(rename = "limit_K")]
+    pub limit_k: f64,
+    /// The margin below T10 the seal is taken to hold to \[K\].
+    #[serde(rename = "margin_K")]
+    pub margin_k: f64,
+    /// T10 − margin \[K\]: colder fails.
+    #[serde(rename = "threshold_K")]
+    pub threshold_k: f64,
+    /// When the rubber first went colder than the threshold \[s\] (the located failure time
+    /// when it is the failure; else the first output time), `null` when it never did.
+    pub crossed_s: Option<f64>,
 }
 
 /// The `gas` object of the summary: the throughput (pV flow at the gas temperature) that goes
@@ -363,6 +438,13 @@ pub struct GasSummary {
         skip_serializing_if = "Option::is_none"
     )]
     pub permeation_time_lag: Option<f64>,
+    /// How the permeation figure was obtained: `published`, `illustrative`, `bound` (NOT
+    /// SOURCED: a stated conservative bound) or `user` (docs/model.md §13.4).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub permeation_basis: Option<&'static str>,
+    /// Where the figure comes from (or how the bound was chosen), and whether D is a bound.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub permeation_source: Option<String>,
     /// `"rarefied"` or `"continuum"`: the flow law through the constrictions (docs/model.md
     /// §3.10).
     pub flow_law: &'static str,
@@ -382,7 +464,7 @@ impl GasSummary {
         let p = fluid.mean_pressure()?;
         let (first, last) = (p * result.initial_leak_rate(), p * result.final_leak_rate());
         let final_permeation = result.rows.last().and_then(|r| r.permeation);
-        let permeation_time_lag = match (problem.permeation, result.rows.last()) {
+        let permeation_time_lag = match (&problem.permeation, result.rows.last()) {
             // a diffusivity that underflows (a very cold rubber) has no finite lag: absent
             (Some(s), Some(r)) => s.time_lag(r.temperature).filter(|x| x.is_finite()),
             _ => None,
@@ -399,6 +481,8 @@ impl GasSummary {
             final_permeation,
             final_total: last + final_permeation.unwrap_or(0.0),
             permeation_time_lag,
+            permeation_basis: problem.permeation.as_ref().map(|s| s.data.status.as_str()),
+            permeation_source: problem.permeation.as_ref().map(|s| s.data.basis()),
             flow_law: match gas.flow_law {
                 crate::gas::FlowLaw::Rarefied => "rarefied",
                 crate::gas::FlowLaw::Continuum => "continuum",
@@ -725,8 +809,11 @@ impl Summary {
             seal: seal_kind(&problem.geometry).to_owned(),
             loading: loading_name(problem.loading).to_owned(),
             fidelity: problem.fidelity.name().to_owned(),
+            contact_area: (problem.contact.area != crate::contact::AreaModel::default())
+                .then(|| problem.contact.area.name()),
             verdict: verdict(problem, result).kind.as_str(),
             verdict_text: verdict(problem, result).text,
+            level_band: BandSummary::new(result),
             final_state: result.final_state().as_str(),
             states: result
                 .state_changes()
@@ -767,6 +854,14 @@ impl Summary {
                 }),
                 _ => None,
             },
+            coldest_temperature_k: problem.environment.coldest(0.0, problem.time.duration).0,
+            coldest_temperature_time_s: problem.environment.coldest(0.0, problem.time.duration).1,
+            low_temperature: problem.failure.low_temperature.map(|c| ColdLimitSummary {
+                limit_k: c.limit,
+                margin_k: c.margin,
+                threshold_k: c.threshold(),
+                crossed_s: problem.cold_limit_crossed(result),
+            }),
             duration_s: problem.time.duration,
             final_open_fraction: result.final_open_fraction(),
             warnings: records(&result.findings),
@@ -819,6 +914,11 @@ impl Summary {
             ),
             ("duration_s", self.duration_s),
             ("final_open_fraction", self.final_open_fraction),
+            ("coldest_temperature_K", self.coldest_temperature_k),
+            (
+                "coldest_temperature_time_s",
+                self.coldest_temperature_time_s,
+            ),
             (
                 "retained_force_reference_s",
                 self.retained_force_reference_s,
@@ -865,15 +965,28 @@ pub enum VerdictKind {
     Open,
     /// No criterion crossed, and the seal held by its squeeze throughout.
     Survives,
+    /// The neighbouring fidelity level gives another outcome: the model, not the physics it
+    /// resolves, would decide (docs/model.md §4.1). Never read as a pass.
+    Undecided,
 }
 
 impl VerdictKind {
-    /// `fails`, `open` or `survives` (JSON, the HTML verdict's class).
+    /// `fails`, `open`, `survives` or `undecided` (JSON, the HTML verdict's class).
     pub fn as_str(self) -> &'static str {
         match self {
             VerdictKind::Fails => "fails",
             VerdictKind::Open => "open",
             VerdictKind::Survives => "survives",
+            VerdictKind::Undecided => "undecided",
+        }
+    }
+
+    /// The kind of an outcome.
+    fn of(outcome: Outcome) -> Self {
+        match outcome {
+            Outcome::Fails => VerdictKind::Fails,
+            Outcome::Open => VerdictKind::Open,
+            Outcome::Survives => VerdictKind::Survives,
         }
     }
 }
@@ -887,19 +1000,64 @@ pub struct Verdict {
 
 /// The verdict of `result`, a run of `problem` (docs/model.md §8.1): "FAILS after … by …", or,
 /// without a failure, "OPEN …" when the seal was ever open or held by the pressure alone (a
-/// waived lift-off), else "survives …" with the state it ended in.
+/// waived lift-off), else "survives …" with the state it ended in — or "UNDECIDED by the
+/// model" with both when the neighbouring fidelity level gives another outcome (§4.1).
 pub fn verdict(problem: &LifeProblem, result: &LifeResult) -> Verdict {
+    let own = level_verdict(problem, result);
+    match &result.band {
+        Some(band) if result.undecided() => Verdict {
+            kind: VerdictKind::Undecided,
+            text: format!(
+                "UNDECIDED by the model: {} at {}, but {} at {} (the neighbouring fidelity \
+                 level; docs/model.md §4.1)",
+                own.text,
+                problem.fidelity.name(),
+                band_outcome_text(problem, band),
+                band.level.name()
+            ),
+        },
+        _ => own,
+    }
+}
+
+/// The outcome at the neighbouring level in a few words.
+fn band_outcome_text(problem: &LifeProblem, band: &LevelBand) -> String {
+    match (band.failure, band.open_since) {
+        (Some(f), _) => format!(
+            "FAILS {} by {}",
+            if f.time == 0.0 {
+                "at installation".to_owned()
+            } else {
+                format!("after {}", human_time(f.time))
+            },
+            f.mode.as_str()
+        ),
+        (None, Some(t)) => format!("OPEN from {}", at_time(t)),
+        (None, None) => format!("survives {}", human_time(problem.time.duration)),
+    }
+}
+
+/// The verdict at the run's own level (see [`verdict`]).
+fn level_verdict(problem: &LifeProblem, result: &LifeResult) -> Verdict {
     let duration = human_time(problem.time.duration);
-    let open = result.rows.iter().find(|r| r.state.is_open());
+    // the states with their located times (docs/model.md §10.1), not the output rows
+    let states = &result.course.states;
+    let open = states.iter().find(|(s, _)| s.is_open());
     match (result.failure, open) {
         (Some(f), _) => {
+            // the open state the lift-off failure found: in effect at its time, or beginning
+            // within the simultaneous-events window after it (docs/model.md §8)
+            let window = f.time * (1.0 + crate::simulate::events::SIMULTANEOUS_EVENTS);
             let how = match f.mode {
-                crate::simulate::FailureMode::LiftOff => result
-                    .rows
+                crate::simulate::FailureMode::LiftOff => states
                     .iter()
-                    .find(|r| r.state.is_open() && r.time >= f.time)
-                    .map_or(String::new(), |r| {
-                        format!(": {}, {}", r.state.label(), r.state.meaning())
+                    .enumerate()
+                    .find(|&(i, (s, t))| {
+                        let until = states.get(i + 1).map_or(f64::INFINITY, |n| n.1);
+                        s.is_open() && *t <= window && until > f.time
+                    })
+                    .map_or(String::new(), |(_, (s, _))| {
+                        format!(": {}, {}", s.label(), s.meaning())
                     }),
                 _ => String::new(),
             };
@@ -913,17 +1071,17 @@ pub fn verdict(problem: &LifeProblem, result: &LifeResult) -> Verdict {
                 text: format!("FAILS {when} by {}{how}", f.mode.as_str()),
             }
         }
-        (None, Some(r)) => Verdict {
+        (None, Some(&(state, time))) => Verdict {
             kind: VerdictKind::Open,
             text: format!(
                 "{} ({}) from {}: not counted as a failure only because [failure] lift_off = \
                  false waives it",
-                r.state.label(),
-                r.state.meaning(),
-                if r.time == 0.0 {
+                state.label(),
+                state.meaning(),
+                if time == 0.0 {
                     "installation".to_owned()
                 } else {
-                    format!("t = {}", human_time(r.time))
+                    format!("t = {}", human_time(time))
                 }
             ),
         },
@@ -1079,12 +1237,14 @@ pub fn human_summary(
     out.line("fluid", fluid_line(problem));
     out.line("temperature", temperature_line(&problem.environment));
     out.line("ageing", ageing_line(problem));
+    out.optional("contact area", contact_area_line(problem));
     if let (Some(first), Some(last)) = (result.rows.first(), result.rows.last()) {
         out.line("sealing force", sealing_force_line(&run, first, last));
         out.optional("lowest", lowest_line(&run, first));
         out.optional("set", set_line(&run, last));
         out.optional("shutdown", shutdown_line(&run, last));
     }
+    out.optional("cold limit", cold_limit_line(&run));
     out.line("state", state_line(result));
     out.line("leak rate", leak_rate_line(&run));
     if let Some((q, t)) = result.maximum_leak_rate()
@@ -1104,8 +1264,23 @@ pub fn human_summary(
     {
         out.line("motion", motion_description(spec, &m, &run.duration));
     }
+    if let Some(band) = &result.band {
+        out.line("level band", band_line(problem, result, band));
+    }
     out.line("result", verdict(problem, result).text);
     out.text
+}
+
+/// The contact-area relation when it is not the default (`[model] area`, docs/model.md §2).
+fn contact_area_line(problem: &LifeProblem) -> Option<String> {
+    match problem.contact.area {
+        crate::contact::AreaModel::Persson => None,
+        crate::contact::AreaModel::Corrected => Some(
+            "corrected (Wang & Müser 2017; the default \"persson\" gives a smaller contact area \
+             and, mostly, a larger leak)"
+                .to_owned(),
+        ),
+    }
 }
 
 /// The terminal summary being written: labelled lines.
@@ -1323,13 +1498,69 @@ fn shutdown_line(run: &SummaryRun, last: &crate::simulate::HistoryRow) -> Option
             }
         },
     );
+    // below T10 the ring was also cooled through its hereditary response (§8.2)
+    let glassy = s.glassy_peak_pressure.map_or(String::new(), |peak| {
+        format!(
+            "; below T10, cooled from service over {}: contact pressure {} MPa after {}",
+            human_time(shutdown.cooling_time),
+            human(peak / 1e6, 3),
+            run.duration,
+        )
+    });
     Some(format!(
-        "at {} and ΔP = {} MPa: squeeze of the set ring {} % after {}; {lost}",
+        "at {} and ΔP = {} MPa: squeeze of the set ring {} % after {}{glassy}; {lost}",
         celsius(shutdown.temperature),
         human(shutdown.pressure_difference / 1e6, 3),
         human(100.0 * s.remaining_squeeze, 3),
         run.duration,
     ))
+}
+
+/// The cold limit (docs/model.md §8.3): the compound's T10, the margin, the coldest temperature
+/// and whether (and when) the run went colder. Shown where the run goes below T10, or the cold
+/// limit is its failure; the JSON always carries it.
+fn cold_limit_line(run: &SummaryRun) -> Option<String> {
+    let p = run.problem;
+    let t10 = p.material.low_temperature_limit()?;
+    let (coldest, when) = p.environment.coldest(0.0, p.time.duration);
+    let failed = run
+        .result
+        .failure
+        .is_some_and(|f| f.mode == crate::simulate::FailureMode::LowTemperature);
+    if coldest >= t10 && !failed {
+        return None;
+    }
+    let coldest = format!("coldest {} {}", celsius(coldest), at_time(when));
+    Some(match p.failure.low_temperature {
+        None => format!(
+            "T10 = {}, {coldest}; not checked: [failure] low_temperature = false waives it",
+            celsius(t10)
+        ),
+        Some(c) => {
+            let crossed = match p.cold_limit_crossed(run.result) {
+                None => format!(
+                    "holds ({} K above it)",
+                    human(
+                        p.environment.coldest(0.0, p.time.duration).0 - c.threshold(),
+                        3
+                    )
+                ),
+                Some(t) if failed || run.result.failure.is_none() => {
+                    format!("colder {}", at_time(t).replacen("at ", "from ", 1))
+                }
+                Some(t) => format!(
+                    "colder {} (after the run had failed)",
+                    at_time(t).replacen("at ", "from ", 1)
+                ),
+            };
+            format!(
+                "T10 = {} less the margin {} K: holds to {}; {coldest}; {crossed}",
+                celsius(t10),
+                human(c.margin, 3),
+                celsius(c.threshold()),
+            )
+        }
+    })
 }
 
 /// The seal's states in order, with when each began.
@@ -1376,7 +1607,7 @@ fn leak_rate_line(run: &SummaryRun) -> String {
 /// permeation through the rubber and the total, where computed.
 fn gas_flow_lines(out: &mut SummaryText, run: &SummaryRun, p: f64) {
     let (problem, result, floor, duration) = (run.problem, run.result, run.floor, &run.duration);
-    let sealed = result.rows.iter().all(|r| r.leak_rate == 0.0);
+    let sealed = result.course.max_leak_rate.0 == 0.0;
     let law = match result.continuum_leak_rate {
         _ if sealed => "sealed through the interface: no channel percolates".to_owned(),
         Some(c) if c > 0.0 && result.initial_leak_rate() > 0.0 => format!(
@@ -1408,7 +1639,7 @@ fn gas_flow_lines(out: &mut SummaryText, run: &SummaryRun, p: f64) {
     ) else {
         return;
     };
-    let lag = match (problem.permeation, result.rows.last()) {
+    let lag = match (&problem.permeation, result.rows.last()) {
         (Some(s), Some(r)) => s.time_lag(r.temperature).map_or_else(
             || "time lag unknown: steady flow from installation, an upper bound".to_owned(),
             |lag| {
@@ -1421,11 +1652,14 @@ fn gas_flow_lines(out: &mut SummaryText, run: &SummaryRun, p: f64) {
         ),
         _ => String::new(),
     };
+    let basis = problem
+        .permeation
+        .as_ref()
+        .map_or_else(String::new, |s| format!("; {}", s.data.basis()));
     out.line(
         "permeation",
         format!(
-            "{} at installation, {} after {duration} (through the rubber; {lag}; \
-             ILLUSTRATIVE data)",
+            "{} at installation, {} after {duration} (through the rubber; {lag}{basis})",
             throughput(first),
             throughput(last)
         ),
@@ -1441,24 +1675,57 @@ fn gas_flow_lines(out: &mut SummaryText, run: &SummaryRun, p: f64) {
     );
 }
 
-/// The volume leaked over the run (a lower bound when the seal was open).
+/// The volume leaked over the run; "≥" when the seal was ever lifted off, where the model gives
+/// only a lower bound of the flow (docs/model.md §8.1) — also when that bound is 0.
 fn leaked_volume_line(run: &SummaryRun) -> String {
     let result = run.result;
+    let volume = result.leaked_volume();
+    let amount = format!("{} m³ ({} mL)", human(volume, 3), human(volume * 1e6, 3));
+    if !result.leaked_volume_is_lower_bound() {
+        return format!("{amount} in {}", run.duration);
+    }
+    let course = &result.course;
+    let lifted = human_time(course.lifted_duration);
+    let bound = if course.lifted_volume > 0.0 {
+        format!(
+            "{} mL of it while lifted off for {lifted}, where the model gives only a lower \
+             bound of the flow",
+            human(course.lifted_volume * 1e6, 3)
+        )
+    } else {
+        format!(
+            "lifted off for {lifted}, where the model's lower bound of the flow is 0: the \
+             true volume is larger by an unknown amount"
+        )
+    };
+    format!("≥ {amount} in {} (a lower bound: {bound})", run.duration)
+}
+
+/// How far the result moves at the neighbouring fidelity level (docs/model.md §4.1).
+fn band_line(problem: &LifeProblem, result: &LifeResult, band: &LevelBand) -> String {
+    let own = result.leaked_volume();
+    let ratio = if own > 0.0 && band.leaked_volume > 0.0 {
+        format!(" (×{} this level's)", human(band.leaked_volume / own, 2))
+    } else {
+        String::new()
+    };
+    let decided = if result.undecided() {
+        "another outcome: UNDECIDED by the model"
+    } else {
+        "the same outcome: the model does not decide the verdict"
+    };
     format!(
-        "{}{} m³ ({} mL) in {}{}",
-        if result.leaked_volume_is_lower_bound() {
+        "at {} (the neighbouring level): leaked volume {}{} m³{ratio}, highest leak rate {} \
+         m³/s; {}; {decided}",
+        band.level.name(),
+        if band.leaked_volume_is_lower_bound {
             "≥ "
         } else {
             ""
         },
-        human(result.leaked_volume(), 3),
-        human(result.leaked_volume() * 1e6, 3),
-        run.duration,
-        if result.leaked_volume_is_lower_bound() {
-            " (a lower bound: it includes the lower bound of the open seal's flow)"
-        } else {
-            ""
-        }
+        human(band.leaked_volume, 3),
+        human(band.maximum_leak_rate, 3),
+        band_outcome_text(problem, band),
     )
 }
 
@@ -1703,8 +1970,13 @@ pub struct CompareRow<'a> {
     /// Leak rates below it read "≈ 0" in the text table (the CSV keeps them).
     pub floor: LeakFloor,
     /// What this compound's run left out for want of data (`compare` degrades rather than
-    /// aborts: no ageing constants, no permeation data), "; "-separated; empty when nothing.
+    /// aborts: no ageing constants), "; "-separated; empty when nothing.
     pub notes: String,
+    /// Where the compound's ageing activation energy comes from
+    /// ([`crate::workflow::compare::ageing_source`]).
+    pub ageing_source: String,
+    /// A gas: the permeation figure's basis (sourced, derived, NOT SOURCED bound, user's).
+    pub permeation_source: Option<String>,
 }
 
 impl<'a> CompareRow<'a> {
@@ -1721,21 +1993,40 @@ impl<'a> CompareRow<'a> {
             mean_pressure: life.fluid.mean_pressure(),
             floor: LeakFloor::of(&life.fluid, floor),
             notes: crate::workflow::compare::notes(life, run.scenario.compatibility.as_ref()),
+            ageing_source: crate::workflow::compare::ageing_source(life, &run.material),
+            permeation_source: crate::workflow::compare::permeation_source(life),
         }
     }
 }
 
 /// The comparison's columns of the end of each run, after the leak rates (and throughputs).
-pub const COMPARE_END_COLUMNS: [&str; 6] = [
+pub const COMPARE_END_COLUMNS: [&str; 10] = [
     "sealing_force_end_N_per_m",
     "retained_force_end",
     "leaked_volume_end_m3",
+    "leaked_volume_is_lower_bound",
     "compression_set_end",
     "state_end",
+    "verdict",
+    "neighbour_level",
+    "neighbour_verdict",
     "notes",
 ];
 
+/// The comparison's last columns: where each compound's ageing activation energy comes from,
+/// and (a gas) its permeation figure's basis (docs/model.md §6.5, §13.4).
+pub const COMPARE_SOURCE_COLUMNS: [&str; 2] = ["activation_energy_source", "permeation_source"];
+
 impl CompareRow<'_> {
+    /// The run's verdict kind (`undecided` where the neighbouring level gives another outcome).
+    fn verdict_kind(&self) -> VerdictKind {
+        if self.result.undecided() {
+            VerdictKind::Undecided
+        } else {
+            VerdictKind::of(self.result.outcome())
+        }
+    }
+
     /// The end of the run: sealing force \[N/m\], retained force (over the reference),
     /// leaked volume \[m³\], compression set, state.
     fn end(&self) -> (f64, f64, f64, Option<f64>, &'static str) {
@@ -1796,6 +2087,10 @@ pub fn compare_table(rows: &[CompareRow<'_>]) -> Result<String, ReportError> {
         header.extend(COMPARE_GAS_COLUMNS);
     }
     header.extend(COMPARE_END_COLUMNS);
+    header.push(COMPARE_SOURCE_COLUMNS[0]);
+    if gas.is_some() {
+        header.push(COMPARE_SOURCE_COLUMNS[1]);
+    }
     writer.write_record(&header).map_err(csv_error)?;
     for (i, r) in rows.iter().enumerate() {
         let row = i + 1;
@@ -1827,11 +2122,23 @@ pub fn compare_table(rows: &[CompareRow<'_>]) -> Result<String, ReportError> {
         record.push(number(row, COMPARE_END_COLUMNS[0], force)?);
         record.push(number(row, COMPARE_END_COLUMNS[1], retained)?);
         record.push(number(row, COMPARE_END_COLUMNS[2], volume)?);
+        record.push(r.result.leaked_volume_is_lower_bound().to_string());
         record.push(set.map_or(Ok(String::new()), |c| {
-            number(row, COMPARE_END_COLUMNS[3], c)
+            number(row, COMPARE_END_COLUMNS[4], c)
         })?);
         record.push(state.to_owned());
+        record.push(r.verdict_kind().as_str().to_owned());
+        let band = r.result.band.as_ref();
+        record.push(band.map_or("", |b| b.level.name()).to_owned());
+        record.push(
+            band.map_or("", |b| VerdictKind::of(b.outcome()).as_str())
+                .to_owned(),
+        );
         record.push(r.notes.clone());
+        record.push(r.ageing_source.clone());
+        if gas.is_some() {
+            record.push(r.permeation_source.clone().unwrap_or_default());
+        }
         writer.write_record(record).map_err(csv_error)?;
     }
     finish(writer)
@@ -1890,7 +2197,11 @@ pub fn compare_cells(rows: &[CompareRow<'_>]) -> Vec<Vec<String>> {
         "set".to_owned(),
         "state at end".to_owned(),
         "notes".to_owned(),
+        "ageing Ea: source".to_owned(),
     ]];
+    if rows.first().is_some_and(|r| r.mean_pressure.is_some()) {
+        cells[0].push("permeation: basis".to_owned());
+    }
     for r in rows {
         let scale = r.mean_pressure.unwrap_or(1.0);
         let rate = |q: Option<f64>| {
@@ -1910,13 +2221,21 @@ pub fn compare_cells(rows: &[CompareRow<'_>]) -> Vec<Vec<String>> {
         cells.push(vec![
             r.label.to_owned(),
             r.material.status.as_str().to_owned(),
-            match (r.result.failure, r.result.open_since()) {
-                (Some(f), _) if f.time == 0.0 => "at installation".to_owned(),
-                (Some(f), _) => human_time(f.time),
-                // a waived lift-off: never "survives"
-                (None, Some(_)) => "OPEN (not counted)".to_owned(),
-                (None, None) => "survives".to_owned(),
-            },
+            format!(
+                "{}{}",
+                if r.result.undecided() {
+                    "UNDECIDED: "
+                } else {
+                    ""
+                },
+                match (r.result.failure, r.result.open_since()) {
+                    (Some(f), _) if f.time == 0.0 => "at installation".to_owned(),
+                    (Some(f), _) => human_time(f.time),
+                    // a waived lift-off: never "survives"
+                    (None, Some(_)) => "OPEN (not counted)".to_owned(),
+                    (None, None) => "survives".to_owned(),
+                }
+            ),
             failure_mode(r.result).to_owned(),
             rate(day),
             rate(year),
@@ -1932,11 +2251,25 @@ pub fn compare_cells(rows: &[CompareRow<'_>]) -> Vec<Vec<String>> {
             } else {
                 format!("{} %", human(100.0 * retained, 2))
             },
-            human(volume * 1e6, 2),
+            format!(
+                "{}{}",
+                if r.result.leaked_volume_is_lower_bound() {
+                    "≥ "
+                } else {
+                    ""
+                },
+                human(volume * 1e6, 2)
+            ),
             set.map_or_else(|| "-".to_owned(), |c| format!("{} %", human(100.0 * c, 2))),
             state.to_owned(),
             r.notes.clone(),
+            r.ageing_source.clone(),
         ]);
+        if let Some(p) = &r.permeation_source {
+            if let Some(row) = cells.last_mut() {
+                row.push(p.clone());
+            }
+        }
     }
     if rows.first().is_some_and(|r| r.mean_pressure.is_some()) {
         cells.push(vec![
@@ -1988,6 +2321,8 @@ mod tests {
 
     fn result(rows: Vec<HistoryRow>) -> LifeResult {
         LifeResult {
+            course: crate::simulate::Course::from_rows(&rows),
+            band: None,
             rows,
             failure: Some(FailureEvent {
                 time: 2.5 * YEAR,
@@ -1996,6 +2331,7 @@ mod tests {
             findings: Default::default(),
             reference_force: 1000.0,
             continuum_leak_rate: None,
+            permeation_status: None,
         }
     }
 
@@ -2113,6 +2449,8 @@ mod tests {
                 given: true,
             },
             notes: String::new(),
+            ageing_source: "no ageing constants".into(),
+            permeation_source: None,
         }];
         let text = compare_table(&rows).unwrap();
         let line = text.lines().nth(1).unwrap();
@@ -2121,7 +2459,7 @@ mod tests {
         let volume_cell =
             |line: &str, k: usize| -> f64 { line.split(',').nth(k).unwrap().parse().unwrap() };
         let (head, tail) = line.rsplit_once(",,leaking,").unwrap();
-        assert_eq!(tail, "");
+        assert_eq!(tail, ",no ageing constants");
         assert!(
             head.starts_with("x,rubber,user,7.8894e7,leak_rate,1e-12,,,1e3,1e0,"),
             "{line}"
@@ -2131,6 +2469,7 @@ mod tests {
         // a gas at p̄ = 1.5 bar: the throughputs p̄ Q̇ after the volume flows (a format test)
         let gas = [CompareRow {
             mean_pressure: Some(1.5e5),
+            permeation_source: Some("NOT SOURCED bound: x".into()),
             ..rows[0].clone()
         }];
         let text = compare_table(&gas).unwrap();
@@ -2139,14 +2478,17 @@ mod tests {
              throughput_10years_Pa_m3_per_s,total_throughput_1day_Pa_m3_per_s,\
              total_throughput_1year_Pa_m3_per_s,total_throughput_10years_Pa_m3_per_s,\
              sealing_force_end_N_per_m,retained_force_end,leaked_volume_end_m3,\
-             compression_set_end,state_end,notes"
+             compression_set_end,state_end,notes,activation_energy_source,permeation_source"
         ));
         let line = text.lines().nth(1).unwrap();
         assert!(
             line.starts_with("x,rubber,user,7.8894e7,leak_rate,1e-12,,,1.5e-7,,,1.5e-7,,,1e3,1e0,"),
             "{line}"
         );
-        assert!(line.ends_with(",,leaking,"), "{line}");
+        assert!(
+            line.ends_with(",,leaking,,no ageing constants,NOT SOURCED bound: x"),
+            "{line}"
+        );
         assert!((volume_cell(line, 16) / (1e-12 * 2.0 * DAY) - 1.0).abs() < 1e-12);
         assert!(compare_text(&gas).contains("Q 1 day [Pa·m³/s]"));
     }

@@ -76,6 +76,9 @@ pub fn material_toml(m: &Material) -> String {
             &format!("[{}, {}]", quantity(lo, "K"), quantity(hi, "K")),
         );
     }
+    if let Some(class) = &m.class {
+        line(&mut out, "class", &string(class));
+    }
     match m.shift {
         Shift::None => {}
         Shift::Wlf { reference, c1, c2 } => {
@@ -114,6 +117,26 @@ pub fn material_toml(m: &Material) -> String {
             ));
         }
     }
+    if !m.permeation.is_empty() {
+        out.push_str("\n[material.permeation]\n");
+        for p in &m.permeation {
+            let mut fields = vec![format!(
+                "permeability = {}",
+                quantity(p.permeability, "mol/(m*s*Pa)")
+            )];
+            if let Some(d) = p.diffusivity {
+                fields.push(format!("diffusivity = {}", quantity(d, "m^2/s")));
+            }
+            if let Some(source) = &p.source {
+                fields.push(format!("source = {}", string(source)));
+            }
+            out.push_str(&format!(
+                "{} = {{ {} }}\n",
+                bare_or_quoted_key(&p.gas),
+                fields.join(", ")
+            ));
+        }
+    }
     if !m.provenance.is_empty() {
         out.push_str("\n[material.provenance]\n");
         for (key, text) in &m.provenance {
@@ -133,6 +156,13 @@ pub fn ageing_toml(a: &Ageing, basis: Option<&AgeingBasis>) -> String {
         "activation_energy",
         &quantity(a.activation_energy, "J/mol"),
     );
+    if a.is_two_sided() {
+        line(
+            &mut out,
+            "activation_energy_above",
+            &quantity(a.activation_energy_above, "J/mol"),
+        );
+    }
     line(&mut out, "rate", &quantity(a.rate, "1/s"));
     line(
         &mut out,
@@ -145,6 +175,9 @@ pub fn ageing_toml(a: &Ageing, basis: Option<&AgeingBasis>) -> String {
         line(&mut out, "criterion", &string(&b.criterion));
         if let Some(m) = b.medium {
             line(&mut out, "medium", &string(m.as_str()));
+        }
+        if let Some(source) = &b.source {
+            line(&mut out, "source", &string(source));
         }
     }
     out
@@ -260,6 +293,7 @@ mod tests {
         m.glassy_thermal_expansion = Some(7.7e-5);
         m.ageing = Some(Ageing {
             activation_energy: 9e4,
+            activation_energy_above: 9e4,
             rate: 1e-9,
             reference_temperature: 373.15,
             crosslinking: 0.5,
@@ -268,6 +302,7 @@ mod tests {
             property: "compression set".into(),
             criterion: "80 % \"set\"".into(),
             medium: None,
+            source: None,
         });
         m.provenance.push(("odd key".into(), "x".into()));
         let text = material_toml(&m);

@@ -311,14 +311,29 @@ impl Card<'_> {
                 if let Some(b) = &m.ageing_basis {
                     extra.push(format!("property: {}", b.property));
                     extra.push(format!("criterion: {}", b.criterion));
+                    if let Some(source) = &b.source {
+                        extra.push(format!("Ea source: {source}"));
+                    }
                 }
+                let energy = if a.is_two_sided() {
+                    format!(
+                        "Ea = {} kJ/mol at and below it, {} kJ/mol above it (a band about the \
+                         anchor: the shorter life on both sides, docs/model.md §6.5)",
+                        human(a.activation_energy / 1e3, 6),
+                        human(a.activation_energy_above / 1e3, 6)
+                    )
+                } else {
+                    format!(
+                        "Ea = {} kJ/mol (Arrhenius)",
+                        human(a.activation_energy / 1e3, 6)
+                    )
+                };
                 self.param(
                     "ageing",
                     format!(
-                        "scission k_ref = {} 1/s at {}, Ea = {} kJ/mol (Arrhenius)",
+                        "scission k_ref = {} 1/s at {}, {energy}",
                         human(a.rate, 6),
                         temperature(a.reference_temperature),
-                        human(a.activation_energy / 1e3, 6)
                     ),
                     &extra,
                 );
@@ -346,17 +361,56 @@ impl Card<'_> {
                  Gehman test (ASTM D1053, ISO 1432) computed from the Prony series and the shift\n"
             );
         }
-        if let Some((ratio, basis)) = m
-            .library_id
-            .as_deref()
-            .and_then(crate::permeation::family_of)
-            .and_then(crate::permeation::helium_nitrogen_ratio)
-        {
+        self.permeation();
+    }
+
+    /// The gas permeation figures the compound runs with (its own, else its class's), each
+    /// with its source or "NOT SOURCED bound", and the He/N2 ratio (docs/model.md §13.4).
+    fn permeation(&mut self) {
+        let m = self.m;
+        let class = m.class.as_deref();
+        let gases: Vec<String> = crate::permeation::GASES
+            .iter()
+            .map(|g| g.replace(' ', "-"))
+            .chain(
+                m.permeation
+                    .iter()
+                    .map(|p| p.gas.clone())
+                    .filter(|g| !crate::permeation::GASES.contains(&g.replace('-', " ").as_str())),
+            )
+            .collect();
+        let rows: Vec<_> = gases
+            .iter()
+            .filter_map(|g| crate::permeation::figure(class, &m.permeation, g).ok())
+            .collect();
+        if rows.is_empty() {
             self.out += &format!(
-                "{:<19} He/N2 = {} at 23 °C (docs/model.md §13.4)\n{INDENT}basis: {basis}\n",
-                "permeation",
-                human(ratio, 3)
+                "{:<19} none: no `class` and no [material.permeation]; a gas run is refused \
+                 until one is given (docs/model.md §13.4)\n",
+                "permeation"
             );
+            return;
+        }
+        self.out += &format!(
+            "{:<19} at 23 °C{} (docs/model.md §13.4)\n",
+            "permeation",
+            class.map_or_else(String::new, |c| format!(", class {c}"))
+        );
+        for row in rows {
+            let lag = match (row.diffusivity, row.diffusivity_is_bound) {
+                (Some(d), true) => format!(", D ≤ {} m²/s (bound)", human(d, 3)),
+                (Some(d), false) => format!(", D = {} m²/s", human(d, 3)),
+                (None, _) => String::new(),
+            };
+            self.out += &format!(
+                "{INDENT}{}: {} barrer{lag}\n{INDENT}  {}\n",
+                row.gas.replace(' ', "-"),
+                human(crate::permeation::si_to_barrer(row.permeability), 4),
+                row.basis()
+            );
+        }
+        if let Some((ratio, _)) = class.and_then(crate::permeation::helium_nitrogen_ratio) {
+            self.out += &format!("{INDENT}He/N2 = {}\n", human(ratio, 3));
         }
     }
 

@@ -172,10 +172,9 @@ impl Source<'_> {
             loading,
             housing_expansion,
             installation_temperature: Some(installation_temperature),
-            fitting_temperature: raw
-                .installation_temperature
-                .is_some()
-                .then_some(installation_temperature),
+            // a groove-seated ring is fitted at its installation temperature, 23 °C unless
+            // given, like the geometry it is referred to (docs/model.md §5.2, §6.2): not T(0)
+            fitting_temperature: Some(installation_temperature),
             design: Some(design),
             warnings,
             thickness: None,

@@ -370,6 +370,25 @@ const MATERIAL: &[Key] = &[
          source = \"…\" }` (docs/model.md §6.8)",
     ),
     key(
+        "class",
+        Choice(CLASSES),
+        Absent(
+            "a library compound's class comes from its id; another material has none, and a \
+             gas run then needs the gas's figure in `[material.permeation]`",
+        ),
+        "the compound class whose data kept by class apply: gas permeation (docs/model.md \
+         §13.4; sourced figures or stated NOT SOURCED bounds). Not with `library` or `file`",
+    ),
+    key(
+        "permeation",
+        Map,
+        Absent("the class's figures"),
+        "gas (`helium`, `hydrogen`, `nitrogen`, `oxygen`, `air`, `carbon-dioxide`, `methane`, \
+         `argon`, or `custom` for a custom gas) → `{ permeability = \"5 barrer\", diffusivity \
+         = \"3e-10 m^2/s\", source = \"…\" }`: the compound's own figure at 23 °C, used \
+         instead of its class's (docs/model.md §13.4); allowed next to `library` and `file`",
+    ),
+    key(
         "provenance",
         Map,
         Absent("required in library files"),
@@ -439,7 +458,19 @@ const MATERIAL_AGEING: &[Key] = &[
         "activation_energy",
         Quantity(mat::AGEING_ACTIVATION_ENERGY),
         Required(""),
-        "Ea of the scission rate",
+        "Ea of the scission rate (at and below `reference_temperature` when \
+         `activation_energy_above` is given)",
+    ),
+    key(
+        "activation_energy_above",
+        Quantity(mat::AGEING_ACTIVATION_ENERGY_ABOVE),
+        SameAs(
+            "material.ageing.activation_energy",
+            "`activation_energy`: one Arrhenius law",
+        ),
+        "Ea above `reference_temperature`: a band [low, high] of Ea about a rating anchor takes \
+         the low end below the anchor and the high end above it, the shorter life on both sides \
+         (docs/model.md §6.5)",
     ),
     key(
         "rate",
@@ -478,6 +509,35 @@ const MATERIAL_AGEING: &[Key] = &[
         Absent(""),
         "the medium the compound was aged in",
     ),
+    key(
+        "source",
+        Text,
+        Absent("every library file has one"),
+        "where the activation energy comes from, in a line (`sealsim compare` prints it beside \
+         each compound)",
+    ),
+];
+
+/// The compound classes of `material.class` ([`crate::permeation::FAMILIES`]; a test checks
+/// them against it).
+pub(super) const CLASSES: &[&str] = &[
+    "acm", "cr", "epdm", "ffkm", "fkm", "fvmq", "hnbr", "iir", "nbr", "vmq",
+];
+
+const PERMEATION: &[Key] = &[
+    key(
+        "permeability",
+        Quantity(mat::PERMEABILITY),
+        Required(""),
+        "Π at 23 °C, in `barrer` (1e-10 cm³(STP)·cm/(cm²·s·cmHg)) or `mol/(m*s*Pa)`",
+    ),
+    key(
+        "diffusivity",
+        Quantity(mat::DIFFUSIVITY),
+        Absent("the steady flow from installation (an upper bound)"),
+        "D at 23 °C, for the build-up over the time lag w²/6D",
+    ),
+    key("source", Text, Absent(""), "where the figure comes from"),
 ];
 
 const COMPATIBILITY: &[Key] = &[
@@ -744,7 +804,7 @@ const SEAL: &[Key] = &[
     key(
         "thickness",
         Quantity(life::THICKNESS),
-        Absent("no permeation"),
+        Absent("a liquid needs none; a gas run on a flat seal is refused without it"),
         "flat: compressed thickness, the edge a gas permeates through (docs/model.md §13.3)",
     ),
     key(
@@ -784,7 +844,8 @@ const SEAL: &[Key] = &[
         "installation_temperature",
         Temperature,
         Derived("the environment's temperature at t = 0; 23 °C in a gland"),
-        "O-ring: T_install, the reference of the thermal strain",
+        "O-ring: T_install, the fitting temperature (the ring then settles to the environment over \
+         its thermal time, docs/model.md §5.2) and the reference of the thermal strain",
     ),
     key(
         "installation_time",
@@ -900,6 +961,14 @@ const MODEL: &[Key] = &[
         Quantity(val::GAMMA),
         Literal("0.4", ""),
         "γ of the mean-separation kernel",
+    ),
+    key(
+        "area",
+        Choice(&["persson", "corrected"]),
+        Literal("\"persson\"", ""),
+        "the contact area A(ζ)/A0: `\"persson\"` (Persson 2001, κ = √(8/π) ≈ 1.60: the smaller \
+         area, so the larger leak) or `\"corrected\"` (Wang & Müser 2017, κ ≈ 2.14, within 10 % \
+         of the numerical level's area; docs/model.md §2, docs/src/validation.md)",
     ),
 ];
 
@@ -1029,8 +1098,27 @@ const FAILURE: &[Key] = &[
         "minimum_pressure_difference",
         Quantity(life::MINIMUM_PRESSURE_DIFFERENCE),
         Literal("\"0 bar\"", ""),
-        "ΔP_min, the lowest pressure difference the seal must hold at a restart (at most the \
-         service ΔP)",
+        "ΔP_min, the lowest pressure difference the seal must hold at a restart, on its \
+         unenergised squeeze (p_sq > ΔP_min whatever k_e; at most the service ΔP; docs/model.md \
+         §8.2)",
+    ),
+    key(
+        "low_temperature",
+        Bool,
+        Literal("true", ""),
+        "the rubber colder than its compound's T10 less `low_temperature_margin` (docs/model.md \
+         §8.3); a compound without a T10 has no cold limit",
+    ),
+    key(
+        "low_temperature_margin",
+        Quantity(life::LOW_TEMPERATURE_MARGIN),
+        LiteralWhere(
+            "\"0 K\"",
+            "with [motion]; \"5 K\" for a static seal (docs/model.md §8.3)",
+            "motion",
+        ),
+        "how far below T10 the seal is still taken to hold (a temperature difference: \"9 F\" \
+         = 5 K)",
     ),
 ];
 
@@ -1084,7 +1172,15 @@ const SIMULATION: &[Key] = &[
         "points_per_decade",
         Quantity(life::POINTS_PER_DECADE),
         Literal("20", ""),
-        "output points per decade of time",
+        "output points per decade of time (the history's rows only: the internal steps, the \
+         volumes, states and failure times do not depend on it)",
+    ),
+    key(
+        "tolerance",
+        Quantity(life::TOLERANCE),
+        Literal("1e-3", ""),
+        "relative tolerance of the internal steps' error control: the leaked volume, the \
+         located state changes and extremes (docs/model.md §10.1)",
     ),
     key(
         "fidelity",
@@ -1314,6 +1410,13 @@ pub(super) const TABLES: &[Table] = &[
         keys: COMPATIBILITY,
     },
     Table {
+        path: "material.permeation.GAS",
+        prose: "The compound's own gas permeation figure for one gas (an inline table), used \
+                instead of its class's; E_P and E_D are the table's for that gas (docs/model.md \
+                §13.4).",
+        keys: PERMEATION,
+    },
+    Table {
         path: "surface",
         prose: "The roughness power spectrum C(q) of the countersurface, given by **one** of: \
                 the self-affine parameters (`rms_roughness`, `hurst_exponent`, `q0`, `q1`, \
@@ -1348,7 +1451,9 @@ pub(super) const TABLES: &[Table] = &[
     },
     Table {
         path: "model",
-        prose: "Settings of the critical-junction theory.",
+        prose: "Settings of the contact theory of the analytic levels (critical junction, \
+                effective medium): the percolation threshold, the leak's shape factor, the γ of \
+                the mean-separation kernel and the contact-area relation.",
         keys: MODEL,
     },
     Table {
@@ -1374,8 +1479,9 @@ pub(super) const TABLES: &[Table] = &[
     },
     Table {
         path: "simulation",
-        prose: "The time grid of `sealsim run`: the installation row at t = 0, then log-uniform \
-                times from `start` to `duration`; and the contact model's fidelity.",
+        prose: "The output grid of `sealsim run`: the installation row at t = 0, then \
+                log-uniform times from `start` to `duration`; the tolerance of the internal \
+                steps, which the output grid only samples; and the contact model's fidelity.",
         keys: SIMULATION,
     },
     Table {

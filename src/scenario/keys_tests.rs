@@ -84,6 +84,7 @@ fn raw_tables() -> Vec<(&'static str, BTreeSet<&'static str>)> {
             "material.compatibility.CLASS",
             accepted::<RawCompatibility>(),
         ),
+        ("material.permeation.GAS", accepted::<RawPermeation>()),
         ("surface", accepted::<RawSurface>()),
         ("fluid", accepted::<RawFluid>()),
         ("seal", accepted::<RawSeal>()),
@@ -217,6 +218,7 @@ fn the_listed_words_are_the_codes() {
         .map(|m| m.as_str())
         .to_vec();
     assert_eq!(keys::MEDIA, media.as_slice());
+    assert_eq!(keys::CLASSES, crate::permeation::FAMILIES.as_slice());
     let designs = crate::study::design::Design::ALL.map(|d| d.name());
     assert_eq!(keys::DESIGNS, designs.as_slice());
     let ratings: Vec<String> = crate::material::compatibility::Rating::ALL

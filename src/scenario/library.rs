@@ -48,6 +48,7 @@ impl Entry {
     pub fn load(&self) -> Result<Material, ScenarioError> {
         let mut material = library_material_from_str(self.text, &self.path())?;
         material.library_id = Some(self.id.to_owned());
+        material.class = crate::permeation::family_of(self.id).map(str::to_owned);
         Ok(material)
     }
 }

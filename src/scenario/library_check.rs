@@ -13,7 +13,8 @@
 //!   represents a maximum temperature for 1,000 hours continuous service" (Problem Solving
 //!   Products, "Seal thermal stability", pspglobal.com). sealsim's two-network ageing at constant
 //!   squeeze takes the force as `exp(−k t)`, so the chemical time to 50 % retained force at the
-//!   rated temperature T_r is `t50 = ln 2 / k(T_r)`, `k(T) = k_ref exp(−Ea/R (1/T − 1/T_ref))`;
+//!   rated temperature T_r is `t50 = ln 2 / k(T_r)`, `k(T) = k_ref exp(−Ea/R (1/T − 1/T_ref))`
+//!   (Ea on the side of T_ref that T_r lies, [`crate::material::Ageing::rate_at`]);
 //!   the rule asks about 1000 h, accepted within [`T50_BAND`] (a factor of 2).
 
 use crate::material::Material;
@@ -26,9 +27,6 @@ pub const T50_BAND: (f64, f64) = (500.0, 2000.0);
 
 /// The hours the rule names.
 pub const RULE_HOURS: f64 = 1000.0;
-
-/// The gas constant R \[J/(mol K)\] (CODATA 2018, exact).
-const R_GAS: f64 = 8.314_462_618;
 
 /// A class's published figures.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -127,13 +125,9 @@ pub struct Check {
 impl Check {
     /// The check of `material` against `published`.
     pub fn new(material: &Material, published: Published) -> Self {
-        let t50_hours = material.ageing.map(|a| {
-            let k = a.rate
-                * (-a.activation_energy / R_GAS
-                    * (1.0 / published.rated - 1.0 / a.reference_temperature))
-                    .exp();
-            std::f64::consts::LN_2 / k / 3600.0
-        });
+        let t50_hours = material
+            .ageing
+            .map(|a| std::f64::consts::LN_2 / a.rate_at(published.rated) / 3600.0);
         Check {
             published,
             t10: material.low_temperature_limit(),
@@ -163,6 +157,9 @@ pub fn published(id: &str) -> Option<Published> {
 mod tests {
     use super::*;
     use crate::scenario::library;
+
+    /// The gas constant R \[J/(mol K)\] (CODATA 2018, exact).
+    const R_GAS: f64 = 8.314_462_618;
 
     fn check(id: &str) -> Check {
         let material = library::get(id).unwrap().load().unwrap();

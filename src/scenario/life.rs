@@ -102,6 +102,24 @@ pub(super) const MINIMUM_PRESSURE_DIFFERENCE: Field = field(
     "Pa",
     Bound::Range(0.0, 1e10),
 );
+pub(super) const LOW_TEMPERATURE_MARGIN: Field = field(
+    "failure.low_temperature_margin",
+    Dimension::TEMPERATURE,
+    "K",
+    Bound::Range(0.0, 100.0),
+);
+/// The default static margin of the cold limit \[K\] (docs/model.md §8.3): how far below its
+/// T10 a static seal is still taken to hold. Parker's O-ring handbook (Low Temperature Effects):
+/// "an O-ring elastomer will seal statically 10 to 15 degrees below the TR-10 temperature",
+/// degrees Fahrenheit, and "the low temperature sealing limit is generally about 8 °C (15 °F)
+/// below the TR-10 value"; Problem Solving Products: "generally 15 °F below TR-10 for static
+/// seals"; the Elastomer-Institut: 10–15 °C. The low end of that band, 10 °F = 5.6 K, rounded
+/// down: the conservative side, and the library's T10 stands at a chart service limit rather
+/// than a measured TR-10 (§6.7), so a wider margin would count the chart's own allowance twice.
+pub const DEFAULT_LOW_TEMPERATURE_MARGIN: f64 = 5.0;
+/// A moving seal's margin \[K\]: "in dynamic applications, O-rings perform well at and above
+/// TR-10" (Parker, as above), so none.
+pub const DYNAMIC_LOW_TEMPERATURE_MARGIN: f64 = 0.0;
 /// The default shutdown temperature's upper end \[K\]: 23 °C, the laboratory's standard
 /// temperature (ISO 23529), a plant at rest indoors (docs/model.md §8.2).
 pub const DEFAULT_SHUTDOWN_TEMPERATURE: f64 = 296.15;
@@ -190,6 +208,13 @@ pub(super) const POINTS_PER_DECADE: Field = field(
     Bound::Range(0.1, MAX_POINTS_PER_DECADE),
 );
 
+pub(super) const TOLERANCE: Field = field(
+    "simulation.tolerance",
+    Dimension::DIMENSIONLESS,
+    "",
+    Bound::Range(1e-8, 0.1),
+);
+
 /// Default `simulation.duration` \[s\]: 30 years.
 pub const DEFAULT_DURATION: f64 = 30.0 * YEAR;
 /// Default `simulation.start` \[s\].
@@ -252,6 +277,17 @@ pub(super) struct HousingExpansion {
     pub key: &'static str,
     /// Set by default (a groove-seated ring without `housing` or `housing_expansion`).
     pub by_default: bool,
+}
+
+/// What `[failure]`'s defaults depend on beyond the fluid and the environment.
+pub(super) struct FailureContext {
+    /// The compound's T10 \[K\] (`None`: it has none, and the cold limit does not apply).
+    pub low_temperature_limit: Option<f64>,
+    /// A `[motion]` seal: the cold limit's margin is the dynamic one.
+    pub moving: bool,
+    /// An O-ring's thermal settling time d²/a \[s\], the shutdown check's cool-down
+    /// (docs/model.md §5.2, §8.2); 0 for a flat seal (the check does not apply).
+    pub cooling_time: f64,
 }
 
 /// The keys of each seal kind (for the messages).
@@ -506,19 +542,32 @@ impl Source<'_> {
         table: Option<&Spanned<RawFailure>>,
         fluid: &crate::fluid::Fluid,
         environment: &crate::material::TemperatureHistory,
+        context: &FailureContext,
     ) -> Result<FailureCriteria, ScenarioError> {
         let (coldest, hottest) = environment.range();
         let default_shutdown = crate::simulate::Shutdown {
             temperature: DEFAULT_SHUTDOWN_TEMPERATURE.min(coldest),
             pressure_difference: 0.0,
+            cooling_time: context.cooling_time,
+        };
+        let default_margin = if context.moving {
+            DYNAMIC_LOW_TEMPERATURE_MARGIN
+        } else {
+            DEFAULT_LOW_TEMPERATURE_MARGIN
+        };
+        let cold_limit = |margin: f64| {
+            context
+                .low_temperature_limit
+                .map(|limit| crate::simulate::ColdLimit { limit, margin })
         };
         let Some(table) = table else {
-            // the extrusion and shutdown checks are properties of an O-ring's gland: on unless
-            // switched off; lift-off is a failure unless waived
+            // the extrusion, shutdown and cold checks are on unless switched off; lift-off is
+            // a failure unless waived
             return Ok(FailureCriteria {
                 extrusion: true,
                 lift_off: true,
                 shutdown: Some(default_shutdown),
+                low_temperature: cold_limit(default_margin),
                 retained_force_reference: DEFAULT_RETAINED_FORCE_REFERENCE,
                 ..FailureCriteria::default()
             });
@@ -574,6 +623,20 @@ impl Source<'_> {
             ));
         }
         let waived = |b: &Option<Spanned<bool>>| b.as_ref().is_some_and(|b| !*b.get_ref());
+        let margin = self
+            .optional(raw.low_temperature_margin.as_ref(), &LOW_TEMPERATURE_MARGIN)?
+            .unwrap_or(default_margin);
+        if let Some(q) = &raw.low_temperature_margin
+            && waived(&raw.low_temperature)
+        {
+            return Err(self.error(
+                q.span(),
+                LOW_TEMPERATURE_MARGIN.key,
+                "a margin for a cold limit that low_temperature = false waives: remove one of \
+                 the two"
+                    .to_owned(),
+            ));
+        }
         Ok(FailureCriteria {
             max_leak_rate: raw
                 .max_leak_rate
@@ -606,7 +669,14 @@ impl Source<'_> {
             shutdown: (!waived(&raw.lost_interference)).then_some(crate::simulate::Shutdown {
                 temperature: shutdown_temperature,
                 pressure_difference: minimum,
+                cooling_time: context.cooling_time,
             }),
+            // on unless waived, for a compound with a T10 (docs/model.md §8.3)
+            low_temperature: if waived(&raw.low_temperature) {
+                None
+            } else {
+                cold_limit(margin)
+            },
             stop_at_failure: false,
         })
     }
@@ -844,10 +914,14 @@ impl Source<'_> {
                 ),
             )
         };
-        let activation_energy = match &raw.activation_energy {
-            Some(q) => self.quantity(q, &AGEING_ACTIVATION_ENERGY)?,
+        // a scenario's energy is one law on both sides; the compound's keeps its band
+        let (activation_energy, activation_energy_above) = match &raw.activation_energy {
+            Some(q) => {
+                let e = self.quantity(q, &AGEING_ACTIVATION_ENERGY)?;
+                (e, e)
+            }
             None => own
-                .map(|a| a.activation_energy)
+                .map(|a| (a.activation_energy, a.activation_energy_above))
                 .ok_or_else(|| missing("activation_energy"))?,
         };
         let rate = match &raw.rate {
@@ -876,6 +950,7 @@ impl Source<'_> {
         Ok((
             Some(Ageing {
                 activation_energy,
+                activation_energy_above,
                 rate,
                 reference_temperature,
                 crosslinking,
@@ -895,6 +970,7 @@ impl Source<'_> {
                     start: DEFAULT_START,
                     duration: DEFAULT_DURATION,
                     points_per_decade: DEFAULT_POINTS_PER_DECADE,
+                    tolerance: TimeGrid::DEFAULT_TOLERANCE,
                 },
                 Fidelity::Table,
             ));
@@ -925,6 +1001,9 @@ impl Source<'_> {
         let points_per_decade = self
             .optional(raw.points_per_decade.as_ref(), &POINTS_PER_DECADE)?
             .unwrap_or(DEFAULT_POINTS_PER_DECADE);
+        let tolerance = self
+            .optional(raw.tolerance.as_ref(), &TOLERANCE)?
+            .unwrap_or(TimeGrid::DEFAULT_TOLERANCE);
         let fidelity = match &raw.fidelity {
             None => Fidelity::Table,
             Some(f) => parse_fidelity(f.get_ref())
@@ -935,6 +1014,7 @@ impl Source<'_> {
                 start,
                 duration,
                 points_per_decade,
+                tolerance,
             },
             fidelity,
         ))
@@ -1289,7 +1369,8 @@ squeeze = 0.2
             TimeGrid {
                 start: 1.0,
                 duration: 30.0 * YEAR,
-                points_per_decade: 20.0
+                points_per_decade: 20.0,
+                tolerance: TimeGrid::DEFAULT_TOLERANCE,
             }
         );
         assert_eq!((life.fidelity, life.strips), (Fidelity::Table, 16));
@@ -1606,10 +1687,41 @@ squeeze = 0.2
                 shutdown: Some(crate::simulate::Shutdown {
                     temperature: 296.15,
                     pressure_difference: 0.0,
+                    cooling_time: s.life.failure.shutdown.map_or(0.0, |x| x.cooling_time),
+                }),
+                low_temperature: Some(crate::simulate::ColdLimit {
+                    limit: s.life.material.low_temperature_limit().unwrap(),
+                    margin: 5.0,
                 }),
                 stop_at_failure: false,
             }
         );
+        // the shutdown's cool-down is d²/a of the 3.53 mm cord (docs/model.md §5.2, §8.2)
+        let cooling = s.life.failure.shutdown.map_or(0.0, |x| x.cooling_time);
+        assert!(
+            (cooling / (3.53e-3 * 3.53e-3 / 1e-7) - 1.0).abs() < 1e-12,
+            "{cooling}"
+        );
+        // the cold limit: waived, or with its own margin in any temperature-difference unit
+        let waived = load(&with("[failure]\nlow_temperature = false\n")).unwrap();
+        assert_eq!(waived.life.failure.low_temperature, None);
+        let margin = load(&with("[failure]\nlow_temperature_margin = \"18 F\"\n"))
+            .unwrap()
+            .life
+            .failure
+            .low_temperature
+            .unwrap()
+            .margin;
+        assert!((margin - 10.0).abs() < 1e-12, "{margin}");
+        let e = error(&with(
+            "[failure]\nlow_temperature = false\nlow_temperature_margin = \"5 K\"\n",
+        ));
+        assert!(
+            e.contains(":19: failure.low_temperature_margin: a margin for a cold limit"),
+            "{e}"
+        );
+        let e = error(&with("[failure]\nlow_temperature_margin = \"-5 K\"\n"));
+        assert!(e.contains(":18: failure.low_temperature_margin"), "{e}");
         // the extrusion, lift-off and shutdown checks are on unless waived
         let off = load(&with(
             "[failure]\nextrusion = false\nlift_off = false\nlost_interference = false\n",
@@ -1687,6 +1799,7 @@ squeeze = 0.2
             s.life.ageing,
             Some(Ageing {
                 activation_energy: 8e4,
+                activation_energy_above: 8e4,
                 rate: 1e-9,
                 reference_temperature: 373.15,
                 crosslinking: 1.0,
@@ -1705,7 +1818,8 @@ squeeze = 0.2
             TimeGrid {
                 start: 1e-3,
                 duration: YEAR,
-                points_per_decade: 5.0
+                points_per_decade: 5.0,
+                tolerance: TimeGrid::DEFAULT_TOLERANCE,
             }
         );
         assert_eq!(s.life.fidelity, Fidelity::Exact);

@@ -23,8 +23,8 @@
 use super::error::{ScenarioError, Source};
 use super::library;
 use super::raw::{
-    Quantity, RawAgeing, RawCompatibility, RawMaterial, RawMaterialFile, RawPronyTerm, RawQuantity,
-    RawShift,
+    Quantity, RawAgeing, RawCompatibility, RawMaterial, RawMaterialFile, RawPermeation,
+    RawPronyTerm, RawQuantity, RawShift,
 };
 use super::validate::{Bound, Field, field};
 use crate::contact::Elastic;
@@ -32,6 +32,7 @@ use crate::material::compatibility::{Compatibility, FluidClass, Rating};
 use crate::material::{
     Ageing, AgeingBasis, BALANCED_CROSSLINKING, Material, Prony, PronyTerm, Shift, Status,
 };
+use crate::permeation::UserPermeation;
 use crate::simulate::AsperityModulus;
 use crate::units::{self, Dimension, show};
 use std::collections::BTreeMap;
@@ -133,6 +134,12 @@ pub(super) const AGEING_ACTIVATION_ENERGY: Field = field(
     "J/mol",
     Bound::Range(1.0, 1e6),
 );
+pub(super) const AGEING_ACTIVATION_ENERGY_ABOVE: Field = field(
+    "material.ageing.activation_energy_above",
+    Dimension::MOLAR_ENERGY,
+    "J/mol",
+    Bound::Range(1.0, 1e6),
+);
 pub(super) const AGEING_RATE: Field = field(
     "material.ageing.rate",
     Dimension::FREQUENCY,
@@ -144,6 +151,21 @@ pub(super) const AGEING_CROSSLINKING: Field = field(
     Dimension::DIMENSIONLESS,
     "",
     Bound::Range(0.0, 10.0),
+);
+/// A gas permeability Π (`[material.permeation] GAS.permeability`): mol/(m·s·Pa), or
+/// `barrer` (read apart: a volume-based unit, 1 barrer = 3.3464e-16 mol/(m·s·Pa)).
+pub(super) const PERMEABILITY: Field = field(
+    "material.permeation.GAS.permeability",
+    Dimension::new(0, -1, 1, 0, 1),
+    "mol/(m*s*Pa)",
+    Bound::Range(1e-30, 1e-9),
+);
+/// A gas diffusivity D in the rubber (`[material.permeation] GAS.diffusivity`).
+pub(super) const DIFFUSIVITY: Field = field(
+    "material.permeation.GAS.diffusivity",
+    Dimension::KINEMATIC_VISCOSITY,
+    "m^2/s",
+    Bound::Range(1e-20, 1e-4),
 );
 /// A fixed asperity modulus (`asperity_modulus = "3 MPa"`).
 pub(super) const ASPERITY_MODULUS: Field = field(
@@ -278,17 +300,17 @@ impl Source<'_> {
             (Some(id), _) => {
                 let by_file = raw.file.is_some();
                 let what = if by_file { "file" } else { "library" };
-                if let Some((other, span)) = present_keys(raw)
-                    .into_iter()
-                    .find(|(key, _)| !matches!(*key, "library" | "file" | "asperity_modulus"))
-                {
+                if let Some((other, span)) = present_keys(raw).into_iter().find(|(key, _)| {
+                    !matches!(*key, "library" | "file" | "asperity_modulus" | "permeation")
+                }) {
                     return Err(self.error(
                         span,
                         &format!("material.{other}"),
                         format!(
                             "a {what} material takes no other keys (except the scenario option \
-                             `asperity_modulus`): remove `{other}`, or remove `{what}` and give \
-                             the whole material inline"
+                             `asperity_modulus` and its own gas figures `[material.permeation]`): \
+                             remove `{other}`, or remove `{what}` and give the whole material \
+                             inline"
                         ),
                     ));
                 }
@@ -316,6 +338,19 @@ impl Source<'_> {
                     (None, false) => library::get(id.get_ref())
                         .map_err(|e| self.error(id.span(), key, e.to_string()))?
                         .load()?,
+                };
+                // the scenario's own gas figures belong to its compound, not to a compared one
+                let material = match (&raw.permeation, replacement) {
+                    (Some(table), None) => {
+                        let mut material = material;
+                        let own = self.own_permeation(table)?;
+                        material
+                            .permeation
+                            .retain(|p| !own.iter().any(|o| o.gas == p.gas));
+                        material.permeation.extend(own);
+                        material
+                    }
+                    _ => material,
                 };
                 (material, id.span(), key)
             }
@@ -468,6 +503,35 @@ impl Source<'_> {
             .map(|table| self.compatibility(table, status != Status::User))
             .transpose()?
             .unwrap_or_default();
+        let class = raw
+            .class
+            .as_ref()
+            .map(|c| {
+                crate::permeation::FAMILIES
+                    .iter()
+                    .find(|f| **f == c.get_ref().as_str())
+                    .map(|f| (*f).to_owned())
+                    .ok_or_else(|| {
+                        self.error(
+                            c.span(),
+                            "material.class",
+                            format!(
+                                "unknown compound class {:?}: give one of {}",
+                                c.get_ref(),
+                                crate::permeation::FAMILIES
+                                    .map(|f| format!("\"{f}\""))
+                                    .join(", ")
+                            ),
+                        )
+                    })
+            })
+            .transpose()?;
+        let permeation = raw
+            .permeation
+            .as_ref()
+            .map(|table| self.own_permeation(table))
+            .transpose()?
+            .unwrap_or_default();
         // published or illustrative data must say where every number comes from
         let provenance = self.provenance(raw, status != Status::User)?;
         Ok(Material {
@@ -486,6 +550,8 @@ impl Source<'_> {
             compatibility,
             provenance,
             library_id: None,
+            class,
+            permeation,
         })
     }
 
@@ -540,6 +606,78 @@ impl Source<'_> {
                     class,
                     rating,
                     source,
+                })
+            })
+            .collect()
+    }
+
+    /// `[material.permeation]`: a key per gas (a gas library id, or `custom`), each
+    /// `{ permeability, diffusivity, source }` (docs/model.md §13.4).
+    fn own_permeation(
+        &self,
+        table: &Spanned<BTreeMap<String, Spanned<RawPermeation>>>,
+    ) -> Result<Vec<UserPermeation>, ScenarioError> {
+        let mut entries: Vec<_> = table.get_ref().iter().collect();
+        entries.sort_by_key(|(_, value)| value.span().start);
+        entries
+            .into_iter()
+            .map(|(gas, value)| {
+                let path = format!("material.permeation.{gas}");
+                if gas != "custom" && crate::gas::library(gas).is_none() {
+                    return Err(self.error(
+                        value.span(),
+                        &path,
+                        format!(
+                            "unknown gas `{gas}`: give one of {}, or `custom` for the scenario's \
+                             custom gas",
+                            crate::gas::library_ids()
+                                .iter()
+                                .map(|g| format!("`{g}`"))
+                                .collect::<Vec<_>>()
+                                .join(", ")
+                        ),
+                    ));
+                }
+                let raw = value.get_ref();
+                let key = format!("{path}.permeability");
+                let permeability = match raw.permeability.get_ref() {
+                    RawQuantity::Text(text) if text.trim().ends_with("barrer") => {
+                        let number = text.trim().trim_end_matches("barrer").trim();
+                        match number.parse::<f64>() {
+                            Ok(v) if v.is_finite() && v > 0.0 => crate::permeation::barrer_to_si(v),
+                            _ => {
+                                return Err(self.error(
+                                    raw.permeability.span(),
+                                    &key,
+                                    format!(
+                                        "must be a positive number of barrer, e.g. \"5 barrer\", \
+                                         got {text:?}"
+                                    ),
+                                ));
+                            }
+                        }
+                    }
+                    _ => self
+                        .quantity(&raw.permeability, &PERMEABILITY)
+                        .map_err(|e| rekey(e, &key))?,
+                };
+                let diffusivity = raw
+                    .diffusivity
+                    .as_ref()
+                    .map(|q| {
+                        self.quantity(q, &DIFFUSIVITY)
+                            .map_err(|e| rekey(e, &format!("{path}.diffusivity")))
+                    })
+                    .transpose()?;
+                Ok(UserPermeation {
+                    gas: gas.clone(),
+                    permeability,
+                    diffusivity,
+                    source: raw
+                        .source
+                        .as_ref()
+                        .map(|s| s.get_ref().trim().to_owned())
+                        .filter(|s| !s.is_empty()),
                 })
             })
             .collect()
@@ -764,8 +902,13 @@ impl Source<'_> {
 
     fn ageing(&self, table: &Spanned<RawAgeing>) -> Result<Ageing, ScenarioError> {
         let raw = table.get_ref();
+        let activation_energy = self.quantity(&raw.activation_energy, &AGEING_ACTIVATION_ENERGY)?;
         Ok(Ageing {
-            activation_energy: self.quantity(&raw.activation_energy, &AGEING_ACTIVATION_ENERGY)?,
+            activation_energy,
+            activation_energy_above: match &raw.activation_energy_above {
+                Some(q) => self.quantity(q, &AGEING_ACTIVATION_ENERGY_ABOVE)?,
+                None => activation_energy,
+            },
             rate: self.quantity(&raw.rate, &AGEING_RATE)?,
             reference_temperature: self.absolute_temperature(
                 &raw.reference_temperature,
@@ -809,6 +952,11 @@ impl Source<'_> {
                 property: p.get_ref().clone(),
                 criterion: c.get_ref().clone(),
                 medium,
+                source: raw
+                    .source
+                    .as_ref()
+                    .map(|s| s.get_ref().trim().to_owned())
+                    .filter(|s| !s.is_empty()),
             })),
             (None, None) if !required => Ok(None),
             (p, _) => {
@@ -971,6 +1119,8 @@ fn present_keys(raw: &RawMaterial) -> Vec<(&'static str, Range<usize>)> {
         ("ageing", raw.ageing.as_ref().map(Spanned::span)),
         ("provenance", raw.provenance.as_ref().map(Spanned::span)),
         ("asperity_modulus", quantity(&raw.asperity_modulus)),
+        ("class", raw.class.as_ref().map(Spanned::span)),
+        ("permeation", raw.permeation.as_ref().map(Spanned::span)),
     ]
     .into_iter()
     .filter_map(|(key, span)| Some((key, span?)))

@@ -121,6 +121,10 @@ pub(super) struct RawMaterial {
     pub ageing: Option<Spanned<RawAgeing>>,
     /// Fluid class key (`mineral-oil`, `water`, `hot-water`, `water-glycol`) → its rating.
     pub compatibility: Option<Spanned<BTreeMap<String, Spanned<RawCompatibility>>>>,
+    /// The compound class (`nbr`, …) whose data kept by class apply (gas permeation).
+    pub class: Option<Spanned<String>>,
+    /// Gas library id (or `custom`) → the compound's own permeation figure for that gas.
+    pub permeation: Option<Spanned<BTreeMap<String, Spanned<RawPermeation>>>>,
     /// Parameter key → where its value came from.
     pub provenance: Option<Spanned<BTreeMap<String, Spanned<String>>>>,
     /// Scenario option (not a property of the compound): which modulus the asperity contact
@@ -154,6 +158,8 @@ pub(super) struct RawShift {
 #[serde(deny_unknown_fields)]
 pub(super) struct RawAgeing {
     pub activation_energy: Quantity,
+    /// Ea above `reference_temperature` (absent: `activation_energy` on both sides).
+    pub activation_energy_above: Option<Quantity>,
     pub rate: Quantity,
     pub reference_temperature: Quantity,
     pub crosslinking: Option<Quantity>,
@@ -163,6 +169,18 @@ pub(super) struct RawAgeing {
     pub criterion: Option<Spanned<String>>,
     /// The medium the compound was aged in (`air`, `mineral-oil`, `water`, `water-glycol`).
     pub medium: Option<Spanned<String>>,
+    /// Where the activation energy comes from, in a line (printed beside `compare` rows).
+    pub source: Option<Spanned<String>>,
+}
+
+/// One `[material.permeation]` entry: `{ permeability = "5 barrer", diffusivity = "3e-10
+/// m^2/s", source = "…" }`.
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawPermeation {
+    pub permeability: Quantity,
+    pub diffusivity: Option<Quantity>,
+    pub source: Option<Spanned<String>>,
 }
 
 /// One `[material.compatibility]` entry: `{ rating = "A", source = "…" }`.
@@ -335,6 +353,8 @@ pub(super) struct RawFailure {
     pub lost_interference: Option<Spanned<bool>>,
     pub shutdown_temperature: Option<Quantity>,
     pub minimum_pressure_difference: Option<Quantity>,
+    pub low_temperature: Option<Spanned<bool>>,
+    pub low_temperature_margin: Option<Quantity>,
 }
 
 /// A scenario's `[ageing]`: each constant defaults to the material's `[material.ageing]`.
@@ -366,6 +386,7 @@ pub(super) struct RawSimulation {
     pub duration: Option<Quantity>,
     pub start: Option<Quantity>,
     pub points_per_decade: Option<Quantity>,
+    pub tolerance: Option<Quantity>,
     pub fidelity: Option<Spanned<String>>,
     pub clogging_tolerance: Option<Quantity>,
 }
@@ -420,4 +441,6 @@ pub(super) struct RawModel {
     pub percolation_threshold: Option<Quantity>,
     pub shape_factor: Option<Quantity>,
     pub gamma: Option<Quantity>,
+    /// `"persson"` (default) or `"corrected"` (docs/model.md §2).
+    pub area: Option<Spanned<String>>,
 }

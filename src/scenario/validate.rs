@@ -10,7 +10,7 @@ use super::psd;
 use super::raw::{
     Quantity, RawFluid, RawModel, RawNumerical, RawQuantity, RawScenario, RawSurface,
 };
-use crate::contact::ContactSettings;
+use crate::contact::{AreaModel, ContactSettings};
 use crate::fluid::{Fluid, GasService, LibraryFluid, MINERAL_OIL_EXPANSION, ViscosityLaw, Walther};
 use crate::leak::{FlatSeal, StaticProblem};
 use crate::material::Material;
@@ -409,10 +409,11 @@ impl Source<'_> {
             None => (ContactSettings::default(), DEFAULT_SHAPE_FACTOR),
         };
         let environment = self.environment(raw.environment.as_ref(), &material)?;
-        // the static problem's viscosity is the law's at the installation temperature
-        let fluid = fluid.at(environment.at(0.0));
         let cold_fitting = self.fitting_temperature(raw, &seal, &material, &environment)?;
         let environment = settling_environment(environment, &seal);
+        // the static problem's viscosity is the law's at the installation (fitting) temperature,
+        // the first row's of a run
+        let fluid = fluid.at(environment.at(0.0));
         let thermal_strain = self.thermal_strain(
             &seal,
             &material,
@@ -423,8 +424,16 @@ impl Source<'_> {
                 "thermal_expansion",
             ),
         )?;
-        let service = self.service(raw, &material, replacement.is_some(), &fluid, &environment)?;
-        let (permeation, permeation_note) = permeation(&material, &fluid, &seal);
+        let service = self.service(
+            raw,
+            &material,
+            replacement.is_some(),
+            &fluid,
+            &environment,
+            &seal.geometry,
+        )?;
+        let (permeation, permeation_note) =
+            self.permeation(raw, &material, &fluid, &seal, replacement.is_some())?;
         let life = LifeProblem {
             material: material.clone(),
             asperity_modulus,
@@ -504,6 +513,91 @@ impl Source<'_> {
         })
     }
 
+    /// Permeation through the rubber for a gas (docs/model.md §13.7), with its note. The
+    /// figure is the compound's own (`[material.permeation]`) or its class's (sourced, or a
+    /// stated NOT SOURCED bound, every output says which). Missing data never read as zero: a
+    /// compound without class or figure, a gas the table lacks, a flat seal without its
+    /// thickness are refused at the key that supplies them.
+    fn permeation(
+        &self,
+        raw: &RawScenario,
+        material: &Material,
+        fluid: &Fluid,
+        seal: &super::life::SealSpec,
+        replaced: bool,
+    ) -> Result<(Option<crate::permeation::SealPermeation>, Option<String>), ScenarioError> {
+        use crate::permeation::{Missing, SealPermeation, figure};
+        let Some(gas) = fluid.gas else {
+            return Ok((None, None));
+        };
+        let id = gas.gas.id;
+        let refuse = |missing: Missing| -> ScenarioError {
+            let own = format!(
+                "[material.permeation] {id} = {{ permeability = \"5 barrer\", diffusivity = \
+                 \"3e-10 m^2/s\", source = \"<where the figure comes from>\" }}"
+            );
+            let material_span = raw.material.span();
+            match missing {
+                Missing::NoClass => self.error(
+                    material_span,
+                    "material.class",
+                    format!(
+                        "no permeation figure for {id} through the rubber: the material ({}) \
+                         names no compound class and gives no figure of its own, and a gas run \
+                         never takes a missing figure as zero (docs/model.md §13.4). {}: \
+                         `class = \"nbr\"` (one of {}; its figure is sourced or a stated NOT \
+                         SOURCED bound, `sealsim materials show ID` prints it), or the \
+                         compound's own figure `{own}`",
+                        material.name,
+                        if replaced {
+                            "Add to [material] in the compared compound's material file"
+                        } else if raw.material.get_ref().file.is_some() {
+                            "Add to [material] in the material file itself"
+                        } else {
+                            "Add to [material]"
+                        },
+                        crate::permeation::FAMILIES.join(", "),
+                    ),
+                ),
+                Missing::NoRow { family } => self.error(
+                    raw.fluid.span(),
+                    "fluid.gas",
+                    format!(
+                        "no permeation figure for {id} in {family}: sealsim's table has {} \
+                         (docs/model.md §13.4), and a gas run never takes a missing figure as \
+                         zero; give the compound's own figure in the scenario: `{own}`",
+                        crate::permeation::GASES.join(", "),
+                    ),
+                ),
+                Missing::NoThickness => self.error(
+                    raw.seal.span(),
+                    "seal.thickness",
+                    format!(
+                        "missing key `thickness` in [seal]: {id} permeates through the flat \
+                         gasket's exposed edge, whose compressed thickness sets its area \
+                         (docs/model.md §13.3), and a gas run never takes the unknown \
+                         permeation as zero; give e.g. thickness = \"2.8 mm\""
+                    ),
+                ),
+                Missing::Path(e) => self.error(
+                    raw.seal.span(),
+                    "seal",
+                    format!("the permeation path: {e} [docs/model.md §13.3]"),
+                ),
+            }
+        };
+        let data = figure(material.class.as_deref(), &material.permeation, id).map_err(refuse)?;
+        let (permeation, note) = SealPermeation::for_seal(
+            data,
+            &seal.geometry,
+            seal.thickness,
+            gas.outlet_pressure + fluid.pressure_difference,
+            gas.outlet_pressure,
+        )
+        .map_err(refuse)?;
+        Ok((Some(permeation), note))
+    }
+
     /// `[groove_surface]` (the gland's own interface) and `[rubber_surface]` (the rubber's
     /// roughness, summed into the counterface's `spectrum` and the groove's), their notes
     /// added to `notes`.
@@ -543,10 +637,26 @@ impl Source<'_> {
         replaced: bool,
         fluid: &Fluid,
         environment: &crate::material::TemperatureHistory,
+        geometry: &SealGeometry,
     ) -> Result<Service, ScenarioError> {
         let (ageing, ageing_source) =
             self.scenario_ageing(raw.ageing.as_ref(), material, replaced)?;
-        let failure = self.failure(raw.failure.as_ref(), fluid, environment)?;
+        let motion = self.motion(raw.motion.as_ref())?;
+        let failure = self.failure(
+            raw.failure.as_ref(),
+            fluid,
+            environment,
+            &super::life::FailureContext {
+                low_temperature_limit: material.low_temperature_limit(),
+                moving: motion.is_some(),
+                cooling_time: match geometry {
+                    SealGeometry::ORing { cross_section, .. } => {
+                        thermal_settling_time(*cross_section)
+                    }
+                    SealGeometry::Flat { .. } => 0.0,
+                },
+            },
+        )?;
         let (time, fidelity) = self.simulation(raw.simulation.as_ref())?;
         self.cycle_budget(
             raw.simulation.as_ref(),
@@ -557,7 +667,6 @@ impl Source<'_> {
         let clogging_tolerance = self.clogging_tolerance(raw.simulation.as_ref())?;
         let contamination = self.contamination(raw.contamination.as_ref(), clogging_tolerance)?;
         let numerical = self.numerical(raw.numerical.as_ref())?;
-        let motion = self.motion(raw.motion.as_ref())?;
         if fluid.gas.is_some() {
             self.liquid_only_tables(raw)?;
         }
@@ -937,7 +1046,8 @@ impl Source<'_> {
     /// A ring fitted at or below its compound's low-temperature limit T10 (docs/model.md §5.2):
     /// below it the rubber is leathery to glassy, it cannot be stretched and seated without
     /// damage, and a fitter warms it first. A stated `installation_temperature` there is refused;
-    /// without one the ring is taken as fitted at the environment's first temperature, and that
+    /// without one the ring is taken as fitted at 23 °C in a gland, else at the environment's first
+    /// temperature, and that
     /// is flagged (the returned warning): its squeeze is applied to a glassy ring.
     fn fitting_temperature(
         &self,
@@ -982,11 +1092,16 @@ impl Source<'_> {
                 ),
             ));
         }
+        let taken = if seal.gland.is_some() {
+            "the gland's default fitting temperature"
+        } else {
+            "the environment's first temperature"
+        };
         Ok(Some(self.error(
             span,
             key,
             format!(
-                "the ring is taken as fitted at the environment's first temperature, {}, at or \
+                "the ring is taken as fitted at {taken}, {}, at or \
                  below its compound's low-temperature limit T10 = {}: its squeeze is applied to a \
                  leathery to glassy ring (a far higher force than a ring fitted warm and cooled); \
                  a ring fitted warm: installation_temperature = \"{warm}\" in [seal] (the \
@@ -1474,12 +1589,33 @@ impl Source<'_> {
             gamma: self
                 .optional(raw.gamma.as_ref(), &GAMMA)?
                 .unwrap_or(defaults.gamma),
+            area: self.area_model(raw.area.as_ref())?,
             quadrature: Default::default(),
         };
         let shape_factor = self
             .optional(raw.shape_factor.as_ref(), &SHAPE_FACTOR)?
             .unwrap_or(DEFAULT_SHAPE_FACTOR);
         Ok((contact, shape_factor))
+    }
+
+    /// `[model] area` (docs/model.md §2): `"persson"` (the default) or `"corrected"`.
+    fn area_model(&self, raw: Option<&Spanned<String>>) -> Result<AreaModel, ScenarioError> {
+        let Some(area) = raw else {
+            return Ok(AreaModel::default());
+        };
+        match area.get_ref().as_str() {
+            "persson" => Ok(AreaModel::Persson),
+            "corrected" => Ok(AreaModel::Corrected),
+            other => Err(self.error(
+                area.span(),
+                "model.area",
+                format!(
+                    "must be \"persson\" (Persson 2001, the default: the smaller contact area, \
+                     so the larger leak) or \"corrected\" (Wang & Müser 2017's scale march, \
+                     closer to boundary-element contact areas), got {other:?}"
+                ),
+            )),
+        }
     }
 
     /// `[groove_surface]`: the groove bottom's surface of a groove-seated ring, in the keys of
@@ -2358,26 +2494,6 @@ fn settling_environment(
             environment.with_lead_in(fitted, thermal_settling_time(cross_section))
         }
         _ => environment,
-    }
-}
-
-/// Permeation through the rubber for a gas (docs/model.md §13.7), with its note: the
-/// compound's library id names its class (a `compare` compound's too).
-fn permeation(
-    material: &Material,
-    fluid: &Fluid,
-    seal: &super::life::SealSpec,
-) -> (Option<crate::permeation::SealPermeation>, Option<String>) {
-    match fluid.gas {
-        Some(gas) => crate::permeation::SealPermeation::for_seal(
-            material.library_id.as_deref(),
-            gas.gas.id,
-            &seal.geometry,
-            seal.thickness,
-            gas.outlet_pressure + fluid.pressure_difference,
-            gas.outlet_pressure,
-        ),
-        None => (None, None),
     }
 }
 

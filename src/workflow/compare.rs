@@ -1,6 +1,6 @@
 //! `sealsim compare` as a library call: one life scenario with each of several compounds.
 
-use super::{Progress, life_on, scenario_path};
+use super::{Progress, life_on, scenario_path, with_band};
 use crate::contact::ContactSettings;
 use crate::leak::{ContactPath, Fidelity};
 use crate::material::Material;
@@ -59,6 +59,8 @@ pub fn compare_scenarios(
     // settings and the level, which the variants share (checked, in case a material file
     // changed them).
     let mut shared: Option<(PathKey, ContactPath)> = None;
+    // the neighbouring level's path for the bands (docs/model.md §4.1), shared the same way
+    let mut shared_band: Option<(PathKey, ContactPath)> = None;
     let mut runs = Vec::with_capacity(scenarios.len());
     for ((label, material), scenario) in compounds.into_iter().zip(scenarios) {
         let life = &scenario.life;
@@ -71,7 +73,17 @@ pub fn compare_scenarios(
                 (path, findings)
             }
         };
-        let result = life_on(life, path, findings);
+        let neighbour = life.fidelity.neighbour();
+        let band_key = (life.spectrum.clone(), life.contact, neighbour);
+        let band_path = match &shared_band {
+            Some((first, path)) if *first == band_key => path.clone(),
+            _ => {
+                let (path, _) = scenario_path(&scenario, neighbour, None, &mut |_, _| {});
+                shared_band = Some((band_key, path.clone()));
+                path
+            }
+        };
+        let result = with_band(life, life_on(life, path, findings), band_path);
         runs.push(CompoundRun {
             label,
             material,
@@ -84,7 +96,8 @@ pub fn compare_scenarios(
 
 /// What a compound's run left out for want of data, "; "-separated (the `notes` column of
 /// `sealsim compare`): the compound's rating in the fluid's class when rated, ageing the
-/// scenario asks for, permeation of a gas (docs/model.md §6.5, §6.8, §13.7).
+/// scenario asks for (docs/model.md §6.5, §6.8). A gas without a permeation figure is refused
+/// before it runs (§13.7).
 pub fn notes(life: &LifeProblem, compatibility: Option<&Compatibility>) -> String {
     let mut notes = Vec::new();
     let flag;
@@ -100,8 +113,44 @@ pub fn notes(life: &LifeProblem, compatibility: Option<&Compatibility>) -> Strin
     if life.ageing_source == crate::simulate::AgeingSource::MissingInComparison {
         notes.push("no ageing constants: run without ageing");
     }
-    if life.fluid.gas.is_some() && life.permeation.is_none() {
-        notes.push("no permeation data: interface only");
-    }
     notes.join("; ")
+}
+
+/// Where the compound's ageing activation energy comes from (docs/model.md §6.5): its value
+/// (or its band about the anchor) and the `[material.ageing] source` of the compound, or the
+/// scenario's `[ageing]`, or why there is none. `sealsim compare` prints it beside each row.
+pub fn ageing_source(life: &LifeProblem, material: &Material) -> String {
+    use crate::simulate::AgeingSource;
+    let Some(a) = life.ageing else {
+        return match life.ageing_source {
+            AgeingSource::Off => "no ageing (switched off)".to_owned(),
+            _ => "no ageing constants".to_owned(),
+        };
+    };
+    let kj = |e: f64| crate::units::human(e / 1e3, 3);
+    let energy = if a.is_two_sided() {
+        format!(
+            "Ea {} kJ/mol at and below {}, {} above",
+            kj(a.activation_energy),
+            crate::units::show_temperature(a.reference_temperature, 4),
+            kj(a.activation_energy_above)
+        )
+    } else {
+        format!("Ea {} kJ/mol", kj(a.activation_energy))
+    };
+    let source = match life.ageing_source {
+        AgeingSource::Scenario => "the scenario's [ageing]".to_owned(),
+        _ => material
+            .ageing_basis
+            .as_ref()
+            .and_then(|b| b.source.clone())
+            .unwrap_or_else(|| "no source given".to_owned()),
+    };
+    format!("{energy}: {source}")
+}
+
+/// A gas: what the permeation figure is and where it comes from (sourced, derived, a NOT
+/// SOURCED bound, the user's; docs/model.md §13.4), `None` for a liquid.
+pub fn permeation_source(life: &LifeProblem) -> Option<String> {
+    life.permeation.as_ref().map(|p| p.data.basis())
 }

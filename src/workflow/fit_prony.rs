@@ -758,11 +758,11 @@ pub fn copy_like(
             None => material.provenance.push((key, text)),
         }
     }
-    if crate::permeation::family_of(id).is_some() {
+    if let Some(class) = &c.class {
+        material.class = Some(class.clone());
         copied.notes.push(format!(
-            "permeation data are kept by compound class and follow only a scenario's `library = \
-             \"{id}\"`, not a material file: a gas run with this file has no permeation \
-             through the rubber (docs/model.md §13.7)"
+            "class = \"{class}\" copied: a gas run with this file takes {class}'s permeation \
+             figures (sourced, or a stated NOT SOURCED bound; docs/model.md §13.4)"
         ));
     }
     Ok(copied)

@@ -18,7 +18,7 @@ pub mod tradeoff;
 
 use crate::leak::{ContactPath, Fidelity, PathOptions};
 use crate::scenario::Scenario;
-use crate::simulate::{LifeProblem, LifeResult, Simulator};
+use crate::simulate::{LevelBand, LifeProblem, LifeResult, Simulator};
 use crate::validity::Findings;
 
 /// A progress report `(done, total)` for long work (the numerical level's realisations, the
@@ -55,6 +55,20 @@ pub fn numerical_settings(scenario: &Scenario) -> crate::numerical::reference::N
     let life = &scenario.life;
     numerical.flow.gas = life.fluid.at(life.environment.at(0.0)).mean_free_path();
     numerical
+}
+
+/// `result`, the life of `life`, with its band: the same life at the neighbouring fidelity level
+/// ([`Fidelity::neighbour`]) on `path`, built for that level (docs/model.md §4.1). Its findings
+/// are not kept: the summary's warnings are the level's own.
+fn with_band(life: &LifeProblem, mut result: LifeResult, path: ContactPath) -> LifeResult {
+    let level = life.fidelity.neighbour();
+    let neighbour = LifeProblem {
+        fidelity: level,
+        ..life.clone()
+    };
+    let other = Simulator::with_path(&neighbour, path).run();
+    result.band = Some(LevelBand::of(level, &other));
+    result
 }
 
 /// The life of `life` on a contact path built beforehand, its findings after the path's own

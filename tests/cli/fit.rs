@@ -909,8 +909,13 @@ fn a_seven_point_csr_test_fitted_like_nbr_70_runs_in_a_gland_as_written() {
         "{stderr}"
     );
     assert!(
-        stderr.contains("a gas run with this file has no permeation"),
+        stderr.contains("class = \"nbr\" copied: a gas run with this file takes nbr's permeation"),
         "{stderr}"
+    );
+    assert!(
+        fs::read_to_string(&my)
+            .unwrap()
+            .contains("\nclass = \"nbr\"\n")
     );
     let text = fs::read_to_string(&my).unwrap();
     assert!(

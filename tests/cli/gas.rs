@@ -7,7 +7,9 @@ use crate::support::{HISTORY_HEADER, no_nan, run_text as run};
 use std::fs;
 
 /// A flat seal on Persson & Yang's surface that leaks, with nitrogen between 2 and 1 bar
-/// absolute: `[fluid]` at line 10, `gas` at 11, `inlet_pressure` at 12, `outlet_pressure` at 13.
+/// absolute: `[fluid]` at line 10, `gas` at 11, `inlet_pressure` at 12, `outlet_pressure` at 13;
+/// the rubber's own (test) permeation figure, 1 barrer, through the gasket's 1 mm edge (a gas
+/// run never takes a missing figure as zero).
 const FLAT_GAS: &str = r#"name = "flat gas"
 [material]
 youngs_modulus = "10 MPa"
@@ -25,8 +27,12 @@ outlet_pressure = "1 bar"
 nominal_pressure = "0.2 MPa"
 width = "1 mm"
 length = "1 mm"
+thickness = "1 mm"
 [simulation]
 duration = "1 day"
+[material.permeation]
+nitrogen = { permeability = "1 barrer", source = "test figure" }
+custom = { permeability = "1 barrer", source = "test figure" }
 "#;
 
 #[test]
@@ -38,11 +44,11 @@ fn a_leaking_gas_reports_its_throughput_and_its_knudsen_regime() {
     let mut lines = csv.lines();
     assert_eq!(
         lines.next().unwrap(),
-        format!("{HISTORY_HEADER},throughput_Pa_m3_per_s,permeation_Pa_m3_per_s")
+        format!("{HISTORY_HEADER},throughput_Pa_m3_per_s,permeation_Pa_m3_per_s,permeation_basis")
     );
-    // an inline material has no permeation data: the column is blank and a note says why
+    // the material's own figure: its basis in every row, steady from installation (no D)
     assert!(
-        stderr.contains("no permeation through the rubber in this run"),
+        stderr.contains("no diffusivity known, so the steady flow"),
         "{stderr}"
     );
     // throughput = p̄ × the leak rate (the volume flow at the mean pressure), p̄ = 1.5 bar
@@ -50,7 +56,7 @@ fn a_leaking_gas_reports_its_throughput_and_its_knudsen_regime() {
         let cells: Vec<&str> = line.split(',').collect();
         let leak: f64 = cells[9].parse().unwrap();
         let q: f64 = cells[15].parse().unwrap();
-        assert_eq!(cells[16], "", "{line}");
+        assert_eq!(cells[17], "user", "{line}");
         assert!(leak > 0.0);
         assert!(rel(q, 1.5e5 * leak) < 1e-12, "{line}");
     }
@@ -171,7 +177,7 @@ fn the_shipped_helium_leak_test_seals_at_the_interface_and_permeates() {
         lines
             .next()
             .unwrap()
-            .ends_with(",throughput_Pa_m3_per_s,permeation_Pa_m3_per_s")
+            .ends_with(",throughput_Pa_m3_per_s,permeation_Pa_m3_per_s,permeation_basis")
     );
     let permeation: Vec<f64> = lines
         .map(|l| l.split(',').nth(16).unwrap().parse().unwrap())
@@ -249,14 +255,14 @@ fn bad_gas_input_exits_2_with_file_line_and_key() {
     let liquid = flat_liquid();
     refused(
         &format!("{liquid}[failure]\nmax_leak_rate = \"1e-9 mbar*L/s\"\n"),
-        20,
+        24,
         "failure.max_leak_rate",
         "is a gas throughput, but [fluid] is a liquid",
     );
     // a volume-flow criterion on a gas (refused: at which pressure?)
     refused(
         &format!("{FLAT_GAS}[failure]\nmax_leak_rate = \"1e-9 m^3/s\"\n"),
-        21,
+        25,
         "failure.max_leak_rate",
         "is a volume flow, but [fluid] is a gas",
     );
@@ -386,13 +392,13 @@ fn a_volume_criterion_on_a_gas_is_accepted_at_its_stated_conditions() {
 fn a_volume_criterion_on_a_gas_without_its_conditions_is_refused() {
     refused(
         &format!("{FLAT_GAS}[failure]\nmax_leaked_volume = \"1 L\"\n"),
-        21,
+        25,
         "failure.max_leaked_volume",
         "state the conditions with `reference_pressure`",
     );
     refused(
         &format!("{FLAT_GAS}[failure]\nmax_leaked_volume = \"1 N\"\n"),
-        21,
+        25,
         "failure.max_leaked_volume",
         "is not an amount of gas",
     );
@@ -400,7 +406,7 @@ fn a_volume_criterion_on_a_gas_without_its_conditions_is_refused() {
         &format!(
             "{FLAT_GAS}[failure]\nmax_leak_rate = \"1 mbar*L/s\"\nreference_temperature = \"0 C\"\n"
         ),
-        22,
+        26,
         "failure.reference_temperature",
         "goes with `reference_pressure`",
     );
@@ -409,7 +415,7 @@ fn a_volume_criterion_on_a_gas_without_its_conditions_is_refused() {
         &format!(
             "{liquid}[failure]\nmax_leak_rate = \"1e-9 m^3/s\"\nreference_pressure = \"1 bar\"\n"
         ),
-        21,
+        25,
         "failure.reference_pressure",
         "belongs to a gas",
     );
@@ -455,4 +461,238 @@ fn leak_on_a_gas_gives_the_throughput_of_the_runs_first_row() {
     let first: Vec<&str> = text.lines().nth(1).unwrap().split(',').collect();
     let run_q: f64 = first[15].parse().unwrap();
     assert!(rel(q, run_q) < 1e-12, "leak {q} vs run {run_q}");
+}
+
+/// `sealsim compare SCENARIO --materials IDS -o c.csv` in `dir`: (stdout, header, rows).
+fn compare_csv(scenario: &std::path::Path, ids: &str) -> (String, Vec<String>, Vec<Vec<String>>) {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = dir.path().join("c.csv");
+    let out = crate::support::sealsim()
+        .arg("compare")
+        .arg(scenario)
+        .args(["--materials", ids, "-o"])
+        .arg(&csv)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let mut reader = ::csv::Reader::from_path(&csv).unwrap();
+    let header = reader
+        .headers()
+        .unwrap()
+        .iter()
+        .map(str::to_owned)
+        .collect();
+    let rows = reader
+        .records()
+        .map(|r| r.unwrap().iter().map(str::to_owned).collect())
+        .collect();
+    (String::from_utf8(out.stdout).unwrap(), header, rows)
+}
+
+/// Issue 39.2 / 40.4: the compounds that had no permeation figure (they "survived" the helium
+/// test on an unknown zero) now fail it on their class's figure, each row saying which: IIR on
+/// polyisobutylene (Ito 1961), ACM on poly(ethyl acrylate) (Mogri & Paul 2001, a proxy),
+/// FVMQ on its own compiled value (npj 2024), FFKM on a NOT SOURCED bound; and each row names
+/// where its ageing activation energy comes from.
+#[test]
+fn no_compound_passes_a_helium_test_on_a_figure_it_does_not_have() {
+    let (stdout, header, rows) = compare_csv(
+        &scenario_path("helium-leak-test-flange.toml"),
+        "iir-70,ffkm-75,acm-70,fvmq-70",
+    );
+    let col = |name: &str| header.iter().position(|c| c == name).unwrap();
+    let basis = |id: &str| -> String {
+        rows.iter().find(|r| r[0] == id).unwrap()[col("permeation_source")].clone()
+    };
+    for row in &rows {
+        assert_eq!(row[col("failure_mode")], "leak_rate", "{row:?}");
+        let t: f64 = row[col("time_to_failure_s")].parse().unwrap();
+        assert!(t > 0.0 && t < 86400.0, "{row:?}");
+        assert!(!row[col("permeation_source")].is_empty(), "{row:?}");
+        assert!(!row[col("activation_energy_source")].is_empty(), "{row:?}");
+    }
+    assert!(basis("iir-70").starts_with("sourced: Ito"), "{rows:?}");
+    assert!(
+        basis("acm-70").starts_with("sourced: Mogri & Paul") && basis("acm-70").contains("proxy"),
+        "{rows:?}"
+    );
+    assert!(basis("fvmq-70").starts_with("sourced: npj"), "{rows:?}");
+    assert!(
+        basis("ffkm-75").starts_with("NOT SOURCED bound"),
+        "{rows:?}"
+    );
+    // every helium D here is the stated upper bound (the shortest lag): said so
+    assert!(
+        rows.iter()
+            .all(|r| r[col("permeation_source")].contains("D an upper bound"))
+    );
+    let ea = |id: &str| {
+        rows.iter().find(|r| r[0] == id).unwrap()[col("activation_energy_source")].clone()
+    };
+    assert!(ea("ffkm-75").contains("ASSUMED band"), "{rows:?}");
+    assert!(ea("iir-70").contains("Pazur & Mengistu"), "{rows:?}");
+    // the terminal table: no survivor, the bound named beside its row
+    assert!(!stdout.contains("survives"), "{stdout}");
+    let ffkm = stdout.lines().find(|l| l.starts_with("ffkm-75")).unwrap();
+    assert!(ffkm.contains("NOT SOURCED bound"), "{ffkm}");
+}
+
+/// Issue 39.2: butyl on the 100 bar hydrogen line no longer survives ten years on a missing
+/// figure: polyisobutylene's H2 permeability (Ito 1961, 6.5 barrer) fails it by leak rate,
+/// as NBR and HNBR fail it.
+#[test]
+fn butyl_no_longer_survives_the_hydrogen_line_on_a_zero() {
+    let (_, header, rows) = compare_csv(
+        &scenario_path("hydrogen-line-100bar.toml"),
+        "iir-70,hnbr-75",
+    );
+    let col = |name: &str| header.iter().position(|c| c == name).unwrap();
+    for row in &rows {
+        assert_eq!(row[col("failure_mode")], "leak_rate", "{row:?}");
+        assert!(!row[col("time_to_failure_s")].is_empty(), "{row:?}");
+    }
+    let iir = rows.iter().find(|r| r[0] == "iir-70").unwrap();
+    assert!(iir[col("permeation_source")].contains("Ito"), "{iir:?}");
+    let hnbr = rows.iter().find(|r| r[0] == "hnbr-75").unwrap();
+    assert!(
+        hnbr[col("permeation_source")].starts_with("NOT SOURCED bound"),
+        "{hnbr:?}"
+    );
+}
+
+/// Issue 39.2: a missing figure never reads as zero. A gas run whose compound has no class and
+/// no figure of its own, a flat gasket without its thickness, a gas the table lacks: each exits
+/// 2 at the key that supplies it, saying what to write, and writes nothing. Written, the class
+/// gives its figure — here a NOT SOURCED bound, which the summary, the JSON, the history and
+/// the HTML report all say — and the compound's own figure runs as the user's.
+#[test]
+fn a_missing_permeation_figure_is_refused_where_it_is_supplied() {
+    let ring = fs::read_to_string(scenario_path("helium-leak-test-flange.toml")).unwrap();
+    // an inline compound (the library's FKM curve, no class)
+    let inline = ring.replace(
+        "library = \"fkm-75\"",
+        "youngs_modulus = \"7 MPa\"\npoisson_ratio = 0.5\nthermal_expansion = \"1.6e-4 1/K\"",
+    );
+    let material_line = 1 + inline
+        .lines()
+        .position(|l| l.trim_start().starts_with("[material]"))
+        .unwrap();
+    refused(&inline, material_line, "material.class", "class = \"nbr\"");
+    refused(
+        &inline,
+        material_line,
+        "material.class",
+        "[material.permeation] helium = { permeability",
+    );
+    // a flat gasket without its thickness
+    let gasket = fs::read_to_string(scenario_path("helium-leak-test-gasket.toml")).unwrap();
+    let thin = gasket.replace("thickness = \"2.8 mm\"", "");
+    let seal_line = 1 + thin
+        .lines()
+        .position(|l| l.trim_start().starts_with("[seal]"))
+        .unwrap();
+    refused(
+        &thin,
+        seal_line,
+        "seal.thickness",
+        "missing key `thickness` in [seal]",
+    );
+    // argon: no class has a row
+    let argon = ring.replace("gas = \"helium\"", "gas = \"argon\"");
+    let gas_line = 1 + argon
+        .lines()
+        .position(|l| l.trim_start().starts_with("[fluid]"))
+        .unwrap();
+    refused(
+        &argon,
+        gas_line,
+        "fluid.gas",
+        "[material.permeation] argon = {",
+    );
+    // the class, written: its figure is a bound, and every output says so
+    let dir = tempfile::tempdir().unwrap();
+    let with_class = inline.replace(
+        "poisson_ratio = 0.5",
+        "poisson_ratio = 0.5\nclass = \"nbr\"",
+    );
+    let scenario = dir.path().join("s.toml");
+    fs::write(&scenario, &with_class).unwrap();
+    let (csv, json, html) = (
+        dir.path().join("h.csv"),
+        dir.path().join("s.json"),
+        dir.path().join("r.html"),
+    );
+    let out = crate::support::sealsim()
+        .arg("run")
+        .arg(&scenario)
+        .arg("-o")
+        .arg(&csv)
+        .arg("--summary")
+        .arg(&json)
+        .arg("--report")
+        .arg(&html)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let permeation = stdout
+        .lines()
+        .find(|l| l.starts_with("permeation"))
+        .unwrap();
+    assert!(permeation.contains("NOT SOURCED bound"), "{permeation}");
+    let summary: serde_json::Value =
+        serde_json::from_str(&fs::read_to_string(&json).unwrap()).unwrap();
+    assert_eq!(summary["gas"]["permeation_basis"], "bound");
+    assert!(
+        summary["gas"]["permeation_source"]
+            .as_str()
+            .unwrap()
+            .starts_with("NOT SOURCED bound")
+    );
+    let history = fs::read_to_string(&csv).unwrap();
+    assert!(
+        history
+            .lines()
+            .next()
+            .unwrap()
+            .ends_with(",permeation_basis")
+    );
+    assert!(
+        history.lines().skip(1).all(|l| l.ends_with(",bound")),
+        "{history}"
+    );
+    assert!(
+        fs::read_to_string(&html)
+            .unwrap()
+            .contains("NOT SOURCED bound")
+    );
+    // argon with the compound's own figure next to its library id: the user's figure
+    let own = format!(
+        "{argon}\n[material.permeation]\nargon = {{ permeability = \"0.5 barrer\", source = \
+         \"supplier sheet\" }}\n"
+    );
+    let (code, stdout, stderr, history, summary) = run(&own);
+    assert_eq!(code, Some(0), "{stderr}");
+    assert!(
+        stdout.contains("the user's figure: supplier sheet"),
+        "{stdout}"
+    );
+    assert!(
+        history
+            .unwrap()
+            .lines()
+            .skip(1)
+            .all(|l| l.ends_with(",user"))
+    );
+    let summary: serde_json::Value = serde_json::from_str(&summary.unwrap()).unwrap();
+    assert_eq!(summary["gas"]["permeation_basis"], "user");
 }

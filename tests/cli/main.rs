@@ -15,6 +15,8 @@ mod support;
 
 mod ageing_fit;
 mod callout;
+mod cold;
+mod contact_area;
 mod engineering_units;
 mod figures;
 mod fit;
@@ -24,6 +26,7 @@ mod generate;
 mod generate_reference;
 mod gland;
 mod gland_pressure;
+mod integration;
 mod leak;
 mod materials;
 mod motion;

@@ -225,6 +225,49 @@ fn show_gives_every_parameter_with_units_and_provenance() {
     }
 }
 
+/// Issue 39.3 / 40.4: `materials show` prints where the ageing activation energy comes from,
+/// and every gas figure the compound runs with, each with its source or "NOT SOURCED bound".
+#[test]
+fn show_gives_each_gas_figure_with_its_source_or_its_bound_and_the_ea_source() {
+    let gases = [
+        "helium",
+        "hydrogen",
+        "nitrogen",
+        "oxygen",
+        "air",
+        "carbon-dioxide",
+        "methane",
+    ];
+    for id in library::ids() {
+        let m = library::get(id).unwrap().load().unwrap();
+        let (out, _) = ok(&["materials", "show", id]);
+        let source = m.ageing_basis.as_ref().unwrap().source.clone().unwrap();
+        assert!(out.contains(&format!("Ea source: {source}")), "{id}: {out}");
+        for gas in gases {
+            let line = out
+                .lines()
+                .position(|l| l.trim_start().starts_with(&format!("{gas}: ")))
+                .unwrap_or_else(|| panic!("{id}: {gas} missing: {out}"));
+            let figure = out.lines().nth(line).unwrap();
+            let basis = out.lines().nth(line + 1).unwrap().trim();
+            assert!(figure.contains(" barrer"), "{id} {gas}: {figure}");
+            assert!(
+                ["sourced: ", "ILLUSTRATIVE", "NOT SOURCED bound: "]
+                    .iter()
+                    .any(|w| basis.starts_with(w)),
+                "{id} {gas}: {basis}"
+            );
+        }
+    }
+    // the classes with no figure of their own say so for every gas; silicone's He is PDMS's
+    let (ffkm, _) = ok(&["materials", "show", "ffkm-75"]);
+    assert_eq!(ffkm.matches("NOT SOURCED bound").count(), 7, "{ffkm}");
+    assert!(ffkm.contains("band about the anchor"), "{ffkm}");
+    let (vmq, _) = ok(&["materials", "show", "vmq-70"]);
+    assert!(vmq.contains("helium: 339 barrer"), "{vmq}");
+    assert!(vmq.contains("He/N2 = 1.22"), "{vmq}");
+}
+
 #[test]
 fn curve_at_the_reference_temperature_is_the_series() {
     let dir = Dir::new();
@@ -832,7 +875,8 @@ fn compare_flags_fkm_in_hot_water_and_coolant_and_hnbr_outlives_nbr_in_hot_oil()
     let notes = |rows: &[(String, Vec<String>)], id: &str| {
         rows.iter()
             .find(|(k, _)| k == id)
-            .map(|(_, r)| r.last().unwrap().clone())
+            // the notes column; the compound's Ea source follows it
+            .map(|(_, r)| r[r.len() - 2].clone())
             .unwrap()
     };
     let water = compare_rows(&[], "fkm-75,epdm-70");

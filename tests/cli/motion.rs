@@ -288,10 +288,12 @@ fn rod_seal_run_reports_the_films_and_leaks_the_cycle_mean() {
         )
     );
     let mut rows = 0;
+    let mut net_in_service = 0.0;
     for line in lines {
         let cells: Vec<&str> = line.split(',').collect();
         assert_eq!(cells.len(), 20, "{line}");
         let (leak_rate, net) = (num(cells[9]), num(cells[16]));
+        net_in_service = net;
         // a 1 s cycle: the leak rate is the net volume per cycle per second
         assert_eq!(leak_rate, net, "{line}");
         assert!(num(cells[17]) > num(cells[18]), "{line}");
@@ -322,10 +324,16 @@ fn rod_seal_run_reports_the_films_and_leaks_the_cycle_mean() {
     let carried = i["out_stroke_carried_m3"].as_f64().unwrap();
     let returned = i["in_stroke_returned_m3"].as_f64().unwrap();
     assert!(rel(net, carried - returned) < 1e-12);
-    // constant leak rate: failure by the 0.5 L criterion at 0.5 L/(net per second)
+    // constant leak rate in service: failure by the 0.5 L criterion at 0.5 L/(net per second),
+    // the net of the service temperature (the ring is fitted at 23 °C and warms to 50 °C within
+    // its first 2 minutes, docs/model.md §5.2: the installation's cycle is a cooler one)
     let t = json["time_to_failure_s"].as_f64().unwrap();
     assert_eq!(json["failure_mode"], "leaked_volume");
-    assert!(rel(t, 0.5e-3 / net) < 1e-3, "{t} vs {}", 0.5e-3 / net);
+    assert!(
+        rel(t, 0.5e-3 / net_in_service) < 1e-3,
+        "{t} vs {}",
+        0.5e-3 / net_in_service
+    );
     eprintln!(
         "rod seal: net {net:.4e} m³/cycle, carried {carried:.4e} m³, failure after {t:.4e} s"
     );

@@ -35,6 +35,9 @@ history = "cold.csv"
 [failure]
 max_leak_rate = "1 mL/h"
 lift_off = true
+# the run's own loss of contact (the shutdown check and the cold limit fail these rings first)
+lost_interference = false
+low_temperature = false
 [simulation]
 duration = "54 h"
 "#

@@ -13,7 +13,8 @@ use tempfile::TempDir;
 
 const COMPARE_HEADER: &str = "material,name,status,time_to_failure_s,failure_mode,\
 leak_rate_1day_m3_per_s,leak_rate_1year_m3_per_s,leak_rate_10years_m3_per_s,\
-sealing_force_end_N_per_m,retained_force_end,leaked_volume_end_m3,compression_set_end,state_end,notes";
+sealing_force_end_N_per_m,retained_force_end,leaked_volume_end_m3,compression_set_end,state_end,notes,\
+activation_energy_source";
 
 const SUMMARY_KEYS: [&str; 10] = [
     "scenario",
@@ -165,14 +166,14 @@ fn every_shipped_scenario_runs_without_nan() {
             ",drag_leak_rate_m3_per_s,net_volume_per_cycle_m3,out_stroke_film_m,\
              in_stroke_film_m,speed_regime",
             // a gas: its throughput and its permeation through the rubber
-            ",throughput_Pa_m3_per_s,permeation_Pa_m3_per_s",
+            ",throughput_Pa_m3_per_s,permeation_Pa_m3_per_s,permeation_basis",
         ]
         .iter()
         .position(|e| header == format!("{HISTORY_HEADER}{e}"))
         .unwrap_or_else(|| panic!("{name}: header {header}"))
         {
             2 => 5,
-            3 => 2,
+            3 => 3,
             k => k,
         };
         let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
@@ -183,10 +184,12 @@ fn every_shipped_scenario_runs_without_nan() {
         );
         for row in &rows {
             assert_eq!(row.len(), 15 + extra, "{name}: {row:?}");
-            // compression set: blank without [ageing], a fraction with it
+            // compression set: blank without [ageing], a fraction of the squeeze as fitted with
+            // it (above 1 when the service temperature squeezes the ring harder than fitted,
+            // docs/model.md §6.5: the shipped rings by at most 6 %)
             if !row[13].is_empty() {
                 let set: f64 = row[13].parse().unwrap();
-                assert!((0.0..=1.0).contains(&set), "{name}: compression set {set}");
+                assert!((0.0..=1.1).contains(&set), "{name}: compression set {set}");
             }
             // the set ring's squeeze at shutdown: blank where the check does not apply
             if !row[14].is_empty() {
@@ -198,9 +201,14 @@ fn every_shipped_scenario_runs_without_nan() {
             }
             for cell in &row[15..] {
                 let regime = ["low_speed", "transition", "inverse_hydrodynamic"];
+                // a gas's permeation basis
+                let basis = ["published", "illustrative", "bound", "user"];
                 let blank_film = cell.is_empty() || *cell == "low_speed_no_profile";
                 assert!(
-                    regime.contains(cell) || blank_film || cell.parse::<f64>().unwrap().is_finite(),
+                    regime.contains(cell)
+                        || basis.contains(cell)
+                        || blank_film
+                        || cell.parse::<f64>().unwrap().is_finite(),
                     "{name}: {cell}"
                 );
             }
@@ -272,12 +280,15 @@ fn shipped_life_scenarios_show_their_point() {
     // ageing ends the FKM's life
     let (_, fkm) = run("oring-fkm-hot-oil-ageing.toml");
     assert_eq!(fkm["failure_mode"], "retained_force");
-    // cold night: NBR fails at night, silicone survives
+    // cold night: NBR fails (its shutdown at −40 °C, below T10, loses the glassy ring's
+    // contact from the start; the night crosses its cold limit in the evening ramp), silicone
+    // survives
     let (_, nbr) = run("cold-night-nbr.toml");
     let (_, vmq) = run("cold-night-vmq.toml");
-    assert_eq!(nbr["failure_mode"], "leak_rate");
-    let t = nbr["time_to_failure_s"].as_f64().unwrap();
-    assert!((30.0 * 3600.0..46.0 * 3600.0).contains(&t), "{t}");
+    assert_eq!(nbr["failure_mode"], "lost_interference");
+    assert_eq!(nbr["time_to_failure_s"].as_f64(), Some(0.0));
+    let t = nbr["low_temperature"]["crossed_s"].as_f64().unwrap();
+    assert!((30.0 * 3600.0..34.0 * 3600.0).contains(&t), "{t}");
     assert_eq!(vmq["failure_mode"], "none");
     // the spring-loaded seal: the asperities creep under the held load, the leak rate falls
     let (_, spring) = run("spring-loaded-face-seal.toml");
@@ -584,7 +595,19 @@ fn malformed_temperature_histories_are_located() {
         .unwrap()
         .parse()
         .unwrap();
-    assert!((first - 293.15).abs() < 1e-9);
+    // fitted at 23 °C (the gland's default, docs/model.md §5.2), then the history's 20 °C at
+    // t = 0 onwards; the last row at the history's 80 °C
+    assert!((first - 296.15).abs() < 1e-9, "{first}");
+    let last: f64 = csv
+        .lines()
+        .last()
+        .unwrap()
+        .split(',')
+        .nth(1)
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!((last - 353.15).abs() < 1e-9, "{last}");
 }
 
 #[test]
@@ -629,7 +652,7 @@ fn compare_runs_each_compound() {
     assert_eq!(rows[2][1], "soft test rubber");
     assert_eq!(rows[2][2], "user");
     for row in &rows {
-        assert_eq!(row.len(), 14);
+        assert_eq!(row.len(), 15);
         // the leak rates at 1 day, 1 year, 10 years, and the force at the end
         for cell in &row[5..9] {
             assert!(cell.parse::<f64>().unwrap() > 0.0, "{row:?}");
@@ -702,8 +725,10 @@ fn compare_rejects_unknown_ids() {
         .success();
     let stdout = String::from_utf8(assert.get_output().stdout.clone()).unwrap();
     let row = stdout.lines().find(|l| l.contains("soft")).unwrap();
+    // the notes, then where the compound's Ea comes from (here: nowhere)
     assert!(
-        row.ends_with("no ageing constants: run without ageing"),
+        row.contains("no ageing constants: run without ageing ")
+            && row.ends_with("  no ageing constants"),
         "{stdout}"
     );
     let fkm = stdout.lines().find(|l| l.starts_with("fkm-75")).unwrap();

@@ -481,6 +481,7 @@ fn material_toml_round_trips_through_the_parser() {
         glassy_thermal_expansion: Some(7.7e-5),
         ageing: Some(Ageing {
             activation_energy: 9e4,
+            activation_energy_above: 9e4,
             rate: 1e-9,
             reference_temperature: 373.15,
             crosslinking: 1.0,
@@ -489,6 +490,7 @@ fn material_toml_round_trips_through_the_parser() {
             property: "compression stress relaxation".into(),
             criterion: "50 % force retained".into(),
             medium: None,
+            source: None,
         }),
         data_reduced_time: Some((1e-3, 3.6e6)),
         data_temperature: Some((253.15, 373.15)),
@@ -507,6 +509,8 @@ fn material_toml_round_trips_through_the_parser() {
         .collect(),
         compatibility: Vec::new(),
         library_id: None,
+        class: None,
+        permeation: Vec::new(),
     };
     let text = material_toml(&full);
     let parsed =
@@ -525,6 +529,8 @@ fn material_toml_round_trips_through_the_parser() {
         glass_transition: None,
         provenance: Vec::new(),
         library_id: None,
+        class: None,
+        permeation: Vec::new(),
         ..full.clone()
     };
     let parsed = material_from_str(&material_toml(&user), Path::new("user.toml")).unwrap();

@@ -19,6 +19,7 @@ fn problem(law: ViscosityLaw, environment: TemperatureHistory) -> LifeProblem {
             start: 1.0,
             duration: 1e6,
             points_per_decade: 4.0,
+            tolerance: TimeGrid::DEFAULT_TOLERANCE,
         },
         ..base
     }

@@ -15,6 +15,7 @@ mod common;
 mod architecture;
 mod bem;
 mod clogging;
+mod contact_area;
 mod dynamic;
 mod effective_medium;
 mod fit;

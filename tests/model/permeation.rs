@@ -294,7 +294,7 @@ fn the_helium_flange_run_carries_permeation_building_up_to_the_closed_form() {
     let mut problem = Scenario::from_str(HELIUM_FLANGE, Path::new("helium.toml"))
         .unwrap()
         .life;
-    let seal = problem.permeation.expect("FKM + helium has data");
+    let seal = problem.permeation.clone().expect("FKM + helium has data");
     let SealGeometry::ORing {
         cross_section,
         mean_diameter,

@@ -57,6 +57,18 @@ impl Fidelity {
         }
     }
 
+    /// The neighbouring level a life summary sets its figures beside (docs/model.md §4.1): the
+    /// nearest level that computes the gap by *another model* — the critical junction and the
+    /// effective medium are each other's (the `exact` level is the critical junction by
+    /// quadrature: its neighbour is the effective medium too); the rule of thumb's is the critical
+    /// junction it approximates; the numerical reference's the effective medium.
+    pub fn neighbour(self) -> Fidelity {
+        match self {
+            Fidelity::RuleOfThumb | Fidelity::EffectiveMedium => Fidelity::Table,
+            Fidelity::Table | Fidelity::Exact | Fidelity::Numerical => Fidelity::EffectiveMedium,
+        }
+    }
+
     /// Other names of the level (scenario files and command line alike).
     pub fn aliases(self) -> &'static [&'static str] {
         match self {

@@ -138,7 +138,9 @@ impl SeparationDistribution {
     /// The ζ-integral is done in `x = ln M3(ζ)`, `M3(ζ) = ∫_{q0}^{ζq0} q³C dq`, where
     /// `A/A0 = erf(y)`, `y = s/√(π M3)`, is smooth (`−dA/dx = y e^{−y²}/√π`) however sharply
     /// it drops in ζ at low pressure: Gauss–Legendre panels of `panel_width` in x, broken at
-    /// the kinks of C(q), from `y = 6` (A/A0 = 1 − 2e-17) to ζ1.
+    /// the kinks of C(q), from `y = 6` (A/A0 = 1 − 2e-17) to ζ1. With the corrected area
+    /// (docs/model.md §2) `y = s/√(π M3_eff)` and `−dA/dx = g y e^{−y²}/√π`,
+    /// `g = d ln M3_eff/d ln M3`; at y = 6 the two areas are the same (full contact).
     pub fn persson(contact: &PerssonContact, s: f64, settings: EffectiveMediumSettings) -> Self {
         let sp = contact.spectrum();
         let (q0, q1) = (sp.q0(), sp.q1());
@@ -167,11 +169,13 @@ impl SeparationDistribution {
             let Some(ln_q) = sp.invert_m3(x.exp()) else {
                 continue;
             };
-            let y = s / (PI * x.exp()).sqrt();
+            // the corrected area: M3_eff = r·M3 and −dA/dx gains g = d ln M3_eff/d ln M3
+            let (ratio, growth) = contact.area_scaling(x.exp(), s);
+            let y = s / (PI * x.exp() * ratio).sqrt();
             let zeta = (ln_q - q0.ln()).exp().max(1.0);
             let sep = contact.separation(zeta, s);
             components.push(FoldedGaussian {
-                weight: weight * y * (-y * y).exp() / PI.sqrt(),
+                weight: weight * y * (-y * y).exp() / PI.sqrt() * growth,
                 center: sep.u1(),
                 width: sp.rms_roughness_above(ln_q.exp()),
             });

@@ -14,10 +14,12 @@
 //! because F(∞) = 0), with the same quadrature nodes as ū, so u1 carries no finite-difference
 //! error.
 
+pub mod area;
 pub mod effective_medium;
 pub mod separation;
 pub mod table;
 
+pub use area::{AreaModel, ScaleMarch};
 pub use effective_medium::{EffectiveMedium, EffectiveMediumSettings, SeparationDistribution};
 pub use table::{ContactTable, EffectiveMediumTable, TableSettings};
 
@@ -82,6 +84,8 @@ pub struct ContactSettings {
     pub percolation_threshold: f64,
     /// γ of the ū kernel (PY08 §2, ≈ 0.4).
     pub gamma: f64,
+    /// The relation of the contact area A(ζ)/A0 ([`AreaModel`], docs/model.md §2).
+    pub area: AreaModel,
     pub quadrature: QuadratureSettings,
 }
 
@@ -90,6 +94,7 @@ impl Default for ContactSettings {
         ContactSettings {
             percolation_threshold: 0.4,
             gamma: 0.4,
+            area: AreaModel::Persson,
             quadrature: QuadratureSettings::default(),
         }
     }
@@ -173,6 +178,10 @@ pub struct PerssonContact {
     settings: ContactSettings,
     /// erfinv(a_c)², fixed by the threshold.
     erfinv2: f64,
+    /// The corrected area's scale march (`None`: Persson's area).
+    march: Option<&'static ScaleMarch>,
+    /// With a march: `x_c = Φ⁻¹(1/(π erfinv²(a_c)))`, so that `M3(ζc) = s² x_c`.
+    critical_x: f64,
     nodes: Vec<f64>,
     weights: Vec<f64>,
 }
@@ -182,10 +191,14 @@ impl PerssonContact {
     pub fn new(spectrum: Spectrum, settings: ContactSettings) -> Self {
         let (nodes, weights) = gauss_legendre(settings.quadrature.order.max(1));
         let e = erf_inv(settings.percolation_threshold);
+        let march = settings.area.march();
+        let critical_x = march.map_or(0.0, |m| m.inverse(1.0 / (PI * e * e)));
         PerssonContact {
             spectrum,
             settings,
             erfinv2: e * e,
+            march,
+            critical_x,
             nodes,
             weights,
         }
@@ -199,17 +212,39 @@ impl PerssonContact {
         &self.settings
     }
 
-    /// Relative apparent contact area `A(ζ)/A0 = erf(s/√(π M3(ζ)))` at reduced pressure s.
+    /// Relative apparent contact area `A(ζ)/A0 = erf(s/√(π M3(ζ)))` at reduced pressure s;
+    /// with the corrected area `M3_eff = s² Φ(M3/s²)` in place of `M3` ([`area`]).
     pub fn area_fraction(&self, zeta: f64, s: f64) -> f64 {
         let m3 = self.spectrum.m3_to(zeta * self.spectrum.q0());
         if m3 <= 0.0 {
             return 1.0;
         }
-        erf(s / (PI * m3).sqrt())
+        let (ratio, _) = self.area_scaling(m3, s);
+        erf(s / (PI * m3 * ratio).sqrt())
+    }
+
+    /// `(M3_eff/M3, d ln M3_eff/d ln M3)` at the moment `m3` and reduced pressure `s`: `(1, 1)`
+    /// for Persson's area (multiplying by 1 changes no bit), the scale march's otherwise.
+    pub(crate) fn area_scaling(&self, m3: f64, s: f64) -> (f64, f64) {
+        match self.march {
+            None => (1.0, 1.0),
+            Some(m) => m.scaled(m3 / (s * s)),
+        }
+    }
+
+    /// The reduced pressure at which the area at full magnification is `A(q1/q0)/A0 = a`,
+    /// a ∈ (0, 1): `erfinv(a) √(π M3(q1))` for Persson's area, `√(M3(q1)/Φ⁻¹(1/(π erfinv²a)))`
+    /// for the corrected one.
+    pub fn reduced_pressure_at_area(&self, a: f64) -> f64 {
+        let e = erf_inv(a);
+        match self.march {
+            None => e * (PI * self.spectrum.total_m3()).sqrt(),
+            Some(m) => (self.spectrum.total_m3() / m.inverse(1.0 / (PI * e * e))).sqrt(),
+        }
     }
 
     /// The interface at full magnification at reduced pressure `s = P0/E*`:
-    /// `A(q1/q0)/A0 = erf(s/√(π M3(q1)))` and the mean separation ū(ζ = 1) (PY08 §2; the
+    /// `A(q1/q0)/A0 = erf(s/√(π M3(q1)))` (or the corrected area, [`area`]) and the mean separation ū(ζ = 1) (PY08 §2; the
     /// quadrature of [`Self::separation`]). `sealsim leak`'s `area_fraction` and `mean_gap_m` at
     /// every analytic level, and the Python package's `sealsim.contact`.
     pub fn full_contact(&self, s: f64) -> FullContact {
@@ -221,14 +256,22 @@ impl PerssonContact {
     }
 
     /// The reduced pressure `P0/E*` above which no channel percolates below q1:
-    /// `s_seal = erfinv(a_c) √(π M3(q1))`.
+    /// `s_seal = erfinv(a_c) √(π M3(q1))`; with the corrected area `√(M3(q1)/x_c)`,
+    /// `x_c = Φ⁻¹(1/(π erfinv²(a_c)))`.
     pub fn sealing_reduced_pressure(&self) -> f64 {
-        (self.erfinv2 * PI * self.spectrum.total_m3()).sqrt()
+        match self.march {
+            None => (self.erfinv2 * PI * self.spectrum.total_m3()).sqrt(),
+            Some(_) => (self.spectrum.total_m3() / self.critical_x).sqrt(),
+        }
     }
 
-    /// `M3(ζc) = s²/(π erfinv²(a_c))`: the moment at the critical magnification.
+    /// `M3(ζc) = s²/(π erfinv²(a_c))`: the moment at the critical magnification (`s² x_c` with
+    /// the corrected area).
     fn critical_m3(&self, s: f64) -> f64 {
-        s * s / (PI * self.erfinv2)
+        match self.march {
+            None => s * s / (PI * self.erfinv2),
+            Some(_) => s * s * self.critical_x,
+        }
     }
 
     /// Critical magnification ζc at reduced pressure s, or `None` when sealed.
@@ -252,10 +295,13 @@ impl PerssonContact {
         let gamma = self.settings.gamma;
         // dM3/d ln ζ = a⁴ C(a)
         let dm3 = (4.0 * ln_a + sp.ln_c(ln_a)).exp();
-        let y = s / (PI * m3).sqrt();
+        // the area (and A′) from the corrected moment M3_eff = r·M3, d ln M3_eff = g d ln M3;
+        // the kernel below keeps the spectrum's own M3 (docs/model.md §2)
+        let (ratio, growth) = self.area_scaling(m3, s);
+        let y = s / (PI * m3 * ratio).sqrt();
         let area = erf(y);
         let area_d = if m3 > 0.0 {
-            -(y / PI.sqrt()) * (-y * y).exp() * dm3 / m3
+            -(y / PI.sqrt()) * (-y * y).exp() * dm3 / m3 * growth
         } else {
             0.0
         };
@@ -387,7 +433,10 @@ impl PerssonContact {
             return Junction::Sealed;
         }
         let e = erf_inv(threshold);
-        let m3 = s * s / (PI * e * e);
+        let m3 = match self.march {
+            None => s * s / (PI * e * e),
+            Some(m) => s * s * m.inverse(1.0 / (PI * e * e)),
+        };
         if !m3.is_finite() {
             return Junction::Sealed;
         }

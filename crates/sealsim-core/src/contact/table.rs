@@ -12,7 +12,6 @@
 
 use super::{EffectiveMedium, EffectiveMediumSettings, Junction, PerssonContact};
 use crate::math::interp::UniformCubic;
-use crate::math::special::erf_inv;
 use std::sync::OnceLock;
 
 /// How the table is laid out.
@@ -212,7 +211,8 @@ impl ContactTable {
 
 /// The effective gap `u_eff(P0/E*) = (12 η σ_eff)^{1/3}` of the effective-medium level
 /// (docs/model.md §3.3), built once per surface like [`ContactTable`]: `ln(u_eff/h_rms)` on a uniform
-/// grid in `logit(s/s_half)`, where `s_half = erfinv(½) √(π M3(q1))` is the pressure at which
+/// grid in `logit(s/s_half)`, where `s_half = erfinv(½) √(π M3(q1))` (with the corrected area
+/// [`PerssonContact::reduced_pressure_at_area`]) is the pressure at which
 /// the contact fraction reaches the 2-D threshold ½ and σ_eff vanishes (linearly in u_eff).
 /// Outside the tabulated range (and within `upper_gap` of `s_half`) the Bruggeman solve
 /// answers directly. It also carries the critical-junction table of the same surface, whose
@@ -287,8 +287,7 @@ impl EffectiveMediumTable {
         table: TableSettings,
         settings: EffectiveMediumSettings,
     ) -> Self {
-        let e = erf_inv(0.5);
-        let s_half = e * (std::f64::consts::PI * exact.spectrum().total_m3()).sqrt();
+        let s_half = exact.reduced_pressure_at_area(0.5);
         let ln_h = exact.spectrum().rms_roughness().ln();
         let (lo, h, n) = table.logit_grid();
         // Each node is an independent Bruggeman solve of a few ms: two threads take alternate

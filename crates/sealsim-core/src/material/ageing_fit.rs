@@ -293,6 +293,7 @@ pub fn ageing_constants(
     let life = fit.time_at(reference_temperature);
     let ageing = Ageing {
         activation_energy: fit.activation_energy,
+        activation_energy_above: fit.activation_energy,
         rate: kind.rate(criterion, life),
         reference_temperature,
         crosslinking: BALANCED_CROSSLINKING,
@@ -305,6 +306,7 @@ pub fn ageing_constants(
                 .into(),
             criterion: format!("{} % compression set", show(percent)),
             medium: None,
+            source: None,
         },
         AgeingKind::RetainedForce => AgeingBasis {
             property: "retained sealing force (Arrhenius fit by sealsim ageing-fit, ISO 11346); \
@@ -312,6 +314,7 @@ pub fn ageing_constants(
                 .into(),
             criterion: format!("{} % force retained", show(percent)),
             medium: None,
+            source: None,
         },
     };
     (ageing, basis)

@@ -93,10 +93,17 @@ impl Status {
 /// J. Appl. Phys. 17 (1946) 352): the original network breaks at the Arrhenius rate
 /// `k(T) = k_ref exp(−(Ea/R)(1/T − 1/T_ref))` \[1/s\] (ISO 11346 practice), and a new network
 /// forms at `r·k(T)` in the deformed state ([`crate::material::RelaxationState::step_aged`]).
+///
+/// The activation energy may differ on the two sides of the anchor T_ref (a band of Ea about a
+/// rating, docs/model.md §6.5): `Ea = activation_energy` at and below T_ref,
+/// `activation_energy_above` above it. k is continuous at T_ref; one Arrhenius law when the two
+/// are equal.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Ageing {
-    /// Ea \[J/mol\].
+    /// Ea at and below `reference_temperature` \[J/mol\].
     pub activation_energy: f64,
+    /// Ea above `reference_temperature` \[J/mol\] (= `activation_energy` for one law).
+    pub activation_energy_above: f64,
     /// k_ref \[1/s\] at `reference_temperature`.
     pub rate: f64,
     /// T_ref \[K\].
@@ -110,6 +117,63 @@ pub struct Ageing {
 /// The default r of [`Ageing::crosslinking`].
 pub const BALANCED_CROSSLINKING: f64 = 1.0;
 
+impl Ageing {
+    /// One Arrhenius law: Ea \[J/mol\] on both sides of T_ref \[K\], k_ref \[1/s\], r.
+    pub fn arrhenius(
+        activation_energy: f64,
+        rate: f64,
+        reference_temperature: f64,
+        crosslinking: f64,
+    ) -> Self {
+        Ageing {
+            activation_energy,
+            activation_energy_above: activation_energy,
+            rate,
+            reference_temperature,
+            crosslinking,
+        }
+    }
+
+    /// Whether the activation energy differs above T_ref.
+    pub fn is_two_sided(&self) -> bool {
+        self.activation_energy_above != self.activation_energy
+    }
+
+    /// The activation energy in force at T \[K\]: above T_ref `activation_energy_above`, else
+    /// `activation_energy` \[J/mol\].
+    pub fn activation_energy_at(&self, temperature: f64) -> f64 {
+        if temperature > self.reference_temperature {
+            self.activation_energy_above
+        } else {
+            self.activation_energy
+        }
+    }
+
+    /// `k(T) = k_ref exp(−(Ea(T)/R)(1/T − 1/T_ref))` \[1/s\] at T \[K\].
+    pub fn rate_at(&self, temperature: f64) -> f64 {
+        let ea = self.activation_energy_at(temperature);
+        self.rate
+            * (-(ea / super::shift::GAS_CONSTANT)
+                * (1.0 / temperature - 1.0 / self.reference_temperature))
+                .exp()
+    }
+
+    /// The scission `K = ∫_a^b k(T(t)) dt` over `history` between times `a` and `b` \[s\]
+    /// ([`super::shift::reduced_time_two_sided`]: exact at constant temperature, split where
+    /// T crosses T_ref otherwise).
+    pub fn scission(&self, history: &super::TemperatureHistory, a: f64, b: f64) -> f64 {
+        self.rate
+            * super::shift::reduced_time_two_sided(
+                history,
+                self.reference_temperature,
+                self.activation_energy,
+                self.activation_energy_above,
+                a,
+                b,
+            )
+    }
+}
+
 /// What a compound's ageing constants were measured on (library files): the property
 /// (compression stress relaxation, compression set, …) and the end-of-life criterion.
 #[derive(Debug, Clone, PartialEq)]
@@ -119,6 +183,9 @@ pub struct AgeingBasis {
     /// The medium the compound was aged in (`None`: not stated); a run in another medium warns
     /// (docs/model.md §6.8).
     pub medium: Option<AgeingMedium>,
+    /// Where the activation energy comes from, in a line (`[material.ageing] source`; the
+    /// `ageing` provenance has the whole chain); `sealsim compare` prints it beside each row.
+    pub source: Option<String>,
 }
 
 /// The medium ageing constants were measured in (`[material.ageing] medium`).
@@ -192,6 +259,14 @@ pub struct Material {
     /// fitted or user-file material. Data kept by compound class (permeation, docs/model.md
     /// §13.4) follow it.
     pub library_id: Option<String>,
+    /// The compound class (`nbr`, `hnbr`, `fkm`, `ffkm`, `epdm`, `vmq`, `fvmq`, `iir`, `cr`,
+    /// `acm`: [`crate::permeation::FAMILIES`]) whose data kept by class apply to it (gas
+    /// permeation, docs/model.md §13.4): a library compound's from its id, another material's
+    /// from its `class` key; `None`: none.
+    pub class: Option<String>,
+    /// The compound's own gas permeation figures (`[material.permeation]`), which take
+    /// precedence over its class's.
+    pub permeation: Vec<crate::permeation::UserPermeation>,
 }
 
 impl Material {
@@ -215,6 +290,8 @@ impl Material {
             provenance: Vec::new(),
             compatibility: Vec::new(),
             library_id: None,
+            class: None,
+            permeation: Vec::new(),
         }
     }
 

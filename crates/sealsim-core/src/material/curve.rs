@@ -238,6 +238,8 @@ mod tests {
             provenance: Vec::new(),
             compatibility: Vec::new(),
             library_id: None,
+            class: None,
+            permeation: Vec::new(),
         }
     }
 

@@ -184,6 +184,80 @@ impl TemperatureHistory {
         self.points.iter().map(|p| p.0)
     }
 
+    /// The coldest temperature over `[a, b]` \[K\] and its first time \[s\]: the table's
+    /// points and the ends exactly; with cycles, each cycle's period split into eighths (where
+    /// the sum is smooth) and the coldest of those points refined by golden-section search on
+    /// its two neighbouring pieces.
+    pub fn coldest(&self, a: f64, b: f64) -> (f64, f64) {
+        let points = self.breakpoints(a, b.max(a));
+        let mut best = (self.at(a), a);
+        for &t in &points {
+            let y = self.at(t);
+            if y < best.0 {
+                best = (y, t);
+            }
+        }
+        if self.shortest_period().is_some() {
+            let k = points.partition_point(|&t| t < best.1);
+            let lo = points[k.saturating_sub(1)];
+            let hi = points[(k + 1).min(points.len() - 1)];
+            if hi > lo {
+                let t =
+                    sealsim_math::roots::golden_section(|t| self.at(t), lo, hi, 1e-9 * (hi - lo));
+                let y = self.at(t);
+                if y < best.0 {
+                    best = (y, t);
+                }
+            }
+        }
+        best
+    }
+
+    /// The first time in `[a, b]` at which T(t) < `threshold` \[s\] (`None`: never), by
+    /// bisection on T(t) within the first piece between breakpoints that goes below it (a
+    /// table's piece is linear: its end decides; with cycles its coldest point, found by
+    /// golden-section search, does).
+    pub fn first_below(&self, threshold: f64, a: f64, b: f64) -> Option<f64> {
+        if self.at(a) < threshold {
+            return Some(a);
+        }
+        let cycles = self.shortest_period().is_some();
+        // a bound on the slope of the cycles' sum, Σ A 2π/P: with the table's own (linear
+        // within a piece) it keeps a piece whose ends are far enough above the threshold above
+        // it throughout, and spares its search
+        let cycle_slope: f64 = self
+            .cycles
+            .iter()
+            .map(|c| c.amplitude.abs() * std::f64::consts::TAU / c.period)
+            .sum();
+        let points = self.breakpoints(a, b.max(a));
+        points.windows(2).find_map(|w| {
+            let (lo, hi) = (w[0], w[1]);
+            let (y_lo, y_hi) = (self.at(lo), self.at(hi));
+            let slope = cycle_slope + ((self.base(hi) - self.base(lo)) / (hi - lo)).abs();
+            if cycles && 0.5 * (y_lo + y_hi) - 0.5 * slope * (hi - lo) >= threshold {
+                return None;
+            }
+            let cold = if cycles {
+                sealsim_math::roots::golden_section(|t| self.at(t), lo, hi, 1e-9 * (hi - lo))
+            } else {
+                hi
+            };
+            let end = if self.at(hi) < threshold { hi } else { cold };
+            (self.at(end) < threshold).then(|| {
+                // invariant: T(lo) ≥ threshold > T(end)
+                let (_, t) = sealsim_math::roots::bisect(
+                    lo,
+                    end,
+                    200,
+                    sealsim_math::roots::to_the_last_bit,
+                    |t| self.at(t) >= threshold,
+                );
+                t
+            })
+        })
+    }
+
     /// Lowest and highest temperature the history can reach \[K\] (bounds, for warnings).
     pub fn range(&self) -> (f64, f64) {
         let amp: f64 = self.cycles.iter().map(|c| c.amplitude.abs()).sum();
@@ -241,6 +315,98 @@ pub fn reduced_time(history: &TemperatureHistory, shift: &Shift, a: f64, b: f64)
         .sum()
 }
 
+/// Reduced time of a two-sided Arrhenius law anchored at `reference` T_a \[K\]:
+/// `∫_a^b exp(−E(T)/R (1/T − 1/T_a)) dt` \[s\], with `E(T) = below` for T ≤ T_a and
+/// `E(T) = above` for T > T_a \[J/mol\] (a band of activation energies about an anchor,
+/// docs/model.md §6.5). The rate is continuous at T_a (1 there on both sides); only its slope
+/// in 1/T jumps.
+///
+/// Exact for a constant temperature. Otherwise each smooth piece of [`reduced_time`] (between
+/// the history's kinks and eighths of its cycles) is split again where T(t) crosses T_a (sign
+/// changes of T − T_a on 16 sub-steps, each bisected to the last bit), so every piece sees one
+/// Arrhenius law and is integrated like [`reduced_time`] to 1e-12 relative. With
+/// `below == above` it is [`reduced_time`] of that one law.
+pub fn reduced_time_two_sided(
+    history: &TemperatureHistory,
+    reference: f64,
+    below: f64,
+    above: f64,
+    a: f64,
+    b: f64,
+) -> f64 {
+    let law = |activation_energy: f64| Shift::Arrhenius {
+        reference,
+        activation_energy,
+    };
+    let side = |t: f64| if t > reference { above } else { below };
+    if below == above {
+        return reduced_time(history, &law(below), a, b);
+    }
+    if b <= a {
+        return 0.0;
+    }
+    if history.is_constant() {
+        return reduced_time(history, &law(side(history.at(a))), a, b);
+    }
+    // a history that never reaches the anchor (or never leaves the side below it) sees one law
+    let (coldest, hottest) = history.range();
+    if hottest <= reference {
+        return reduced_time(history, &law(below), a, b);
+    }
+    if coldest > reference {
+        return reduced_time(history, &law(above), a, b);
+    }
+    let mut total = 0.0;
+    for w in history.breakpoints(a, b).windows(2) {
+        let mut cuts = vec![w[0]];
+        cuts.extend(crossings(history, reference, w[0], w[1]));
+        cuts.push(w[1]);
+        for c in cuts.windows(2) {
+            if c[1] <= c[0] {
+                continue;
+            }
+            let shift = law(side(history.at(0.5 * (c[0] + c[1]))));
+            let rate = |t: f64| shift.ln_rate(history.at(t)).exp();
+            total += adaptive(&rate, c[0], c[1]);
+        }
+    }
+    total
+}
+
+/// Times in `(a, b)` where `history` crosses `level` \[K\]: sign changes of T − level on 16
+/// equal sub-steps, each bisected until the bracket stops shrinking.
+fn crossings(history: &TemperatureHistory, level: f64, a: f64, b: f64) -> Vec<f64> {
+    const STEPS: usize = 16;
+    let above = |t: f64| history.at(t) > level;
+    let mut out = Vec::new();
+    let mut t0 = a;
+    for k in 1..=STEPS {
+        let t1 = if k == STEPS {
+            b
+        } else {
+            a + (b - a) * k as f64 / STEPS as f64
+        };
+        if above(t0) != above(t1) {
+            let (mut lo, mut hi) = (t0, t1);
+            let side = above(lo);
+            loop {
+                let mid = 0.5 * (lo + hi);
+                if mid <= lo || mid >= hi {
+                    break;
+                }
+                if above(mid) == side {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            out.push(0.5 * (lo + hi));
+        }
+        t0 = t1;
+    }
+    out
+}
+
 fn rules() -> &'static [(Vec<f64>, Vec<f64>); 2] {
     static RULES: OnceLock<[(Vec<f64>, Vec<f64>); 2]> = OnceLock::new();
     RULES.get_or_init(|| [gauss_legendre(8), gauss_legendre(16)])
@@ -295,6 +461,42 @@ mod tests {
         c1: 8.86,
         c2: 101.6,
     };
+
+    #[test]
+    fn coldest_point_and_first_crossing_are_the_closed_forms() {
+        // a table: 25 °C, down to −40 °C over 4 h from 30 h, held, back up
+        let night = TemperatureHistory::table(vec![
+            (0.0, 298.15),
+            (108_000.0, 298.15),
+            (122_400.0, 233.15),
+            (151_200.0, 233.15),
+            (165_600.0, 298.15),
+        ]);
+        assert_eq!(night.coldest(0.0, 432_000.0), (233.15, 122_400.0));
+        // before the cold: the end of the window
+        assert_eq!(night.coldest(0.0, 115_200.0).1, 115_200.0);
+        // T(t) < 243 K first at 108000 + 14400 (298.15 − 243)/65 s on the ramp
+        let t = night.first_below(243.0, 0.0, 432_000.0).unwrap();
+        let exact = 108_000.0 + 14_400.0 * (298.15 - 243.0) / 65.0;
+        assert!((t - exact).abs() < 1e-9 * exact, "{t} vs {exact}");
+        assert_eq!(night.first_below(233.0, 0.0, 432_000.0), None);
+        assert_eq!(night.first_below(300.0, 0.0, 432_000.0), Some(0.0));
+        // a daily cycle of 10 K around 0 °C, zero crossing upwards at 6 h: coldest at 0 h and
+        // 24 h, −10 °C; from 7 h (warm) below −5 °C first where the sine falls below −1/2
+        let day = 86_400.0;
+        let cycled = TemperatureHistory::constant(273.15).with_cycle(Cycle {
+            amplitude: 10.0,
+            period: day,
+            phase: 6.0 * 3600.0,
+        });
+        let (cold, when) = cycled.coldest(3600.0, 2.0 * day);
+        assert!((cold - 263.15).abs() < 1e-9, "{cold}");
+        assert!((when - day).abs() < 1.0, "{when}");
+        // sin(2π(t − 6 h)/P) < −1/2 first at t − 6 h = 7P/12, t = 20 h
+        let t = cycled.first_below(268.15, 7.0 * 3600.0, 2.0 * day).unwrap();
+        assert!((t - 20.0 * 3600.0).abs() < 1e-6, "{t}");
+        assert_eq!(cycled.first_below(263.0, 7.0 * 3600.0, 2.0 * day), None);
+    }
 
     #[test]
     fn wlf_sign_reference_and_frozen_limit() {
@@ -368,6 +570,59 @@ mod tests {
         assert!((ten / (10.0 * one) - 1.0).abs() < 1e-11);
         // hotter half-days dominate: more than the mean-temperature value
         assert!(one > DAY / s.factor(320.0));
+    }
+
+    /// The two-sided law: closed forms at constant temperature on both sides of the anchor, a
+    /// ramp through the anchor against the one-sided integrals split at the known crossing
+    /// time t* = (T_a − T0)/slope and against a 1e6-point midpoint rule, a daily cycle that
+    /// crosses the anchor twice a day against the midpoint rule.
+    #[test]
+    fn two_sided_arrhenius_is_exact_on_each_side() {
+        let (ta, lo, hi) = (373.15, 50e3, 105e3);
+        let one = |e: f64| Shift::Arrhenius {
+            reference: ta,
+            activation_energy: e,
+        };
+        for (t, e) in [(300.0, lo), (373.15, lo), (420.0, hi)] {
+            let h = TemperatureHistory::constant(t);
+            let xi = reduced_time_two_sided(&h, ta, lo, hi, 0.0, 1e6);
+            let closed = 1e6 * (-(e / GAS_CONSTANT) * (1.0 / t - 1.0 / ta)).exp();
+            assert!((xi / closed - 1.0).abs() < 1e-14, "{t}: {xi} vs {closed}");
+        }
+        // 353.15 → 393.15 K over 1000 s: crosses T_a at t* = 500 s
+        let ramp = TemperatureHistory::table(vec![(0.0, 353.15), (1000.0, 393.15)]);
+        let xi = reduced_time_two_sided(&ramp, ta, lo, hi, 0.0, 1000.0);
+        let split = reduced_time(&ramp, &one(lo), 0.0, 500.0)
+            + reduced_time(&ramp, &one(hi), 500.0, 1000.0);
+        assert!((xi / split - 1.0).abs() < 1e-12, "{xi} vs {split}");
+        let midpoint = |h: &TemperatureHistory, span: f64| {
+            let n = 1_000_000;
+            let dt = span / n as f64;
+            (0..n)
+                .map(|i| {
+                    let t = h.at((i as f64 + 0.5) * dt);
+                    let e = if t > ta { hi } else { lo };
+                    dt / one(e).factor(t)
+                })
+                .sum::<f64>()
+        };
+        assert!((xi / midpoint(&ramp, 1000.0) - 1.0).abs() < 1e-9);
+        // a single law over the same ramp differs: the split matters
+        let single = reduced_time(&ramp, &one(lo), 0.0, 1000.0);
+        assert!(xi / single > 1.05, "{xi} vs {single}");
+        // a daily cycle of ±20 K about T_a + 5 K
+        let cycle = TemperatureHistory::constant(ta + 5.0).with_cycle(Cycle {
+            amplitude: 20.0,
+            period: DAY,
+            phase: 0.0,
+        });
+        let day = reduced_time_two_sided(&cycle, ta, lo, hi, 0.0, DAY);
+        assert!((day / midpoint(&cycle, DAY) - 1.0).abs() < 1e-9);
+        // equal energies: the one-sided reduced time itself
+        assert_eq!(
+            reduced_time_two_sided(&ramp, ta, lo, lo, 0.0, 1000.0),
+            reduced_time(&ramp, &one(lo), 0.0, 1000.0)
+        );
     }
 
     #[test]

@@ -2,6 +2,12 @@
 
 use crate::surface::expm1_over_x;
 
+/// Two failure events within this fraction of their time count as simultaneous: the run
+/// reports the earlier time and the mode that comes first in the tie order (the damage first;
+/// docs/model.md §8). A thousandth is the precision a summary states a time with (three
+/// figures), far above the location's 1e-12, and far below any physical separation of causes.
+pub const SIMULTANEOUS_EVENTS: f64 = 1e-3;
+
 /// Which criterion ended the seal's life.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum FailureMode {
@@ -20,10 +26,13 @@ pub enum FailureMode {
     SealingForce,
     /// The installed contact pressure below an absolute minimum, or below m·ΔP (§8).
     ContactPressure,
+    /// The rubber colder than its low-temperature limit T10 by more than the margin of
+    /// practice (docs/model.md §8.3).
+    LowTemperature,
 }
 
 impl FailureMode {
-    pub const ALL: [FailureMode; 9] = [
+    pub const ALL: [FailureMode; 10] = [
         FailureMode::LeakRate,
         FailureMode::LeakedVolume,
         FailureMode::RetainedForce,
@@ -33,6 +42,7 @@ impl FailureMode {
         FailureMode::LostInterference,
         FailureMode::SealingForce,
         FailureMode::ContactPressure,
+        FailureMode::LowTemperature,
     ];
 
     /// The mode of its [`FailureMode::as_str`] name.
@@ -51,6 +61,7 @@ impl FailureMode {
             FailureMode::LostInterference => "lost_interference",
             FailureMode::SealingForce => "sealing_force",
             FailureMode::ContactPressure => "contact_pressure",
+            FailureMode::LowTemperature => "low_temperature",
         }
     }
 }
@@ -93,6 +104,9 @@ pub struct FailureCriteria {
     /// The shutdown check of an O-ring under displacement loading (§8.2): `None` when waived
     /// (`[failure] lost_interference = false`).
     pub shutdown: Option<Shutdown>,
+    /// The cold limit of practice (docs/model.md §8.3): `None` when waived
+    /// (`[failure] low_temperature = false`) or when the compound has no T10.
+    pub low_temperature: Option<ColdLimit>,
     /// End the run at the step that finds the failure (a study's cases: what follows a failure
     /// is not the life's); `false`: run the whole duration.
     pub stop_at_failure: bool,
@@ -106,6 +120,27 @@ pub struct Shutdown {
     pub temperature: f64,
     /// ΔP_min \[Pa\], the lowest pressure difference the seal must hold (default 0).
     pub pressure_difference: f64,
+    /// The time over which the ring cools from its service temperature to T_sd in the check's
+    /// glassy branch \[s\]: the cord's thermal settling time d²/a (docs/model.md §5.2, §8.2),
+    /// the fastest the ring can follow its surroundings, so the least relaxation on the way.
+    pub cooling_time: f64,
+}
+
+/// The low-temperature limit of practice (docs/model.md §8.3): the seal fails when the rubber
+/// is colder than `limit − margin`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ColdLimit {
+    /// The compound's T10 \[K\] ([`crate::material::Material::low_temperature_limit`]).
+    pub limit: f64,
+    /// How far below T10 the seal is still taken to hold \[K\] (≥ 0).
+    pub margin: f64,
+}
+
+impl ColdLimit {
+    /// The coldest temperature the seal holds at, `T10 − margin` \[K\].
+    pub fn threshold(&self) -> f64 {
+        self.limit - self.margin
+    }
 }
 
 /// What the criteria look at, at one instant.
@@ -131,11 +166,15 @@ pub struct EventInput {
     pub contact_mean: f64,
     /// The pressure difference ΔP \[Pa\].
     pub pressure_difference: f64,
+    /// The rubber's temperature \[K\].
+    pub temperature: f64,
 }
 
 impl FailureCriteria {
     /// No criterion that can end a life over time (the extrusion check, a property of the
-    /// gland at the service pressure and temperature, does not count).
+    /// gland at the service pressure and temperature, does not count; nor does the cold limit,
+    /// a property of the temperature history: [`crate::simulate::LifeProblem::can_fail`] counts
+    /// it where the history reaches it).
     pub fn is_empty(&self) -> bool {
         self.max_leak_rate.is_none()
             && self.max_leaked_volume.is_none()
@@ -148,11 +187,15 @@ impl FailureCriteria {
     }
 
     /// The criteria in the order a tie is broken (several crossed at once, e.g. at
-    /// installation): the damage first.
-    const MODES: [FailureMode; 9] = [
+    /// installation, or within [`SIMULTANEOUS_EVENTS`] of each other): the damage first — the
+    /// states the model computes (extrusion, an open seal, the shutdown), then the cold limit of
+    /// practice, which names the cause of a cold leak or force criterion crossed with it, then
+    /// those.
+    pub const MODES: [FailureMode; 10] = [
         FailureMode::Extrusion,
         FailureMode::LiftOff,
         FailureMode::LostInterference,
+        FailureMode::LowTemperature,
         FailureMode::LeakRate,
         FailureMode::LeakedVolume,
         FailureMode::ContactPressure,
@@ -160,6 +203,14 @@ impl FailureCriteria {
         FailureMode::RetainedForce,
         FailureMode::CompressionSet,
     ];
+
+    /// The rank of `mode` in the tie order [`Self::MODES`] (0 first).
+    pub fn precedence(&self, mode: FailureMode) -> usize {
+        Self::MODES
+            .iter()
+            .position(|&m| m == mode)
+            .unwrap_or(Self::MODES.len())
+    }
 
     /// Whether criterion `mode` (if set) has failed in state `x`.
     pub fn crossed(&self, mode: FailureMode, x: &EventInput) -> bool {
@@ -187,6 +238,9 @@ impl FailureCriteria {
                         .gasket_factor
                         .is_some_and(|m| x.contact_mean < m * x.pressure_difference)
             }
+            FailureMode::LowTemperature => self
+                .low_temperature
+                .is_some_and(|c| x.temperature < c.threshold()),
         }
     }
 
@@ -274,6 +328,7 @@ mod tests {
             contact_peak: 2e6,
             contact_mean: 1.5e6,
             pressure_difference: 5e5,
+            temperature: 296.15,
         };
         assert!(c.at_start(&ok).is_none());
         // the force below its floor; the peak below its floor; the mean below m·ΔP = 1e6 Pa
@@ -304,6 +359,71 @@ mod tests {
     }
 
     #[test]
+    fn the_cold_limit_is_a_strict_threshold_and_breaks_a_tie_after_the_open_states() {
+        let c = FailureCriteria {
+            max_leak_rate: Some(1.0),
+            lift_off: true,
+            low_temperature: Some(ColdLimit {
+                limit: 250.0,
+                margin: 5.0,
+            }),
+            ..Default::default()
+        };
+        assert_eq!(c.low_temperature.map(|l| l.threshold()), Some(245.0));
+        let warm = EventInput {
+            leak_rate: 0.0,
+            leaked_volume: 0.0,
+            retained_force: 1.0,
+            compression_set: 0.0,
+            lifted: false,
+            extruded: false,
+            lost_interference: false,
+            sealing_force: 1.0,
+            contact_peak: 1.0,
+            contact_mean: 1.0,
+            pressure_difference: 0.0,
+            temperature: 245.0,
+        };
+        // at the threshold it holds; a millikelvin colder it fails
+        assert!(!c.crossed(FailureMode::LowTemperature, &warm));
+        let cold = EventInput {
+            temperature: 244.999,
+            ..warm
+        };
+        assert_eq!(
+            c.newly_crossed(&warm, &cold),
+            vec![FailureMode::LowTemperature]
+        );
+        // crossed with a leak: the cold names the cause; with an open seal the state comes first
+        let leaking = EventInput {
+            leak_rate: 2.0,
+            ..cold
+        };
+        assert_eq!(
+            c.at_start(&leaking).map(|e| e.mode),
+            Some(FailureMode::LowTemperature)
+        );
+        let open = EventInput {
+            lifted: true,
+            ..leaking
+        };
+        assert_eq!(
+            c.at_start(&open).map(|e| e.mode),
+            Some(FailureMode::LiftOff)
+        );
+        // waived: nothing
+        let waived = FailureCriteria {
+            low_temperature: None,
+            ..c
+        };
+        assert!(!waived.crossed(FailureMode::LowTemperature, &cold));
+        assert_eq!(
+            FailureMode::from_name("low_temperature"),
+            Some(FailureMode::LowTemperature)
+        );
+    }
+
+    #[test]
     fn criteria() {
         let c = FailureCriteria {
             max_leak_rate: Some(1.0),
@@ -322,6 +442,7 @@ mod tests {
             contact_peak: 1.0,
             contact_mean: 1.0,
             pressure_difference: 0.0,
+            temperature: 296.15,
         };
         let bad = EventInput {
             leak_rate: 2.0,

@@ -41,10 +41,11 @@
 mod clogging;
 pub mod events;
 mod problem;
+mod stepping;
 
 pub use problem::{
-    AgeingSource, AsperityModulus, GrooveInterface, HistoryRow, LifeProblem, LifeResult, Loading,
-    SealState, TimeGrid,
+    AgeingSource, AsperityModulus, Course, GrooveInterface, HistoryRow, LevelBand, LifeProblem,
+    LifeResult, Loading, Outcome, SealState, TimeGrid,
 };
 
 use crate::contact::{ContactSettings, Elastic, Junction, PerssonContact};
@@ -54,12 +55,12 @@ use crate::fluid::Conduction;
 use crate::interface::{self, HertzContact, HertzMemo, InterfaceFlow, InterfaceSettings};
 use crate::leak::{ContactPath, FlatSeal};
 use crate::material::shift::reduced_time;
-use crate::material::{ChemicalStep, RelaxationState, Shift};
+use crate::material::{ChemicalStep, RelaxationState, TemperatureHistory};
 use crate::math::quadrature::gauss_legendre;
 use crate::seal::Profile;
 pub use crate::seal::ThermalStrain;
 use crate::validity::{self, At, ContactState, Findings};
-pub use events::{FailureCriteria, FailureEvent, FailureMode, Shutdown};
+pub use events::{ColdLimit, FailureCriteria, FailureEvent, FailureMode, Shutdown};
 
 /// ΔP over the contact pressure below which the fluid pressure inside the interface changes the
 /// leak by rounding only (the mean of σ over [P0 − ΔP, P0] is σ(P0) to ≈ 1e-16).
@@ -94,6 +95,16 @@ const MAX_STEP_LOG_SHIFT: f64 = 0.5;
 /// Largest temperature change within one internal step that crosses the WLF frozen limit
 /// (where a_T is infinite at one end) \[K\].
 const MAX_STEP_TEMPERATURE_FROZEN_EDGE: f64 = 1.0;
+/// Relative tolerance of the sealing stress in the error control of the mechanical update under
+/// a temperature-dependent squeeze ([`Simulator::advance_mechanics`]), as a multiple of the
+/// run's tolerance (1e-5 at the default): below it, since near a lift-off the time of the
+/// event is the stress's error over its rate of change (on the cold night of
+/// `scenarios/cold-night-nbr.toml` the leaked volume moves by 3e-5 relative from 1e-5 to 1e-8,
+/// by 3e-4 at 1e-4; without the control, at the 0.5-decade pieces of the thermal splitting,
+/// it was 10 % low).
+const MECHANICS_RTOL: f64 = 1e-1;
+/// Deepest halving of one mechanical piece.
+const MECHANICS_MAX_DEPTH: u32 = 40;
 /// Upper bound of the pieces one internal step is split into for the thermal strain.
 const MAX_THERMAL_PIECES: f64 = 10_000.0;
 
@@ -153,6 +164,13 @@ struct Snapshot {
     permeation_flow: f64,
 }
 
+/// The energisation factor of the restart check (docs/model.md §8.2): 0. A restart starts from
+/// ΔP = 0, so the ring must first seal on its squeeze alone before the pressure can push it
+/// against the groove flank — the criterion Green & English state, leakage once ΔP exceeds the
+/// *unenergised* peak contact stress (§6.3). With the service's k_e = 1 the check would ask
+/// only `p_sq > τ ΔP_min` and ignore ΔP_min.
+pub const RESTART_ENERGISATION: f64 = 0.0;
+
 /// The shutdown check of one state (docs/model.md §8.2; computed by `Simulator::shutdown`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ShutdownState {
@@ -160,7 +178,12 @@ pub struct ShutdownState {
     pub remaining_squeeze: f64,
     /// Its fully relaxed peak contact pressure there \[Pa\].
     pub peak_pressure: f64,
-    /// Whether it still closes the roughness and holds the minimum pressure difference.
+    /// Below the compound's T10: the peak contact pressure of the ring cooled to the shutdown
+    /// temperature through its hereditary response \[Pa\] (`Simulator::glassy_shutdown`;
+    /// `None` at or above T10).
+    pub glassy_peak_pressure: Option<f64>,
+    /// Whether it still closes the roughness and holds the minimum pressure difference (and,
+    /// below T10, still presses on the face once cooled).
     pub holds: bool,
 }
 
@@ -314,6 +337,9 @@ pub struct Simulator<'a> {
     groove: Option<(ContactPath, InterfaceSolver)>,
     /// `[motion]`: the motion and the table of I (built once; `None` for a static seal).
     drag: Option<(MotionSpec, DragTable)>,
+    /// The compound's T10 \[K\] (`None`: none), below which the shutdown check follows the
+    /// hereditary response ([`Self::glassy_shutdown`]).
+    low_temperature_limit: Option<f64>,
 }
 
 impl<'a> Simulator<'a> {
@@ -373,6 +399,7 @@ impl<'a> Simulator<'a> {
                 _ => None,
             },
             drag,
+            low_temperature_limit: problem.material.low_temperature_limit(),
         };
         simulator.reference_force = simulator.force_at_reference();
         simulator
@@ -401,7 +428,8 @@ impl<'a> Simulator<'a> {
         self.reference_force
     }
 
-    /// Runs the whole life.
+    /// Runs the whole life: internal steps chosen by the physics and the error control of
+    /// `simulate::stepping` (docs/model.md §10.1), the history sampled at the output times.
     pub fn run(&self) -> LifeResult {
         let p = self.problem;
         let mut findings = Findings::default();
@@ -412,45 +440,87 @@ impl<'a> Simulator<'a> {
         if let GrooveInterface::Own(groove) = &p.groove {
             validity::surface(groove, &mut findings);
         }
-        let mut state = self.installed();
-        let first = self.snapshot(&state);
-        self.assess(&state, &first, &mut findings);
-        let mut rows = vec![self.row(&state, &first)];
+        let installed = self.installed();
+        let first = self.snapshot(&installed);
+        self.assess(&installed, &first, &mut findings);
+        let mut rows = vec![self.row(&installed, &first)];
+        let mut course = Course::start(&first, self.contact_peak(&first.profile));
         let mut failure = p
             .failure
             .at_start(&first.as_event_input(0.0, p.fluid.pressure_difference));
-        let mut last = first;
-
         let outputs = p.time.times();
+        let mut next_output = 1;
         let stop = p.failure.stop_at_failure;
-        'grid: for &target in &outputs[1..] {
+        let stepper = stepping::Stepper::new(self);
+        let base = self.base_steps();
+        let mut at = stepping::Point {
+            state: installed,
+            snap: first,
+        };
+        'run: for ends in base.chunks(2) {
             if stop && failure.is_some() {
                 break;
             }
-            for t in self.substeps(state.time, target) {
-                let before = state.clone();
-                let before_snap = last;
-                let snap = self.advance(&mut state, t, &before_snap);
-                self.assess(&state, &snap, &mut findings);
+            for to in stepper.window(&at, ends) {
+                self.assess(&to.state, &to.snap, &mut findings);
+                course.record(&at, &to, self.contact_peak(&to.snap.profile));
                 if failure.is_none() {
-                    failure = self.locate_failure(&before, &before_snap, &state, &snap);
+                    failure = self.locate_failure(&at.state, &at.snap, &to.state, &to.snap);
                 }
-                last = snap;
-                if stop && failure.is_some() {
+                // the history rows up to this step: sampled on copies, the run goes on from `to`
+                while let Some(&t) = outputs.get(next_output) {
+                    if t > to.state.time {
+                        break;
+                    }
+                    if t == to.state.time {
+                        rows.push(self.row(&to.state, &to.snap));
+                    } else {
+                        let mut sample = at.state.clone();
+                        let snap = self.advance(&mut sample, t, &at.snap);
+                        rows.push(self.row(&sample, &snap));
+                    }
+                    next_output += 1;
+                }
+                let done = stop && failure.is_some();
+                if done && rows.last().is_none_or(|r| r.time < to.state.time) {
                     // the run ends on the step that found the failure
-                    rows.push(self.row(&state, &last));
-                    break 'grid;
+                    rows.push(self.row(&to.state, &to.snap));
+                }
+                at = to;
+                if done {
+                    break 'run;
                 }
             }
-            rows.push(self.row(&state, &last));
         }
+        course.evaluations += stepper.evaluations.get();
         LifeResult {
             rows,
+            band: None,
+            course,
             failure,
             findings,
             reference_force: self.reference_force,
             continuum_leak_rate: self.continuum_leak_rate(),
+            permeation_status: self.problem.permeation.as_ref().map(|p| p.data.status),
         }
+    }
+
+    /// The base internal steps in (0, duration] (docs/model.md §10.1): log-uniform at
+    /// [`stepping::BASE_POINTS_PER_DECADE`] from min(start, 1 s), with the knots and cycle
+    /// sub-steps of the temperature history and the thermal splitting ([`Self::substeps`]) —
+    /// independent of the output grid.
+    fn base_steps(&self) -> Vec<f64> {
+        let grid = TimeGrid {
+            start: self.problem.time.start.min(stepping::BASE_START),
+            points_per_decade: stepping::BASE_POINTS_PER_DECADE,
+            ..self.problem.time
+        };
+        let times = grid.times();
+        let mut out = Vec::with_capacity(times.len());
+        for w in times.windows(2) {
+            out.extend(self.substeps(w[0], w[1]));
+        }
+        out
     }
 
     /// A rarefied gas: the installation's leak rate under the continuum law, on the same
@@ -564,11 +634,16 @@ impl<'a> Simulator<'a> {
     /// pressure at its minimum ΔP_min. Its remaining squeeze is the squeeze at T_sd beyond the
     /// set, over the recovered cord, `ε_r = (ε(T_sd) − s)/(1 − s)` (s = y/c, the networks' set
     /// strain); its contact pressure the fully relaxed one, `f = c E∞ d (1 − s) g(ε_r)` over
-    /// Lindley's width (the long-term modulus: a shutdown lasts, and it is the least force). The
+    /// Lindley's width (the long-term modulus: the least force of a ring that stays rubbery). The
     /// ring has lost its interference when `(ε(T_sd) − s) d` is no more than the counterface's rms
     /// roughness (it no longer closes the roughness it seals on), or, with ΔP_min > 0, when the
-    /// squeeze cannot hold ΔP_min at a restart ([`crate::leak::opening`]). `None` when the check
-    /// does not apply (a flat seal, force loading, or `[failure] lost_interference = false`).
+    /// squeeze cannot hold ΔP_min at a restart: a restart starts from ΔP = 0, so the ring must
+    /// seal on its unenergised squeeze, `p_sq > ΔP_min` ([`crate::leak::opening`] with
+    /// [`RESTART_ENERGISATION`] = 0, Green & English's criterion, §6.3), whatever the service's
+    /// k_e. Below the compound's T10 the ring is glassy on the time scale of a shutdown and the
+    /// relaxed force is not the least one: the check must also hold for the ring cooled through
+    /// its hereditary response ([`Self::glassy_shutdown`]). `None` when the check does not apply
+    /// (a flat seal, force loading, or `[failure] lost_interference = false`).
     fn shutdown(&self, state: &Mechanics) -> Option<ShutdownState> {
         let p = self.problem;
         let shutdown = p.failure.shutdown?;
@@ -591,18 +666,79 @@ impl<'a> Simulator<'a> {
             crate::seal::oring_contact_width(cord, remaining).max(f64::MIN_POSITIVE),
         );
         let touches = interference > p.spectrum.rms_roughness();
-        let holds = touches
-            && crate::leak::opening(
-                profile.peak(),
-                p.energisation_factor,
-                shutdown.pressure_difference,
-            )
-            .is_none();
+        let restarts = |peak: f64| {
+            crate::leak::opening(peak, RESTART_ENERGISATION, shutdown.pressure_difference).is_none()
+        };
+        let glassy_peak = self.glassy_shutdown(state, &shutdown);
+        // the glassy ring must still press on the face (a force, not a rounding) and restart
+        let glassy_holds = glassy_peak.is_none_or(|peak| peak > 0.0 && restarts(peak));
         Some(ShutdownState {
             remaining_squeeze: remaining,
             peak_pressure: profile.peak(),
-            holds,
+            glassy_peak_pressure: glassy_peak,
+            holds: touches && restarts(profile.peak()) && glassy_holds,
         })
+    }
+
+    /// The glassy branch of the shutdown check (docs/model.md §8.2): below the compound's T10
+    /// (`Shutdown::temperature` < [`crate::material::Material::low_temperature_limit`]) the ring
+    /// cooled from the state's temperature T(t) to T_sd does not relax to E∞ within a shutdown —
+    /// the contraction is unloaded with the stiff modulus the cold gives it, and that stress is
+    /// frozen in. So the state's hereditary stress is carried through a linear cool-down from
+    /// T(t) to T_sd over `Shutdown::cooling_time` (the cord's thermal settling time d²/a: the
+    /// fastest the ring follows its surroundings, the least relaxation on the way) by the exact
+    /// Prony update the run uses, split as the run splits a thermal step (a_T by at most half a
+    /// decade, T by at most 10 K a piece), with the squeeze the thermal strain gives. Returns the
+    /// peak contact pressure of the Hertz profile at the end \[Pa\] (0 when the ring has come
+    /// off the face: a tensile stress is no contact); `None` at or above T10, where the rubber
+    /// relaxes within the shutdown and the relaxed check is the least force. The chemical
+    /// ageing over the cool-down (minutes) is left out.
+    fn glassy_shutdown(&self, state: &Mechanics, shutdown: &Shutdown) -> Option<f64> {
+        let p = self.problem;
+        let limit = self.low_temperature_limit?;
+        if shutdown.temperature >= limit {
+            return None;
+        }
+        let shift = &p.material.shift;
+        let prony = &p.material.prony;
+        let thermal = p.thermal_strain.as_ref();
+        let from = p.environment.at(state.time);
+        let to = shutdown.temperature;
+        let mut relaxation = state.relaxation.clone();
+        let duration = shutdown.cooling_time;
+        if duration > 0.0 {
+            let ramp = TemperatureHistory::table(vec![(0.0, from), (duration, to)]);
+            // a_T is monotone in T along the ramp: its ends bound its change
+            let (la, lb) = (shift.log10_factor(from), shift.log10_factor(to));
+            let swing = (to - from).abs();
+            let by_shift = match (la.is_finite(), lb.is_finite()) {
+                (true, true) => (lb - la).abs() / MAX_STEP_LOG_SHIFT,
+                (true, false) | (false, true) => swing / MAX_STEP_TEMPERATURE_FROZEN_EDGE,
+                (false, false) => 0.0,
+            };
+            let pieces = (swing / MAX_STEP_TEMPERATURE)
+                .max(by_shift)
+                .ceil()
+                .clamp(1.0, MAX_THERMAL_PIECES);
+            let n = pieces as usize;
+            for k in 1..=n {
+                let (a, b) = (
+                    duration * (k - 1) as f64 / pieces,
+                    duration * k as f64 / pieces,
+                );
+                let d_xi = reduced_time(&ramp, shift, a, b);
+                let d_load = p.geometry.load_variable(thermal, ramp.at(b)) - relaxation.strain();
+                relaxation.step(prony, d_xi, d_load);
+            }
+        } else {
+            // cooled at once: the glassy jump
+            let d_load = p.geometry.load_variable(thermal, to) - relaxation.strain();
+            relaxation.step(prony, 0.0, d_load);
+        }
+        let profile =
+            p.geometry
+                .profile(relaxation.stress(prony), p.installed_modulus(), thermal, to);
+        Some(profile.peak())
     }
 
     /// The leak through `profile` with the fluid pressure inside the interface (docs/model.md
@@ -888,9 +1024,61 @@ impl<'a> Simulator<'a> {
         out
     }
 
-    /// Advances the hereditary states from `state.time` to `t` (exact for strain linear in ξ
-    /// over the step, and at constant strain for the chemical ageing); leaves `state.time`.
+    /// Advances the hereditary states from `state.time` to `t`; leaves `state.time`. The update
+    /// of [`Self::update_mechanics`] is exact for a load linear in ξ; a temperature-dependent
+    /// squeeze (thermal strain under displacement loading) is linear in *time* on a ramp, so
+    /// there the step is split with an error control (step doubling on the sealing stress to
+    /// [`MECHANICS_RTOL`] × tolerance; the update is second order in the piece, so halving a piece quarters
+    /// its error) until the load is as good as linear in ξ within each piece — the mechanics,
+    /// hence the force, the contact pressure and any lift-off they decide, do not depend on the
+    /// time steps (docs/model.md §10.1).
     fn advance_mechanics(&self, state: &mut Mechanics, t: f64) {
+        let p = self.problem;
+        if p.thermal_strain.is_none()
+            || p.loading != Loading::Displacement
+            || p.environment.is_constant()
+            || t <= state.time
+        {
+            return self.update_mechanics(state, t);
+        }
+        let floor = 1e-9 * p.material.prony.instantaneous() * self.load0.abs();
+        self.advance_mechanics_controlled(state, t, floor, 0);
+    }
+
+    /// [`Self::advance_mechanics`]'s error control on one piece `state.time → t`.
+    fn advance_mechanics_controlled(&self, state: &mut Mechanics, t: f64, floor: f64, depth: u32) {
+        let prony = &self.problem.material.prony;
+        let a = state.time;
+        let m = 0.5 * (a + t);
+        let mut one = state.clone();
+        self.update_mechanics(&mut one, t);
+        one.time = t;
+        let mut two = state.clone();
+        self.update_mechanics(&mut two, m);
+        two.time = m;
+        self.update_mechanics(&mut two, t);
+        two.time = t;
+        let (s1, s2) = (one.relaxation.stress(prony), two.relaxation.stress(prony));
+        if depth >= MECHANICS_MAX_DEPTH
+            || !(m > a && m < t)
+            || (s1 - s2).abs() <= MECHANICS_RTOL * self.problem.time.tolerance * (s2.abs() + floor)
+        {
+            let time = state.time;
+            *state = two;
+            state.time = time;
+            return;
+        }
+        let time = state.time;
+        self.advance_mechanics_controlled(state, m, floor, depth + 1);
+        state.time = m;
+        self.advance_mechanics_controlled(state, t, floor, depth + 1);
+        state.time = time;
+    }
+
+    /// One exact update of the hereditary states from `state.time` to `t` (exact for strain
+    /// linear in ξ over the step, and at constant strain for the chemical ageing); leaves
+    /// `state.time`.
+    fn update_mechanics(&self, state: &mut Mechanics, t: f64) {
         let p = self.problem;
         let prony = &p.material.prony;
         let (a, b) = (state.time, t);
@@ -904,16 +1092,10 @@ impl<'a> Simulator<'a> {
             Loading::Force => 0.0,
         };
         let chem = match &p.ageing {
-            Some(ag) => {
-                let arrhenius = Shift::Arrhenius {
-                    reference: ag.reference_temperature,
-                    activation_energy: ag.activation_energy,
-                };
-                ChemicalStep {
-                    scission: ag.rate * reduced_time(&p.environment, &arrhenius, a, b),
-                    crosslinking: ag.crosslinking,
-                }
-            }
+            Some(ag) => ChemicalStep {
+                scission: ag.scission(&p.environment, a, b),
+                crosslinking: ag.crosslinking,
+            },
             None => ChemicalStep {
                 scission: 0.0,
                 crosslinking: 0.0,
@@ -991,7 +1173,7 @@ impl<'a> Simulator<'a> {
     fn open_snapshot_at(&self, state: &Mechanics, t: f64) -> Snapshot {
         let p = self.problem;
         let temperature = p.environment.at(t);
-        let permeation = p.permeation.map(|s| s.throughput(t, temperature));
+        let permeation = p.permeation.as_ref().map(|s| s.throughput(t, temperature));
         let permeation_flow = match (permeation, p.fluid.mean_pressure()) {
             (Some(q), Some(mean)) if mean > 0.0 => q / mean,
             _ => 0.0,
@@ -1178,7 +1360,13 @@ impl<'a> Simulator<'a> {
     }
 
     /// The earliest criterion crossed between two steps, each located by bisection on the
-    /// exact state update to 1e-12 relative in time.
+    /// exact state update to 1e-12 relative in time. Criteria crossed within
+    /// [`events::SIMULTANEOUS_EVENTS`] of that time (relative; looked for on the state advanced
+    /// that far, which may lie beyond `after`) count as simultaneous: the event keeps the
+    /// earliest time and takes the mode that comes first in the tie order
+    /// ([`FailureCriteria::MODES`]: the damage first) — so that a leak rate that crosses its limit
+    /// seconds before the lift-off that causes it is reported as the lift-off, at every fidelity
+    /// and time step (docs/model.md §8).
     fn locate_failure(
         &self,
         before: &Mechanics,
@@ -1188,11 +1376,10 @@ impl<'a> Simulator<'a> {
     ) -> Option<FailureEvent> {
         let criteria = &self.problem.failure;
         let dp = self.problem.fluid.pressure_difference;
-        let modes = criteria.newly_crossed(
-            &before_snap.as_event_input(before.leaked_volume, dp),
-            &after_snap.as_event_input(after.leaked_volume, dp),
-        );
-        modes
+        let start = before_snap.as_event_input(before.leaked_volume, dp);
+        let modes =
+            criteria.newly_crossed(&start, &after_snap.as_event_input(after.leaked_volume, dp));
+        let earliest = modes
             .into_iter()
             .map(|mode| {
                 let (mut lo, mut hi) = (before.time, after.time);
@@ -1200,16 +1387,10 @@ impl<'a> Simulator<'a> {
                     if hi - lo <= 1e-12 * hi {
                         break;
                     }
-                    let geometric = if lo > 0.0 {
-                        (lo * hi).sqrt()
-                    } else {
-                        0.5 * (lo + hi)
-                    };
-                    let mid = if geometric > lo && geometric < hi {
-                        geometric
-                    } else {
-                        0.5 * (lo + hi)
-                    };
+                    let mid = stepping::midpoint(lo, hi);
+                    if !(mid > lo && mid < hi) {
+                        break;
+                    }
                     let mut trial = before.clone();
                     let snap = self.advance(&mut trial, mid, before_snap);
                     if criteria.crossed(mode, &snap.as_event_input(trial.leaked_volume, dp)) {
@@ -1220,7 +1401,21 @@ impl<'a> Simulator<'a> {
                 }
                 FailureEvent { time: hi, mode }
             })
-            .min_by(|a, b| a.time.total_cmp(&b.time))
+            .min_by(|a, b| a.time.total_cmp(&b.time))?;
+        let window =
+            (earliest.time * (1.0 + events::SIMULTANEOUS_EVENTS)).min(self.problem.time.duration);
+        let mut trial = before.clone();
+        let snap = self.advance(&mut trial, window, before_snap);
+        let mode = criteria
+            .newly_crossed(&start, &snap.as_event_input(trial.leaked_volume, dp))
+            .into_iter()
+            .chain(std::iter::once(earliest.mode))
+            .min_by_key(|&m| criteria.precedence(m))
+            .unwrap_or(earliest.mode);
+        Some(FailureEvent {
+            time: earliest.time,
+            mode,
+        })
     }
 
     /// Records the validity findings of one step (docs/model.md §9): the rubber's
@@ -1292,7 +1487,26 @@ impl Snapshot {
             contact_peak: self.profile.peak(),
             contact_mean: self.profile.mean(),
             pressure_difference,
+            temperature: self.temperature,
         }
+    }
+}
+
+impl LifeProblem {
+    /// When the rubber first went colder than the cold limit (docs/model.md §8.3) \[s\]: the
+    /// located failure time when `low_temperature` is `result`'s failure, else the first time
+    /// the temperature history goes below `T10 − margin` within the run (`None`: never, or
+    /// no cold limit).
+    pub fn cold_limit_crossed(&self, result: &LifeResult) -> Option<f64> {
+        let limit = self.failure.low_temperature?;
+        result
+            .failure
+            .filter(|f| f.mode == FailureMode::LowTemperature)
+            .map(|f| f.time)
+            .or_else(|| {
+                self.environment
+                    .first_below(limit.threshold(), 0.0, self.time.duration)
+            })
     }
 }
 

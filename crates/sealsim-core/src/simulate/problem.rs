@@ -96,11 +96,19 @@ pub struct TimeGrid {
     pub start: f64,
     /// Last time \[s\] (> start).
     pub duration: f64,
-    /// Log-uniform points per decade.
+    /// Log-uniform output points per decade (the history's rows; the internal steps do not
+    /// depend on it, docs/model.md §10.1).
     pub points_per_decade: f64,
+    /// Relative tolerance of the integrated quantities — the leaked volume, the located state
+    /// changes and extremes — of the internal steps' error control (docs/model.md §10.1;
+    /// `[simulation] tolerance`, default [`TimeGrid::DEFAULT_TOLERANCE`]).
+    pub tolerance: f64,
 }
 
 impl TimeGrid {
+    /// Default relative tolerance of the integrated quantities (`[simulation] tolerance`).
+    pub const DEFAULT_TOLERANCE: f64 = 1e-3;
+
     /// 0, then `start · 10^{k/n}` up to `duration` (which is always the last point).
     pub fn times(&self) -> Vec<f64> {
         let mut t = vec![0.0];
@@ -239,11 +247,16 @@ impl LifeProblem {
     }
 
     /// Whether any criterion can end the life: one of `[failure]`'s, the extrusion check of a
-    /// groove-seated ring, or the shutdown check of an O-ring under displacement loading.
+    /// groove-seated ring, the shutdown check of an O-ring under displacement loading, or the
+    /// cold limit where the temperature history can reach below it.
     pub fn can_fail(&self) -> bool {
         !self.failure.is_empty()
             || (self.failure.extrusion && self.gland.is_some())
             || self.has_shutdown_check()
+            || self
+                .failure
+                .low_temperature
+                .is_some_and(|c| self.environment.range().0 < c.threshold())
     }
 
     /// Whether the shutdown check applies (docs/model.md §8.2): an O-ring under displacement
@@ -341,7 +354,15 @@ impl HistoryRow {
 /// The result of a life run.
 #[derive(Debug, Clone, PartialEq)]
 pub struct LifeResult {
+    /// The history at the output times (samples of the run; `points_per_decade`).
     pub rows: Vec<HistoryRow>,
+    /// The same problem at the neighbouring fidelity level ([`Fidelity::neighbour`]), where the
+    /// caller ran it (`sealsim run` and `compare` do; a study's cases do not): how far the
+    /// model's own uncertainty moves the result (docs/model.md §4.1).
+    pub band: Option<LevelBand>,
+    /// What the internal steps found (states with their located times, extremes, the leaked
+    /// volume): independent of the output grid (docs/model.md §10.1).
+    pub course: Course,
     pub failure: Option<FailureEvent>,
     /// The validity limits crossed during the run, each once with its worst value and when
     /// (docs/model.md §9.11).
@@ -351,6 +372,145 @@ pub struct LifeResult {
     /// A rarefied gas: the leak rate at installation \[m³/s\] the continuum law would give
     /// instead (docs/model.md §3.10), to show what rarefaction changes; `None` otherwise.
     pub continuum_leak_rate: Option<f64>,
+    /// A gas: how the permeation figure was obtained (sourced, derived, a stated NOT SOURCED
+    /// bound, the user's), which every output states beside the permeation (docs/model.md
+    /// §13.4); `None` without permeation.
+    pub permeation_status: Option<crate::permeation::DataStatus>,
+}
+
+/// A life run's outcome, as its verdict names it (docs/model.md §8.1).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Outcome {
+    /// A failure criterion was crossed.
+    Fails,
+    /// No criterion crossed, but the seal was open (a waived lift-off) or held by the fluid
+    /// pressure alone at some time.
+    Open,
+    /// No criterion crossed, and the seal held by its squeeze throughout.
+    Survives,
+}
+
+/// The same life at the neighbouring fidelity level (docs/model.md §4.1): the figures a summary
+/// sets beside its own, and the outcome that decides whether the model decides the verdict.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LevelBand {
+    /// The neighbouring level.
+    pub level: Fidelity,
+    pub failure: Option<FailureEvent>,
+    /// When the seal was first open there \[s\].
+    pub open_since: Option<f64>,
+    /// Its leaked volume \[m³\], and whether that is a lower bound.
+    pub leaked_volume: f64,
+    pub leaked_volume_is_lower_bound: bool,
+    /// Its highest leak rate \[m³/s\].
+    pub maximum_leak_rate: f64,
+    pub final_state: SealState,
+}
+
+impl LevelBand {
+    /// The band of `result`, a run of the same problem at `level`.
+    pub fn of(level: Fidelity, result: &LifeResult) -> Self {
+        LevelBand {
+            level,
+            failure: result.failure,
+            open_since: result.open_since(),
+            leaked_volume: result.leaked_volume(),
+            leaked_volume_is_lower_bound: result.leaked_volume_is_lower_bound(),
+            maximum_leak_rate: result.course.max_leak_rate.0,
+            final_state: result.final_state(),
+        }
+    }
+
+    /// The outcome at the neighbouring level.
+    pub fn outcome(&self) -> Outcome {
+        outcome(self.failure, self.open_since)
+    }
+}
+
+fn outcome(failure: Option<FailureEvent>, open_since: Option<f64>) -> Outcome {
+    match (failure, open_since) {
+        (Some(_), _) => Outcome::Fails,
+        (None, Some(_)) => Outcome::Open,
+        (None, None) => Outcome::Survives,
+    }
+}
+
+/// The course of a life run over its internal steps (docs/model.md §10.1): what the summary
+/// states, independent of the output grid.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Course {
+    /// Each state the run passed through, with the time it began \[s\] (located by bisection to
+    /// a relative 1e-6; a state may come back: each return is listed).
+    pub states: Vec<(SealState, f64)>,
+    /// The highest leak rate \[m³/s\] and when \[s\] (the first, on a tie).
+    pub max_leak_rate: (f64, f64),
+    /// The lowest sealing force per unit length \[N/m\] and when \[s\].
+    pub min_force: (f64, f64),
+    /// The lowest peak contact pressure with the energisation \[Pa\] and when \[s\].
+    pub min_peak_pressure: (f64, f64),
+    /// The leaked volume at the end of the run \[m³\].
+    pub leaked_volume: f64,
+    /// The part of it that flowed while the seal was lifted off, where the model gives only a
+    /// lower bound (§3.6) \[m³\].
+    pub lifted_volume: f64,
+    /// How long the seal was lifted off \[s\].
+    pub lifted_duration: f64,
+    /// Whether the seal was ever lifted off (whatever the bound of its flow, 0 included).
+    pub ever_lifted: bool,
+    /// The first internal time at which the shutdown check found the interference lost \[s\].
+    pub interference_lost: Option<f64>,
+    /// Internal steps accepted.
+    pub steps: usize,
+    /// Evaluations of the state (accepted, rejected and bisection steps; the history rows
+    /// between internal steps not counted).
+    pub evaluations: usize,
+}
+
+impl Course {
+    /// The course a history shows at its own rows (for results built by hand, e.g. in tests of
+    /// the reports): states at the rows they first hold at, extremes over the rows.
+    pub fn from_rows(rows: &[HistoryRow]) -> Self {
+        let mut course = Course {
+            states: Vec::new(),
+            max_leak_rate: (0.0, 0.0),
+            min_force: (f64::INFINITY, 0.0),
+            min_peak_pressure: (f64::INFINITY, 0.0),
+            leaked_volume: rows.last().map_or(0.0, |r| r.leaked_volume),
+            lifted_volume: 0.0,
+            lifted_duration: 0.0,
+            ever_lifted: false,
+            interference_lost: None,
+            steps: rows.len().saturating_sub(1),
+            evaluations: rows.len(),
+        };
+        let mut previous: Option<&HistoryRow> = None;
+        for r in rows {
+            if course.states.last().is_none_or(|&(s, _)| s != r.state) {
+                course.states.push((r.state, r.time));
+            }
+            if r.leak_rate > course.max_leak_rate.0 {
+                course.max_leak_rate = (r.leak_rate, r.time);
+            }
+            if r.sealing_force < course.min_force.0 {
+                course.min_force = (r.sealing_force, r.time);
+            }
+            if r.peak_pressure < course.min_peak_pressure.0 {
+                course.min_peak_pressure = (r.peak_pressure, r.time);
+            }
+            if r.state == SealState::LiftOff {
+                course.ever_lifted = true;
+                if let Some(p) = previous {
+                    course.lifted_volume += r.leaked_volume - p.leaked_volume;
+                    course.lifted_duration += r.time - p.time;
+                }
+            }
+            if course.interference_lost.is_none() && r.shutdown.is_some_and(|s| !s.holds) {
+                course.interference_lost = Some(r.time);
+            }
+            previous = Some(r);
+        }
+        course
+    }
 }
 
 impl LifeResult {
@@ -362,8 +522,10 @@ impl LifeResult {
         self.rows.last().map_or(0.0, |r| r.leak_rate)
     }
 
+    /// The leaked volume at the end of the run \[m³\] (the internal steps', whatever the output
+    /// grid).
     pub fn leaked_volume(&self) -> f64 {
-        self.rows.last().map_or(0.0, |r| r.leaked_volume)
+        self.course.leaked_volume
     }
 
     /// The state at the end of the run.
@@ -371,69 +533,64 @@ impl LifeResult {
         self.rows.last().map_or(SealState::Sealed, |r| r.state)
     }
 
-    /// The states in the order the run passed through them, each with the first output time
-    /// at which it held \[s\] (a state may come back: each return is listed).
+    /// The run's outcome (docs/model.md §8.1).
+    pub fn outcome(&self) -> Outcome {
+        outcome(self.failure, self.open_since())
+    }
+
+    /// Whether the model does not decide the verdict: the neighbouring fidelity level gives
+    /// another outcome (docs/model.md §4.1). `false` where the band was not computed.
+    pub fn undecided(&self) -> bool {
+        self.band
+            .as_ref()
+            .is_some_and(|b| b.outcome() != self.outcome())
+    }
+
+    /// The states in the order the run passed through them, each with the time it began \[s\],
+    /// located on the internal steps (a state may come back: each return is listed).
     pub fn state_changes(&self) -> Vec<(SealState, f64)> {
-        let mut out: Vec<(SealState, f64)> = Vec::new();
-        for r in &self.rows {
-            if out.last().is_none_or(|&(s, _)| s != r.state) {
-                out.push((r.state, r.time));
-            }
-        }
-        out
+        self.course.states.clone()
     }
 
-    /// The first output time at which the seal was open ([`SealState::is_open`]) \[s\].
+    /// When the seal was first open ([`SealState::is_open`]) \[s\] (located).
     pub fn open_since(&self) -> Option<f64> {
-        self.rows.iter().find(|r| r.state.is_open()).map(|r| r.time)
+        self.course
+            .states
+            .iter()
+            .find(|(s, _)| s.is_open())
+            .map(|&(_, t)| t)
     }
 
-    /// Whether the leaked volume is a lower bound: it includes the flow while lifted off, for
-    /// which the model gives only a lower bound (docs/model.md §8.1).
+    /// Whether the leaked volume is a lower bound: the seal was lifted off at some time, where
+    /// the model gives only a lower bound of the flow (docs/model.md §8.1) — also when that
+    /// bound is 0.
     pub fn leaked_volume_is_lower_bound(&self) -> bool {
-        self.rows
-            .windows(2)
-            .any(|w| w[1].state == SealState::LiftOff && w[1].leaked_volume > w[0].leaked_volume)
+        self.course.ever_lifted
     }
 
     /// When the shutdown check found the interference lost \[s\]: the located failure time when
-    /// it is the run's failure, else the first output time at which it did (`None`: held).
+    /// it is the run's failure, else the first internal time at which it did (`None`: held).
     pub fn interference_lost(&self) -> Option<f64> {
         self.failure
             .filter(|f| f.mode == super::FailureMode::LostInterference)
             .map(|f| f.time)
-            .or_else(|| {
-                self.rows
-                    .iter()
-                    .find(|r| r.shutdown.is_some_and(|s| !s.holds))
-                    .map(|r| r.time)
-            })
-    }
-
-    /// The row where `key` is least (the first, on a tie).
-    fn least_by(&self, key: impl Fn(&HistoryRow) -> f64) -> Option<&HistoryRow> {
-        self.rows
-            .iter()
-            .reduce(|best, r| if key(r) < key(best) { r } else { best })
+            .or(self.course.interference_lost)
     }
 
     /// The lowest sealing force per length over the run \[N/m\] and when \[s\].
     pub fn minimum_force(&self) -> Option<(f64, f64)> {
-        self.least_by(|r| r.sealing_force)
-            .map(|r| (r.sealing_force, r.time))
+        Some(self.course.min_force)
     }
 
     /// The lowest peak contact pressure over the run (with the energisation) \[Pa\] and when
     /// \[s\].
     pub fn minimum_peak_pressure(&self) -> Option<(f64, f64)> {
-        self.least_by(|r| r.peak_pressure)
-            .map(|r| (r.peak_pressure, r.time))
+        Some(self.course.min_peak_pressure)
     }
 
     /// The highest leak rate over the run \[m³/s\] and when \[s\] (the first, on a tie).
     pub fn maximum_leak_rate(&self) -> Option<(f64, f64)> {
-        self.least_by(|r| -r.leak_rate)
-            .map(|r| (r.leak_rate, r.time))
+        Some(self.course.max_leak_rate)
     }
 
     /// Open fraction of the critical channels at the end of the run (1 when clean).

@@ -45,6 +45,10 @@ pub struct CaseOutcome {
     pub invalid: Option<String>,
 }
 
+/// The `warnings` entry of a gas case whose permeation through the rubber is a NOT SOURCED
+/// bound rather than a figure of its compound's class (docs/model.md §13.4).
+pub const PERMEATION_BOUND: &str = "permeation_not_sourced_bound";
+
 impl CaseOutcome {
     /// The outcome of case `index` with `inputs` from its life run, its leak rates taken at
     /// `report_times` \[s\].
@@ -61,6 +65,10 @@ impl CaseOutcome {
             .iter()
             .map(|f| f.limit.id().to_owned())
             .collect();
+        // a gas case whose permeation figure is a stated bound says so (docs/model.md §13.4)
+        if result.permeation_status == Some(crate::permeation::DataStatus::Bound) {
+            warnings.push(PERMEATION_BOUND.to_owned());
+        }
         warnings.sort();
         warnings.dedup();
         CaseOutcome {
@@ -107,5 +115,38 @@ impl CaseOutcome {
     /// Whether the case failed within its run, or is invalid (failed at installation).
     pub fn failed(&self) -> bool {
         self.mode.is_some() || self.invalid.is_some()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::permeation::DataStatus;
+
+    fn result(permeation_status: Option<DataStatus>) -> LifeResult {
+        LifeResult {
+            rows: Vec::new(),
+            failure: None,
+            findings: Default::default(),
+            reference_force: 0.0,
+            continuum_leak_rate: None,
+            permeation_status,
+        }
+    }
+
+    /// A gas case run on a NOT SOURCED bound says so in its warnings (and so in the study's
+    /// per-case table and summary); a sourced figure, a user's, or a liquid says nothing.
+    #[test]
+    fn a_case_on_a_permeation_bound_says_so() {
+        let warnings = |s| CaseOutcome::new(0, Vec::new(), &result(s), &[]).warnings;
+        assert_eq!(warnings(Some(DataStatus::Bound)), [PERMEATION_BOUND]);
+        for s in [
+            None,
+            Some(DataStatus::Published),
+            Some(DataStatus::Illustrative),
+            Some(DataStatus::User),
+        ] {
+            assert!(warnings(s).is_empty(), "{s:?}");
+        }
     }
 }
