@@ -34,6 +34,8 @@
 //! ([`cake_resistance_in_wedge`]). This module holds the validated inputs, the size
 //! distributions and these closed forms; the time integration lives in the life loop
 //! (`simulate`, which uses this module).
+// `!(x > 0.0)` is meant: it also rejects NaN
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use std::f64::consts::PI;
 

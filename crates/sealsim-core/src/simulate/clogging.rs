@@ -2,6 +2,8 @@
 //! on its way to the critical one and its survival to it (straining) or the reach (sieving), the
 //! entry gap of a snapshot, the open fraction, the detours and the entry cake applied to a
 //! snapshot, and the integration of the arrivals over one internal step.
+// `!(x > 0.0)` is meant: it also rejects NaN
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use std::cell::RefCell;
 use std::collections::HashMap;
@@ -333,9 +335,7 @@ impl Simulator<'_> {
             .contamination
             .as_ref()
             .is_some_and(|c| c.reroute);
-        let (scale, drag_scale) = if f >= 1.0 {
-            (1.0, 1.0)
-        } else if reroute && 1.0 - f <= NEGLIGIBLE_BLOCKED_SHARE {
+        let (scale, drag_scale) = if f >= 1.0 || (reroute && 1.0 - f <= NEGLIGIBLE_BLOCKED_SHARE) {
             (1.0, 1.0)
         } else if reroute {
             let (r, _) = self.reroute_ratio(snap.peak_reduced_pressure, f);
