@@ -23,7 +23,7 @@ use std::path::PathBuf;
     after_help = "History columns (CSV, SI units): time_s, temperature_K, reduced_time_s, \
     shift_factor (blank when frozen), sealing_force_N_per_m, peak_pressure_Pa, mean_pressure_Pa, \
     contact_width_m, u_c_m (blank when sealed at the peak), leak_rate_m3_per_s, \
-    leaked_volume_m3, state (sealed|leaking|pressure_held|lift_off), open_fraction (open fraction of the critical channels under particle clogging; 1 without [contamination]), compression_set (chemical, with [ageing]), shutdown_squeeze (the set ring's squeeze at the shutdown condition). The first row is the installation, t = 0. With --fail-exit-code N the run exits N when the seal fails or is open (docs/model.md §8.1).\n\
+    leaked_volume_m3, state (sealed|leaking|pressure_held|lift_off), open_fraction (open share of the critical channels' flow under particle clogging; 1 without [contamination]), compression_set (chemical, with [ageing]), shutdown_squeeze (the set ring's squeeze at the shutdown condition). The first row is the installation, t = 0. With --fail-exit-code N the run exits N when the seal fails or is open (docs/model.md §8.1).\n\
     An O-ring's leak rate is integrated over its Hertz profile as strips in series; `sealsim \
     leak` on the same scenario evaluates the same installed state (the first row).\n\
     With [motion] (a reciprocating seal, PY08 §8) the history gets drag_leak_rate_m3_per_s, the \

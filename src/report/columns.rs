@@ -225,8 +225,9 @@ const HISTORY: &[Column] = &[
     column(
         "open_fraction",
         "1",
-        "open fraction f of the critical channels under clogging (1 without \
-         `[contamination]`; docs/model.md §7)",
+        "open share f of the critical channels' flow under clogging (the open fraction of \
+         identical channels under `capture = \"sieving\"`; 1 without `[contamination]`; \
+         docs/model.md §7)",
     ),
     column(
         "compression_set",

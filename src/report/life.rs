@@ -31,7 +31,7 @@ use serde::Serialize;
 ///   pressure alone) or `lift_off` (the fluid pressure exceeds the contact pressure: the seal is
 ///   open, and the leak rate shown is the seal's at the threshold of lift-off, a lower bound);
 ///   docs/model.md §8.1;
-/// * `open_fraction` is the open fraction f of the critical channels under particle
+/// * `open_fraction` is the open share f of the critical channels' flow under particle
 ///   clogging (docs/model.md §7), always written (1 without `[contamination]`) so that the schema is
 ///   one;
 /// * `compression_set` is the chemical compression set (a fraction) of the two-network ageing

@@ -4,12 +4,13 @@
 //! n_p = φ / E\[π d³/6\] from the size distribution), `size_distribution` (an inline table with
 //! `kind` = `monodisperse` (`diameter`), `lognormal` (`median`, `geometric_std` > 1),
 //! `weibull` (`scale`, `shape` > 0) or `table` (`file`, a CSV of d and cumulative F)),
-//! `capture = "sieving"` (the only model) and `reroute` (default true).
+//! `capture` (`"straining"`, the default, or `"sieving"`, its sharp limit) and `reroute`
+//! (default true).
 
 use super::error::{ScenarioError, Source};
 use super::raw::{Quantity, RawContamination, RawSimulation, RawSizeDistribution};
 use super::validate::{Bound, Field, field};
-use crate::clogging::{Contamination, DEFAULT_TOLERANCE, SizeDistribution};
+use crate::clogging::{CaptureLaw, Contamination, DEFAULT_TOLERANCE, SizeDistribution};
 use crate::units::{self, Dimension, show};
 use toml::Spanned;
 
@@ -85,19 +86,22 @@ impl Source<'_> {
             return Ok(None);
         };
         let raw = table.get_ref();
-        if let Some(capture) = &raw.capture
-            && capture.get_ref() != "sieving"
-        {
-            return Err(self.error(
-                capture.span(),
-                "contamination.capture",
-                format!(
-                    "must be \"sieving\" (particles larger than the constriction height block \
-                     it; the only capture model), got {:?}",
-                    capture.get_ref()
-                ),
-            ));
-        }
+        let capture = match raw.capture.as_ref().map(|c| c.get_ref().as_str()) {
+            None | Some("straining") => CaptureLaw::Straining,
+            Some("sieving") => CaptureLaw::Sieving,
+            Some(other) => {
+                let span = raw.capture.as_ref().map_or(table.span(), |c| c.span());
+                return Err(self.error(
+                    span,
+                    "contamination.capture",
+                    format!(
+                        "must be \"straining\" (the default: capture continuous in particle \
+                         size, through the constrictions of every octave) or \"sieving\" (its \
+                         sharp limit: u_c < d ≤ d_reach block), got {other:?}"
+                    ),
+                ));
+            }
+        };
         let Some(sizes) = &raw.size_distribution else {
             return Err(self.error(
                 table.span(),
@@ -144,6 +148,7 @@ impl Source<'_> {
         Ok(Some(Contamination {
             number_concentration,
             size_distribution,
+            capture,
             reroute: raw.reroute.as_ref().is_none_or(|r| *r.get_ref()),
             tolerance,
         }))

@@ -1218,9 +1218,11 @@ const CONTAMINATION: &[Key] = &[
     ),
     key(
         "capture",
-        Choice(&["sieving"]),
-        Literal("\"sieving\"", ""),
-        "capture model: particles with u_c < d ≤ d_reach block a critical channel",
+        Choice(&["straining", "sieving"]),
+        Literal("\"straining\"", ""),
+        "capture law: `straining`, continuous in particle size (the constrictions of every \
+         octave spread like P(u), depth filtration into the entry cake); `sieving`, its sharp \
+         limit (u_c < d ≤ d_reach block a critical channel)",
     ),
     key(
         "reroute",

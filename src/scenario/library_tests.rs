@@ -60,4 +60,3 @@ fn library_t10_solves_its_equation_and_follows_t_g() {
         "{vmq} {epdm} {nbr} {fkm}"
     );
 }
-

@@ -797,9 +797,12 @@ fn bad_contamination_exits_2() {
             "contamination.number_concentration: missing key".into(),
         ),
         (
-            "capture = \"sieving\"".into(),
+            "capture = \"straining\"".into(),
             "capture = \"depth\"".into(),
-            "contamination.capture: must be \"sieving\"".into(),
+            format!(
+                "s.toml:{}: contamination.capture: must be \"straining\"",
+                line("capture = \"straining\"")
+            ),
         ),
     ];
     for (from, to, needle) in cases {
@@ -812,6 +815,58 @@ fn bad_contamination_exits_2() {
         if to.contains("table") {
             let stderr_needle = "sizes.csv:4: not a CDF";
             out.run_rejects(&scenario, &[], &[stderr_needle]);
+        }
+    }
+}
+
+/// `capture` end to end (docs/model.md §7): without the key the law is `straining`, the same
+/// history as the shipped file that names it; `sieving`, its sharp limit, runs too and moves the
+/// result; both leak less than the clean twin and never more than it, row by row.
+#[test]
+fn capture_defaults_to_straining_and_sieving_runs() {
+    let text = fs::read_to_string(scenarios_dir().join("gasket-nbr-dirty-oil.toml")).unwrap();
+    let named = text
+        .lines()
+        .find(|l| l.starts_with("capture = "))
+        .unwrap()
+        .to_owned();
+    assert!(named.starts_with("capture = \"straining\""), "{named}");
+    let history = |text: &str| {
+        let out = Outputs::new();
+        let scenario = out.write("s.toml", text);
+        out.run_ok(&scenario, &[]);
+        (
+            fs::read_to_string(out.path("h.csv")).unwrap(),
+            out.summary(),
+        )
+    };
+    let (shipped, shipped_summary) = history(&text);
+    let (default, _) = history(&text.replace(&format!("{named}\n"), ""));
+    assert_eq!(shipped, default, "no capture key is straining");
+    let (sieve, sieve_summary) = history(&text.replace(&named, "capture = \"sieving\""));
+    assert_ne!(shipped, sieve);
+    let clean_text: String = {
+        let mut skip = false;
+        text.lines()
+            .filter(|l| {
+                if l.starts_with('[') {
+                    skip = l.starts_with("[contamination");
+                }
+                !skip
+            })
+            .map(|l| format!("{l}\n"))
+            .collect()
+    };
+    let (clean, clean_summary) = history(&clean_text);
+    let volume = |s: &Value| s["leaked_volume_m3"].as_f64().unwrap();
+    for (label, s) in [("straining", &shipped_summary), ("sieving", &sieve_summary)] {
+        assert!(volume(s) < volume(&clean_summary), "{label}");
+    }
+    let rate =
+        |h: &str| -> Vec<f64> { csv_rows(h).iter().map(|r| r[9].parse().unwrap()).collect() };
+    for dirty in [&shipped, &sieve] {
+        for (q, c) in rate(dirty).iter().zip(rate(&clean)) {
+            assert!(*q <= c * (1.0 + 1e-12));
         }
     }
 }

@@ -655,7 +655,12 @@ fn t50_in_oil(celsius: f64, ids: &[&str]) -> Vec<f64> {
     );
     let compounds: Vec<(String, sealsim::material::Material)> = ids
         .iter()
-        .map(|id| ((*id).to_owned(), sealsim::scenario::library::get(id).unwrap().load().unwrap()))
+        .map(|id| {
+            (
+                (*id).to_owned(),
+                sealsim::scenario::library::get(id).unwrap().load().unwrap(),
+            )
+        })
         .collect();
     let scenarios = compounds
         .iter()

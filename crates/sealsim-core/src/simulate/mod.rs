@@ -143,6 +143,8 @@ struct Snapshot {
     entry_gap: f64,
     /// Under clogging: 1 + R_cake/R_seal, the cake's series factor on the static leak (1 clean).
     cake_factor: f64,
+    /// Under straining: the critical constrictions and the particles' survival to them.
+    capture: clogging::Capture,
     /// Open fraction f the leak rate was evaluated with.
     open_fraction: f64,
     /// `[motion]`: the motion quantities at the peak strip (all channels open until
@@ -300,11 +302,15 @@ struct Mechanics {
     /// (docs/model.md §6.5), the compression set's numerator and the shutdown check's set.
     networks: RelaxationState,
     leaked_volume: f64,
-    /// ln f, the log of the open fraction of the critical channels (0 when clean; −∞ when
-    /// every channel is blocked).
+    /// Sieving: ln f, the log of the open fraction of the critical channels (0 when clean; −∞
+    /// when every channel is blocked).
     log_open_fraction: f64,
-    /// Solid volume of the particles caked at the entry (d > d_reach) \[m³\] (0 when clean).
+    /// Straining: the particles that have arrived at the critical level, by relative size.
+    straining: clogging::Straining,
+    /// Solid volume of the particles caked at the entry \[m³\] (0 when clean).
     cake_volume: f64,
+    /// Their surface π Σ d² \[m²\] (the cake's Sauter diameter is 6 V/A).
+    cake_surface: f64,
     /// The clogging ODE could not follow a stiff closure within a step: the seal is taken
     /// as closed from then on.
     clogged_shut: bool,
@@ -323,10 +329,10 @@ pub struct Simulator<'a> {
     /// The sealing force per unit length at the retained-force reference time \[N/m\].
     reference_force: f64,
     creep: crate::material::Creep,
-    /// The exact contact path under clogging (the reach u1(ζc/2), the entry gap and, with
-    /// re-routing, the detour junctions at other thresholds), on a coarser quadrature
-    /// ([`REROUTE_QUADRATURE`]).
-    clogging_contact: Option<PerssonContact>,
+    /// Under clogging: the exact contact path (the constrictions of every octave, the entry
+    /// gap and, with re-routing, the detour junctions at other thresholds) on a coarser
+    /// quadrature ([`REROUTE_QUADRATURE`]), and the nodes of the size distribution.
+    clogging: Option<clogging::CloggingSetup>,
     /// The last `(s, u_c(s, a_c))` of the re-routing reference junction: a step's ratio nodes
     /// and its end snapshot share one pressure, hence one reference evaluation.
     reference_memo: std::cell::Cell<Option<(f64, Option<f64>)>>,
@@ -367,12 +373,12 @@ impl<'a> Simulator<'a> {
             problem.installed_temperature(),
         );
         let initial_profile = problem.initial_profile();
-        let clogging_contact = problem.contamination.as_ref().map(|_| {
+        let clogging = problem.contamination.as_ref().map(|c| {
             let settings = ContactSettings {
                 quadrature: REROUTE_QUADRATURE,
                 ..problem.contact
             };
-            PerssonContact::new(problem.spectrum.clone(), settings)
+            clogging::CloggingSetup::new(PerssonContact::new(problem.spectrum.clone(), settings), c)
         });
         let drag = problem.motion.map(|spec| {
             (
@@ -391,7 +397,7 @@ impl<'a> Simulator<'a> {
             initial_profile,
             reference_force: initial_profile.force_per_length(),
             creep: problem.material.prony.creep(),
-            clogging_contact,
+            clogging,
             reference_memo: std::cell::Cell::new(None),
             counterface: InterfaceSolver::new(problem, &path),
             groove: match &problem.groove {
@@ -565,7 +571,9 @@ impl<'a> Simulator<'a> {
             networks: RelaxationState::networks_only(),
             leaked_volume: 0.0,
             log_open_fraction: 0.0,
+            straining: clogging::Straining::default(),
             cake_volume: 0.0,
+            cake_surface: 0.0,
             clogged_shut: false,
         };
         let ramp = p.installation_reduced_time();
@@ -1178,7 +1186,7 @@ impl<'a> Simulator<'a> {
         if let Some(c) = &p.contamination {
             // the cake grows with the fluid that carried its particles (explicit: the step's
             // end snapshot used the cake at the step's start)
-            state.cake_volume += c.cake_volume_fraction(after.reach) * volume;
+            self.deposit(c, state, &after, volume);
         }
         state.time = b;
         after
@@ -1313,6 +1321,7 @@ impl<'a> Simulator<'a> {
             reach: 0.0,
             entry_gap: 0.0,
             cake_factor: 1.0,
+            capture: clogging::Capture::default(),
             extrusion: p.extrusion_at(temperature),
             open_fraction: 1.0,
             motion,
