@@ -2265,10 +2265,10 @@ pub fn compare_cells(rows: &[CompareRow<'_>]) -> Vec<Vec<String>> {
             r.notes.clone(),
             r.ageing_source.clone(),
         ]);
-        if let Some(p) = &r.permeation_source {
-            if let Some(row) = cells.last_mut() {
-                row.push(p.clone());
-            }
+        if let Some(p) = &r.permeation_source
+            && let Some(row) = cells.last_mut()
+        {
+            row.push(p.clone());
         }
     }
     if rows.first().is_some_and(|r| r.mean_pressure.is_some()) {

@@ -705,10 +705,10 @@ pub fn helium_nitrogen_ratio(family: &str) -> Option<(f64, String)> {
 /// ([`HELIUM_SOLUBILITY_FLOOR`], [`HYDROGEN_SOLUBILITY_FLOOR`]); none for the other gases
 /// (the steady flow from installation, the upper bound of the build-up).
 fn diffusivity(family: &str, gas: &str, permeability: f64) -> Option<(f64, bool)> {
-    if family == "fkm" {
-        if let Some((d, _)) = fkm_diffusivity_solubility(gas) {
-            return Some((d * 1e-4, false));
-        }
+    if family == "fkm"
+        && let Some((d, _)) = fkm_diffusivity_solubility(gas)
+    {
+        return Some((d * 1e-4, false));
     }
     match gas {
         "helium" => Some((permeability / HELIUM_SOLUBILITY_FLOOR, true)),

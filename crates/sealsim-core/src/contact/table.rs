@@ -491,7 +491,8 @@ fn molecular_threshold(
     upper_gap: f64,
 ) -> f64 {
     let m = settings.molecular_size;
-    if !(m > 0.0) {
+    // no molecule (0, or NaN from a bad size): the threshold is the contact's own
+    if m.is_nan() || m <= 0.0 {
         return s_contact;
     }
     let sealed = |s: f64| super::SeparationDistribution::persson(exact, s, settings).cdf(m) >= 0.5;
