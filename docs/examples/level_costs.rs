@@ -46,13 +46,19 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     };
     files.sort();
     let me = std::env::current_exe()?;
-    println!("| scenario | level | build \\[s\\] | run \\[s\\] | outcome | leaked volume \\[m³\\] |");
+    println!(
+        "| scenario | level | build \\[s\\] | run \\[s\\] | outcome | leaked volume \\[m³\\] |"
+    );
     println!("|---|---|---|---|---|---|");
     for file in files {
         if Scenario::load(&file).is_err() {
             continue;
         }
-        let name = file.strip_prefix(root).unwrap_or(&file).display().to_string();
+        let name = file
+            .strip_prefix(root)
+            .unwrap_or(&file)
+            .display()
+            .to_string();
         for level in LEVELS {
             let mut child = Command::new(&me)
                 .args(["--one", &file.display().to_string(), level.name()])

@@ -41,13 +41,13 @@ impl TableSettings {
         (lo, (hi - lo) / (n - 1) as f64, n)
     }
 
-    /// The effective-medium table's default: 8 points per decade from 1e-6 of the threshold to
+    /// The effective-medium table's default: 8 points per decade from 1e-16 of the threshold to
     /// 2e-9 short of it, built lazily (each node costs a Bruggeman solve; measured worst error vs
     /// the direct solve in tests/model/effective_medium.rs).
     pub fn effective_medium() -> Self {
         TableSettings {
             points_per_decade: 8.0,
-            decades: 6.0,
+            decades: 16.0,
             upper_gap: 2e-9,
             extension: 0.0,
         }
@@ -230,7 +230,7 @@ impl ContactTable {
 /// made on the first lookup that needs it (a life run visits a narrow band of P0/E*), and is a
 /// function of its index alone, so the table gives the same bits whatever the order or the
 /// threads of the calls. The nodes reach from `s = 10^-decades s_half` to `1 − upper_gap` of the
-/// threshold ([`TableSettings::effective_medium`]: 1e-6 and 2e-9): ln u_eff is smooth in v
+/// threshold ([`TableSettings::effective_medium`]: 1e-16 and 2e-9): ln u_eff is smooth in v
 /// all the way, since u_eff vanishes as a power of the distance to the threshold — measured
 /// `u_eff ∝ (1 − s/s_half)^1` (d ln u_eff/dv = −1.0000 from v = 12 to 24 on the paper's surface,
 /// tests/model/effective_medium.rs), which the table continues beyond its last node; below its
@@ -338,7 +338,11 @@ impl LazyNodes {
         // node is built alongside on the second thread (a node's value does not depend on when
         // it is built)
         if let [i] = missing[..] {
-            let next = if i == from + n as i64 - 1 { i + 1 } else { i - 1 };
+            let next = if i == from + n as i64 - 1 {
+                i + 1
+            } else {
+                i - 1
+            };
             if n > 1
                 && (i == from || i == from + n as i64 - 1)
                 && (self.first..=self.last()).contains(&next)
@@ -421,6 +425,12 @@ const GAS_COLUMN_SPACING: f64 = 1.0;
 /// taken as free molecular: every local conductance proportional to λ, so σ_eff ∝ λ (Bruggeman
 /// is homogeneous of degree one in the conductances).
 const GAS_FREE_MOLECULAR_KN: f64 = 1e5;
+
+/// The rarefied columns start at this many decades below the threshold (the liquid's nodes
+/// reach further): a gas's Hertz profile is solved from its open inlet, where the asperity
+/// pressure rises from 0 and the resistance is least, and would otherwise build every node
+/// down there; below it a column answers its first node's value.
+const GAS_COLUMN_DECADES: f64 = 6.0;
 
 /// The rarefied columns of an [`EffectiveMediumTable`], keyed by the node index k of
 /// ln λ = k·[`GAS_COLUMN_SPACING`] and the molecular diameter's bits: each column
@@ -592,11 +602,17 @@ impl EffectiveMediumTable {
     }
 
     /// The rarefied column k (ln λ = k·[`GAS_COLUMN_SPACING`]) for molecular diameter `d`: its
-    /// (lazy) nodes, laid out as the liquid's.
+    /// (lazy) nodes, the liquid's from [`GAS_COLUMN_DECADES`] below the threshold on.
     fn gas_column(&self, k: i64, d: f64) -> Option<std::sync::Arc<LazyNodes>> {
         let mut map = self.gas.0.lock().ok()?;
         let column = map.entry((k, d.to_bits())).or_insert_with(|| {
-            std::sync::Arc::new(self.nodes.empty_like())
+            let mut column = self.nodes.empty_like();
+            // the same nodes from GAS_COLUMN_DECADES below the threshold on
+            let start = ((logit(10f64.powf(-GAS_COLUMN_DECADES)) / column.h).floor() as i64)
+                .clamp(column.first, column.last() - 3);
+            column.values.drain(..(start - column.first) as usize);
+            column.first = start;
+            std::sync::Arc::new(column)
         });
         Some(column.clone())
     }
@@ -626,8 +642,11 @@ impl EffectiveMediumTable {
                 .effective_gap();
         }
         let node = |v: f64| {
-            let em =
-                EffectiveMedium::persson(self.junctions.exact(), self.s_half * logistic(v), self.settings);
+            let em = EffectiveMedium::persson(
+                self.junctions.exact(),
+                self.s_half * logistic(v),
+                self.settings,
+            );
             (!em.sealed()).then(|| em.effective_gap().ln() - self.ln_h)
         };
         (self.nodes.look_up(logit(r), THRESHOLD_EXPONENT, &node) + self.ln_h).exp()
