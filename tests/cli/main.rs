@@ -28,6 +28,7 @@ mod gland;
 mod gland_pressure;
 mod integration;
 mod leak;
+mod levels;
 mod materials;
 mod motion;
 mod new;

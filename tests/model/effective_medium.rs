@@ -425,3 +425,61 @@ fn a_rarefied_gas_in_the_effective_medium_has_its_limits_and_its_table_matches_t
         assert!((b / a - 2.0).abs() < 1e-9, "{a} {b}");
     }
 }
+
+#[test]
+fn effective_medium_table_reaches_the_threshold_and_matches_the_direct_solve_there() {
+    // The table's nodes reach 2e-9 short of the threshold s_half, and beyond its last node it
+    // continues u_eff ∝ (1 − s/s_half)^1: both checked against direct solves off the nodes, in
+    // the band where the old table (to 0.97 s_half) answered with a solve per call.
+    use sealsim::contact::{EffectiveMediumTable, TableSettings};
+    let exact = paper_contact();
+    let settings = EffectiveMediumSettings::default();
+    let table =
+        EffectiveMediumTable::build(exact.clone(), TableSettings::effective_medium(), settings);
+    let s_half = table.sealing_reduced_pressure();
+    let at = |v: f64| s_half / (1.0 + (-v).exp());
+    let direct = |v: f64| EffectiveMedium::persson(&exact, at(v), settings).effective_gap();
+    // the power law at the threshold: d ln u_eff / d logit(s/s_half) → −1
+    let slope = (direct(20.0).ln() - direct(12.0).ln()) / 8.0;
+    assert!((slope + 1.0).abs() < 1e-3, "slope {slope}");
+    let mut worst: f64 = 0.0;
+    // logit 3.5 (0.97 s_half) … 19.9 (2e-9 short), off the nodes; 21, 23: beyond the last node
+    for v in [3.55, 4.9, 6.3, 8.1, 10.7, 13.3, 16.2, 19.9, 21.0, 23.0] {
+        let (t, d) = (table.effective_gap(at(v)), direct(v));
+        assert!(t > 0.0 && d > 0.0, "v = {v}");
+        worst = worst.max((t / d - 1.0).abs());
+    }
+    eprintln!("effective-medium table near the threshold vs direct: worst {worst:.2e}");
+    assert!(worst < 1e-3, "worst relative error {worst:e}");
+    assert_eq!(table.effective_gap(s_half), 0.0);
+}
+
+#[test]
+fn effective_medium_table_builds_only_the_nodes_a_run_visits_and_in_any_order_the_same() {
+    use sealsim::contact::{EffectiveMediumTable, TableSettings};
+    let exact = paper_contact();
+    let settings = EffectiveMediumSettings::default();
+    let build =
+        || EffectiveMediumTable::build(exact.clone(), TableSettings::effective_medium(), settings);
+    let (a, b) = (build(), build());
+    assert_eq!(a.nodes_built(), 0, "no solve before the first lookup");
+    let s_half = a.sealing_reduced_pressure();
+    // a run's narrow band: 0.1–0.2 s_half, 200 lookups
+    let s: Vec<f64> = (0..200)
+        .map(|k| s_half * (0.1 + 0.1 * ((k * 37) % 200) as f64 / 200.0))
+        .collect();
+    let forward: Vec<u64> = s.iter().map(|&s| a.effective_gap(s).to_bits()).collect();
+    let mut backward: Vec<u64> = s
+        .iter()
+        .rev()
+        .map(|&s| b.effective_gap(s).to_bits())
+        .collect();
+    backward.reverse();
+    // a node's value depends on its index alone: the same bits whatever order built them
+    assert_eq!(forward, backward);
+    // ln(0.2/0.8) − ln(0.1/0.9) = 0.81 in logit: two cells of 0.43, five nodes, plus the
+    // neighbour built alongside at each end
+    let built = a.nodes_built();
+    eprintln!("nodes built for 0.1–0.2 s_half: {built} (the eager table solved 48)");
+    assert!(built <= 9, "{built} nodes");
+}

@@ -236,3 +236,32 @@ fn table_agrees_with_exact_path() {
         );
     }
 }
+
+/// The exact level's cache of quadrature nodes ([`TableSettings::exact_cache`], 96 per decade)
+/// interpolates u_c far below the critical-junction table's error, so that `exact` stays the
+/// table's reference (docs/model.md §4).
+#[test]
+fn exact_cache_is_far_more_accurate_than_the_table() {
+    let spectra = [
+        Spectrum::self_affine(2e-6, 0.8, 1e4, 7.8e9, None).unwrap(),
+        Spectrum::self_affine(1e-9, 0.05, 1e4, 1e12, None).unwrap(),
+        Spectrum::self_affine(5e-6, 0.7, 1e3, 1e9, Some(3e4)).unwrap(),
+    ];
+    for sp in spectra {
+        let exact = PerssonContact::new(sp, ContactSettings::default());
+        let cache = ContactTable::build(exact.clone(), TableSettings::exact_cache());
+        let table = ContactTable::build(exact.clone(), TableSettings::default());
+        let (lo, hi) = cache.range().expect("a table");
+        let (mut worst, mut worst_table): (f64, f64) = (0.0, 0.0);
+        for k in 0..=600 {
+            // off the nodes, over the range and its extension
+            let s = lo * (hi / lo).powf((k as f64 + 0.31) / 601.0);
+            let a = leaking(exact.critical_junction(s)).u_c;
+            worst = worst.max(rel(cache.critical_gap(s).unwrap(), a));
+            worst_table = worst_table.max(rel(table.critical_gap(s).unwrap(), a));
+        }
+        eprintln!("u_c: exact cache {worst:.2e}, table {worst_table:.2e}");
+        assert!(worst < 1e-6, "exact cache error {worst:e}");
+        assert!(worst < 0.01 * worst_table, "{worst:e} vs {worst_table:e}");
+    }
+}

@@ -296,7 +296,9 @@ pub struct StaticSolver {
 #[derive(Debug, Clone)]
 pub enum ContactPath {
     RuleOfThumb(PerssonContact),
-    Exact(PerssonContact),
+    /// The exact path, and a cache of its nodes for the interface integrals (which ask for the
+    /// conductance thousands of times per state): [`TableSettings::exact_cache`].
+    Exact(ContactTable),
     Table(ContactTable),
     EffectiveMedium(Box<EffectiveMediumTable>),
     Numerical {
@@ -390,7 +392,9 @@ impl ContactPath {
         let table = options.table;
         match fidelity {
             Fidelity::RuleOfThumb => ContactPath::RuleOfThumb(exact),
-            Fidelity::Exact => ContactPath::Exact(exact),
+            Fidelity::Exact => {
+                ContactPath::Exact(ContactTable::build(exact, TableSettings::exact_cache()))
+            }
             Fidelity::Table => ContactPath::Table(ContactTable::build(exact, table)),
             Fidelity::EffectiveMedium => {
                 let em_table = TableSettings {
@@ -460,8 +464,8 @@ impl ContactPath {
     /// The exact contact theory behind the path.
     pub fn exact(&self) -> &PerssonContact {
         match self {
-            ContactPath::RuleOfThumb(c) | ContactPath::Exact(c) => c,
-            ContactPath::Table(t) => t.exact(),
+            ContactPath::RuleOfThumb(c) => c,
+            ContactPath::Table(t) | ContactPath::Exact(t) => t.exact(),
             ContactPath::EffectiveMedium(t) => t.junctions().exact(),
             ContactPath::Numerical { junctions, .. } => junctions.exact(),
         }
@@ -490,7 +494,7 @@ impl ContactPath {
     pub fn critical_junction(&self, s: f64) -> Junction {
         match self {
             ContactPath::RuleOfThumb(c) => c.rule_of_thumb_junction(s),
-            ContactPath::Exact(c) => c.critical_junction(s),
+            ContactPath::Exact(t) => t.exact().critical_junction(s),
             ContactPath::Table(t) => t.critical_junction(s),
             ContactPath::EffectiveMedium(t) => {
                 Self::gap_channel(t.effective_gap(s), t.junctions(), s, 0.5)
@@ -511,7 +515,8 @@ impl ContactPath {
     /// (PY08 §8, the `dynamic` module) is built on this junction.
     pub fn persson_junction(&self, s: f64) -> Junction {
         match self {
-            ContactPath::RuleOfThumb(c) | ContactPath::Exact(c) => c.critical_junction(s),
+            ContactPath::RuleOfThumb(c) => c.critical_junction(s),
+            ContactPath::Exact(t) => t.exact().critical_junction(s),
             ContactPath::Table(t) => t.critical_junction(s),
             ContactPath::EffectiveMedium(t) => t.junctions().critical_junction(s),
             ContactPath::Numerical { junctions, .. } => junctions.critical_junction(s),
@@ -570,7 +575,9 @@ impl ContactPath {
         viscosity: f64,
         molecular_size: f64,
     ) -> f64 {
-        if let ContactPath::Table(t) = self {
+        // the exact level through its cache of nodes (interpolation error < 1e-7, far below the
+        // table's 3.2e-4; docs/model.md §4)
+        if let ContactPath::Table(t) | ContactPath::Exact(t) = self {
             return t
                 .critical_gap(s)
                 .filter(|&u_c| passes_molecule(u_c, molecular_size))
@@ -640,8 +647,13 @@ impl ContactPath {
             ContactPath::Numerical { .. } => 1.0,
             _ => shape_factor,
         };
-        // the channel: u_c (u_eff for the numerical level) and its lateral extent λc
-        match self.critical_junction(s) {
+        // the channel: u_c (u_eff for the numerical level) and its lateral extent λc; the exact
+        // level's u_c from its cache of nodes (ζc and λc exact)
+        let junction = match self {
+            ContactPath::Exact(t) => t.critical_junction(s),
+            _ => self.critical_junction(s),
+        };
+        match junction {
             Junction::Leaking(j) if j.u_c > 0.0 && passes_molecule(j.u_c, molecular_size) => {
                 junction_conductance(j.u_c, alpha, viscosity) * l.factor(j.u_c, j.lambda_c)
             }

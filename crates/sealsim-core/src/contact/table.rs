@@ -41,15 +41,28 @@ impl TableSettings {
         (lo, (hi - lo) / (n - 1) as f64, n)
     }
 
-    /// The effective-medium table's default: 8 points per decade over 6 decades below the
-    /// threshold (each node costs a Bruggeman solve; measured worst error vs the direct solve in
-    /// tests/model/effective_medium.rs).
+    /// The effective-medium table's default: 8 points per decade from 1e-16 of the threshold to
+    /// 2e-9 short of it, built lazily (each node costs a Bruggeman solve; measured worst error vs
+    /// the direct solve in tests/model/effective_medium.rs).
     pub fn effective_medium() -> Self {
         TableSettings {
             points_per_decade: 8.0,
-            decades: 6.0,
-            upper_gap: 0.03,
+            decades: 16.0,
+            upper_gap: 2e-9,
             extension: 0.0,
+        }
+    }
+}
+
+impl TableSettings {
+    /// The exact level's cache of quadrature nodes (docs/model.md §4): 96 points per decade over
+    /// the default range (8 decades, 8 more on first use below), so that its interpolation error
+    /// stays far below the critical-junction table's (measured in tests/model/contact_table.rs);
+    /// ≈ 770 quadratures (≈ 15 ms) to build.
+    pub fn exact_cache() -> Self {
+        TableSettings {
+            points_per_decade: 96.0,
+            ..TableSettings::default()
         }
     }
 }
@@ -210,24 +223,197 @@ impl ContactTable {
 }
 
 /// The effective gap `u_eff(P0/E*) = (12 η σ_eff)^{1/3}` of the effective-medium level
-/// (docs/model.md §3.3), built once per surface like [`ContactTable`]: `ln(u_eff/h_rms)` on a uniform
-/// grid in `logit(s/s_half)`, where `s_half = erfinv(½) √(π M3(q1))` (with the corrected area
-/// [`PerssonContact::reduced_pressure_at_area`]) is the pressure at which
-/// the contact fraction reaches the 2-D threshold ½ and σ_eff vanishes (linearly in u_eff).
-/// Outside the tabulated range (and within `upper_gap` of `s_half`) the Bruggeman solve
-/// answers directly. It also carries the critical-junction table of the same surface, whose
-/// ζc and λc describe the channels (clogging, validity warnings).
+/// (docs/model.md §3.3), tabulated per surface like [`ContactTable`]: `ln(u_eff/h_rms)` at nodes
+/// uniform in `v = logit(s/s_half)`, where `s_half = erfinv(½) √(π M3(q1))` (with the corrected
+/// area [`PerssonContact::reduced_pressure_at_area`]) is the pressure at which the contact
+/// fraction reaches the 2-D threshold ½ and σ_eff vanishes. Each node is one Bruggeman solve,
+/// made on the first lookup that needs it (a life run visits a narrow band of P0/E*), and is a
+/// function of its index alone, so the table gives the same bits whatever the order or the
+/// threads of the calls. The nodes reach from `s = 10^-decades s_half` to `1 − upper_gap` of the
+/// threshold ([`TableSettings::effective_medium`]: 1e-16 and 2e-9): ln u_eff is smooth in v
+/// all the way, since u_eff vanishes as a power of the distance to the threshold — measured
+/// `u_eff ∝ (1 − s/s_half)^1` (d ln u_eff/dv = −1.0000 from v = 12 to 24 on the paper's surface,
+/// tests/model/effective_medium.rs), which the table continues beyond its last node; below its
+/// first node it answers the first node's value (the integrand e·σ(e) of every interface
+/// integral vanishes there). It also carries the critical-junction table of the same surface,
+/// whose ζc and λc describe the channels (clogging, validity warnings).
 #[derive(Debug, Clone, PartialEq)]
 pub struct EffectiveMediumTable {
     junctions: ContactTable,
     settings: EffectiveMediumSettings,
     s_half: f64,
     ln_h: f64,
-    grid: Option<UniformCubic>,
-    /// The logit grid of `grid` (start, spacing, nodes): the gas columns share it.
-    layout: (f64, f64, usize),
+    /// `ln(u_eff/h_rms)` against `logit(s/s_half)`, built on first use.
+    nodes: LazyNodes,
     /// A rarefied gas: `12 η σ_eff` against s, one column per node of ln λ (built on first use).
     gas: GasColumns,
+}
+
+/// The exponent of `1 − s/s_half` with which a tabulated `u_eff` vanishes at the threshold
+/// (measured, see [`EffectiveMediumTable`]): beyond the last node `ln u_eff` continues with
+/// slope −this in `ln(1 − s/s_half)`, and `ln(12ησ_eff)` with three times it.
+const THRESHOLD_EXPONENT: f64 = 1.0;
+
+/// Values at the nodes `v_i = i h` (`first ≤ i ≤ last`) of a grid variable, each computed on first
+/// use (`None`: the node does not conduct), and 4-point cubic Lagrange interpolation between
+/// them (shifted stencil at the ends). A node's value is a function of its abscissa alone,
+/// never of which call built it: a lazily filled grid gives the bits an eagerly built one would,
+/// for any order of calls and any number of threads.
+#[derive(Debug)]
+struct LazyNodes {
+    first: i64,
+    h: f64,
+    values: Vec<OnceLock<Option<f64>>>,
+    /// The lowest index found not to conduct so far (`i64::MAX`: none): the conductance falls
+    /// with the pressure, so every node above it is sealed too and is never built.
+    sealed_from: std::sync::atomic::AtomicI64,
+}
+
+impl Clone for LazyNodes {
+    fn clone(&self) -> Self {
+        LazyNodes {
+            first: self.first,
+            h: self.h,
+            values: self.values.clone(),
+            sealed_from: std::sync::atomic::AtomicI64::new(self.sealed()),
+        }
+    }
+}
+
+impl PartialEq for LazyNodes {
+    /// The grid, not which of its nodes happen to be built yet.
+    fn eq(&self, other: &Self) -> bool {
+        (self.first, self.h, self.values.len()) == (other.first, other.h, other.values.len())
+    }
+}
+
+impl LazyNodes {
+    /// Nodes `h` apart covering `[lo, hi]` (at least four).
+    fn new(lo: f64, hi: f64, h: f64) -> Self {
+        let first = (lo / h).floor() as i64;
+        let last = ((hi / h).ceil() as i64).max(first + 3);
+        LazyNodes {
+            first,
+            h,
+            values: (first..=last).map(|_| OnceLock::new()).collect(),
+            sealed_from: std::sync::atomic::AtomicI64::new(i64::MAX),
+        }
+    }
+
+    /// The same grid with no node built.
+    fn empty_like(&self) -> Self {
+        LazyNodes {
+            first: self.first,
+            h: self.h,
+            values: self.values.iter().map(|_| OnceLock::new()).collect(),
+            sealed_from: std::sync::atomic::AtomicI64::new(i64::MAX),
+        }
+    }
+
+    /// The lowest node index known not to conduct (`i64::MAX`: none yet).
+    fn sealed(&self) -> i64 {
+        self.sealed_from.load(std::sync::atomic::Ordering::Relaxed)
+    }
+
+    fn last(&self) -> i64 {
+        self.first + self.values.len() as i64 - 1
+    }
+
+    fn abscissa(&self, i: i64) -> f64 {
+        i as f64 * self.h
+    }
+
+    /// The values at nodes `from..from + n` (inside the grid); the missing ones computed by
+    /// `f(v_i)`, on two threads when more than one is missing.
+    fn values(
+        &self,
+        from: i64,
+        n: usize,
+        f: &(dyn Fn(f64) -> Option<f64> + Sync),
+    ) -> Vec<Option<f64>> {
+        let slot = |i: i64| &self.values[(i - self.first) as usize];
+        let range = from..from + n as i64;
+        let mut missing: Vec<i64> = range.clone().filter(|&i| slot(i).get().is_none()).collect();
+        // one node missing at an end of the stencil: a lookup moving along the grid; its next
+        // node is built alongside on the second thread (a node's value does not depend on when
+        // it is built)
+        if let [i] = missing[..] {
+            let next = if i == from + n as i64 - 1 {
+                i + 1
+            } else {
+                i - 1
+            };
+            if n > 1
+                && (i == from || i == from + n as i64 - 1)
+                && (self.first..=self.last()).contains(&next)
+                && next < self.sealed()
+                && slot(next).get().is_none()
+            {
+                missing.push(next);
+            }
+        }
+        if missing.len() > 1 {
+            let computed =
+                crate::math::map_on_two_threads(missing.len(), |k| f(self.abscissa(missing[k])));
+            for (&i, value) in missing.iter().zip(computed) {
+                // set by another thread meanwhile: the same value
+                let _ = slot(i).set(value);
+            }
+        }
+        let values: Vec<Option<f64>> = range
+            .map(|i| *slot(i).get_or_init(|| f(self.abscissa(i))))
+            .collect();
+        for (i, v) in (from..).zip(&values) {
+            if v.is_none() {
+                self.sealed_from
+                    .fetch_min(i, std::sync::atomic::Ordering::Relaxed);
+            }
+        }
+        values
+    }
+
+    /// The tabulated `y(v)` (a logarithm; −∞ where sealed):
+    /// * inside the nodes, the cubic through the four nearest; where one of them does not
+    ///   conduct, linear between the two around v, and in the cell before the first sealed node
+    ///   `e^y` linear down to 0 there (the threshold lies in that cell; sealed beyond);
+    /// * below the first node, its value;
+    /// * beyond the last, `y_last + power·[ln(1 − r) − ln(1 − r_last)]`, r = logistic(v): the
+    ///   measured power law at the threshold ([`THRESHOLD_EXPONENT`]).
+    fn look_up(&self, v: f64, power: f64, f: &(dyn Fn(f64) -> Option<f64> + Sync)) -> f64 {
+        let hi = self.abscissa(self.last());
+        // at or beyond a node known to be sealed: sealed, nothing to build
+        if (v / self.h).floor() >= self.sealed() as f64 {
+            return f64::NEG_INFINITY;
+        }
+        if v > hi {
+            return match self.values(self.last(), 1, f)[0] {
+                Some(y) => y + power * (softplus(hi) - softplus(v)),
+                None => f64::NEG_INFINITY,
+            };
+        }
+        let t = (v / self.h).max(self.first as f64);
+        let j = (t.floor() as i64 - 1).clamp(self.first, self.last() - 3);
+        let s = t - j as f64;
+        let y = self.values(j, 4, f);
+        if let [Some(y0), Some(y1), Some(y2), Some(y3)] = y[..] {
+            let (a, b, c, d) = (s, s - 1.0, s - 2.0, s - 3.0);
+            return -y0 * b * c * d / 6.0 + y1 * a * c * d / 2.0 - y2 * a * b * d / 2.0
+                + y3 * a * b * c / 6.0;
+        }
+        // the cell [k, k + 1] of the stencil that holds v
+        let k = (s.floor() as usize).min(2);
+        let x = s - k as f64;
+        match (y[k], y[k + 1]) {
+            (Some(a), Some(b)) => a + (b - a) * x,
+            (Some(a), None) => a + (1.0 - x).ln(),
+            (None, _) => f64::NEG_INFINITY,
+        }
+    }
+}
+
+/// `ln(1 + e^v)` = −ln(1 − logistic(v)), without overflow.
+fn softplus(v: f64) -> f64 {
+    v.max(0.0) + (-v.abs()).exp().ln_1p()
 }
 
 /// Spacing of the rarefied columns in ln λ (docs/model.md §3.10): ln(12ησ_eff) is smooth in
@@ -240,23 +426,21 @@ const GAS_COLUMN_SPACING: f64 = 1.0;
 /// is homogeneous of degree one in the conductances).
 const GAS_FREE_MOLECULAR_KN: f64 = 1e5;
 
+/// The rarefied columns start at this many decades below the threshold (the liquid's nodes
+/// reach further): a gas's Hertz profile is solved from its open inlet, where the asperity
+/// pressure rises from 0 and the resistance is least, and would otherwise build every node
+/// down there; below it a column answers its first node's value.
+const GAS_COLUMN_DECADES: f64 = 6.0;
+
 /// The rarefied columns of an [`EffectiveMediumTable`], keyed by the node index k of
-/// ln λ = k·[`GAS_COLUMN_SPACING`] and the molecular diameter's bits; built once each, on two
-/// threads, and shared by clones made afterwards. `None` for a column the solve could not
-/// tabulate (fewer than four open nodes): lookups then solve directly.
+/// ln λ = k·[`GAS_COLUMN_SPACING`] and the molecular diameter's bits: each column
+/// `ln(12ησ_eff) − 3 ln h_rms` on the table's nodes in `logit(s/s_half)`, its nodes built on first
+/// use (and shared by clones made afterwards).
 #[derive(Default)]
 struct GasColumns(std::sync::Mutex<ColumnMap>);
 
-/// `(k, molecular diameter bits) → column` (`None`: not tabulable).
-type ColumnMap = std::collections::BTreeMap<(i64, u64), Option<std::sync::Arc<GasColumn>>>;
-
-/// One rarefied column: `ln(12ησ_eff) − 3 ln h_rms` on the table's logit grid up to its last
-/// open node, and the logit of the first sealed node (`None`: open to the grid's end).
-#[derive(Debug, Clone)]
-struct GasColumn {
-    cubic: UniformCubic,
-    sealed_from: Option<f64>,
-}
+/// `(k, molecular diameter bits) → column`.
+type ColumnMap = std::collections::BTreeMap<(i64, u64), std::sync::Arc<LazyNodes>>;
 
 impl Clone for GasColumns {
     fn clone(&self) -> Self {
@@ -275,13 +459,14 @@ impl PartialEq for GasColumns {
 impl std::fmt::Debug for GasColumns {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         let n = self.0.lock().map(|m| m.len()).unwrap_or(0);
-        write!(f, "GasColumns({n} built)")
+        write!(f, "GasColumns({n} begun)")
     }
 }
 
 impl EffectiveMediumTable {
-    /// Tabulates u_eff with `table` spacing (each node one Bruggeman solve, ≈ 5 ms) and builds
-    /// the critical-junction table with the default spacing.
+    /// Lays out the table with `table`'s spacing and range (no Bruggeman solve yet: each node,
+    /// ≈ 10 ms, is solved on first use) and builds the critical-junction table with the default
+    /// spacing.
     pub fn build(
         exact: PerssonContact,
         table: TableSettings,
@@ -290,35 +475,44 @@ impl EffectiveMediumTable {
         let s_contact = exact.reduced_pressure_at_area(0.5);
         let s_half = molecular_threshold(&exact, settings, s_contact, table.upper_gap);
         let ln_h = exact.spectrum().rms_roughness().ln();
-        let (lo, h, n) = table.logit_grid();
-        // Each node is an independent Bruggeman solve of a few ms: two threads take alternate
-        // nodes (the result does not depend on the split).
-        let node = |i: usize| {
-            let em =
-                EffectiveMedium::persson(&exact, s_half * logistic(lo + h * i as f64), settings);
-            (!em.sealed()).then(|| em.effective_gap().ln() - ln_h)
-        };
-        let values: Vec<f64> = crate::math::map_on_two_threads(n, node)
-            .into_iter()
-            .map_while(|v| v)
-            .collect();
-        let grid = (values.len() >= 4).then(|| UniformCubic::new(lo, h, values));
         EffectiveMediumTable {
             junctions: ContactTable::build(exact, TableSettings::default()),
             settings,
             s_half,
             ln_h,
-            grid,
-            layout: (lo, h, n),
+            nodes: Self::layout(table),
             gas: GasColumns::default(),
         }
     }
 
+    /// The nodes `table` describes: `ln 10/points_per_decade` apart in `logit(s/s_half)`, from
+    /// `10^-decades` of the threshold to `1 − upper_gap`.
+    fn layout(table: TableSettings) -> LazyNodes {
+        LazyNodes::new(
+            logit(10f64.powf(-table.decades)),
+            logit(1.0 - table.upper_gap),
+            std::f64::consts::LN_10 / table.points_per_decade,
+        )
+    }
+
+    /// The number of Bruggeman nodes built so far (liquid and gas columns): what a run paid.
+    pub fn nodes_built(&self) -> usize {
+        let count = |n: &LazyNodes| n.values.iter().filter(|v| v.get().is_some()).count();
+        let gas = self
+            .gas
+            .0
+            .lock()
+            .map(|m| m.values().map(|c| count(c)).sum())
+            .unwrap_or(0);
+        count(&self.nodes) + gas
+    }
+
     /// `12 η σ_eff` \[m³\] of a rarefied gas at `s` (docs/model.md §3.10): every separation u
     /// conducts `u³ f(λ/u)` (0 below a molecule). Cubic interpolation in ln λ between columns
-    /// tabulated against s on this table's grid (each column ≈ 0.25 s, built on first use);
-    /// free molecular (σ_eff ∝ λ) above λ = 1e5 h_rms; below the columns' range in s (1e-6 of
-    /// the threshold) the value at its start; solved directly above it, next to the threshold.
+    /// tabulated against s on this table's nodes (each node a Bruggeman solve, built on first
+    /// use); free molecular (σ_eff ∝ λ) above λ = 1e5 h_rms. Each column is sealed from its first
+    /// sealed node on, falls linearly to 0 in the cell before it, answers its first node's value
+    /// below its range and continues with `(1 − s/s_half)^3` beyond it ([`LazyNodes::look_up`]).
     pub fn rarefied_cubed_gap(&self, s: f64, gas: crate::gas::Rarefied) -> f64 {
         let direct = |gas: crate::gas::Rarefied| {
             EffectiveMedium::persson_rarefied(
@@ -338,10 +532,12 @@ impl EffectiveMediumTable {
             };
             return self.rarefied_cubed_gap(s, at_top) * (gas.free_path / top);
         }
-        if gas.free_path.is_nan() || gas.free_path <= 0.0 {
+        let r = s / self.s_half;
+        if gas.free_path.is_nan() || gas.free_path <= 0.0 || !(r > 0.0 && r < 1.0) {
+            // at and above the threshold the solve returns 0 before building P(u)
             return direct(gas);
         }
-        let v = logit(s / self.s_half);
+        let v = logit(r);
         let x = gas.free_path.ln() / GAS_COLUMN_SPACING;
         let k0 = x.floor() as i64 - 1;
         let t = x - (k0 + 1) as f64;
@@ -351,29 +547,28 @@ impl EffectiveMediumTable {
             -(t + 1.0) * t * (t - 2.0) / 2.0,
             (t + 1.0) * t * (t - 1.0) / 6.0,
         ];
-        if v.is_nan() {
-            return direct(gas);
-        }
         let mut g = [0.0; 4];
         for (i, gi) in g.iter_mut().enumerate() {
             let Some(column) = self.gas_column(k0 + i as i64, gas.molecular_diameter) else {
                 return direct(gas);
             };
-            let (a, b) = column.cubic.range();
-            let at = |v: f64| (column.cubic.eval(v) + 3.0 * self.ln_h).exp();
-            *gi = if v <= b {
-                // below the range (s < 1e-6 of the threshold: the open inlet of a profile,
-                // where the resistance is least) the range's first value, not a solve per call
-                at(v.max(a))
-            } else {
-                match column.sealed_from {
-                    // sealed at and beyond the first sealed node; in the one grid cell before
-                    // it, linear in v down to 0 there (the gas's threshold lies in that cell)
-                    Some(sealed) if v >= sealed => 0.0,
-                    Some(sealed) => at(b) * (sealed - v) / (sealed - b),
-                    None => return direct(gas),
-                }
+            let free_path = ((k0 + i as i64) as f64 * GAS_COLUMN_SPACING).exp();
+            let node = |v: f64| {
+                let s = self.s_half * logistic(v);
+                let em = EffectiveMedium::persson_rarefied(
+                    self.junctions.exact(),
+                    s,
+                    self.settings,
+                    crate::gas::Rarefied {
+                        free_path,
+                        molecular_diameter: gas.molecular_diameter,
+                    },
+                    self.channel_width(s),
+                );
+                (!em.sealed()).then(|| em.cubed_gap.ln() - 3.0 * self.ln_h)
             };
+            let y = column.look_up(v, 3.0 * THRESHOLD_EXPONENT, &node);
+            *gi = (y + 3.0 * self.ln_h).exp();
         }
         if g.iter().all(|&x| x > 0.0) {
             weights
@@ -407,41 +602,20 @@ impl EffectiveMediumTable {
         }
     }
 
-    /// The rarefied column k (ln λ = k·[`GAS_COLUMN_SPACING`]) for molecular diameter `d`.
-    fn gas_column(&self, k: i64, d: f64) -> Option<std::sync::Arc<GasColumn>> {
-        let key = (k, d.to_bits());
-        if let Some(c) = self.gas.0.lock().ok()?.get(&key) {
-            return c.clone();
-        }
-        let gas = crate::gas::Rarefied {
-            free_path: (k as f64 * GAS_COLUMN_SPACING).exp(),
-            molecular_diameter: d,
-        };
-        let (lo, h, n) = self.layout;
-        let node = |i: usize| {
-            let s = self.s_half * logistic(lo + h * i as f64);
-            let em = EffectiveMedium::persson_rarefied(
-                self.junctions.exact(),
-                s,
-                self.settings,
-                gas,
-                self.channel_width(s),
-            );
-            (!em.sealed()).then(|| em.cubed_gap.ln() - 3.0 * self.ln_h)
-        };
-        let values: Vec<f64> = crate::math::map_on_two_threads(n, node)
-            .into_iter()
-            .map_while(|v| v)
-            .collect();
-        let sealed_from = (values.len() < n).then_some(lo + h * values.len() as f64);
-        let column = (values.len() >= 4).then(|| {
-            std::sync::Arc::new(GasColumn {
-                cubic: UniformCubic::new(lo, h, values),
-                sealed_from,
-            })
+    /// The rarefied column k (ln λ = k·[`GAS_COLUMN_SPACING`]) for molecular diameter `d`: its
+    /// (lazy) nodes, the liquid's from [`GAS_COLUMN_DECADES`] below the threshold on.
+    fn gas_column(&self, k: i64, d: f64) -> Option<std::sync::Arc<LazyNodes>> {
+        let mut map = self.gas.0.lock().ok()?;
+        let column = map.entry((k, d.to_bits())).or_insert_with(|| {
+            let mut column = self.nodes.empty_like();
+            // the same nodes from GAS_COLUMN_DECADES below the threshold on
+            let start = ((logit(10f64.powf(-GAS_COLUMN_DECADES)) / column.h).floor() as i64)
+                .clamp(column.first, column.last() - 3);
+            column.values.drain(..(start - column.first) as usize);
+            column.first = start;
+            std::sync::Arc::new(column)
         });
-        self.gas.0.lock().ok()?.insert(key, column.clone());
-        column
+        Some(column.clone())
     }
 
     /// The critical-junction table of the same surface.
@@ -461,17 +635,24 @@ impl EffectiveMediumTable {
         self.s_half
     }
 
-    /// `u_eff` \[m\] at `s = P0/E*`: interpolated inside the table, solved outside; 0 when
-    /// sealed (at and above [`Self::sealing_reduced_pressure`]).
+    /// `u_eff` \[m\] at `s = P0/E*`: interpolated in the table (see the type's docs); 0 when
+    /// sealed (at and above the threshold).
     pub fn effective_gap(&self, s: f64) -> f64 {
-        if s >= self.s_half {
-            return 0.0;
+        let r = s / self.s_half;
+        if !(r > 0.0 && r < 1.0) {
+            // sealed at and above the threshold (the solve checks the contact fraction first)
+            return EffectiveMedium::persson(self.junctions.exact(), s, self.settings)
+                .effective_gap();
         }
-        let v = logit(s / self.s_half);
-        match &self.grid {
-            Some(g) if v >= g.range().0 && v <= g.range().1 => (g.eval(v) + self.ln_h).exp(),
-            _ => EffectiveMedium::persson(self.junctions.exact(), s, self.settings).effective_gap(),
-        }
+        let node = |v: f64| {
+            let em = EffectiveMedium::persson(
+                self.junctions.exact(),
+                self.s_half * logistic(v),
+                self.settings,
+            );
+            (!em.sealed()).then(|| em.effective_gap().ln() - self.ln_h)
+        };
+        (self.nodes.look_up(logit(r), THRESHOLD_EXPONENT, &node) + self.ln_h).exp()
     }
 }
 
