@@ -454,7 +454,8 @@ fn the_rarefied_interface_is_the_local_law_integrated_over_the_pressure() {
         // the Hertz profile's approximation, every constriction rarefied at p̄: measured
         let at_mean = simpson(true) / simpson_local;
         let expected = 1e-3 / 1e-3 * simpson_local;
-        assert!(rel(q, expected) < 1e-8, "{}: {q} vs {expected}", g.id);
+        // 1e-7: the exact level interpolates its cached quadrature nodes, < 1e-7 (docs/model.md §4)
+        assert!(rel(q, expected) < 1e-7, "{}: {q} vs {expected}", g.id);
         // and rarefaction raises it above the continuum law
         let mut continuum = fluid;
         continuum.gas.as_mut().unwrap().flow_law = gas::FlowLaw::Continuum;

@@ -365,15 +365,8 @@ pub fn liquid_molecular_size() -> f64 {
     WATER_MOLECULE_VOLUME.cbrt()
 }
 
-/// Whether a gap of height `gap` \[m\] passes a fluid whose molecule is `molecular_size` \[m\]
-/// ([`Fluid::molecular_size`]) — only if it is wider (docs/model.md §8.1). The one rule for every
-/// gap the model lets a fluid through, liquid or gas: the critical junction of each strip of the
-/// interface (§3.6) at every level, each local gap of the effective medium's Bruggeman average
-/// (§3.3) and each cell of the numerical level's Reynolds solve (§3.5); a rarefied gas's factor
-/// ([`crate::gas::Rarefied::factor`]) applies it too (§3.10).
-pub fn passes_molecule(gap: f64, molecular_size: f64) -> bool {
-    gap > molecular_size
-}
+// The one molecular rule lives with the gases, which use it too (no fluid ↔ gas cycle).
+pub use crate::gas::passes_molecule;
 
 impl Fluid {
     /// The dynamic viscosity at `temperature` \[K\] \[Pa·s\] by the fluid's law (its own

@@ -131,12 +131,22 @@ pub struct Rarefied {
     pub molecular_diameter: f64,
 }
 
+/// Whether a gap of height `gap` \[m\] passes a fluid whose molecule is `molecular_size` \[m\]
+/// (`fluid::Fluid::molecular_size`) — only if it is wider (docs/model.md §8.1). The one rule for every
+/// gap the model lets a fluid through, liquid or gas: the critical junction of each strip of the
+/// interface (§3.6) at every level, each local gap of the effective medium's Bruggeman average
+/// (§3.3) and each cell of the numerical level's Reynolds solve (§3.5); a rarefied gas's factor
+/// ([`Rarefied::factor`]) applies it too (§3.10).
+pub fn passes_molecule(gap: f64, molecular_size: f64) -> bool {
+    gap > molecular_size
+}
+
 impl Rarefied {
     /// The conductance of a gap of height `u` \[m\] and lateral extent `width` \[m\] over
     /// its continuum value: [`slit_rarefaction`] at Kn = λ_μ/u and aspect width/u, and 0 for a
     /// gap no wider than a molecule.
     pub fn factor(&self, u: f64, width: f64) -> f64 {
-        if !crate::fluid::passes_molecule(u, self.molecular_diameter) {
+        if !passes_molecule(u, self.molecular_diameter) {
             0.0
         } else {
             slit_rarefaction(self.free_path / u, width / u)

@@ -639,8 +639,13 @@ impl EffectiveMediumTable {
     /// sealed (at and above the threshold).
     pub fn effective_gap(&self, s: f64) -> f64 {
         let r = s / self.s_half;
-        if !(r > 0.0 && r < 1.0) {
-            // sealed at and above the threshold (the solve checks the contact fraction first)
+        if r >= 1.0 {
+            // sealed at and above the threshold, which is the molecule's where one is set
+            // (`molecular_threshold`): no solve, since proving a molecular seal needs the whole
+            // separation distribution and a life run spends many states there
+            return 0.0;
+        }
+        if r.is_nan() || r <= 0.0 {
             return EffectiveMedium::persson(self.junctions.exact(), s, self.settings)
                 .effective_gap();
         }
