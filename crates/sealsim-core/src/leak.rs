@@ -107,7 +107,7 @@ impl Fidelity {
                 "the reference the contact table is checked against (< 3.2e-4); the \
                  critical-junction model itself as for critical-junction"
             }
-            Fidelity::EffectiveMedium => "table against direct solve < 2.2e-4",
+            Fidelity::EffectiveMedium => "table against direct solve < 2.6e-4",
             Fidelity::Numerical => {
                 "resolves a band q1/q0 of a few tens only; its statistical error is in the run's \
                  warnings"
