@@ -2479,7 +2479,8 @@ mod tests {
              throughput_10years_Pa_m3_per_s,total_throughput_1day_Pa_m3_per_s,\
              total_throughput_1year_Pa_m3_per_s,total_throughput_10years_Pa_m3_per_s,\
              sealing_force_end_N_per_m,retained_force_end,leaked_volume_end_m3,\
-             compression_set_end,state_end,notes,activation_energy_source,permeation_source"
+             leaked_volume_is_lower_bound,compression_set_end,state_end,verdict,neighbour_level,\
+             neighbour_verdict,notes,activation_energy_source,permeation_source"
         ));
         let line = text.lines().nth(1).unwrap();
         assert!(
