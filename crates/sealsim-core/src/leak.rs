@@ -700,6 +700,26 @@ impl ContactPath {
             };
             gap.is_some_and(|u| passes_molecule(u, molecular_size))
         };
+        // the effective medium: ln u_eff is smooth and nearly linear in logit(s/s_half) (slope
+        // → −1 at the threshold, docs/model.md §4), so Illinois finds u_eff = m in a few lazy
+        // table nodes where bisection in ln s built dozens; the same bracket convention (the
+        // cut is the upper end, where the gap no longer passes)
+        if let ContactPath::EffectiveMedium(t) = self {
+            use crate::contact::table::{logistic, logit};
+            let s_half = t.sealing_reduced_pressure();
+            let (v_lo, v_hi) = (logit(1e-6), logit(1.0 - 1e-12));
+            let gap = |v: f64| t.effective_gap(s_half * logistic(v));
+            let below = gap(v_lo);
+            if passes_molecule(below, molecular_size) && !passes_molecule(gap(v_hi), molecular_size)
+            {
+                let ln_m = molecular_size.ln();
+                // f < 0 where the gap passes (ln u_eff > ln m); the power law keeps u_eff > 0 for
+                // r < 1, so f is finite on the bracket
+                let f = |v: f64| ln_m - gap(v).max(f64::MIN_POSITIVE).ln();
+                let (_, hi) = crate::math::roots::illinois(f, v_lo, v_hi, 1e-10);
+                return s_half * logistic(hi);
+            }
+        }
         // where the level's gap is 0 at and above its sealing pressure, the cut lies below it;
         // the effective medium's table spans 6 decades beneath (outside it every gap is a solve)
         let narrow = match self {

@@ -59,6 +59,47 @@ pub fn try_bisect<E>(
     Ok((lo, hi))
 }
 
+/// The root of a continuous `f` with `f(lo) < 0 ≤ f(hi)` by the Illinois variant of regula
+/// falsi, to a bracket no wider than `tol` (at most 200 steps). Returns the final bracket
+/// `(lo, hi)` with `f(lo) < 0 ≤ f(hi)`; an input that is not such a bracket is returned as it is.
+///
+/// Each step takes the secant point of the bracket (the midpoint where round-off would put it
+/// on an end); when the same end is kept twice its function value is halved, which makes the
+/// convergence superlinear (order ≈ 1.44) on smooth functions where plain regula falsi stalls
+/// (Dowell & Jarratt, "A modified regula falsi method for computing the root of an equation",
+/// BIT 11 (1971) 168–174).
+pub fn illinois(mut f: impl FnMut(f64) -> f64, lo: f64, hi: f64, tol: f64) -> (f64, f64) {
+    let (mut a, mut b) = (lo, hi);
+    let (mut fa, mut fb) = (f(a), f(b));
+    // which end the last step replaced: +1 the upper, −1 the lower
+    let mut side = 0i8;
+    for _ in 0..200 {
+        if b - a <= tol || !(fa < 0.0 && fb >= 0.0) {
+            break;
+        }
+        let x = (a * fb - b * fa) / (fb - fa);
+        let x = if x > a && x < b { x } else { 0.5 * (a + b) };
+        if x <= a || x >= b {
+            break;
+        }
+        let fx = f(x);
+        if fx >= 0.0 {
+            (b, fb) = (x, fx);
+            if side == 1 {
+                fa *= 0.5;
+            }
+            side = 1;
+        } else {
+            (a, fa) = (x, fx);
+            if side == -1 {
+                fb *= 0.5;
+            }
+            side = -1;
+        }
+    }
+    (a, b)
+}
+
 /// No convergence test: [`bisect`] runs to the last bit (or `max_iterations`).
 pub fn to_the_last_bit(_lo: f64, _hi: f64) -> bool {
     false

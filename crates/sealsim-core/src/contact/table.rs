@@ -690,14 +690,12 @@ fn molecular_threshold(
     if sealed(floor) {
         return floor;
     }
-    let (_, hi) = crate::math::roots::bisect(
-        floor.ln(),
-        last.ln(),
-        200,
-        |lo, hi| hi - lo <= 1e-10,
-        |x| !sealed(x.exp()),
-    );
-    hi.exp()
+    // cdf(m) − ½ is smooth in ln s: Illinois brackets the root in ~10 distributions where
+    // bisection to 1e-10 took ~40 (each a whole separation distribution); the bracket's upper
+    // end is the threshold, as before
+    let g = |x: f64| super::SeparationDistribution::persson(exact, x.exp(), settings).cdf(m) - 0.5;
+    let (_, b) = crate::math::roots::illinois(g, floor.ln(), last.ln(), 1e-10);
+    b.exp()
 }
 
 /// `ln(r/(1−r))`: log-uniform for r → 0, stretched towards the sealing end r → 1 (the grid
