@@ -439,7 +439,7 @@ impl Constrictions {
     }
 
     /// E\[u^k; a < u < b\] (k ≤ 3, 0 ≤ a ≤ b ≤ ∞): the two branches of the fold in closed form
-    /// ([`normal_partial_moment`]), or by Gauss–Legendre (order 8) on an interval narrower than
+    /// (`normal_partial_moment`), or by Gauss–Legendre (order 8) on an interval narrower than
     /// σ/2, where the closed form would lose its digits to cancellation, or from 0 to below σ/20
     /// by the density's Taylor series at 0 (three terms).
     pub fn moment_between(&self, k: usize, a: f64, b: f64) -> f64 {
@@ -682,7 +682,7 @@ const LN_SMALLEST_DOSE: f64 = -6.907_755_278_982_137;
 
 /// The particles that have arrived at the critical level, by their size relative to the
 /// critical gap at arrival, y = d/u_c: the dose m of each bin is `∫ n_p κ S w dt` with
-/// κ = Q̇_open/(N_ch E[x³]) the flow of a channel per unit x³ \[m³/s\] (a channel of relative
+/// κ = Q̇_open/(N_ch E\[x³\]) the flow of a channel per unit x³ \[m³/s\] (a channel of relative
 /// height x carries κ x³), so a channel of relative height x has received x³ Λ(x) particles
 /// per open channel, Λ(x) the dose of the arrivals larger than x (docs/model.md §7). Each bin
 /// keeps its dose and the dose-weighted mean of ln y (one size at a constant u_c stays at its

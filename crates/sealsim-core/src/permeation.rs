@@ -426,7 +426,7 @@ impl PermeationData {
     }
 
     /// The user's figure `user` for its gas (docs/model.md §13.4): Π and D at 23 °C as given,
-    /// E_P and E_D the table's for that gas ([`activation_energy`] of `family`, silicone's
+    /// E_P and E_D the table's for that gas (`activation_energy` of `family`, silicone's
     /// small values for `vmq` and `fvmq`), and for a gas the table lacks (argon, a custom gas)
     /// the table's largest, 45 kJ/mol (conservative above 23 °C).
     pub fn user(user: &UserPermeation, family: Option<&str>) -> Self {

@@ -512,7 +512,7 @@ impl EffectiveMediumTable {
     /// tabulated against s on this table's nodes (each node a Bruggeman solve, built on first
     /// use); free molecular (σ_eff ∝ λ) above λ = 1e5 h_rms. Each column is sealed from its first
     /// sealed node on, falls linearly to 0 in the cell before it, answers its first node's value
-    /// below its range and continues with `(1 − s/s_half)^3` beyond it ([`LazyNodes::look_up`]).
+    /// below its range and continues with `(1 − s/s_half)^3` beyond it (`LazyNodes::look_up`).
     pub fn rarefied_cubed_gap(&self, s: f64, gas: crate::gas::Rarefied) -> f64 {
         let direct = |gas: crate::gas::Rarefied| {
             EffectiveMedium::persson_rarefied(
@@ -630,7 +630,7 @@ impl EffectiveMediumTable {
 
     /// The reduced pressure the table is laid against, at and above which the medium is sealed:
     /// where the contact fraction reaches ½, or — with a molecular size whose threshold lies
-    /// below the table's last node — where `P(u ≤ molecule)` does ([`molecular_threshold`]).
+    /// below the table's last node — where `P(u ≤ molecule)` does (`molecular_threshold`).
     pub fn sealing_reduced_pressure(&self) -> f64 {
         self.s_half
     }
