@@ -295,7 +295,9 @@ fn the_cold_limit_is_located_where_the_ramp_crosses_it() {
         "3.16 mm",
         "lost_interference = false\nlow_temperature = false",
     );
-    assert_eq!(lift_off_alone.0, "leak_rate", "{lift_off_alone:?}");
+    // without the cold checks the night opens at 33.9 h: lift-off, located on the internal steps
+    // (docs/model.md §10.1); the leak-rate crossing beside it is the same event (§8's tie order)
+    assert_eq!(lift_off_alone.0, "lift_off", "{lift_off_alone:?}");
 }
 
 #[test]

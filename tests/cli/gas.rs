@@ -316,17 +316,29 @@ fn bad_gas_input_exits_2_with_file_line_and_key() {
 
 #[test]
 fn a_throughput_criterion_fails_a_leaking_gas_seal() {
-    // the leak is ≈ 5e-6 Pa·m³/s = 5e-5 mbar·L/s: a 1e-5 mbar·L/s criterion fails it at
-    // installation, a 1e-4 one (or 60 sccm ≈ 1.1e-1 Pa·m³/s) does not
-    let fails = |criterion: &str| {
+    // the leak is ≈ 7.7e-6 Pa·m³/s = 7.7e-5 mbar·L/s (rarefied): a 1e-5 mbar·L/s criterion
+    // fails it at installation, a 1e-3 one (or 60 sccm ≈ 1.1e-1 Pa·m³/s) does not
+    let result = |criterion: &str| {
         let (code, stdout, stderr, _, _) = run(&format!(
             "{FLAT_GAS}[failure]\nmax_leak_rate = \"{criterion}\"\n"
         ));
         assert_eq!(code, Some(0), "{stderr}");
-        stdout.contains("FAILS at installation by leak_rate")
+        stdout
+            .lines()
+            .find(|l| l.starts_with("result"))
+            .unwrap_or_default()
+            .to_owned()
     };
+    let fails = |criterion: &str| result(criterion).contains("FAILS at installation by leak_rate");
     assert!(fails("1e-5 mbar*L/s"));
-    assert!(!fails("1e-4 mbar*L/s"));
+    // 1e-4 lies between the levels (7.7e-5 here, 1.06e-4 mbar·L/s at the effective medium):
+    // the model does not decide it (docs/model.md §4.1)
+    assert!(
+        result("1e-4 mbar*L/s").contains("UNDECIDED by the model"),
+        "{}",
+        result("1e-4 mbar*L/s")
+    );
+    assert!(!fails("1e-3 mbar*L/s"));
     assert!(!fails("60 sccm"));
     assert!(fails("1e-3 sccm"));
 }
