@@ -585,6 +585,17 @@ impl ContactPath {
                     junction_conductance(u_c, shape_factor, viscosity)
                 });
         }
+        if let ContactPath::EffectiveMedium(t) = self {
+            // u_eff alone: what `channel_conductance` of its junction gives, bit for bit, without
+            // the reported junction's ζc and λc (a table look-up of the critical junction level
+            // per call, most of an interface solve's cost)
+            let u = t.effective_gap(s);
+            return if u > 0.0 && passes_molecule(u, molecular_size) {
+                junction_conductance(u, 1.0, viscosity)
+            } else {
+                0.0
+            };
+        }
         self.channel_conductance(
             &self.critical_junction(s),
             shape_factor,
