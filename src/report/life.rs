@@ -2488,7 +2488,7 @@ mod tests {
             "{line}"
         );
         assert!(
-            line.ends_with(",,leaking,,no ageing constants,NOT SOURCED bound: x"),
+            line.ends_with(",,leaking,fails,,,,no ageing constants,NOT SOURCED bound: x"),
             "{line}"
         );
         assert!((volume_cell(line, 16) / (1e-12 * 2.0 * DAY) - 1.0).abs() < 1e-12);
