@@ -13,8 +13,8 @@ use tempfile::TempDir;
 
 const COMPARE_HEADER: &str = "material,name,status,time_to_failure_s,failure_mode,\
 leak_rate_1day_m3_per_s,leak_rate_1year_m3_per_s,leak_rate_10years_m3_per_s,\
-sealing_force_end_N_per_m,retained_force_end,leaked_volume_end_m3,compression_set_end,state_end,notes,\
-activation_energy_source";
+sealing_force_end_N_per_m,retained_force_end,leaked_volume_end_m3,leaked_volume_is_lower_bound,\
+compression_set_end,state_end,verdict,neighbour_level,neighbour_verdict,notes,activation_energy_source";
 
 const SUMMARY_KEYS: [&str; 10] = [
     "scenario",
@@ -652,13 +652,13 @@ fn compare_runs_each_compound() {
     assert_eq!(rows[2][1], "soft test rubber");
     assert_eq!(rows[2][2], "user");
     for row in &rows {
-        assert_eq!(row.len(), 15);
+        assert_eq!(row.len(), 19);
         // the leak rates at 1 day, 1 year, 10 years, and the force at the end
         for cell in &row[5..9] {
             assert!(cell.parse::<f64>().unwrap() > 0.0, "{row:?}");
         }
         assert!(
-            ["sealed", "leaking", "pressure_held", "lift_off"].contains(&row[12].as_str()),
+            ["sealed", "leaking", "pressure_held", "lift_off"].contains(&row[13].as_str()),
             "{row:?}"
         );
     }
