@@ -162,7 +162,13 @@ fn the_shipped_cold_night_fails_the_same_way_at_every_grid_and_level() {
     for ppd in ["5", "10", "160"] {
         let json = at(ppd, "critical-junction");
         assert_eq!(json["verdict_text"], reference["verdict_text"], "{ppd}");
-        assert_eq!(json["leaked_volume_m3"], reference["leaked_volume_m3"]);
+        // the grid only samples: the volume to round-off (3e-12 measured), far inside the 1e-3
+        // tolerance of the internal steps
+        let (v, r) = (
+            json["leaked_volume_m3"].as_f64().unwrap(),
+            reference["leaked_volume_m3"].as_f64().unwrap(),
+        );
+        assert!((v / r - 1.0).abs() < 1e-9, "{v} vs {r} at {ppd}");
     }
     let rough = at("40", "rule-of-thumb");
     assert_eq!(rough["failure_mode"], "lift_off", "{rough}");
