@@ -1718,15 +1718,16 @@ fn band_line(problem: &LifeProblem, result: &LifeResult, band: &LevelBand) -> St
         "at {} (the neighbouring level): leaked volume {}{} m³{ratio}, highest leak rate {} \
          m³/s; {}; {decided}",
         band.level.name(),
-        if band.leaked_volume_is_lower_bound {
-            "≥ "
-        } else {
-            ""
-        },
+        at_least(band.leaked_volume_is_lower_bound),
         human(band.leaked_volume, 3),
         human(band.maximum_leak_rate, 3),
         band_outcome_text(problem, band),
     )
+}
+
+/// "≥ " before a volume that is a lower bound (§8.1), nothing before one that is not.
+fn at_least(lower_bound: bool) -> &'static str {
+    if lower_bound { "≥ " } else { "" }
 }
 
 /// The retained fraction below which a force reads "≈ 0 (fully set)": e^{−K} at K ≈ 14, where
@@ -2253,11 +2254,7 @@ pub fn compare_cells(rows: &[CompareRow<'_>]) -> Vec<Vec<String>> {
             },
             format!(
                 "{}{}",
-                if r.result.leaked_volume_is_lower_bound() {
-                    "≥ "
-                } else {
-                    ""
-                },
+                at_least(r.result.leaked_volume_is_lower_bound()),
                 human(volume * 1e6, 2)
             ),
             set.map_or_else(|| "-".to_owned(), |c| format!("{} %", human(100.0 * c, 2))),

@@ -3,64 +3,16 @@
 //! cold limit of practice (`low_temperature`) for every library class, and a gland ring fitted
 //! at 23 °C unless told otherwise.
 
-use crate::common::{rel, scenario_path};
-use crate::support::sealsim;
+use crate::common::rel;
+use crate::support::{edited, run_in, sealsim, shipped};
 use serde_json::Value;
 use std::fs;
 use std::path::Path;
 use tempfile::TempDir;
 
-/// `sealsim run` of `text` (as `s.toml` in `dir`, beside the files already there): the summary
-/// JSON and stdout.
-fn run_in(dir: &Path, text: &str) -> (Value, String) {
-    let scenario = dir.join("s.toml");
-    fs::write(&scenario, text).unwrap();
-    let json = dir.join("s.json");
-    let _ = fs::remove_file(&json);
-    let out = sealsim()
-        .current_dir(dir)
-        .arg("run")
-        .arg(&scenario)
-        .args(["--summary", "s.json"])
-        .output()
-        .unwrap();
-    let stdout = String::from_utf8(out.stdout).unwrap();
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{stdout}{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let json = serde_json::from_str(&fs::read_to_string(&json).unwrap()).unwrap();
-    (json, stdout)
-}
-
 fn run(text: &str) -> (Value, String) {
     let dir = TempDir::new().unwrap();
-    run_in(dir.path(), text)
-}
-
-fn shipped(name: &str) -> String {
-    fs::read_to_string(scenario_path(name)).unwrap()
-}
-
-/// `text` with each line starting with an edit's prefix replaced by its line (empty: deleted).
-fn edited(text: &str, edits: &[(&str, &str)]) -> String {
-    let mut out = String::new();
-    for line in text.lines() {
-        match edits.iter().find(|(prefix, _)| line.starts_with(prefix)) {
-            Some((_, "")) => {}
-            Some((_, new)) => {
-                out += new;
-                out.push('\n');
-            }
-            None => {
-                out += line;
-                out.push('\n');
-            }
-        }
-    }
-    out
+    run_in(dir.path(), text, &[])
 }
 
 /// (failure mode, time to failure \[s\]; ∞ when it survives).
@@ -167,7 +119,7 @@ fn cold_night(library: &str, coldest: f64, depth: &str, extra: &str) -> (String,
             ("lift_off = true", &format!("lift_off = true\n{extra}")),
         ],
     );
-    failure(&run_in(dir.path(), &text).0)
+    failure(&run_in(dir.path(), &text, &[]).0)
 }
 
 /// The library's compounds, one per class, with their T10 \[°C\] as `sealsim materials list`

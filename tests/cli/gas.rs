@@ -475,36 +475,6 @@ fn leak_on_a_gas_gives_the_throughput_of_the_runs_first_row() {
     assert!(rel(q, run_q) < 1e-12, "leak {q} vs run {run_q}");
 }
 
-/// `sealsim compare SCENARIO --materials IDS -o c.csv` in `dir`: (stdout, header, rows).
-fn compare_csv(scenario: &std::path::Path, ids: &str) -> (String, Vec<String>, Vec<Vec<String>>) {
-    let dir = tempfile::tempdir().unwrap();
-    let csv = dir.path().join("c.csv");
-    let out = crate::support::sealsim()
-        .arg("compare")
-        .arg(scenario)
-        .args(["--materials", ids, "-o"])
-        .arg(&csv)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let mut reader = ::csv::Reader::from_path(&csv).unwrap();
-    let header = reader
-        .headers()
-        .unwrap()
-        .iter()
-        .map(str::to_owned)
-        .collect();
-    let rows = reader
-        .records()
-        .map(|r| r.unwrap().iter().map(str::to_owned).collect())
-        .collect();
-    (String::from_utf8(out.stdout).unwrap(), header, rows)
-}
-
 /// Issue 39.2 / 40.4: the compounds that had no permeation figure (they "survived" the helium
 /// test on an unknown zero) now fail it on their class's figure, each row saying which: IIR on
 /// polyisobutylene (Ito 1961), ACM on poly(ethyl acrylate) (Mogri & Paul 2001, a proxy),
@@ -512,7 +482,7 @@ fn compare_csv(scenario: &std::path::Path, ids: &str) -> (String, Vec<String>, V
 /// where its ageing activation energy comes from.
 #[test]
 fn no_compound_passes_a_helium_test_on_a_figure_it_does_not_have() {
-    let (stdout, header, rows) = compare_csv(
+    let (stdout, header, rows) = crate::support::compare_csv(
         &scenario_path("helium-leak-test-flange.toml"),
         "iir-70,ffkm-75,acm-70,fvmq-70",
     );
@@ -558,7 +528,7 @@ fn no_compound_passes_a_helium_test_on_a_figure_it_does_not_have() {
 /// as NBR and HNBR fail it.
 #[test]
 fn butyl_no_longer_survives_the_hydrogen_line_on_a_zero() {
-    let (_, header, rows) = compare_csv(
+    let (_, header, rows) = crate::support::compare_csv(
         &scenario_path("hydrogen-line-100bar.toml"),
         "iir-70,hnbr-75",
     );

@@ -3,7 +3,7 @@
 //! steps with their error control; `points_per_decade` only samples the history.
 
 use crate::common::scenario_path;
-use crate::support::sealsim;
+use crate::support::run_in;
 use serde_json::Value;
 use std::fs;
 use std::path::Path;
@@ -33,21 +33,7 @@ fn n1(points_per_decade: f64, extra: &str) -> String {
 /// `sealsim run` of `text` in `dir` (beside the night's history): its summary JSON.
 fn summary(dir: &Path, text: &str, args: &[&str]) -> Value {
     fs::write(dir.join("night.csv"), NIGHT).unwrap();
-    fs::write(dir.join("s.toml"), text).unwrap();
-    let _ = fs::remove_file(dir.join("s.json"));
-    let out = sealsim()
-        .current_dir(dir)
-        .args(["run", "s.toml", "--summary", "s.json"])
-        .args(args)
-        .output()
-        .unwrap();
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_str(&fs::read_to_string(dir.join("s.json")).unwrap()).unwrap()
+    run_in(dir, text, args).0
 }
 
 /// The JSON's states: (state, reason, from \[s\]).
@@ -188,21 +174,7 @@ fn an_open_ring_with_a_zero_bound_still_reads_as_a_lower_bound() {
         .unwrap()
         .replace("lift_off = true", "lift_off = false")
         .replace("[seal]", "[seal]\nenergisation_factor = 0");
-    fs::write(dir.path().join("s.toml"), &text).unwrap();
-    let out = sealsim()
-        .current_dir(dir.path())
-        .args(["run", "s.toml", "--summary", "s.json"])
-        .output()
-        .unwrap();
-    let stdout = String::from_utf8(out.stdout).unwrap();
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let json: Value =
-        serde_json::from_str(&fs::read_to_string(dir.path().join("s.json")).unwrap()).unwrap();
+    let (json, stdout) = run_in(dir.path(), &text, &[]);
     assert_eq!(json["verdict"], "open", "{json}");
     assert_eq!(json["leaked_volume_is_lower_bound"], true);
     let line = stdout

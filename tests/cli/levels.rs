@@ -2,7 +2,7 @@
 //! neighbouring fidelity level decides otherwise is UNDECIDED in every output, one it decides
 //! the same way says so.
 
-use crate::support::{run_text, sealsim};
+use crate::support::{compare_csv, run_text, sealsim};
 
 /// The spring-loaded face seal (HNBR, 0.5 bar of water over 30 years) judged on its leaked
 /// volume: the critical junction leaks 4.1e-9 m³ and the effective medium 7.3e-8 m³ in 30 years
@@ -48,27 +48,12 @@ fn a_verdict_the_levels_disagree_on_is_undecided_everywhere() {
     assert_eq!(out.status.code(), Some(7));
 
     // compare: the neighbour's verdict beside this level's
-    let csv = dir.path().join("c.csv");
-    let out = sealsim()
-        .arg("compare")
-        .arg(&scenario)
-        .args(["--materials", "hnbr-75", "-o"])
-        .arg(&csv)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let table = std::fs::read_to_string(&csv).unwrap();
-    let mut reader = csv::Reader::from_reader(table.as_bytes());
-    let header = reader.headers().unwrap().clone();
-    let row = reader.records().next().unwrap().unwrap();
+    let (_, header, rows) = compare_csv(&scenario, "hnbr-75");
+    let row = &rows[0];
     let col = |name: &str| &row[header.iter().position(|h| h == name).unwrap()];
-    assert_eq!(col("verdict"), "undecided", "{table}");
-    assert_eq!(col("neighbour_level"), "effective-medium", "{table}");
-    assert!(col("neighbour_verdict").starts_with("fails"), "{table}");
+    assert_eq!(col("verdict"), "undecided", "{rows:?}");
+    assert_eq!(col("neighbour_level"), "effective-medium", "{rows:?}");
+    assert!(col("neighbour_verdict").starts_with("fails"), "{rows:?}");
 }
 
 #[test]

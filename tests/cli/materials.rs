@@ -843,27 +843,8 @@ fn compare_rows(edits: &[(&str, &str)], materials: &str) -> Vec<(String, Vec<Str
     }
     let scenario = dir.path().join("s.toml");
     fs::write(&scenario, text).unwrap();
-    let csv = dir.path().join("c.csv");
-    let out = sealsim()
-        .arg("compare")
-        .arg(&scenario)
-        .args(["--materials", materials, "-o"])
-        .arg(&csv)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let mut reader = ::csv::Reader::from_path(&csv).unwrap();
-    reader
-        .records()
-        .map(|r| {
-            let r = r.unwrap();
-            (r[0].to_owned(), r.iter().map(str::to_owned).collect())
-        })
-        .collect()
+    let (_, _, rows) = crate::support::compare_csv(&scenario, materials);
+    rows.into_iter().map(|r| (r[0].clone(), r)).collect()
 }
 
 /// Issue 31: the rankings field practice makes. In 80 °C water and in 110 °C glycol coolant

@@ -586,27 +586,13 @@ fn malformed_temperature_histories_are_located() {
     let scenario = nbr_with(&out, "temperature = \"80 C\"", "history = \"T.csv\"");
     out.run_ok(&scenario, &[]);
     let csv = fs::read_to_string(out.path("h.csv")).unwrap();
-    let first: f64 = csv
-        .lines()
-        .nth(1)
-        .unwrap()
-        .split(',')
-        .nth(1)
-        .unwrap()
-        .parse()
-        .unwrap();
+    // the temperature column of a row
+    let temperature = |row: &str| -> f64 { row.split(',').nth(1).unwrap().parse().unwrap() };
+    let first = temperature(csv.lines().nth(1).unwrap());
     // fitted at 23 °C (the gland's default, docs/model.md §5.2), then the history's 20 °C at
     // t = 0 onwards; the last row at the history's 80 °C
     assert!((first - 296.15).abs() < 1e-9, "{first}");
-    let last: f64 = csv
-        .lines()
-        .last()
-        .unwrap()
-        .split(',')
-        .nth(1)
-        .unwrap()
-        .parse()
-        .unwrap();
+    let last = temperature(csv.lines().last().unwrap());
     assert!((last - 353.15).abs() < 1e-9, "{last}");
 }
 

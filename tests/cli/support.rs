@@ -58,6 +58,88 @@ pub fn run_text(text: &str) -> (Option<i32>, String, String, Option<String>, Opt
     )
 }
 
+/// The text of the shipped scenario `scenarios/NAME`.
+pub fn shipped(name: &str) -> String {
+    std::fs::read_to_string(crate::common::scenario_path(name)).unwrap()
+}
+
+/// `text` with each line starting with an edit's prefix replaced by its line (empty: deleted).
+pub fn edited(text: &str, edits: &[(&str, &str)]) -> String {
+    let mut out = String::new();
+    for line in text.lines() {
+        match edits.iter().find(|(prefix, _)| line.starts_with(prefix)) {
+            Some((_, "")) => {}
+            Some((_, new)) => {
+                out += new;
+                out.push('\n');
+            }
+            None => {
+                out += line;
+                out.push('\n');
+            }
+        }
+    }
+    out
+}
+
+/// `sealsim compare SCENARIO --materials IDS -o c.csv` in a fresh directory, expecting
+/// success: (stdout, the CSV's header, its rows), read as CSV (names and notes hold commas).
+pub fn compare_csv(
+    scenario: &std::path::Path,
+    ids: &str,
+) -> (String, Vec<String>, Vec<Vec<String>>) {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = dir.path().join("c.csv");
+    let out = sealsim()
+        .arg("compare")
+        .arg(scenario)
+        .args(["--materials", ids, "-o"])
+        .arg(&csv)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let mut reader = ::csv::Reader::from_path(&csv).unwrap();
+    let header = reader
+        .headers()
+        .unwrap()
+        .iter()
+        .map(str::to_owned)
+        .collect();
+    let rows = reader
+        .records()
+        .map(|r| r.unwrap().iter().map(str::to_owned).collect())
+        .collect();
+    (String::from_utf8(out.stdout).unwrap(), header, rows)
+}
+
+/// `sealsim run s.toml --summary s.json ARGS…` on `text` written as `s.toml` in `dir` (run
+/// there, so that relative files beside it are found), expecting exit 0: (the summary JSON,
+/// stdout).
+pub fn run_in(dir: &std::path::Path, text: &str, args: &[&str]) -> (serde_json::Value, String) {
+    std::fs::write(dir.join("s.toml"), text).unwrap();
+    let json = dir.join("s.json");
+    let _ = std::fs::remove_file(&json);
+    let out = sealsim()
+        .current_dir(dir)
+        .args(["run", "s.toml", "--summary", "s.json"])
+        .args(args)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{stdout}{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let summary = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    (summary, stdout)
+}
+
 /// Asserts that `text` (named `what` in the message) has no NaN or infinity: as a whole word,
 /// so that a temporary directory named like `/tmp/.tmpdKmNaN` is not taken for one.
 pub fn no_nan(text: &str, what: &str) {

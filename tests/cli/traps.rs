@@ -6,15 +6,8 @@
 //! tests, fractional terms per decade and `--like` (`fit.rs`), ageing on by default
 //! (`rubber.rs`), studies that finish (`study.rs`).
 
-use crate::support::sealsim;
+use crate::support::{sealsim, shipped};
 use std::path::{Path, PathBuf};
-
-fn shipped(name: &str) -> String {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("scenarios")
-        .join(name);
-    std::fs::read_to_string(path).unwrap()
-}
 
 /// `sealsim ARGS` in `dir`: (exit code, stdout, stderr).
 fn sealsim_in(dir: &Path, args: &[&str]) -> (Option<i32>, String, String) {

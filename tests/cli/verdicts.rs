@@ -4,7 +4,7 @@
 //! the keys that state all this refuse bad values.
 
 use crate::common::{rel, scenario_path};
-use crate::support::sealsim;
+use crate::support::{compare_csv, edited, sealsim, shipped};
 use serde_json::Value;
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -61,28 +61,10 @@ fn run(text: &str) -> Run {
     run_in(dir.path(), text, &[])
 }
 
-fn shipped(name: &str) -> String {
-    fs::read_to_string(scenario_path(name)).unwrap()
-}
-
 /// The headline ring (`oring-nbr-water-80c.toml`) edited: `edits` are (line prefix, the line's
 /// replacement; empty: deleted).
 fn headline_with(edits: &[(&str, &str)]) -> String {
-    let mut out = String::new();
-    for line in shipped("oring-nbr-water-80c.toml").lines() {
-        match edits.iter().find(|(prefix, _)| line.starts_with(prefix)) {
-            Some((_, "")) => {}
-            Some((_, new)) => {
-                out += new;
-                out.push('\n');
-            }
-            None => {
-                out += line;
-                out.push('\n');
-            }
-        }
-    }
-    out
+    edited(&shipped("oring-nbr-water-80c.toml"), edits)
 }
 
 fn time_to_failure(r: &Run) -> (String, f64) {
@@ -389,23 +371,10 @@ fn extrusion_beyond_the_chart_needs_back_up_rings() {
 #[test]
 fn compare_of_a_gas_fails_the_compounds_run_fails() {
     let materials = ["fkm-75", "nbr-70", "epdm-70", "vmq-70"];
-    let dir = TempDir::new().unwrap();
-    let csv = dir.path().join("c.csv");
-    let out = sealsim()
-        .arg("compare")
-        .arg(scenario_path("helium-leak-test-flange.toml"))
-        .args(["--materials", &materials.join(","), "-o"])
-        .arg(&csv)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    let (_, header, rows) = compare_csv(
+        &scenario_path("helium-leak-test-flange.toml"),
+        &materials.join(","),
     );
-    // (names hold commas: read the CSV as CSV)
-    let mut reader = csv::Reader::from_path(&csv).unwrap();
-    let header = reader.headers().unwrap().clone();
     assert!(
         header
             .iter()
@@ -413,8 +382,8 @@ fn compare_of_a_gas_fails_the_compounds_run_fails() {
         "{header:?}"
     );
     let col = |name: &str| header.iter().position(|c| c == name).unwrap();
-    for (record, id) in reader.records().zip(materials) {
-        let cells = record.unwrap();
+    let dir = TempDir::new().unwrap();
+    for (cells, id) in rows.iter().zip(materials) {
         let variant = shipped("helium-leak-test-flange.toml")
             .replace("library = \"fkm-75\"", &format!("library = \"{id}\""));
         let r = run_in(dir.path(), &variant, &[]);

@@ -42,7 +42,7 @@ use std::f64::consts::PI;
 use statrs::distribution::{ContinuousCDF, LogNormal, Weibull};
 use statrs::function::gamma::gamma;
 
-use crate::math::quadrature::gauss_legendre;
+use crate::math::quadrature::{gauss_integral, rule};
 use crate::math::special::erfc;
 
 /// Default relative tolerance of the open fraction (`[simulation] clogging_tolerance`).
@@ -397,24 +397,6 @@ fn normal_partial_moment(mu: f64, sigma: f64, k: usize, a: f64, b: f64) -> f64 {
         .sum()
 }
 
-/// Gauss–Legendre nodes and weights of order 8 on \[−1, 1\] (computed once).
-fn gauss8() -> &'static (Vec<f64>, Vec<f64>) {
-    static RULE: std::sync::OnceLock<(Vec<f64>, Vec<f64>)> = std::sync::OnceLock::new();
-    RULE.get_or_init(|| gauss_legendre(8))
-}
-
-/// Gauss–Legendre nodes and weights of order 2 on \[−1, 1\] (computed once).
-fn gauss2() -> &'static (Vec<f64>, Vec<f64>) {
-    static RULE: std::sync::OnceLock<(Vec<f64>, Vec<f64>)> = std::sync::OnceLock::new();
-    RULE.get_or_init(|| gauss_legendre(2))
-}
-
-/// Gauss–Legendre nodes and weights of order 4 on \[−1, 1\] (computed once).
-fn gauss4() -> &'static (Vec<f64>, Vec<f64>) {
-    static RULE: std::sync::OnceLock<(Vec<f64>, Vec<f64>)> = std::sync::OnceLock::new();
-    RULE.get_or_init(|| gauss_legendre(4))
-}
-
 /// The heights of the constrictions a particle meets at one magnification ζ, in units of the
 /// critical gap u_c: u = |X|, X ~ N(`centre`, `spread`²), the component of Persson's
 /// separation distribution P(u) of that magnification — a normal centred at u1(ζ) with the
@@ -468,17 +450,7 @@ impl Constrictions {
             return g * (term(0) + 0.5 * s2 * term(2) + s4 / 24.0 * term(4));
         }
         if b - a < 0.5 * sigma {
-            let (nodes, weights) = gauss8();
-            let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
-            return nodes
-                .iter()
-                .zip(weights)
-                .map(|(z, w)| {
-                    let x = mid + half * z;
-                    w * x.powi(k as i32) * self.density(x)
-                })
-                .sum::<f64>()
-                * half;
+            return gauss_integral(|x| x.powi(k as i32) * self.density(x), 8, a, b);
         }
         let m =
             normal_partial_moment(mu, sigma, k, a, b) + normal_partial_moment(-mu, sigma, k, a, b);
@@ -800,7 +772,7 @@ impl ArrivalDoses {
         // downwards from it: on (x_{i−1}, x_i) Λ is the dose of the points i, i + 1, …; the
         // heights above μ + 10σ carry no flow worth counting
         let support_hi = mu + 10.0 * sigma;
-        let (nodes, weights) = gauss4();
+        let (nodes, weights) = rule(4);
         let mut dose = 0.0;
         let mut upper = f64::NAN;
         for bin in self.bins.iter().rev().filter(|b| b.0 > 0.0) {
@@ -845,7 +817,7 @@ impl ArrivalDoses {
         // a sliver between two neighbouring bins (≤ σ/16, ≤ 0.05 in x³Λ) takes two nodes
         let (nodes, weights) = if b - a <= 0.25 * width_x && (b.powi(3) - a.powi(3)) * dose <= 0.05
         {
-            let (n, w) = gauss2();
+            let (n, w) = rule(2);
             (n.as_slice(), w.as_slice())
         } else {
             (nodes, weights)

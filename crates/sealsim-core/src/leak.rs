@@ -695,9 +695,10 @@ impl ContactPath {
     /// The reduced pressure `s_m = e/E*` at and above which the level's gap (u_c; u_eff) is no
     /// wider than `molecular_size` \[m\], so that [`Self::conductance`] is 0 (docs/model.md
     /// §3.6, §8.1). The gap falls with the pressure, so the cut is one reduced pressure for a
-    /// surface and a fluid: found once by bisection in ln s to 1e-10 — between the
-    /// level's own sealing pressure and 1e-6 of it (the effective medium's table), or 1e-30 and
-    /// 1e3 — and handed to the uniform interface's quadrature as its ceiling
+    /// surface and a fluid: found once, to 1e-10, by Illinois in logit(s/s_half) between 1e-6
+    /// of the effective medium's threshold s_half and 1e-12 short of it, otherwise by bisection
+    /// in ln s between 1e-30 and 1e3 — and handed to the uniform interface's quadrature as its
+    /// ceiling
     /// ([`crate::interface::InterfaceSettings::ceiling`]), which then integrates the smooth
     /// part of σ(e) only. `∞` if the gap is wider at 1e3 (no surface seals that late); 1e-30 if
     /// it is no wider even there.
@@ -713,37 +714,31 @@ impl ContactPath {
         };
         // the effective medium: ln u_eff is smooth and nearly linear in logit(s/s_half) (slope
         // → −1 at the threshold, docs/model.md §4), so Illinois finds u_eff = m in a few lazy
-        // table nodes where bisection in ln s built dozens; the same bracket convention (the
-        // cut is the upper end, where the gap no longer passes)
+        // table nodes where bisection in ln s built dozens; the cut is the bracket's upper end,
+        // where the gap no longer passes. u_eff is 0 at and above s_half and the power law keeps
+        // it positive below, so f is finite on the bracket.
         if let ContactPath::EffectiveMedium(t) = self {
             use crate::contact::table::{logistic, logit};
             let s_half = t.sealing_reduced_pressure();
-            let (v_lo, v_hi) = (logit(1e-6), logit(1.0 - 1e-12));
-            let gap = |v: f64| t.effective_gap(s_half * logistic(v));
-            let below = gap(v_lo);
-            if passes_molecule(below, molecular_size) && !passes_molecule(gap(v_hi), molecular_size)
-            {
-                let ln_m = molecular_size.ln();
-                // f < 0 where the gap passes (ln u_eff > ln m); the power law keeps u_eff > 0 for
-                // r < 1, so f is finite on the bracket
-                let f = |v: f64| ln_m - gap(v).max(f64::MIN_POSITIVE).ln();
-                let (_, hi) = crate::math::roots::illinois(f, v_lo, v_hi, 1e-10);
+            let ln_m = molecular_size.ln();
+            let f = |v: f64| {
+                ln_m - t
+                    .effective_gap(s_half * logistic(v))
+                    .max(f64::MIN_POSITIVE)
+                    .ln()
+            };
+            let (lo, hi) = (logit(1e-6), logit(1.0 - 1e-12));
+            let (f_lo, f_hi) = (f(lo), f(hi));
+            if f_lo < 0.0 {
+                if f_hi < 0.0 {
+                    // wider than a molecule to within 1e-12 of its threshold
+                    return s_half;
+                }
+                let (_, hi) = crate::math::roots::illinois(f, (lo, f_lo), (hi, f_hi), 1e-10);
                 return s_half * logistic(hi);
             }
         }
-        // where the level's gap is 0 at and above its sealing pressure, the cut lies below it;
-        // the effective medium's table spans 6 decades beneath (outside it every gap is a solve)
-        let narrow = match self {
-            ContactPath::EffectiveMedium(t) => {
-                let s = t.sealing_reduced_pressure();
-                Some((1e-6 * s, s))
-            }
-            _ => None,
-        };
-        let (lo, hi) = match narrow {
-            Some((a, b)) if passes(a) && !passes(b) => (a.ln(), b.ln()),
-            _ => (1e-30f64.ln(), 1e3f64.ln()),
-        };
+        let (lo, hi) = (1e-30f64.ln(), 1e3f64.ln());
         if passes(hi.exp()) {
             return f64::INFINITY;
         }

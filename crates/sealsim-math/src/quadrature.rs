@@ -41,6 +41,35 @@ pub fn gauss_legendre(n: usize) -> (Vec<f64>, Vec<f64>) {
     (x, w)
 }
 
+/// Most nodes of a rule [`rule`] keeps.
+pub const CACHED_ORDERS: usize = 64;
+
+/// The n-point rule of [`gauss_legendre`] (1 ≤ n ≤ [`CACHED_ORDERS`]), computed once per order
+/// and shared: for the inner loops that integrate many short intervals with the same rule.
+pub fn rule(n: usize) -> &'static (Vec<f64>, Vec<f64>) {
+    static RULES: [std::sync::OnceLock<(Vec<f64>, Vec<f64>)>; CACHED_ORDERS] =
+        [const { std::sync::OnceLock::new() }; CACHED_ORDERS];
+    assert!(
+        (1..=CACHED_ORDERS).contains(&n),
+        "cached Gauss-Legendre rules have 1 to {CACHED_ORDERS} nodes, not {n}"
+    );
+    RULES[n - 1].get_or_init(|| gauss_legendre(n))
+}
+
+/// `∫_a^b f(x) dx` by the n-point Gauss–Legendre rule on the one panel \[a, b\] ([`rule`]):
+/// `½(b − a) Σ w_i f(m + ½(b − a) x_i)`, m the midpoint; exact for polynomials of degree
+/// 2n − 1.
+pub fn gauss_integral(f: impl Fn(f64) -> f64, n: usize, a: f64, b: f64) -> f64 {
+    let (nodes, weights) = rule(n);
+    let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
+    nodes
+        .iter()
+        .zip(weights)
+        .map(|(x, w)| w * f(mid + half * x))
+        .sum::<f64>()
+        * half
+}
+
 /// Most panels [`composite`] cuts one interval into: a bound on the cost of one integral (an
 /// interval wider than `MAX_PANELS × max_width` gets wider panels, a coarser rule, rather than
 /// an unbounded loop).
@@ -79,6 +108,20 @@ pub fn composite<'a>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_cached_rule_is_the_rule_and_integrates_a_cubic_on_any_interval() {
+        for n in [1, 2, 8, 64] {
+            assert_eq!(rule(n), &gauss_legendre(n));
+        }
+        // ∫_1^3 x³ dx = (81 − 1)/4 = 20, exact from two nodes on
+        for n in [2, 4, 8] {
+            assert!(
+                (gauss_integral(|x| x.powi(3), n, 1.0, 3.0) - 20.0).abs() < 1e-13,
+                "{n}"
+            );
+        }
+    }
 
     #[test]
     fn integrates_polynomials_exactly_to_degree_2n_minus_1() {

@@ -60,17 +60,24 @@ pub fn try_bisect<E>(
 }
 
 /// The root of a continuous `f` with `f(lo) < 0 ≤ f(hi)` by the Illinois variant of regula
-/// falsi, to a bracket no wider than `tol` (at most 200 steps). Returns the final bracket
-/// `(lo, hi)` with `f(lo) < 0 ≤ f(hi)`; an input that is not such a bracket is returned as it is.
+/// falsi, to a bracket no wider than `tol` (at most 200 steps). The ends come with their values
+/// `(lo, f(lo))`, `(hi, f(hi))`, which a caller has usually computed to decide that there is a
+/// root to find. Returns the final bracket `(lo, hi)` with `f(lo) < 0 ≤ f(hi)`; an input that
+/// is not such a bracket is returned as it is.
 ///
 /// Each step takes the secant point of the bracket (the midpoint where round-off would put it
 /// on an end); when the same end is kept twice its function value is halved, which makes the
 /// convergence superlinear (order ≈ 1.44) on smooth functions where plain regula falsi stalls
 /// (Dowell & Jarratt, "A modified regula falsi method for computing the root of an equation",
 /// BIT 11 (1971) 168–174).
-pub fn illinois(mut f: impl FnMut(f64) -> f64, lo: f64, hi: f64, tol: f64) -> (f64, f64) {
+pub fn illinois(
+    mut f: impl FnMut(f64) -> f64,
+    (lo, f_lo): (f64, f64),
+    (hi, f_hi): (f64, f64),
+    tol: f64,
+) -> (f64, f64) {
     let (mut a, mut b) = (lo, hi);
-    let (mut fa, mut fb) = (f(a), f(b));
+    let (mut fa, mut fb) = (f_lo, f_hi);
     // which end the last step replaced: +1 the upper, −1 the lower
     let mut side = 0i8;
     for _ in 0..200 {
@@ -186,6 +193,34 @@ mod tests {
         assert_eq!(result, Err("stop"));
         // 0.5, 0.25, 0.125: the third midpoint is below 0.2
         assert_eq!(calls, 3);
+    }
+
+    /// The cube root of 2 as the root of x³ − 2 on [0, 2] to 1e-12, in far fewer evaluations than
+    /// bisection's 41; and on a root where plain regula falsi keeps one end for ever (a convex
+    /// exponential, e^{10x} − 2 on [0, 1]) the halving of the kept end still converges.
+    #[test]
+    fn illinois_finds_roots_faster_than_bisection() {
+        let count = std::cell::Cell::new(0);
+        let f = |x: f64| {
+            count.set(count.get() + 1);
+            x.powi(3) - 2.0
+        };
+        let (lo, hi) = illinois(f, (0.0, -2.0), (2.0, 6.0), 1e-12);
+        let root = 2f64.cbrt();
+        assert!(lo <= root && root <= hi && hi - lo <= 1e-12, "[{lo}, {hi}]");
+        assert!(count.get() < 30, "{} evaluations", count.get());
+        let g = |x: f64| (10.0 * x).exp() - 2.0;
+        let (lo, hi) = illinois(g, (0.0, g(0.0)), (1.0, g(1.0)), 1e-12);
+        let root = 2f64.ln() / 10.0;
+        assert!(lo <= root && root <= hi && hi - lo <= 1e-12, "[{lo}, {hi}]");
+        // not a bracket: returned as it is, with no evaluation
+        count.set(0);
+        let f = |x: f64| {
+            count.set(count.get() + 1);
+            x
+        };
+        assert_eq!(illinois(f, (1.0, 1.0), (2.0, 2.0), 1e-12), (1.0, 2.0));
+        assert_eq!(count.get(), 0);
     }
 
     #[test]

@@ -323,20 +323,38 @@ impl LazyNodes {
         i as f64 * self.h
     }
 
-    /// The values at nodes `from..from + n` (inside the grid); the missing ones computed by
-    /// `f(v_i)`, on two threads when more than one is missing.
-    fn values(
+    /// The values at nodes `from..from + N` (inside the grid); the missing ones computed by
+    /// `f(v_i)`, on two threads when more than one is missing. No allocation when all are
+    /// built (the common case: a look-up per strip and state evaluation).
+    fn values<const N: usize>(
         &self,
         from: i64,
-        n: usize,
         f: &(dyn Fn(f64) -> Option<f64> + Sync),
-    ) -> Vec<Option<f64>> {
+    ) -> [Option<f64>; N] {
+        let slot = |i: i64| &self.values[(i - self.first) as usize];
+        let range = from..from + N as i64;
+        if range.clone().any(|i| slot(i).get().is_none()) {
+            self.build_missing(from, N, f);
+        }
+        let values: [Option<f64>; N] = std::array::from_fn(|k| {
+            *slot(from + k as i64).get_or_init(|| f(self.abscissa(from + k as i64)))
+        });
+        for (i, v) in (from..).zip(&values) {
+            if v.is_none() {
+                self.sealed_from
+                    .fetch_min(i, std::sync::atomic::Ordering::Relaxed);
+            }
+        }
+        values
+    }
+
+    /// Builds the missing nodes of `from..from + n`, with the next node along when a look-up
+    /// moving along the grid misses one at an end of its stencil (on the second thread: a
+    /// node's value does not depend on when it is built).
+    fn build_missing(&self, from: i64, n: usize, f: &(dyn Fn(f64) -> Option<f64> + Sync)) {
         let slot = |i: i64| &self.values[(i - self.first) as usize];
         let range = from..from + n as i64;
-        let mut missing: Vec<i64> = range.clone().filter(|&i| slot(i).get().is_none()).collect();
-        // one node missing at an end of the stencil: a lookup moving along the grid; its next
-        // node is built alongside on the second thread (a node's value does not depend on when
-        // it is built)
+        let mut missing: Vec<i64> = range.filter(|&i| slot(i).get().is_none()).collect();
         if let [i] = missing[..] {
             let next = if i == from + n as i64 - 1 {
                 i + 1
@@ -360,16 +378,6 @@ impl LazyNodes {
                 let _ = slot(i).set(value);
             }
         }
-        let values: Vec<Option<f64>> = range
-            .map(|i| *slot(i).get_or_init(|| f(self.abscissa(i))))
-            .collect();
-        for (i, v) in (from..).zip(&values) {
-            if v.is_none() {
-                self.sealed_from
-                    .fetch_min(i, std::sync::atomic::Ordering::Relaxed);
-            }
-        }
-        values
     }
 
     /// The tabulated `y(v)` (a logarithm; −∞ where sealed):
@@ -386,7 +394,7 @@ impl LazyNodes {
             return f64::NEG_INFINITY;
         }
         if v > hi {
-            return match self.values(self.last(), 1, f)[0] {
+            return match self.values::<1>(self.last(), f)[0] {
                 Some(y) => y + power * (softplus(hi) - softplus(v)),
                 None => f64::NEG_INFINITY,
             };
@@ -394,7 +402,7 @@ impl LazyNodes {
         let t = (v / self.h).max(self.first as f64);
         let j = (t.floor() as i64 - 1).clamp(self.first, self.last() - 3);
         let s = t - j as f64;
-        let y = self.values(j, 4, f);
+        let y = self.values::<4>(j, f);
         if let [Some(y0), Some(y1), Some(y2), Some(y3)] = y[..] {
             let (a, b, c, d) = (s, s - 1.0, s - 2.0, s - 3.0);
             return -y0 * b * c * d / 6.0 + y1 * a * c * d / 2.0 - y2 * a * b * d / 2.0
@@ -668,7 +676,7 @@ impl EffectiveMediumTable {
 /// which rises with the pressure: more contact, narrower gaps). Where that happens above the
 /// table's last node, `(1 − upper_gap) s_contact`, the table is unchanged and the direct solves
 /// beyond its last node find the threshold (one distribution built to check); below it, the
-/// threshold is found by bisection in ln s (to 1e-10, over 15 decades) and the grid is laid
+/// threshold is found by Illinois in ln s (to 1e-10, over 15 decades) and the grid is laid
 /// against it, so that the approach to the medium's own threshold is tabulated.
 fn molecular_threshold(
     exact: &PerssonContact,
@@ -681,20 +689,21 @@ fn molecular_threshold(
     if m.is_nan() || m <= 0.0 {
         return s_contact;
     }
-    let sealed = |s: f64| super::SeparationDistribution::persson(exact, s, settings).cdf(m) >= 0.5;
-    let last = s_contact * (1.0 - upper_gap);
-    if !sealed(last) {
+    // P(u ≤ m) − ½ (≥ 0: sealed) is smooth in ln s: Illinois brackets its root in ~10
+    // distributions where bisection to 1e-10 took ~40 (each a whole separation distribution);
+    // the bracket's upper end is the threshold
+    let g = |x: f64| super::SeparationDistribution::persson(exact, x.exp(), settings).cdf(m) - 0.5;
+    let last = (s_contact * (1.0 - upper_gap)).ln();
+    let g_last = g(last);
+    if g_last < 0.0 {
         return s_contact;
     }
-    let floor = s_contact * 1e-15;
-    if sealed(floor) {
-        return floor;
+    let floor = (s_contact * 1e-15).ln();
+    let g_floor = g(floor);
+    if g_floor >= 0.0 {
+        return floor.exp();
     }
-    // cdf(m) − ½ is smooth in ln s: Illinois brackets the root in ~10 distributions where
-    // bisection to 1e-10 took ~40 (each a whole separation distribution); the bracket's upper
-    // end is the threshold, as before
-    let g = |x: f64| super::SeparationDistribution::persson(exact, x.exp(), settings).cdf(m) - 0.5;
-    let (_, b) = crate::math::roots::illinois(g, floor.ln(), last.ln(), 1e-10);
+    let (_, b) = crate::math::roots::illinois(g, (floor, g_floor), (last, g_last), 1e-10);
     b.exp()
 }
 

@@ -11,8 +11,7 @@
 //! Everything is carried as the *rate* `r(T) = 1/a_T`, through its natural log, so that shift
 //! factors of hundreds of decades neither overflow nor lose precision.
 
-use crate::math::quadrature::gauss_legendre;
-use std::sync::OnceLock;
+use crate::math::quadrature::gauss_integral;
 
 /// Molar gas constant R \[J/(mol·K)\] (CODATA 2018, exact).
 pub const GAS_CONSTANT: f64 = 8.314_462_618;
@@ -407,31 +406,15 @@ fn crossings(history: &TemperatureHistory, level: f64, a: f64, b: f64) -> Vec<f6
     out
 }
 
-fn rules() -> &'static [(Vec<f64>, Vec<f64>); 2] {
-    static RULES: OnceLock<[(Vec<f64>, Vec<f64>); 2]> = OnceLock::new();
-    RULES.get_or_init(|| [gauss_legendre(8), gauss_legendre(16)])
-}
-
-fn gl(f: &impl Fn(f64) -> f64, rule: &(Vec<f64>, Vec<f64>), a: f64, b: f64) -> f64 {
-    let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
-    rule.0
-        .iter()
-        .zip(&rule.1)
-        .map(|(x, w)| w * f(mid + half * x))
-        .sum::<f64>()
-        * half
-}
-
 /// Globally adaptive Gauss–Legendre: 16-node estimates, error from the 8-node rule; the
 /// sub-interval with the largest error is bisected until the summed error is below 1e-12 of the
 /// summed integral, or 256 sub-intervals are in use (a bounded cost: near the WLF frozen limit
 /// the integrand falls by hundreds of decades within a step, where local tests can recurse
 /// without end).
 fn adaptive(f: &impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {
-    let [coarse, fine] = rules();
     let piece = |a: f64, b: f64| {
-        let hi = gl(f, fine, a, b);
-        (a, b, hi, (hi - gl(f, coarse, a, b)).abs())
+        let hi = gauss_integral(f, 16, a, b);
+        (a, b, hi, (hi - gauss_integral(f, 8, a, b)).abs())
     };
     let mut parts = vec![piece(a, b)];
     loop {

@@ -455,8 +455,6 @@ pub struct Course {
     pub lifted_volume: f64,
     /// How long the seal was lifted off \[s\].
     pub lifted_duration: f64,
-    /// Whether the seal was ever lifted off (whatever the bound of its flow, 0 included).
-    pub ever_lifted: bool,
     /// The first internal time at which the shutdown check found the interference lost \[s\].
     pub interference_lost: Option<f64>,
     /// Internal steps accepted.
@@ -466,50 +464,95 @@ pub struct Course {
     pub evaluations: usize,
 }
 
+/// One point of a run's course, as [`Course::observe`] takes it in.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct CoursePoint {
+    /// \[s\]
+    pub time: f64,
+    pub state: SealState,
+    /// \[m³/s\]
+    pub leak_rate: f64,
+    /// Sealing force per unit length \[N/m\].
+    pub force: f64,
+    /// Peak contact pressure with the energisation \[Pa\].
+    pub peak_pressure: f64,
+    /// Leaked volume since installation \[m³\].
+    pub leaked_volume: f64,
+    /// Whether the shutdown check finds the interference lost here.
+    pub interference_lost: bool,
+}
+
 impl Course {
-    /// The course a history shows at its own rows (for results built by hand, e.g. in tests of
-    /// the reports): states at the rows they first hold at, extremes over the rows.
-    pub fn from_rows(rows: &[HistoryRow]) -> Self {
-        let mut course = Course {
+    /// A course with nothing observed yet, `evaluations` state evaluations spent.
+    pub(crate) fn empty(evaluations: usize) -> Self {
+        Course {
             states: Vec::new(),
             max_leak_rate: (0.0, 0.0),
             min_force: (f64::INFINITY, 0.0),
             min_peak_pressure: (f64::INFINITY, 0.0),
-            leaked_volume: rows.last().map_or(0.0, |r| r.leaked_volume),
+            leaked_volume: 0.0,
             lifted_volume: 0.0,
             lifted_duration: 0.0,
-            ever_lifted: false,
             interference_lost: None,
-            steps: rows.len().saturating_sub(1),
-            evaluations: rows.len(),
-        };
-        let mut previous: Option<&HistoryRow> = None;
+            steps: 0,
+            evaluations,
+        }
+    }
+
+    /// Takes in the point `p`, reached from `previous` = (time \[s\], leaked volume \[m³\]) of
+    /// the point before (`None` for the first): a new state, extremes (the first on a tie), the
+    /// volume and time spent lifted off (a step that ends lifted off: its flow is the lower
+    /// bound of §3.6), the first loss of interference.
+    pub(crate) fn observe(&mut self, p: &CoursePoint, previous: Option<(f64, f64)>) {
+        if self.states.last().is_none_or(|&(last, _)| last != p.state) {
+            self.states.push((p.state, p.time));
+        }
+        if p.leak_rate > self.max_leak_rate.0 {
+            self.max_leak_rate = (p.leak_rate, p.time);
+        }
+        if p.force < self.min_force.0 {
+            self.min_force = (p.force, p.time);
+        }
+        if p.peak_pressure < self.min_peak_pressure.0 {
+            self.min_peak_pressure = (p.peak_pressure, p.time);
+        }
+        if let Some((time, volume)) = previous {
+            self.steps += 1;
+            if p.state == SealState::LiftOff {
+                self.lifted_volume += p.leaked_volume - volume;
+                self.lifted_duration += p.time - time;
+            }
+        }
+        self.leaked_volume = p.leaked_volume;
+        if self.interference_lost.is_none() && p.interference_lost {
+            self.interference_lost = Some(p.time);
+        }
+    }
+
+    /// The course a history shows at its own rows (for results built by hand, e.g. in tests of
+    /// the reports): states at the rows they first hold at, extremes over the rows.
+    pub fn from_rows(rows: &[HistoryRow]) -> Self {
+        let mut course = Course::empty(rows.len());
+        let mut previous = None;
         for r in rows {
-            if course.states.last().is_none_or(|&(s, _)| s != r.state) {
-                course.states.push((r.state, r.time));
-            }
-            if r.leak_rate > course.max_leak_rate.0 {
-                course.max_leak_rate = (r.leak_rate, r.time);
-            }
-            if r.sealing_force < course.min_force.0 {
-                course.min_force = (r.sealing_force, r.time);
-            }
-            if r.peak_pressure < course.min_peak_pressure.0 {
-                course.min_peak_pressure = (r.peak_pressure, r.time);
-            }
-            if r.state == SealState::LiftOff {
-                course.ever_lifted = true;
-                if let Some(p) = previous {
-                    course.lifted_volume += r.leaked_volume - p.leaked_volume;
-                    course.lifted_duration += r.time - p.time;
-                }
-            }
-            if course.interference_lost.is_none() && r.shutdown.is_some_and(|s| !s.holds) {
-                course.interference_lost = Some(r.time);
-            }
-            previous = Some(r);
+            let point = CoursePoint {
+                time: r.time,
+                state: r.state,
+                leak_rate: r.leak_rate,
+                force: r.sealing_force,
+                peak_pressure: r.peak_pressure,
+                leaked_volume: r.leaked_volume,
+                interference_lost: r.shutdown.is_some_and(|s| !s.holds),
+            };
+            course.observe(&point, previous);
+            previous = Some((r.time, r.leaked_volume));
         }
         course
+    }
+
+    /// Whether the seal was ever lifted off (whatever the bound of its flow, 0 included).
+    pub fn ever_lifted(&self) -> bool {
+        self.states.iter().any(|&(s, _)| s == SealState::LiftOff)
     }
 }
 
@@ -565,7 +608,7 @@ impl LifeResult {
     /// the model gives only a lower bound of the flow (docs/model.md §8.1) — also when that
     /// bound is 0.
     pub fn leaked_volume_is_lower_bound(&self) -> bool {
-        self.course.ever_lifted
+        self.course.ever_lifted()
     }
 
     /// When the shutdown check found the interference lost \[s\]: the located failure time when

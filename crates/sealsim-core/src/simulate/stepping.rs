@@ -21,7 +21,8 @@
 //!   internal step. The leaked volume, the states with their times, the extremes and every
 //!   failure time are the internal steps', so they do not move with `points_per_decade`.
 
-use super::{Course, Mechanics, SealState, Simulator, Snapshot};
+use super::problem::CoursePoint;
+use super::{Course, Mechanics, Simulator, Snapshot};
 
 /// Base internal steps per decade of time (before the error control refines them). Equal to
 /// the default output grid, so that with the default grid every history row is an internal
@@ -244,49 +245,28 @@ pub(super) fn midpoint(a: f64, b: f64) -> f64 {
 impl Course {
     /// The course of a run that starts at `first` (t = 0).
     pub(super) fn start(first: &Snapshot, peak_pressure: f64) -> Self {
-        Course {
-            states: vec![(first.state, 0.0)],
-            max_leak_rate: (first.leak_rate, 0.0),
-            min_force: (first.profile.force_per_length(), 0.0),
-            min_peak_pressure: (peak_pressure, 0.0),
-            leaked_volume: 0.0,
-            lifted_volume: 0.0,
-            lifted_duration: 0.0,
-            ever_lifted: first.state == SealState::LiftOff,
-            interference_lost: first.shutdown.filter(|s| !s.holds).map(|_| 0.0),
-            steps: 0,
-            evaluations: 1,
-        }
+        let mut course = Course::empty(1);
+        course.observe(&point(0.0, first, peak_pressure, 0.0), None);
+        course
     }
 
     /// Takes in the accepted internal step `from → to`.
     pub(super) fn record(&mut self, from: &Point, to: &Point, peak_pressure: f64) {
-        let (t, s) = (to.time(), &to.snap);
-        self.steps += 1;
-        if self.states.last().is_none_or(|&(last, _)| last != s.state) {
-            self.states.push((s.state, t));
-        }
-        if s.leak_rate > self.max_leak_rate.0 {
-            self.max_leak_rate = (s.leak_rate, t);
-        }
-        let force = s.profile.force_per_length();
-        if force < self.min_force.0 {
-            self.min_force = (force, t);
-        }
-        if peak_pressure < self.min_peak_pressure.0 {
-            self.min_peak_pressure = (peak_pressure, t);
-        }
-        let volume = to.state.leaked_volume - from.state.leaked_volume;
-        if s.state == SealState::LiftOff {
-            // the flow of a lifted-off step is the lower bound of §3.6
-            self.ever_lifted = true;
-            self.lifted_volume += volume;
-            self.lifted_duration += t - from.time();
-        }
-        self.leaked_volume = to.state.leaked_volume;
-        if self.interference_lost.is_none() && s.shutdown.is_some_and(|sd| !sd.holds) {
-            self.interference_lost = Some(t);
-        }
+        let at = point(to.time(), &to.snap, peak_pressure, to.state.leaked_volume);
+        self.observe(&at, Some((from.time(), from.state.leaked_volume)));
+    }
+}
+
+/// The course's view of the state `snap` at `time` with `leaked_volume` so far.
+fn point(time: f64, snap: &Snapshot, peak_pressure: f64, leaked_volume: f64) -> CoursePoint {
+    CoursePoint {
+        time,
+        state: snap.state,
+        leak_rate: snap.leak_rate,
+        force: snap.profile.force_per_length(),
+        peak_pressure,
+        leaked_volume,
+        interference_lost: snap.shutdown.is_some_and(|s| !s.holds),
     }
 }
 
