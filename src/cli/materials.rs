@@ -43,6 +43,36 @@ pub enum MaterialsCommand {
     /// low-temperature limit (±5 K), the chemical time to 50 % retained force at the rated
     /// temperature against the 1000 h rule (500–2000 h), with sources. Exit 0 when all pass.
     Check,
+    /// A compound from a supplier datasheet (hardness, TR-10 or T_g, compression set at one to
+    /// three points): its class's master curve moved to the TR-10 and scaled to the hardness,
+    /// ageing from the sets less their viscoelastic part; written as a material file.
+    New(NewArgs),
+}
+
+/// Arguments of `sealsim materials new`.
+#[derive(Debug, Clone, Args)]
+#[command(after_help = "The datasheet file (TOML, units in strings):\n\n\
+    [datasheet]\n\
+    name = \"Acme N7001, NBR 70\"\n\
+    source = \"Acme datasheet N7001 rev. 3\"\n\
+    class = \"nbr\"            # acm, cr, epdm, ffkm, fkm, fvmq, hnbr, iir, nbr, vmq\n\
+    hardness = 70            # Shore A\n\
+    t10 = \"-28 C\"            # TR-10 (or glass_transition = \"-35 C\")\n\n\
+    [[datasheet.compression_set]]   # ASTM D395 B / ISO 815-1; one to three\n\
+    time = \"70 h\"\n\
+    temperature = \"100 C\"\n\
+    set = \"18 %\"\n\n\
+    Readings at two temperatures give Ea (its band from the figures' rounding); at one, Ea is the \
+    low end of the class's band (the faster ageing at service temperatures below the test). \
+    docs/model.md §5.6.")]
+pub struct NewArgs {
+    /// The datasheet file.
+    #[arg(value_name = "DATASHEET.toml")]
+    pub datasheet: PathBuf,
+
+    /// Write the compound to FILE (atomically) instead of standard output.
+    #[arg(short, long, value_name = "FILE.toml")]
+    pub output: Option<PathBuf>,
 }
 
 /// Which compound: a library id, or a material file.
@@ -173,7 +203,31 @@ pub fn run(args: MaterialsArgs) -> Result<(), CliError> {
         MaterialsCommand::Curve(args) => curve(args),
         MaterialsCommand::Export(args) => export(args),
         MaterialsCommand::Check => check(),
+        MaterialsCommand::New(args) => new(args),
     }
+}
+
+/// `materials new`: the datasheet's compound, its summary on standard error when the compound
+/// goes to a file (the summary first, then the file's text, on standard output otherwise).
+fn new(args: NewArgs) -> Result<(), CliError> {
+    super::guard_outputs(&[&args.datasheet], &[("--output", args.output.as_deref())])?;
+    let file = crate::scenario::datasheet::DatasheetFile::load(&args.datasheet)?;
+    let (material, summary) = crate::workflow::datasheet::compound(&file)
+        .map_err(|e| CliError::Input(format!("{}: {e}", args.datasheet.display())))?;
+    let text = crate::report::material_toml::material_toml(&material);
+    match &args.output {
+        Some(path) => {
+            write_output(Some(path), text.as_bytes())?;
+            print!("{summary}");
+            Ok(())
+        }
+        None => write_output(None, format!("{}{text}", comment(&summary)).as_bytes()),
+    }
+}
+
+/// `text` as TOML comment lines.
+fn comment(text: &str) -> String {
+    text.lines().map(|l| format!("# {l}\n")).collect()
 }
 
 /// The compound named on the command line, with the id used in outputs (the file stem for

@@ -25,6 +25,7 @@ pub mod as568;
 mod library_tests;
 pub use crate::material::compatibility;
 mod contamination;
+pub mod datasheet;
 mod error;
 pub mod figure_set;
 pub mod fit_data;

@@ -8,6 +8,7 @@
 //! that every command reports them the same way.
 
 pub mod compare;
+pub mod datasheet;
 pub mod figures;
 pub mod fit_prony;
 pub mod leak;

@@ -1012,3 +1012,35 @@ fn a_broken_compound_file_exits_2_naming_file_line_and_key() {
         );
     }
 }
+
+/// The README's and the guide's count of published and illustrative library compounds is the
+/// library's (issue 40).
+#[test]
+fn the_readme_counts_the_library_by_status() {
+    let statuses: Vec<String> = library::ids()
+        .map(|id| {
+            library::get(id)
+                .unwrap()
+                .load()
+                .unwrap()
+                .status
+                .as_str()
+                .to_owned()
+        })
+        .collect();
+    let count = |s: &str| statuses.iter().filter(|x| *x == s).count();
+    let sentence = format!(
+        "of the library's {} compounds, {} are published (every figure sourced) and {} illustrative",
+        statuses.len(),
+        count("published"),
+        count("illustrative")
+    );
+    for doc in ["README.md", "docs/src/introduction.md"] {
+        let text = fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join(doc))
+            .unwrap()
+            .split_whitespace()
+            .collect::<Vec<_>>()
+            .join(" ");
+        assert!(text.contains(&sentence), "{doc} lacks: {sentence}");
+    }
+}

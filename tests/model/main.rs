@@ -16,6 +16,7 @@ mod architecture;
 mod bem;
 mod clogging;
 mod contact_area;
+mod datasheet;
 mod dynamic;
 mod effective_medium;
 mod fit;

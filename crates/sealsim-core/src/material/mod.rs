@@ -6,6 +6,7 @@ pub mod compatibility;
 pub mod compound;
 pub mod csr;
 pub mod curve;
+pub mod datasheet;
 pub mod fit;
 pub mod prony;
 pub mod shift;
