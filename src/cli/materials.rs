@@ -64,7 +64,7 @@ pub enum MaterialsCommand {
     set = \"18 %\"\n\n\
     Readings at two temperatures give Ea (its band from the figures' rounding); at one, Ea is the \
     low end of the class's band (the faster ageing at service temperatures below the test). \
-    docs/model.md §5.6.")]
+    docs/model.md §5.4.")]
 pub struct NewArgs {
     /// The datasheet file.
     #[arg(value_name = "DATASHEET.toml")]

@@ -1,5 +1,5 @@
 //! `sealsim materials new`: a datasheet's compound with the provenance of every figure and a
-//! summary (docs/model.md §5.6).
+//! summary (docs/model.md §5.4).
 
 use crate::material::datasheet::{
     self, Conversion, DatasheetError, HARDNESS_READING_TIME, LowTemperature, gent_modulus,

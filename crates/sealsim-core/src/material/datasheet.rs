@@ -1,4 +1,4 @@
-//! A compound from a supplier datasheet (docs/model.md §5.6): the figures an engineer has —
+//! A compound from a supplier datasheet (docs/model.md §5.4): the figures an engineer has —
 //! hardness, the low-temperature limit (TR-10 or T_g), compression set at one to three
 //! (time, temperature) points — turned into a compound on its class's master curve.
 //!
