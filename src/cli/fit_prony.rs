@@ -54,8 +54,8 @@ pub struct FitPronyArgs {
 
     /// DMA data whose E″ disagrees with E′ (the Kramers–Kronig check the summary prints):
     /// `both` fits every value by its relative error (the lower long-term modulus: more leak);
-    /// `storage` fits E′ everywhere and E″ only where it agrees with E′, keeping the storage
-    /// plateau's long-term modulus.
+    /// `storage` fits E′ everywhere and, where E″ disagrees, the E″ that E′ implies instead,
+    /// keeping the storage plateau's long-term modulus.
     #[arg(long, value_enum, default_value_t = HonourArg::Both)]
     pub honour: HonourArg,
 
@@ -192,7 +192,7 @@ pub enum RegularisationArg {
 pub enum HonourArg {
     /// Every E′ and E″ value.
     Both,
-    /// E′ everywhere, E″ where it agrees with E′.
+    /// E′ everywhere; E″ where it agrees with E′, else the E″ that E′ implies.
     Storage,
 }
 

@@ -1059,7 +1059,10 @@ fn kramers_kronig_check_flags_an_e2_tail_and_storage_mode_keeps_the_plateau() {
     eprintln!("E'' tail, --honour storage: E∞ {e_inf:.4e}");
     assert!((e_inf / plateau - 1.0).abs() <= 0.05, "E∞ {e_inf:e}");
     let sc = storage.consistency.unwrap();
-    assert!(sc.replaced_loss > 0 && sc.replaced_loss < w.len() / 4, "{sc:?}");
+    assert!(
+        sc.replaced_loss > 0 && sc.replaced_loss < w.len() / 4,
+        "{sc:?}"
+    );
     // E′ is met everywhere, to the rms of a clean fit
     let storage_rms = (w
         .iter()
