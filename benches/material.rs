@@ -59,6 +59,7 @@ fn material(c: &mut Criterion) {
         let settings = FitSettings {
             terms_per_decade: per_decade,
             regularisation,
+            ..FitSettings::default()
         };
         c.bench_function(
             &format!("Prony fit, 100 relaxation points, {per_decade}/decade, {label}"),

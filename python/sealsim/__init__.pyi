@@ -118,6 +118,7 @@ def fit_prony(
     *,
     terms_per_decade: float = ...,
     regularisation: str = ...,
+    honour: str = ...,
     name: Optional[str] = ...,
     temperature: Union[float, str, None] = ...,
     like: Optional[str] = ...,

@@ -102,6 +102,7 @@ def fit_prony(
     *,
     terms_per_decade: float = 3.0,
     regularisation: str = "gcv",
+    honour: str = "both",
     name: Optional[str] = None,
     temperature: Union[float, str, None] = None,
     like: Optional[str] = None,
@@ -124,7 +125,8 @@ def fit_prony(
     the file's column names (``t, E_relax``; ``t, force``; ``t, retained``; ``f, E_stor,
     E_loss``; optional ``T``/``temperature``), in SI unless ``units`` maps a column to its
     unit (``{"t": "h", "force": "N"}``). ``kind``: ``relaxation`` or ``dma``. The options are
-    the command's flags (``--test-piece ring`` is ``test_piece="ring"``); quantities are SI
+    the command's flags (``--test-piece ring`` is ``test_piece="ring"``; ``--honour storage`` is
+    ``honour="storage"``); quantities are SI
     floats (m, N, Pa, K; squeeze as a fraction) or strings with units (``"3.53 mm"``,
     ``"25 %"``, ``"70 C"``). ``source``: the name of the data in the provenance and messages
     (default: the path, or ``<data>`` for columns); the default ``name`` is its stem.
@@ -132,6 +134,7 @@ def fit_prony(
     options = dict(
         terms_per_decade=float(terms_per_decade),
         regularisation=regularisation,
+        honour=honour,
         name=name,
         temperature=temperature,
         like=like,

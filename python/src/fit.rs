@@ -6,7 +6,7 @@ use crate::{ScenarioError, blocking, internal};
 use pyo3::exceptions::{PyFileNotFoundError, PyOSError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
-use sealsim::material::fit::{FitSettings, Regularisation};
+use sealsim::material::fit::{FitSettings, Honour, Regularisation};
 use sealsim::material::tts::ShiftLaw;
 use sealsim::report::fit_prony::{material_file, summary};
 use sealsim::scenario::fit_data::{FitKind, parse_fit_data, si_unit};
@@ -88,7 +88,7 @@ fn choice<T: Copy>(value: &str, what: &str, choices: &[(&str, T)]) -> PyResult<T
 /// `text`: CSV text to parse as if read from `source`; else the file `path`.
 #[pyfunction]
 #[pyo3(signature = (kind, path = None, text = None, source = None, terms_per_decade = 3.0,
-                    regularisation = "gcv", name = None, temperature = None, like = None,
+                    regularisation = "gcv", honour = "both", name = None, temperature = None, like = None,
                     test_piece = None, squeeze = None, cross_section = None,
                     mean_diameter = None, diameter = None, height = None,
                     initial_force = None, reference_modulus = None, shift = None,
@@ -102,6 +102,7 @@ fn _fit_prony<'py>(
     source: Option<String>,
     terms_per_decade: f64,
     regularisation: &str,
+    honour: &str,
     name: Option<String>,
     temperature: Option<Bound<'py, PyAny>>,
     like: Option<String>,
@@ -161,6 +162,11 @@ fn _fit_prony<'py>(
                 regularisation,
                 "regularisation",
                 &[("gcv", Regularisation::Gcv), ("none", Regularisation::None)],
+            )?,
+            honour: choice(
+                honour,
+                "honour",
+                &[("both", Honour::Both), ("storage", Honour::Storage)],
             )?,
         },
         name,

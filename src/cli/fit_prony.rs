@@ -3,7 +3,7 @@
 //! ([`crate::report::fit_prony`], the material TOML file and the summary on stderr) and written.
 
 use super::{CliError, positive_flag, write_output};
-use crate::material::fit::{FitSettings, Regularisation, TERMS_PER_DECADE};
+use crate::material::fit::{FitSettings, Honour, Regularisation, TERMS_PER_DECADE};
 use crate::material::tts::{MasterCurve, ShiftLaw};
 use crate::report::fit_prony::{material_file, summary};
 use crate::report::master_curve::{master_chart, shift_chart};
@@ -51,6 +51,13 @@ pub struct FitPronyArgs {
     /// spectrum with its weight chosen by generalised cross-validation; `none`, plain NNLS.
     #[arg(long, value_enum, default_value_t = RegularisationArg::Gcv)]
     pub regularisation: RegularisationArg,
+
+    /// DMA data whose E″ disagrees with E′ (the Kramers–Kronig check the summary prints):
+    /// `both` fits every value by its relative error (the lower long-term modulus: more leak);
+    /// `storage` fits E′ everywhere and, where E″ disagrees, the E″ that E′ implies instead,
+    /// keeping the storage plateau's long-term modulus.
+    #[arg(long, value_enum, default_value_t = HonourArg::Both)]
+    pub honour: HonourArg,
 
     /// Write the material TOML to FILE (atomically) instead of standard output.
     #[arg(short, long, value_name = "FILE")]
@@ -180,6 +187,24 @@ pub enum RegularisationArg {
     None,
 }
 
+/// `--honour` values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum HonourArg {
+    /// Every E′ and E″ value.
+    Both,
+    /// E′ everywhere; E″ where it agrees with E′, else the E″ that E′ implies.
+    Storage,
+}
+
+impl From<HonourArg> for Honour {
+    fn from(h: HonourArg) -> Self {
+        match h {
+            HonourArg::Both => Honour::Both,
+            HonourArg::Storage => Honour::Storage,
+        }
+    }
+}
+
 impl From<RegularisationArg> for Regularisation {
     fn from(r: RegularisationArg) -> Self {
         match r {
@@ -221,6 +246,7 @@ pub fn run(args: FitPronyArgs) -> Result<(), CliError> {
         settings: FitSettings {
             terms_per_decade: args.terms_per_decade,
             regularisation: args.regularisation.into(),
+            honour: args.honour.into(),
         },
         name: args.name.clone(),
         temperature,

@@ -5,7 +5,7 @@
 use super::material_toml::material_toml;
 use crate::material::Shift;
 use crate::material::csr::{Normalisation, TestPiece};
-use crate::material::fit::Fit;
+use crate::material::fit::{Fit, KK_TOLERANCE};
 use crate::scenario::fit_data::FitKind;
 use crate::units::show;
 use crate::workflow::fit_prony::{Copied, FitOutcome, POOR_FIT, describe, regularisation_note};
@@ -130,13 +130,99 @@ fn fit_lines(out: &mut String, source: &str, fit: &Fit) {
         fit.max_relative_residual,
         regularisation_note(fit),
     );
+    let inconsistent = consistency_lines(out, source, fit);
     if fit.rms_relative_residual > POOR_FIT {
+        let advice = if inconsistent {
+            "E′ and E″ disagree (above): --honour storage fits E′ where E″ is inconsistent; \
+             more terms per decade will not help"
+        } else {
+            "check the data, or raise --terms-per-decade"
+        };
         let _ = writeln!(
             out,
-            "warning: {source}: the series misses the data by {:.1} % rms: check the data, or raise --terms-per-decade",
+            "warning: {source}: the series misses the data by {:.1} % rms: {advice}",
             100.0 * fit.rms_relative_residual
         );
     }
+}
+
+/// The Kramers–Kronig check of DMA data (`material::fit`, "Kramers–Kronig check"): a line
+/// when E′ and E″ agree, a warning naming the inconsistent frequency bands (f = ω/2π, in Hz)
+/// and both long-term moduli when they do not. Returns whether an inconsistency is left in
+/// the fit (so that `--honour storage` is the advice).
+fn consistency_lines(out: &mut String, source: &str, fit: &Fit) -> bool {
+    let Some(c) = &fit.consistency else {
+        return false;
+    };
+    let hz = |w: f64| show_rounded(w / std::f64::consts::TAU);
+    let long_term = |e: f64| format!("{} MPa", show_rounded(e / 1e6));
+    let bands: Vec<String> = c
+        .inconsistent()
+        .map(|d| {
+            format!(
+                "{} at f = {}–{} Hz",
+                show_rounded(d.ratio),
+                hz(d.omegas.0),
+                hz(d.omegas.1)
+            )
+        })
+        .collect();
+    if bands.is_empty() {
+        let worst = c
+            .decades
+            .iter()
+            .map(|d| d.ratio)
+            .max_by(|a, b| a.ln().abs().total_cmp(&b.ln().abs()))
+            .unwrap_or(1.0);
+        let _ = writeln!(
+            out,
+            "fit-prony: {source}: Kramers–Kronig check: E″ agrees with the E″ that E′ implies \
+             within a factor {} in every decade (worst ratio {}){}",
+            show(KK_TOLERANCE),
+            show_rounded(worst),
+            if fit.refined {
+                "; relaxation times refined off the grid"
+            } else {
+                ""
+            }
+        );
+        return false;
+    }
+    let _ = writeln!(
+        out,
+        "warning: {source}: E″ disagrees with E′ (Kramers–Kronig): measured E″ over the E″ \
+         that E′ implies, {} (tolerance: a factor {})",
+        bands.join(", "),
+        show(KK_TOLERANCE)
+    );
+    let (fitted, alone) = (fit.prony.long_term(), c.storage_long_term);
+    if c.replaced_loss > 0 {
+        let _ = writeln!(
+            out,
+            "fit-prony: {source}: --honour storage: {} E″ values of those decades replaced by \
+             the E″ that E′ implies; E∞ = {} (E′ alone: {})",
+            c.replaced_loss,
+            long_term(fitted),
+            long_term(alone)
+        );
+        false
+    } else {
+        let _ = writeln!(
+            out,
+            "warning: {source}: this fit's long-term modulus E∞ = {} is the lower one (E′ \
+             alone gives {}): the default keeps it, which predicts less late sealing force and \
+             more leak; if the storage data are the trusted ones, --honour storage fits E′ and \
+             replaces the inconsistent E″ by the E″ that E′ implies",
+            long_term(fitted),
+            long_term(alone)
+        );
+        true
+    }
+}
+
+/// Four significant digits, for messages.
+fn show_rounded(x: f64) -> String {
+    show(format!("{x:.3e}").parse().unwrap_or(x))
 }
 
 /// How forces were turned into moduli, and the plate-friction caveat for discs.

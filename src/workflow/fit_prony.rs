@@ -277,6 +277,9 @@ pub fn fit(
 
     let name = options.name.clone().unwrap_or_else(|| default_name(path));
     let mut material = fitted_material(name, &fit, &source, options.settings.terms_per_decade);
+    if let Some(note) = consistency_note(&fit) {
+        note_fit(&mut material, &note);
+    }
     if let Some(t) = data_temperature {
         material.data_temperature = Some((t, t));
         material.provenance.push((
@@ -398,6 +401,33 @@ fn moduli_note(n: &Normalisation, measured: Measured) -> String {
 }
 
 /// Appends `note` to the provenance of the fitted parameters (`prony`, `long_term_modulus`).
+/// The provenance note of a DMA fit whose data fail the Kramers–Kronig check
+/// (`material::fit`): the inconsistent bands' count, what was honoured and both long-term
+/// moduli, so that the material file says where E∞ comes from.
+fn consistency_note(fit: &Fit) -> Option<String> {
+    let c = fit.consistency.as_ref()?;
+    let worst = c.worst()?;
+    Some(format!(
+        "; Kramers–Kronig check: E″ disagrees with E′ in {} decade(s) of frequency (worst: \
+         measured E″ {:.3}× the E″ that E′ implies at ω = {}–{} rad/s); {}; E′ alone gives \
+         E∞ = {} Pa",
+        c.inconsistent().count(),
+        worst.ratio,
+        show(worst.omegas.0),
+        show(worst.omegas.1),
+        if c.replaced_loss > 0 {
+            format!(
+                "E′ honoured (--honour storage): {} E″ values replaced by the E″ that E′ \
+                 implies",
+                c.replaced_loss
+            )
+        } else {
+            "every E′ and E″ value fitted (the lower E∞: more leak)".to_string()
+        },
+        show(c.storage_long_term)
+    ))
+}
+
 fn note_fit(material: &mut Material, note: &str) {
     for (key, text) in material.provenance.iter_mut() {
         if key == "prony" || key == "long_term_modulus" {

@@ -1232,3 +1232,74 @@ fn an_inline_material_without_thermal_expansion_is_told_to_add_it_and_that_works
         .assert()
         .success();
 }
+
+/// pyvisco-style DMA data (206 points, 1e-12 … 1e14 Hz) of a broad rubber spectrum (E∞ =
+/// 80 MPa, storage plateau 81.5 MPa) whose E″ carries a low-frequency tail E′ does not
+/// (`tail` Pa at the lowest frequency, falling as 1/(1 + √(f/1e-10 Hz))): the Kramers–Kronig
+/// inconsistency of pyvisco's `freq_user_master.csv` (issue 40). Returns the text and the
+/// plateau \[Pa\].
+fn dma_with_tail(tail: f64) -> (String, f64) {
+    let terms: Vec<PronyTerm> = log_spaced(1e-15, 1e14, 291)
+        .into_iter()
+        .map(|tau| {
+            let k = tau.log10();
+            PronyTerm {
+                modulus: 4e6 * 10f64.powf(-0.15 * k) * (1.0 + 0.3 * k.sin()),
+                tau,
+            }
+        })
+        .collect();
+    let p = Prony::new(80e6, &terms).unwrap();
+    let mut text = "f, E_stor, E_loss\nHz, MPa, MPa\n".to_string();
+    for f in log_spaced(1e-12, 1e14, 206) {
+        let w = std::f64::consts::TAU * f;
+        let loss = p.loss(w) + tail / (1.0 + (f / 1e-10).sqrt());
+        let _ = writeln!(text, "{f:e},{:e},{:e}", p.storage(w) / 1e6, loss / 1e6);
+    }
+    (text, p.storage(std::f64::consts::TAU * 1e-12))
+}
+
+#[test]
+fn dma_kramers_kronig_warning_advice_changes_the_fit() {
+    let dir = TempDir::new().unwrap();
+    let (text, plateau) = dma_with_tail(3e6);
+    let data = write(&dir, "tail.csv", &text);
+    let (stdout, stderr) = fit_ok(&[data.to_str().unwrap(), "--kind", "dma"]);
+    assert!(
+        stderr.contains("E″ disagrees with E′ (Kramers–Kronig)")
+            && stderr.contains("at f = 1e-12–")
+            && stderr.contains("--honour storage"),
+        "{stderr}"
+    );
+    let default = series_of(&stdout).long_term();
+    // the advice, followed
+    let (stdout, stderr) = fit_ok(&[
+        data.to_str().unwrap(),
+        "--kind",
+        "dma",
+        "--honour",
+        "storage",
+    ]);
+    assert!(stderr.contains("--honour storage:"), "{stderr}");
+    let honoured = series_of(&stdout).long_term();
+    eprintln!("E∞: default {default:e}, --honour storage {honoured:e}, plateau {plateau:e}");
+    assert!(default < 0.9 * plateau, "default E∞ {default:e}");
+    assert!(
+        (honoured / plateau - 1.0).abs() <= 0.05,
+        "honoured E∞ {honoured:e}"
+    );
+    let doc: toml::Table = toml::from_str(&stdout).unwrap();
+    let provenance = doc["material"]["provenance"]["long_term_modulus"]
+        .as_str()
+        .unwrap();
+    assert!(provenance.contains("Kramers–Kronig check"), "{provenance}");
+
+    // consistent data: the check says so, and no advice
+    let (text, _) = dma_with_tail(0.0);
+    let data = write(&dir, "clean.csv", &text);
+    let (_, stderr) = fit_ok(&[data.to_str().unwrap(), "--kind", "dma"]);
+    assert!(
+        stderr.contains("Kramers–Kronig check: E″ agrees") && !stderr.contains("warning"),
+        "{stderr}"
+    );
+}

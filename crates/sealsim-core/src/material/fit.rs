@@ -134,6 +134,86 @@ pub struct FitSettings {
     pub terms_per_decade: f64,
     /// Smoothing of the relative spectrum (default: λ by GCV).
     pub regularisation: Regularisation,
+    /// Which DMA values the fit honours where E′ and E″ disagree (module docs,
+    /// "Kramers–Kronig check"; default [`Honour::Both`]). Ignored for relaxation data.
+    pub honour: Honour,
+}
+
+/// Which DMA values a fit honours (module docs, "Kramers–Kronig check").
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Honour {
+    /// Every E′ and E″ value, each by its relative error (the default: where the data
+    /// disagree it gives the lower E∞, i.e. the lower late sealing force — more leak).
+    #[default]
+    Both,
+    /// E′ everywhere, E″ only in the decades the check finds consistent with E′; in the
+    /// others the E″ that E′ implies takes the measured one's place (dropping those values
+    /// instead would let the fit carry the storage plateau on a term beyond the window). Keeps
+    /// the long-term modulus E∞ (the storage plateau) that a seal's late force lives on.
+    Storage,
+}
+
+/// A decade's ratio of measured E″ to the E″ that E′ implies, beyond this factor (or below
+/// its inverse), is flagged as inconsistent (module docs, "Kramers–Kronig check"). An
+/// assumed tolerance: the E′-alone fit's E″ is good to a few per cent on exact data
+/// (measured in tests/model/fit.rs), 1 % noise moves a decade's ratio by well under 10 %,
+/// and the inconsistency the check is for is a factor of 2–4 (issue 40).
+pub const KK_TOLERANCE: f64 = 1.5;
+
+/// One decade of the Kramers–Kronig check.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DecadeCheck {
+    /// The decade's first and last angular frequency \[rad/s\].
+    pub omegas: (f64, f64),
+    /// Data points in the decade.
+    pub points: usize,
+    /// Geometric mean over the decade of measured E″ / E″ implied by E′ (1: consistent).
+    pub ratio: f64,
+    /// |mean measured E″ − mean implied E″| over the decade, in units of the E″ that the
+    /// scatter of E′ can hide, σ̂ · mean E′ (σ̂ the E′-alone fit's relative scatter): where E″
+    /// is small against E′ (tan δ below the E′ noise) E′ cannot imply it.
+    pub excess: f64,
+}
+
+/// A decade is flagged only when its E″ differs from the implied one by more than this many
+/// σ̂ · E′ ([`DecadeCheck::excess`]): 1 % noise on E′ otherwise flags the rubbery plateau,
+/// where tan δ ≈ 0.005 (measured in tests/model/fit.rs).
+pub const KK_RESOLUTION: f64 = 3.0;
+
+impl DecadeCheck {
+    /// Whether the ratio lies outside `[1/KK_TOLERANCE, KK_TOLERANCE]` and the difference
+    /// is resolved by E′ ([`KK_RESOLUTION`]).
+    pub fn inconsistent(&self) -> bool {
+        !(1.0 / KK_TOLERANCE..=KK_TOLERANCE).contains(&self.ratio) && self.excess > KK_RESOLUTION
+    }
+}
+
+/// The Kramers–Kronig check of DMA data (module docs).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Consistency {
+    /// Per decade of frequency, from the lowest.
+    pub decades: Vec<DecadeCheck>,
+    /// E∞ of the fit of E′ alone \[Pa\]: the long-term modulus the storage data imply.
+    pub storage_long_term: f64,
+    /// E″ values the fit replaced by the E″ that E′ implies ([`Honour::Storage`]: those of
+    /// the inconsistent decades).
+    pub replaced_loss: usize,
+    /// The E″ that E′ implies at each data frequency \[Pa\] (the E′-alone fit's).
+    pub implied_loss: Vec<f64>,
+}
+
+impl Consistency {
+    /// The decades whose E′ and E″ disagree.
+    pub fn inconsistent(&self) -> impl Iterator<Item = &DecadeCheck> {
+        self.decades.iter().filter(|d| d.inconsistent())
+    }
+
+    /// The decade with the largest disagreement (ratio farthest from 1 in log), if any is
+    /// inconsistent.
+    pub fn worst(&self) -> Option<&DecadeCheck> {
+        self.inconsistent()
+            .max_by(|a, b| a.ratio.ln().abs().total_cmp(&b.ratio.ln().abs()))
+    }
 }
 
 /// Default of [`FitSettings::terms_per_decade`].
@@ -144,6 +224,7 @@ impl Default for FitSettings {
         FitSettings {
             terms_per_decade: DEFAULT_TERMS_PER_DECADE,
             regularisation: Regularisation::Gcv,
+            honour: Honour::Both,
         }
     }
 }
@@ -173,8 +254,15 @@ pub struct Fit {
     /// Effective number of parameters `edf = tr H(λ)`, H the influence matrix on the free
     /// (non-zero) unknowns (module docs); the number of free unknowns when λ = 0.
     pub effective_parameters: f64,
-    /// The uncertainty band of E(t) over the window ([`Fit::relative_band`]).
+    /// The uncertainty band of E(t) over the window ([`Fit::relative_band`]; for DMA fits
+    /// whose relaxation times were refined, the band of the grid fit they started from).
     pub band: Band,
+    /// DMA data: the Kramers–Kronig check of E′ against E″ (None for relaxation data, or
+    /// when the E′-alone fit fails).
+    pub consistency: Option<Consistency>,
+    /// DMA data: whether the relaxation times were moved off the grid (module docs,
+    /// "Relaxation times off the grid").
+    pub refined: bool,
 }
 
 /// What a simultaneous uncertainty band of E(t) needs (module docs, "Uncertainty band"):
@@ -193,6 +281,9 @@ pub struct Band {
     pub sigma: f64,
     /// The simultaneous multiplier `√(χ²_{edf, 0.95})` (module docs).
     pub multiplier: f64,
+    /// The grid fit the covariance belongs to: the band is relative to its E(t) (the same
+    /// as [`Fit::prony`] unless the relaxation times were refined, [`Fit::refined`]).
+    pub series: Prony,
 }
 
 /// Confidence level of [`Band`].
@@ -200,6 +291,7 @@ pub const BAND_LEVEL: f64 = 0.95;
 
 impl Fit {
     /// Pointwise relative standard deviation of the fitted E(t), `√(gᵀ C g) / (E(t)/scale)`
+    /// (E(t) of the grid fit, [`Band::series`])
     /// with `g = (1, e^{−t/τ_1}, …, e^{−t/τ_m})` (module docs); infinite when the fit leaves
     /// less than one residual degree of freedom (n − edf < 1: the scatter is not estimable).
     pub fn relative_standard_deviation(&self, t: f64) -> f64 {
@@ -217,7 +309,7 @@ impl Fit {
             // an unbounded covariance (0 · ∞ where a basis value underflows): no bound
             return f64::INFINITY;
         }
-        variance.max(0.0).sqrt() / (self.prony.relaxation(t) / b.scale)
+        variance.max(0.0).sqrt() / (b.series.relaxation(t) / b.scale)
     }
 
     /// Relative half-width of the simultaneous 95 % band of E(t): the band is
@@ -437,11 +529,17 @@ pub fn fit_relaxation(
         smoothing: solved.smoothing,
         effective_parameters: solved.effective_parameters,
         band: solved.band,
+        consistency: None,
+        refined: false,
     })
 }
 
 /// Fits `E′(ω)` and `E″(ω)` of a Prony series to DMA data: `omegas` (rad/s) strictly
-/// increasing and positive, `storage` and `loss` (Pa) positive (module docs).
+/// increasing and positive, `storage` and `loss` (Pa) positive (module docs). The data are
+/// checked for Kramers–Kronig consistency first ([`Fit::consistency`]); with
+/// [`Honour::Storage`] the E″ values of inconsistent decades are replaced by the E″ that E′
+/// implies. The relaxation
+/// times are then refined off the grid when that pays (module docs).
 pub fn fit_dma(
     omegas: &[f64],
     storage: &[f64],
@@ -463,20 +561,58 @@ pub fn fit_dma(
         settings.regularisation,
     )?;
     let scale = storage.iter().chain(loss).copied().fold(0.0, f64::max);
-    let mut a = DMatrix::zeros(2 * n, taus.len() + 1);
-    for (k, &omega) in omegas.iter().enumerate() {
-        let (ws, wl) = (scale / storage[k], scale / loss[k]);
-        a[(k, 0)] = ws;
-        for (i, &tau) in taus.iter().enumerate() {
-            let x = omega * tau;
-            let d = 1.0 + x * x;
-            a[(k, i + 1)] = ws * x * x / d;
-            a[(n + k, i + 1)] = wl * x / d;
-        }
+    let mut consistency = kramers_kronig(omegas, storage, loss, &taus, scale);
+    // the E″ values fitted: the measured ones, or (E′ honoured) in inconsistent decades
+    // the E″ that E′ implies
+    let keep_loss: Vec<bool> = match (&consistency, settings.honour) {
+        (Some(c), Honour::Storage) => omegas
+            .iter()
+            .map(|&w| {
+                c.decades
+                    .iter()
+                    .find(|d| w >= d.omegas.0 && w <= d.omegas.1)
+                    .is_none_or(|d| !d.inconsistent())
+            })
+            .collect(),
+        _ => vec![true; n],
+    };
+    let fitted_loss: Vec<f64> = match &consistency {
+        Some(c) => (0..n)
+            .map(|k| {
+                if keep_loss[k] {
+                    loss[k]
+                } else {
+                    c.implied_loss[k]
+                }
+            })
+            .collect(),
+        None => loss.to_vec(),
+    };
+    if let Some(c) = consistency.as_mut() {
+        c.replaced_loss = keep_loss.iter().filter(|&&k| !k).count();
     }
+    let loss = &fitted_loss[..];
+    let mut rows: Vec<Row> = omegas
+        .iter()
+        .zip(storage)
+        .map(|(&omega, &e)| Row::Storage {
+            omega,
+            weight: scale / e,
+        })
+        .collect();
+    rows.extend(omegas.iter().zip(loss).map(|(&omega, &e)| Row::Loss {
+        omega,
+        weight: scale / e,
+    }));
+    let a = design(&rows, &taus);
     let window = (1.0 / last, 1.0 / first);
     let solved = solve(&a, &taus, scale, window, settings.regularisation)?;
-    let prony = solved.prony;
+    let (prony, refined) = match refine_taus(&rows, &solved, &taus, scale) {
+        Some(p) => (p, true),
+        None => (solved.prony, false),
+    };
+    // statistics over the values fitted (E″ replaced where E′ was honoured: the check
+    // reports how far the measured ones are)
     let (rms, max) = statistics(omegas.iter().enumerate().flat_map(|(k, &omega)| {
         [
             prony.storage(omega) / storage[k] - 1.0,
@@ -494,7 +630,256 @@ pub fn fit_dma(
         smoothing: solved.smoothing,
         effective_parameters: solved.effective_parameters,
         band: solved.band,
+        consistency,
+        refined,
     })
+}
+
+/// One weighted row of a DMA fit: `weight · (E∞ + Σ E_i x²/(1+x²))` (storage) or
+/// `weight · Σ E_i x/(1+x²)` (loss), `x = ωτ_i`, fitted to 1.
+#[derive(Debug, Clone, Copy)]
+enum Row {
+    Storage { omega: f64, weight: f64 },
+    Loss { omega: f64, weight: f64 },
+}
+
+impl Row {
+    /// The weighted basis value of a term of unit modulus at `tau`, its derivative with
+    /// respect to ln τ, and the weight of E∞ in the row.
+    fn basis(self, tau: f64) -> (f64, f64, f64) {
+        match self {
+            Row::Storage { omega, weight } => {
+                let x = omega * tau;
+                let d = 1.0 + x * x;
+                // d/d ln τ of x²/(1+x²) = 2x²/(1+x²)²
+                (weight * x * x / d, weight * 2.0 * x * x / (d * d), weight)
+            }
+            Row::Loss { omega, weight } => {
+                let x = omega * tau;
+                let d = 1.0 + x * x;
+                // d/d ln τ of x/(1+x²) = x(1−x²)/(1+x²)²
+                (weight * x / d, weight * x * (1.0 - x * x) / (d * d), 0.0)
+            }
+        }
+    }
+}
+
+/// The design matrix of `rows` on `taus`: column 0 E∞, then one per τ.
+fn design(rows: &[Row], taus: &[f64]) -> DMatrix<f64> {
+    let mut a = DMatrix::zeros(rows.len(), taus.len() + 1);
+    for (k, row) in rows.iter().enumerate() {
+        for (i, &tau) in taus.iter().enumerate() {
+            let (value, _, long_term) = row.basis(tau);
+            a[(k, 0)] = long_term;
+            a[(k, i + 1)] = value;
+        }
+    }
+    a
+}
+
+/// The Kramers–Kronig check (module docs): E′ alone fitted on the grid (GCV), the E″ it
+/// implies compared with the measured E″, decade by decade from the lowest frequency (a
+/// last decade of fewer than 3 points joins the one before). None when the E′-alone fit
+/// fails.
+fn kramers_kronig(
+    omegas: &[f64],
+    storage: &[f64],
+    loss: &[f64],
+    taus: &[f64],
+    scale: f64,
+) -> Option<Consistency> {
+    let rows: Vec<Row> = omegas
+        .iter()
+        .zip(storage)
+        .map(|(&omega, &e)| Row::Storage {
+            omega,
+            weight: scale / e,
+        })
+        .collect();
+    let a = design(&rows, taus);
+    let window = (1.0 / omegas[omegas.len() - 1], 1.0 / omegas[0]);
+    let alone = solve(&a, taus, scale, window, Regularisation::Gcv).ok()?;
+    let mut decades: Vec<(usize, usize)> = Vec::new(); // index ranges [start, end)
+    let first = omegas[0];
+    let mut start = 0;
+    for k in 1..=omegas.len() {
+        let new_decade = k == omegas.len()
+            || (omegas[k] / first).log10().floor() > (omegas[start] / first).log10().floor();
+        if new_decade {
+            decades.push((start, k));
+            start = k;
+        }
+    }
+    if decades.len() > 1 && decades[decades.len() - 1].1 - decades[decades.len() - 1].0 < 3 {
+        if let Some((_, end)) = decades.pop() {
+            let l = decades.len() - 1;
+            decades[l].1 = end;
+        }
+    }
+    // an implied E″ of 0 (no term near this frequency): a ratio capped at 1e6
+    let implied_loss: Vec<f64> = omegas
+        .iter()
+        .zip(loss)
+        .map(|(&w, &l)| alone.prony.loss(w).max(l * 1e-6))
+        .collect();
+    let decades = decades
+        .into_iter()
+        .map(|(s, e)| {
+            let mean_log = (s..e)
+                .map(|k| (loss[k] / implied_loss[k]).ln())
+                .sum::<f64>()
+                / (e - s) as f64;
+            let count = (e - s) as f64;
+            let mean = |v: &[f64]| v[s..e].iter().sum::<f64>() / count;
+            let hidden = alone.band.sigma * mean(storage);
+            let difference = (mean(loss) - mean(&implied_loss)).abs();
+            DecadeCheck {
+                omegas: (omegas[s], omegas[e - 1]),
+                points: e - s,
+                ratio: mean_log.exp(),
+                // σ̂ not estimable (no residual degree of freedom): nothing is resolved
+                excess: if hidden.is_finite() && hidden > 0.0 {
+                    difference / hidden
+                } else if hidden == 0.0 {
+                    f64::INFINITY
+                } else {
+                    0.0
+                },
+            }
+        })
+        .collect();
+    Some(Consistency {
+        decades,
+        storage_long_term: alone.prony.long_term(),
+        replaced_loss: 0,
+        implied_loss,
+    })
+}
+
+/// Largest number of Levenberg–Marquardt steps of [`refine_taus`].
+const REFINE_STEPS: usize = 200;
+
+/// Relaxation times off the grid (module docs): the non-empty terms of the grid fit, their
+/// moduli and ln τ (and E∞) refined together by Levenberg–Marquardt on the unpenalised
+/// relative residual, moduli kept ≥ 0 by projection. Kept only when it lowers the GCV score
+/// counting each freed τ as a parameter, `n RSS/(n − edf − m)²` (so that a fit of noise by
+/// the extra freedom is refused); None otherwise.
+fn refine_taus(rows: &[Row], solved: &Solved, grid: &[f64], scale: f64) -> Option<Prony> {
+    let n = rows.len();
+    let terms = solved.prony.terms();
+    let m = terms.len();
+    let dof = n as f64 - solved.effective_parameters - m as f64;
+    if m == 0 || dof < MIN_RESIDUAL_DOF {
+        return None;
+    }
+    // parameters: [E∞, E_1, ln τ_1, E_2, ln τ_2, …], moduli scaled by `scale`
+    let mut p = DVector::zeros(1 + 2 * m);
+    p[0] = solved.prony.long_term() / scale;
+    for (i, t) in terms.iter().enumerate() {
+        p[1 + 2 * i] = t.modulus / scale;
+        p[2 + 2 * i] = t.tau.ln();
+    }
+    let (lo, hi) = (
+        grid.first().copied()?.ln() - 10f64.ln(),
+        grid.last().copied()?.ln() + 10f64.ln(),
+    );
+    let residual = |p: &DVector<f64>| -> DVector<f64> {
+        DVector::from_iterator(
+            n,
+            rows.iter().map(|row| {
+                let mut v = 0.0;
+                for i in 0..m {
+                    let (b, _, w0) = row.basis(p[2 + 2 * i].exp());
+                    v += p[1 + 2 * i] * b;
+                    if i == 0 {
+                        v += p[0] * w0;
+                    }
+                }
+                v - 1.0
+            }),
+        )
+    };
+    let rss0 = residual(&p).norm_squared();
+    let mut rss = rss0;
+    let mut mu = 1e-3;
+    for _ in 0..REFINE_STEPS {
+        let r = residual(&p);
+        let mut j = DMatrix::zeros(n, 1 + 2 * m);
+        for (k, row) in rows.iter().enumerate() {
+            for i in 0..m {
+                let (b, db, w0) = row.basis(p[2 + 2 * i].exp());
+                j[(k, 1 + 2 * i)] = b;
+                j[(k, 2 + 2 * i)] = p[1 + 2 * i] * db;
+                if i == 0 {
+                    j[(k, 0)] = w0;
+                }
+            }
+        }
+        let h = j.transpose() * &j;
+        let g = j.transpose() * &r;
+        let mut improved = false;
+        for _ in 0..12 {
+            let mut damped = h.clone();
+            for d in 0..damped.nrows() {
+                damped[(d, d)] += mu * h[(d, d)].max(1e-12);
+            }
+            let Some(step) = damped.cholesky().map(|c| c.solve(&(-&g))) else {
+                mu *= 4.0;
+                continue;
+            };
+            let mut trial = &p + step;
+            trial[0] = trial[0].max(0.0);
+            for i in 0..m {
+                trial[1 + 2 * i] = trial[1 + 2 * i].max(0.0);
+                trial[2 + 2 * i] = trial[2 + 2 * i].clamp(lo, hi);
+            }
+            let trial_rss = residual(&trial).norm_squared();
+            if trial_rss.is_finite() && trial_rss < rss {
+                let gain = rss - trial_rss;
+                p = trial;
+                rss = trial_rss;
+                mu = (mu / 3.0).max(1e-12);
+                improved = gain > 1e-12 * rss0;
+                break;
+            }
+            mu *= 4.0;
+        }
+        if !improved {
+            break;
+        }
+    }
+    let before = n as f64 * rss0 / (n as f64 - solved.effective_parameters).powi(2);
+    let after = n as f64 * rss / dof.powi(2);
+    if !(after < before) {
+        return None;
+    }
+    let terms: Vec<PronyTerm> = (0..m)
+        .map(|i| PronyTerm {
+            modulus: scale * p[1 + 2 * i],
+            tau: round_tau(p[2 + 2 * i].exp()),
+        })
+        .filter(|t| t.modulus > 0.0)
+        .collect();
+    let refined = Prony::new(scale * p[0], &terms).ok()?;
+    // rounding τ to TAU_DIGITS must not undo the gain
+    let rounded_rss: f64 = rows
+        .iter()
+        .map(|row| {
+            let v = match *row {
+                Row::Storage { omega, weight } => weight * refined.storage(omega),
+                Row::Loss { omega, weight } => weight * refined.loss(omega),
+            };
+            (v / scale - 1.0).powi(2)
+        })
+        .sum();
+    (n as f64 * rounded_rss / dof.powi(2) < before).then_some(refined)
+}
+
+/// `tau` rounded to [`TAU_DIGITS`] significant digits.
+fn round_tau(tau: f64) -> f64 {
+    format!("{tau:.prec$e}", prec = TAU_DIGITS - 1)
+        .parse()
+        .unwrap_or(tau)
 }
 
 /// The τ grid over `[lo, hi]`: `⌈log10(hi/lo) N⌉ + 1` log-spaced values, both ends included,
@@ -682,8 +1067,8 @@ fn solve(
         Regularisation::Fixed(lambda) => problem.at(lambda)?,
         Regularisation::Gcv => gcv(&problem)?,
     };
-    let band = band(&chosen, taus, scale, n);
     let prony = prony_of(&chosen.x, taus, scale)?;
+    let band = band(&chosen, taus, scale, n, prony.clone());
     Ok(Solved {
         prony,
         smoothing: chosen.lambda,
@@ -760,7 +1145,7 @@ fn gcv(problem: &Problem) -> Result<Candidate, FitError> {
 
 /// The band of a solution: `σ̂² = RSS/(n − edf)`, `C = σ̂² (R̂ᵀR̂)⁻¹` on the free unknowns
 /// (Wahba 1983), and the multiplier (module docs).
-fn band(chosen: &Candidate, taus: &[f64], scale: f64, n: usize) -> Band {
+fn band(chosen: &Candidate, taus: &[f64], scale: f64, n: usize, series: Prony) -> Band {
     let p = taus.len() + 1;
     let dof = n as f64 - chosen.edf;
     // below one residual degree of freedom the scatter is not estimable: no bound
@@ -797,6 +1182,7 @@ fn band(chosen: &Candidate, taus: &[f64], scale: f64, n: usize) -> Band {
         covariance,
         sigma: sigma2.sqrt(),
         multiplier: multiplier(chosen.edf),
+        series,
     }
 }
 
