@@ -710,11 +710,12 @@ fn kramers_kronig(
             start = k;
         }
     }
-    if decades.len() > 1 && decades[decades.len() - 1].1 - decades[decades.len() - 1].0 < 3 {
-        if let Some((_, end)) = decades.pop() {
-            let l = decades.len() - 1;
-            decades[l].1 = end;
-        }
+    if decades.len() > 1
+        && decades[decades.len() - 1].1 - decades[decades.len() - 1].0 < 3
+        && let Some((_, end)) = decades.pop()
+    {
+        let l = decades.len() - 1;
+        decades[l].1 = end;
     }
     // an implied E″ of 0 (no term near this frequency): a ratio capped at 1e6
     let implied_loss: Vec<f64> = omegas
@@ -850,7 +851,7 @@ fn refine_taus(rows: &[Row], solved: &Solved, grid: &[f64], scale: f64) -> Optio
     }
     let before = n as f64 * rss0 / (n as f64 - solved.effective_parameters).powi(2);
     let after = n as f64 * rss / dof.powi(2);
-    if !(after < before) {
+    if after.partial_cmp(&before) != Some(std::cmp::Ordering::Less) {
         return None;
     }
     let terms: Vec<PronyTerm> = (0..m)
