@@ -157,8 +157,10 @@ pub fn permeation_source(life: &LifeProblem) -> Option<String> {
 
 /// Why a compound stands where it does in a comparison's ranking (docs/model.md §6.8), best
 /// group first. The scale has no "C"/"conditional" grade: each source's "fair" or
-/// "short-term only" maps to B (limited), which is compatible here, so a B compound can head
-/// the ranking and its rating says "limited" beside it.
+/// "short-term only" maps to B (limited). B is compatible here (the issue asks for the
+/// compounds rated A or B), but within a group every A comes before every B: the life runs
+/// model no fluid attack, so the attack a B warns of is missing from a B compound's life,
+/// which reads longer than it is (the conservative order).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
 pub enum RankBasis {
     /// Rated A (recommended) or B (limited) for the run's medium, with every figure its
@@ -198,6 +200,8 @@ pub struct Standing {
     /// The verdict relies on a NOT SOURCED permeation bound (docs/model.md §13.4): ranked,
     /// but flagged.
     pub not_sourced: bool,
+    /// 0 for A, 1 for B, 2 not rated or X: A before B within a group.
+    tier: u8,
 }
 
 impl Standing {
@@ -219,7 +223,7 @@ impl Standing {
 pub fn medium(run: &CompoundRun) -> &'static str {
     run.scenario
         .fluid_class
-        .map_or("this fluid (not a rated class)", |c| c.as_str())
+        .map_or("this fluid", |c| c.as_str())
 }
 
 /// A run's life for the ranking \[s\]: the time to failure, +∞ for a run that survives (the
@@ -254,17 +258,24 @@ pub fn standing(run: &CompoundRun) -> Standing {
         ),
         _ => (RankBasis::Compatible, String::new()),
     };
+    use crate::material::compatibility::Rating;
+    let tier = match run.scenario.compatibility.as_ref().map(|c| c.rating) {
+        Some(Rating::Recommended) => 0,
+        Some(Rating::Limited) => 1,
+        _ => 2,
+    };
     Standing {
         rank: 0,
         basis,
         reason,
         not_sourced,
+        tier,
     }
 }
 
 /// `runs` in the order `sealsim compare` lists them, each with its [`Standing`]: by basis
-/// (compatible, missing figure, not rated, incompatible), then by life, longest first; ties
-/// keep the order the compounds were given in. `raw` (`--all`): by life alone, ratings
+/// (compatible, missing figure, not rated, incompatible), within it A before B, then by life,
+/// longest first; ties keep the order the compounds were given in. `raw` (`--all`): by life alone, ratings
 /// ignored. The ranks count from 1 in the returned order.
 pub fn rank(runs: Vec<CompoundRun>, raw: bool) -> Vec<(CompoundRun, Standing)> {
     let mut ranked: Vec<(CompoundRun, Standing)> = runs
@@ -279,7 +290,7 @@ pub fn rank(runs: Vec<CompoundRun>, raw: bool) -> Vec<(CompoundRun, Standing)> {
         let group = if raw {
             std::cmp::Ordering::Equal
         } else {
-            sa.basis.cmp(&sb.basis)
+            (sa.basis, sa.tier).cmp(&(sb.basis, sb.tier))
         };
         group.then(life(b).total_cmp(&life(a)))
     });
@@ -289,23 +300,34 @@ pub fn rank(runs: Vec<CompoundRun>, raw: bool) -> Vec<(CompoundRun, Standing)> {
     ranked
 }
 
-/// The comparison's headline: the compatible compound(s) with the longest life (every one
-/// tied at it), or, when no compound is compatible, a plain statement that none is, never
-/// an unsuitable compound. Independent of the listed order (`--all`).
+/// The comparison's headline: among the compatible compounds of the best rating present (A,
+/// else B), the one(s) with the longest life (every one tied at it); when no compound is
+/// compatible, a plain statement that none is, never an unsuitable compound. Independent of
+/// the listed order (`--all`).
 pub fn headline(ranked: &[(CompoundRun, Standing)]) -> String {
     let Some((first, _)) = ranked.first() else {
         return String::new();
     };
     let medium = medium(first);
-    let compatible: Vec<&CompoundRun> = ranked
+    let tier = ranked
         .iter()
         .filter(|(_, s)| s.basis == RankBasis::Compatible)
+        .map(|(_, s)| s.tier)
+        .min();
+    let compatible: Vec<&CompoundRun> = ranked
+        .iter()
+        .filter(|(_, s)| s.basis == RankBasis::Compatible && Some(s.tier) == tier)
         .map(|(r, _)| r)
         .collect();
     let Some(best) = compatible.iter().map(|r| life(r)).reduce(f64::max) else {
+        let why = match first.scenario.fluid_class {
+            None => "the ratings cover mineral oil, water, hot water and water–glycol only",
+            // rated ones run without a figure their verdict needs count as not compatible
+            Some(_) => "or none has every figure its verdict needs",
+        };
         return format!(
-            "No compound in this comparison is rated A/B for {medium} with the figures its \
-             verdict needs: no longest life to headline (see rank_basis)"
+            "No compound in this comparison is rated A/B for {medium} ({why}): no longest life \
+             to headline; see each row's rank basis"
         );
     };
     let names: Vec<&str> = compatible
@@ -318,8 +340,13 @@ pub fn headline(ranked: &[(CompoundRun, Standing)]) -> String {
     } else {
         "no failure within the run".to_owned()
     };
+    let rated = if tier == Some(0) {
+        "A (recommended)"
+    } else {
+        "B (limited; none is rated A)"
+    };
     format!(
-        "Longest life among the compounds rated A/B for {medium}: {} ({when})",
+        "Longest life among the compounds rated {rated} for {medium}: {} ({when})",
         names.join(", ")
     )
 }
