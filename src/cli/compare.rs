@@ -109,9 +109,7 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
     );
     let headline = workflow::compare::headline(&runs);
     let floor = match runs.first() {
-        Some((r, _)) => {
-            super::leak_floor_flag(args.leak_floor.as_deref(), &r.scenario.life.fluid)?
-        }
+        Some((r, _)) => super::leak_floor_flag(args.leak_floor.as_deref(), &r.scenario.life.fluid)?,
         None => None,
     };
     let rows: Vec<CompareRow<'_>> = runs.iter().map(|run| CompareRow::of(run, floor)).collect();

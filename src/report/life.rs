@@ -2165,7 +2165,10 @@ pub fn compare_table(rows: &[CompareRow<'_>]) -> Result<String, ReportError> {
         }
         record.push(r.rank.to_string());
         record.push(r.rank_basis.clone());
-        record.push(r.rating.map_or(String::new(), |c| c.rating.letter().to_string()));
+        record.push(
+            r.rating
+                .map_or(String::new(), |c| c.rating.letter().to_string()),
+        );
         record.push(r.rating.map_or(String::new(), |c| c.source.clone()));
         writer.write_record(record).map_err(csv_error)?;
     }
@@ -2260,7 +2263,11 @@ pub fn compare_cells(rows: &[CompareRow<'_>]) -> Vec<Vec<String>> {
                 .next()
                 .unwrap_or_default()
                 .replace('_', " ")
-                + if r.rank_basis.contains("NOT SOURCED") { " (NOT SOURCED bound)" } else { "" },
+                + if r.rank_basis.contains("NOT SOURCED") {
+                    " (NOT SOURCED bound)"
+                } else {
+                    ""
+                },
             r.material.status.as_str().to_owned(),
             format!(
                 "{}{}",

@@ -248,10 +248,14 @@ pub fn standing(run: &CompoundRun) -> Standing {
             RankBasis::NotRated,
             format!("no source rated it for {}", class.as_str()),
         ),
-        (Some(_), Some(c)) if c.rating == crate::material::compatibility::Rating::NotRecommended => (
-            RankBasis::Incompatible,
-            format!("rated {} in {}", c.rating.letter(), c.class.as_str()),
-        ),
+        (Some(_), Some(c))
+            if c.rating == crate::material::compatibility::Rating::NotRecommended =>
+        {
+            (
+                RankBasis::Incompatible,
+                format!("rated {} in {}", c.rating.letter(), c.class.as_str()),
+            )
+        }
         _ if life_problem.ageing_source == crate::simulate::AgeingSource::MissingInComparison => (
             RankBasis::MissingFigure,
             "no ageing constants: run without ageing".to_owned(),
