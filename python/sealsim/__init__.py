@@ -330,17 +330,26 @@ def compare(
     compounds: Iterable[str],
     fidelity: Optional[str] = None,
     progress: Any = None,
+    raw: bool = False,
 ) -> Any:
     """The scenario run with each compound (library ids such as ``"nbr-70"`` or material-file
     paths) in place of its own (``sealsim compare``): one row per compound with the columns of
-    its CSV. Each compound's findings are ``.attrs["warnings"]`` of a DataFrame. ``progress``
-    as for :meth:`Scenario.run`."""
-    columns, findings = _sealsim._compare(
-        scenario._inner, list(compounds), fidelity, _progress(progress, "numerical level")
+    its CSV, ranked as the CLI ranks them: the compounds rated A or B for the run's medium
+    first, by life, then the others with their ``rank_basis`` (``raw=True``: by life alone,
+    as ``--all``). Each compound's findings are ``.attrs["warnings"]`` of a DataFrame and the
+    headline (it names only a compound rated A/B) is ``.attrs["headline"]``. ``progress`` as
+    for :meth:`Scenario.run`."""
+    columns, findings, headline = _sealsim._compare(
+        scenario._inner,
+        list(compounds),
+        fidelity,
+        _progress(progress, "numerical level"),
+        raw,
     )
     table = _table(columns)
     if hasattr(table, "attrs"):
         table.attrs["warnings"] = json.loads(findings)
+        table.attrs["headline"] = headline
     return table
 
 

@@ -65,6 +65,7 @@ def compare(
     compounds: Iterable[str],
     fidelity: Optional[str] = ...,
     progress: Progress = ...,
+    raw: bool = ...,
 ) -> Table: ...
 def study(
     source: Union[PathLike, str], threads: Optional[int] = ..., progress: Progress = ...

@@ -589,14 +589,15 @@ fn compound(spec: &str) -> PyResult<Material> {
 
 /// `sealsim compare`: the comparison table's columns and each compound's findings (JSON).
 #[pyfunction]
-#[pyo3(signature = (scenario, compounds, fidelity = None, progress = None))]
+#[pyo3(signature = (scenario, compounds, fidelity = None, progress = None, raw = false))]
 fn _compare<'py>(
     py: Python<'py>,
     scenario: &PyScenario,
     compounds: Vec<String>,
     fidelity: Option<&str>,
     progress: Option<Bound<'py, PyAny>>,
-) -> PyResult<(Bound<'py, PyDict>, String)> {
+    raw: bool,
+) -> PyResult<(Bound<'py, PyDict>, String, String)> {
     let level = self::fidelity(fidelity)?;
     let materials: Vec<(String, Material)> = compounds
         .iter()
@@ -609,17 +610,21 @@ fn _compare<'py>(
                 .map_err(scenario_error)
         })
         .collect::<PyResult<_>>()?;
-    let (csv, findings) = blocking_with_progress(py, progress.as_ref(), move |meter| {
-        let runs = workflow::compare::compare_scenarios(
-            scenarios,
-            materials,
-            level,
-            &mut |done, total| meter.set(done, total),
+    let (csv, findings, headline) = blocking_with_progress(py, progress.as_ref(), move |meter| {
+        // ranked as `sealsim compare` ranks (`raw`: its `--all`)
+        let runs = workflow::compare::rank(
+            workflow::compare::compare_scenarios(
+                scenarios,
+                materials,
+                level,
+                &mut |done, total| meter.set(done, total),
+            ),
+            raw,
         );
         let rows: Vec<CompareRow<'_>> = runs.iter().map(|run| CompareRow::of(run, None)).collect();
         let findings: serde_json::Map<String, serde_json::Value> = runs
             .iter()
-            .map(|run| {
+            .map(|(run, _)| {
                 let records = sealsim::report::findings::records(&run.result.findings);
                 (
                     run.label.clone(),
@@ -627,10 +632,14 @@ fn _compare<'py>(
                 )
             })
             .collect();
-        (compare_table(&rows), serde_json::to_string(&findings))
+        (
+            compare_table(&rows),
+            serde_json::to_string(&findings),
+            workflow::compare::headline(&runs),
+        )
     })?;
     let csv = csv.map_err(internal)?;
-    Ok((columns(py, &csv)?, findings.map_err(internal)?))
+    Ok((columns(py, &csv)?, findings.map_err(internal)?, headline))
 }
 
 /// `sealsim study`: (cases columns, summary JSON text). `source` is a study file's path or its

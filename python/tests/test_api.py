@@ -143,6 +143,26 @@ def test_compare_rows_and_errors():
         sealsim.compare(sealsim.Scenario.from_file(HEADLINE), ["missing/compound.toml"])
 
 
+def test_compare_ranks_compatible_compounds_first():
+    """Issue 40: in mineral oil EPDM (rated X) survives like FKM (rated A) but never leads;
+    the headline names a compound rated A; ``raw=True`` is the CLI's ``--all`` (by life)."""
+    oil = sealsim.Scenario.from_file("scenarios/oring-nbr-hydraulic-oil-clean.toml")
+    ids = ["epdm-70", "nbr-70", "fkm-75", "hnbr-75"]
+    t = sealsim.compare(oil, ids)
+    assert list(t["material"]) == ["fkm-75", "nbr-70", "hnbr-75", "epdm-70"]
+    assert list(t["rank"]) == [1, 2, 3, 4]
+    assert list(t["rating"][:2]) == ["A", "A"]
+    assert t["rank_basis"][3] == "incompatible (rated X in mineral oil)"
+    assert "incompatible with mineral oils" in t["rating_source"][3]
+    headline = t.attrs["headline"]
+    assert headline.startswith("Longest life among the compounds rated A (recommended) for mineral oil: fkm-75")
+    assert "epdm-70" not in headline
+    raw = sealsim.compare(oil, ids, raw=True)
+    # by life: the two survivors (blank time) in the given order, then the longer-lived
+    assert list(raw["material"]) == ["epdm-70", "fkm-75", "hnbr-75", "nbr-70"]
+    assert raw.attrs["headline"] == headline
+
+
 def test_study_errors():
     with pytest.raises(FileNotFoundError):
         sealsim.study("scenarios/studies/no-such.study.toml")

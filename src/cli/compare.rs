@@ -29,7 +29,11 @@ use std::path::{Path, PathBuf};
     total_throughput_1day_Pa_m3_per_s, … (with the permeation through the rubber); then at the \
     end of the run sealing_force_end_N_per_m, retained_force_end (over the retained-force \
     reference), leaked_volume_end_m3, compression_set_end (with ageing), state_end \
-    (sealed|leaking|pressure_held|lift_off)."
+    (sealed|leaking|pressure_held|lift_off); last rank, rank_basis (compatible|missing_figure|\
+    not_rated|incompatible, with the reason), rating (A|B|X, blank: not rated) and \
+    rating_source. Rows are ranked: the compounds rated A or B for the run's medium first, by \
+    life; then those run without a figure the verdict needs, the unrated and the X-rated, each \
+    by life. The headline names only a compound rated A/B (--all: the raw order by life)."
 )]
 pub struct CompareArgs {
     /// Scenario file (TOML).
@@ -62,6 +66,11 @@ pub struct CompareArgs {
     #[arg(long, value_name = "RATE")]
     pub leak_floor: Option<String>,
 
+    /// List the compounds in the raw order by life, ratings ignored (the headline still
+    /// names only a compound rated A/B for the medium; the rank columns stay).
+    #[arg(long)]
+    pub all: bool,
+
     #[command(flatten)]
     pub fail: super::FailExitCode,
 }
@@ -89,14 +98,18 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
             ("--report", args.report.as_deref()),
         ],
     )?;
-    let runs = workflow::compare::compare(
-        &args.scenario,
-        materials,
-        args.fidelity,
-        &mut progress_bar("numerical level"),
-    )?;
+    let runs = workflow::compare::rank(
+        workflow::compare::compare(
+            &args.scenario,
+            materials,
+            args.fidelity,
+            &mut progress_bar("numerical level"),
+        )?,
+        args.all,
+    );
+    let headline = workflow::compare::headline(&runs);
     let floor = match runs.first() {
-        Some(r) => super::leak_floor_flag(args.leak_floor.as_deref(), &r.scenario.life.fluid)?,
+        Some((r, _)) => super::leak_floor_flag(args.leak_floor.as_deref(), &r.scenario.life.fluid)?,
         None => None,
     };
     let rows: Vec<CompareRow<'_>> = runs.iter().map(|run| CompareRow::of(run, floor)).collect();
@@ -105,7 +118,7 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
         .as_ref()
         .map(|_| compare_table(&rows))
         .transpose()?;
-    let name = runs.first().map_or("", |r| r.scenario.name.as_str());
+    let name = runs.first().map_or("", |(r, _)| r.scenario.name.as_str());
     let wants_chart = args.plot.is_some() || args.report.is_some();
     let svg = match (wants_chart, rows.first()) {
         (true, Some(first)) => Some(
@@ -119,7 +132,7 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
         ),
         _ => None,
     };
-    let mut text = format!("{name} ({})\n", args.scenario.display());
+    let mut text = format!("{name} ({})\n{headline}\n", args.scenario.display());
     text += &compare_text(&rows);
     let page = args.report.as_ref().map(|_| {
         let cells = compare_cells(&rows);
@@ -127,13 +140,14 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
             name,
             &args.scenario.display().to_string(),
             &runs,
+            &headline,
             &cells,
             svg.as_deref(),
         )
     });
 
-    super::print_shared_warnings(runs.iter().map(|r| (r.label.as_str(), &r.scenario)));
-    for run in &runs {
+    super::print_shared_warnings(runs.iter().map(|(r, _)| (r.label.as_str(), &r.scenario)));
+    for (run, _) in &runs {
         print_findings(Some(&run.label), &run.result.findings);
     }
     if let (Some(path), Some(csv)) = (&args.output, &csv) {
@@ -146,7 +160,7 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
         write_output(Some(path), page.as_bytes())?;
     }
     write_output(None, text.as_bytes())?;
-    args.fail.verdict(runs.iter().any(|r| {
+    args.fail.verdict(runs.iter().any(|(r, _)| {
         crate::report::life::verdict(&r.scenario.life, &r.result).kind
             != crate::report::life::VerdictKind::Survives
     }))
@@ -156,7 +170,8 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
 fn report_page(
     name: &str,
     file: &str,
-    runs: &[workflow::compare::CompoundRun],
+    runs: &[(workflow::compare::CompoundRun, workflow::compare::Standing)],
+    headline: &str,
     cells: &[Vec<String>],
     svg: Option<&str>,
 ) -> String {
@@ -166,20 +181,11 @@ fn report_page(
         "<p class=\"meta\">scenario file {} · sealsim compare</p>\n",
         html::escape(file)
     );
-    let best = runs
-        .iter()
-        .max_by(|a, b| {
-            let life = |r: &workflow::compare::CompoundRun| {
-                r.result.failure.map_or(f64::INFINITY, |f| f.time)
-            };
-            life(a).total_cmp(&life(b))
-        })
-        .map(|r| r.label.as_str())
-        .unwrap_or("");
-    body += &html::verdict("info", &format!("Longest life: {best}"));
+    // the headline names only a compound rated A/B for the medium (workflow::compare::headline)
+    body += &html::verdict("info", headline);
     if runs
         .iter()
-        .any(|r| r.material.status == crate::material::Status::Illustrative)
+        .any(|(r, _)| r.material.status == crate::material::Status::Illustrative)
     {
         body += "<p class=\"illustrative\">ILLUSTRATIVE material data in at least one compound: \
                  the results show trends, they are not for design decisions.</p>\n";
@@ -204,7 +210,7 @@ fn report_page(
     };
     let lines: Vec<String> = runs
         .iter()
-        .flat_map(|run| {
+        .flat_map(|(run, _)| {
             html::validity_lines(
                 Some(&run.label),
                 &run.scenario.warnings,
@@ -213,7 +219,7 @@ fn report_page(
         })
         .collect();
     body += &html::validity(&lines);
-    if let Some(run) = runs.first() {
+    if let Some((run, _)) = runs.first() {
         body += &html::fidelity(run.scenario.life.fidelity);
         body += &html::file(
             html::SCENARIO_TITLE,

@@ -1978,13 +1978,26 @@ pub struct CompareRow<'a> {
     pub ageing_source: String,
     /// A gas: the permeation figure's basis (sourced, derived, NOT SOURCED bound, user's).
     pub permeation_source: Option<String>,
+    /// Its place in the listed order, 1 first ([`crate::workflow::compare::rank`]).
+    pub rank: usize,
+    /// Why it stands there ([`crate::workflow::compare::Standing::describe`]).
+    pub rank_basis: String,
+    /// The compound's rating for the run's medium with its source (docs/model.md §6.8);
+    /// `None`: not rated.
+    pub rating: Option<&'a crate::material::compatibility::Compatibility>,
 }
 
 impl<'a> CompareRow<'a> {
-    /// The row of one compound's run of [`crate::workflow::compare`]: its run length, mean
-    /// pressure and notes from the run's own scenario; leak rates below `floor` \[m³/s\]
-    /// (`--leak-floor`; `None`: one molecule a second) read "≈ 0".
-    pub fn of(run: &'a crate::workflow::compare::CompoundRun, floor: Option<f64>) -> Self {
+    /// The row of one compound's run of [`crate::workflow::compare`] at its `standing` in the
+    /// ranking: its run length, mean pressure and notes from the run's own scenario; leak
+    /// rates below `floor` \[m³/s\] (`--leak-floor`; `None`: one molecule a second) read "≈ 0".
+    pub fn of(
+        (run, standing): &'a (
+            crate::workflow::compare::CompoundRun,
+            crate::workflow::compare::Standing,
+        ),
+        floor: Option<f64>,
+    ) -> Self {
         let life = &run.scenario.life;
         CompareRow {
             label: &run.label,
@@ -1996,6 +2009,9 @@ impl<'a> CompareRow<'a> {
             notes: crate::workflow::compare::notes(life, run.scenario.compatibility.as_ref()),
             ageing_source: crate::workflow::compare::ageing_source(life, &run.material),
             permeation_source: crate::workflow::compare::permeation_source(life),
+            rank: standing.rank,
+            rank_basis: standing.describe(),
+            rating: run.scenario.compatibility.as_ref(),
         }
     }
 }
@@ -2017,6 +2033,12 @@ pub const COMPARE_END_COLUMNS: [&str; 10] = [
 /// The comparison's last columns: where each compound's ageing activation energy comes from,
 /// and (a gas) its permeation figure's basis (docs/model.md §6.5, §13.4).
 pub const COMPARE_SOURCE_COLUMNS: [&str; 2] = ["activation_energy_source", "permeation_source"];
+
+/// The comparison's ranking columns, last: the rank in the listed order, its basis
+/// (compatible, missing_figure, not_rated, incompatible, with the reason), the compound's
+/// rating for the run's medium (A, B, X; blank: not rated) and the rating's source
+/// (docs/model.md §6.8).
+pub const COMPARE_RANK_COLUMNS: [&str; 4] = ["rank", "rank_basis", "rating", "rating_source"];
 
 impl CompareRow<'_> {
     /// The run's verdict kind (`undecided` where the neighbouring level gives another outcome).
@@ -2092,6 +2114,7 @@ pub fn compare_table(rows: &[CompareRow<'_>]) -> Result<String, ReportError> {
     if gas.is_some() {
         header.push(COMPARE_SOURCE_COLUMNS[1]);
     }
+    header.extend(COMPARE_RANK_COLUMNS);
     writer.write_record(&header).map_err(csv_error)?;
     for (i, r) in rows.iter().enumerate() {
         let row = i + 1;
@@ -2140,6 +2163,13 @@ pub fn compare_table(rows: &[CompareRow<'_>]) -> Result<String, ReportError> {
         if gas.is_some() {
             record.push(r.permeation_source.clone().unwrap_or_default());
         }
+        record.push(r.rank.to_string());
+        record.push(r.rank_basis.clone());
+        record.push(
+            r.rating
+                .map_or(String::new(), |c| c.rating.letter().to_string()),
+        );
+        record.push(r.rating.map_or(String::new(), |c| c.source.clone()));
         writer.write_record(record).map_err(csv_error)?;
     }
     finish(writer)
@@ -2185,7 +2215,10 @@ pub fn compare_cells(rows: &[CompareRow<'_>]) -> Vec<Vec<String>> {
         None => "m³/s",
     };
     let mut cells: Vec<Vec<String>> = vec![vec![
+        "rank".to_owned(),
         "material".to_owned(),
+        "rating".to_owned(),
+        "rank basis".to_owned(),
         "status".to_owned(),
         "time to failure".to_owned(),
         "mode".to_owned(),
@@ -2220,7 +2253,21 @@ pub fn compare_cells(rows: &[CompareRow<'_>]) -> Vec<Vec<String>> {
         let [day, year, decade] = r.detected_leak_rates();
         let (force, retained, volume, set, state) = r.end();
         cells.push(vec![
+            r.rank.to_string(),
             r.label.to_owned(),
+            r.rating
+                .map_or_else(|| "-".to_owned(), |c| c.rating.letter().to_string()),
+            // the basis word; the reason is in the notes (a rating) or the CSV
+            r.rank_basis
+                .split(" (")
+                .next()
+                .unwrap_or_default()
+                .replace('_', " ")
+                + if r.rank_basis.contains("NOT SOURCED") {
+                    " (NOT SOURCED bound)"
+                } else {
+                    ""
+                },
             r.material.status.as_str().to_owned(),
             format!(
                 "{}{}",
@@ -2448,6 +2495,9 @@ mod tests {
             notes: String::new(),
             ageing_source: "no ageing constants".into(),
             permeation_source: None,
+            rank: 1,
+            rank_basis: "compatible".into(),
+            rating: None,
         }];
         let text = compare_table(&rows).unwrap();
         let line = text.lines().nth(1).unwrap();
@@ -2457,7 +2507,8 @@ mod tests {
             |line: &str, k: usize| -> f64 { line.split(',').nth(k).unwrap().parse().unwrap() };
         let (head, tail) = line.rsplit_once(",,leaking,").unwrap();
         // verdict, no band (neighbour level and verdict blank), no notes, the Ea source
-        assert_eq!(tail, "fails,,,,no ageing constants");
+        // then the rank, its basis, no rating, no rating source
+        assert_eq!(tail, "fails,,,,no ageing constants,1,compatible,,");
         assert!(
             head.starts_with("x,rubber,user,7.8894e7,leak_rate,1e-12,,,1e3,1e0,"),
             "{line}"
@@ -2477,7 +2528,8 @@ mod tests {
              total_throughput_1year_Pa_m3_per_s,total_throughput_10years_Pa_m3_per_s,\
              sealing_force_end_N_per_m,retained_force_end,leaked_volume_end_m3,\
              leaked_volume_is_lower_bound,compression_set_end,state_end,verdict,neighbour_level,\
-             neighbour_verdict,notes,activation_energy_source,permeation_source"
+             neighbour_verdict,notes,activation_energy_source,permeation_source,rank,rank_basis,\
+             rating,rating_source"
         ));
         let line = text.lines().nth(1).unwrap();
         assert!(
@@ -2485,7 +2537,9 @@ mod tests {
             "{line}"
         );
         assert!(
-            line.ends_with(",,leaking,fails,,,,no ageing constants,NOT SOURCED bound: x"),
+            line.ends_with(
+                ",,leaking,fails,,,,no ageing constants,NOT SOURCED bound: x,1,compatible,,"
+            ),
             "{line}"
         );
         assert!((volume_cell(line, 16) / (1e-12 * 2.0 * DAY) - 1.0).abs() < 1e-12);

@@ -99,6 +99,10 @@ pub struct Scenario {
     /// The library compound's rating in the library fluid's class (docs/model.md §6.8); `None`
     /// when the fluid is not a rated class or no source rated the pair.
     pub compatibility: Option<compatibility::Compatibility>,
+    /// The library fluid's class on the rating scale at the run's highest temperature
+    /// ([`compatibility::FluidClass::of`]); `None` for a fluid the ratings do not cover (a
+    /// gas, an inline fluid). `sealsim compare` ranks by it.
+    pub fluid_class: Option<compatibility::FluidClass>,
     /// The files the scenario reads besides itself (a material file, a temperature history,
     /// PSD files, height maps, traces, a contact profile, a size distribution), as resolved
     /// from the scenario's directory: no output may be written over them.

@@ -484,6 +484,9 @@ impl Source<'_> {
                 .and_then(|l| crate::fluid::library(l.get_ref()).map(|f| (l, f))),
         };
         let compatibility = self.run_warnings(&run, &mut warnings)?;
+        let fluid_class = run.known_fluid.and_then(|(_, fluid)| {
+            super::compatibility::FluidClass::of(fluid.id, life.environment.range().1)
+        });
         let static_seal = static_seal(&life);
         // the static problem sees the asperity modulus of the installed state, as the first row
         // of a life run does
@@ -509,6 +512,7 @@ impl Source<'_> {
             gland: seal.design,
             warnings,
             compatibility,
+            fluid_class,
             inputs: self.data_files(raw),
         })
     }

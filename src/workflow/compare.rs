@@ -154,3 +154,203 @@ pub fn ageing_source(life: &LifeProblem, material: &Material) -> String {
 pub fn permeation_source(life: &LifeProblem) -> Option<String> {
     life.permeation.as_ref().map(|p| p.data.basis())
 }
+
+/// Why a compound stands where it does in a comparison's ranking (docs/model.md §6.8), best
+/// group first. The scale has no "C"/"conditional" grade: each source's "fair" or
+/// "short-term only" maps to B (limited). B is compatible here (the issue asks for the
+/// compounds rated A or B), but within a group every A comes before every B: the life runs
+/// model no fluid attack, so the attack a B warns of is missing from a B compound's life,
+/// which reads longer than it is (the conservative order).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum RankBasis {
+    /// Rated A (recommended) or B (limited) for the run's medium, with every figure its
+    /// verdict needs: the only compounds a headline may name.
+    Compatible,
+    /// Rated A or B, but run without a figure the scenario's verdict needs (ageing constants):
+    /// its life is an optimistic one (no ageing), so it is listed after the compatible ones.
+    MissingFigure,
+    /// No source rated the compound for the run's medium, or the ratings do not cover the
+    /// medium (a gas, an inline fluid): unknown is not compatible.
+    NotRated,
+    /// Rated X (not recommended) for the run's medium: whatever its life, never first.
+    Incompatible,
+}
+
+impl RankBasis {
+    /// The word of the `rank_basis` column.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            RankBasis::Compatible => "compatible",
+            RankBasis::MissingFigure => "missing_figure",
+            RankBasis::NotRated => "not_rated",
+            RankBasis::Incompatible => "incompatible",
+        }
+    }
+}
+
+/// A compound's place in a comparison: its rank (1 first, in the listed order), its basis,
+/// the reason it is not compatible (empty when it is) and a flag on a compatible verdict
+/// that rests on a NOT SOURCED bound.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Standing {
+    pub rank: usize,
+    pub basis: RankBasis,
+    /// Why the compound is listed after the compatible ones (empty for a compatible one).
+    pub reason: String,
+    /// The verdict relies on a NOT SOURCED permeation bound (docs/model.md §13.4): ranked,
+    /// but flagged.
+    pub not_sourced: bool,
+    /// 0 for A, 1 for B, 2 not rated or X: A before B within a group.
+    tier: u8,
+}
+
+impl Standing {
+    /// The `rank_basis` column: the basis, its reason, the NOT SOURCED flag.
+    pub fn describe(&self) -> String {
+        let mut out = self.basis.as_str().to_owned();
+        if !self.reason.is_empty() {
+            out += &format!(" ({})", self.reason);
+        }
+        if self.not_sourced {
+            out += "; flagged: NOT SOURCED permeation bound";
+        }
+        out
+    }
+}
+
+/// The medium the ratings are read for: the fluid class's name, or a phrase for a fluid the
+/// ratings do not cover.
+pub fn medium(run: &CompoundRun) -> &'static str {
+    run.scenario
+        .fluid_class
+        .map_or("this fluid", |c| c.as_str())
+}
+
+/// A run's life for the ranking \[s\]: the time to failure, +∞ for a run that survives (the
+/// criterion `compare` has always ranked by).
+fn life(run: &CompoundRun) -> f64 {
+    run.result.failure.map_or(f64::INFINITY, |f| f.time)
+}
+
+/// The basis of one compound's run, with its reason and flag (rank 0: set by [`rank`]).
+pub fn standing(run: &CompoundRun) -> Standing {
+    let life_problem = &run.scenario.life;
+    let not_sourced = life_problem
+        .permeation
+        .as_ref()
+        .is_some_and(|p| p.data.status == crate::permeation::DataStatus::Bound);
+    let (basis, reason) = match (run.scenario.fluid_class, &run.scenario.compatibility) {
+        (None, _) => (
+            RankBasis::NotRated,
+            "the ratings cover mineral oil, water, hot water and water–glycol only".to_owned(),
+        ),
+        (Some(class), None) => (
+            RankBasis::NotRated,
+            format!("no source rated it for {}", class.as_str()),
+        ),
+        (Some(_), Some(c))
+            if c.rating == crate::material::compatibility::Rating::NotRecommended =>
+        {
+            (
+                RankBasis::Incompatible,
+                format!("rated {} in {}", c.rating.letter(), c.class.as_str()),
+            )
+        }
+        _ if life_problem.ageing_source == crate::simulate::AgeingSource::MissingInComparison => (
+            RankBasis::MissingFigure,
+            "no ageing constants: run without ageing".to_owned(),
+        ),
+        _ => (RankBasis::Compatible, String::new()),
+    };
+    use crate::material::compatibility::Rating;
+    let tier = match run.scenario.compatibility.as_ref().map(|c| c.rating) {
+        Some(Rating::Recommended) => 0,
+        Some(Rating::Limited) => 1,
+        _ => 2,
+    };
+    Standing {
+        rank: 0,
+        basis,
+        reason,
+        not_sourced,
+        tier,
+    }
+}
+
+/// `runs` in the order `sealsim compare` lists them, each with its [`Standing`]: by basis
+/// (compatible, missing figure, not rated, incompatible), within it A before B, then by life,
+/// longest first; ties keep the order the compounds were given in. `raw` (`--all`): by life alone, ratings
+/// ignored. The ranks count from 1 in the returned order.
+pub fn rank(runs: Vec<CompoundRun>, raw: bool) -> Vec<(CompoundRun, Standing)> {
+    let mut ranked: Vec<(CompoundRun, Standing)> = runs
+        .into_iter()
+        .map(|run| {
+            let s = standing(&run);
+            (run, s)
+        })
+        .collect();
+    // a stable sort: equal keys keep the given order
+    ranked.sort_by(|(a, sa), (b, sb)| {
+        let group = if raw {
+            std::cmp::Ordering::Equal
+        } else {
+            (sa.basis, sa.tier).cmp(&(sb.basis, sb.tier))
+        };
+        group.then(life(b).total_cmp(&life(a)))
+    });
+    for (i, (_, s)) in ranked.iter_mut().enumerate() {
+        s.rank = i + 1;
+    }
+    ranked
+}
+
+/// The comparison's headline: among the compatible compounds of the best rating present (A,
+/// else B), the one(s) with the longest life (every one tied at it); when no compound is
+/// compatible, a plain statement that none is, never an unsuitable compound. Independent of
+/// the listed order (`--all`).
+pub fn headline(ranked: &[(CompoundRun, Standing)]) -> String {
+    let Some((first, _)) = ranked.first() else {
+        return String::new();
+    };
+    let medium = medium(first);
+    let tier = ranked
+        .iter()
+        .filter(|(_, s)| s.basis == RankBasis::Compatible)
+        .map(|(_, s)| s.tier)
+        .min();
+    let compatible: Vec<&CompoundRun> = ranked
+        .iter()
+        .filter(|(_, s)| s.basis == RankBasis::Compatible && Some(s.tier) == tier)
+        .map(|(r, _)| r)
+        .collect();
+    let Some(best) = compatible.iter().map(|r| life(r)).reduce(f64::max) else {
+        let why = match first.scenario.fluid_class {
+            None => "the ratings cover mineral oil, water, hot water and water–glycol only",
+            // rated ones run without a figure their verdict needs count as not compatible
+            Some(_) => "or none has every figure its verdict needs",
+        };
+        return format!(
+            "No compound in this comparison is rated A/B for {medium} ({why}): no longest life \
+             to headline; see each row's rank basis"
+        );
+    };
+    let names: Vec<&str> = compatible
+        .iter()
+        .filter(|r| life(r) == best)
+        .map(|r| r.label.as_str())
+        .collect();
+    let when = if best.is_finite() {
+        format!("fails after {}", crate::report::life::human_time(best))
+    } else {
+        "no failure within the run".to_owned()
+    };
+    let rated = if tier == Some(0) {
+        "A (recommended)"
+    } else {
+        "B (limited; none is rated A)"
+    };
+    format!(
+        "Longest life among the compounds rated {rated} for {medium}: {} ({when})",
+        names.join(", ")
+    )
+}

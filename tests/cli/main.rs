@@ -33,6 +33,7 @@ mod materials;
 mod motion;
 mod new;
 mod ranges;
+mod ranking;
 mod report;
 mod rubber;
 mod run;

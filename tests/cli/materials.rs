@@ -856,8 +856,8 @@ fn compare_flags_fkm_in_hot_water_and_coolant_and_hnbr_outlives_nbr_in_hot_oil()
     let notes = |rows: &[(String, Vec<String>)], id: &str| {
         rows.iter()
             .find(|(k, _)| k == id)
-            // the notes column; the compound's Ea source follows it
-            .map(|(_, r)| r[r.len() - 2].clone())
+            // the notes column; the compound's Ea source and the four rank columns follow it
+            .map(|(_, r)| r[r.len() - 6].clone())
             .unwrap()
     };
     let water = compare_rows(&[], "fkm-75,epdm-70");
