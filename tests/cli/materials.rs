@@ -1044,3 +1044,78 @@ fn the_readme_counts_the_library_by_status() {
         assert!(text.contains(&sentence), "{doc} lacks: {sentence}");
     }
 }
+
+/// `materials new`: the shipped example datasheet gives a compound file whose T10 is the
+/// datasheet's (read back by the library's own T10) and which a scenario runs on; the summary
+/// comes first on standard output.
+#[test]
+fn materials_new_writes_a_compound_a_run_can_use() {
+    let dir = Dir::new();
+    let sheet = fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/lab-data/datasheet-nbr.toml"),
+    )
+    .unwrap();
+    let sheet_path = dir.write("sheet.toml", &sheet);
+    let out_path = dir.0.path().join("compound.toml");
+    let (out, _) = ok(&["materials", "new", s(&sheet_path), "-o", s(&out_path)]);
+    assert!(out.starts_with("compound "), "{out}");
+    assert!(out.contains("T10            -30.0 °C"), "{out}");
+    let m = load_material_file(&out_path).unwrap();
+    let t10 = m.low_temperature_limit().unwrap() - 273.15;
+    assert!((t10 + 30.0).abs() < 0.01, "T10 {t10} °C");
+    assert!(m.provenance_of("ageing").unwrap().contains("D395"));
+    let scenario = crate::support::edited(
+        &crate::support::shipped("oring-nbr-hydraulic-oil-clean.toml"),
+        &[("library = \"nbr-70\"", "file = \"compound.toml\"")],
+    );
+    let scenario_path = dir.write("scenario.toml", &scenario);
+    ok(&[
+        "run",
+        s(&scenario_path),
+        "-o",
+        s(&dir.0.path().join("out.csv")),
+    ]);
+}
+
+/// A datasheet that cannot make a compound exits 2 naming file, line and key (or the reading),
+/// writes nothing, and never overwrites its own input.
+#[test]
+fn materials_new_refuses_a_bad_datasheet_and_writes_nothing() {
+    let dir = Dir::new();
+    let good = fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/lab-data/datasheet-nbr.toml"),
+    )
+    .unwrap();
+    let out_path = dir.0.path().join("compound.toml");
+    let no_t10 = dir.write("no-t10.toml", &good.replace("t10 = \"-30 C\"", ""));
+    let err = rejected(&["materials", "new", s(&no_t10), "-o", s(&out_path)]);
+    assert!(
+        err.contains("no-t10.toml:") && err.contains("datasheet.t10"),
+        "{err}"
+    );
+    let bare = dir.write("bare.toml", &good.replace("\"-30 C\"", "-30"));
+    let err = rejected(&["materials", "new", s(&bare), "-o", s(&out_path)]);
+    assert!(
+        err.contains("bare.toml:9") && err.contains("needs its unit"),
+        "{err}"
+    );
+    let tiny = dir.write(
+        "tiny.toml",
+        &good.replace("set = \"18 %\"", "set = \"2 %\""),
+    );
+    let err = rejected(&["materials", "new", s(&tiny), "-o", s(&out_path)]);
+    assert!(err.contains("viscoelasticity alone"), "{err}");
+    let class = dir.write(
+        "class.toml",
+        &good.replace("class = \"nbr\"", "class = \"pvc\""),
+    );
+    let err = rejected(&["materials", "new", s(&class), "-o", s(&out_path)]);
+    assert!(
+        err.contains("datasheet.class") && err.contains("nbr"),
+        "{err}"
+    );
+    assert!(!out_path.exists());
+    let sheet = dir.write("sheet.toml", &good);
+    rejected(&["materials", "new", s(&sheet), "-o", s(&sheet)]);
+    assert_eq!(fs::read_to_string(&sheet).unwrap(), good);
+}
