@@ -49,22 +49,7 @@ pub fn compound(file: &DatasheetFile) -> Result<(Material, String), DatasheetErr
         sheet.hardness,
         sheet.source
     );
-    let readings: Vec<String> = c
-        .points
-        .iter()
-        .map(|(p, ve, chem, k)| {
-            format!(
-                "{} h at {}: set {:.1} % = viscoelastic {:.1} % (the master curve, 30 min at 23 °C) \
-                 + chemical {:.1} % of the rest → k = {} 1/s",
-                human(p.time / 3600.0),
-                celsius(p.temperature),
-                p.set * 100.0,
-                ve * 100.0,
-                chem * 100.0,
-                human(*k)
-            )
-        })
-        .collect();
+    let readings: Vec<String> = c.points.iter().map(reading).collect();
     let ea = &c.bands.activation_energy;
     let ageing = format!(
         "k(T) from the datasheet's compression set (ASTM D395 B / ISO 815-1): {}; Ea = {} kJ/mol \
@@ -114,6 +99,19 @@ pub fn compound(file: &DatasheetFile) -> Result<(Material, String), DatasheetErr
     Ok((m.clone(), summary(file, &m, &c, t10, room_modulus)))
 }
 
+/// One reading: its set, the viscoelastic part (30 min at 23 °C), the chemical set and k.
+fn reading((p, ve, chem, k): &(datasheet::SetPoint, f64, f64, f64)) -> String {
+    format!(
+        "{} h at {:.1} °C: {:.1} % = viscoelastic {:.1} % + chemical {:.1} % → k = {} 1/s",
+        human(p.time / 3600.0),
+        p.temperature - 273.15,
+        p.set * 100.0,
+        ve * 100.0,
+        chem * 100.0,
+        human(*k)
+    )
+}
+
 fn summary(
     file: &DatasheetFile,
     m: &Material,
@@ -139,16 +137,8 @@ fn summary(
         sheet.hardness,
         c.scale
     );
-    for (p, ve, chem, k) in &c.points {
-        out += &format!(
-            "set reading    {} h at {}: {:.1} % = viscoelastic {:.1} % + chemical {:.1} % → k = {} 1/s\n",
-            human(p.time / 3600.0),
-            celsius(p.temperature),
-            p.set * 100.0,
-            ve * 100.0,
-            chem * 100.0,
-            human(*k)
-        );
+    for point in &c.points {
+        out += &format!("set reading    {}\n", reading(point));
     }
     let ea = &c.bands.activation_energy;
     out += &format!(

@@ -67,17 +67,7 @@ fn compare(text: &str, files: &[(&str, &str)], ids: &str, extra: &[&str]) -> Com
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    let mut reader = ::csv::Reader::from_path(dir.path().join("c.csv")).unwrap();
-    let header = reader
-        .headers()
-        .unwrap()
-        .iter()
-        .map(str::to_owned)
-        .collect();
-    let rows = reader
-        .records()
-        .map(|r| r.unwrap().iter().map(str::to_owned).collect())
-        .collect();
+    let (header, rows) = crate::support::read_csv(&dir.path().join("c.csv"));
     Compared {
         stdout: String::from_utf8(out.stdout).unwrap(),
         header,

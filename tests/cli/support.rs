@@ -102,7 +102,13 @@ pub fn compare_csv(
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    let mut reader = ::csv::Reader::from_path(&csv).unwrap();
+    let (header, rows) = read_csv(&csv);
+    (String::from_utf8(out.stdout).unwrap(), header, rows)
+}
+
+/// A CSV file's header and rows, as strings.
+pub fn read_csv(path: &std::path::Path) -> (Vec<String>, Vec<Vec<String>>) {
+    let mut reader = ::csv::Reader::from_path(path).unwrap();
     let header = reader
         .headers()
         .unwrap()
@@ -113,7 +119,7 @@ pub fn compare_csv(
         .records()
         .map(|r| r.unwrap().iter().map(str::to_owned).collect())
         .collect();
-    (String::from_utf8(out.stdout).unwrap(), header, rows)
+    (header, rows)
 }
 
 /// `sealsim run s.toml --summary s.json ARGS…` on `text` written as `s.toml` in `dir` (run
