@@ -151,12 +151,20 @@ fn summary(
     if let Some(a) = m.ageing {
         let rate = &c.bands.rate;
         out += &format!(
-            "k(23 °C)       {} 1/s, band {}–{} 1/s; chemical t50 at 100 °C: {} h\n",
+            "k at {:.1} °C   {} 1/s (the anchor: where the readings pin k), band {}–{} 1/s; \
+             chemical t50 at 100 °C: {} h\n",
+            a.reference_temperature - 273.15,
             human(a.rate),
             human(rate.low),
             human(rate.high),
             human(std::f64::consts::LN_2 / a.rate_at(373.15) / 3600.0)
         );
     }
+    out += &format!(
+        "study          [vary] \"ageing.activation_energy\" = {{ distribution = \"uniform\", \
+         min = \"{} kJ/mol\", max = \"{} kJ/mol\" }}   # Ea's band, about the anchor\n",
+        human(ea.low / 1e3),
+        human(ea.high / 1e3)
+    );
     out
 }

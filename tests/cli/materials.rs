@@ -1119,3 +1119,61 @@ fn materials_new_refuses_a_bad_datasheet_and_writes_nothing() {
     rejected(&["materials", "new", s(&sheet), "-o", s(&sheet)]);
     assert_eq!(fs::read_to_string(&sheet).unwrap(), good);
 }
+
+/// Issue 40: the band `materials new` prints for Ea is a study input as printed, and a study of
+/// the datasheet compound drawing Ea from it has wider B10 confidence bounds than the same
+/// study with Ea fixed at its value.
+#[test]
+fn a_study_drawing_a_datasheet_band_has_wider_b10_bounds_than_with_it_fixed() {
+    let dir = Dir::new();
+    let sheet = fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/lab-data/datasheet-nbr.toml"),
+    )
+    .unwrap();
+    let sheet_path = dir.write("sheet.toml", &sheet);
+    let (out, _) = ok(&[
+        "materials",
+        "new",
+        s(&sheet_path),
+        "-o",
+        s(&dir.path("compound.toml")),
+    ]);
+    let line = out
+        .lines()
+        .find_map(|l| l.strip_prefix("study          [vary] "))
+        .unwrap_or_else(|| panic!("{out}"));
+    let band_input = line.split("   #").next().unwrap().trim().to_owned();
+    let m = load_material_file(&dir.path("compound.toml")).unwrap();
+    let ea = m.ageing.unwrap().activation_energy / 1e3;
+    let scenario = crate::support::edited(
+        &crate::support::shipped("oring-nbr-water-80c.toml"),
+        &[("library = \"nbr-70\"", "file = \"compound.toml\"")],
+    );
+    dir.write("base.toml", &scenario);
+    let width = |vary: &str, name: &str| {
+        let study = format!(
+            "name = \"{name}\"\nbase = \"base.toml\"\ndesign = \"monte-carlo\"\nsamples = 16\n\
+             seed = 1\n\n[vary]\n{vary}\n"
+        );
+        let path = dir.write(&format!("{name}.study.toml"), &study);
+        let json = dir.path(&format!("{name}.json"));
+        ok(&["study", s(&path), "--summary", s(&json), "--threads", "2"]);
+        let v: serde_json::Value =
+            serde_json::from_str(&fs::read_to_string(&json).unwrap()).unwrap();
+        let (lo, hi) = (v["b10_lower_s"].as_f64(), v["b10_upper_s"].as_f64());
+        let (lo, hi) = (
+            lo.unwrap_or_else(|| panic!("{v}")),
+            hi.unwrap_or(f64::INFINITY),
+        );
+        hi - lo
+    };
+    let fixed = width(
+        &format!("\"ageing.activation_energy\" = {{ values = [\"{ea} kJ/mol\"] }}"),
+        "fixed",
+    );
+    let banded = width(&band_input, "band");
+    assert!(
+        banded > fixed && banded > 0.0,
+        "B10 bounds: band {banded} s, fixed {fixed} s"
+    );
+}

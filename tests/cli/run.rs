@@ -14,7 +14,8 @@ use tempfile::TempDir;
 const COMPARE_HEADER: &str = "material,name,status,time_to_failure_s,failure_mode,\
 leak_rate_1day_m3_per_s,leak_rate_1year_m3_per_s,leak_rate_10years_m3_per_s,\
 sealing_force_end_N_per_m,retained_force_end,leaked_volume_end_m3,leaked_volume_is_lower_bound,\
-compression_set_end,state_end,verdict,neighbour_level,neighbour_verdict,notes,activation_energy_source";
+compression_set_end,state_end,verdict,neighbour_level,neighbour_verdict,notes,activation_energy_source,\
+rank,rank_basis,rating,rating_source";
 
 const SUMMARY_KEYS: [&str; 10] = [
     "scenario",
@@ -631,14 +632,16 @@ fn compare_runs_each_compound() {
     assert_eq!(csv.lines().next(), Some(COMPARE_HEADER));
     let rows = csv_rows(&csv);
     assert_eq!(rows.len(), 3);
-    assert_eq!(
-        (rows[0][0].as_str(), rows[1][0].as_str()),
-        ("nbr-70", "fkm-75")
-    );
-    assert_eq!(rows[2][1], "soft test rubber");
-    assert_eq!(rows[2][2], "user");
+    // ranked (issue 40): NBR (rated for water) first, the unrated file compound, FKM (rated X
+    // for hot water) last
+    assert_eq!(rows[0][0], "nbr-70");
+    assert_eq!(rows[1][1], "soft test rubber");
+    assert_eq!(rows[1][2], "user");
+    assert!(rows[1][20].starts_with("not_rated"), "{rows:?}");
+    assert_eq!(rows[2][0], "fkm-75");
+    assert!(rows[2][20].starts_with("incompatible"), "{rows:?}");
     for row in &rows {
-        assert_eq!(row.len(), 19);
+        assert_eq!(row.len(), 23);
         // the leak rates at 1 day, 1 year, 10 years, and the force at the end
         for cell in &row[5..9] {
             assert!(cell.parse::<f64>().unwrap() > 0.0, "{row:?}");
@@ -717,7 +720,11 @@ fn compare_rejects_unknown_ids() {
             && row.ends_with("  no ageing constants"),
         "{stdout}"
     );
-    let fkm = stdout.lines().find(|l| l.starts_with("fkm-75")).unwrap();
+    // (rank, material, …: the table ranks the rows)
+    let fkm = stdout
+        .lines()
+        .find(|l| l.split_whitespace().nth(1) == Some("fkm-75"))
+        .unwrap();
     assert!(!fkm.contains("no ageing"), "{stdout}");
 }
 

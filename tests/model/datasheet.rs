@@ -130,7 +130,10 @@ fn a_datasheet_compound_has_the_datasheets_t10_hardness_and_ageing() {
         (ageing.activation_energy / 80e3 - 1.0).abs() < 1e-6,
         "{ageing:?}"
     );
-    assert!((ageing.rate / 2e-10 - 1.0).abs() < 1e-6, "{ageing:?}");
+    let k23 = ageing.rate_at(296.15);
+    assert!((k23 / 2e-10 - 1.0).abs() < 1e-6, "{ageing:?}");
+    // anchored between the readings (mean 1/T of 80 and 100 °C)
+    assert!((ageing.reference_temperature - 2.0 / (1.0 / 353.15 + 1.0 / 373.15)).abs() < 1e-9);
     let band = &c.bands.activation_energy;
     assert!(
         band.low < 80e3 && band.high > 80e3 && band.high - band.low < 2e3,

@@ -19,7 +19,8 @@
 //!    set), so `k(T) = −ln(1 − CS_chem)/t` with `CS_chem = (CS − CS_ve)/(1 − CS_ve)`. Two
 //!    temperatures give Ea (the Arrhenius line through the largest k at the coolest and the
 //!    hottest); one gives k there and takes the low end of the class's Ea band. At one
-//!    temperature the largest k is kept (the faster ageing: less life).
+//!    temperature the largest k is kept (the faster ageing: less life). The law is anchored
+//!    where the readings pin k (their mean 1/T), so Ea's band pivots about the data.
 //!
 //! The band of each derived figure (what the datasheet does not pin down) is returned with it
 //! ([`Bands`]): the datasheet's own rounding of a compression set (±½ of its last digit) carried
@@ -97,7 +98,7 @@ pub struct Band {
 pub struct Bands {
     /// Ea of the chemical ageing \[J/mol\].
     pub activation_energy: Band,
-    /// k at the ageing reference temperature \[1/s\].
+    /// k at the ageing reference temperature \[1/s\] (the readings' mean 1/T).
     pub rate: Band,
 }
 
@@ -389,7 +390,13 @@ pub fn from_datasheet(
         }
     }
     by_temperature.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let reference = room;
+    // the ageing law's anchor: where the readings pin k — the reading temperature, or between
+    // two the mean of 1/T, about which Ea and k_ref are uncorrelated — so that Ea's band pivots
+    // about the data (a study varying Ea alone stays true to the readings)
+    let reference = match (by_temperature.first(), by_temperature.last()) {
+        (Some(&(t1, _, _)), Some(&(t2, _, _))) => 2.0 / (1.0 / t1 + 1.0 / t2),
+        _ => room,
+    };
     // Ea and k at `reference` from the (T, k) of the coolest and hottest readings
     let arrhenius = |cool: (f64, f64), hot: (f64, f64)| {
         let ea = GAS_CONSTANT * (hot.1 / cool.1).ln() / (1.0 / cool.0 - 1.0 / hot.0);
