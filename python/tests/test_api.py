@@ -88,8 +88,10 @@ def test_run_result():
     assert list(h.columns)[:3] == ["time_s", "temperature_K", "reduced_time_s"]
     assert h["time_s"].iloc[0] == 0.0 and h["time_s"].dtype == numpy.float64
     assert h["state"].iloc[0] == "sealed"
-    # SI: 80 °C in K, a 30-year run in s
-    assert h["temperature_K"].iloc[0] == pytest.approx(353.15)
+    # SI: fitted at 23 °C (296.15 K), then the service's 80 °C (353.15 K) after the lead-in
+    # (docs/model.md §5.2); a 30-year run in s
+    assert h["temperature_K"].iloc[0] == pytest.approx(296.15)
+    assert h["temperature_K"].iloc[-1] == pytest.approx(353.15)
     assert h["time_s"].iloc[-1] == pytest.approx(30 * 365.25 * 86400, rel=1e-9)
     assert r.failure_mode == "retained_force" and r.verdict == "fails"
     assert 2.0e7 < r.time_to_failure < 2.5e7
