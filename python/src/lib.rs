@@ -635,7 +635,7 @@ fn _compare<'py>(
         (
             compare_table(&rows),
             serde_json::to_string(&findings),
-            workflow::compare::headline(&runs),
+            sealsim::report::life::compare_headline(&runs),
         )
     })?;
     let csv = csv.map_err(internal)?;

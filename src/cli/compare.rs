@@ -107,7 +107,7 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
         )?,
         args.all,
     );
-    let headline = workflow::compare::headline(&runs);
+    let headline = crate::report::life::compare_headline(&runs);
     let floor = match runs.first() {
         Some((r, _)) => super::leak_floor_flag(args.leak_floor.as_deref(), &r.scenario.life.fluid)?,
         None => None,

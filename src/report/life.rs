@@ -2332,6 +2332,63 @@ pub fn compare_cells(rows: &[CompareRow<'_>]) -> Vec<Vec<String>> {
     cells
 }
 
+/// The comparison's headline (`sealsim compare`, its HTML report, `sealsim.compare`): among the compatible compounds of the best rating present (A,
+/// else B), the one(s) with the longest life (every one tied at it); when no compound is
+/// compatible, a plain statement that none is, never an unsuitable compound. Independent of
+/// the listed order (`--all`).
+pub fn compare_headline(
+    ranked: &[(
+        crate::workflow::compare::CompoundRun,
+        crate::workflow::compare::Standing,
+    )],
+) -> String {
+    use crate::workflow::compare::{RankBasis, life, medium};
+    let Some((first, _)) = ranked.first() else {
+        return String::new();
+    };
+    let medium = medium(first);
+    let tier = ranked
+        .iter()
+        .filter(|(_, s)| s.basis == RankBasis::Compatible)
+        .map(|(_, s)| s.tier)
+        .min();
+    let compatible: Vec<&crate::workflow::compare::CompoundRun> = ranked
+        .iter()
+        .filter(|(_, s)| s.basis == RankBasis::Compatible && Some(s.tier) == tier)
+        .map(|(r, _)| r)
+        .collect();
+    let Some(best) = compatible.iter().map(|r| life(r)).reduce(f64::max) else {
+        let why = match first.scenario.fluid_class {
+            None => "the ratings cover mineral oil, water, hot water and water–glycol only",
+            // rated ones run without a figure their verdict needs count as not compatible
+            Some(_) => "or none has every figure its verdict needs",
+        };
+        return format!(
+            "No compound in this comparison is rated A/B for {medium} ({why}): no longest life \
+             to headline; see each row's rank basis"
+        );
+    };
+    let names: Vec<&str> = compatible
+        .iter()
+        .filter(|r| life(r) == best)
+        .map(|r| r.label.as_str())
+        .collect();
+    let when = if best.is_finite() {
+        format!("fails after {}", human_time(best))
+    } else {
+        "no failure within the run".to_owned()
+    };
+    let rated = if tier == Some(0) {
+        "A (recommended)"
+    } else {
+        "B (limited; none is rated A)"
+    };
+    format!(
+        "Longest life among the compounds rated {rated} for {medium}: {} ({when})",
+        names.join(", ")
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -201,7 +201,7 @@ pub struct Standing {
     /// but flagged.
     pub not_sourced: bool,
     /// 0 for A, 1 for B, 2 not rated or X: A before B within a group.
-    tier: u8,
+    pub tier: u8,
 }
 
 impl Standing {
@@ -228,7 +228,7 @@ pub fn medium(run: &CompoundRun) -> &'static str {
 
 /// A run's life for the ranking \[s\]: the time to failure, +∞ for a run that survives (the
 /// criterion `compare` has always ranked by).
-fn life(run: &CompoundRun) -> f64 {
+pub fn life(run: &CompoundRun) -> f64 {
     run.result.failure.map_or(f64::INFINITY, |f| f.time)
 }
 
@@ -302,55 +302,4 @@ pub fn rank(runs: Vec<CompoundRun>, raw: bool) -> Vec<(CompoundRun, Standing)> {
         s.rank = i + 1;
     }
     ranked
-}
-
-/// The comparison's headline: among the compatible compounds of the best rating present (A,
-/// else B), the one(s) with the longest life (every one tied at it); when no compound is
-/// compatible, a plain statement that none is, never an unsuitable compound. Independent of
-/// the listed order (`--all`).
-pub fn headline(ranked: &[(CompoundRun, Standing)]) -> String {
-    let Some((first, _)) = ranked.first() else {
-        return String::new();
-    };
-    let medium = medium(first);
-    let tier = ranked
-        .iter()
-        .filter(|(_, s)| s.basis == RankBasis::Compatible)
-        .map(|(_, s)| s.tier)
-        .min();
-    let compatible: Vec<&CompoundRun> = ranked
-        .iter()
-        .filter(|(_, s)| s.basis == RankBasis::Compatible && Some(s.tier) == tier)
-        .map(|(r, _)| r)
-        .collect();
-    let Some(best) = compatible.iter().map(|r| life(r)).reduce(f64::max) else {
-        let why = match first.scenario.fluid_class {
-            None => "the ratings cover mineral oil, water, hot water and water–glycol only",
-            // rated ones run without a figure their verdict needs count as not compatible
-            Some(_) => "or none has every figure its verdict needs",
-        };
-        return format!(
-            "No compound in this comparison is rated A/B for {medium} ({why}): no longest life \
-             to headline; see each row's rank basis"
-        );
-    };
-    let names: Vec<&str> = compatible
-        .iter()
-        .filter(|r| life(r) == best)
-        .map(|r| r.label.as_str())
-        .collect();
-    let when = if best.is_finite() {
-        format!("fails after {}", crate::report::life::human_time(best))
-    } else {
-        "no failure within the run".to_owned()
-    };
-    let rated = if tier == Some(0) {
-        "A (recommended)"
-    } else {
-        "B (limited; none is rated A)"
-    };
-    format!(
-        "Longest life among the compounds rated {rated} for {medium}: {} ({when})",
-        names.join(", ")
-    )
 }

@@ -1,4 +1,4 @@
-//! Compounds from supplier datasheets (`sealsim materials new`, docs/model.md §5.6; issue 40).
+//! Compounds from supplier datasheets (`sealsim materials new`, docs/model.md §5.4; issue 40).
 
 use sealsim::material::datasheet::{
     self, Datasheet, HARDNESS_READING_TIME, LowTemperature, SetPoint, gent_modulus,
