@@ -592,14 +592,7 @@ pub fn fit_dma(
         c.replaced_loss = keep_loss.iter().filter(|&&k| !k).count();
     }
     let loss = &fitted_loss[..];
-    let mut rows: Vec<Row> = omegas
-        .iter()
-        .zip(storage)
-        .map(|(&omega, &e)| Row::Storage {
-            omega,
-            weight: scale / e,
-        })
-        .collect();
+    let mut rows = storage_rows(omegas, storage, scale);
     rows.extend(omegas.iter().zip(loss).map(|(&omega, &e)| Row::Loss {
         omega,
         weight: scale / e,
@@ -688,14 +681,7 @@ fn kramers_kronig(
     taus: &[f64],
     scale: f64,
 ) -> Option<Consistency> {
-    let rows: Vec<Row> = omegas
-        .iter()
-        .zip(storage)
-        .map(|(&omega, &e)| Row::Storage {
-            omega,
-            weight: scale / e,
-        })
-        .collect();
+    let rows = storage_rows(omegas, storage, scale);
     let a = design(&rows, taus);
     let window = (1.0 / omegas[omegas.len() - 1], 1.0 / omegas[0]);
     let alone = solve(&a, taus, scale, window, Regularisation::Gcv).ok()?;
@@ -1327,6 +1313,18 @@ fn check_count(
     } else {
         Ok(())
     }
+}
+
+/// The storage rows of a DMA fit: E′ at each ω, weighted by `scale / E′` (relative residuals).
+fn storage_rows(omegas: &[f64], storage: &[f64], scale: f64) -> Vec<Row> {
+    omegas
+        .iter()
+        .zip(storage)
+        .map(|(&omega, &e)| Row::Storage {
+            omega,
+            weight: scale / e,
+        })
+        .collect()
 }
 
 #[cfg(test)]
