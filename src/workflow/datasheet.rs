@@ -1,9 +1,7 @@
 //! `sealsim materials new`: a datasheet's compound with the provenance of every figure and a
 //! summary (docs/model.md §5.4).
 
-use crate::material::datasheet::{
-    self, Conversion, DatasheetError, HARDNESS_READING_TIME, LowTemperature, gent_modulus,
-};
+use crate::material::datasheet::{self, Conversion, DatasheetError, LowTemperature, gent_modulus};
 use crate::material::{AgeingBasis, Material};
 use crate::scenario::datasheet::DatasheetFile;
 use crate::units::human as human_sig;
@@ -28,11 +26,6 @@ pub fn compound(file: &DatasheetFile) -> Result<(Material, String), DatasheetErr
     let sheet = &file.datasheet;
     let band = class_band(&file.class).ok_or(DatasheetError::NoClassActivationEnergy)?;
     let (mut m, c) = datasheet::from_datasheet(&file.class, band, sheet)?;
-    let celsius = |k: f64| format!("{:.1} °C", k - 273.15);
-    let t10 = m.low_temperature_limit();
-    let room_modulus = m
-        .prony
-        .relaxation(HARDNESS_READING_TIME * m.shift.ln_rate(296.15).exp());
     let class_id = file.class_id;
     let low = match sheet.low_temperature {
         LowTemperature::T10(t) => format!("TR-10 = {}", celsius(t)),
@@ -96,15 +89,21 @@ pub fn compound(file: &DatasheetFile) -> Result<(Material, String), DatasheetErr
         )),
     });
     m.class = file.class.class.clone();
-    Ok((m.clone(), summary(file, &m, &c, t10, room_modulus)))
+    let text = summary(file, &m, &c);
+    Ok((m, text))
+}
+
+/// `k` \[K\] in °C to a tenth.
+fn celsius(k: f64) -> String {
+    format!("{:.1} °C", k - 273.15)
 }
 
 /// One reading: its set, the viscoelastic part (30 min at 23 °C), the chemical set and k.
 fn reading((p, ve, chem, k): &(datasheet::SetPoint, f64, f64, f64)) -> String {
     format!(
-        "{} h at {:.1} °C: {:.1} % = viscoelastic {:.1} % + chemical {:.1} % → k = {} 1/s",
+        "{} h at {}: {:.1} % = viscoelastic {:.1} % + chemical {:.1} % → k = {} 1/s",
         human(p.time / 3600.0),
-        p.temperature - 273.15,
+        celsius(p.temperature),
         p.set * 100.0,
         ve * 100.0,
         chem * 100.0,
@@ -112,15 +111,10 @@ fn reading((p, ve, chem, k): &(datasheet::SetPoint, f64, f64, f64)) -> String {
     )
 }
 
-fn summary(
-    file: &DatasheetFile,
-    m: &Material,
-    c: &Conversion,
-    t10: Option<f64>,
-    room_modulus: f64,
-) -> String {
+fn summary(file: &DatasheetFile, m: &Material, c: &Conversion) -> String {
     let sheet = &file.datasheet;
-    let celsius = |k: f64| format!("{:.1} °C", k - 273.15);
+    let t10 = m.low_temperature_limit();
+    let room_modulus = datasheet::hardness_modulus(m);
     let mut out = format!(
         "compound       {} — from the datasheet ({}), on {}'s master curve; a user compound: \
          the curve's shape is the class's, not measured\n",

@@ -93,6 +93,38 @@ pub struct FoldedGaussian {
 }
 
 impl FoldedGaussian {
+    /// The sub-intervals of the component's range μ ± [`SIGMAS`]σ cut at the `breaks` inside
+    /// it, as sorted cut points in `cuts`.
+    fn cuts(&self, breaks: &[f64], cuts: &mut Vec<f64>) {
+        let (a, b) = (
+            self.center - SIGMAS * self.width,
+            self.center + SIGMAS * self.width,
+        );
+        cuts.clear();
+        cuts.push(a);
+        cuts.extend(breaks.iter().copied().filter(|&v| v > a && v < b));
+        cuts.push(b);
+        cuts.sort_by(f64::total_cmp);
+        cuts.dedup();
+    }
+
+    /// Each node u of `rule` over the sub-intervals `cuts` with its weight `½h·w_k·e^{−z²/2}`,
+    /// z = (u − μ)/σ (the normal density up to 1/(σ√(2π)), applied by the caller).
+    fn for_each_node(&self, cuts: &[f64], rule: &URule<'_>, mut f: impl FnMut(f64, f64)) {
+        let inv = 1.0 / self.width;
+        for pair in cuts.windows(2) {
+            let h = (pair[1] - pair[0]) / rule.panels as f64;
+            for p in 0..rule.panels {
+                let mid = pair[0] + (p as f64 + 0.5) * h;
+                for (x, w) in rule.nodes.iter().zip(rule.weights) {
+                    let u = mid + 0.5 * h * x;
+                    let z = (u - self.center) * inv;
+                    f(u, 0.5 * h * w * (-0.5 * z * z).exp());
+                }
+            }
+        }
+    }
+
     /// `P(U ≤ u)` of the folded normal (without the weight):
     /// `½[erf((u+μ)/(σ√2)) + erf((u−μ)/(σ√2))]` for u ≥ 0.
     pub fn cdf(&self, u: f64) -> f64 {
@@ -452,29 +484,15 @@ impl SeparationDistribution {
                 total += comp.weight * phi(comp.center);
                 continue;
             }
-            let (a, b) = (
-                comp.center - SIGMAS * comp.width,
-                comp.center + SIGMAS * comp.width,
-            );
-            cuts.clear();
-            cuts.push(a);
-            cuts.extend(breaks.iter().copied().filter(|&v| v > a && v < b));
-            cuts.push(b);
-            cuts.sort_by(f64::total_cmp);
-            cuts.dedup();
+            comp.cuts(breaks, &mut cuts);
             let inv = 1.0 / comp.width;
+            let rule = URule {
+                panels,
+                nodes,
+                weights,
+            };
             let mut sum = 0.0;
-            for pair in cuts.windows(2) {
-                let h = (pair[1] - pair[0]) / panels as f64;
-                for p in 0..panels {
-                    let mid = pair[0] + (p as f64 + 0.5) * h;
-                    for (x, w) in nodes.iter().zip(weights) {
-                        let u = mid + 0.5 * h * x;
-                        let z = (u - comp.center) * inv;
-                        sum += 0.5 * h * w * (-0.5 * z * z).exp() * phi(u);
-                    }
-                }
-            }
+            comp.for_each_node(&cuts, &rule, |u, weight| sum += weight * phi(u));
             total += comp.weight * norm * inv * sum;
         }
         total
@@ -557,31 +575,11 @@ impl SeparationDistribution {
                 total += comp.weight * kernel(local(comp.center));
                 continue;
             }
-            let (a, b) = (
-                comp.center - SIGMAS * comp.width,
-                comp.center + SIGMAS * comp.width,
-            );
-            cuts.clear();
-            cuts.push(a);
-            cuts.extend(breaks.iter().copied().filter(|&v| v > a && v < b));
-            cuts.push(b);
-            cuts.sort_by(f64::total_cmp);
-            cuts.dedup();
+            comp.cuts(breaks, &mut cuts);
             let inv = 1.0 / comp.width;
             if kept.cuts != cuts {
                 kept.nodes.clear();
-                for pair in cuts.windows(2) {
-                    let h = (pair[1] - pair[0]) / rule.panels as f64;
-                    for p in 0..rule.panels {
-                        let mid = pair[0] + (p as f64 + 0.5) * h;
-                        for (x, w) in rule.nodes.iter().zip(rule.weights) {
-                            let u = mid + 0.5 * h * x;
-                            let z = (u - comp.center) * inv;
-                            kept.nodes
-                                .push((0.5 * h * w * (-0.5 * z * z).exp(), local(u)));
-                        }
-                    }
-                }
+                comp.for_each_node(&cuts, rule, |u, weight| kept.nodes.push((weight, local(u))));
                 std::mem::swap(&mut kept.cuts, &mut cuts);
             }
             let sum: f64 = kept

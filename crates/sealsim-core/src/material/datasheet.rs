@@ -46,6 +46,13 @@ pub fn gent_modulus(shore: f64) -> f64 {
     0.0981e6 * (56.0 + 7.62336 * shore) / (0.137505 * (254.0 - 2.54 * shore))
 }
 
+/// The modulus a Shore A reading sees: `E(3 s, 23 °C)` \[Pa\] of `m` (the relaxation modulus
+/// at the reduced time of the reading).
+pub fn hardness_modulus(m: &Material) -> f64 {
+    m.prony
+        .relaxation(HARDNESS_READING_TIME * m.shift.ln_rate(GEHMAN_ROOM_TEMPERATURE).exp())
+}
+
 /// The low-temperature figure of a datasheet.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum LowTemperature {
@@ -360,10 +367,7 @@ pub fn from_datasheet(
     let dt = temperature_shift(class, sheet.low_temperature)?;
     let shifted = moved(class, dt);
     let room = GEHMAN_ROOM_TEMPERATURE;
-    let own = shifted
-        .prony
-        .relaxation(HARDNESS_READING_TIME * shifted.shift.ln_rate(room).exp());
-    let scale = gent_modulus(sheet.hardness) / own;
+    let scale = gent_modulus(sheet.hardness) / hardness_modulus(&shifted);
     let viscoelastic = Material {
         prony: shifted.prony.scaled(scale),
         ageing: None,
