@@ -10,7 +10,7 @@
 use super::{CliError, print_findings, progress_bar, write_output};
 use crate::leak::Fidelity;
 use crate::material::Material;
-use crate::report::life::{CompareRow, compare_cells, compare_table, compare_text};
+use crate::report::life::{CompareRow, CompareSummary, compare_cells, compare_table, compare_text};
 use crate::report::life_chart::compare_chart;
 use crate::scenario::{library, load_material_file};
 use crate::workflow;
@@ -47,6 +47,12 @@ pub struct CompareArgs {
     /// Write the comparison CSV to FILE (atomically).
     #[arg(short, long, value_name = "FILE.csv")]
     pub output: Option<PathBuf>,
+
+    /// Write the comparison as JSON to FILE (atomically, SI): the headline, then each
+    /// compound in the listed order with its rank, rank basis, rating, rating source and its
+    /// run summary as `sealsim run --summary` writes it.
+    #[arg(long, value_name = "FILE.json")]
+    pub summary: Option<PathBuf>,
 
     /// Write an overlay chart of the leak-rate histories to FILE (SVG).
     #[arg(long, value_name = "FILE.svg")]
@@ -94,6 +100,7 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
         &material_files,
         &[
             ("-o", args.output.as_deref()),
+            ("--summary", args.summary.as_deref()),
             ("--plot", args.plot.as_deref()),
             ("--report", args.report.as_deref()),
         ],
@@ -117,6 +124,14 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
         .output
         .as_ref()
         .map(|_| compare_table(&rows))
+        .transpose()?;
+    let json = args
+        .summary
+        .as_ref()
+        .map(|_| {
+            CompareSummary::new(&args.scenario.display().to_string(), &headline, &runs, &rows)
+                .to_json()
+        })
         .transpose()?;
     let name = runs.first().map_or("", |(r, _)| r.scenario.name.as_str());
     let wants_chart = args.plot.is_some() || args.report.is_some();
@@ -152,6 +167,9 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
     }
     if let (Some(path), Some(csv)) = (&args.output, &csv) {
         write_output(Some(path), csv.as_bytes())?;
+    }
+    if let (Some(path), Some(json)) = (&args.summary, &json) {
+        write_output(Some(path), json.as_bytes())?;
     }
     if let (Some(path), Some(svg)) = (&args.plot, &svg) {
         write_output(Some(path), svg.as_bytes())?;

@@ -42,11 +42,22 @@ pub enum MaterialsCommand {
     /// Every compound's figures beside the published ones: T10 against its class's
     /// low-temperature limit (±5 K), the chemical time to 50 % retained force at the rated
     /// temperature against the 1000 h rule (500–2000 h), with sources. Exit 0 when all pass.
-    Check,
+    /// Material files (e.g. from `materials new`) are checked against their `class`'s figures.
+    Check(CheckArgs),
     /// A compound from a supplier datasheet (hardness, TR-10 or T_g, compression set at one to
     /// three points): its class's master curve moved to the TR-10 and scaled to the hardness,
     /// ageing from the sets less their viscoelastic part; written as a material file.
     New(NewArgs),
+}
+
+/// Arguments of `sealsim materials check`.
+#[derive(Debug, Clone, Args)]
+pub struct CheckArgs {
+    /// Material files to check instead of the library (each needs `[material] class`): a
+    /// datasheet compound from `materials new`, a fitted one. A special grade (a
+    /// low-temperature NBR, say) may differ from its class's standard compound by design.
+    #[arg(value_name = "FILE.toml")]
+    pub files: Vec<PathBuf>,
 }
 
 /// Arguments of `sealsim materials new`.
@@ -202,7 +213,7 @@ pub fn run(args: MaterialsArgs) -> Result<(), CliError> {
         }
         MaterialsCommand::Curve(args) => curve(args),
         MaterialsCommand::Export(args) => export(args),
-        MaterialsCommand::Check => check(),
+        MaterialsCommand::Check(args) => check(&args),
         MaterialsCommand::New(args) => new(args),
     }
 }
@@ -262,29 +273,72 @@ fn list() -> Result<(), CliError> {
     write_output(None, library_table(&rows).as_bytes())
 }
 
-fn check() -> Result<(), CliError> {
-    use crate::scenario::library_check::{Check, RULE_HOURS, T10_TOLERANCE, T50_BAND, published};
+/// The compounds `materials check` checks with the published figures of their class: the
+/// library's, or the given files' (by their `[material] class`).
+fn checked(
+    args: &CheckArgs,
+) -> Result<Vec<(String, Material, crate::scenario::library_check::Published)>, CliError> {
+    use crate::scenario::library_check::published;
+    let library_of = |id: &str| -> Result<(Material, _), CliError> {
+        let entry = library::get(id).map_err(|e| CliError::Internal(e.to_string()))?;
+        let p = published(id)
+            .ok_or_else(|| CliError::Internal(format!("{id}: no published figures")))?;
+        Ok((entry.load()?, p))
+    };
+    if args.files.is_empty() {
+        return library::ids()
+            .map(|id| library_of(id).map(|(m, p)| (id.to_owned(), m, p)))
+            .collect();
+    }
+    let mut out = Vec::new();
+    for path in &args.files {
+        let material = load_material_file(path)?;
+        let Some(class) = material.class.clone() else {
+            return Err(CliError::Input(format!(
+                "{}: [material] has no `class`; add e.g. `class = \"nbr\"` (one of {}) so \
+                 that its figures can be checked against the class's",
+                path.display(),
+                crate::permeation::FAMILIES.join(", ")
+            )));
+        };
+        let standard = library::ids()
+            .map(|id| library_of(id).map(|(m, p)| (m.class, p)))
+            .collect::<Result<Vec<_>, _>>()?
+            .into_iter()
+            .find(|(c, _)| c.as_deref() == Some(class.as_str()));
+        let Some((_, p)) = standard else {
+            return Err(CliError::Input(format!(
+                "{}: no published figures for class `{class}`",
+                path.display()
+            )));
+        };
+        out.push((path.display().to_string(), material, p));
+    }
+    Ok(out)
+}
+
+fn check(args: &CheckArgs) -> Result<(), CliError> {
+    use crate::scenario::library_check::{Check, RULE_HOURS, T10_TOLERANCE, T50_BAND};
+    let compounds = checked(args)?;
+    let width = compounds.iter().map(|(id, _, _)| id.chars().count()).max().unwrap_or(9).max(9);
     let mut out = format!(
-        "{:<9} {:>9} {:>9} {:>7} {:>4}   {:>8} {:>10} {:>4}   source\n",
+        "{:<width$} {:>9} {:>9} {:>7} {:>4}   {:>8} {:>10} {:>4}   source\n",
         "compound", "T10 [°C]", "limit", "ΔT [K]", "", "rated", "t50 [h]", ""
     );
     let mut failed = Vec::new();
-    for id in library::ids() {
-        let entry = library::get(id).map_err(|e| CliError::Internal(e.to_string()))?;
-        let material = entry.load()?;
-        let Some(p) = published(id) else {
-            return Err(CliError::Internal(format!("{id}: no published figures")));
-        };
-        let c = Check::new(&material, p);
+    for (id, material, p) in &compounds {
+        let p = *p;
+        let c = Check::new(material, p);
         let mark = |ok: bool| if ok { "ok" } else { "FAIL" };
         if !c.t10_ok() || !c.t50_ok() {
-            failed.push(id);
+            failed.push(id.as_str());
         }
         out += &format!(
-            "{id:<9} {:>9} {:>9} {:>7} {:>4}   {:>8} {:>10} {:>4}   {}\n",
+            "{id:<width$} {:>9} {:>9} {:>7} {:>4}   {:>8} {:>10} {:>4}   {}\n",
             c.t10.map_or("-".into(), |t| human(t - 273.15, 3)),
             human(p.low_limit - 273.15, 3),
-            c.t10.map_or("-".into(), |t| human(t - p.low_limit, 2)),
+            c.t10
+                .map_or("-".into(), |t| human(((t - p.low_limit) * 100.0).round() / 100.0, 2)),
             mark(c.t10_ok()),
             format!("{} °C", human(p.rated - 273.15, 3)),
             c.t50_hours.map_or("-".into(), |h| human(h, 3)),

@@ -2175,6 +2175,97 @@ pub fn compare_table(rows: &[CompareRow<'_>]) -> Result<String, ReportError> {
     finish(writer)
 }
 
+/// One compound of the comparison's JSON ([`compare_json`]): its standing in the ranking,
+/// its rating for the run's medium and the full run summary ([`Summary`]).
+#[derive(Debug, Clone, Serialize)]
+pub struct CompareEntry {
+    /// The compound as given on the command line (library id or file path).
+    pub material: String,
+    /// Its place in the listed order, 1 first.
+    pub rank: usize,
+    /// `compatible`, `missing_figure`, `not_rated` or `incompatible`, with the reason.
+    pub rank_basis: String,
+    /// `A`, `B` or `X` for the run's medium; absent: not rated.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rating: Option<String>,
+    /// The rating's source; absent: not rated.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rating_source: Option<String>,
+    /// Where the ageing activation energy comes from.
+    pub activation_energy_source: String,
+    /// A gas: the permeation figure's basis.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub permeation_source: Option<String>,
+    /// What the run left out for want of data ("; "-separated; empty when nothing).
+    pub notes: String,
+    /// The run's summary, as `sealsim run --summary` writes it (SI).
+    pub summary: Summary,
+}
+
+/// The comparison as JSON (`sealsim compare --summary`): the headline, then the compounds in
+/// the listed order, each with its rank, rank basis, rating and run summary (SI).
+#[derive(Debug, Clone, Serialize)]
+pub struct CompareSummary {
+    /// The scenario's name.
+    pub scenario: String,
+    /// The scenario file, as given.
+    pub scenario_file: String,
+    /// The headline as printed (names only a compound rated A/B for the medium).
+    pub headline: String,
+    /// One entry per compound, in the listed order.
+    pub compounds: Vec<CompareEntry>,
+}
+
+impl CompareSummary {
+    /// The comparison of `runs` (ranked, [`crate::workflow::compare::rank`]) under
+    /// `headline`, from the rows the table is made of.
+    pub fn new(
+        file: &str,
+        headline: &str,
+        runs: &[(
+            crate::workflow::compare::CompoundRun,
+            crate::workflow::compare::Standing,
+        )],
+        rows: &[CompareRow<'_>],
+    ) -> Self {
+        let compounds = runs
+            .iter()
+            .zip(rows)
+            .map(|((run, _), row)| CompareEntry {
+                material: row.label.to_owned(),
+                rank: row.rank,
+                rank_basis: row.rank_basis.clone(),
+                rating: row.rating.map(|c| c.rating.letter().to_string()),
+                rating_source: row.rating.map(|c| c.source.clone()),
+                activation_energy_source: row.ageing_source.clone(),
+                permeation_source: row.permeation_source.clone(),
+                notes: row.notes.clone(),
+                summary: Summary::new(&run.scenario.name, file, &run.scenario.life, &run.result),
+            })
+            .collect();
+        CompareSummary {
+            scenario: runs
+                .first()
+                .map_or(String::new(), |(r, _)| r.scenario.name.clone()),
+            scenario_file: file.to_owned(),
+            headline: headline.to_owned(),
+            compounds,
+        }
+    }
+
+    /// Pretty-printed JSON with a final newline; every compound's numbers checked to be
+    /// finite ([`Summary::to_json`]).
+    pub fn to_json(&self) -> Result<String, ReportError> {
+        for entry in &self.compounds {
+            entry.summary.to_json()?;
+        }
+        let mut text =
+            serde_json::to_string_pretty(self).map_err(|e| ReportError::Csv(e.to_string()))?;
+        text.push('\n');
+        Ok(text)
+    }
+}
+
 /// The comparison as an aligned text table for the terminal (a gas: throughputs in Pa·m³/s).
 pub fn compare_text(rows: &[CompareRow<'_>]) -> String {
     let cells = compare_cells(rows);

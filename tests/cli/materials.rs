@@ -1077,6 +1077,46 @@ fn materials_new_writes_a_compound_a_run_can_use() {
     ]);
 }
 
+/// `materials check FILE`: a datasheet compound is checked against its class's published
+/// figures (T10 within ±5 K of the class's low-temperature limit, t50 at the rated
+/// temperature within 500–2000 h); a compound whose TR-10 sits 25 K below its class's limit is
+/// reported FAIL (exit 1, not an input error), and a file without `class` is refused at input
+/// (exit 2) naming the key to add.
+#[test]
+fn materials_check_accepts_a_datasheet_compound() {
+    let dir = Dir::new();
+    let sheet = fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/lab-data/datasheet-nbr.toml"),
+    )
+    .unwrap();
+    let compound = dir.path("compound.toml");
+    let sheet_path = dir.write("sheet.toml", &sheet);
+    ok(&["materials", "new", s(&sheet_path), "-o", s(&compound)]);
+    let (out, _) = ok(&["materials", "check", s(&compound)]);
+    let row = out
+        .lines()
+        .find(|l| l.starts_with(s(&compound)))
+        .unwrap_or_else(|| panic!("{out}"));
+    assert_eq!(row.matches(" ok ").count(), 2, "{row}");
+    assert!(row.contains("-30") && row.contains("100 °C"), "{row}");
+    assert!(!out.contains("acm-70"), "only the file is checked: {out}");
+
+    let cold = dir.write("cold.toml", &sheet.replace("t10 = \"-30 C\"", "t10 = \"-55 C\""));
+    let cold_compound = dir.path("cold-compound.toml");
+    ok(&["materials", "new", s(&cold), "-o", s(&cold_compound)]);
+    let out = sealsim()
+        .args(["materials", "check", s(&cold_compound)])
+        .assert()
+        .code(1);
+    let stdout = String::from_utf8(out.get_output().stdout.clone()).unwrap();
+    assert!(stdout.contains("FAIL"), "{stdout}");
+
+    let text = fs::read_to_string(&compound).unwrap();
+    let classless = dir.write("classless.toml", &text.replace("class = \"nbr\"\n", ""));
+    let err = rejected(&["materials", "check", s(&classless)]);
+    assert!(err.contains("classless.toml") && err.contains("class = "), "{err}");
+}
+
 /// A datasheet that cannot make a compound exits 2 naming file, line and key (or the reading),
 /// writes nothing, and never overwrites its own input.
 #[test]

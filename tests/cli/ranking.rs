@@ -17,6 +17,7 @@ struct Compared {
     header: Vec<String>,
     rows: Vec<Vec<String>>,
     html: String,
+    json: serde_json::Value,
 }
 
 impl Compared {
@@ -58,7 +59,7 @@ fn compare(text: &str, files: &[(&str, &str)], ids: &str, extra: &[&str]) -> Com
     let out = sealsim()
         .current_dir(dir.path())
         .args(["compare", "s.toml", "--materials", ids, "-o", "c.csv"])
-        .args(["--report", "c.html"])
+        .args(["--report", "c.html", "--summary", "c.json"])
         .args(extra)
         .output()
         .unwrap();
@@ -73,6 +74,26 @@ fn compare(text: &str, files: &[(&str, &str)], ids: &str, extra: &[&str]) -> Com
         header,
         rows,
         html: std::fs::read_to_string(dir.path().join("c.html")).unwrap(),
+        json: serde_json::from_str(&std::fs::read_to_string(dir.path().join("c.json")).unwrap())
+            .unwrap(),
+    }
+}
+
+/// The JSON (`--summary`) says what the CSV and the terminal say: the same headline, the
+/// compounds in the same order with the same rank, basis, rating and rating source, and
+/// each run's own verdict.
+fn assert_json_agrees(c: &Compared) {
+    assert_eq!(c.json["headline"], c.headline());
+    let compounds = c.json["compounds"].as_array().unwrap();
+    assert_eq!(compounds.len(), c.rows.len());
+    let text = |v: &serde_json::Value| v.as_str().unwrap_or("").to_owned();
+    for (k, entry) in compounds.iter().enumerate() {
+        assert_eq!(text(&entry["material"]), c.cells("material")[k]);
+        assert_eq!(entry["rank"].as_u64(), Some(k as u64 + 1));
+        for column in ["rank_basis", "rating", "rating_source"] {
+            assert_eq!(text(&entry[column]), c.cells(column)[k], "{column} of row {k}");
+        }
+        assert_eq!(text(&entry["summary"]["verdict"]), c.cells("verdict")[k]);
     }
 }
 
@@ -156,6 +177,7 @@ fn compare_in_mineral_oil_never_headlines_epdm() {
         }
     }
     assert_eq!(html_headline(&c.html), headline);
+    assert_json_agrees(&c);
 }
 
 /// The new-user review's 120 °C water comparison: VMQ (rated B, 8.3 years) outlives EPDM
@@ -179,6 +201,7 @@ fn compare_in_120_c_water_headlines_a_compound_rated_a_for_hot_water() {
     );
     assert_eq!((ids[0], rating[0]), ("epdm-70", "A"));
     assert_eq!(html_headline(&c.html), headline);
+    assert_json_agrees(&c);
     // the review's ordering problem is there: VMQ lives longer than EPDM
     let life = |id: &str| c.lives()[ids.iter().position(|i| *i == id).unwrap()];
     assert!(life("vmq-70") > life("epdm-70"));
