@@ -137,6 +137,19 @@ pub fn material_toml(m: &Material) -> String {
             ));
         }
     }
+    if !m.bands.is_empty() {
+        out.push_str("\n[material.bands]\n");
+        for b in &m.bands {
+            let unit = b.unit();
+            out.push_str(&format!(
+                "{} = {{ min = {}, max = {}, source = {} }}\n",
+                bare_or_quoted_key(&b.key),
+                quantity(b.min, unit),
+                quantity(b.max, unit),
+                string(&b.source)
+            ));
+        }
+    }
     if !m.provenance.is_empty() {
         out.push_str("\n[material.provenance]\n");
         for (key, text) in &m.provenance {

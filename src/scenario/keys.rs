@@ -540,6 +540,27 @@ const PERMEATION: &[Key] = &[
     key("source", Text, Absent(""), "where the figure comes from"),
 ];
 
+const BANDS: &[Key] = &[
+    key(
+        "min",
+        Quantity(mat::BAND_KEYS[0].1),
+        Required(""),
+        "lower end of the figure's band, in its unit",
+    ),
+    key(
+        "max",
+        Quantity(mat::BAND_KEYS[0].1),
+        Required(""),
+        "upper end, above `min`",
+    ),
+    key(
+        "source",
+        Text,
+        Absent("required in a compound with a `status`"),
+        "where the band comes from",
+    ),
+];
+
 const COMPATIBILITY: &[Key] = &[
     key(
         "rating",
@@ -1417,6 +1438,14 @@ pub(super) const TABLES: &[Table] = &[
         keys: PERMEATION,
     },
     Table {
+        path: "material.bands.KEY",
+        prose: "The uncertainty band of one of the compound's figures (an inline table; KEY \
+                `\"ageing.activation_energy\"`, the one `sealsim materials new` writes): a \
+                study draws it uniformly with `\"ageing.activation_energy\" = \"band\"` \
+                (docs/model.md §5.4).",
+        keys: BANDS,
+    },
+    Table {
         path: "surface",
         prose: "The roughness power spectrum C(q) of the countersurface, given by **one** of: \
                 the self-affine parameters (`rms_roughness`, `hurst_exponent`, `q0`, `q1`, \
@@ -1614,7 +1643,8 @@ pub(super) const STUDY_TABLES: &[Table] = &[
                 `distribution` needed), `tolerance` (`tolerance = \"±0.08 mm\"` or \
                 `\"scenario\"`, optional `nominal`, default the base's value, and `shape`, \
                 `\"normal\"` (±3σ, the default) or `\"uniform\"`) — or the shorthand \
-                `\"±0.05 mm\"`, a tolerance band about the base's value.",
+                `\"±0.05 mm\"`, a tolerance band about the base's value, or `\"band\"`, the base \
+                compound's own band of that figure (`[material.bands]`) drawn uniformly.",
         keys: STUDY,
     },
     Table {

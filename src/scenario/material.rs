@@ -23,14 +23,15 @@
 use super::error::{ScenarioError, Source};
 use super::library;
 use super::raw::{
-    Quantity, RawAgeing, RawCompatibility, RawMaterial, RawMaterialFile, RawPermeation,
+    Quantity, RawAgeing, RawBand, RawCompatibility, RawMaterial, RawMaterialFile, RawPermeation,
     RawPronyTerm, RawQuantity, RawShift,
 };
 use super::validate::{Bound, Field, field};
 use crate::contact::Elastic;
 use crate::material::compatibility::{Compatibility, FluidClass, Rating};
 use crate::material::{
-    Ageing, AgeingBasis, BALANCED_CROSSLINKING, Material, Prony, PronyTerm, Shift, Status,
+    Ageing, AgeingBasis, BALANCED_CROSSLINKING, FigureBand, Material, Prony, PronyTerm, Shift,
+    Status,
 };
 use crate::permeation::UserPermeation;
 use crate::simulate::AsperityModulus;
@@ -134,6 +135,18 @@ pub(super) const AGEING_ACTIVATION_ENERGY: Field = field(
     "J/mol",
     Bound::Range(1.0, 1e6),
 );
+/// The figures a compound may give a band for (`[material.bands]`), each with the field its
+/// `min` and `max` are read as; a study draws from the band with `"<key>" = "band"`.
+pub(super) const BAND_KEYS: [(&str, Field); 1] = [(
+    "ageing.activation_energy",
+    field(
+        "material.bands.ageing.activation_energy",
+        Dimension::MOLAR_ENERGY,
+        "J/mol",
+        Bound::Range(1.0, 1e6),
+    ),
+)];
+
 pub(super) const AGEING_ACTIVATION_ENERGY_ABOVE: Field = field(
     "material.ageing.activation_energy_above",
     Dimension::MOLAR_ENERGY,
@@ -534,6 +547,12 @@ impl Source<'_> {
             .unwrap_or_default();
         // published or illustrative data must say where every number comes from
         let provenance = self.provenance(raw, status != Status::User)?;
+        let bands = raw
+            .bands
+            .as_ref()
+            .map(|table| self.bands(table, status != Status::User))
+            .transpose()?
+            .unwrap_or_default();
         Ok(Material {
             name,
             status,
@@ -552,7 +571,67 @@ impl Source<'_> {
             library_id: None,
             class,
             permeation,
+            bands,
         })
+    }
+
+    /// `[material.bands]` in file order: each key one of [`BAND_KEYS`], `min` below `max` in
+    /// the figure's unit, a `source` (required when `sourced`: a compound with a status).
+    fn bands(
+        &self,
+        table: &Spanned<BTreeMap<String, Spanned<RawBand>>>,
+        sourced: bool,
+    ) -> Result<Vec<FigureBand>, ScenarioError> {
+        let mut entries: Vec<_> = table.get_ref().iter().collect();
+        entries.sort_by_key(|(_, value)| value.span().start);
+        let mut bands = Vec::new();
+        for (key, value) in entries {
+            let path = format!("material.bands.{key}");
+            let Some((_, field)) = BAND_KEYS.iter().find(|(k, _)| k == key) else {
+                return Err(self.error(
+                    value.span(),
+                    &path,
+                    format!(
+                        "unknown key `{key}`: the bands a study can draw are {}",
+                        BAND_KEYS.map(|(k, _)| format!("`{k}`")).join(", ")
+                    ),
+                ));
+            };
+            let band = value.get_ref();
+            let min = self.quantity(&band.min, field)?;
+            let max = self.quantity(&band.max, field)?;
+            if min >= max {
+                return Err(self.error(
+                    value.span(),
+                    &path,
+                    format!(
+                        "`min` must be below `max`, got {} and {} {}",
+                        show(min),
+                        show(max),
+                        field.unit()
+                    ),
+                ));
+            }
+            let source = match &band.source {
+                Some(s) if !s.get_ref().trim().is_empty() => s.get_ref().trim().to_owned(),
+                _ if sourced => {
+                    return Err(self.error(
+                        value.span(),
+                        &path,
+                        "needs a `source`: where the band comes from (a datasheet's rounding, a \
+                         class's spread)",
+                    ));
+                }
+                _ => "user's band".to_owned(),
+            };
+            bands.push(FigureBand {
+                key: key.clone(),
+                min,
+                max,
+                source,
+            });
+        }
+        Ok(bands)
     }
 
     /// `[material.compatibility]`: a key per fluid class, each `{ rating = "A"|"B"|"X", source
@@ -1121,6 +1200,7 @@ fn present_keys(raw: &RawMaterial) -> Vec<(&'static str, Range<usize>)> {
         ("asperity_modulus", quantity(&raw.asperity_modulus)),
         ("class", raw.class.as_ref().map(Spanned::span)),
         ("permeation", raw.permeation.as_ref().map(Spanned::span)),
+        ("bands", raw.bands.as_ref().map(Spanned::span)),
     ]
     .into_iter()
     .filter_map(|(key, span)| Some((key, span?)))

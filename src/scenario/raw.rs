@@ -127,10 +127,21 @@ pub(super) struct RawMaterial {
     pub permeation: Option<Spanned<BTreeMap<String, Spanned<RawPermeation>>>>,
     /// Parameter key → where its value came from.
     pub provenance: Option<Spanned<BTreeMap<String, Spanned<String>>>>,
+    /// Figure key (`ageing.activation_energy`) → its uncertainty band.
+    pub bands: Option<Spanned<BTreeMap<String, Spanned<RawBand>>>>,
     /// Scenario option (not a property of the compound): which modulus the asperity contact
     /// sees — `"relaxed"`, `"instantaneous"`, `"follow"` or a modulus such as `"3 MPa"`.
     /// Refused in material files.
     pub asperity_modulus: Option<Quantity>,
+}
+
+/// One `[material.bands]` entry: `{ min = "70 kJ/mol", max = "82 kJ/mol", source = "…" }`.
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RawBand {
+    pub min: Quantity,
+    pub max: Quantity,
+    pub source: Option<Spanned<String>>,
 }
 
 /// One `prony` entry: `{ modulus = "6 MPa", tau = "1000 h" }`.

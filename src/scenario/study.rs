@@ -208,7 +208,8 @@ impl Study {
         let seed = raw.seed(&source)?;
         let confidence = raw.confidence(&source)?;
         let report_times = raw.report_times(&source)?;
-        let (inputs, distributions) = raw.inputs(&source, &base)?;
+        let (inputs, distributions) =
+            raw.inputs(&source, &base, &base_scenario.life.material.bands)?;
         let correlation = raw.correlation(&source, design, &inputs)?;
         let plan = Plan {
             design,
@@ -503,11 +504,12 @@ impl RawStudy {
     }
 
     /// The inputs of `[vary]` in file order, with their distributions; `base` is the base
-    /// scenario's table.
+    /// scenario's table, `bands` its compound's (`"band"`).
     fn inputs(
         &self,
         source: &Source,
         base: &toml::Table,
+        bands: &[crate::material::FigureBand],
     ) -> Result<(Vec<StudyInput>, Vec<Distribution>), ScenarioError> {
         let mut entries: Vec<(&String, &Spanned<toml::Value>)> =
             self.vary.get_ref().iter().collect();
@@ -523,6 +525,7 @@ impl RawStudy {
                 key,
                 span: value.span(),
                 base,
+                bands,
             };
             let (input, distribution) = entry.parse(value.get_ref())?;
             inputs.push(input);
@@ -665,6 +668,8 @@ struct Entry<'a> {
     key: &'a str,
     span: std::ops::Range<usize>,
     base: &'a toml::Table,
+    /// The bands of the base's compound (`[material.bands]`): what `"band"` draws from.
+    bands: &'a [crate::material::FigureBand],
 }
 
 const KINDS: &str = "uniform, triangular, normal, lognormal, log-uniform, range, log-range, \
@@ -679,8 +684,51 @@ impl Entry<'_> {
         )
     }
 
+    /// `"band"`: the base compound's `[material.bands]` entry of this key as a uniform
+    /// distribution over it (in SI).
+    fn band(&self) -> Result<toml::Table, ScenarioError> {
+        let key = self.key.strip_prefix("material.").unwrap_or(self.key);
+        let Some(band) = self.bands.iter().find(|b| b.key == key) else {
+            let given = if self.bands.is_empty() {
+                "gives none".to_owned()
+            } else {
+                format!(
+                    "gives {}",
+                    self.bands
+                        .iter()
+                        .map(|b| format!("\"{}\"", b.key))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                )
+            };
+            return Err(self.err(format!(
+                "\"band\" draws from the base compound's [material.bands], which {given} (a \
+                 compound from `sealsim materials new` has \"ageing.activation_energy\"); or \
+                 give a distribution such as {{ distribution = \"uniform\", min = …, max = … }}"
+            )));
+        };
+        if key != self.key {
+            return Err(self.err(format!(
+                "the scenario's `[ageing]` overrides its compound's figures: vary \"{key}\" = \
+                 \"band\""
+            )));
+        }
+        let unit = band.unit();
+        let mut t = toml::Table::new();
+        t.insert("distribution".into(), toml::Value::String("uniform".into()));
+        for (k, v) in [("min", band.min), ("max", band.max)] {
+            t.insert(
+                k.into(),
+                toml::Value::String(format!("{v:e} {unit}").trim().into()),
+            );
+        }
+        Ok(t)
+    }
+
     fn parse(&self, value: &toml::Value) -> Result<(StudyInput, Distribution), ScenarioError> {
         let table = match value {
+            // the compound's own band of this figure, drawn uniformly (docs/model.md §5.4)
+            toml::Value::String(s) if s == "band" => self.band()?,
             // the shorthand "±0.08 mm": a tolerance band about the base's value
             toml::Value::String(s) => {
                 let mut t = toml::Table::new();

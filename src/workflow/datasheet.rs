@@ -155,8 +155,8 @@ fn summary(file: &DatasheetFile, m: &Material, c: &Conversion) -> String {
         );
     }
     out += &format!(
-        "study          [vary] \"ageing.activation_energy\" = {{ distribution = \"uniform\", \
-         min = \"{} kJ/mol\", max = \"{} kJ/mol\" }}   # Ea's band, about the anchor\n",
+        "study          [vary] \"ageing.activation_energy\" = \"band\"   # Ea uniform over \
+         {}–{} kJ/mol (the compound file's [material.bands]), about the anchor\n",
         human(ea.low / 1e3),
         human(ea.high / 1e3)
     );

@@ -1101,7 +1101,10 @@ fn materials_check_accepts_a_datasheet_compound() {
     assert!(row.contains("-30") && row.contains("100 °C"), "{row}");
     assert!(!out.contains("acm-70"), "only the file is checked: {out}");
 
-    let cold = dir.write("cold.toml", &sheet.replace("t10 = \"-30 C\"", "t10 = \"-55 C\""));
+    let cold = dir.write(
+        "cold.toml",
+        &sheet.replace("t10 = \"-30 C\"", "t10 = \"-55 C\""),
+    );
     let cold_compound = dir.path("cold-compound.toml");
     ok(&["materials", "new", s(&cold), "-o", s(&cold_compound)]);
     let out = sealsim()
@@ -1114,7 +1117,10 @@ fn materials_check_accepts_a_datasheet_compound() {
     let text = fs::read_to_string(&compound).unwrap();
     let classless = dir.write("classless.toml", &text.replace("class = \"nbr\"\n", ""));
     let err = rejected(&["materials", "check", s(&classless)]);
-    assert!(err.contains("classless.toml") && err.contains("class = "), "{err}");
+    assert!(
+        err.contains("classless.toml") && err.contains("class = "),
+        "{err}"
+    );
 }
 
 /// A datasheet that cannot make a compound exits 2 naming file, line and key (or the reading),
@@ -1211,9 +1217,38 @@ fn a_study_drawing_a_datasheet_band_has_wider_b10_bounds_than_with_it_fixed() {
         &format!("\"ageing.activation_energy\" = {{ values = [\"{ea} kJ/mol\"] }}"),
         "fixed",
     );
+    assert_eq!(band_input, "\"ageing.activation_energy\" = \"band\"");
     let banded = width(&band_input, "band");
     assert!(
         banded > fixed && banded > 0.0,
         "B10 bounds: band {banded} s, fixed {fixed} s"
+    );
+    // "band" is the compound file's band, drawn uniformly: the same study as the range written out
+    let band = &m.bands[0];
+    assert_eq!(band.key, "ageing.activation_energy");
+    assert!(band.min < m.ageing.unwrap().activation_energy && band.max > band.min);
+    let explicit = width(
+        &format!(
+            "\"ageing.activation_energy\" = {{ distribution = \"uniform\", min = \"{:e} J/mol\", \
+             max = \"{:e} J/mol\" }}",
+            band.min, band.max
+        ),
+        "explicit",
+    );
+    assert_eq!(explicit.to_bits(), banded.to_bits());
+    // a compound without that band: refused at the key, naming where a band comes from
+    let library = dir.write(
+        "library.study.toml",
+        "base = \"library.toml\"\ndesign = \"monte-carlo\"\nsamples = 4\n\n[vary]\n\
+         \"ageing.activation_energy\" = \"band\"\n",
+    );
+    dir.write(
+        "library.toml",
+        &crate::support::shipped("oring-nbr-water-80c.toml"),
+    );
+    let err = rejected(&["study", s(&library)]);
+    assert!(
+        err.contains("library.study.toml:6") && err.contains("[material.bands]"),
+        "{err}"
     );
 }

@@ -202,3 +202,59 @@ fn gent_is_monotone_in_hardness() {
         last = e;
     }
 }
+
+/// The compound file keeps a datasheet compound's Ea band (`[material.bands]`, docs/model.md
+/// §5.4): written by `material_toml`, read back to the same bits; the reader refuses a band
+/// whose `min` is not below its `max`, and a band of a figure a study cannot draw.
+#[test]
+fn a_datasheet_compounds_band_survives_its_file() {
+    use sealsim::report::material_toml::material_toml;
+    use sealsim::scenario::material_from_str;
+    let nbr = library::get("nbr-70").unwrap().load().unwrap();
+    let points = [(70.0 * HOUR, 373.15), (70.0 * HOUR, 398.15)];
+    let sheet = Datasheet {
+        name: "band".into(),
+        source: "test".into(),
+        hardness: 70.0,
+        low_temperature: LowTemperature::T10(273.15 - 30.0),
+        compression_set: points
+            .iter()
+            .map(|&(time, temperature)| SetPoint {
+                time,
+                temperature,
+                set: datasheet::compression_set(&nbr, time, temperature),
+                resolution: 5e-3,
+            })
+            .collect(),
+    };
+    let (m, c) = datasheet::from_datasheet(&nbr, class_band(&nbr).unwrap(), &sheet).unwrap();
+    assert_eq!(m.bands.len(), 1);
+    let band = &m.bands[0];
+    assert_eq!(
+        (band.min, band.max),
+        (
+            c.bands.activation_energy.low,
+            c.bands.activation_energy.high
+        )
+    );
+    let text = material_toml(&m);
+    let path = std::path::Path::new("compound.toml");
+    let back = material_from_str(&text, path).unwrap();
+    assert_eq!(back.bands, m.bands);
+    let swapped = text.replace(
+        &format!("min = \"{:e} J/mol\"", band.min),
+        &format!("min = \"{:e} J/mol\"", band.max + 1.0),
+    );
+    assert_ne!(swapped, text);
+    let err = material_from_str(&swapped, path).unwrap_err().to_string();
+    assert!(
+        err.contains("material.bands") && err.contains("below"),
+        "{err}"
+    );
+    let unknown = text.replace(
+        "\"ageing.activation_energy\" = { min",
+        "\"ageing.rate\" = { min",
+    );
+    let err = material_from_str(&unknown, path).unwrap_err().to_string();
+    assert!(err.contains("ageing.activation_energy"), "{err}");
+}

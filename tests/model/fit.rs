@@ -514,6 +514,7 @@ fn material_toml_round_trips_through_the_parser() {
         library_id: None,
         class: None,
         permeation: Vec::new(),
+        bands: Vec::new(),
     };
     let text = material_toml(&full);
     let parsed =
@@ -534,6 +535,7 @@ fn material_toml_round_trips_through_the_parser() {
         library_id: None,
         class: None,
         permeation: Vec::new(),
+        bands: Vec::new(),
         ..full.clone()
     };
     let parsed = material_from_str(&material_toml(&user), Path::new("user.toml")).unwrap();

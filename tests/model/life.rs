@@ -44,6 +44,7 @@ fn material(long_term: f64, terms: &[(f64, f64)], shift: Shift) -> Material {
         library_id: None,
         class: None,
         permeation: Vec::new(),
+        bands: Vec::new(),
     }
 }
 

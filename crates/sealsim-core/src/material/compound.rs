@@ -267,6 +267,35 @@ pub struct Material {
     /// The compound's own gas permeation figures (`[material.permeation]`), which take
     /// precedence over its class's.
     pub permeation: Vec<crate::permeation::UserPermeation>,
+    /// The uncertainty bands of its figures (`[material.bands]`, docs/model.md §5.4): what a
+    /// study draws from with `"band"`; empty: none stated.
+    pub bands: Vec<FigureBand>,
+}
+
+/// The band of one of a compound's figures (`[material.bands]`, docs/model.md §5.4): the
+/// figure's key relative to `[material]` (`ageing.activation_energy`), which is also the key a
+/// study varies in the scenario (`[ageing]` overrides the compound's), its range in SI and
+/// where the range comes from (a datasheet's rounding, a class's spread).
+#[derive(Debug, Clone, PartialEq)]
+pub struct FigureBand {
+    pub key: String,
+    /// Lower end (SI: J/mol for an activation energy).
+    pub min: f64,
+    /// Upper end (SI), above `min`.
+    pub max: f64,
+    pub source: String,
+}
+
+impl FigureBand {
+    /// The SI unit `min` and `max` are in, as the files write it (`J/mol` for an activation
+    /// energy; empty for a bare number).
+    pub fn unit(&self) -> &'static str {
+        if self.key.ends_with("activation_energy") {
+            "J/mol"
+        } else {
+            ""
+        }
+    }
 }
 
 impl Material {
@@ -292,6 +321,7 @@ impl Material {
             library_id: None,
             class: None,
             permeation: Vec::new(),
+            bands: Vec::new(),
         }
     }
 

@@ -240,6 +240,7 @@ mod tests {
             library_id: None,
             class: None,
             permeation: Vec::new(),
+            bands: Vec::new(),
         }
     }
 

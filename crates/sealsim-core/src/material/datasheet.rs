@@ -488,6 +488,13 @@ pub fn from_datasheet(
         ageing: Some(Ageing::arrhenius(ea, rate, reference, crosslinking)),
         library_id: None,
         provenance: Vec::new(),
+        // what a study draws Ea from with "band" (docs/model.md §5.4)
+        bands: vec![super::FigureBand {
+            key: "ageing.activation_energy".into(),
+            min: bands.activation_energy.low,
+            max: bands.activation_energy.high,
+            source: bands.activation_energy.basis.clone(),
+        }],
         ..viscoelastic
     };
     Ok((

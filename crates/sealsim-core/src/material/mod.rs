@@ -12,6 +12,8 @@ pub mod prony;
 pub mod shift;
 pub mod tts;
 
-pub use compound::{Ageing, AgeingBasis, AgeingMedium, BALANCED_CROSSLINKING, Material, Status};
+pub use compound::{
+    Ageing, AgeingBasis, AgeingMedium, BALANCED_CROSSLINKING, FigureBand, Material, Status,
+};
 pub use prony::{ChemicalStep, Creep, Prony, PronyError, PronyTerm, RelaxationState};
 pub use shift::{Shift, TemperatureHistory};
