@@ -68,14 +68,16 @@ pub struct CheckArgs {
     source = \"Acme datasheet N7001 rev. 3\"\n\
     class = \"nbr\"            # acm, cr, epdm, ffkm, fkm, fvmq, hnbr, iir, nbr, vmq\n\
     hardness = 70            # Shore A\n\
-    t10 = \"-28 C\"            # TR-10 (or glass_transition = \"-35 C\")\n\n\
+    t10 = \"-28 C\"            # TR-10 (or glass_transition = \"-35 C\")\n\
+    thermal_expansion = \"2.3e-4 1/K\"   # optional: rubbery CTE (else the class's)\n\n\
     [[datasheet.compression_set]]   # ASTM D395 B / ISO 815-1; one to three\n\
     time = \"70 h\"\n\
     temperature = \"100 C\"\n\
     set = \"18 %\"\n\n\
     Readings at two temperatures give Ea (its band from the figures' rounding); at one, Ea is the \
     low end of the class's band (the faster ageing at service temperatures below the test). \
-    docs/model.md §5.4.")]
+    Heat-ageing changes (ASTM D573 / ISO 188) and density are not read: the life model takes \
+    ageing from the sets. docs/model.md §5.4.")]
 pub struct NewArgs {
     /// The datasheet file.
     #[arg(value_name = "DATASHEET.toml")]

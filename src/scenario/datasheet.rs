@@ -8,6 +8,7 @@
 //! class = "nbr"                 # the library compound of this class is the master curve
 //! hardness = 70                 # Shore A
 //! t10 = "-28 C"                 # TR-10 (or: glass_transition = "-35 C")
+//! thermal_expansion = "2.3e-4 1/K"   # optional: the rubbery CTE (else the class's)
 //!
 //! [[datasheet.compression_set]] # ASTM D395 B / ISO 815-1, one to three readings
 //! time = "70 h"
@@ -41,6 +42,8 @@ struct RawDatasheet {
     hardness: Option<Quantity>,
     t10: Option<Quantity>,
     glass_transition: Option<Quantity>,
+    /// The rubbery linear CTE, when the datasheet gives one.
+    thermal_expansion: Option<Quantity>,
     #[serde(default)]
     compression_set: Vec<Spanned<RawSet>>,
 }
@@ -72,6 +75,14 @@ const SET: Field = field(
     Bound::Open(0.0, 1.0),
 );
 
+/// The rubbery linear CTE a datasheet may give (elastomers: about 1e-4 to 3e-4 1/K).
+const THERMAL_EXPANSION: Field = field(
+    "datasheet.thermal_expansion",
+    Dimension::THERMAL_EXPANSION,
+    "1/K",
+    Bound::Range(1e-5, 1e-3),
+);
+
 /// The most readings a datasheet may give.
 const MAX_READINGS: usize = 3;
 
@@ -81,6 +92,8 @@ pub struct DatasheetFile {
     pub datasheet: Datasheet,
     pub class_id: &'static str,
     pub class: Material,
+    /// The datasheet's rubbery linear CTE \[1/K\] (`thermal_expansion`); `None`: the class's.
+    pub thermal_expansion: Option<f64>,
 }
 
 /// Half the last printed digit of a written fraction (`"18 %"` → 0.005, `0.185` → 0.0005).
@@ -195,6 +208,11 @@ impl DatasheetFile {
                 resolution,
             });
         }
+        let thermal_expansion = d
+            .thermal_expansion
+            .as_ref()
+            .map(|q| source.quantity(q, &THERMAL_EXPANSION))
+            .transpose()?;
         let name = d.name.unwrap_or_else(|| source.file_stem());
         Ok(DatasheetFile {
             datasheet: Datasheet {
@@ -208,6 +226,7 @@ impl DatasheetFile {
             },
             class_id,
             class,
+            thermal_expansion,
         })
     }
 }

@@ -26,6 +26,9 @@ pub fn compound(file: &DatasheetFile) -> Result<(Material, String), DatasheetErr
     let sheet = &file.datasheet;
     let band = class_band(&file.class).ok_or(DatasheetError::NoClassActivationEnergy)?;
     let (mut m, c) = datasheet::from_datasheet(&file.class, band, sheet)?;
+    if let Some(alpha) = file.thermal_expansion {
+        m.thermal_expansion = Some(alpha);
+    }
     let class_id = file.class_id;
     let low = match sheet.low_temperature {
         LowTemperature::T10(t) => format!("TR-10 = {}", celsius(t)),
@@ -66,7 +69,10 @@ pub fn compound(file: &DatasheetFile) -> Result<(Material, String), DatasheetErr
         ("glass_transition".into(), moved),
         (
             "thermal_expansion".into(),
-            format!("{class_id}'s (class value)"),
+            match file.thermal_expansion {
+                Some(_) => format!("datasheet: {}", sheet.source),
+                None => format!("{class_id}'s (class value)"),
+            },
         ),
         (
             "glassy_thermal_expansion".into(),

@@ -1123,6 +1123,38 @@ fn materials_check_accepts_a_datasheet_compound() {
     );
 }
 
+/// A datasheet's own rubbery CTE replaces the class's, with the datasheet as its provenance;
+/// out of the elastomers' range it is refused at its key.
+#[test]
+fn materials_new_takes_the_datasheets_thermal_expansion() {
+    let dir = Dir::new();
+    let sheet = fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/lab-data/datasheet-nbr.toml"),
+    )
+    .unwrap();
+    let with = |cte: &str| {
+        sheet.replace(
+            "t10 = \"-30 C\"",
+            &format!("t10 = \"-30 C\"\nthermal_expansion = \"{cte}\""),
+        )
+    };
+    let path = dir.write("cte.toml", &with("2.9e-4 1/K"));
+    let out = dir.path("compound.toml");
+    ok(&["materials", "new", s(&path), "-o", s(&out)]);
+    let m = load_material_file(&out).unwrap();
+    assert_eq!(m.thermal_expansion, Some(2.9e-4));
+    assert!(
+        m.provenance_of("thermal_expansion")
+            .unwrap()
+            .starts_with("datasheet")
+    );
+    let class = library::get("nbr-70").unwrap().load().unwrap();
+    assert_ne!(class.thermal_expansion, Some(2.9e-4));
+    let bad = dir.write("bad.toml", &with("2.9e-2 1/K"));
+    let err = rejected(&["materials", "new", s(&bad), "-o", s(&out)]);
+    assert!(err.contains("datasheet.thermal_expansion"), "{err}");
+}
+
 /// A datasheet that cannot make a compound exits 2 naming file, line and key (or the reading),
 /// writes nothing, and never overwrites its own input.
 #[test]
