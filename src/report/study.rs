@@ -9,7 +9,7 @@ use crate::report::life::human_time;
 use crate::scenario::ScenarioError;
 use crate::scenario::study::{InputKind, Study};
 use crate::simulate::FailureMode;
-use crate::study::summary::{B_LIVES, StudySummary};
+use crate::study::summary::{B_LIVES, LevelLife, StudySummary};
 use crate::study::{CaseOutcome, Cell};
 use crate::units::{exact as num, human};
 use serde_json::{Value, json};
@@ -302,7 +302,9 @@ impl PartRow<'_> {
         for (j, input) in self.study.inputs.iter().enumerate() {
             let cell = match input.kind {
                 InputKind::Words(_) => Cell::Word(self.field(1 + j).to_owned()),
-                InputKind::Quantity { .. } => Cell::Number(self.number(1 + j)?),
+                InputKind::Quantity { .. } | InputKind::SizeTolerance => {
+                    Cell::Number(self.number(1 + j)?)
+                }
             };
             if input.cell(values[j]) != cell {
                 return Err(self.error(
@@ -364,6 +366,25 @@ pub fn summary_json(study: &Study, s: &StudySummary) -> Result<String, serde_jso
         doc.insert(format!("{name}_lower_s"), json!(b.lower));
         doc.insert(format!("{name}_upper_s"), json!(b.upper));
     }
+    doc.insert(
+        "by_level".into(),
+        Value::Array(
+            levels(study, s)
+                .into_iter()
+                .map(|l| {
+                    json!({
+                        "input": study.inputs[l.input].key,
+                        "level": l.level,
+                        "cases": l.cases,
+                        "failures": l.failures,
+                        "b10_s": l.b10.estimate,
+                        "b10_lower_s": l.b10.lower,
+                        "b10_upper_s": l.b10.upper,
+                    })
+                })
+                .collect(),
+        ),
+    );
     doc.insert(
         "modes".into(),
         Value::Object(
@@ -448,6 +469,52 @@ fn life_text(t: Option<f64>, why: &str) -> String {
     t.map_or_else(|| why.to_owned(), human_time)
 }
 
+/// The summary's per-value lives in input order and, within an input, in the order the study
+/// lists its values.
+fn levels<'s>(study: &Study, s: &'s StudySummary) -> Vec<&'s LevelLife> {
+    let rank = |l: &LevelLife| match &study.inputs[l.input].kind {
+        InputKind::Words(words) => words.iter().position(|w| *w == l.level),
+        InputKind::Quantity { .. } | InputKind::SizeTolerance => None,
+    };
+    let mut out: Vec<&LevelLife> = s.by_level.iter().collect();
+    out.sort_by_key(|l| (l.input, rank(l)));
+    out
+}
+
+/// B10 per value of each word input (`seal.size`, `material.library`): one line per value with
+/// its cases, failures and bounds; empty without a word input.
+fn by_level_table(study: &Study, s: &StudySummary) -> String {
+    let mut out = String::new();
+    let mut last = None;
+    let width = s
+        .by_level
+        .iter()
+        .map(|l| l.level.chars().count())
+        .max()
+        .unwrap_or(0);
+    for l in levels(study, s) {
+        if last != Some(l.input) {
+            out += &format!(
+                "\nB10 by {} (Kaplan–Meier over its cases, {} % bounds)\n",
+                study.inputs[l.input].key,
+                human(100.0 * s.confidence, 3)
+            );
+            last = Some(l.input);
+        }
+        let never = "not reached: fewer than 10 % failed";
+        out += &format!(
+            "  {:<width$}  {:<22} [{}, {}]   {} of {} failed\n",
+            l.level,
+            life_text(l.b10.estimate, never),
+            life_text(l.b10.lower, "—"),
+            life_text(l.b10.upper, "beyond the data"),
+            l.failures,
+            l.cases
+        );
+    }
+    out
+}
+
 /// The terminal table of the summary.
 pub fn summary_table(study: &Study, s: &StudySummary) -> String {
     let mut out = String::new();
@@ -528,6 +595,7 @@ pub fn summary_table(study: &Study, s: &StudySummary) -> String {
             )
         }
     }
+    out += &by_level_table(study, s);
     out += "\nwhat drives the life (Spearman ρ of input and life; η for words)\n";
     let width = study.inputs.iter().map(|i| i.key.len()).max().unwrap_or(0);
     for inf in &s.sensitivity {

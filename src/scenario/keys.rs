@@ -1605,6 +1605,14 @@ const STUDY: &[Key] = &[
         "rank correlations between inputs (Monte Carlo only; a Gaussian copula)",
     ),
     key(
+        "tolerances",
+        Choice(&["fits"]),
+        Absent("only the `[vary]` inputs"),
+        "`\"fits\"`: every dimension the base gives a tolerance for is drawn too — the ring \
+         within its size's AS568 tolerance (with `seal.size`), each `seal.X` within \
+         `seal.X_tolerance` (±3σ normal)",
+    ),
+    key(
         "vary",
         Map,
         Required(""),
@@ -1644,7 +1652,11 @@ pub(super) const STUDY_TABLES: &[Table] = &[
                 `\"scenario\"`, optional `nominal`, default the base's value, and `shape`, \
                 `\"normal\"` (±3σ, the default) or `\"uniform\"`) — or the shorthand \
                 `\"±0.05 mm\"`, a tolerance band about the base's value, or `\"band\"`, the base \
-                compound's own band of that figure (`[material.bands]`) drawn uniformly.",
+                compound's own band of that figure (`[material.bands]`) drawn uniformly. \
+                `{ tolerance = \"size\" }` on `seal.cross_section` or `seal.inner_diameter` \
+                draws the ring within its case's `seal.size` tolerance (a fraction z of the AS568 \
+                ±, so that it follows a varied size). A word input (`seal.size`, \
+                `material.library`) gets its B10 per value in the summary.",
         keys: STUDY,
     },
     Table {

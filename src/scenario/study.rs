@@ -60,6 +60,9 @@ pub(super) struct RawStudy {
     report_times: Option<Spanned<Vec<Spanned<String>>>>,
     run_after_failure: Option<Spanned<bool>>,
     correlations: Option<Spanned<Vec<Spanned<RawCorrelation>>>>,
+    /// `"fits"`: every dimension the base gives a tolerance for is drawn from it (the ring from
+    /// its size's, `seal.X` from `seal.X_tolerance`), after the `[vary]` inputs.
+    tolerances: Option<Spanned<String>>,
     vary: Spanned<BTreeMap<String, Spanned<toml::Value>>>,
 }
 
@@ -85,6 +88,11 @@ pub enum InputKind {
     },
     /// Words (compound ids, fidelity levels): the distribution's values are indices.
     Words(Vec<String>),
+    /// A ring dimension (`seal.cross_section`, `seal.inner_diameter`) within its size's own
+    /// tolerance (`tolerance = "size"`): the value z ∈ [−1, 1] is the fraction of the case's
+    /// AS568 ± tolerance, so that it follows a varied `seal.size`; the case's ring is then
+    /// written out as `cross_section` + `inner_diameter`.
+    SizeTolerance,
 }
 
 /// One varied input.
@@ -105,6 +113,7 @@ impl StudyInput {
             InputKind::Quantity {
                 dimension: Some(d), ..
             } if *d != Dimension::DIMENSIONLESS => format!("{}_{}", self.key, si_suffix(*d)),
+            InputKind::SizeTolerance => format!("{}_tolerance_fraction", self.key),
             _ => self.key.clone(),
         }
     }
@@ -114,6 +123,7 @@ impl StudyInput {
         match &self.kind {
             InputKind::Quantity { scale, offset, .. } => Cell::Number(x * scale + offset),
             InputKind::Words(w) => Cell::Word(w[x as usize].clone()),
+            InputKind::SizeTolerance => Cell::Number(x),
         }
     }
 
@@ -131,11 +141,15 @@ impl StudyInput {
                 toml::Value::String(format!("{} {unit}", units::exact(x)))
             }
             InputKind::Words(w) => toml::Value::String(w[x as usize].clone()),
+            InputKind::SizeTolerance => toml::Value::Float(x),
         }
     }
 
     /// `key = value` as a case's input reads (for messages).
     pub fn describe(&self, x: f64) -> String {
+        if self.kind == InputKind::SizeTolerance {
+            return format!("{} = nominal {x:+.3} × the size's tolerance", self.key);
+        }
         match self.toml_value(x) {
             toml::Value::String(s) => format!("{} = \"{s}\"", self.key),
             v => format!("{} = {v}", self.key),
@@ -319,8 +333,16 @@ impl Study {
         case: Option<usize>,
     ) -> Result<Scenario, ScenarioError> {
         let mut table = self.base.clone();
+        let mut ring = Vec::new();
         for (input, x) in assignments {
+            if input.kind == InputKind::SizeTolerance {
+                ring.push((*input, *x));
+                continue;
+            }
             set(&mut table, &input.key, input.toml_value(*x)).map_err(|m| self.error(input, m))?;
+        }
+        if let Some((first, _)) = ring.first() {
+            size_within_tolerance(&mut table, &ring).map_err(|m| self.error(first, m))?;
         }
         let text =
             toml::to_string(&table).map_err(|e| self.error(assignments[0].0, e.to_string()))?;
@@ -514,7 +536,7 @@ impl RawStudy {
         let mut entries: Vec<(&String, &Spanned<toml::Value>)> =
             self.vary.get_ref().iter().collect();
         entries.sort_by_key(|(_, v)| v.span().start);
-        if entries.is_empty() {
+        if entries.is_empty() && self.tolerances.is_none() {
             return Err(source.error(self.vary.span(), "vary", "names no input to vary"));
         }
         let mut inputs = Vec::new();
@@ -530,6 +552,37 @@ impl RawStudy {
             let (input, distribution) = entry.parse(value.get_ref())?;
             inputs.push(input);
             distributions.push(distribution);
+        }
+        if let Some(mode) = &self.tolerances {
+            if mode.get_ref() != "fits" {
+                return Err(source.error(
+                    mode.span(),
+                    "tolerances",
+                    format!(
+                        "unknown mode {:?}: \"fits\" draws every dimension the base gives a \
+                         tolerance for",
+                        mode.get_ref()
+                    ),
+                ));
+            }
+            let varied: Vec<String> = inputs.iter().map(|i: &StudyInput| i.key.clone()).collect();
+            for (key, band) in toleranced(base, self.vary.get_ref())
+                .into_iter()
+                .filter(|(k, _)| !varied.contains(k))
+            {
+                let mut table = toml::Table::new();
+                table.insert("tolerance".into(), toml::Value::String(band.into()));
+                let entry = Entry {
+                    source,
+                    key: &key,
+                    span: mode.span(),
+                    base,
+                    bands,
+                };
+                let (input, distribution) = entry.parse(&toml::Value::Table(table))?;
+                inputs.push(input);
+                distributions.push(distribution);
+            }
         }
         Ok((inputs, distributions))
     }
@@ -616,6 +669,70 @@ pub(crate) fn set(table: &mut toml::Table, key: &str, value: toml::Value) -> Res
     }
     t.insert(last.to_string(), value);
     Ok(())
+}
+
+/// The ring keys a size's own tolerance can vary (`tolerance = "size"`), with the size's
+/// nominal and ± tolerance of each \[mm\].
+const RING_KEYS: [&str; 2] = ["seal.cross_section", "seal.inner_diameter"];
+
+/// The case's `seal.size` written out as `cross_section` and `inner_diameter` \[mm\], each at
+/// its nominal plus z × its AS568 ± tolerance for the `(input, z)` in `ring` (the other at its
+/// nominal).
+fn size_within_tolerance(
+    table: &mut toml::Table,
+    ring: &[(&StudyInput, f64)],
+) -> Result<(), String> {
+    let Some(toml::Value::Table(seal)) = table.get_mut("seal") else {
+        return Err("tolerance = \"size\" needs a [seal] with `size`".into());
+    };
+    let Some(toml::Value::String(name)) = seal.remove("size") else {
+        return Err(
+            "tolerance = \"size\" draws the ring within its size's tolerance: the case has no \
+             `seal.size` (give one in the base or vary it)"
+                .into(),
+        );
+    };
+    let size = super::as568::lookup(&name).map_err(|e| e.to_string())?;
+    let nominal = [
+        (size.cs_in * 25.4, size.cs_tol_in * 25.4),
+        (size.id_in * 25.4, size.id_tol_in * 25.4),
+    ];
+    for (k, key) in RING_KEYS.iter().enumerate() {
+        let (value, tolerance) = nominal[k];
+        let z = ring
+            .iter()
+            .find(|(input, _)| input.key == *key)
+            .map_or(0.0, |(_, z)| *z);
+        let name = key.trim_start_matches("seal.");
+        seal.insert(
+            name.into(),
+            toml::Value::String(format!("{} mm", units::exact(value + z * tolerance))),
+        );
+    }
+    Ok(())
+}
+
+/// The dimensions `tolerances = "fits"` draws, each with its band (`"size"` or `"scenario"`):
+/// the ring within its size's tolerance when the base or `[vary]` gives `seal.size`, and every
+/// `seal.X` whose `seal.X_tolerance` the base gives.
+fn toleranced(
+    base: &toml::Table,
+    vary: &BTreeMap<String, Spanned<toml::Value>>,
+) -> Vec<(String, &'static str)> {
+    let mut out = Vec::new();
+    if get(base, "seal.size").is_some() || vary.contains_key("seal.size") {
+        out.extend(RING_KEYS.iter().map(|k| ((*k).to_owned(), "size")));
+    }
+    if let Some(toml::Value::Table(seal)) = base.get("seal") {
+        for key in seal.keys() {
+            if let Some(dimension) = key.strip_suffix("_tolerance")
+                && seal.contains_key(dimension)
+            {
+                out.push((format!("seal.{dimension}"), "scenario"));
+            }
+        }
+    }
+    out
 }
 
 /// A value at a key path of a TOML table.
@@ -771,8 +888,8 @@ impl Entry<'_> {
                 allowed.join(", ")
             )));
         }
-        if kind == "values" {
-            return self.values(&table);
+        if let Some(input) = self.not_a_quantity(&kind, &table) {
+            return input;
         }
         let required = |k: &str| -> Result<Written, ScenarioError> {
             match table.get(k) {
@@ -1080,6 +1197,64 @@ impl Entry<'_> {
             }
         };
         Ok((unit, d))
+    }
+
+    /// The entries whose values are not quantities in a unit: `values` (words or quantities)
+    /// and `tolerance = "size"`; `None` for the others.
+    fn not_a_quantity(
+        &self,
+        kind: &str,
+        table: &toml::Table,
+    ) -> Option<Result<(StudyInput, Distribution), ScenarioError>> {
+        match (kind, table.get("tolerance")) {
+            ("values", _) => Some(self.values(table)),
+            ("tolerance", Some(toml::Value::String(t))) if t == "size" => {
+                Some(self.size_tolerance(table))
+            }
+            _ => None,
+        }
+    }
+
+    /// `tolerance = "size"` on `seal.cross_section` or `seal.inner_diameter`: the fraction z of
+    /// the case's AS568 ± tolerance, normal with the band at ±3σ (truncated there; `shape =
+    /// "uniform"`: uniform over it).
+    fn size_tolerance(
+        &self,
+        table: &toml::Table,
+    ) -> Result<(StudyInput, Distribution), ScenarioError> {
+        if !RING_KEYS.contains(&self.key) {
+            return Err(self.err(format!(
+                "tolerance = \"size\" applies to the ring's {}: give this key a band such as \
+                 \"±0.05 mm\"",
+                RING_KEYS.join(" and ")
+            )));
+        }
+        if table.contains_key("nominal") {
+            return Err(self.err(
+                "tolerance = \"size\" takes the nominal from the case's `seal.size`: remove \
+                 `nominal`",
+            ));
+        }
+        let d = match table.get("shape") {
+            None => Distribution::Normal {
+                mean: 0.0,
+                std: 1.0 / 3.0,
+                lo: -1.0,
+                hi: 1.0,
+            },
+            Some(toml::Value::String(s)) if s == "normal" => Distribution::Normal {
+                mean: 0.0,
+                std: 1.0 / 3.0,
+                lo: -1.0,
+                hi: 1.0,
+            },
+            Some(toml::Value::String(s)) if s == "uniform" => Distribution::Uniform {
+                min: -1.0,
+                max: 1.0,
+            },
+            Some(_) => return Err(self.err("`shape` is \"normal\" (±3σ) or \"uniform\"")),
+        };
+        Ok((self.with_kind(InputKind::SizeTolerance), d))
     }
 
     /// `values = [...]`: quantities (all of one quantity) or words, equally likely.

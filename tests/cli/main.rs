@@ -39,6 +39,7 @@ mod rubber;
 mod run;
 mod small_defects;
 mod study;
+mod study_sizes;
 mod surface;
 mod swell;
 mod tradeoff;

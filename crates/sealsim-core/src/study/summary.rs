@@ -102,6 +102,24 @@ pub struct StudySummary {
     pub sensitivity: Vec<Influence>,
     /// Validity limits crossed: (id, number of cases), by id.
     pub warnings: Vec<(String, usize)>,
+    /// The B10 life of each value of each word input (a size, a compound), in input order and
+    /// the values' order of first appearance: a sweep over sizes reads its life per size.
+    pub by_level: Vec<LevelLife>,
+}
+
+/// The life of the cases that share one value of a word input (`seal.size = "AS568-214"`):
+/// Kaplan–Meier over those cases alone.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LevelLife {
+    /// The input's index in the study's inputs.
+    pub input: usize,
+    /// The value (a word).
+    pub level: String,
+    pub cases: usize,
+    /// Failures, invalid cases included.
+    pub failures: usize,
+    /// B10 with its bounds at the summary's confidence.
+    pub b10: BLife,
 }
 
 impl StudySummary {
@@ -153,7 +171,37 @@ impl StudySummary {
             }
         }
         warnings.sort();
+        let by_level = columns
+            .iter()
+            .enumerate()
+            .filter_map(|(j, c)| match c {
+                Column::Categorical(groups) => Some((j, groups)),
+                Column::Numeric(_) => None,
+            })
+            .flat_map(|(j, groups)| {
+                let levels = groups.iter().copied().max().map_or(0, |m| m + 1);
+                let observations = &observations;
+                (0..levels).map(move |g| {
+                    let members: Vec<usize> =
+                        (0..groups.len()).filter(|&i| groups[i] == g).collect();
+                    let subset: Vec<Observation> =
+                        members.iter().map(|&i| observations[i]).collect();
+                    let level = match &outcomes[members[0]].inputs[j] {
+                        Cell::Word(w) => w.clone(),
+                        Cell::Number(x) => x.to_string(),
+                    };
+                    LevelLife {
+                        input: j,
+                        level,
+                        cases: subset.len(),
+                        failures: subset.iter().filter(|o| o.failed).count(),
+                        b10: KaplanMeier::new(&subset).b_life(0.1, confidence),
+                    }
+                })
+            })
+            .collect();
         StudySummary {
+            by_level,
             cases: outcomes.len(),
             failures,
             invalid,
