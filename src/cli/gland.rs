@@ -112,6 +112,9 @@ fn template_name(kind: GlandKind) -> &'static str {
 fn template_quantity(text: &str, section: &str, key: &str, dim: Dimension) -> Option<f64> {
     let value: toml::Value = toml::from_str(text).ok()?;
     let s = value.get(section)?.get(key)?.as_str()?;
+    if dim == Dimension::TEMPERATURE {
+        return crate::units::parse_temperature(s).ok();
+    }
     parse_quantity(s, dim).ok()
 }
 
@@ -255,7 +258,7 @@ fn parse_temperatures(text: &str) -> Result<(f64, f64), CliError> {
         ))
     })?;
     let t = |s: &str| {
-        parse_quantity(s.trim(), Dimension::TEMPERATURE)
+        crate::units::parse_temperature(s.trim())
             .map_err(|e| input(format!("--temperature: {e}")))
             .and_then(|v| {
                 if v.is_finite() && v > 0.0 {

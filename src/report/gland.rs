@@ -73,8 +73,8 @@ fn service_name(design: &Design) -> String {
 /// The seat's name and the mate's.
 fn names(kind: GlandKind, pressure_outside: bool) -> (&'static str, &'static str, &'static str) {
     match kind {
-        GlandKind::Piston => ("bore", "piston", "groove (bottom) diameter"),
-        GlandKind::Rod => ("rod", "housing bore", "groove (outer) diameter"),
+        GlandKind::Piston => ("bore", "piston", "groove diameter"),
+        GlandKind::Rod => ("rod", "housing bore", "groove diameter"),
         GlandKind::Face if pressure_outside => ("groove inner diameter", "", ""),
         GlandKind::Face => ("groove outer diameter", "", ""),
     }
