@@ -31,12 +31,14 @@ pub enum PressureSide {
 
 /// Arguments of `sealsim gland`.
 #[derive(Debug, Clone, Args)]
-#[command(after_help = "The tables: static radial and face glands from The O-Ring Store's \
+#[command(
+    after_help = "The tables: static radial and face glands from The O-Ring Store's \
     reproduction of the Parker ORD 5700 design charts, dynamic glands from Engineers Edge \
     (docs/model.md §6.2.1 cites both); fits from ISO 286 tables (IT5–IT11; H; d, e, f, g, h; up \
     to 500 mm). min/max in the stack-up are the worst-case combinations of every tolerance \
     limit for each quantity separately. -o writes the service's o-ring template with the \
-    designed gland (nominal dimensions, the largest clearance).")]
+    designed gland (nominal dimensions, the largest clearance)."
+)]
 pub struct GlandArgs {
     /// The ring, an AS568 size (ISO 3601-1 class A uses the same dash numbers), e.g. AS568-214.
     #[arg(value_name = "SIZE")]
@@ -177,8 +179,9 @@ pub fn run(args: GlandArgs) -> Result<(), CliError> {
         Some(text) => parse_temperatures(text)?,
     };
     let pressure = match &args.pressure_difference {
-        Some(p) => positive_flag(Some(p), "pressure-difference", Dimension::PRESSURE)?
-            .unwrap_or_default(),
+        Some(p) => {
+            positive_flag(Some(p), "pressure-difference", Dimension::PRESSURE)?.unwrap_or_default()
+        }
         None => template_quantity(
             template.text,
             "fluid",
@@ -216,8 +219,8 @@ pub fn run(args: GlandArgs) -> Result<(), CliError> {
         pressure_outside: args.pressure == Some(PressureSide::Outside),
         backup_rings: args.backup_rings,
     };
-    let nominal = gland_design::as568_nominal(size.id_in, size.cs_in)
-        .map(|(id, od)| (id * INCH, od * INCH));
+    let nominal =
+        gland_design::as568_nominal(size.id_in, size.cs_in).map(|(id, od)| (id * INCH, od * INCH));
     let design = gland_design::design(size.ring(), nominal, service, fit, seat)
         .map_err(|e| input(format!("{}: {e}", size.name())))?;
     let conditions = Conditions {
@@ -284,7 +287,12 @@ fn mm(v: f64) -> String {
 }
 
 /// The `[seal]` table of the designed gland (nominal dimensions; the largest clearance).
-fn seal_table(design: &Design, stack: &gland_design::StackUp, ctx: &Context, args: &GlandArgs) -> String {
+fn seal_table(
+    design: &Design,
+    stack: &gland_design::StackUp,
+    ctx: &Context,
+    args: &GlandArgs,
+) -> String {
     let h = &design.housing;
     let kind = design.service.kind;
     let mut lines = vec![
@@ -304,7 +312,8 @@ fn seal_table(design: &Design, stack: &gland_design::StackUp, ctx: &Context, arg
     ];
     let depth_tol = 0.5 * (h.depth.max - h.depth.min);
     match (kind, h.seat, h.groove_diameter) {
-        (GlandKind::Piston, Some(seat), Some(groove)) | (GlandKind::Rod, Some(seat), Some(groove)) => {
+        (GlandKind::Piston, Some(seat), Some(groove))
+        | (GlandKind::Rod, Some(seat), Some(groove)) => {
             let key = if kind == GlandKind::Piston {
                 "bore_diameter"
             } else {
@@ -418,6 +427,10 @@ fn write_scenario(
         Some(path),
         scenario_text(template, design, stack, ctx, args).as_bytes(),
     )?;
-    eprintln!("wrote {} (run it with `sealsim run {}`)", path.display(), path.display());
+    eprintln!(
+        "wrote {} (run it with `sealsim run {}`)",
+        path.display(),
+        path.display()
+    );
     Ok(())
 }

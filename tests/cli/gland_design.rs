@@ -17,8 +17,10 @@ fn design(args: &[&str]) -> Value {
     let mut all = vec!["gland"];
     all.extend_from_slice(args);
     all.push("--json");
-    let refs: Vec<&dyn AsRef<std::ffi::OsStr>> =
-        all.iter().map(|a| a as &dyn AsRef<std::ffi::OsStr>).collect();
+    let refs: Vec<&dyn AsRef<std::ffi::OsStr>> = all
+        .iter()
+        .map(|a| a as &dyn AsRef<std::ffi::OsStr>)
+        .collect();
     serde_json::from_str(&sealsim_ok(&refs)).unwrap()
 }
 
@@ -72,15 +74,27 @@ fn three_sizes_by_three_services_reproduce_the_tables() {
             let bu = n.to_string();
             let p = design(&[size, "--service", "piston", "--backup-rings", &bu]);
             assert_inch(mm(&p["housing"], "depth"), l, &format!("{size} piston L"));
-            assert_inch(mm(&p["housing"], "groove_width"), *w, &format!("{size} G {n}"));
+            assert_inch(
+                mm(&p["housing"], "groove_width"),
+                *w,
+                &format!("{size} G {n}"),
+            );
         }
         let r = design(&[size, "--service", "rod"]);
         assert_inch(mm(&r["housing"], "depth"), l, &format!("{size} rod L"));
         let d = design(&[size, "--service", "rod", "--dynamic"]);
-        assert_inch(mm(&d["housing"], "depth"), l_dyn, &format!("{size} dynamic L"));
+        assert_inch(
+            mm(&d["housing"], "depth"),
+            l_dyn,
+            &format!("{size} dynamic L"),
+        );
         assert_inch(mm(&d["housing"], "groove_width"), widths[0], "dynamic G");
         let f = design(&[size, "--service", "face"]);
-        assert_inch(mm(&f["housing"], "depth"), face_depth, &format!("{size} face"));
+        assert_inch(
+            mm(&f["housing"], "depth"),
+            face_depth,
+            &format!("{size} face"),
+        );
         assert_inch(mm(&f["housing"], "groove_width"), face_width, "face width");
         // the groove diameter keeps L inside the table's range at every bore in tolerance
         let h = &r["housing"];
@@ -99,9 +113,15 @@ fn as568_214_piston_is_the_1_250_in_bore_with_an_h8_f7_fit() {
     assert_eq!(h["seat_from_as568_pairing"], true);
     // 31.75 mm H8 = +0/+39 µm, f7 = −25/−50 µm (ISO 286, row 30–50 mm)
     let (lo, hi) = mm(h, "seat");
-    assert!((lo - 31.75).abs() < 1e-9 && (hi - 31.789).abs() < 1e-9, "{lo} {hi}");
+    assert!(
+        (lo - 31.75).abs() < 1e-9 && (hi - 31.789).abs() < 1e-9,
+        "{lo} {hi}"
+    );
     let (lo, hi) = mm(h, "mate");
-    assert!((lo - 31.70).abs() < 1e-9 && (hi - 31.725).abs() < 1e-9, "{lo} {hi}");
+    assert!(
+        (lo - 31.70).abs() < 1e-9 && (hi - 31.725).abs() < 1e-9,
+        "{lo} {hi}"
+    );
     // −210 belongs to a 1.000 in bore, −112 to a 0.500 in rod (ponnmachine.com)
     let p = design(&["AS568-210", "--service", "piston"]);
     assert_eq!(p["housing"]["seat_nominal_in"].as_f64().unwrap(), 1.0);
@@ -209,7 +229,10 @@ fn bad_input_exits_2_with_the_fix() {
             vec!["AS568-214", "--service", "piston", "--fit", "f7/H8"],
             "HOLE/SHAFT",
         ),
-        (vec!["AS568-214", "--service", "rod", "--bore", "30 mm"], "--rod"),
+        (
+            vec!["AS568-214", "--service", "rod", "--bore", "30 mm"],
+            "--rod",
+        ),
         (
             vec!["AS568-214", "--service", "piston", "--pressure", "outside"],
             "face glands",
@@ -220,7 +243,13 @@ fn bad_input_exits_2_with_the_fix() {
             "metal to metal",
         ),
         (
-            vec!["AS568-214", "--service", "piston", "--temperature", "80 C,-20 C"],
+            vec![
+                "AS568-214",
+                "--service",
+                "piston",
+                "--temperature",
+                "80 C,-20 C",
+            ],
             "lowest first",
         ),
     ] {

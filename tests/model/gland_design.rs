@@ -45,7 +45,12 @@ fn iso_286_limits_match_the_tables() {
     let fit = Fit::parse("H8/f7").unwrap();
     let (lo, hi) = fit.clearance(30e-3).unwrap();
     assert_eq!(((lo * 1e6).round(), (hi * 1e6).round()), (20.0, 74.0));
-    assert!(ToleranceClass::parse("H8").unwrap().deviations(0.6).is_err());
+    assert!(
+        ToleranceClass::parse("H8")
+            .unwrap()
+            .deviations(0.6)
+            .is_err()
+    );
 }
 
 /// The worked stack-ups of the sources: every table's printed squeeze is the cord's AS568
@@ -169,5 +174,8 @@ fn stretch_lowers_the_squeeze_below_the_tables() {
     assert!((piston_stretch - 0.0435).abs() < 0.001, "{piston_stretch}");
     assert!(rod_stretch > 0.0 && rod_stretch < piston_stretch);
     let unstretched = (0.135 - 0.113) / 0.135;
-    assert!(piston < rod && rod < unstretched, "{piston} {rod} {unstretched}");
+    assert!(
+        piston < rod && rod < unstretched,
+        "{piston} {rod} {unstretched}"
+    );
 }

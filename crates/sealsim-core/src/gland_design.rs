@@ -415,7 +415,10 @@ pub enum DesignError {
     Fit(FitError),
     /// The seat's tolerance is wider than twice the depth's range: no groove diameter keeps
     /// the depth inside the table's range.
-    ToleranceTooWide { seat_tolerance: f64, depth_range: f64 },
+    ToleranceTooWide {
+        seat_tolerance: f64,
+        depth_range: f64,
+    },
     /// A tolerance corner cannot be assembled.
     Gland(GlandError),
 }
