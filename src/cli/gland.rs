@@ -395,12 +395,14 @@ fn scenario_text(
             out += &format!("library = \"{}\"\n", args.material);
             continue;
         }
-        if section == "fluid" && key == "pressure_difference" {
-            if let Some(p) = &args.pressure_difference {
-                let quoted = toml::Value::String(p.clone()).to_string();
-                out += &format!("pressure_difference = {quoted}\n");
-                continue;
-            }
+        if let Some(p) = args
+            .pressure_difference
+            .as_ref()
+            .filter(|_| section == "fluid" && key == "pressure_difference")
+        {
+            let quoted = toml::Value::String(p.clone()).to_string();
+            out += &format!("pressure_difference = {quoted}\n");
+            continue;
         }
         out += line;
         out.push('\n');
