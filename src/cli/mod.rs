@@ -10,6 +10,7 @@ pub mod compare;
 pub mod figures;
 pub mod fit_prony;
 pub mod generate;
+pub mod gland;
 pub mod leak;
 pub mod materials;
 pub mod new;
@@ -180,6 +181,9 @@ pub enum Command {
     Materials(materials::MaterialsArgs),
     /// AS568 O-ring sizes: one size's dimensions (inch and mm, tolerances, source), or all.
     Sizes(sizes::SizesArgs),
+    /// The recommended gland of an AS568 ring for a service (face, piston, rod), with ISO 286
+    /// fits and the tolerance stack-up (squeeze, stretch, OD compression, fill, clearance).
+    Gland(Box<gland::GlandArgs>),
     /// A roughness source (scenario, line traces, PSD file): Ra, Rq, Rz, h_rms, rms slope,
     /// Hurst exponent, cut-offs and warnings, with an optional C(q) chart.
     Surface(surface::SurfaceArgs),
@@ -278,6 +282,7 @@ pub fn run(command: Command) -> Result<(), CliError> {
         Command::AgeingFit(args) => ageing_fit::run(args),
         Command::Materials(args) => materials::run(args),
         Command::Sizes(args) => sizes::run(args),
+        Command::Gland(args) => gland::run(*args),
         Command::Surface(args) => surface::run(args),
         Command::Study(args) => study::run(*args),
         Command::New(args) => new::run(args),

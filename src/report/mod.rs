@@ -7,6 +7,7 @@ pub mod columns;
 pub mod csv;
 pub mod findings;
 pub mod fit_prony;
+pub mod gland;
 pub mod html;
 pub mod life;
 #[cfg(feature = "cli")]

@@ -25,6 +25,7 @@ mod gas;
 mod generate;
 mod generate_reference;
 mod gland;
+mod gland_design;
 mod gland_pressure;
 mod integration;
 mod leak;

@@ -22,6 +22,8 @@ const LAYERS: &[(&str, u8)] = &[
     ("seal", 3),
     ("gland", 3),
     ("extrusion", 3),
+    ("fits", 3),
+    ("gland_design", 3),
     ("permeation", 3),
     ("material", 3),
     ("clogging", 3),

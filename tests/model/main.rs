@@ -24,6 +24,7 @@ mod flow;
 mod fluid;
 mod gas;
 mod gland;
+mod gland_design;
 mod height_map;
 mod ihl;
 mod interface;

@@ -390,7 +390,7 @@ fn seat(locator: Locator, id: f64, d: f64, h: f64) -> Result<Seat, GlandError> {
 
 /// Stretch, stretched cord, squeeze and fill of a ring (free ID `id`, cord `d`) in a gland of
 /// depth `h`, width `w`; squeeze and fill are returned as they come (no fit check).
-fn install(id: f64, d: f64, h: f64, w: f64, locator: Locator) -> Result<Installed, GlandError> {
+pub fn install(id: f64, d: f64, h: f64, w: f64, locator: Locator) -> Result<Installed, GlandError> {
     // constant volume of the torus: d′² D′ = d² D, D = id + d
     let k = d * d * (id + d);
     let (d1, inner, mean) = match seat(locator, id, d, h)? {
