@@ -1856,11 +1856,19 @@ fn seal_description(problem: &LifeProblem) -> String {
             nominal_pressure,
             width,
             length,
+            compression,
+            ..
         } => format!(
-            "flat, P0 = {} MPa over {} mm × {} mm",
+            "flat, P0 = {} MPa over {} mm × {} mm{}",
             human(nominal_pressure / 1e6, 4),
             human(width * 1e3, 4),
-            human(length * 1e3, 4)
+            human(length * 1e3, 4),
+            // the compression matters where the thermal strain changes it (docs/model.md §6)
+            if problem.thermal_strain.is_some() {
+                format!(", compression {} %", human(compression * 100.0, 3))
+            } else {
+                String::new()
+            }
         ),
         SealGeometry::ORing {
             cross_section,
