@@ -1584,7 +1584,9 @@ squeeze = 0.2
             SealGeometry::Flat {
                 nominal_pressure: 1e6,
                 width: 2e-3,
-                length: 0.1
+                length: 0.1,
+                compression: DEFAULT_FLAT_COMPRESSION,
+                thickness: None,
             }
         );
         assert_eq!(s.life.loading, Loading::Force);
