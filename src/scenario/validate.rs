@@ -430,8 +430,7 @@ impl Source<'_> {
             replacement.is_some(),
             &fluid,
             &environment,
-            &seal.geometry,
-            seal.loading,
+            &seal,
         )?;
         if thermal_strain.is_none() {
             self.flat_without_expansion(
@@ -656,9 +655,9 @@ impl Source<'_> {
         replaced: bool,
         fluid: &Fluid,
         environment: &crate::material::TemperatureHistory,
-        geometry: &SealGeometry,
-        loading: crate::simulate::Loading,
+        seal: &super::life::SealSpec,
     ) -> Result<Service, ScenarioError> {
+        let (geometry, loading) = (&seal.geometry, seal.loading);
         let (ageing, ageing_source) =
             self.scenario_ageing(raw.ageing.as_ref(), material, replaced)?;
         let motion = self.motion(raw.motion.as_ref())?;
