@@ -1507,8 +1507,13 @@ fn shutdown_line(run: &SummaryRun, last: &crate::simulate::HistoryRow) -> Option
             run.duration,
         )
     });
+    // a flat gasket keeps a compression of its recovered thickness (§8.2)
+    let kept = match run.problem.geometry {
+        SealGeometry::Flat { .. } => "compression of the set gasket",
+        SealGeometry::ORing { .. } => "squeeze of the set ring",
+    };
     Some(format!(
-        "at {} and ΔP = {} MPa: squeeze of the set ring {} % after {}{glassy}; {lost}",
+        "at {} and ΔP = {} MPa: {kept} {} % after {}{glassy}; {lost}",
         celsius(shutdown.temperature),
         human(shutdown.pressure_difference / 1e6, 3),
         human(100.0 * s.remaining_squeeze, 3),
