@@ -1507,8 +1507,13 @@ fn shutdown_line(run: &SummaryRun, last: &crate::simulate::HistoryRow) -> Option
             run.duration,
         )
     });
+    // a flat gasket keeps a compression of its recovered thickness (§8.2)
+    let kept = match run.problem.geometry {
+        SealGeometry::Flat { .. } => "compression of the set gasket",
+        SealGeometry::ORing { .. } => "squeeze of the set ring",
+    };
     Some(format!(
-        "at {} and ΔP = {} MPa: squeeze of the set ring {} % after {}{glassy}; {lost}",
+        "at {} and ΔP = {} MPa: {kept} {} % after {}{glassy}; {lost}",
         celsius(shutdown.temperature),
         human(shutdown.pressure_difference / 1e6, 3),
         human(100.0 * s.remaining_squeeze, 3),
@@ -1856,11 +1861,19 @@ fn seal_description(problem: &LifeProblem) -> String {
             nominal_pressure,
             width,
             length,
+            compression,
+            ..
         } => format!(
-            "flat, P0 = {} MPa over {} mm × {} mm",
+            "flat, P0 = {} MPa over {} mm × {} mm{}",
             human(nominal_pressure / 1e6, 4),
             human(width * 1e3, 4),
-            human(length * 1e3, 4)
+            human(length * 1e3, 4),
+            // the compression matters where the thermal strain changes it (docs/model.md §6)
+            if problem.thermal_strain.is_some() {
+                format!(", compression {} %", human(compression * 100.0, 3))
+            } else {
+                String::new()
+            }
         ),
         SealGeometry::ORing {
             cross_section,

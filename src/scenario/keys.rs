@@ -825,8 +825,24 @@ const SEAL: &[Key] = &[
     key(
         "thickness",
         Quantity(life::THICKNESS),
-        Absent("a liquid needs none; a gas run on a flat seal is refused without it"),
-        "flat: compressed thickness, the edge a gas permeates through (docs/model.md §13.3)",
+        Absent(
+            "a liquid needs none; a gas run on a flat seal is refused without it; the shutdown \
+             check then asks only that the compression stays positive, and the gasket cools at \
+             once",
+        ),
+        "flat: compressed thickness t_c, the edge a gas permeates through (docs/model.md \
+         §13.3); with `compression` the free thickness t_c/(1 − ε0) whose interference the \
+         shutdown check compares with the roughness, and the cool-down t_c²/a (§8.2)",
+    ),
+    key(
+        "compression",
+        Quantity(life::COMPRESSION),
+        Derived(
+            "0.1 for a flat seal under displacement loading (assumed: the low end of vendors' \
+             10–50 %, the conservative end; docs/model.md §6)",
+        ),
+        "flat, displacement loading: ε0, the installed compression of the free thickness; the \
+         thermal strain changes it and the force with it, P = P0 ε(T)/ε0 (docs/model.md §6)",
     ),
     key(
         "cross_section",
@@ -850,23 +866,37 @@ const SEAL: &[Key] = &[
     key(
         "housing_expansion",
         Quantity(life::HOUSING_EXPANSION),
-        Derived("none (no thermal strain); steel's in a gland"),
-        "O-ring: the housing's linear CTE, so that the squeeze follows the temperature \
-         (docs/model.md §6); not with `housing`",
+        Derived(
+            "none (no thermal strain) for an O-ring between plates; steel's in a gland and for a \
+             flat seal under displacement loading",
+        ),
+        "O-ring, or a flat seal under displacement loading (its flanges and bolts): the \
+         housing's linear CTE, so that the squeeze follows the temperature (docs/model.md §6); \
+         not with `housing`; refused under force loading",
     ),
     key(
         "housing",
         Choice(HOUSINGS),
-        LiteralWhere("\"steel\"", "in a gland; none between plates", "seal.gland"),
-        "O-ring: the housing's material, for its CTE (docs/model.md §6.2); not with \
-         `housing_expansion`",
+        LiteralWhere(
+            "\"steel\"",
+            "in a gland and for a flat seal under displacement loading; none between plates",
+            "seal.gland",
+        ),
+        "O-ring, or a flat seal under displacement loading: the housing's (flanges' and \
+         bolts') material, for its CTE (docs/model.md §6.2); not with `housing_expansion`; \
+         refused under force loading",
     ),
     key(
         "installation_temperature",
         Temperature,
-        Derived("the environment's temperature at t = 0; 23 °C in a gland"),
+        Derived(
+            "the environment's temperature at t = 0; 23 °C in a gland; for a flat seal under \
+             displacement loading the hotter of 23 °C and T(0)",
+        ),
         "O-ring: T_install, the fitting temperature (the ring then settles to the environment over \
-         its thermal time, docs/model.md §5.2) and the reference of the thermal strain",
+         its thermal time, docs/model.md §5.2) and the reference of the thermal strain; a flat \
+         seal under displacement loading: the bolting temperature, the thermal strain's \
+         reference only (docs/model.md §6); refused under force loading",
     ),
     key(
         "installation_time",
@@ -1106,14 +1136,15 @@ const FAILURE: &[Key] = &[
         "lost_interference",
         Bool,
         Literal("true", ""),
-        "an O-ring under displacement loading no longer closes the roughness at a shutdown \
-         (docs/model.md §8.2)",
+        "an O-ring or a flat seal under displacement loading no longer closes the roughness at a \
+         shutdown, or cannot hold ΔP_min there (docs/model.md §8.2)",
     ),
     key(
         "shutdown_temperature",
         Temperature,
         Derived("the lower of 23 °C and the run's coldest temperature"),
-        "T_sd of the shutdown check; at most the run's hottest temperature",
+        "T_sd of the shutdown check; at most the run's hottest temperature; refused where the \
+         check does not apply (force loading, or `lost_interference = false`)",
     ),
     key(
         "minimum_pressure_difference",
@@ -1121,7 +1152,8 @@ const FAILURE: &[Key] = &[
         Literal("\"0 bar\"", ""),
         "ΔP_min, the lowest pressure difference the seal must hold at a restart, on its \
          unenergised squeeze (p_sq > ΔP_min whatever k_e; at most the service ΔP; docs/model.md \
-         §8.2)",
+         §8.2); refused where the check does not apply (force loading, or \
+         `lost_interference = false`)",
     ),
     key(
         "low_temperature",

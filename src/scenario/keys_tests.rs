@@ -248,6 +248,8 @@ const BASES: &[(&str, &str)] = &[
 [material]
 youngs_modulus = "10 MPa"
 poisson_ratio = 0.5
+# a bolted gasket at 60 °C follows the temperature (docs/model.md §6): it needs the rubber's CTE
+thermal_expansion = "1.6e-4 1/K"
 [surface]
 ra = "0.8 um"
 [fluid]

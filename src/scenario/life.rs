@@ -30,6 +30,19 @@ pub(super) const THICKNESS: Field = field(
     "m",
     Bound::Range(1e-6, 1.0),
 );
+pub(super) const COMPRESSION: Field = field(
+    "seal.compression",
+    Dimension::DIMENSIONLESS,
+    "",
+    Bound::Open(0.0, 1.0),
+);
+/// A bolted flat gasket's installed compression ε0 when `compression` is not given: 10 % of
+/// its free thickness, **assumed** — the low end of the vendors' bands read (Elasto Proxy,
+/// "Enclosure gasket compression": "the ideal compression percentage is 40, the maximum is 50,
+/// and the minimum is between 10 to 15"; EMI Seals: "25% min – 50% max, … sweet spot being 35%
+/// compression"). The smallest ε0 is the conservative end: a given thermal contraction
+/// (α_r − α_h) ΔT takes the largest fraction of it (docs/model.md §6).
+pub const DEFAULT_FLAT_COMPRESSION: f64 = 0.10;
 pub(super) const WIDTH: Field = field(
     "seal.width",
     Dimension::LENGTH,
@@ -267,6 +280,23 @@ pub(super) struct SealSpec {
     pub thickness: Option<f64>,
 }
 
+impl SealSpec {
+    /// The thermal strain's reference temperature \[K\]: `installation_temperature` (a gland's
+    /// default 23 °C); otherwise T(0) for an O-ring between plates, and for a flat gasket the
+    /// hotter of 23 °C (bolted at room temperature) and T(0) (re-tightened hot) — the
+    /// conservative end: the compression falls from it at every colder temperature, and P0
+    /// stays the stress the run starts from in a hot service (docs/model.md §6).
+    pub fn thermal_reference(&self, environment: &TemperatureHistory) -> f64 {
+        match (self.installation_temperature, self.geometry) {
+            (Some(t), _) => t,
+            (None, SealGeometry::Flat { .. }) => environment
+                .at(0.0)
+                .max(super::gland::DEFAULT_INSTALLATION_TEMPERATURE),
+            (None, SealGeometry::ORing { .. }) => environment.at(0.0),
+        }
+    }
+}
+
 /// The housing's linear CTE α_h and the key that set it.
 pub(super) struct HousingExpansion {
     /// α_h \[1/K\].
@@ -285,13 +315,19 @@ pub(super) struct FailureContext {
     pub low_temperature_limit: Option<f64>,
     /// A `[motion]` seal: the cold limit's margin is the dynamic one.
     pub moving: bool,
-    /// An O-ring's thermal settling time d²/a \[s\], the shutdown check's cool-down
-    /// (docs/model.md §5.2, §8.2); 0 for a flat seal (the check does not apply).
+    /// The shutdown check's cool-down (docs/model.md §5.2, §8.2): an O-ring's thermal
+    /// settling time d²/a, a flat gasket's t_c²/a over its compressed thickness \[s\] (0, cooled
+    /// at once — the least relaxation — without `thickness`).
     pub cooling_time: f64,
+    /// Why the shutdown check does not apply to this seal (`None`: it does): its keys are
+    /// then refused rather than ignored.
+    pub no_shutdown: Option<&'static str>,
 }
 
 /// The keys of each seal kind (for the messages).
-const FLAT_KEYS: &str = "nominal_pressure, width, length, loading and thickness";
+const FLAT_KEYS: &str = "nominal_pressure, width, length, loading and thickness; under \
+                         displacement loading also compression, housing or housing_expansion, \
+                         and installation_temperature";
 const ORING_KEYS: &str = "cross_section, mean_diameter, squeeze, loading, housing or \
                           housing_expansion, installation_temperature, and gland with its ring \
                           and groove keys";
@@ -412,6 +448,11 @@ impl Source<'_> {
             return Ok(None);
         };
         let Some(rubber_expansion) = material.thermal_expansion else {
+            if housing.by_default && matches!(seal.geometry, SealGeometry::Flat { .. }) {
+                // a bolted gasket by default: refused later only where the temperature departs
+                // from the bolting's (Source::flat_without_expansion)
+                return Ok(None);
+            }
             let message = if housing.by_default {
                 format!(
                     "a groove-seated ring follows the temperature by default (housing \"steel\", \
@@ -432,12 +473,59 @@ impl Source<'_> {
         Ok(Some(ThermalStrain {
             rubber_expansion,
             housing_expansion: housing.value,
-            installation_temperature: seal
-                .installation_temperature
-                .unwrap_or_else(|| environment.at(0.0)),
+            installation_temperature: seal.thermal_reference(environment),
             glassy_expansion: material.glassy_thermal_expansion,
             glass_transition: material.glass_transition,
         }))
+    }
+
+    /// A bolted flat gasket (displacement loading) whose compound gives no `thermal_expansion`
+    /// runs without the thermal strain only where it would be zero: the whole temperature
+    /// history and the shutdown at the bolting temperature. Elsewhere it is refused, naming
+    /// the missing key — its compression changes with the temperature (docs/model.md §6), and a
+    /// run without that strain would be the silent, non-conservative answer of a cold restart.
+    pub(super) fn flat_without_expansion(
+        &self,
+        table: &Spanned<RawSeal>,
+        seal: &SealSpec,
+        material: &Material,
+        environment: &TemperatureHistory,
+        failure: &FailureCriteria,
+        fix: &str,
+    ) -> Result<(), ScenarioError> {
+        let (Some(housing), SealGeometry::Flat { .. }) = (&seal.housing_expansion, seal.geometry)
+        else {
+            return Ok(());
+        };
+        let installed = seal.thermal_reference(environment);
+        let (coldest, hottest) = environment.range();
+        let shutdown = failure.shutdown.map_or(installed, |s| s.temperature);
+        let departs = |t: f64| (t - installed).abs() > 1e-9;
+        let Some(t) = [coldest, hottest, shutdown]
+            .into_iter()
+            .find(|&t| departs(t))
+        else {
+            return Ok(());
+        };
+        let span = table
+            .get_ref()
+            .kind
+            .as_ref()
+            .map_or(table.span(), Spanned::span);
+        Err(self.error(
+            span,
+            housing.key,
+            format!(
+                "a flat gasket under displacement loading follows the temperature: its \
+                 compression changes from the bolting temperature ({} K) to {} K (docs/model.md \
+                 §6), which needs the rubber's expansion, but the material ({}) gives no \
+                 thermal_expansion; {fix}, or set loading = \"force\" if springs or bolts \
+                 keep the load",
+                show(installed),
+                show(t),
+                material.name
+            ),
+        ))
     }
 
     /// `[environment]` (absent: constant at the shift's reference temperature, or 23 °C).
@@ -574,6 +662,35 @@ impl Source<'_> {
         };
         let raw = table.get_ref();
         let reference = self.reference_state(raw, fluid)?;
+        let waived = |b: &Option<Spanned<bool>>| b.as_ref().is_some_and(|b| !*b.get_ref());
+        // a key of a check that does not run is an error, never ignored
+        for (q, key) in [
+            (&raw.shutdown_temperature, "failure.shutdown_temperature"),
+            (
+                &raw.minimum_pressure_difference,
+                MINIMUM_PRESSURE_DIFFERENCE.key,
+            ),
+        ] {
+            let Some(q) = q else { continue };
+            if let Some(reason) = context.no_shutdown {
+                return Err(self.error(
+                    q.span(),
+                    key,
+                    format!(
+                        "sets the shutdown check (docs/model.md §8.2), which does not apply here: \
+                         {reason}; remove it"
+                    ),
+                ));
+            }
+            if waived(&raw.lost_interference) {
+                return Err(self.error(
+                    q.span(),
+                    key,
+                    "sets the shutdown check that lost_interference = false waives: remove one \
+                     of the two",
+                ));
+            }
+        }
         let shutdown_temperature = match &raw.shutdown_temperature {
             None => default_shutdown.temperature,
             Some(q) => {
@@ -622,7 +739,6 @@ impl Source<'_> {
                 ),
             ));
         }
-        let waived = |b: &Option<Spanned<bool>>| b.as_ref().is_some_and(|b| !*b.get_ref());
         let margin = self
             .optional(raw.low_temperature_margin.as_ref(), &LOW_TEMPERATURE_MARGIN)?
             .unwrap_or(default_margin);
@@ -1151,7 +1267,12 @@ impl SealTable<'_, '_> {
         Ok(())
     }
 
-    /// A flat seal: `nominal_pressure`, `width`, `length`, optional `thickness`.
+    /// A flat seal: `nominal_pressure`, `width`, `length`, optional `thickness`. Under
+    /// displacement loading (a bolted gasket) its compression follows the temperature
+    /// (docs/model.md §6): `compression` (default [`DEFAULT_FLAT_COMPRESSION`]), the flanges'
+    /// `housing` or `housing_expansion` (default steel) and `installation_temperature` (the
+    /// bolting's, default 23 °C). Under force loading those keys would change nothing (the
+    /// bolts or springs hold the load) and are refused.
     fn flat(&self, loading: Loading) -> Result<SealSpec, ScenarioError> {
         let raw = self.raw;
         self.foreign(
@@ -1159,26 +1280,74 @@ impl SealTable<'_, '_> {
                 (&raw.cross_section, "cross_section"),
                 (&raw.mean_diameter, "mean_diameter"),
                 (&raw.squeeze, "squeeze"),
-                (&raw.housing_expansion, "housing_expansion"),
-                (&raw.installation_temperature, "installation_temperature"),
             ],
             FLAT_KEYS,
         )?;
-        for (key, span) in [
-            ("gland", raw.gland.as_ref().map(Spanned::span)),
-            ("housing", raw.housing.as_ref().map(Spanned::span)),
-        ]
-        .into_iter()
-        .chain(super::gland::gland_only_keys(raw))
-        {
+        if let Some(span) = raw.gland.as_ref().map(Spanned::span) {
+            return Err(self.source.error(
+                span,
+                "seal.gland",
+                "applies to an O-ring seated in a groove, not a flat gasket (kind = \"flat\", \
+                 the default): set kind = \"o-ring\" for a groove-seated ring, or remove gland",
+            ));
+        }
+        for (key, span) in super::gland::gland_only_keys(raw) {
             if let Some(span) = span {
                 return Err(self.source.error(
                     span,
                     &format!("seal.{key}"),
-                    format!("not a key of {}, which takes {FLAT_KEYS}", self.a_seal),
+                    format!(
+                        "applies to an O-ring gland, not a flat gasket (kind = \"flat\", the \
+                         default), which takes {FLAT_KEYS}"
+                    ),
                 ));
             }
         }
+        if loading == Loading::Force {
+            let q = |q: &Option<Quantity>| q.as_ref().map(Spanned::span);
+            for (key, span) in [
+                ("compression", q(&raw.compression)),
+                ("housing", raw.housing.as_ref().map(Spanned::span)),
+                ("housing_expansion", q(&raw.housing_expansion)),
+                ("installation_temperature", q(&raw.installation_temperature)),
+            ] {
+                if let Some(span) = span {
+                    return Err(self.source.error(
+                        span,
+                        &format!("seal.{key}"),
+                        "applies to the thermal strain of a gasket held at a fixed compression \
+                         (loading = \"displacement\"); under loading = \"force\" the bolts or \
+                         springs keep the load whatever the temperature, so it would change \
+                         nothing: remove it, or set loading = \"displacement\"",
+                    ));
+                }
+            }
+        }
+        let displaced = loading == Loading::Displacement;
+        let housing_expansion = if displaced {
+            Some(
+                self.source
+                    .housing_expansion(raw)?
+                    .unwrap_or(HousingExpansion {
+                        value: Housing::Steel.expansion(),
+                        span: raw.kind.as_ref().map_or(self.table.span(), Spanned::span),
+                        key: "seal.kind",
+                        by_default: true,
+                    }),
+            )
+        } else {
+            None
+        };
+        let installation_temperature = match &raw.installation_temperature {
+            Some(q) => Some(
+                self.source
+                    .absolute_temperature(q, "seal.installation_temperature")?,
+            ),
+            // by default the hotter of 23 °C and T(0), set once the environment is known
+            // (SealSpec::thermal_reference)
+            None => None,
+        };
+        let thickness = self.source.optional(raw.thickness.as_ref(), &THICKNESS)?;
         Ok(SealSpec {
             geometry: SealGeometry::Flat {
                 nominal_pressure: self.required(
@@ -1188,16 +1357,23 @@ impl SealTable<'_, '_> {
                 )?,
                 width: self.required(&raw.width, &WIDTH, FLAT_KEYS)?,
                 length: self.required(&raw.length, &LENGTH, FLAT_KEYS)?,
+                compression: self
+                    .source
+                    .optional(raw.compression.as_ref(), &COMPRESSION)?
+                    .unwrap_or(DEFAULT_FLAT_COMPRESSION),
+                thickness,
             },
             gland: None,
             energisation_factor: 0.0,
             loading,
-            housing_expansion: None,
-            installation_temperature: None,
+            housing_expansion,
+            installation_temperature,
+            // the bolting temperature is the thermal strain's reference only: the installation
+            // ramp runs at T(0), as before
             fitting_temperature: None,
             design: None,
             warnings: Vec::new(),
-            thickness: self.source.optional(raw.thickness.as_ref(), &THICKNESS)?,
+            thickness,
         })
     }
 
@@ -1214,6 +1390,7 @@ impl SealTable<'_, '_> {
                 (&raw.width, "width"),
                 (&raw.length, "length"),
                 (&raw.thickness, "thickness"),
+                (&raw.compression, "compression"),
             ],
             ORING_KEYS,
         )?;
@@ -1407,7 +1584,9 @@ squeeze = 0.2
             SealGeometry::Flat {
                 nominal_pressure: 1e6,
                 width: 2e-3,
-                length: 0.1
+                length: 0.1,
+                compression: DEFAULT_FLAT_COMPRESSION,
+                thickness: None,
             }
         );
         assert_eq!(s.life.loading, Loading::Force);

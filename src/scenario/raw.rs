@@ -306,6 +306,8 @@ pub(super) struct RawSeal {
     pub length: Option<Quantity>,
     /// A flat gasket's compressed thickness: the exposed edge gas permeates through.
     pub thickness: Option<Quantity>,
+    /// A bolted flat gasket's installed compression of its free thickness (docs/model.md §6).
+    pub compression: Option<Quantity>,
     pub cross_section: Option<Quantity>,
     pub mean_diameter: Option<Quantity>,
     pub squeeze: Option<Quantity>,

@@ -430,8 +430,22 @@ impl Source<'_> {
             replacement.is_some(),
             &fluid,
             &environment,
-            &seal.geometry,
+            &seal,
         )?;
+        if thermal_strain.is_none() {
+            self.flat_without_expansion(
+                &raw.seal,
+                &seal,
+                &material,
+                &environment,
+                &service.failure,
+                &self.material_key_fix(
+                    raw.material.get_ref(),
+                    replacement.is_some(),
+                    "thermal_expansion",
+                ),
+            )?;
+        }
         let (permeation, permeation_note) =
             self.permeation(raw, &material, &fluid, &seal, replacement.is_some())?;
         let life = LifeProblem {
@@ -641,8 +655,9 @@ impl Source<'_> {
         replaced: bool,
         fluid: &Fluid,
         environment: &crate::material::TemperatureHistory,
-        geometry: &SealGeometry,
+        seal: &super::life::SealSpec,
     ) -> Result<Service, ScenarioError> {
+        let (geometry, loading) = (&seal.geometry, seal.loading);
         let (ageing, ageing_source) =
             self.scenario_ageing(raw.ageing.as_ref(), material, replaced)?;
         let motion = self.motion(raw.motion.as_ref())?;
@@ -657,8 +672,17 @@ impl Source<'_> {
                     SealGeometry::ORing { cross_section, .. } => {
                         thermal_settling_time(*cross_section)
                     }
-                    SealGeometry::Flat { .. } => 0.0,
+                    // through its compressed thickness; unknown: cooled at once, the least
+                    // relaxation on the way (docs/model.md §8.2)
+                    SealGeometry::Flat { thickness, .. } => {
+                        thickness.map_or(0.0, thermal_settling_time)
+                    }
                 },
+                no_shutdown: (loading == crate::simulate::Loading::Force).then_some(
+                    "under loading = \"force\" the bolts or springs keep the seal's load at rest \
+                     too; the check is of a seal held at a fixed compression (loading = \
+                     \"displacement\")",
+                ),
             },
         )?;
         let (time, fidelity) = self.simulation(raw.simulation.as_ref())?;
@@ -2508,12 +2532,18 @@ fn settling_environment(
 /// integrates the whole profile as strips in series).
 fn static_seal(life: &LifeProblem) -> FlatSeal {
     match life.geometry {
+        // at the installation's temperature T(0): the bolted stress with its thermal strain
+        // there, as the first state of a life run (exactly P0 without thermal strain)
         SealGeometry::Flat {
             nominal_pressure,
             width,
             length,
+            ..
         } => FlatSeal {
-            nominal_pressure,
+            nominal_pressure: nominal_pressure
+                * life
+                    .geometry
+                    .load_variable(life.thermal_strain.as_ref(), life.installed_temperature()),
             width,
             length,
         },

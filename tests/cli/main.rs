@@ -20,6 +20,7 @@ mod contact_area;
 mod engineering_units;
 mod figures;
 mod fit;
+mod flat_cold;
 mod fuzz;
 mod gas;
 mod generate;

@@ -128,6 +128,8 @@ fn one_term_flat(shift: Shift, temperature: f64) -> (LifeProblem, f64) {
         nominal_pressure: 1e6,
         width: 1e-3,
         length: 0.1,
+        compression: 0.25,
+        thickness: None,
     };
     p.environment = TemperatureHistory::constant(temperature);
     p.failure = FailureCriteria {

@@ -20,6 +20,7 @@ mod datasheet;
 mod dynamic;
 mod effective_medium;
 mod fit;
+mod flat_cold;
 mod flow;
 mod fluid;
 mod gas;

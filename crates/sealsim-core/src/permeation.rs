@@ -920,6 +920,8 @@ mod tests {
             nominal_pressure: 1e6,
             width: 1e-3,
             length: 0.1,
+            compression: 0.25,
+            thickness: None,
         };
         let of = |family: &str, gas: &str| figure(Some(family), &[], gas).unwrap();
         // helium in NBR: D (a bound) known, no note; 0 at installation

@@ -72,11 +72,19 @@ pub fn oring_contact_width(cross_section: f64, eps: f64) -> f64 {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum SealGeometry {
     /// Uniform nominal pressure `nominal_pressure` right after installation over
-    /// `width` (L_x, along the flow) × `length` (L_y, across it).
+    /// `width` (L_x, along the flow) × `length` (L_y, across it). Under displacement loading
+    /// (a bolted gasket) the flanges hold its thickness at `1 − compression` of the free one,
+    /// and the thermal strain changes that compression ([`SealGeometry::squeeze_at`]).
     Flat {
         nominal_pressure: f64,
         width: f64,
         length: f64,
+        /// ε0, the installed compression of the free thickness, (t_free − t_c)/t_free, at the
+        /// installation temperature (docs/model.md §6, "Thermal strain of a flat gasket").
+        compression: f64,
+        /// t_c, the compressed thickness \[m\] (`None`: not given; the shutdown check then
+        /// tests the compression without the interference in metres, §8.2).
+        thickness: Option<f64>,
     },
     /// O-ring: cord diameter d, mean diameter D (sealing length π D), squeeze ε0 at installation.
     ORing {
@@ -95,12 +103,14 @@ impl SealGeometry {
         }
     }
 
-    /// The squeeze at temperature `t` \[K\] with the thermal strain `thermal` (O-rings; 0 for a
-    /// flat seal). With gland depth h and cord d, ε = 1 − h/d; heating by ΔT expands the housing
-    /// with α_h and the cord by its free strain e_r(T) ([`ThermalStrain::rubber_strain`]: α_r ΔT
-    /// above T_g), so
+    /// The squeeze at temperature `t` \[K\] with the thermal strain `thermal`. With gland depth
+    /// h and cord d, ε = 1 − h/d; heating by ΔT expands the housing with α_h and the cord by its
+    /// free strain e_r(T) ([`ThermalStrain::rubber_strain`]: α_r ΔT above T_g), so
     /// `ε(T) = 1 − (1 − ε0)(1 + α_h ΔT)/(1 + e_r(T)) ≈ ε0 + (1 − ε0)(α_r − α_h) ΔT`
-    /// (docs/model.md §6): the compression is referred to the current cord.
+    /// (docs/model.md §6): the compression is referred to the current cord. A flat gasket's
+    /// compression follows the same relation with its free thickness for d and the flange gap
+    /// for h, written `ε0 + (1 − ε0)(e_r(T) − α_h ΔT)/(1 + e_r(T))` (the same number, exactly
+    /// ε0 at ΔT = 0); without thermal strain it stays ε0.
     pub fn squeeze_at(&self, thermal: Option<&ThermalStrain>, t: f64) -> f64 {
         match *self {
             SealGeometry::ORing { squeeze, .. } => match thermal {
@@ -111,26 +121,49 @@ impl SealGeometry {
                 }
                 None => squeeze,
             },
-            SealGeometry::Flat { .. } => 0.0,
+            SealGeometry::Flat { compression, .. } => match thermal {
+                Some(th) => {
+                    let dt = t - th.installation_temperature;
+                    let free = th.rubber_strain(t);
+                    compression
+                        + (1.0 - compression) * (free - th.housing_expansion * dt) / (1.0 + free)
+                }
+                None => compression,
+            },
+        }
+    }
+
+    /// A flat gasket's compression at `t` \[K\] over its installed one, ε(T)/ε0, no less than 0
+    /// (a gasket the flanges no longer touch carries no load): 1 at the installation
+    /// temperature and without thermal strain.
+    fn flat_load(&self, thermal: Option<&ThermalStrain>, t: f64) -> f64 {
+        match *self {
+            SealGeometry::Flat { compression, .. } => {
+                self.squeeze_at(thermal, t).max(0.0) / compression
+            }
+            SealGeometry::ORing { .. } => 1.0,
         }
     }
 
     /// The material strain at temperature `t` \[K\] that the chemical networks are stepped with
     /// (docs/model.md §6.5): the squeeze ε for an O-ring (its displacement field superposes
-    /// linearly), 1 for a flat seal (its unit load).
+    /// linearly), for a flat seal its compression over the installed one, ε(T)/ε0 (its unit
+    /// load at the installation temperature; 1 without thermal strain).
     pub fn deformation(&self, thermal: Option<&ThermalStrain>, t: f64) -> f64 {
         match self {
             SealGeometry::ORing { .. } => self.squeeze_at(thermal, t),
-            SealGeometry::Flat { .. } => 1.0,
+            SealGeometry::Flat { .. } => self.flat_load(thermal, t),
         }
     }
 
     /// The variable the Prony recursion runs on at temperature `t` \[K\]: Lindley's g(ε) for an
-    /// O-ring, 1 for a flat seal.
+    /// O-ring; for a flat seal, linear in its compression, ε(T)/ε0 (1 at the installation
+    /// temperature and without thermal strain), so that its pressure is
+    /// `P0 σ/E_install` with σ the hereditary stress on it (docs/model.md §6).
     pub fn load_variable(&self, thermal: Option<&ThermalStrain>, t: f64) -> f64 {
         match self {
             SealGeometry::ORing { .. } => squeeze_function(self.squeeze_at(thermal, t)),
-            SealGeometry::Flat { .. } => 1.0,
+            SealGeometry::Flat { .. } => self.flat_load(thermal, t),
         }
     }
 
@@ -151,7 +184,8 @@ impl SealGeometry {
                 width,
                 ..
             } => Profile::Uniform {
-                pressure: nominal_pressure * stress / instantaneous_modulus,
+                // a gasket the cold has pulled off its flanges presses with nothing, not a tension
+                pressure: (nominal_pressure * stress / instantaneous_modulus).max(0.0),
                 width,
             },
             SealGeometry::ORing { cross_section, .. } => {
@@ -604,6 +638,8 @@ mod tests {
             nominal_pressure: 1e6,
             width: 1e-3,
             length: 0.1,
+            compression: 0.25,
+            thickness: None,
         };
         assert_eq!(s.geometry(flat), flat);
     }

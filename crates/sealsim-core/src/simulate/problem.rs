@@ -259,12 +259,10 @@ impl LifeProblem {
                 .is_some_and(|c| self.environment.range().0 < c.threshold())
     }
 
-    /// Whether the shutdown check applies (docs/model.md §8.2): an O-ring under displacement
-    /// loading, unless `[failure] lost_interference = false` waived it.
+    /// Whether the shutdown check applies (docs/model.md §8.2): an O-ring or a flat gasket
+    /// under displacement loading, unless `[failure] lost_interference = false` waived it.
     pub fn has_shutdown_check(&self) -> bool {
-        self.failure.shutdown.is_some()
-            && matches!(self.geometry, SealGeometry::ORing { .. })
-            && self.loading == Loading::Displacement
+        self.failure.shutdown.is_some() && self.loading == Loading::Displacement
     }
 
     /// The extrusion check of a groove-seated ring at `temperature` \[K\] (docs/model.md §6.3):
