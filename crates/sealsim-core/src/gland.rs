@@ -913,6 +913,121 @@ mod tests {
     }
 
     #[test]
+    fn fit_measures_are_the_handbook_closed_forms() {
+        let (id, d) = (24.99e-3, 3.53e-3);
+        let od = id + 2.0 * d;
+        // piston: stretch onto G = B − 2h; a ring larger than G is compressed (ID − G)/ID
+        let f = design(Locator::Bore(31.06e-3), 2.8e-3).fit();
+        assert_eq!(f.measure, Some(SeatMeasure::Stretch((25.46e-3 - id) / id)));
+        assert_eq!(f.compression, 0.0);
+        let f = design(Locator::Bore(25.4e-3), 2.9e-3).fit();
+        assert!((f.compression - (id - 19.6e-3) / id).abs() < 1e-12);
+        // rod held by its OD (ID ≥ rod): OD compression into R + 2h
+        let f = design(Locator::Rod(24.99e-3), 3.0e-3).fit();
+        let c = (od - 30.99e-3) / od;
+        assert_eq!(f.measure, Some(SeatMeasure::OdCompression(c)));
+        assert!((f.compression - c).abs() < 1e-15);
+        // rod stretched onto the rod: its OD is squeezed, not compressed
+        assert_eq!(design(Locator::Rod(26e-3), 2.8e-3).fit().compression, 0.0);
+        // face: OD into the outer wall, ID onto the inner wall; a free ring has no measure
+        let f = design(Locator::GrooveOuter(31e-3), 2.8e-3).fit();
+        assert!((f.compression - (od - 31e-3) / od).abs() < 1e-15);
+        let f = design(Locator::GrooveInner(24e-3), 2.8e-3).fit();
+        assert!((f.compression - (id - 24e-3) / id).abs() < 1e-15);
+        assert_eq!(design(Locator::Free, 2.8e-3).fit().measure, None);
+    }
+
+    #[test]
+    fn compression_is_warned_past_3_percent_and_refused_at_10() {
+        let od = 24.99e-3 + 2.0 * 3.53e-3;
+        let at = |c: f64| design(Locator::GrooveOuter(od * (1.0 - c)), 2.8e-3);
+        let compression = |l: &[Limit]| l.iter().any(|l| matches!(l, Limit::Compression { .. }));
+        assert!(!compression(&at(0.029).feasibility(false).unwrap()));
+        assert!(compression(&at(0.031).feasibility(false).unwrap()));
+        assert!(compression(&at(0.099).feasibility(false).unwrap()));
+        assert!(matches!(
+            at(0.101).feasibility(false),
+            Err(GlandError::Overcompressed { outer: true, .. })
+        ));
+        // the review's -214 in a 25.4 mm bore: refused at the ID, 21.6 %
+        let Err(GlandError::Overcompressed {
+            compression,
+            outer: false,
+            ..
+        }) = design(Locator::Bore(25.4e-3), 2.9e-3).feasibility(false)
+        else {
+            panic!("not refused")
+        };
+        assert!((compression - (24.99 - 19.6) / 24.99).abs() < 1e-12);
+    }
+
+    #[test]
+    fn fill_at_maximum_material_is_refused_at_100_percent() {
+        // free ring, nominal fill π d²/4/(h w) = 0.96; the corners raise d and lower h
+        let (d, h, dt, ht) = (3.53e-3, 2.65e-3, 0.1e-3, 0.05e-3);
+        let mut g = design(Locator::Free, h);
+        g.groove_width = PI * d * d / 4.0 / (h * 0.96);
+        g.ring.cross_section_tolerance = dt;
+        g.gland_depth_tolerance = ht;
+        let mmc = PI * (d + dt) * (d + dt) / 4.0 / ((h - ht) * g.groove_width);
+        assert!(mmc > 1.0);
+        let Err(GlandError::OverfilledAtMaximumMaterial { fill, nominal }) = g.feasibility(false)
+        else {
+            panic!("not refused")
+        };
+        assert!((fill - mmc).abs() < 1e-12 && (nominal - 0.96).abs() < 1e-12);
+        // just inside: the width that gives 99.9 % at maximum material passes
+        g.groove_width *= mmc / 0.999;
+        assert!(g.feasibility(false).is_ok());
+    }
+
+    #[test]
+    fn the_squeeze_range_is_static_or_dynamic() {
+        // free ring without tolerances: ε = 1 − h/d at every corner
+        let d = 3.53e-3;
+        let squeeze = |eps: f64, dynamic: bool| {
+            design(Locator::Free, d * (1.0 - eps))
+                .feasibility(dynamic)
+                .unwrap()
+                .iter()
+                .any(|l| matches!(l, Limit::Squeeze { .. }))
+        };
+        for (eps, dynamic, warned) in [
+            (0.101, false, false),
+            (0.099, false, true),
+            (0.299, false, false),
+            (0.301, false, true),
+            (0.159, true, false),
+            (0.161, true, true),
+            (0.101, true, false),
+            (0.099, true, true),
+        ] {
+            assert_eq!(squeeze(eps, dynamic), warned, "{eps} {dynamic}");
+        }
+    }
+
+    #[test]
+    fn a_face_ring_must_bear_on_the_wall_its_pressure_pushes_it_onto() {
+        let outer = design(Locator::GrooveOuter(32.1e-3), 2.8e-3);
+        let inner = design(Locator::GrooveInner(25.2e-3), 2.8e-3);
+        assert!(outer.check_side(PressureSide::Inside).is_ok());
+        assert!(inner.check_side(PressureSide::Outside).is_ok());
+        assert_eq!(
+            outer.check_side(PressureSide::Outside),
+            Err(GlandError::WrongWall {
+                side: PressureSide::Outside
+            })
+        );
+        assert!(inner.check_side(PressureSide::Inside).is_err());
+        // no wall, no check
+        assert!(
+            design(Locator::Free, 2.8e-3)
+                .check_side(PressureSide::Outside)
+                .is_ok()
+        );
+    }
+
+    #[test]
     fn housings_have_names_and_values() {
         for h in Housing::ALL {
             assert_eq!(Housing::from_name(h.name()), Some(h));
