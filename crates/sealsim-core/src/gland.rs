@@ -118,7 +118,8 @@ pub const MAX_STRETCH: f64 = 0.5;
 /// "Rod seals are normally compressed or have line-to-line fit on the outside diameter without
 /// any stretch" (Marco Rubber, <http://www.marcorubber.com/static_face_seal_dovetail.htm>).
 /// Applied to every seat: a piston ring whose ID is larger than its groove diameter is
-/// compressed the same way (Apple Rubber, "Dimensional considerations": the ID "must be smaller
+/// compressed the same way (Apple Rubber, "Dimensional considerations",
+/// <http://www.applerubber.com/seal-design-guide/oring-basics/dimensional-considerations.cfm>: the ID "must be smaller
 /// than the piston groove diameter, so that the O-ring is slightly stretched").
 pub const MAX_COMPRESSION_GUIDANCE: f64 = 0.03;
 
