@@ -262,24 +262,24 @@ impl Source<'_> {
                 );
             }
         }
-        if vacuum && raw.pressure_side.is_none() {
-            if let (Locator::GrooveOuter(_), Some(q)) =
+        if vacuum
+            && raw.pressure_side.is_none()
+            && let (Locator::GrooveOuter(_), Some(q)) =
                 (design.locator, raw.groove_outer_diameter.as_ref())
-            {
-                warnings.push(
-                    self.error(
-                        q.span(),
-                        GROOVE_OUTER_DIAMETER.key,
-                        "the ring bears on the groove's outer wall (pressure inside), but the \
-                         gas's outlet is below 1 atm: a vacuum flange has its vacuum inside \
-                         the ring and the pressure outside, which pushes the ring onto the \
-                         inner wall, off this seat — give groove_inner_diameter (the ring's ID \
-                         on the inner wall), or pressure_side = \"inside\" if the pressure \
-                         really is inside [docs/model.md §6.2]",
-                    )
-                    .to_string(),
-                );
-            }
+        {
+            warnings.push(
+                self.error(
+                    q.span(),
+                    GROOVE_OUTER_DIAMETER.key,
+                    "the ring bears on the groove's outer wall (pressure inside), but the \
+                     gas's outlet is below 1 atm: a vacuum flange has its vacuum inside \
+                     the ring and the pressure outside, which pushes the ring onto the \
+                     inner wall, off this seat — give groove_inner_diameter (the ring's ID \
+                     on the inner wall), or pressure_side = \"inside\" if the pressure \
+                     really is inside [docs/model.md §6.2]",
+                )
+                .to_string(),
+            );
         }
         warnings
     }

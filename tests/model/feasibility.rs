@@ -71,7 +71,10 @@ diametral_clearance = "0.05 mm"
         Err(ScenarioError::Invalid {
             line, key, message, ..
         }) => {
-            assert_eq!((line, key.as_deref()), (Some(16), Some("seal.bore_diameter")));
+            assert_eq!(
+                (line, key.as_deref()),
+                (Some(16), Some("seal.bore_diameter"))
+            );
             assert!(
                 message.contains("circumferential compression 21.6 %")
                     && message.contains("AS568-210 (ID 18.64 mm, OD 25.7 mm: stretch 5.1 %)"),
