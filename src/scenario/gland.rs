@@ -9,12 +9,18 @@
 //!   or `extrusion_gap` (face: the flange separation, default 0);
 //! * the diameter that fixes the stretch: `bore_diameter` (piston, required), `rod_diameter`
 //!   (rod, required), `groove_outer_diameter` or `groove_inner_diameter` (face, optional);
+//! * a face gland's `pressure_side` (`"inside"` | `"outside"`): the wall the ring must bear on;
 //! * `energisation_factor` (0–1.5, default 1);
 //! * the thermal strain: `housing` XOR `housing_expansion` (default `housing = "steel"`),
 //!   `installation_temperature` (default 23 °C).
 //!
 //! `mean_diameter` (a ring between plates) is refused: the installed mean diameter follows from
 //! the ring and its seat.
+//!
+//! A ring that cannot be assembled is refused with the reason and the nearest AS568 sizes of
+//! the same cross-section that fit the given diameter (and the diameter that fits the given
+//! ring); the handbook limits warn (the model's decisions in `crate::gland`, docs/model.md
+//! §6.2).
 
 use super::as568;
 use super::error::{ScenarioError, Source};
@@ -25,8 +31,9 @@ use super::raw::{Quantity, RawSeal};
 use super::life::{CROSS_SECTION, SQUEEZE};
 use super::validate::{Bound, Field, field};
 use crate::gland::{
-    GlandDesign, GlandError, GlandKind, Installed, Locator, MAX_FILL_GUIDANCE,
-    MAX_STRETCH_GUIDANCE, MIN_FILL_GUIDANCE, NOMINAL_FILL_GUIDANCE, Ring,
+    GlandDesign, GlandError, GlandKind, Installed, Limit, Locator, MAX_COMPRESSION_GUIDANCE,
+    MAX_FILL_GUIDANCE, MAX_STRETCH_GUIDANCE, MIN_FILL_GUIDANCE, NOMINAL_FILL_GUIDANCE,
+    PressureSide, Ring, SeatMeasure,
 };
 use crate::seal::{SealGeometry, VolumeSwell};
 use crate::simulate::Loading;
@@ -80,6 +87,10 @@ pub(super) fn gland_only_keys(raw: &RawSeal) -> Vec<(&'static str, Option<Range<
         ("rod_diameter", q(&raw.rod_diameter)),
         ("groove_outer_diameter", q(&raw.groove_outer_diameter)),
         ("groove_inner_diameter", q(&raw.groove_inner_diameter)),
+        (
+            "pressure_side",
+            raw.pressure_side.as_ref().map(Spanned::span),
+        ),
         ("energisation_factor", q(&raw.energisation_factor)),
         ("backup_rings", raw.backup_rings.as_ref().map(Spanned::span)),
     ]
@@ -122,8 +133,9 @@ impl Source<'_> {
             a_gland: format!("a {} gland", kind.name()),
         };
         gland.refuse_mean_diameter()?;
-        let ring = gland.ring()?;
+        let (ring, size) = gland.ring()?;
         let seat = gland.seat()?;
+        let side = gland.pressure_side()?;
         let groove_width = gland.groove_width()?;
         let mut design = GlandDesign {
             kind,
@@ -136,13 +148,13 @@ impl Source<'_> {
         };
         let depth = gland.gland_depth(&mut design, seat.key)?;
         let swollen = swell_ring(&mut design, swell);
-        let installed = design.installed().map_err(|e| {
-            with_swell(
-                self.gland_error(&e, depth.span.clone(), depth.key, table, seat.key),
-                &swollen,
-            )
-        })?;
-        let warnings = gland.warnings(&design, &installed, &depth, seat.key, &swollen)?;
+        let dry = Dry { ring, size };
+        let installed = design
+            .installed()
+            .map_err(|e| gland.refusal(&e, &design, &dry, &depth, seat.key, &swollen))?;
+        let limits = gland.feasibility(&design, &dry, side, &depth, seat.key, &swollen)?;
+        let mut warnings = gland.warnings(&design, &installed, &depth, seat.key, &swollen)?;
+        warnings.extend(gland.limit_warnings(&design, &dry, &limits, seat.key));
 
         let energisation_factor = self
             .optional(raw.energisation_factor.as_ref(), &ENERGISATION_FACTOR)?
@@ -181,6 +193,97 @@ impl Source<'_> {
         })
     }
 
+    /// The gland's warnings that depend on the service (docs/model.md §6.2): the squeeze over
+    /// the tolerances outside the static or, `dynamic` (a `[motion]` seal), the dynamic
+    /// range; and a face ring on the outer wall of a `vacuum` service (a gas whose outlet is
+    /// below 1 atm) without `pressure_side` — a vacuum flange usually has its vacuum inside
+    /// the ring, where the ring must bear on the inner wall.
+    pub(super) fn gland_service_warnings(
+        &self,
+        table: &Spanned<RawSeal>,
+        design: Option<&GlandDesign>,
+        dynamic: bool,
+        vacuum: bool,
+    ) -> Vec<String> {
+        let Some(design) = design else {
+            return Vec::new();
+        };
+        let raw = table.get_ref();
+        let mut warnings = Vec::new();
+        let nominal = design.installed().map(|i| i.squeeze);
+        if let (Ok(limits), Ok(nominal)) = (design.feasibility(dynamic), nominal) {
+            for l in limits {
+                let Limit::Squeeze {
+                    min,
+                    max,
+                    range,
+                    dynamic,
+                } = l
+                else {
+                    continue;
+                };
+                let (span, key) = match (&raw.groove_depth, &raw.squeeze) {
+                    (Some(q), _) => (q.span(), GROOVE_DEPTH.key),
+                    (None, Some(q)) => (q.span(), SQUEEZE.key),
+                    (None, None) => (table.span(), GROOVE_DEPTH.key),
+                };
+                let why = if min < range.0 {
+                    "below it the seal may leak at low pressure (O-Ring Supply Co.: \"under-compression \
+                     below 10% risks low-pressure leakage\")"
+                } else if dynamic {
+                    "above the manufacturers' 16 % maximum for dynamic seals (Kutz, Mechanical \
+                     Engineers' Handbook vol. 3, p. 290, citing Parker): friction, wear and \
+                     compression set"
+                } else {
+                    "above the manufacturers' 30 % maximum for static seals (Kutz, Mechanical \
+                     Engineers' Handbook vol. 3, p. 290, citing Parker): compression set, and \
+                     little room for swell"
+                };
+                warnings.push(
+                    self.error(
+                        span,
+                        key,
+                        format!(
+                            "squeeze {}–{} % over the tolerances (nominal {} %), outside the \
+                             {}–{} % of a {} gland: {why} [docs/model.md §6.2]",
+                            percent(min),
+                            percent(max),
+                            percent(nominal),
+                            show(100.0 * range.0),
+                            show(100.0 * range.1),
+                            if dynamic {
+                                "dynamic ([motion])"
+                            } else {
+                                "static"
+                            }
+                        ),
+                    )
+                    .to_string(),
+                );
+            }
+        }
+        if vacuum
+            && raw.pressure_side.is_none()
+            && let (Locator::GrooveOuter(_), Some(q)) =
+                (design.locator, raw.groove_outer_diameter.as_ref())
+        {
+            warnings.push(
+                self.error(
+                    q.span(),
+                    GROOVE_OUTER_DIAMETER.key,
+                    "the ring bears on the groove's outer wall (pressure inside), but the \
+                     gas's outlet is below 1 atm: a vacuum flange has its vacuum inside \
+                     the ring and the pressure outside, which pushes the ring onto the \
+                     inner wall, off this seat — give groove_inner_diameter (the ring's ID \
+                     on the inner wall), or pressure_side = \"inside\" if the pressure \
+                     really is inside [docs/model.md §6.2]",
+                )
+                .to_string(),
+            );
+        }
+        warnings
+    }
+
     /// A [`GlandError`] at the key it belongs to: the depth (or squeeze) for a cord that is not
     /// squeezed or a groove bottom that does not exist, the width for an overfilled groove, the
     /// seat's diameter for a ring that cannot be seated.
@@ -214,7 +317,17 @@ impl Source<'_> {
                 GROOVE_WIDTH.key,
                 e.to_string(),
             ),
-            GlandError::CannotSeat { .. } | GlandError::Overstretched { .. } => {
+            GlandError::OverfilledAtMaximumMaterial { .. } => self.error(
+                raw.groove_width
+                    .as_ref()
+                    .map_or(table.span(), Spanned::span),
+                GROOVE_WIDTH.key,
+                e.to_string(),
+            ),
+            GlandError::CannotSeat { .. }
+            | GlandError::Overstretched { .. }
+            | GlandError::Overcompressed { .. }
+            | GlandError::WrongWall { .. } => {
                 self.error(span_of(locator_key), locator_key, e.to_string())
             }
         }
@@ -288,7 +401,345 @@ fn with_swell(e: ScenarioError, swollen: &str) -> ScenarioError {
     }
 }
 
+/// The ring as given (before any swell): its dimensions and, if named, its AS568 size — what
+/// the nearest valid sizes are looked up from.
+struct Dry {
+    ring: Ring,
+    size: Option<as568::Size>,
+}
+
+/// A length in mm to 0.01 mm.
+fn mm(x: f64) -> String {
+    show((x * 1e5).round() / 100.0)
+}
+
+/// A seat measure in words: "stretch 2.1 %" or "OD compression 1.2 %".
+fn measure_words(m: SeatMeasure) -> String {
+    match m {
+        SeatMeasure::Stretch(v) => format!("stretch {} %", percent(v)),
+        SeatMeasure::OdCompression(v) => format!("OD compression {} %", percent(v)),
+    }
+}
+
 impl GlandTable<'_, '_> {
+    /// The span of the seat's key (`bore_diameter`, …), or the table's.
+    fn locator_span(&self, locator_key: &str) -> Range<usize> {
+        let raw = self.raw;
+        match locator_key {
+            "seal.groove_outer_diameter" => raw.groove_outer_diameter.as_ref(),
+            "seal.groove_inner_diameter" => raw.groove_inner_diameter.as_ref(),
+            "seal.bore_diameter" => raw.bore_diameter.as_ref(),
+            "seal.rod_diameter" => raw.rod_diameter.as_ref(),
+            _ => None,
+        }
+        .map_or(self.table.span(), Spanned::span)
+    }
+
+    /// `pressure_side` (face glands only): `"inside"` or `"outside"`.
+    fn pressure_side(&self) -> Result<Option<PressureSide>, ScenarioError> {
+        let Some(p) = &self.raw.pressure_side else {
+            return Ok(None);
+        };
+        if self.kind != GlandKind::Face {
+            return Err(self.source.error(
+                p.span(),
+                "seal.pressure_side",
+                format!(
+                    "not a key of {}: a radial ring is held by its groove whichever side the \
+                     pressure is on (it decides only which wall a face ring must bear on); \
+                     remove it",
+                    self.a_gland
+                ),
+            ));
+        }
+        match p.get_ref().as_str() {
+            "inside" => Ok(Some(PressureSide::Inside)),
+            "outside" => Ok(Some(PressureSide::Outside)),
+            other => Err(self.source.error(
+                p.span(),
+                "seal.pressure_side",
+                format!(
+                    "must be \"inside\" (the pressure inside the ring: its OD bears on the \
+                     groove's outer wall, groove_outer_diameter) or \"outside\" (a vacuum \
+                     flange: its ID bears on the inner wall, groove_inner_diameter), got \
+                     {other:?}"
+                ),
+            )),
+        }
+    }
+
+    /// A refusal `e` at its key, with what would fit: the nearest sizes and the diameter for
+    /// this ring (a ring that cannot be seated), the groove width (a groove too small at
+    /// maximum material condition); then the swell's words.
+    fn refusal(
+        &self,
+        e: &GlandError,
+        design: &GlandDesign,
+        dry: &Dry,
+        depth: &DepthSource,
+        locator_key: &str,
+        swollen: &str,
+    ) -> ScenarioError {
+        let fix = match *e {
+            GlandError::Overcompressed { .. }
+            | GlandError::Overstretched { .. }
+            | GlandError::CannotSeat { .. } => {
+                format!(
+                    "{}{}",
+                    self.groove_diameter_as_bore(design),
+                    self.suggestions(design, dry)
+                )
+            }
+            GlandError::OverfilledAtMaximumMaterial { fill, .. } => {
+                // the fill is inversely proportional to the width
+                format!(
+                    "; widen the groove to at least {} mm (fill {} % at maximum material \
+                     condition, Parker's guidance) or deepen it",
+                    mm(design.groove_width * fill / MAX_FILL_GUIDANCE),
+                    show(100.0 * MAX_FILL_GUIDANCE)
+                )
+            }
+            GlandError::WrongWall { side } => self.wall_fix(design, side),
+            _ => String::new(),
+        };
+        let e = self
+            .source
+            .gland_error(e, depth.span.clone(), depth.key, self.table, locator_key);
+        with_swell(
+            with_swell(e, &format!("{fix} [docs/model.md §6.2]")),
+            swollen,
+        )
+    }
+
+    /// The refusals [`GlandDesign::installed`] does not make (a face ring on the wrong wall
+    /// for `side`, a ring larger than its wall, a groove overfilled at maximum material
+    /// condition), and the handbook limits the gland breaks.
+    fn feasibility(
+        &self,
+        design: &GlandDesign,
+        dry: &Dry,
+        side: Option<PressureSide>,
+        depth: &DepthSource,
+        locator_key: &str,
+        swollen: &str,
+    ) -> Result<Vec<Limit>, ScenarioError> {
+        let refuse = |e: GlandError| self.refusal(&e, design, dry, depth, locator_key, swollen);
+        if let Some(side) = side {
+            design.check_side(side).map_err(refuse)?;
+        }
+        // the squeeze range is checked with the service (static or dynamic): see
+        // `Source::gland_service_warnings`
+        design.feasibility(false).map_err(refuse)
+    }
+
+    /// What to write instead of a face ring's wrong wall for `side`.
+    fn wall_fix(&self, design: &GlandDesign, side: PressureSide) -> String {
+        let r = &design.ring;
+        match side {
+            PressureSide::Outside => format!(
+                ": give groove_inner_diameter instead of groove_outer_diameter, {}–{} mm for \
+                 this ring (its ID {} mm stretched 0–5 %), or pressure_side = \"inside\" if \
+                 the pressure is inside",
+                mm(r.inner_diameter),
+                mm(r.inner_diameter * (1.0 + MAX_STRETCH_GUIDANCE)),
+                mm(r.inner_diameter)
+            ),
+            PressureSide::Inside => {
+                let od = r.inner_diameter + 2.0 * r.cross_section;
+                format!(
+                    ": give groove_outer_diameter instead of groove_inner_diameter, {}–{} mm \
+                     for this ring (its OD {} mm compressed 0–3 %), or pressure_side = \
+                     \"outside\" if the pressure is outside",
+                    mm(od * (1.0 - MAX_COMPRESSION_GUIDANCE)),
+                    mm(od),
+                    mm(od)
+                )
+            }
+        }
+    }
+
+    /// A piston bore that is where the ring's ID would sit (stretch 0–5 %): most likely the
+    /// groove diameter written as the bore; the bore it implies.
+    fn groove_diameter_as_bore(&self, design: &GlandDesign) -> String {
+        let Locator::Bore(b) = design.locator else {
+            return String::new();
+        };
+        let id = design.ring.inner_diameter;
+        let s = (b - id) / id;
+        if (0.0..=MAX_STRETCH_GUIDANCE).contains(&s) {
+            format!(
+                "; bore_diameter ({} mm) is a groove diameter for this ring (its ID stretched \
+                 {} % onto it): if it is the groove diameter, the bore is {} + 2 × {} = {} mm",
+                mm(b),
+                percent(s),
+                mm(b),
+                mm(design.gland_depth),
+                mm(b + 2.0 * design.gland_depth)
+            )
+        } else {
+            String::new()
+        }
+    }
+
+    /// The nearest valid sizes: the AS568 sizes of the ring's cross-section whose seat measure
+    /// lies in its band (stretch 0–5 % onto an inner seat, OD compression 0–3 % into an outer
+    /// one), nearest the band's middle first (at most three), or the one nearest the band if
+    /// none is in it; and the seat diameter that fits the given ring.
+    fn suggestions(&self, design: &GlandDesign, dry: &Dry) -> String {
+        let Some(own) = design.fit().measure else {
+            return String::new();
+        };
+        // the swell scales the ring in the gland; the sizes are named dry
+        let scale = design.ring.cross_section / dry.ring.cross_section;
+        let cs = dry.ring.cross_section;
+        let same_section = |s: &&as568::Size| match dry.size {
+            Some(n) => s.cs_in == n.cs_in && s.dash != n.dash,
+            None => (s.cs_in * as568::INCH - cs).abs() <= s.cs_tol_in * as568::INCH,
+        };
+        let mut candidates: Vec<(as568::Size, SeatMeasure)> = as568::sizes()
+            .unwrap_or(&[])
+            .iter()
+            .filter(same_section)
+            .filter_map(|s| {
+                let mut d = *design;
+                let r = s.ring();
+                d.ring = Ring {
+                    inner_diameter: r.inner_diameter * scale,
+                    inner_diameter_tolerance: r.inner_diameter_tolerance * scale,
+                    cross_section: r.cross_section * scale,
+                    cross_section_tolerance: r.cross_section_tolerance * scale,
+                };
+                d.fit().measure.map(|m| (*s, m))
+            })
+            .collect();
+        let middle = |m: SeatMeasure| {
+            let (v, lo, hi) = m.band();
+            (v - 0.5 * (lo + hi)).abs()
+        };
+        let seat_words = match design.locator {
+            Locator::Bore(_) => "groove diameter",
+            Locator::Rod(_) => "groove diameter",
+            Locator::GrooveOuter(_) => "groove outer diameter",
+            Locator::GrooveInner(_) => "groove inner diameter",
+            Locator::Free => "seat",
+        };
+        let seat = design.fit().seat;
+        let name = |s: &as568::Size, m: SeatMeasure| {
+            let r = s.ring();
+            format!(
+                "{} (ID {} mm, OD {} mm: {})",
+                s.name(),
+                mm(r.inner_diameter),
+                mm(r.inner_diameter + 2.0 * r.cross_section),
+                measure_words(m)
+            )
+        };
+        let mut inside: Vec<&(as568::Size, SeatMeasure)> = candidates
+            .iter()
+            .filter(|(_, m)| m.distance() == 0.0)
+            .collect();
+        inside.sort_by(|a, b| middle(a.1).total_cmp(&middle(b.1)));
+        let sizes = if inside.is_empty() {
+            candidates.sort_by(|a, b| a.1.distance().total_cmp(&b.1.distance()));
+            match candidates.first() {
+                Some((s, m)) => format!(
+                    "; no AS568 size of this cross-section fits the {} mm {seat_words} within \
+                     the recommended band; the nearest is {}",
+                    mm(seat),
+                    name(s, *m)
+                ),
+                None => "; no AS568 size has this cross-section".to_owned(),
+            }
+        } else {
+            let list: Vec<String> = inside.iter().take(3).map(|(s, m)| name(s, *m)).collect();
+            format!(
+                "; nearest valid size{} for the {} mm {seat_words}: {}",
+                if list.len() > 1 { "s" } else { "" },
+                mm(seat),
+                list.join(", ")
+            )
+        };
+        let r = &design.ring;
+        let (id, od, h) = (
+            r.inner_diameter,
+            r.inner_diameter + 2.0 * r.cross_section,
+            design.gland_depth,
+        );
+        let keep = match design.locator {
+            Locator::Bore(_) => Some((
+                "bore_diameter",
+                id + 2.0 * h,
+                id * (1.0 + MAX_STRETCH_GUIDANCE) + 2.0 * h,
+                "stretch 0–5 % onto B − 2 × depth",
+            )),
+            Locator::GrooveInner(_) => Some((
+                "groove_inner_diameter",
+                id,
+                id * (1.0 + MAX_STRETCH_GUIDANCE),
+                "stretch 0–5 %",
+            )),
+            Locator::Rod(_) => Some((
+                "rod_diameter",
+                od * (1.0 - MAX_COMPRESSION_GUIDANCE) - 2.0 * h,
+                od - 2.0 * h,
+                "OD compression 0–3 % into R + 2 × depth",
+            )),
+            Locator::GrooveOuter(_) => Some((
+                "groove_outer_diameter",
+                od * (1.0 - MAX_COMPRESSION_GUIDANCE),
+                od,
+                "OD compression 0–3 %",
+            )),
+            Locator::Free => None,
+        };
+        let keep = keep.map_or(String::new(), |(key, lo, hi, rule)| {
+            format!(
+                "; or keep this ring ({}) with {key} = {}–{} mm ({rule})",
+                measure_words(own),
+                mm(lo),
+                mm(hi)
+            )
+        });
+        format!("{sizes}{keep}")
+    }
+
+    /// The warnings of the handbook limits `limits` (the circumferential compression; the
+    /// squeeze range is the service's, `Source::gland_service_warnings`).
+    fn limit_warnings(
+        &self,
+        design: &GlandDesign,
+        dry: &Dry,
+        limits: &[Limit],
+        locator_key: &'static str,
+    ) -> Vec<String> {
+        limits
+            .iter()
+            .filter_map(|l| match *l {
+                Limit::Compression { compression, seat } => Some(
+                    self.source
+                        .error(
+                            self.locator_span(locator_key),
+                            locator_key,
+                            format!(
+                                "the ring is compressed circumferentially {} % onto the {} mm \
+                                 wall that holds it, above the {} % recommended (O-Ring \
+                                 Stocks: face rings 1–3 % compressed; Marco Rubber: a rod \
+                                 ring compressed or line-to-line on its OD; Apple Rubber: a \
+                                 piston ring's ID smaller than its groove diameter): it may \
+                                 buckle or be pinched on assembly{} [docs/model.md §6.2]",
+                                percent(compression),
+                                mm(seat),
+                                show(100.0 * MAX_COMPRESSION_GUIDANCE),
+                                self.suggestions(design, dry)
+                            ),
+                        )
+                        .to_string(),
+                ),
+                Limit::Squeeze { .. } => None,
+            })
+            .collect()
+    }
+
     /// `present`, a key this gland does not take, refused with the keys it takes `instead`.
     fn refuse(
         &self,
@@ -336,10 +787,11 @@ impl GlandTable<'_, '_> {
         Ok(())
     }
 
-    /// The ring: `size`, or `cross_section` and `inner_diameter`.
-    fn ring(&self) -> Result<Ring, ScenarioError> {
+    /// The ring: `size` (returned too), or `cross_section` and `inner_diameter`.
+    fn ring(&self) -> Result<(Ring, Option<as568::Size>), ScenarioError> {
         let raw = self.raw;
-        Ok(match (&raw.size, &raw.cross_section, &raw.inner_diameter) {
+        let mut named = None;
+        let ring = match (&raw.size, &raw.cross_section, &raw.inner_diameter) {
             (Some(size), cs, id) => {
                 for (present, key) in [(cs, "cross_section"), (id, "inner_diameter")] {
                     if let Some(q) = present {
@@ -354,9 +806,10 @@ impl GlandTable<'_, '_> {
                         ));
                     }
                 }
-                as568::lookup(size.get_ref())
-                    .map_err(|e| self.source.error(size.span(), "seal.size", e.to_string()))?
-                    .ring()
+                let found = as568::lookup(size.get_ref())
+                    .map_err(|e| self.source.error(size.span(), "seal.size", e.to_string()))?;
+                named = Some(found);
+                found.ring()
             }
             (None, Some(cs), Some(id)) => Ring {
                 inner_diameter: self.source.quantity(id, &INNER_DIAMETER)?,
@@ -378,7 +831,8 @@ impl GlandTable<'_, '_> {
                      inner_diameter",
                 ));
             }
-        })
+        };
+        Ok((ring, named))
     }
 
     /// The clearance and the diameter that fixes the stretch, by the gland's kind.

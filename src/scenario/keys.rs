@@ -980,6 +980,13 @@ const SEAL: &[Key] = &[
          onto it",
     ),
     key(
+        "pressure_side",
+        Choice(&["inside", "outside"]),
+        Absent("the side the wall key implies"),
+        "face: where the pressure is; the ring must bear on the wall it is pushed onto (inside: \
+         `groove_outer_diameter`, outside: `groove_inner_diameter`), else refused",
+    ),
+    key(
         "energisation_factor",
         Quantity(gland::ENERGISATION_FACTOR),
         Literal("1", "gland"),

@@ -330,6 +330,8 @@ pub(super) struct RawSeal {
     pub rod_diameter: Option<Quantity>,
     pub groove_outer_diameter: Option<Quantity>,
     pub groove_inner_diameter: Option<Quantity>,
+    /// A face gland's pressure side, `"inside"` or `"outside"` (the wall the ring must bear on).
+    pub pressure_side: Option<Spanned<String>>,
     pub energisation_factor: Option<Quantity>,
     /// Back-up rings on the ring's low-pressure side: 0, 1 or 2 (docs/model.md §6.3).
     pub backup_rings: Option<Spanned<i64>>,

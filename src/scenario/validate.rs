@@ -474,6 +474,17 @@ impl Source<'_> {
             permeation,
         };
         let mut warnings = seal.warnings;
+        // the gland's checks that need the service: [motion] (dynamic squeeze), a vacuum outlet
+        warnings.extend(
+            self.gland_service_warnings(
+                &raw.seal,
+                seal.design.as_ref(),
+                raw.motion.is_some(),
+                life.fluid
+                    .gas
+                    .is_some_and(|g| g.outlet_pressure < crate::permeation::STP_PRESSURE),
+            ),
+        );
         if let Some(note) = permeation_note {
             warnings.push(
                 self.error(raw.fluid.span(), "fluid.gas", format!("note: {note}"))

@@ -241,7 +241,9 @@ fn stretch_and_fill_outside_the_guidance_warn_and_a_ring_that_cannot_seat_is_ref
         "{stderr}"
     );
     // on a 45 mm bore the groove bottom is 39.3 mm: 57 % stretch — refused, nothing written,
-    // and the fix it names (a larger ring, e.g. AS568-224 with ID 37.69 mm: 4.3 %) runs
+    // and the fix it names (a larger ring, AS568-222 with ID 37.69 mm: 4.3 %) runs (this
+    // said AS568-224, whose ID is 44.04 mm: 10.8 % larger than the groove, refused since
+    // issue 41)
     let (code, stdout, stderr, written, path) = run(&PISTON.replace("\"31.75 mm\"", "\"45 mm\""));
     assert_eq!(code, Some(2), "{stderr}");
     assert!(
@@ -251,10 +253,14 @@ fn stretch_and_fill_outside_the_guidance_warn_and_a_ring_that_cannot_seat_is_ref
         "{stderr}"
     );
     assert!(stderr.contains("larger inside diameter"), "{stderr}");
+    assert!(
+        stderr.contains("AS568-222 (ID 37.69 mm, OD 44.75 mm: stretch 4.3 %)"),
+        "{stderr}"
+    );
     assert!(!written && stdout.is_empty());
     let fixed = PISTON
         .replace("\"31.75 mm\"", "\"45 mm\"")
-        .replace("AS568-214", "AS568-224");
+        .replace("AS568-214", "AS568-222");
     let (code, _, stderr, _, _) = run(&fixed);
     assert_eq!(code, Some(0), "{stderr}");
     assert!(!stderr.contains("the ring is stretched"), "{stderr}");

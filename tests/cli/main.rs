@@ -18,6 +18,7 @@ mod callout;
 mod cold;
 mod contact_area;
 mod engineering_units;
+mod feasibility;
 mod figures;
 mod fit;
 mod flat_cold;

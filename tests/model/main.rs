@@ -19,6 +19,7 @@ mod contact_area;
 mod datasheet;
 mod dynamic;
 mod effective_medium;
+mod feasibility;
 mod fit;
 mod flat_cold;
 mod flow;

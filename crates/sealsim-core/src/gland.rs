@@ -30,7 +30,14 @@
 //!   "a maximum material condition gland fill of 90%") or [`NOMINAL_FILL_GUIDANCE`] = 85 %
 //!   nominal, and below [`MIN_FILL_GUIDANCE`] = 50 % (a mis-specified groove); refused at
 //!   100 % (the ring does not fit);
-//! * stretch warned above [`MAX_STRETCH_GUIDANCE`] = 5 %, refused at [`MAX_STRETCH`] = 50 %.
+//! * stretch warned above [`MAX_STRETCH_GUIDANCE`] = 5 %, refused at [`MAX_STRETCH`] = 50 %;
+//! * circumferential compression `c` (a ring larger than the wall it is held by: the handbook's
+//!   "OD compression" of a rod or internally pressurised face ring, `(OD − S)/OD`; a piston ring
+//!   whose ID is larger than its groove diameter G, `(ID − G)/ID`) warned above
+//!   [`MAX_COMPRESSION_GUIDANCE`] = 3 %, refused at [`MAX_COMPRESSION`] = 10 % (assumed);
+//! * gland fill at maximum material condition refused at 100 % ([`GlandDesign::feasibility`]);
+//! * a face ring on the wall opposite its pressure side refused ([`PressureSide`]);
+//! * squeeze over the tolerances warned outside [`STATIC_SQUEEZE`] or [`DYNAMIC_SQUEEZE`].
 
 use sealsim_math::roots;
 use std::f64::consts::PI;
@@ -104,6 +111,42 @@ pub const MAX_STRETCH_GUIDANCE: f64 = 0.05;
 /// fifth and it ages under the strain).
 pub const MAX_STRETCH: f64 = 0.5;
 
+/// Circumferential compression above which a warning is given: 3 %. The handbook rule for a
+/// ring held by its OD: "Axial compression: 1 to 3% (compressed) max. 6% (stretch)" for face
+/// glands (O-Ring Stocks, "Static O-ring grooves",
+/// <https://www.o-ring-stocks.eu/knowledge-base/o-ring-groove-dimensions/o-ring-groove-static>);
+/// "Rod seals are normally compressed or have line-to-line fit on the outside diameter without
+/// any stretch" (Marco Rubber, <http://www.marcorubber.com/static_face_seal_dovetail.htm>).
+/// Applied to every seat: a piston ring whose ID is larger than its groove diameter is
+/// compressed the same way (Apple Rubber, "Dimensional considerations",
+/// <http://www.applerubber.com/seal-design-guide/oring-basics/dimensional-considerations.cfm>: the ID "must be smaller
+/// than the piston groove diameter, so that the O-ring is slightly stretched").
+pub const MAX_COMPRESSION_GUIDANCE: f64 = 0.03;
+
+/// Circumferential compression at or above which the ring is refused: 10 % — **assumed**
+/// (sealsim's decision, no source read gives the compression a ring cannot take): three times
+/// the handbook's 3 %; a ring that much too large buckles or is pinched on assembly, and the
+/// constant-volume thickening the model would give it is not a seal. The impossible fits of the
+/// new-user review (AS568-214 in a 25.4 mm bore, the groove diameter as bore) lie at 19–22 %.
+pub const MAX_COMPRESSION: f64 = 0.10;
+
+/// Squeeze range of a static gland (face, static radial) outside which a warning is given, at
+/// the tolerance limits: 10–30 %. The upper limit: "The maximum linear compression suggested
+/// by manufacturers is 30% for static applications and 16% for dynamic seals (up to 25% for
+/// small cross-sectional diameters)" (M. Kutz (ed.), Mechanical Engineers' Handbook, Vol. 3,
+/// chapter "Seal Technology", p. 290, citing the Parker O-Ring Handbook; read at
+/// <https://fliphtml5.com/osspz/lzbm/Mechanical_Engineers%26%2339%3B_Handbook._Vol._3_Manufacturing_and_Management/306>).
+/// The lower: "under-compression below 10% risks low-pressure leakage" (O-Ring Supply Co.,
+/// "O-Ring Compression Rate Guide", <https://oringsupplyco.com/blog/o-ring-compression-rate-guide/>).
+/// The Parker O-Ring Handbook's (ORD 5700) own design-chart squeeze ranges were not found in a
+/// readable copy and are not used.
+pub const STATIC_SQUEEZE: (f64, f64) = (0.10, 0.30);
+
+/// Squeeze range of a dynamic (reciprocating, `[motion]`) gland: 10–16 %, the same sources as
+/// [`STATIC_SQUEEZE`] (16 % the manufacturers' maximum for dynamic seals; the 25 % allowed
+/// "for small cross-sectional diameters" is not used, the size it starts at not being stated).
+pub const DYNAMIC_SQUEEZE: (f64, f64) = (0.10, 0.16);
+
 /// An O-ring as made: free inside diameter and cross-section with their (±) tolerances \[m\].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Ring {
@@ -132,6 +175,90 @@ pub enum Locator {
     /// Face gland, externally pressurised (vacuum): the groove's inner diameter \[m\], the ring's
     /// ID is brought onto it.
     GrooveInner(f64),
+}
+
+/// The side of a face ring the (higher) pressure is on: it pushes the ring onto the groove wall
+/// opposite, which is the wall the ring must bear on — its OD on the groove's outer wall for
+/// pressure inside, its ID on the inner wall for pressure outside (a vacuum flange).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PressureSide {
+    Inside,
+    Outside,
+}
+
+impl PressureSide {
+    /// The scenario's name (`pressure_side = "inside"`).
+    pub fn name(self) -> &'static str {
+        match self {
+            PressureSide::Inside => "inside",
+            PressureSide::Outside => "outside",
+        }
+    }
+
+    /// The side a face ring's seat implies (`None`: a free ring or a radial gland).
+    pub fn of(locator: Locator) -> Option<PressureSide> {
+        match locator {
+            Locator::GrooveOuter(_) => Some(PressureSide::Inside),
+            Locator::GrooveInner(_) => Some(PressureSide::Outside),
+            _ => None,
+        }
+    }
+}
+
+/// The handbook's measures of how a ring sits on the wall that holds it, from its free
+/// dimensions (docs/model.md §6.2).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Fit {
+    /// The measure a size is chosen by: the stretch `(S − ID)/ID` onto an inner seat S (piston:
+    /// the groove diameter G = B − 2h; face, pressure outside: the groove's inner diameter) or
+    /// the OD compression `(OD − S)/OD` into an outer one (rod: the groove diameter R + 2h;
+    /// face, pressure inside: the groove's outer diameter). `None` for a free face ring.
+    pub measure: Option<SeatMeasure>,
+    /// Circumferential compression c ≥ 0: how much the ring is larger than the wall that
+    /// holds it (0 when it is stretched or free).
+    pub compression: f64,
+    /// The wall's diameter S \[m\] (0 for a free ring).
+    pub seat: f64,
+}
+
+/// Which of the two handbook measures a seat is judged by, and its value.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum SeatMeasure {
+    /// Stretch of the ID onto an inner seat (recommended 0–5 %).
+    Stretch(f64),
+    /// Compression of the OD into an outer seat (recommended 0–3 %).
+    OdCompression(f64),
+}
+
+impl SeatMeasure {
+    /// The measure's value and its recommended band (the nearest-size rule).
+    pub fn band(self) -> (f64, f64, f64) {
+        match self {
+            SeatMeasure::Stretch(s) => (s, 0.0, MAX_STRETCH_GUIDANCE),
+            SeatMeasure::OdCompression(c) => (c, 0.0, MAX_COMPRESSION_GUIDANCE),
+        }
+    }
+
+    /// How far the value lies outside its band (0 inside).
+    pub fn distance(self) -> f64 {
+        let (v, lo, hi) = self.band();
+        (lo - v).max(v - hi).max(0.0)
+    }
+}
+
+/// The feasibility of a gland: the refusals come as [`GlandError`]; what passes may still break
+/// a handbook limit (the warnings, [`Limit`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Limit {
+    /// Circumferential compression above [`MAX_COMPRESSION_GUIDANCE`].
+    Compression { compression: f64, seat: f64 },
+    /// Squeeze at the tolerance limits outside the static or dynamic range.
+    Squeeze {
+        min: f64,
+        max: f64,
+        range: (f64, f64),
+        dynamic: bool,
+    },
 }
 
 /// Where the ring is held circumferentially.
@@ -184,6 +311,20 @@ pub enum GlandError {
     Overfilled { fill: f64 },
     /// Installed stretch ≥ [`MAX_STRETCH`].
     Overstretched { stretch: f64 },
+    /// The ring is larger than the wall that holds it by [`MAX_COMPRESSION`] or more
+    /// (circumferential compression `compression`; `ring` its free ID or OD, `seat` the wall's
+    /// diameter \[m\]).
+    Overcompressed {
+        compression: f64,
+        ring: f64,
+        seat: f64,
+        outer: bool,
+    },
+    /// Gland fill ≥ 100 % at maximum material condition (the largest cord in the shallowest
+    /// gland over the tolerances), though not at nominal.
+    OverfilledAtMaximumMaterial { fill: f64, nominal: f64 },
+    /// A face ring seated on the wall opposite the one its pressure side pushes it onto.
+    WrongWall { side: PressureSide },
 }
 
 impl fmt::Display for GlandError {
@@ -226,6 +367,46 @@ impl fmt::Display for GlandError {
                 "the ring does not fit: its cross-section fills {} % of the groove (depth × \
                  width); widen or deepen the groove",
                 show(100.0 * fill)
+            ),
+            GlandError::Overcompressed {
+                compression,
+                ring,
+                seat,
+                outer,
+            } => write!(
+                f,
+                "the ring cannot be assembled: its {} ({} mm) is larger than the {} it must \
+                 sit on ({} mm) — circumferential compression {} % (refused at {} %, assumed; \
+                 the handbook limit is 3 %)",
+                if outer { "OD" } else { "ID" },
+                show((ring * 1e5).round() / 100.0),
+                if outer { "wall" } else { "groove diameter" },
+                show((seat * 1e5).round() / 100.0),
+                show((1000.0 * compression).round() / 10.0),
+                show(100.0 * MAX_COMPRESSION)
+            ),
+            GlandError::OverfilledAtMaximumMaterial { fill, nominal } => write!(
+                f,
+                "the ring does not fit at maximum material condition: the largest cord in the \
+                 shallowest gland the tolerances allow fills {} % of the groove (nominal {} %); \
+                 the groove must hold the largest ring",
+                show((1000.0 * fill).round() / 10.0),
+                show((1000.0 * nominal).round() / 10.0)
+            ),
+            GlandError::WrongWall { side } => write!(
+                f,
+                "the ring is seated on the wrong wall: with the pressure {} the ring is pushed \
+                 onto the groove's {} wall, so that is where it must bear ({}) — on the other \
+                 wall it is pushed off its seat by the pressure",
+                side.name(),
+                match side {
+                    PressureSide::Inside => "outer",
+                    PressureSide::Outside => "inner",
+                },
+                match side {
+                    PressureSide::Inside => "its OD on the groove's outer diameter",
+                    PressureSide::Outside => "its ID on the groove's inner diameter",
+                }
             ),
         }
     }
@@ -331,6 +512,120 @@ impl GlandDesign {
     pub fn max_material_fill(&self) -> Result<f64, GlandError> {
         let nominal = self.installed()?.fill;
         Ok(self.corners().iter().fold(nominal, |m, i| m.max(i.fill)))
+    }
+
+    /// How the ring sits on the wall that holds it, from its free dimensions (docs/model.md
+    /// §6.2): the handbook's stretch onto an inner seat or OD compression into an outer one,
+    /// and the circumferential compression c of a ring larger than its wall — a piston ring's
+    /// ID on the groove diameter G = B − 2h, `c = (ID − G)/ID`; a rod ring's OD (its ID not
+    /// on the rod) into the groove diameter R + 2h, `c = (OD − S)/OD`; a face ring's OD into
+    /// the groove's outer diameter, or its ID onto the inner one.
+    pub fn fit(&self) -> Fit {
+        let r = &self.ring;
+        let (id, od, h) = (
+            r.inner_diameter,
+            r.inner_diameter + 2.0 * r.cross_section,
+            self.gland_depth,
+        );
+        let stretch = |s: f64| (s - id) / id;
+        let od_compression = |s: f64| (od - s) / od;
+        let (measure, compression, seat) = match self.locator {
+            Locator::Free => (None, 0.0, 0.0),
+            Locator::Bore(b) => {
+                let g = b - 2.0 * h;
+                let s = stretch(g);
+                (Some(SeatMeasure::Stretch(s)), (-s).max(0.0), g)
+            }
+            Locator::GrooveInner(g) => {
+                let s = stretch(g);
+                (Some(SeatMeasure::Stretch(s)), (-s).max(0.0), g)
+            }
+            Locator::Rod(rod) => {
+                let g = rod + 2.0 * h;
+                let c = od_compression(g);
+                // a ring stretched onto the rod is held by its ID: its OD is squeezed, not
+                // compressed circumferentially
+                let held_by_od = id >= rod;
+                (
+                    Some(SeatMeasure::OdCompression(c)),
+                    if held_by_od { c.max(0.0) } else { 0.0 },
+                    g,
+                )
+            }
+            Locator::GrooveOuter(g) => {
+                let c = od_compression(g);
+                (Some(SeatMeasure::OdCompression(c)), c.max(0.0), g)
+            }
+        };
+        Fit {
+            measure,
+            compression,
+            seat,
+        }
+    }
+
+    /// Whether the ring can be assembled (docs/model.md §6.2), and the handbook limits it
+    /// breaks if it can. Refused: everything [`GlandDesign::installed`] refuses; a ring larger
+    /// than its wall by [`MAX_COMPRESSION`] or more; a gland fill of 100 % or more at maximum
+    /// material condition. Warned ([`Limit`]): a circumferential compression above
+    /// [`MAX_COMPRESSION_GUIDANCE`]; a squeeze at the tolerance limits outside
+    /// [`STATIC_SQUEEZE`] or, `dynamic`, [`DYNAMIC_SQUEEZE`].
+    pub fn feasibility(&self, dynamic: bool) -> Result<Vec<Limit>, GlandError> {
+        let nominal = self.installed()?;
+        let fit = self.fit();
+        if fit.compression >= MAX_COMPRESSION {
+            let outer = matches!(self.locator, Locator::Rod(_) | Locator::GrooveOuter(_));
+            let r = &self.ring;
+            return Err(GlandError::Overcompressed {
+                compression: fit.compression,
+                ring: if outer {
+                    r.inner_diameter + 2.0 * r.cross_section
+                } else {
+                    r.inner_diameter
+                },
+                seat: fit.seat,
+                outer,
+            });
+        }
+        let fill = self.max_material_fill()?;
+        if fill >= 1.0 {
+            return Err(GlandError::OverfilledAtMaximumMaterial {
+                fill,
+                nominal: nominal.fill,
+            });
+        }
+        let mut limits = Vec::new();
+        if fit.compression > MAX_COMPRESSION_GUIDANCE {
+            limits.push(Limit::Compression {
+                compression: fit.compression,
+                seat: fit.seat,
+            });
+        }
+        let range = if dynamic {
+            DYNAMIC_SQUEEZE
+        } else {
+            STATIC_SQUEEZE
+        };
+        let squeeze = self.squeeze_range()?;
+        if squeeze.min < range.0 || squeeze.max > range.1 {
+            limits.push(Limit::Squeeze {
+                min: squeeze.min,
+                max: squeeze.max,
+                range,
+                dynamic,
+            });
+        }
+        Ok(limits)
+    }
+
+    /// A face ring's seat against the pressure side `side`: the ring must bear on the wall the
+    /// pressure pushes it onto (its OD on the outer wall for pressure inside, its ID on the
+    /// inner wall for pressure outside); a free ring or a radial gland has no wall to check.
+    pub fn check_side(&self, side: PressureSide) -> Result<(), GlandError> {
+        match PressureSide::of(self.locator) {
+            Some(seated) if seated != side => Err(GlandError::WrongWall { side }),
+            _ => Ok(()),
+        }
     }
 
     /// The gland depth h \[m\] that gives the squeeze `squeeze` (0 < ε < 1) to this ring,
@@ -616,6 +911,126 @@ mod tests {
         let mut back = design(Locator::Bore(31.06e-3), h);
         back.gland_depth = h;
         assert!((back.installed().unwrap().squeeze - 0.2).abs() < 1e-12);
+    }
+
+    #[test]
+    fn fit_measures_are_the_handbook_closed_forms() {
+        let (id, d) = (24.99e-3, 3.53e-3);
+        let od = id + 2.0 * d;
+        // piston: stretch onto G = B − 2h; a ring larger than G is compressed (ID − G)/ID
+        let f = design(Locator::Bore(31.06e-3), 2.8e-3).fit();
+        let Some(SeatMeasure::Stretch(s)) = f.measure else {
+            panic!("{f:?}")
+        };
+        assert!((s - (25.46e-3 - id) / id).abs() < 1e-12);
+        assert_eq!(f.compression, 0.0);
+        let f = design(Locator::Bore(25.4e-3), 2.9e-3).fit();
+        assert!((f.compression - (id - 19.6e-3) / id).abs() < 1e-12);
+        // rod held by its OD (ID ≥ rod): OD compression into R + 2h
+        let f = design(Locator::Rod(24.99e-3), 3.0e-3).fit();
+        let c = (od - 30.99e-3) / od;
+        let Some(SeatMeasure::OdCompression(m)) = f.measure else {
+            panic!("{f:?}")
+        };
+        assert!((m - c).abs() < 1e-12 && (f.compression - c).abs() < 1e-12);
+        // rod stretched onto the rod: its OD is squeezed, not compressed
+        assert_eq!(design(Locator::Rod(26e-3), 2.8e-3).fit().compression, 0.0);
+        // face: OD into the outer wall, ID onto the inner wall; a free ring has no measure
+        let f = design(Locator::GrooveOuter(31e-3), 2.8e-3).fit();
+        assert!((f.compression - (od - 31e-3) / od).abs() < 1e-15);
+        let f = design(Locator::GrooveInner(24e-3), 2.8e-3).fit();
+        assert!((f.compression - (id - 24e-3) / id).abs() < 1e-15);
+        assert_eq!(design(Locator::Free, 2.8e-3).fit().measure, None);
+    }
+
+    #[test]
+    fn compression_is_warned_past_3_percent_and_refused_at_10() {
+        let od = 24.99e-3 + 2.0 * 3.53e-3;
+        let at = |c: f64| design(Locator::GrooveOuter(od * (1.0 - c)), 2.8e-3);
+        let compression = |l: &[Limit]| l.iter().any(|l| matches!(l, Limit::Compression { .. }));
+        assert!(!compression(&at(0.029).feasibility(false).unwrap()));
+        assert!(compression(&at(0.031).feasibility(false).unwrap()));
+        assert!(compression(&at(0.099).feasibility(false).unwrap()));
+        assert!(matches!(
+            at(0.101).feasibility(false),
+            Err(GlandError::Overcompressed { outer: true, .. })
+        ));
+        // the review's -214 in a 25.4 mm bore: refused at the ID, 21.6 %
+        let Err(GlandError::Overcompressed {
+            compression,
+            outer: false,
+            ..
+        }) = design(Locator::Bore(25.4e-3), 2.9e-3).feasibility(false)
+        else {
+            panic!("not refused")
+        };
+        assert!((compression - (24.99 - 19.6) / 24.99).abs() < 1e-12);
+    }
+
+    #[test]
+    fn fill_at_maximum_material_is_refused_at_100_percent() {
+        // free ring, nominal fill π d²/4/(h w) = 0.96; the corners raise d and lower h
+        let (d, h, dt, ht) = (3.53e-3, 2.65e-3, 0.1e-3, 0.05e-3);
+        let mut g = design(Locator::Free, h);
+        g.groove_width = PI * d * d / 4.0 / (h * 0.96);
+        g.ring.cross_section_tolerance = dt;
+        g.gland_depth_tolerance = ht;
+        let mmc = PI * (d + dt) * (d + dt) / 4.0 / ((h - ht) * g.groove_width);
+        assert!(mmc > 1.0);
+        let Err(GlandError::OverfilledAtMaximumMaterial { fill, nominal }) = g.feasibility(false)
+        else {
+            panic!("not refused")
+        };
+        assert!((fill - mmc).abs() < 1e-12 && (nominal - 0.96).abs() < 1e-12);
+        // just inside: the width that gives 99.9 % at maximum material passes
+        g.groove_width *= mmc / 0.999;
+        assert!(g.feasibility(false).is_ok());
+    }
+
+    #[test]
+    fn the_squeeze_range_is_static_or_dynamic() {
+        // free ring without tolerances: ε = 1 − h/d at every corner
+        let d = 3.53e-3;
+        let squeeze = |eps: f64, dynamic: bool| {
+            design(Locator::Free, d * (1.0 - eps))
+                .feasibility(dynamic)
+                .unwrap()
+                .iter()
+                .any(|l| matches!(l, Limit::Squeeze { .. }))
+        };
+        for (eps, dynamic, warned) in [
+            (0.101, false, false),
+            (0.099, false, true),
+            (0.299, false, false),
+            (0.301, false, true),
+            (0.159, true, false),
+            (0.161, true, true),
+            (0.101, true, false),
+            (0.099, true, true),
+        ] {
+            assert_eq!(squeeze(eps, dynamic), warned, "{eps} {dynamic}");
+        }
+    }
+
+    #[test]
+    fn a_face_ring_must_bear_on_the_wall_its_pressure_pushes_it_onto() {
+        let outer = design(Locator::GrooveOuter(32.1e-3), 2.8e-3);
+        let inner = design(Locator::GrooveInner(25.2e-3), 2.8e-3);
+        assert!(outer.check_side(PressureSide::Inside).is_ok());
+        assert!(inner.check_side(PressureSide::Outside).is_ok());
+        assert_eq!(
+            outer.check_side(PressureSide::Outside),
+            Err(GlandError::WrongWall {
+                side: PressureSide::Outside
+            })
+        );
+        assert!(inner.check_side(PressureSide::Inside).is_err());
+        // no wall, no check
+        assert!(
+            design(Locator::Free, 2.8e-3)
+                .check_side(PressureSide::Outside)
+                .is_ok()
+        );
     }
 
     #[test]
