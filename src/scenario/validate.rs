@@ -424,12 +424,13 @@ impl Source<'_> {
                 "thermal_expansion",
             ),
         )?;
+        let pressure = self.pressure_history(raw.environment.as_ref(), &fluid)?;
         let service = self.service(
             raw,
             &material,
             replacement.is_some(),
             &fluid,
-            &environment,
+            (&environment, pressure.as_ref()),
             &seal.geometry,
         )?;
         let (permeation, permeation_note) =
@@ -458,6 +459,7 @@ impl Source<'_> {
             contamination: service.contamination,
             motion: service.motion,
             permeation,
+            pressure,
         };
         let mut warnings = seal.warnings;
         if let Some(note) = permeation_note {
@@ -640,7 +642,10 @@ impl Source<'_> {
         material: &Material,
         replaced: bool,
         fluid: &Fluid,
-        environment: &crate::material::TemperatureHistory,
+        (environment, pressure): (
+            &crate::material::TemperatureHistory,
+            Option<&crate::pressure::PressureHistory>,
+        ),
         geometry: &SealGeometry,
     ) -> Result<Service, ScenarioError> {
         let (ageing, ageing_source) =
@@ -659,13 +664,14 @@ impl Source<'_> {
                     }
                     SealGeometry::Flat { .. } => 0.0,
                 },
+                highest_pressure: pressure.map(crate::pressure::PressureHistory::highest_difference),
             },
         )?;
         let (time, fidelity) = self.simulation(raw.simulation.as_ref())?;
         self.cycle_budget(
             raw.simulation.as_ref(),
             raw.environment.as_ref(),
-            environment,
+            (environment, pressure),
             &time,
         )?;
         let clogging_tolerance = self.clogging_tolerance(raw.simulation.as_ref())?;
