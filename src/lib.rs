@@ -106,5 +106,6 @@ pub mod workflow;
 // they had before the split.
 pub use sealsim_core::{
     clogging, contact, dynamic, extrusion, fluid, gas, gland, interface, leak, material, math,
-    numerical, permeation, pressure, profile, roughness, seal, simulate, study, surface, units, validity,
+    numerical, permeation, pressure, profile, roughness, seal, simulate, study, surface, units,
+    validity,
 };

@@ -252,11 +252,7 @@ fn kelvin(cell: &str, unit: &str, line: usize) -> Result<f64, HistoryError> {
 
 /// The units row: a time unit, then one unit for each column (an absolute temperature unit, a
 /// pressure unit). Returns seconds per time unit and the columns' units.
-fn units_row(
-    line: usize,
-    row: &str,
-    columns: &[Column],
-) -> Result<(f64, Vec<Unit>), HistoryError> {
+fn units_row(line: usize, row: &str, columns: &[Column]) -> Result<(f64, Vec<Unit>), HistoryError> {
     let cells: Vec<&str> = row.split(',').map(str::trim).collect();
     if cells.len() != columns.len() + 1 || cells.iter().any(|c| c.is_empty()) {
         let missing = columns

@@ -684,7 +684,9 @@ impl Source<'_> {
     ) -> Result<FailureCriteria, ScenarioError> {
         // the restart's pressure is bounded by the highest of the run (the service's, or a
         // pressure history's, docs/model.md §8.4)
-        let highest = context.highest_pressure.unwrap_or(fluid.pressure_difference);
+        let highest = context
+            .highest_pressure
+            .unwrap_or(fluid.pressure_difference);
         let (coldest, hottest) = environment.range();
         let default_shutdown = crate::simulate::Shutdown {
             temperature: DEFAULT_SHUTDOWN_TEMPERATURE.min(coldest),
@@ -1194,7 +1196,9 @@ impl Source<'_> {
                 let raw = env.get_ref();
                 match (&raw.daily_amplitude, &raw.yearly_amplitude) {
                     (None, _) if period < YEAR && raw.daily_pressure.is_some() => (
-                        raw.daily_pressure.as_ref().map_or(env.span(), Spanned::span),
+                        raw.daily_pressure
+                            .as_ref()
+                            .map_or(env.span(), Spanned::span),
                         DAILY_PRESSURE.key,
                     ),
                     (Some(q), _) if period < YEAR => (q.span(), DAILY_AMPLITUDE.key),

@@ -664,7 +664,8 @@ impl Source<'_> {
                     }
                     SealGeometry::Flat { .. } => 0.0,
                 },
-                highest_pressure: pressure.map(crate::pressure::PressureHistory::highest_difference),
+                highest_pressure: pressure
+                    .map(crate::pressure::PressureHistory::highest_difference),
             },
         )?;
         let (time, fidelity) = self.simulation(raw.simulation.as_ref())?;

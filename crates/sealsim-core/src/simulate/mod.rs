@@ -791,10 +791,24 @@ impl<'a> Simulator<'a> {
         let e_star = moduli.fluid / (1.0 - p.material.poisson_ratio.powi(2));
         let equivalent = moduli.equivalent(profile);
         let dp = service.pressure_difference;
-        let open = crate::leak::opening(profile.peak(), p.energisation_factor, dp);
+        let open = match p.pressure {
+            // depressurised in a pressure history (docs/model.md §8.4): the limit ΔP → 0 of the
+            // rule p_sq ≤ max(1 − k_e, τ) ΔP — a ring that has come off the face (no squeeze
+            // left, e.g. contracted at the cold) is open with or without a pressure to push
+            // through it, and the pressure's return finds it open
+            Some(_) if dp <= 0.0 && profile.peak() <= 0.0 => Some(SealState::LiftOff),
+            _ => crate::leak::opening(profile.peak(), p.energisation_factor, dp),
+        };
         let lifted = open == Some(SealState::LiftOff);
         let interface = |path: &ContactPath, solver: &InterfaceSolver| {
-            self.interface_leak(path, solver, &equivalent, lifted, e_star, (&service, &fluid))
+            self.interface_leak(
+                path,
+                solver,
+                &equivalent,
+                lifted,
+                e_star,
+                (&service, &fluid),
+            )
         };
         let counterface = interface(&self.path, &self.counterface);
         let (groove, groove_junction, groove_state) = match (&self.problem.groove, &self.groove) {
@@ -1287,14 +1301,8 @@ impl<'a> Simulator<'a> {
                     viscosity,
                     p.shape_factor,
                 );
-                let oring =
-                    matches!(p.geometry, crate::seal::SealGeometry::ORing { .. }).then(|| {
-                        (
-                            seal.seal.nominal_pressure,
-                            profile.width(),
-                            dp,
-                        )
-                    });
+                let oring = matches!(p.geometry, crate::seal::SealGeometry::ORing { .. })
+                    .then(|| (seal.seal.nominal_pressure, profile.width(), dp));
                 let ihl = crate::dynamic::IhlInput {
                     gradients: spec.gradients_for(oring),
                     viscosity,
@@ -1373,7 +1381,11 @@ impl<'a> Simulator<'a> {
     /// 1 for a liquid and without a history.
     fn gas_volume_scale(&self, service: &crate::fluid::Fluid) -> f64 {
         let p = self.problem;
-        match (&p.pressure, service.mean_pressure(), p.fluid.mean_pressure()) {
+        match (
+            &p.pressure,
+            service.mean_pressure(),
+            p.fluid.mean_pressure(),
+        ) {
             (Some(_), Some(now), Some(mean)) if mean > 0.0 => now / mean,
             _ => 1.0,
         }
@@ -1462,8 +1474,7 @@ impl<'a> Simulator<'a> {
     ) -> Option<FailureEvent> {
         let criteria = &self.problem.failure;
         let start = before_snap.as_event_input(before.leaked_volume);
-        let modes =
-            criteria.newly_crossed(&start, &after_snap.as_event_input(after.leaked_volume));
+        let modes = criteria.newly_crossed(&start, &after_snap.as_event_input(after.leaked_volume));
         let earliest = modes
             .into_iter()
             .map(|mode| {
