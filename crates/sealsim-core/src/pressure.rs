@@ -163,14 +163,21 @@ impl PressureHistory {
         (self.range().1 - self.datum).max(0.0)
     }
 
-    /// The knots of P(t) strictly inside `(a, b)` \[s\], increasing: the table's points, the
+    /// The knots of P(t) strictly inside `(a, b)` \[s\], increasing: the table's kinks, the
     /// ends of the proof's hold and ramp, and the four corners of each day of a cycle. P is
     /// linear (a table under no cycle) or smooth between them.
     pub fn knots(&self, a: f64, b: f64) -> Vec<f64> {
-        let mut out: Vec<f64> = self
-            .points
-            .iter()
-            .map(|p| p.0)
+        // a table's row is a knot only where P(t) has a kink there (a row on a straight line,
+        // or a constant table's rows, change nothing: no step, the run as without them)
+        let slope = |i: usize| -> f64 {
+            match (i.checked_sub(1).map(|j| self.points[j]), self.points.get(i)) {
+                (Some((t0, y0)), Some(&(t1, y1))) => (y1 - y0) / (t1 - t0),
+                _ => 0.0,
+            }
+        };
+        let mut out: Vec<f64> = (0..self.points.len())
+            .filter(|&i| slope(i) != slope(i + 1))
+            .map(|i| self.points[i].0)
             .filter(|&k| k > a && k < b)
             .collect();
         if let Some(proof) = self.proof {
@@ -240,6 +247,11 @@ mod tests {
         assert_eq!(h.knots(10.0, 20.0), Vec::<f64>::new());
         assert!(!h.is_constant());
         assert!(PressureHistory::constant(5e6, 0.0).is_constant());
+        // rows without a kink are no knots: a constant table, a row on a straight line
+        let flat = PressureHistory::table(vec![(0.0, 1e6), (5.0, 1e6), (9.0, 1e6)], 0.0);
+        assert!(flat.knots(-1.0, 100.0).is_empty());
+        let line = PressureHistory::table(vec![(0.0, 0.0), (5.0, 5.0), (9.0, 9.0)], 0.0);
+        assert_eq!(line.knots(-1.0, 100.0), [0.0, 9.0]);
     }
 
     #[test]
