@@ -132,10 +132,11 @@ fn a_depressurised_cold_night_opens_nothing_until_the_pressure_returns_onto_the_
 
 #[test]
 fn a_constant_pressure_history_is_the_run_without_one_bit_for_bit() {
-    // a liquid (ΔP) and a gas (its absolute inlet pressure, 100 bar over 1 atm)
+    // a liquid (ΔP, 2 bar) and a gas (its absolute inlet pressure: 100 bar over the outlet's
+    // 1 atm = 101325 Pa, in pascals so that the difference is exactly the service's)
     for (name, pressure) in [
         ("oring-nbr-water-80c.toml", None),
-        ("hydrogen-line-100bar.toml", Some("101.325")),
+        ("hydrogen-line-100bar.toml", Some("10101325")),
     ] {
         let base = shipped(name);
         let dp = base
@@ -144,8 +145,8 @@ fn a_constant_pressure_history_is_the_run_without_one_bit_for_bit() {
             .and_then(|l| l.split(' ').next())
             .unwrap()
             .to_owned();
-        let p = pressure.map_or(dp, str::to_owned);
-        let history = format!("time,pressure\nday,bar\n0,{p}\n1000,{p}\n");
+        let (p, unit) = pressure.map_or((dp, "bar"), |p| (p.to_owned(), "Pa"));
+        let history = format!("time,pressure\nday,{unit}\n0,{p}\n1000,{p}\n");
         let with = base.replace("[environment]\n", "[environment]\nhistory = \"p.csv\"\n");
         assert_ne!(with, base);
         let dir = TempDir::new().unwrap();
