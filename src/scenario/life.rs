@@ -1748,14 +1748,23 @@ squeeze = 0.2
         assert!(at_day(201.0) > at_day(171.0) && at_day(201.0) > at_day(231.0));
         let (lo, hi) = env.range();
         assert!((lo - 263.15).abs() < 1e-9 && (hi - 303.15).abs() < 1e-9);
-        // mutually exclusive, and no temperature below 0 K
-        let e = error(&with(
-            "[environment]\ntemperature = \"10 C\"\nhistory = \"t.csv\"\n",
-        ));
+        // mutually exclusive with a file that has a temperature column (read: a `time,pressure`
+        // file leaves the temperature to the key), and no temperature below 0 K
+        let dir = tempfile::tempdir().unwrap();
+        let both = with("[environment]\ntemperature = \"10 C\"\nhistory = \"t.csv\"\n");
+        let path = dir.path().join("s.toml");
+        std::fs::write(dir.path().join("t.csv"), "time,temperature\nh,C\n0,25\n").unwrap();
+        let e = Scenario::from_str(&both, &path).unwrap_err().to_string();
         assert!(
             e.contains(":19: environment.history: temperature and history are mutually exclusive"),
             "{e}"
         );
+        std::fs::write(dir.path().join("t.csv"), "time,pressure\nh,bar\n0,2\n1,0\n").unwrap();
+        let s = Scenario::from_str(&both, &path).unwrap();
+        assert!(s.life.environment.is_constant());
+        assert!((s.life.environment.at(0.0) - 283.15).abs() < 1e-9);
+        let p = s.life.pressure.as_ref().unwrap();
+        assert_eq!((p.difference_at(0.0), p.difference_at(3600.0)), (2e5, 0.0));
         let e = error(&with(
             "[environment]\ntemperature = \"10 K\"\ndaily_amplitude = \"20 K\"\n",
         ));
