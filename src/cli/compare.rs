@@ -129,13 +129,8 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
         .summary
         .as_ref()
         .map(|_| {
-            CompareSummary::new(
-                &args.scenario.display().to_string(),
-                &headline,
-                &runs,
-                &rows,
-            )
-            .to_json()
+            CompareSummary::new(&args.scenario.display().to_string(), &headline, &runs, &rows)
+                .to_json()
         })
         .transpose()?;
     let name = runs.first().map_or("", |(r, _)| r.scenario.name.as_str());

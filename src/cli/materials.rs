@@ -320,12 +320,7 @@ fn checked(
 fn check(args: &CheckArgs) -> Result<(), CliError> {
     use crate::scenario::library_check::{Check, RULE_HOURS, T10_TOLERANCE, T50_BAND};
     let compounds = checked(args)?;
-    let width = compounds
-        .iter()
-        .map(|(id, _, _)| id.chars().count())
-        .max()
-        .unwrap_or(9)
-        .max(9);
+    let width = compounds.iter().map(|(id, _, _)| id.chars().count()).max().unwrap_or(9).max(9);
     let mut out = format!(
         "{:<width$} {:>9} {:>9} {:>7} {:>4}   {:>8} {:>10} {:>4}   source\n",
         "compound", "T10 [°C]", "limit", "ΔT [K]", "", "rated", "t50 [h]", ""
@@ -342,10 +337,8 @@ fn check(args: &CheckArgs) -> Result<(), CliError> {
             "{id:<width$} {:>9} {:>9} {:>7} {:>4}   {:>8} {:>10} {:>4}   {}\n",
             c.t10.map_or("-".into(), |t| human(t - 273.15, 3)),
             human(p.low_limit - 273.15, 3),
-            c.t10.map_or("-".into(), |t| human(
-                ((t - p.low_limit) * 100.0).round() / 100.0,
-                2
-            )),
+            c.t10
+                .map_or("-".into(), |t| human(((t - p.low_limit) * 100.0).round() / 100.0, 2)),
             mark(c.t10_ok()),
             format!("{} °C", human(p.rated - 273.15, 3)),
             c.t50_hours.map_or("-".into(), |h| human(h, 3)),

@@ -1101,10 +1101,7 @@ fn materials_check_accepts_a_datasheet_compound() {
     assert!(row.contains("-30") && row.contains("100 °C"), "{row}");
     assert!(!out.contains("acm-70"), "only the file is checked: {out}");
 
-    let cold = dir.write(
-        "cold.toml",
-        &sheet.replace("t10 = \"-30 C\"", "t10 = \"-55 C\""),
-    );
+    let cold = dir.write("cold.toml", &sheet.replace("t10 = \"-30 C\"", "t10 = \"-55 C\""));
     let cold_compound = dir.path("cold-compound.toml");
     ok(&["materials", "new", s(&cold), "-o", s(&cold_compound)]);
     let out = sealsim()
@@ -1117,10 +1114,7 @@ fn materials_check_accepts_a_datasheet_compound() {
     let text = fs::read_to_string(&compound).unwrap();
     let classless = dir.write("classless.toml", &text.replace("class = \"nbr\"\n", ""));
     let err = rejected(&["materials", "check", s(&classless)]);
-    assert!(
-        err.contains("classless.toml") && err.contains("class = "),
-        "{err}"
-    );
+    assert!(err.contains("classless.toml") && err.contains("class = "), "{err}");
 }
 
 /// A datasheet that cannot make a compound exits 2 naming file, line and key (or the reading),

@@ -91,11 +91,7 @@ fn assert_json_agrees(c: &Compared) {
         assert_eq!(text(&entry["material"]), c.cells("material")[k]);
         assert_eq!(entry["rank"].as_u64(), Some(k as u64 + 1));
         for column in ["rank_basis", "rating", "rating_source"] {
-            assert_eq!(
-                text(&entry[column]),
-                c.cells(column)[k],
-                "{column} of row {k}"
-            );
+            assert_eq!(text(&entry[column]), c.cells(column)[k], "{column} of row {k}");
         }
         assert_eq!(text(&entry["summary"]["verdict"]), c.cells("verdict")[k]);
     }
