@@ -2507,6 +2507,7 @@ mod tests {
             sealing_force: 1000.0,
             peak_pressure: 2e6,
             mean_pressure: 1.5e6,
+            pressure_difference: 1e6,
             contact_width: 1e-3,
             u_c,
             leak_rate,

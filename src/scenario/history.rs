@@ -1,18 +1,24 @@
-//! Temperature histories: a CSV file of `time, temperature` rows (`environment.history`).
+//! Environment histories: a CSV file of `time, temperature` rows, optionally with a `pressure`
+//! column, or `time, pressure` alone (`environment.history`).
 //!
 //! Format:
 //! * lines starting with `#` and blank lines are ignored (a leading byte-order mark too);
-//! * the first row is the header `time,temperature` (names case-insensitive);
-//! * a units row must follow, e.g. `day,C` or `h,K`: the time unit is any time unit of
-//!   [`crate::units`] (`s`, `min`, `h`, `day`, `week`, `year`, …), the temperature unit an
-//!   absolute scale (`K`, `C`, `°C`, `degC`, `F`, …); a file without one is refused (its line
-//!   named), since a bare temperature is ambiguous;
-//! * then at least one data row of two finite numbers; times strictly increasing (t = 0 is the
-//!   installation); temperatures above 0 K.
+//! * the first row is the header: `time,temperature`, `time,temperature,pressure` or
+//!   `time,pressure` (names case-insensitive);
+//! * a units row must follow, one unit a column, e.g. `day,C`, `h,K,bar` or `min,psi`: the time
+//!   unit is any time unit of [`crate::units`] (`s`, `min`, `h`, `day`, `week`, `year`, …), the
+//!   temperature unit an absolute scale (`K`, `C`, `°C`, `degC`, `F`, …), the pressure unit a
+//!   unit of pressure (`Pa`, `kPa`, `bar`, `MPa`, `psi`, …); a file without one, or with a column
+//!   left without its unit, is refused (its line named), since a bare number is ambiguous;
+//! * then at least one data row of finite numbers; times strictly increasing (t = 0 is the
+//!   installation); temperatures above 0 K; pressures finite (what they may be — ΔP ≥ 0 for a
+//!   liquid, an absolute inlet pressure at or above the outlet's for a gas — is checked against
+//!   the fluid by the scenario, at the row's line).
 //!
-//! Between rows the temperature is linear in time; before the first and after the last row it
-//! is constant ([`crate::material::TemperatureHistory::table`]). Parsed by hand (like the PSD
-//! files) so that every error names the real line.
+//! Between rows the values are linear in time; before the first and after the last row they
+//! are constant ([`crate::material::TemperatureHistory::table`],
+//! [`crate::pressure::PressureHistory::table`]). Parsed by hand (like the PSD files) so that
+//! every error names the real line.
 
 use crate::units::{self, Dimension, show};
 
@@ -30,21 +36,65 @@ fn at(line: usize, message: impl Into<String>) -> HistoryError {
     }
 }
 
-/// The units of the two columns: seconds per time unit, and the temperature unit (`None`:
-/// kelvin).
-struct Units {
-    seconds: f64,
-    temperature: Option<String>,
+/// One pressure of a history file: time \[s\], pressure \[Pa\] and the 1-based line it is on.
+pub(super) type PressureRow = (f64, f64, usize);
+
+/// The columns of a history file, in SI: `(t [s], T [K])` and `(t [s], P [Pa], line)`.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub(super) struct History {
+    pub temperature: Option<Vec<(f64, f64)>>,
+    pub pressure: Option<Vec<PressureRow>>,
 }
 
-/// The `(time [s], temperature [K])` points of a history file's text.
+/// Which quantity a column after `time` holds.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Column {
+    Temperature,
+    Pressure,
+}
+
+impl Column {
+    fn name(self) -> &'static str {
+        match self {
+            Column::Temperature => "temperature",
+            Column::Pressure => "pressure",
+        }
+    }
+}
+
+/// The accepted headers: their columns after `time`.
+const HEADERS: [&[Column]; 3] = [
+    &[Column::Temperature],
+    &[Column::Temperature, Column::Pressure],
+    &[Column::Pressure],
+];
+
+/// The unit of one column: seconds per time unit, the temperature unit, or pascals per
+/// pressure unit.
+enum Unit {
+    Temperature(String),
+    Pressure(f64),
+}
+
+/// The `(time [s], temperature [K])` points of a temperature history file's text (a file that
+/// must carry its temperature).
+#[cfg(test)]
 pub(super) fn parse(text: &str) -> Result<Vec<(f64, f64)>, HistoryError> {
+    let history = parse_history(text)?;
+    history.temperature.ok_or(HistoryError {
+        line: None,
+        message: "no temperature column".into(),
+    })
+}
+
+/// The columns of a history file's text.
+pub(super) fn parse_history(text: &str) -> Result<History, HistoryError> {
     let mut rows = super::data_lines(text).peekable();
     let Some((line, header)) = rows.next() else {
         return Err(HistoryError {
             line: None,
-            message: "empty file: expected the header row `time,temperature` and at least one \
-                      data row"
+            message: "empty file: expected the header row `time,temperature` (or \
+                      `time,temperature,pressure`, `time,pressure`) and at least one data row"
                 .into(),
         });
     };
@@ -52,76 +102,70 @@ pub(super) fn parse(text: &str) -> Result<Vec<(f64, f64)>, HistoryError> {
         .split(',')
         .map(|c| c.trim().to_ascii_lowercase())
         .collect();
-    if names != ["time", "temperature"] {
+    let Some(columns) = HEADERS.into_iter().find(|h| {
+        names.len() == h.len() + 1
+            && names[0] == "time"
+            && h.iter().zip(&names[1..]).all(|(c, n)| c.name() == n)
+    }) else {
         return Err(at(
             line,
-            format!("expected the header row `time,temperature`, got {header:?}"),
+            format!(
+                "expected the header row `time,temperature` (or `time,temperature,pressure`, \
+                 `time,pressure`), got {header:?}"
+            ),
         ));
-    }
+    };
     // the units row is required: a bare `0,20` is 20 K to a parser and 20 °C to a reader
-    let unit = match rows.next() {
+    let (seconds, units) = match rows.next() {
         Some((line, row)) if row.split(',').all(|c| c.trim().parse::<f64>().is_err()) => {
-            units_row(line, row)?
+            units_row(line, row, columns)?
         }
         Some((line, _)) => {
             return Err(at(
                 line,
-                "no units row: add one after the header, e.g. `h,C` (hours, °C) or `s,K` — \
-                 without it \"20\" could be 20 K or 20 °C",
+                format!(
+                    "no units row: add one after the header, e.g. `{}` — without it \"20\" \
+                     could be 20 K or 20 °C, \"3\" 3 bar or 3 MPa",
+                    example_units(columns)
+                ),
             ));
         }
         None => {
             return Err(at(
                 line,
-                "no units row and no data: expected e.g. `h,C` after the header, then data rows",
+                format!(
+                    "no units row and no data: expected e.g. `{}` after the header, then data \
+                     rows",
+                    example_units(columns)
+                ),
             ));
         }
     };
-    let mut points: Vec<(f64, f64)> = Vec::new();
+    let mut temperature: Vec<(f64, f64)> = Vec::new();
+    let mut pressure: Vec<PressureRow> = Vec::new();
+    let mut last: Option<f64> = None;
     for (line, row) in rows {
         let cells: Vec<&str> = row.split(',').map(str::trim).collect();
-        let [t_cell, temp_cell] = cells[..] else {
+        if cells.len() != columns.len() + 1 {
             return Err(at(
                 line,
                 format!(
-                    "expected 2 comma-separated columns (time, temperature), found {}",
+                    "expected {} comma-separated columns (time, {}), found {}",
+                    columns.len() + 1,
+                    columns
+                        .iter()
+                        .map(|c| c.name())
+                        .collect::<Vec<_>>()
+                        .join(", "),
                     cells.len()
                 ),
             ));
-        };
-        let t = number(t_cell, "time", line)? * unit.seconds;
-        let value = number(temp_cell, "temperature", line)?;
-        let kelvin = match &unit.temperature {
-            None => value,
-            Some(u) => units::absolute_temperature(value, u)
-                .map_err(|e| at(line, format!("temperature: {e}")))?,
-        };
-        if !(t.is_finite() && kelvin.is_finite()) {
+        }
+        let t = number(cells[0], "time", line)? * seconds;
+        if !t.is_finite() {
             return Err(at(line, "the value is too large once converted to SI"));
         }
-        if kelvin <= 0.0 {
-            return Err(at(
-                line,
-                format!(
-                    "temperature must be above absolute zero, got {} K",
-                    show(kelvin)
-                ),
-            ));
-        }
-        // the scenario's plausible range of absolute temperatures (as for its own keys)
-        let (lo, hi) = super::material::TEMPERATURE_RANGE;
-        if !(lo..=hi).contains(&kelvin) {
-            return Err(at(
-                line,
-                format!(
-                    "temperature must lie in [{}, {}] K, got {} K",
-                    show(lo),
-                    show(hi),
-                    show(kelvin)
-                ),
-            ));
-        }
-        if let Some(&(prev, _)) = points.last()
+        if let Some(prev) = last
             && t <= prev
         {
             return Err(at(
@@ -133,31 +177,109 @@ pub(super) fn parse(text: &str) -> Result<Vec<(f64, f64)>, HistoryError> {
                 ),
             ));
         }
-        points.push((t, kelvin));
+        last = Some(t);
+        for (cell, unit) in cells[1..].iter().zip(&units) {
+            match unit {
+                Unit::Temperature(u) => temperature.push((t, kelvin(cell, u, line)?)),
+                Unit::Pressure(pascal) => {
+                    let p = number(cell, "pressure", line)? * pascal;
+                    if !p.is_finite() {
+                        return Err(at(line, "the value is too large once converted to SI"));
+                    }
+                    pressure.push((t, p, line));
+                }
+            }
+        }
     }
-    if points.is_empty() {
+    if last.is_none() {
         return Err(HistoryError {
             line: None,
-            message: "no data rows: a temperature history needs at least one (time, \
-                      temperature) row"
-                .into(),
+            message: "no data rows: a history needs at least one (time, …) row".into(),
         });
     }
-    Ok(points)
+    Ok(History {
+        temperature: columns
+            .contains(&Column::Temperature)
+            .then_some(temperature),
+        pressure: columns.contains(&Column::Pressure).then_some(pressure),
+    })
 }
 
-/// The units row: a time unit and an absolute temperature unit.
-fn units_row(line: usize, row: &str) -> Result<Units, HistoryError> {
-    let cells: Vec<&str> = row.split(',').map(str::trim).collect();
-    let [time_unit, temperature_unit] = cells[..] else {
+/// A units row to suggest for `columns`.
+fn example_units(columns: &[Column]) -> String {
+    let mut out = String::from("h");
+    for c in columns {
+        out.push_str(match c {
+            Column::Temperature => ",C",
+            Column::Pressure => ",bar",
+        });
+    }
+    out
+}
+
+/// One temperature cell in the unit `unit` → kelvin, checked.
+fn kelvin(cell: &str, unit: &str, line: usize) -> Result<f64, HistoryError> {
+    let value = number(cell, "temperature", line)?;
+    let kelvin = units::absolute_temperature(value, unit)
+        .map_err(|e| at(line, format!("temperature: {e}")))?;
+    if !kelvin.is_finite() {
+        return Err(at(line, "the value is too large once converted to SI"));
+    }
+    if kelvin <= 0.0 {
         return Err(at(
             line,
             format!(
-                "expected a units row of 2 columns (e.g. `day,C`), found {} cells",
-                cells.len()
+                "temperature must be above absolute zero, got {} K",
+                show(kelvin)
             ),
         ));
-    };
+    }
+    // the scenario's plausible range of absolute temperatures (as for its own keys)
+    let (lo, hi) = super::material::TEMPERATURE_RANGE;
+    if !(lo..=hi).contains(&kelvin) {
+        return Err(at(
+            line,
+            format!(
+                "temperature must lie in [{}, {}] K, got {} K",
+                show(lo),
+                show(hi),
+                show(kelvin)
+            ),
+        ));
+    }
+    Ok(kelvin)
+}
+
+/// The units row: a time unit, then one unit for each column (an absolute temperature unit, a
+/// pressure unit). Returns seconds per time unit and the columns' units.
+fn units_row(line: usize, row: &str, columns: &[Column]) -> Result<(f64, Vec<Unit>), HistoryError> {
+    let cells: Vec<&str> = row.split(',').map(str::trim).collect();
+    if cells.len() != columns.len() + 1 || cells.iter().any(|c| c.is_empty()) {
+        let missing = columns
+            .iter()
+            .enumerate()
+            .filter(|(i, _)| cells.get(i + 1).is_none_or(|c| c.is_empty()))
+            .map(|(_, c)| c.name())
+            .collect::<Vec<_>>();
+        return Err(at(
+            line,
+            format!(
+                "expected a units row of {} columns (e.g. `{}`), found {} cells{}",
+                columns.len() + 1,
+                example_units(columns),
+                cells.len(),
+                if missing.is_empty() {
+                    String::new()
+                } else {
+                    format!(
+                        ": the {} column has no unit — a bare number is ambiguous, add it",
+                        missing.join(" and ")
+                    )
+                }
+            ),
+        ));
+    }
+    let time_unit = cells[0];
     let seconds = match units::parse_unit(time_unit) {
         Ok((factor, Dimension::TIME)) => factor,
         Ok((_, found)) => {
@@ -171,23 +293,31 @@ fn units_row(line: usize, row: &str) -> Result<Units, HistoryError> {
         }
         Err(e) => return Err(at(line, format!("time unit: {e}"))),
     };
-    match units::parse_unit(temperature_unit) {
-        Ok((_, Dimension::TEMPERATURE)) => {}
-        Ok((_, found)) => {
-            return Err(at(
-                line,
-                format!(
-                    "temperature unit {temperature_unit:?} is not a temperature unit ({})",
-                    found.describe()
-                ),
-            ));
+    let mut units = Vec::with_capacity(columns.len());
+    for (column, unit) in columns.iter().zip(&cells[1..]) {
+        let (dimension, what) = match column {
+            Column::Temperature => (Dimension::TEMPERATURE, "a temperature unit"),
+            Column::Pressure => (Dimension::PRESSURE, "a pressure unit (e.g. bar, MPa, psi)"),
+        };
+        match units::parse_unit(unit) {
+            Ok((factor, d)) if d == dimension => units.push(match column {
+                Column::Temperature => Unit::Temperature((*unit).to_owned()),
+                Column::Pressure => Unit::Pressure(factor),
+            }),
+            Ok((_, found)) => {
+                return Err(at(
+                    line,
+                    format!(
+                        "{} unit {unit:?} is not {what} ({})",
+                        column.name(),
+                        found.describe()
+                    ),
+                ));
+            }
+            Err(e) => return Err(at(line, format!("{} unit: {e}", column.name()))),
         }
-        Err(e) => return Err(at(line, format!("temperature unit: {e}"))),
     }
-    Ok(Units {
-        seconds,
-        temperature: Some(temperature_unit.to_owned()),
-    })
+    Ok((seconds, units))
 }
 
 /// A finite number from one cell.

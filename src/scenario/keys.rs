@@ -223,7 +223,7 @@ const TOP: &[Key] = &[
         "environment",
         Tbl,
         Absent("constant at the shift's reference temperature, or 23 °C"),
-        "the temperature history of a life run",
+        "the temperature and pressure history of a life run",
     ),
     key(
         "failure",
@@ -1044,7 +1044,9 @@ const ENVIRONMENT: &[Key] = &[
         "history",
         File,
         Absent(""),
-        "CSV of the temperature against time (README \"Temperature history\")",
+        "CSV of the temperature, the fluid pressure or both against time (README \"Temperature \
+         history\"; a `pressure` column is ΔP for a liquid, a gas's absolute inlet pressure; \
+         docs/model.md §8.4)",
     ),
     key(
         "daily_amplitude",
@@ -1057,6 +1059,28 @@ const ENVIRONMENT: &[Key] = &[
         Quantity(life::YEARLY_AMPLITUDE),
         Absent("no yearly cycle"),
         "amplitude of a sinusoidal yearly cycle (365.25 d), maximum at noon on 21 July",
+    ),
+    key(
+        "daily_pressure",
+        Quantity(life::DAILY_PRESSURE),
+        Absent("no pressure cycle"),
+        "the fluid pressure from 21:00 to 09:00 each day (a nightly shutdown, e.g. \"0 bar\"; \
+         ΔP for a liquid, a gas's absolute inlet pressure), the service's the rest of the day, \
+         each change over 60 s (docs/model.md §8.4)",
+    ),
+    key(
+        "proof_pressure",
+        Quantity(life::PROOF_PRESSURE),
+        Absent("no proof"),
+        "a proof test before service: this pressure from the installation for \
+         `proof_duration`, then the service's (extrusion and lift-off at it count; \
+         docs/model.md §8.4)",
+    ),
+    key(
+        "proof_duration",
+        Quantity(life::PROOF_DURATION),
+        Absent("required with `proof_pressure`"),
+        "how long the proof pressure is held from the installation",
     ),
 ];
 
@@ -1528,7 +1552,10 @@ pub(super) const TABLES: &[Table] = &[
         path: "environment",
         prose: "The temperature history of `sealsim run`: constant or a CSV table, plus \
                 sinusoidal cycles (t = 0, the installation, is midnight of 1 January). The \
-                cycles must not take the temperature to 0 K.",
+                cycles must not take the temperature to 0 K. The fluid pressure against time \
+                (docs/model.md §8.4): the CSV's `pressure` column, a daily cycle to \
+                `daily_pressure` and a proof before service; ΔP for a liquid, a gas's absolute \
+                inlet pressure.",
         keys: ENVIRONMENT,
     },
     Table {

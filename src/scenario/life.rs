@@ -91,6 +91,24 @@ pub(super) const YEARLY_AMPLITUDE: Field = field(
     "K",
     Bound::Range(0.0, 500.0),
 );
+pub(super) const DAILY_PRESSURE: Field = field(
+    "environment.daily_pressure",
+    Dimension::PRESSURE,
+    "Pa",
+    Bound::Range(0.0, 1e10),
+);
+pub(super) const PROOF_PRESSURE: Field = field(
+    "environment.proof_pressure",
+    Dimension::PRESSURE,
+    "Pa",
+    Bound::Range(0.0, 1e10),
+);
+pub(super) const PROOF_DURATION: Field = field(
+    "environment.proof_duration",
+    Dimension::TIME,
+    "s",
+    Bound::Open(0.0, 1e9),
+);
 pub(super) const MAX_LEAK_RATE: Field = field(
     "failure.max_leak_rate",
     Dimension::VOLUME_FLOW,
@@ -322,6 +340,8 @@ pub(super) struct FailureContext {
     /// Why the shutdown check does not apply to this seal (`None`: it does): its keys are
     /// then refused rather than ignored.
     pub no_shutdown: Option<&'static str>,
+    /// The highest pressure difference of a pressure history \[Pa\] (`None`: the service's).
+    pub highest_pressure: Option<f64>,
 }
 
 /// The keys of each seal kind (for the messages).
@@ -545,20 +565,26 @@ impl Source<'_> {
             return Ok(TemperatureHistory::constant(default));
         };
         let raw = table.get_ref();
-        let mut history = match (&raw.temperature, &raw.history) {
-            (Some(_), Some(file)) => {
+        // a file of `time,pressure` leaves the temperature to `temperature` or its default
+        let file = raw
+            .history
+            .as_ref()
+            .map(|file| Ok::<_, ScenarioError>((file, self.history_file(file)?.temperature)))
+            .transpose()?;
+        let mut history = match (&raw.temperature, file) {
+            (Some(_), Some((file, Some(_)))) => {
                 return Err(self.error(
                     file.span(),
                     "environment.history",
                     "temperature and history are mutually exclusive: give a constant \
-                     temperature or a history file, not both",
+                     temperature or a history file with a temperature column, not both",
                 ));
             }
-            (Some(t), None) => TemperatureHistory::constant(
+            (_, Some((_, Some(points)))) => TemperatureHistory::table(points),
+            (Some(t), _) => TemperatureHistory::constant(
                 self.absolute_temperature(t, "environment.temperature")?,
             ),
-            (None, Some(file)) => TemperatureHistory::table(self.history_file(file)?),
-            (None, None) => TemperatureHistory::constant(default),
+            (None, _) => TemperatureHistory::constant(default),
         };
         let daily = self.optional(raw.daily_amplitude.as_ref(), &DAILY_AMPLITUDE)?;
         let yearly = self.optional(raw.yearly_amplitude.as_ref(), &YEARLY_AMPLITUDE)?;
@@ -601,7 +627,7 @@ impl Source<'_> {
     }
 
     /// Reads `environment.history` (relative to the scenario's directory).
-    fn history_file(&self, file: &Spanned<String>) -> Result<Vec<(f64, f64)>, ScenarioError> {
+    fn history_file(&self, file: &Spanned<String>) -> Result<history::History, ScenarioError> {
         let path = self.relative_path(file.get_ref());
         let text = std::fs::read_to_string(&path).map_err(|e| {
             self.error(
@@ -610,13 +636,125 @@ impl Source<'_> {
                 format!("cannot read temperature history {}: {e}", path.display()),
             )
         })?;
-        history::parse(&text).map_err(|e| ScenarioError::HistoryFormat {
-            history: path,
-            history_line: e.line,
+        history::parse_history(&text).map_err(|e| self.history_error(file, e.line, e.message))
+    }
+
+    /// An error on line `line` of the history file `environment.history` names.
+    fn history_error(
+        &self,
+        file: &Spanned<String>,
+        line: Option<usize>,
+        message: String,
+    ) -> ScenarioError {
+        ScenarioError::HistoryFormat {
+            history: self.relative_path(file.get_ref()),
+            history_line: line,
             scenario: self.path.to_path_buf(),
             line: self.line(file.span().start),
-            message: e.message,
-        })
+            message,
+        }
+    }
+
+    /// The fluid pressure against time (docs/model.md §8.4): the history file's `pressure`
+    /// column, `daily_pressure` (the low phase of a daily cycle, 21:00–09:00) and the proof
+    /// before service (`proof_pressure` held for `proof_duration` from the installation).
+    /// Pressures are in the fluid's terms: ΔP for a liquid (≥ 0), a gas's absolute inlet
+    /// pressure (at or above its outlet pressure, which stays fixed). `None` when none is
+    /// given: the run then has the constant service pressure, bit for bit as before.
+    pub(super) fn pressure_history(
+        &self,
+        table: Option<&Spanned<RawEnvironment>>,
+        fluid: &crate::fluid::Fluid,
+    ) -> Result<Option<crate::pressure::PressureHistory>, ScenarioError> {
+        use crate::pressure::{PressureHistory, Proof};
+        let Some(table) = table else {
+            return Ok(None);
+        };
+        let raw = table.get_ref();
+        let datum = fluid.gas.map_or(0.0, |g| g.outlet_pressure);
+        let service = datum + fluid.pressure_difference;
+        // what a pressure may be, and the fix when it is not
+        let check = |p: f64| -> Result<(), String> {
+            match fluid.gas {
+                Some(_) if p < 0.0 => Err(format!(
+                    "{} Pa is a negative absolute pressure: for a gas the pressure is the \
+                     absolute inlet pressure (a gauge reading plus the atmosphere, e.g. 7 bar \
+                     gauge is \"8.01325 bar\")",
+                    show(p)
+                )),
+                Some(_) if p < datum => Err(format!(
+                    "{} Pa is below the gas's outlet pressure ({} Pa): the inlet pressure of a \
+                     gas is absolute and the flow runs from inlet to outlet; give at least the \
+                     outlet pressure (equal to it: depressurised)",
+                    show(p),
+                    show(datum)
+                )),
+                None if p < 0.0 => Err(format!(
+                    "{} Pa is a negative pressure difference: the pressure of a liquid is the \
+                     difference ΔP across the seal, 0 when depressurised (a reversed ΔP, the \
+                     seal pushed from the other side, is not modelled)",
+                    show(p)
+                )),
+                _ => Ok(()),
+            }
+        };
+        let key = |q: &Quantity, field: &Field| -> Result<f64, ScenarioError> {
+            let p = self.quantity(q, field)?;
+            check(p).map_err(|m| self.error(q.span(), field.key, m))?;
+            Ok(p)
+        };
+        let mut history = match &raw.history {
+            Some(file) => match self.history_file(file)?.pressure {
+                Some(rows) => {
+                    for &(_, p, line) in &rows {
+                        check(p).map_err(|m| self.history_error(file, Some(line), m))?;
+                    }
+                    Some(PressureHistory::table(
+                        rows.into_iter().map(|(t, p, _)| (t, p)).collect(),
+                        datum,
+                    ))
+                }
+                None => None,
+            },
+            None => None,
+        };
+        if let Some(q) = &raw.daily_pressure {
+            let low = key(q, &DAILY_PRESSURE)?;
+            history = Some(
+                history
+                    .unwrap_or_else(|| PressureHistory::constant(service, datum))
+                    .with_daily_low(low),
+            );
+        }
+        match (&raw.proof_pressure, &raw.proof_duration) {
+            (Some(q), Some(d)) => {
+                let pressure = key(q, &PROOF_PRESSURE)?;
+                let duration = self.quantity(d, &PROOF_DURATION)?;
+                history = Some(
+                    history
+                        .unwrap_or_else(|| PressureHistory::constant(service, datum))
+                        .with_proof(Proof { pressure, duration }),
+                );
+            }
+            (Some(q), None) => {
+                return Err(self.error(
+                    q.span(),
+                    PROOF_PRESSURE.key,
+                    "a proof pressure needs its duration: add proof_duration (e.g. \
+                     \"10 min\"), the time it is held from the installation before service",
+                ));
+            }
+            (None, Some(d)) => {
+                return Err(self.error(
+                    d.span(),
+                    PROOF_DURATION.key,
+                    "a proof duration without its pressure: add proof_pressure (e.g. 1.5 times \
+                     the service pressure) or remove proof_duration",
+                ));
+            }
+            (None, None) => {}
+        }
+        Ok(history)
     }
 
     /// `[failure]`: any subset of the criteria (none: the run warns that the seal can only
@@ -632,6 +770,11 @@ impl Source<'_> {
         environment: &crate::material::TemperatureHistory,
         context: &FailureContext,
     ) -> Result<FailureCriteria, ScenarioError> {
+        // the restart's pressure is bounded by the highest of the run (the service's, or a
+        // pressure history's, docs/model.md §8.4)
+        let highest = context
+            .highest_pressure
+            .unwrap_or(fluid.pressure_difference);
         let (coldest, hottest) = environment.range();
         let default_shutdown = crate::simulate::Shutdown {
             temperature: DEFAULT_SHUTDOWN_TEMPERATURE.min(coldest),
@@ -725,7 +868,7 @@ impl Source<'_> {
             )?
             .unwrap_or(0.0);
         if let Some(q) = &raw.minimum_pressure_difference
-            && minimum > fluid.pressure_difference
+            && minimum > highest
         {
             return Err(self.error(
                 q.span(),
@@ -735,7 +878,7 @@ impl Source<'_> {
                      lowest pressure the seal must hold at a restart; give at most the service \
                      ΔP, e.g. \"0 bar\"",
                     show(minimum),
-                    show(fluid.pressure_difference)
+                    show(highest)
                 ),
             ));
         }
@@ -1143,10 +1286,19 @@ impl Source<'_> {
         &self,
         simulation: Option<&Spanned<RawSimulation>>,
         environment: Option<&Spanned<RawEnvironment>>,
-        history: &TemperatureHistory,
+        (history, pressure): (
+            &TemperatureHistory,
+            Option<&crate::pressure::PressureHistory>,
+        ),
         time: &TimeGrid,
     ) -> Result<(), ScenarioError> {
-        let Some(period) = history.shortest_period() else {
+        // a daily pressure cycle costs four knots a day, counted as a cycle's eight (the bound)
+        let Some(period) = history
+            .shortest_period()
+            .into_iter()
+            .chain(pressure.and_then(crate::pressure::PressureHistory::period))
+            .min_by(f64::total_cmp)
+        else {
             return Ok(());
         };
         let steps = 8.0 * (time.duration - time.start) / period;
@@ -1159,6 +1311,12 @@ impl Source<'_> {
             (None, Some(env)) => {
                 let raw = env.get_ref();
                 match (&raw.daily_amplitude, &raw.yearly_amplitude) {
+                    (None, _) if period < YEAR && raw.daily_pressure.is_some() => (
+                        raw.daily_pressure
+                            .as_ref()
+                            .map_or(env.span(), Spanned::span),
+                        DAILY_PRESSURE.key,
+                    ),
                     (Some(q), _) if period < YEAR => (q.span(), DAILY_AMPLITUDE.key),
                     (_, Some(q)) => (q.span(), YEARLY_AMPLITUDE.key),
                     _ => (env.span(), DURATION.key),
@@ -1769,14 +1927,23 @@ squeeze = 0.2
         assert!(at_day(201.0) > at_day(171.0) && at_day(201.0) > at_day(231.0));
         let (lo, hi) = env.range();
         assert!((lo - 263.15).abs() < 1e-9 && (hi - 303.15).abs() < 1e-9);
-        // mutually exclusive, and no temperature below 0 K
-        let e = error(&with(
-            "[environment]\ntemperature = \"10 C\"\nhistory = \"t.csv\"\n",
-        ));
+        // mutually exclusive with a file that has a temperature column (read: a `time,pressure`
+        // file leaves the temperature to the key), and no temperature below 0 K
+        let dir = tempfile::tempdir().unwrap();
+        let both = with("[environment]\ntemperature = \"10 C\"\nhistory = \"t.csv\"\n");
+        let path = dir.path().join("s.toml");
+        std::fs::write(dir.path().join("t.csv"), "time,temperature\nh,C\n0,25\n").unwrap();
+        let e = Scenario::from_str(&both, &path).unwrap_err().to_string();
         assert!(
             e.contains(":19: environment.history: temperature and history are mutually exclusive"),
             "{e}"
         );
+        std::fs::write(dir.path().join("t.csv"), "time,pressure\nh,bar\n0,2\n1,0\n").unwrap();
+        let s = Scenario::from_str(&both, &path).unwrap();
+        assert!(s.life.environment.is_constant());
+        assert!((s.life.environment.at(0.0) - 283.15).abs() < 1e-9);
+        let p = s.life.pressure.as_ref().unwrap();
+        assert_eq!((p.difference_at(0.0), p.difference_at(3600.0)), (2e5, 0.0));
         let e = error(&with(
             "[environment]\ntemperature = \"10 K\"\ndaily_amplitude = \"20 K\"\n",
         ));

@@ -347,6 +347,9 @@ pub(super) struct RawEnvironment {
     pub history: Option<Spanned<String>>,
     pub daily_amplitude: Option<Quantity>,
     pub yearly_amplitude: Option<Quantity>,
+    pub daily_pressure: Option<Quantity>,
+    pub proof_pressure: Option<Quantity>,
+    pub proof_duration: Option<Quantity>,
 }
 
 /// `[failure]`: any subset of the criteria.

@@ -424,12 +424,13 @@ impl Source<'_> {
                 "thermal_expansion",
             ),
         )?;
+        let pressure = self.pressure_history(raw.environment.as_ref(), &fluid)?;
         let service = self.service(
             raw,
             &material,
             replacement.is_some(),
             &fluid,
-            &environment,
+            (&environment, pressure.as_ref()),
             &seal,
         )?;
         if thermal_strain.is_none() {
@@ -472,6 +473,7 @@ impl Source<'_> {
             contamination: service.contamination,
             motion: service.motion,
             permeation,
+            pressure,
         };
         let mut warnings = seal.warnings;
         // the gland's checks that need the service: [motion] (dynamic squeeze), a vacuum outlet
@@ -665,7 +667,10 @@ impl Source<'_> {
         material: &Material,
         replaced: bool,
         fluid: &Fluid,
-        environment: &crate::material::TemperatureHistory,
+        (environment, pressure): (
+            &crate::material::TemperatureHistory,
+            Option<&crate::pressure::PressureHistory>,
+        ),
         seal: &super::life::SealSpec,
     ) -> Result<Service, ScenarioError> {
         let (geometry, loading) = (&seal.geometry, seal.loading);
@@ -694,13 +699,15 @@ impl Source<'_> {
                      too; the check is of a seal held at a fixed compression (loading = \
                      \"displacement\")",
                 ),
+                highest_pressure: pressure
+                    .map(crate::pressure::PressureHistory::highest_difference),
             },
         )?;
         let (time, fidelity) = self.simulation(raw.simulation.as_ref())?;
         self.cycle_budget(
             raw.simulation.as_ref(),
             raw.environment.as_ref(),
-            environment,
+            (environment, pressure),
             &time,
         )?;
         let clogging_tolerance = self.clogging_tolerance(raw.simulation.as_ref())?;

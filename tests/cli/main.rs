@@ -35,6 +35,7 @@ mod levels;
 mod materials;
 mod motion;
 mod new;
+mod pressure_history;
 mod ranges;
 mod ranking;
 mod report;

@@ -88,6 +88,7 @@ pub(crate) fn oring_problem(material: Material) -> LifeProblem {
         contamination: None,
         motion: None,
         permeation: None,
+        pressure: None,
     }
 }
 

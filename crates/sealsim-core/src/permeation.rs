@@ -890,6 +890,22 @@ impl SealPermeation {
         if flow.is_finite() { flow.max(0.0) } else { 0.0 }
     }
 
+    /// [`SealPermeation::throughput`] with the inlet pressure `p_high` \[Pa\] instead of the
+    /// service's: a pressure history (docs/model.md §8.4, §13.7), quasi-steady like a varying
+    /// temperature — the steady flow is linear in P_a − P_b, the build-up since installation is
+    /// kept.
+    pub fn throughput_at(&self, time: f64, temperature: f64, p_high: f64) -> f64 {
+        let flow = self.path.molar_flow_at(
+            self.data.permeability_at(temperature),
+            self.data.diffusivity_at(temperature),
+            p_high.max(self.p_low),
+            self.p_low,
+            time,
+        );
+        let flow = if flow.is_finite() { flow.max(0.0) } else { 0.0 };
+        pv_throughput(flow, temperature)
+    }
+
     /// Throughput \[Pa·m³/s\] at `time` \[s\] and `temperature` \[K\]: [`pv_throughput`] of
     /// [`SealPermeation::molar_flow`] at the same temperature.
     pub fn throughput(&self, time: f64, temperature: f64) -> f64 {

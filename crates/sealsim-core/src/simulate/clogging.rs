@@ -385,7 +385,7 @@ impl Simulator<'_> {
     /// 6 V/A from the solid volume and surface deposited so far.
     fn cake_ratio(&self, snap: &Snapshot, state: &Mechanics, seal_static: f64) -> f64 {
         let p = self.problem;
-        let (Some(_), dp) = (&p.contamination, p.fluid.pressure_difference) else {
+        let (Some(_), dp) = (&p.contamination, snap.pressure_difference) else {
             return 0.0;
         };
         if !(state.cake_volume > 0.0

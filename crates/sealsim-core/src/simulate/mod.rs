@@ -163,6 +163,8 @@ struct Snapshot {
     /// The permeation as the volume flow at the mean pressure p̄ it stands for, Q/p̄ \[m³/s\]:
     /// what the leak-rate criterion adds to `leak_rate` (a detector sees both; §8).
     permeation_flow: f64,
+    /// The pressure difference ΔP at the snapshot's time \[Pa\] (docs/model.md §8.4).
+    pressure_difference: f64,
 }
 
 /// The energisation factor of the restart check (docs/model.md §8.2): 0. A restart starts from
@@ -460,10 +462,8 @@ impl<'a> Simulator<'a> {
         let first = self.snapshot(&installed);
         self.assess(&installed, &first, &mut findings);
         let mut rows = vec![self.row(&installed, &first)];
-        let mut course = Course::start(&first, self.contact_peak(&first.profile));
-        let mut failure = p
-            .failure
-            .at_start(&first.as_event_input(0.0, p.fluid.pressure_difference));
+        let mut course = Course::start(&first, self.snap_peak(&first));
+        let mut failure = p.failure.at_start(&first.as_event_input(0.0));
         let outputs = p.time.times();
         let mut next_output = 1;
         let stop = p.failure.stop_at_failure;
@@ -479,7 +479,7 @@ impl<'a> Simulator<'a> {
             }
             for to in stepper.window(&at, ends) {
                 self.assess(&to.state, &to.snap, &mut findings);
-                course.record(&at, &to, self.contact_peak(&to.snap.profile));
+                course.record(&at, &to, self.snap_peak(&to.snap));
                 if failure.is_none() {
                     failure = self.locate_failure(&at.state, &at.snap, &to.state, &to.snap);
                 }
@@ -593,7 +593,8 @@ impl<'a> Simulator<'a> {
         let moduli = self.asperity_moduli(&state);
         let installed = self.profile_at(&state, 0.0);
         let own = installed.peak();
-        let energised = self.contact_peak(&installed);
+        let dp = self.problem.pressure_at(0.0);
+        let energised = self.contact_peak(&installed, dp);
         // at the installation's own peak the very profile of the run's first row (bit for bit)
         let profile = if peak == energised {
             installed
@@ -601,7 +602,7 @@ impl<'a> Simulator<'a> {
             installed.scaled((peak - (energised - own)).max(0.0) / own)
         };
         let p = self.problem;
-        let leak = self.profile_leak(&profile, moduli, p.installed_temperature());
+        let leak = self.profile_leak(&profile, moduli, p.installed_temperature(), 0.0);
         (
             leak.leak_rate,
             leak.junction,
@@ -612,7 +613,10 @@ impl<'a> Simulator<'a> {
     /// The peak contact pressure right after installation, with the energisation \[Pa\] (the
     /// first row of [`Self::run`]).
     pub fn installed_peak(&self) -> f64 {
-        self.contact_peak(&self.profile_at(&self.installed(), 0.0))
+        self.contact_peak(
+            &self.profile_at(&self.installed(), 0.0),
+            self.problem.pressure_at(0.0),
+        )
     }
 
     /// The nominal pressure profile of `state` at time `t`.
@@ -825,21 +829,42 @@ impl<'a> Simulator<'a> {
     /// ([`crate::leak::opening`]: `p_sq ≤ max(1 − k_e, τ) ΔP`), never by rounding. The fluid's
     /// viscosity (§3.7) and a gas's mean free path (§3.10) are the ones at the state's
     /// `temperature` \[K\].
+    ///
+    /// The pressure difference is the one at time `t` \[s\] (docs/model.md §8.4); a gas's leak
+    /// rate is returned as the volume flow at the service's mean pressure p̄ (the one its
+    /// criteria are stated at, §3.9), so that it integrates to a leaked amount of gas while
+    /// the pressure varies.
     fn profile_leak(
         &self,
         profile: &Profile,
         moduli: AsperityModuli,
         temperature: f64,
+        t: f64,
     ) -> InterfaceLeak {
         let p = self.problem;
-        let fluid = p.fluid.at(temperature);
+        let service = p.fluid_at(t);
+        let fluid = service.at(temperature);
         let e_star = moduli.fluid / (1.0 - p.material.poisson_ratio.powi(2));
         let equivalent = moduli.equivalent(profile);
-        let dp = p.fluid.pressure_difference;
-        let open = crate::leak::opening(profile.peak(), p.energisation_factor, dp);
+        let dp = service.pressure_difference;
+        let open = match p.pressure {
+            // depressurised in a pressure history (docs/model.md §8.4): the limit ΔP → 0 of the
+            // rule p_sq ≤ max(1 − k_e, τ) ΔP — a ring that has come off the face (no squeeze
+            // left, e.g. contracted at the cold) is open with or without a pressure to push
+            // through it, and the pressure's return finds it open
+            Some(_) if dp <= 0.0 && profile.peak() <= 0.0 => Some(SealState::LiftOff),
+            _ => crate::leak::opening(profile.peak(), p.energisation_factor, dp),
+        };
         let lifted = open == Some(SealState::LiftOff);
         let interface = |path: &ContactPath, solver: &InterfaceSolver| {
-            self.interface_leak(path, solver, &equivalent, lifted, e_star, &fluid)
+            self.interface_leak(
+                path,
+                solver,
+                &equivalent,
+                lifted,
+                e_star,
+                (&service, &fluid),
+            )
         };
         let counterface = interface(&self.path, &self.counterface);
         let (groove, groove_junction, groove_state) = match (&self.problem.groove, &self.groove) {
@@ -850,7 +875,11 @@ impl<'a> Simulator<'a> {
             }
             _ => (0.0, None, counterface.state),
         };
-        let leak_rate = counterface.leak_rate + groove;
+        let leak_rate = match p.pressure {
+            // depressurised: nothing drives a flow (and a gas against vacuum has p̄ = 0)
+            Some(_) if dp <= 0.0 => 0.0,
+            _ => (counterface.leak_rate + groove) * self.gas_volume_scale(&service),
+        };
         let state = match (open, counterface.state, groove_state) {
             // the interface found no contact left although the squeeze holds: open
             (_, SealState::LiftOff, _) | (_, _, SealState::LiftOff) => SealState::LiftOff,
@@ -887,10 +916,10 @@ impl<'a> Simulator<'a> {
         profile: &Profile,
         lifted: bool,
         e_star: f64,
-        fluid: &crate::fluid::Fluid,
+        (service, fluid): (&crate::fluid::Fluid, &crate::fluid::Fluid),
     ) -> InterfaceLeak {
         let p = self.problem;
-        let dp = p.fluid.pressure_difference;
+        let dp = service.pressure_difference;
         let offset = p.energisation_factor * dp;
         let viscosity = fluid.viscosity;
         let molecule = fluid.molecular_size();
@@ -919,8 +948,7 @@ impl<'a> Simulator<'a> {
             let conducts = resistance.is_finite() && local(top, 0.5 * dp) > 0.0;
             (
                 conducts,
-                p.fluid
-                    .leak_rate(geometry, Conduction::Series { resistance }),
+                service.leak_rate(geometry, Conduction::Series { resistance }),
             )
         };
         let junction_at = |e: f64| (path.critical_junction(e.max(0.0) / e_star), e.max(0.0));
@@ -932,7 +960,7 @@ impl<'a> Simulator<'a> {
                 *profile
             };
             InterfaceLeak::new(
-                self.onset_leak(&local, &threshold, offset, solver.cut * e_star),
+                self.onset_leak(&local, &threshold, offset, solver.cut * e_star, service),
                 junction_at(top),
                 SealState::LiftOff,
             )
@@ -990,7 +1018,7 @@ impl<'a> Simulator<'a> {
         match flow {
             InterfaceFlow::Conducting(conduction) => outcome(
                 true,
-                p.fluid.leak_rate(geometry, conduction),
+                service.leak_rate(geometry, conduction),
                 junction,
                 top - dp,
             ),
@@ -1010,10 +1038,11 @@ impl<'a> Simulator<'a> {
         profile: &Profile,
         offset: f64,
         ceiling: f64,
+        service: &crate::fluid::Fluid,
     ) -> f64 {
         let p = self.problem;
         let geometry = profile.geometry(p.geometry.sealing_length());
-        let dp = p.fluid.pressure_difference;
+        let dp = service.pressure_difference;
         let conduction = match *profile {
             Profile::Uniform { pressure, .. } => {
                 let top = pressure + offset;
@@ -1042,11 +1071,12 @@ impl<'a> Simulator<'a> {
                 }
             }
         };
-        p.fluid.leak_rate(geometry, conduction)
+        service.leak_rate(geometry, conduction)
     }
 
-    /// Internal step ends in (from, to]: `to`, plus eight per shortest temperature cycle
-    /// and the knots of a temperature table.
+    /// Internal step ends in (from, to]: `to`, plus eight per shortest temperature cycle,
+    /// the knots of a temperature table and those of the pressure history (docs/model.md §8.4:
+    /// every change of the pressure's slope is a step).
     fn substeps(&self, from: f64, to: f64) -> Vec<f64> {
         let h = self.problem.environment.shortest_period().map(|p| p / 8.0);
         let mut v: Vec<f64> = self
@@ -1055,6 +1085,9 @@ impl<'a> Simulator<'a> {
             .knots()
             .filter(|&k| k > from && k < to)
             .collect();
+        if let Some(pressure) = &self.problem.pressure {
+            v.extend(pressure.knots(from, to));
+        }
         if let Some(h) = h {
             let first = (from / h).floor() + 1.0;
             let mut k = first;
@@ -1266,7 +1299,12 @@ impl<'a> Simulator<'a> {
     fn open_snapshot_at(&self, state: &Mechanics, t: f64) -> Snapshot {
         let p = self.problem;
         let temperature = p.environment.at(t);
-        let permeation = p.permeation.as_ref().map(|s| s.throughput(t, temperature));
+        let dp = p.pressure_at(t);
+        let permeation = p.permeation.as_ref().map(|s| match &p.pressure {
+            // the inlet pressure of the history at t (docs/model.md §8.4, §13.7)
+            Some(_) => s.throughput_at(t, temperature, s.p_low + dp),
+            None => s.throughput(t, temperature),
+        });
         let permeation_flow = match (permeation, p.fluid.mean_pressure()) {
             (Some(q), Some(mean)) if mean > 0.0 => q / mean,
             _ => 0.0,
@@ -1276,7 +1314,7 @@ impl<'a> Simulator<'a> {
         let moduli = self.asperity_moduli(state);
         let e_asperity = moduli.fluid;
         let e_star = e_asperity / (1.0 - p.material.poisson_ratio.powi(2));
-        let leak = self.profile_leak(&profile, moduli, temperature);
+        let leak = self.profile_leak(&profile, moduli, temperature, t);
         let viscosity = p.fluid.viscosity_at(temperature);
         let equivalent = moduli.equivalent(&profile);
         let (leak_rate, peak_junction) = (leak.leak_rate, leak.junction);
@@ -1312,21 +1350,15 @@ impl<'a> Simulator<'a> {
                         poisson_ratio: p.material.poisson_ratio,
                     },
                     FlatSeal {
-                        nominal_pressure: self.contact_peak(&equivalent),
+                        nominal_pressure: self.contact_peak(&equivalent, dp),
                         width: profile.width(),
                         length: p.geometry.sealing_length(),
                     },
                     viscosity,
                     p.shape_factor,
                 );
-                let oring =
-                    matches!(p.geometry, crate::seal::SealGeometry::ORing { .. }).then(|| {
-                        (
-                            seal.seal.nominal_pressure,
-                            profile.width(),
-                            p.fluid.pressure_difference,
-                        )
-                    });
+                let oring = matches!(p.geometry, crate::seal::SealGeometry::ORing { .. })
+                    .then(|| (seal.seal.nominal_pressure, profile.width(), dp));
                 let ihl = crate::dynamic::IhlInput {
                     gradients: spec.gradients_for(oring),
                     viscosity,
@@ -1378,19 +1410,41 @@ impl<'a> Simulator<'a> {
             entry_gap: 0.0,
             cake_factor: 1.0,
             capture: clogging::Capture::default(),
-            extrusion: p.extrusion_at(temperature),
+            extrusion: p.extrusion_at(temperature, dp),
             open_fraction: 1.0,
             motion,
             open_static_leak_rate,
             permeation,
             permeation_flow,
+            pressure_difference: dp,
         }
     }
 
-    /// The peak contact pressure of `profile` with the energisation k_e ΔP \[Pa\].
-    fn contact_peak(&self, profile: &Profile) -> f64 {
+    /// The peak contact pressure of `profile` with the energisation k_e ΔP at the pressure
+    /// difference `dp` \[Pa\].
+    fn contact_peak(&self, profile: &Profile, dp: f64) -> f64 {
+        profile.peak() + self.problem.energisation_factor * dp
+    }
+
+    /// The peak contact pressure of a snapshot with the energisation at its own ΔP \[Pa\].
+    fn snap_peak(&self, snap: &Snapshot) -> f64 {
+        self.contact_peak(&snap.profile, snap.pressure_difference)
+    }
+
+    /// A gas under a pressure history: its volume flow at the mean pressure p̄(t) of `service`
+    /// restated at the service's p̄ (the run's fluid), `p̄(t)/p̄`, so that the leak rates of a run
+    /// are throughputs over one pressure and integrate to an amount of gas (docs/model.md §8.4);
+    /// 1 for a liquid and without a history.
+    fn gas_volume_scale(&self, service: &crate::fluid::Fluid) -> f64 {
         let p = self.problem;
-        profile.peak() + p.energisation_factor * p.fluid.pressure_difference
+        match (
+            &p.pressure,
+            service.mean_pressure(),
+            p.fluid.mean_pressure(),
+        ) {
+            (Some(_), Some(now), Some(mean)) if mean > 0.0 => now / mean,
+            _ => 1.0,
+        }
     }
 
     /// The moduli the asperity contact sees (docs/model.md §6.1). `follow`: the squeeze's part
@@ -1443,7 +1497,8 @@ impl<'a> Simulator<'a> {
             reduced_time: state.reduced_time,
             shift_factor: p.material.shift.factor(snap.temperature),
             sealing_force: snap.profile.force_per_length(),
-            peak_pressure: self.contact_peak(&snap.profile),
+            peak_pressure: self.snap_peak(snap),
+            pressure_difference: snap.pressure_difference,
             mean_pressure: snap.profile.mean(),
             contact_width: snap.profile.width(),
             u_c: snap.u_c,
@@ -1474,10 +1529,8 @@ impl<'a> Simulator<'a> {
         after_snap: &Snapshot,
     ) -> Option<FailureEvent> {
         let criteria = &self.problem.failure;
-        let dp = self.problem.fluid.pressure_difference;
-        let start = before_snap.as_event_input(before.leaked_volume, dp);
-        let modes =
-            criteria.newly_crossed(&start, &after_snap.as_event_input(after.leaked_volume, dp));
+        let start = before_snap.as_event_input(before.leaked_volume);
+        let modes = criteria.newly_crossed(&start, &after_snap.as_event_input(after.leaked_volume));
         let earliest = modes
             .into_iter()
             .map(|mode| {
@@ -1492,7 +1545,7 @@ impl<'a> Simulator<'a> {
                     }
                     let mut trial = before.clone();
                     let snap = self.advance(&mut trial, mid, before_snap);
-                    if criteria.crossed(mode, &snap.as_event_input(trial.leaked_volume, dp)) {
+                    if criteria.crossed(mode, &snap.as_event_input(trial.leaked_volume)) {
                         hi = mid;
                     } else {
                         lo = mid;
@@ -1506,7 +1559,7 @@ impl<'a> Simulator<'a> {
         let mut trial = before.clone();
         let snap = self.advance(&mut trial, window, before_snap);
         let mode = criteria
-            .newly_crossed(&start, &snap.as_event_input(trial.leaked_volume, dp))
+            .newly_crossed(&start, &snap.as_event_input(trial.leaked_volume))
             .into_iter()
             .chain(std::iter::once(earliest.mode))
             .min_by_key(|&m| criteria.precedence(m))
@@ -1534,8 +1587,8 @@ impl<'a> Simulator<'a> {
         );
         validity::contact(
             &ContactState {
-                nominal_pressure: self.contact_peak(&snap.profile),
-                pressure_difference: p.fluid.pressure_difference,
+                nominal_pressure: self.snap_peak(snap),
+                pressure_difference: snap.pressure_difference,
                 // lifted off, the contact is open: only the pressure ratio applies
                 junction: if snap.state == SealState::LiftOff {
                     &Junction::Sealed
@@ -1570,7 +1623,7 @@ impl<'a> Simulator<'a> {
 }
 
 impl Snapshot {
-    fn as_event_input(&self, leaked_volume: f64, pressure_difference: f64) -> events::EventInput {
+    fn as_event_input(&self, leaked_volume: f64) -> events::EventInput {
         events::EventInput {
             // a gas's criterion is on what a detector sees: interface + permeation (§8)
             leak_rate: self.leak_rate + self.permeation_flow,
@@ -1585,7 +1638,7 @@ impl Snapshot {
             sealing_force: self.profile.force_per_length(),
             contact_peak: self.profile.peak(),
             contact_mean: self.profile.mean(),
-            pressure_difference,
+            pressure_difference: self.pressure_difference,
             temperature: self.temperature,
         }
     }

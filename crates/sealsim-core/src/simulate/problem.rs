@@ -165,12 +165,43 @@ pub struct LifeProblem {
     /// A gas through an O-ring of a compound with data: permeation through the rubber, carried
     /// beside the interface leak (docs/model.md §13.7); `None` otherwise.
     pub permeation: Option<crate::permeation::SealPermeation>,
+    /// The fluid pressure against time (docs/model.md §8.4): `None` for the constant
+    /// `fluid.pressure_difference` (or a gas's inlet pressure), which is then the same run bit
+    /// for bit as before pressure histories.
+    pub pressure: Option<crate::pressure::PressureHistory>,
 }
 
 impl LifeProblem {
     /// The temperature of the installation, T(0) \[K\].
     pub fn installed_temperature(&self) -> f64 {
         self.environment.at(0.0)
+    }
+
+    /// The pressure difference ΔP(t) across the seal at time `t` \[Pa\]: the pressure history's
+    /// (docs/model.md §8.4), or the fluid's constant one.
+    pub fn pressure_at(&self, t: f64) -> f64 {
+        match &self.pressure {
+            Some(history) => history.difference_at(t),
+            None => self.fluid.pressure_difference,
+        }
+    }
+
+    /// The fluid at time `t`: the run's fluid with the pressure difference ΔP(t) (a gas: its
+    /// inlet pressure P_b + ΔP(t), the outlet fixed). Without a pressure history the fluid
+    /// itself.
+    pub fn fluid_at(&self, t: f64) -> crate::fluid::Fluid {
+        crate::fluid::Fluid {
+            pressure_difference: self.pressure_at(t),
+            ..self.fluid
+        }
+    }
+
+    /// The highest pressure difference over the run \[Pa\] (the service's without a history).
+    pub fn highest_pressure_difference(&self) -> f64 {
+        match &self.pressure {
+            Some(history) => history.highest_difference(),
+            None => self.fluid.pressure_difference,
+        }
     }
 
     /// The nominal pressure profile right after installation (t = 0): the instantaneous
@@ -241,7 +272,7 @@ impl LifeProblem {
             At::Installation,
             out,
         );
-        if let Some((ratio, limit)) = self.extrusion_at(t0) {
+        if let Some((ratio, limit)) = self.extrusion_at(t0, self.pressure_at(0.0)) {
             validity::extrusion(ratio, &limit, At::Installation, out);
         }
     }
@@ -265,18 +296,23 @@ impl LifeProblem {
         self.failure.shutdown.is_some() && self.loading == Loading::Displacement
     }
 
-    /// The extrusion check of a groove-seated ring at `temperature` \[K\] (docs/model.md §6.3):
-    /// the rubber's Shore A from its modulus at 3 s at that temperature (Gent's relation
-    /// inverted), the chart's limit at ΔP with the gland's back-up rings, and the diametral
+    /// The extrusion check of a groove-seated ring at `temperature` \[K\] and the pressure
+    /// difference `pressure_difference` \[Pa\] (docs/model.md §6.3, §8.4): the rubber's Shore A
+    /// from its modulus at 3 s at that temperature (Gent's relation inverted), the chart's limit
+    /// at ΔP with the gland's back-up rings, and the diametral
     /// clearance (twice the gap) over it; `None` without a gland. The ring extrudes when the
     /// ratio exceeds 1 or the pressure is above the arrangement's rating
     /// ([`ExtrusionLimit::extrudes`]).
-    pub fn extrusion_at(&self, temperature: f64) -> Option<(f64, ExtrusionLimit)> {
+    pub fn extrusion_at(
+        &self,
+        temperature: f64,
+        pressure_difference: f64,
+    ) -> Option<(f64, ExtrusionLimit)> {
         let gland = self.gland.as_ref()?;
         let a_t = self.material.shift.factor(temperature);
         let modulus = self.material.prony.relaxation(HARDNESS_TEST_TIME / a_t);
         let limit = extrusion::limit(
-            self.fluid.pressure_difference,
+            pressure_difference,
             extrusion::shore_a_from_modulus(modulus),
             gland.backup_rings,
         );
@@ -313,6 +349,8 @@ pub struct HistoryRow {
     pub sealing_force: f64,
     pub peak_pressure: f64,
     pub mean_pressure: f64,
+    /// The pressure difference ΔP across the seal at the row's time \[Pa\] (docs/model.md §8.4).
+    pub pressure_difference: f64,
     pub contact_width: f64,
     /// Height of the critical constriction at the peak pressure \[m\]; `None` when sealed there.
     pub u_c: Option<f64>,
