@@ -198,6 +198,13 @@ pub fn text(design: &Design, stack: &StackUp, ctx: &Context) -> String {
         row.radius.0,
         row.radius.1
     );
+    out += &stack_text(design, stack, ctx);
+    out
+}
+
+/// The stack-up table, the limits' sources and the back-up ring advice.
+fn stack_text(design: &Design, stack: &StackUp, ctx: &Context) -> String {
+    let mut out = String::new();
     out += &format!(
         "\nstack-up          23 °C: nominal and worst case over every tolerance limit; service \
          {} … {} °C: worst case\n                  ring CTE {} 1/K ({}), housing CTE {} 1/K \

@@ -806,82 +806,12 @@ impl Source<'_> {
         let raw = table.get_ref();
         let reference = self.reference_state(raw, fluid)?;
         let waived = |b: &Option<Spanned<bool>>| b.as_ref().is_some_and(|b| !*b.get_ref());
-        // a key of a check that does not run is an error, never ignored
-        for (q, key) in [
-            (&raw.shutdown_temperature, "failure.shutdown_temperature"),
-            (
-                &raw.minimum_pressure_difference,
-                MINIMUM_PRESSURE_DIFFERENCE.key,
-            ),
-        ] {
-            let Some(q) = q else { continue };
-            if let Some(reason) = context.no_shutdown {
-                return Err(self.error(
-                    q.span(),
-                    key,
-                    format!(
-                        "sets the shutdown check (docs/model.md §8.2), which does not apply here: \
-                         {reason}; remove it"
-                    ),
-                ));
-            }
-            if waived(&raw.lost_interference) {
-                return Err(self.error(
-                    q.span(),
-                    key,
-                    "sets the shutdown check that lost_interference = false waives: remove one \
-                     of the two",
-                ));
-            }
-        }
-        let shutdown_temperature = match &raw.shutdown_temperature {
-            None => default_shutdown.temperature,
-            Some(q) => {
-                let t = self.absolute_temperature(q, "failure.shutdown_temperature")?;
-                if t > hottest + 1e-9 {
-                    let unit = match q.get_ref() {
-                        super::raw::RawQuantity::Text(text) => {
-                            crate::units::TemperatureUnit::of(text)
-                        }
-                        super::raw::RawQuantity::Number(_) => Default::default(),
-                    };
-                    return Err(self.error(
-                        q.span(),
-                        "failure.shutdown_temperature",
-                        format!(
-                            "{} is above the run's hottest temperature ({}): a shutdown is the \
-                             seal at rest, no hotter than in service; give a temperature of at \
-                             most \"{}\"",
-                            unit.show(t),
-                            unit.show(hottest),
-                            unit.input(hottest),
-                        ),
-                    ));
-                }
-                t
-            }
-        };
-        let minimum = self
-            .optional(
-                raw.minimum_pressure_difference.as_ref(),
-                &MINIMUM_PRESSURE_DIFFERENCE,
-            )?
-            .unwrap_or(0.0);
-        if let Some(q) = &raw.minimum_pressure_difference
-            && minimum > highest
-        {
-            return Err(self.error(
-                q.span(),
-                MINIMUM_PRESSURE_DIFFERENCE.key,
-                format!(
-                    "{} Pa is above the service pressure difference ({} Pa): the minimum is the \
-                     lowest pressure the seal must hold at a restart; give at most the service \
-                     ΔP, e.g. \"0 bar\"",
-                    show(minimum),
-                    show(highest)
-                ),
-            ));
-        }
+        let (shutdown_temperature, minimum) = self.shutdown_keys(
+            raw,
+            context,
+            (default_shutdown.temperature, hottest),
+            highest,
+        )?;
         let margin = self
             .optional(raw.low_temperature_margin.as_ref(), &LOW_TEMPERATURE_MARGIN)?
             .unwrap_or(default_margin);
@@ -938,6 +868,96 @@ impl Source<'_> {
             },
             stop_at_failure: false,
         })
+    }
+
+    /// `[failure] shutdown_temperature` and `minimum_pressure_difference` (docs/model.md §8.2):
+    /// refused where the check does not run, bounded by the run's hottest temperature and its
+    /// highest pressure difference \[Pa\]; `(default_temperature, hottest)` \[K\].
+    fn shutdown_keys(
+        &self,
+        raw: &RawFailure,
+        context: &FailureContext,
+        (default_temperature, hottest): (f64, f64),
+        highest: f64,
+    ) -> Result<(f64, f64), ScenarioError> {
+        let waived = |b: &Option<Spanned<bool>>| b.as_ref().is_some_and(|b| !*b.get_ref());
+        // a key of a check that does not run is an error, never ignored
+        for (q, key) in [
+            (&raw.shutdown_temperature, "failure.shutdown_temperature"),
+            (
+                &raw.minimum_pressure_difference,
+                MINIMUM_PRESSURE_DIFFERENCE.key,
+            ),
+        ] {
+            let Some(q) = q else { continue };
+            if let Some(reason) = context.no_shutdown {
+                return Err(self.error(
+                    q.span(),
+                    key,
+                    format!(
+                        "sets the shutdown check (docs/model.md §8.2), which does not apply here: \
+                         {reason}; remove it"
+                    ),
+                ));
+            }
+            if waived(&raw.lost_interference) {
+                return Err(self.error(
+                    q.span(),
+                    key,
+                    "sets the shutdown check that lost_interference = false waives: remove one \
+                     of the two",
+                ));
+            }
+        }
+        let shutdown_temperature = match &raw.shutdown_temperature {
+            None => default_temperature,
+            Some(q) => {
+                let t = self.absolute_temperature(q, "failure.shutdown_temperature")?;
+                if t > hottest + 1e-9 {
+                    let unit = match q.get_ref() {
+                        super::raw::RawQuantity::Text(text) => {
+                            crate::units::TemperatureUnit::of(text)
+                        }
+                        super::raw::RawQuantity::Number(_) => Default::default(),
+                    };
+                    return Err(self.error(
+                        q.span(),
+                        "failure.shutdown_temperature",
+                        format!(
+                            "{} is above the run's hottest temperature ({}): a shutdown is the \
+                             seal at rest, no hotter than in service; give a temperature of at \
+                             most \"{}\"",
+                            unit.show(t),
+                            unit.show(hottest),
+                            unit.input(hottest),
+                        ),
+                    ));
+                }
+                t
+            }
+        };
+        let minimum = self
+            .optional(
+                raw.minimum_pressure_difference.as_ref(),
+                &MINIMUM_PRESSURE_DIFFERENCE,
+            )?
+            .unwrap_or(0.0);
+        if let Some(q) = &raw.minimum_pressure_difference
+            && minimum > highest
+        {
+            return Err(self.error(
+                q.span(),
+                MINIMUM_PRESSURE_DIFFERENCE.key,
+                format!(
+                    "{} Pa is above the service pressure difference ({} Pa): the minimum is the \
+                     lowest pressure the seal must hold at a restart; give at most the service \
+                     ΔP, e.g. \"0 bar\"",
+                    show(minimum),
+                    show(highest)
+                ),
+            ));
+        }
+        Ok((shutdown_temperature, minimum))
     }
 
     /// `[failure] max_leak_rate` as the leak rate the run compares it with: a liquid's volume

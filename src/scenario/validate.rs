@@ -414,16 +414,12 @@ impl Source<'_> {
         // the static problem's viscosity is the law's at the installation (fitting) temperature,
         // the first row's of a run
         let fluid = fluid.at(environment.at(0.0));
-        let thermal_strain = self.thermal_strain(
-            &seal,
-            &material,
-            &environment,
-            &self.material_key_fix(
-                raw.material.get_ref(),
-                replacement.is_some(),
-                "thermal_expansion",
-            ),
-        )?;
+        let cte_fix = self.material_key_fix(
+            raw.material.get_ref(),
+            replacement.is_some(),
+            "thermal_expansion",
+        );
+        let thermal_strain = self.thermal_strain(&seal, &material, &environment, &cte_fix)?;
         let pressure = self.pressure_history(raw.environment.as_ref(), &fluid)?;
         let service = self.service(
             raw,
@@ -440,11 +436,7 @@ impl Source<'_> {
                 &material,
                 &environment,
                 &service.failure,
-                &self.material_key_fix(
-                    raw.material.get_ref(),
-                    replacement.is_some(),
-                    "thermal_expansion",
-                ),
+                &cte_fix,
             )?;
         }
         let (permeation, permeation_note) =
@@ -476,23 +468,7 @@ impl Source<'_> {
             pressure,
         };
         let mut warnings = seal.warnings;
-        // the gland's checks that need the service: [motion] (dynamic squeeze), a vacuum outlet
-        warnings.extend(
-            self.gland_service_warnings(
-                &raw.seal,
-                seal.design.as_ref(),
-                raw.motion.is_some(),
-                life.fluid
-                    .gas
-                    .is_some_and(|g| g.outlet_pressure < crate::permeation::STP_PRESSURE),
-            ),
-        );
-        if let Some(note) = permeation_note {
-            warnings.push(
-                self.error(raw.fluid.span(), "fluid.gas", format!("note: {note}"))
-                    .to_string(),
-            );
-        }
+        warnings.extend(self.service_warnings(raw, seal.design.as_ref(), &life, permeation_note));
         warnings.extend(notes.iter().map(ToString::to_string));
         if let Some(w) = self.lay(&raw.surface, life.fluid.gas.is_some())? {
             warnings.push(w.to_string());
@@ -542,6 +518,32 @@ impl Source<'_> {
             fluid_class,
             inputs: self.data_files(raw),
         })
+    }
+
+    /// The warnings that need the service: the gland's ([motion]: the dynamic squeeze range; a
+    /// vacuum outlet), then the permeation figure's note.
+    fn service_warnings(
+        &self,
+        raw: &RawScenario,
+        design: Option<&crate::gland::GlandDesign>,
+        life: &LifeProblem,
+        permeation_note: Option<String>,
+    ) -> Vec<String> {
+        let mut warnings = self.gland_service_warnings(
+            &raw.seal,
+            design,
+            raw.motion.is_some(),
+            life.fluid
+                .gas
+                .is_some_and(|g| g.outlet_pressure < crate::permeation::STP_PRESSURE),
+        );
+        if let Some(note) = permeation_note {
+            warnings.push(
+                self.error(raw.fluid.span(), "fluid.gas", format!("note: {note}"))
+                    .to_string(),
+            );
+        }
+        warnings
     }
 
     /// Permeation through the rubber for a gas (docs/model.md §13.7), with its note. The
