@@ -380,6 +380,13 @@ const MATERIAL: &[Key] = &[
          §13.4; sourced figures or stated NOT SOURCED bounds). Not with `library` or `file`",
     ),
     key(
+        "bands",
+        Map,
+        Absent("no band stated"),
+        "figure key (`\"ageing.activation_energy\"`) → `{ min = …, max = …, source = \"…\" }`: \
+         the band a study draws with `\"band\"` (docs/model.md §5.4)",
+    ),
+    key(
         "permeation",
         Map,
         Absent("the class's figures"),
@@ -543,13 +550,13 @@ const PERMEATION: &[Key] = &[
 const BANDS: &[Key] = &[
     key(
         "min",
-        Quantity(mat::BAND_KEYS[0].1),
+        Quantity(mat::BAND_KEYS[0].1[0]),
         Required(""),
         "lower end of the figure's band, in its unit",
     ),
     key(
         "max",
-        Quantity(mat::BAND_KEYS[0].1),
+        Quantity(mat::BAND_KEYS[0].1[1]),
         Required(""),
         "upper end, above `min`",
     ),

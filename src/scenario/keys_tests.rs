@@ -85,6 +85,7 @@ fn raw_tables() -> Vec<(&'static str, BTreeSet<&'static str>)> {
             accepted::<RawCompatibility>(),
         ),
         ("material.permeation.GAS", accepted::<RawPermeation>()),
+        ("material.bands.KEY", accepted::<RawBand>()),
         ("surface", accepted::<RawSurface>()),
         ("fluid", accepted::<RawFluid>()),
         ("seal", accepted::<RawSeal>()),

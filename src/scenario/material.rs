@@ -135,16 +135,24 @@ pub(super) const AGEING_ACTIVATION_ENERGY: Field = field(
     "J/mol",
     Bound::Range(1.0, 1e6),
 );
-/// The figures a compound may give a band for (`[material.bands]`), each with the field its
+/// The figures a compound may give a band for (`[material.bands]`), each with the fields its
 /// `min` and `max` are read as; a study draws from the band with `"<key>" = "band"`.
-pub(super) const BAND_KEYS: [(&str, Field); 1] = [(
+pub(super) const BAND_KEYS: [(&str, [Field; 2]); 1] = [(
     "ageing.activation_energy",
-    field(
-        "material.bands.ageing.activation_energy",
-        Dimension::MOLAR_ENERGY,
-        "J/mol",
-        Bound::Range(1.0, 1e6),
-    ),
+    [
+        field(
+            "material.bands.KEY.min",
+            Dimension::MOLAR_ENERGY,
+            "J/mol",
+            Bound::Range(1.0, 1e6),
+        ),
+        field(
+            "material.bands.KEY.max",
+            Dimension::MOLAR_ENERGY,
+            "J/mol",
+            Bound::Range(1.0, 1e6),
+        ),
+    ],
 )];
 
 pub(super) const AGEING_ACTIVATION_ENERGY_ABOVE: Field = field(
@@ -587,7 +595,7 @@ impl Source<'_> {
         let mut bands = Vec::new();
         for (key, value) in entries {
             let path = format!("material.bands.{key}");
-            let Some((_, field)) = BAND_KEYS.iter().find(|(k, _)| k == key) else {
+            let Some((_, [min_field, max_field])) = BAND_KEYS.iter().find(|(k, _)| k == key) else {
                 return Err(self.error(
                     value.span(),
                     &path,
@@ -598,8 +606,12 @@ impl Source<'_> {
                 ));
             };
             let band = value.get_ref();
-            let min = self.quantity(&band.min, field)?;
-            let max = self.quantity(&band.max, field)?;
+            let min = self
+                .quantity(&band.min, min_field)
+                .map_err(|e| rekey(e, &format!("{path}.min")))?;
+            let max = self
+                .quantity(&band.max, max_field)
+                .map_err(|e| rekey(e, &format!("{path}.max")))?;
             if min >= max {
                 return Err(self.error(
                     value.span(),
@@ -608,7 +620,7 @@ impl Source<'_> {
                         "`min` must be below `max`, got {} and {} {}",
                         show(min),
                         show(max),
-                        field.unit()
+                        min_field.unit()
                     ),
                 ));
             }

@@ -27,6 +27,7 @@ const LAYERS: &[(&str, u8)] = &[
     ("permeation", 3),
     ("material", 3),
     ("clogging", 3),
+    ("pressure", 3),
     ("numerical", 4),
     ("profile", 4),
     ("leak", 4),
