@@ -2188,7 +2188,7 @@ pub fn compare_table(rows: &[CompareRow<'_>]) -> Result<String, ReportError> {
     finish(writer)
 }
 
-/// One compound of the comparison's JSON ([`compare_json`]): its standing in the ranking,
+/// One compound of the comparison's JSON ([`CompareSummary`]): its standing in the ranking,
 /// its rating for the run's medium and the full run summary ([`Summary`]).
 #[derive(Debug, Clone, Serialize)]
 pub struct CompareEntry {

@@ -5,7 +5,7 @@
 //! **Sources** (ISO 286-1 tables as reproduced; the standard itself was not read):
 //! * IT grades: MechGuru, "DIN ISO 286 standard tolerance zone size table"
 //!   (<http://mechguru.com/machine-design/din-iso-286-standard-tolerance-zone-size-table-different-grades-nominal-size>),
-//!   IT5–IT11 in mm for 0–3150 mm; the rows up to 500 mm are transcribed in [`IT`]. The h
+//!   IT5–IT11 in mm for 0–3150 mm; the rows up to 500 mm are transcribed in `IT`. The h
 //!   shafts' columns of BIG DAISHOWA's catalogue, "Shaft tolerances", p. 139
 //!   (<https://catalog.bigdaishowa.com/view/510119233/139>), give the same IT5–IT9 values
 //!   (h5–h9 lower deviations) in every row up to 500 mm.
