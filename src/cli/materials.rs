@@ -292,6 +292,10 @@ fn checked(
             .map(|id| library_of(id).map(|(m, p)| (id.to_owned(), m, p)))
             .collect();
     }
+    // each class's standard compound and its published figures, read once
+    let standards = library::ids()
+        .map(|id| library_of(id).map(|(m, p)| (m.class, p)))
+        .collect::<Result<Vec<_>, _>>()?;
     let mut out = Vec::new();
     for path in &args.files {
         let material = load_material_file(path)?;
@@ -303,12 +307,10 @@ fn checked(
                 crate::permeation::FAMILIES.join(", ")
             )));
         };
-        let standard = library::ids()
-            .map(|id| library_of(id).map(|(m, p)| (m.class, p)))
-            .collect::<Result<Vec<_>, _>>()?
-            .into_iter()
+        let standard = standards
+            .iter()
             .find(|(c, _)| c.as_deref() == Some(class.as_str()));
-        let Some((_, p)) = standard else {
+        let Some(&(_, p)) = standard else {
             return Err(CliError::Input(format!(
                 "{}: no published figures for class `{class}`",
                 path.display()

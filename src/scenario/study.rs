@@ -671,11 +671,10 @@ pub(crate) fn set(table: &mut toml::Table, key: &str, value: toml::Value) -> Res
     Ok(())
 }
 
-/// The ring keys a size's own tolerance can vary (`tolerance = "size"`), with the size's
-/// nominal and ± tolerance of each \[mm\].
+/// The ring keys a size's own tolerance can vary (`tolerance = "size"`).
 const RING_KEYS: [&str; 2] = ["seal.cross_section", "seal.inner_diameter"];
 
-/// The case's `seal.size` written out as `cross_section` and `inner_diameter` \[mm\], each at
+/// The case's `seal.size` written out as `cross_section` and `inner_diameter` \[m\], each at
 /// its nominal plus z × its AS568 ± tolerance for the `(input, z)` in `ring` (the other at its
 /// nominal).
 fn size_within_tolerance(
@@ -692,10 +691,12 @@ fn size_within_tolerance(
                 .into(),
         );
     };
-    let size = super::as568::lookup(&name).map_err(|e| e.to_string())?;
+    let free = super::as568::lookup(&name)
+        .map_err(|e| e.to_string())?
+        .ring();
     let nominal = [
-        (size.cs_in * 25.4, size.cs_tol_in * 25.4),
-        (size.id_in * 25.4, size.id_tol_in * 25.4),
+        (free.cross_section, free.cross_section_tolerance),
+        (free.inner_diameter, free.inner_diameter_tolerance),
     ];
     for (k, key) in RING_KEYS.iter().enumerate() {
         let (value, tolerance) = nominal[k];
@@ -706,7 +707,7 @@ fn size_within_tolerance(
         let name = key.trim_start_matches("seal.");
         seal.insert(
             name.into(),
-            toml::Value::String(format!("{} mm", units::exact(value + z * tolerance))),
+            toml::Value::String(format!("{} m", units::exact(value + z * tolerance))),
         );
     }
     Ok(())
@@ -1235,24 +1236,23 @@ impl Entry<'_> {
                  `nominal`",
             ));
         }
-        let d = match table.get("shape") {
-            None => Distribution::Normal {
+        let shape = match table.get("shape") {
+            None => Some("normal"),
+            Some(toml::Value::String(s)) => Some(s.as_str()),
+            Some(_) => None,
+        };
+        let d = match shape {
+            Some("normal") => Distribution::Normal {
                 mean: 0.0,
                 std: 1.0 / 3.0,
                 lo: -1.0,
                 hi: 1.0,
             },
-            Some(toml::Value::String(s)) if s == "normal" => Distribution::Normal {
-                mean: 0.0,
-                std: 1.0 / 3.0,
-                lo: -1.0,
-                hi: 1.0,
-            },
-            Some(toml::Value::String(s)) if s == "uniform" => Distribution::Uniform {
+            Some("uniform") => Distribution::Uniform {
                 min: -1.0,
                 max: 1.0,
             },
-            Some(_) => return Err(self.err("`shape` is \"normal\" (±3σ) or \"uniform\"")),
+            _ => return Err(self.err("`shape` is \"normal\" (±3σ) or \"uniform\"")),
         };
         Ok((self.with_kind(InputKind::SizeTolerance), d))
     }
