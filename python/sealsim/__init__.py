@@ -45,6 +45,8 @@ __all__ = [
     "InternalError",
     "compare",
     "study",
+    "gland",
+    "GlandDesign",
     "materials",
     "contact",
     "ContactResult",
@@ -363,6 +365,93 @@ def study(
     50 ms and once at the end."""
     columns, summary = _sealsim._study(os.fspath(source), threads, _progress(progress, "cases"))
     return StudyResult(_table(columns), json.loads(summary))
+
+
+class GlandDesign:
+    """A gland designed by :func:`gland` (``sealsim gland``): ``summary`` is the command's
+    ``--json`` (the table row and its source, the housing with its ISO 286 fits, the
+    conditions and the stack-up with each quantity's limit and source), ``stack_up`` the
+    stack-up as a table (one row per quantity: squeeze, stretch, od_compression, fill,
+    clearance; nominal, assembly_min/max at 23 °C, service_min/max over the temperatures, the
+    limit and whether it holds), ``toml`` the runnable scenario of ``-o``."""
+
+    def __init__(self, summary: Dict[str, Any], toml: str):
+        self.summary = summary
+        self.toml = toml
+
+    @property
+    def stack_up(self) -> Any:
+        rows = self.summary["stack_up"]
+        names = [
+            "quantity",
+            "unit",
+            "nominal",
+            "assembly_min",
+            "assembly_max",
+            "service_min",
+            "service_max",
+            "limit",
+            "ok",
+        ]
+        return _table({n: [r[n] for r in rows] for n in names})
+
+    @property
+    def backup_rings_needed(self) -> int:
+        """Back-up rings the extrusion chart asks for at the pressure and the largest gap."""
+        return int(self.summary["backup_rings_needed"])
+
+    def scenario(self) -> "Scenario":
+        """The designed gland in the service's o-ring template, ready to run."""
+        return Scenario.from_toml(self.toml)
+
+    def __repr__(self) -> str:
+        s = self.summary
+        return "GlandDesign({} {} gland, {} back-up ring(s))".format(
+            s["size"], s["service"], s["backup_rings"]
+        )
+
+
+def gland(
+    size: str,
+    service: str,
+    dynamic: bool = False,
+    pressure: Optional[str] = None,
+    backup_rings: int = 0,
+    bore: Union[str, float, None] = None,
+    rod: Union[str, float, None] = None,
+    fit: str = "H8/f7",
+    temperature: Optional[Sequence[Union[str, float]]] = None,
+    pressure_difference: Union[str, float, None] = None,
+    material: str = "nbr-70",
+    housing: str = "steel",
+) -> GlandDesign:
+    """The recommended gland of an AS568 ring (``"AS568-214"``) for a ``service`` (``"face"``,
+    ``"piston"``, ``"rod"``), as ``sealsim gland`` designs it: the handbook table's row, the
+    ISO 286 ``fit`` of bore and piston (or housing and rod), and the tolerance stack-up over
+    ``temperature=(min, max)`` (strings with units or kelvin). ``pressure``: a face gland's
+    pressure side (``"inside"``/``"outside"``); ``bore``/``rod``: the piston gland's bore or
+    the rod gland's rod (strings with units or metres; default the ring's nominal OD/ID);
+    ``pressure_difference`` (a string with units or Pa) sets the back-up-ring advice and the
+    scenario's pressure. Invalid input raises :class:`ScenarioError` with the command's
+    message (an impossible fit names the nearest size)."""
+    if temperature is not None:
+        lo, hi = temperature
+        temperature = (lo, hi)
+    summary, toml = _sealsim._gland(
+        size,
+        service,
+        dynamic,
+        pressure,
+        backup_rings,
+        bore,
+        rod,
+        fit,
+        temperature,
+        pressure_difference,
+        material,
+        housing,
+    )
+    return GlandDesign(json.loads(summary), toml)
 
 
 def materials() -> Any:

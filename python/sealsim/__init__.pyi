@@ -70,6 +70,30 @@ def compare(
 def study(
     source: Union[PathLike, str], threads: Optional[int] = ..., progress: Progress = ...
 ) -> StudyResult: ...
+class GlandDesign:
+    summary: Dict[str, Any]
+    toml: str
+    def __init__(self, summary: Dict[str, Any], toml: str) -> None: ...
+    @property
+    def stack_up(self) -> Table: ...
+    @property
+    def backup_rings_needed(self) -> int: ...
+    def scenario(self) -> Scenario: ...
+
+def gland(
+    size: str,
+    service: str,
+    dynamic: bool = ...,
+    pressure: Optional[str] = ...,
+    backup_rings: int = ...,
+    bore: Union[str, float, None] = ...,
+    rod: Union[str, float, None] = ...,
+    fit: str = ...,
+    temperature: Optional[Sequence[Union[str, float]]] = ...,
+    pressure_difference: Union[str, float, None] = ...,
+    material: str = ...,
+    housing: str = ...,
+) -> GlandDesign: ...
 def materials() -> Table: ...
 def quantity(text: str, dimension: Optional[str] = ...) -> float: ...
 class ContactResult:

@@ -13,6 +13,7 @@
 
 mod contact;
 mod fit;
+mod gland;
 mod surface;
 
 use pyo3::exceptions::{PyFileNotFoundError, PyOSError, PyRuntimeError, PyValueError};
@@ -83,7 +84,7 @@ where
 /// analytic life run or leak table): a worker thread on another CPU runs it 5–10 % slower on a
 /// small VM (cold caches; measured by python/benches/overhead.py), and Ctrl-C is honoured when
 /// it returns. Long work (studies, comparisons, the numerical level) goes to [`blocking`].
-fn inline<T, F>(py: Python<'_>, work: F) -> PyResult<T>
+pub(crate) fn inline<T, F>(py: Python<'_>, work: F) -> PyResult<T>
 where
     T: Send,
     F: FnOnce() -> T + Send,
@@ -783,5 +784,6 @@ fn _sealsim(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(quantity, m)?)?;
     fit::register(m)?;
     surface::register(m)?;
+    gland::register(m)?;
     Ok(())
 }

@@ -5,12 +5,10 @@
 //! designed gland into the o-ring template of the service as a runnable scenario.
 
 use super::{CliError, positive_flag, write_output};
-use crate::fits::Fit;
-use crate::gland::{GlandKind, Housing};
-use crate::gland_design::{self, Conditions, Design, INCH, Service};
-use crate::report::gland::{Context, json, text};
-use crate::scenario::{as568, library, templates};
-use crate::units::{Dimension, parse_quantity};
+use crate::gland::GlandKind;
+use crate::report::gland::{json, text};
+use crate::units::Dimension;
+use crate::workflow::gland::{GlandError, GlandRequest};
 use clap::{Args, ValueEnum};
 use std::path::{Path, PathBuf};
 
@@ -101,25 +99,6 @@ pub struct GlandArgs {
     pub json: bool,
 }
 
-/// The template a service's scenario starts from.
-fn template_name(kind: GlandKind) -> &'static str {
-    match kind {
-        GlandKind::Face => "o-ring-face",
-        GlandKind::Piston => "o-ring-piston",
-        GlandKind::Rod => "o-ring-rod",
-    }
-}
-
-/// A quantity string from a template's TOML (`section.key`), in SI.
-fn template_quantity(text: &str, section: &str, key: &str, dim: Dimension) -> Option<f64> {
-    let value: toml::Value = toml::from_str(text).ok()?;
-    let s = value.get(section)?.get(key)?.as_str()?;
-    if dim == Dimension::TEMPERATURE {
-        return crate::units::parse_temperature(s).ok();
-    }
-    parse_quantity(s, dim).ok()
-}
-
 fn input(msg: impl Into<String>) -> CliError {
     CliError::Input(msg.into())
 }
@@ -152,105 +131,57 @@ pub fn run(args: GlandArgs) -> Result<(), CliError> {
             "--rod is the rod of a rod gland; a piston gland takes --bore",
         ));
     }
-    let size = as568::lookup(&args.size).map_err(|e| match e {
-        as568::LookupError::Table(t) => CliError::Internal(t.to_string()),
-        other => CliError::Input(format!("{other} (`sealsim sizes` lists them)")),
-    })?;
-    let fit = Fit::parse(&args.fit).map_err(|e| input(format!("--fit: {e}")))?;
     let seat = match (&args.bore, &args.rod) {
         (Some(b), _) => positive_flag(Some(b), "bore", Dimension::LENGTH)?,
         (_, Some(r)) => positive_flag(Some(r), "rod", Dimension::LENGTH)?,
         _ => None,
     };
-    let template = templates::template(template_name(kind))
-        .ok_or_else(|| CliError::Internal("an o-ring template is missing".into()))?;
-    let template_t = template_quantity(
-        template.text,
-        "environment",
-        "temperature",
-        Dimension::TEMPERATURE,
-    )
-    .ok_or_else(|| CliError::Internal("the template has no temperature".into()))?;
-    let temperatures = match &args.temperature {
-        None => (
-            template_t.min(gland_design::ASSEMBLY_TEMPERATURE),
-            template_t.max(gland_design::ASSEMBLY_TEMPERATURE),
-        ),
-        Some(text) => parse_temperatures(text)?,
+    let temperatures = args
+        .temperature
+        .as_deref()
+        .map(parse_temperatures)
+        .transpose()?;
+    let pressure_difference = match &args.pressure_difference {
+        Some(p) => positive_flag(Some(p), "pressure-difference", Dimension::PRESSURE)?
+            .map(|v| (v, p.clone())),
+        None => None,
     };
-    let pressure = match &args.pressure_difference {
-        Some(p) => {
-            positive_flag(Some(p), "pressure-difference", Dimension::PRESSURE)?.unwrap_or_default()
-        }
-        None => template_quantity(
-            template.text,
-            "fluid",
-            "pressure_difference",
-            Dimension::PRESSURE,
-        )
-        .ok_or_else(|| CliError::Internal("the template has no pressure".into()))?,
-    };
-    let material = library::get(&args.material)
-        .map_err(|e| input(format!("--material: {e}")))?
-        .load()?;
-    let ring_expansion = material.thermal_expansion.ok_or_else(|| {
-        input(format!(
-            "--material {}: the compound has no thermal_expansion; choose another",
-            args.material
-        ))
-    })?;
-    // the grade in the compound's id ("nbr-70" → 70 Shore A)
-    let hardness = args
-        .material
-        .rsplit('-')
-        .next()
-        .and_then(|g| g.parse::<f64>().ok())
-        .unwrap_or(70.0);
-    let housing = Housing::from_name(&args.housing).ok_or_else(|| {
-        input(format!(
-            "--housing {:?}: expected one of {}",
-            args.housing,
-            Housing::ALL.map(Housing::name).join(", ")
-        ))
-    })?;
-    let service = Service {
+    let request = GlandRequest {
+        size: args.size.clone(),
         kind,
         dynamic: args.dynamic,
         pressure_outside: args.pressure == Some(PressureSide::Outside),
         backup_rings: args.backup_rings,
-    };
-    let nominal =
-        gland_design::as568_nominal(size.id_in, size.cs_in).map(|(id, od)| (id * INCH, od * INCH));
-    let design = gland_design::design(size.ring(), nominal, service, fit, seat)
-        .map_err(|e| input(format!("{}: {e}", size.name())))?;
-    let conditions = Conditions {
+        seat,
+        fit: args.fit.clone(),
         temperatures,
-        ring_expansion,
-        housing_expansion: housing.expansion(),
-        pressure,
-        hardness,
-    };
-    let stack = gland_design::stack_up(&design, &conditions)
-        .map_err(|e| input(format!("{}: {e}", size.name())))?;
-    let ctx = Context {
-        size: size.name(),
-        temperatures,
-        pressure,
-        hardness,
-        ring_expansion,
+        pressure_difference,
         material: args.material.clone(),
-        housing_expansion: housing.expansion(),
-        housing: housing.name().to_owned(),
+        housing: args.housing.clone(),
     };
+    let designed = crate::workflow::gland::design(&request).map_err(|e| match e {
+        GlandError::Input(m) => CliError::Input(flag_message(m)),
+        GlandError::Internal(m) => CliError::Internal(m),
+    })?;
     if let Some(path) = &args.output {
-        write_scenario(path, template.text, &design, &stack, &ctx, &args)?;
+        write_scenario(path, &designed.scenario)?;
     }
     let out = if args.json {
-        json(&design, &stack, &ctx)?
+        json(&designed.design, &designed.stack, &designed.context)?
     } else {
-        text(&design, &stack, &ctx)
+        text(&designed.design, &designed.stack, &designed.context)
     };
     write_output(None, out.as_bytes())
+}
+
+/// The workflow's message with its input named as the flag (`fit: …` → `--fit: …`).
+fn flag_message(message: String) -> String {
+    for name in ["fit", "material", "housing"] {
+        if message.starts_with(&format!("{name}:")) || message.starts_with(&format!("{name} ")) {
+            return format!("--{message}");
+        }
+    }
+    message
 }
 
 /// `--temperature MIN,MAX`.
@@ -280,144 +211,7 @@ fn parse_temperatures(text: &str) -> Result<(f64, f64), CliError> {
     Ok((lo, hi))
 }
 
-/// A length for the scenario file, in mm to 0.1 µm.
-fn mm(v: f64) -> String {
-    let s = format!("{:.4}", v * 1e3);
-    format!("\"{} mm\"", s.trim_end_matches('0').trim_end_matches('.'))
-}
-
-/// The `[seal]` table of the designed gland (nominal dimensions; the largest clearance).
-fn seal_table(
-    design: &Design,
-    stack: &gland_design::StackUp,
-    ctx: &Context,
-    args: &GlandArgs,
-) -> String {
-    let h = &design.housing;
-    let kind = design.service.kind;
-    let mut lines = vec![
-        "[seal]".to_owned(),
-        format!(
-            "# designed by `sealsim gland {} --service {}`: nominal dimensions of the designed \
-             housing;",
-            ctx.size,
-            kind.name()
-        ),
-        "# the clearance is the fit's largest (the conservative end). The stack-up is in the \
-         command's output."
-            .to_owned(),
-        "kind = \"o-ring\"".to_owned(),
-        format!("gland = \"{}\"", kind.name()),
-        format!("size = \"{}\"", ctx.size),
-    ];
-    let depth_tol = 0.5 * (h.depth.max - h.depth.min);
-    match (kind, h.seat, h.groove_diameter) {
-        (GlandKind::Piston, Some(seat), Some(groove))
-        | (GlandKind::Rod, Some(seat), Some(groove)) => {
-            let key = if kind == GlandKind::Piston {
-                "bore_diameter"
-            } else {
-                "rod_diameter"
-            };
-            let depth = if kind == GlandKind::Piston {
-                0.5 * (seat.mid() - groove.mid())
-            } else {
-                0.5 * (groove.mid() - seat.mid())
-            };
-            lines.push(format!("{key} = {}", mm(seat.mid())));
-            lines.push(format!("groove_depth = {}", mm(depth)));
-            lines.push(format!("groove_depth_tolerance = {}", mm(depth_tol)));
-            lines.push(format!("groove_width = {}", mm(h.width.mid())));
-            let clearance = stack
-                .rows
-                .iter()
-                .find(|r| r.quantity == gland_design::Quantity::Clearance)
-                .map_or(0.0, |r| r.assembly.1.max(0.0));
-            lines.push(format!("diametral_clearance = {}", mm(clearance)));
-            lines.push(format!("backup_rings = {}", design.service.backup_rings));
-        }
-        (_, seat, _) => {
-            lines.push(format!("groove_depth = {}", mm(h.depth.mid())));
-            lines.push(format!("groove_depth_tolerance = {}", mm(depth_tol)));
-            lines.push(format!("groove_width = {}", mm(h.width.mid())));
-            if let Some(seat) = seat {
-                let key = if design.service.pressure_outside {
-                    "groove_inner_diameter"
-                } else {
-                    "groove_outer_diameter"
-                };
-                lines.push(format!("{key} = {}", mm(seat.mid())));
-            }
-            lines.push("extrusion_gap = \"0 mm\"".to_owned());
-        }
-    }
-    if args.housing != "steel" {
-        lines.push(format!("housing = \"{}\"", ctx.housing));
-    }
-    lines.push("loading = \"displacement\"".to_owned());
-    lines.join("\n") + "\n"
-}
-
-/// The template with its `[seal]` table replaced by the designed gland, its material and (when
-/// given) its pressure difference set.
-fn scenario_text(
-    template: &str,
-    design: &Design,
-    stack: &gland_design::StackUp,
-    ctx: &Context,
-    args: &GlandArgs,
-) -> String {
-    let mut out = String::new();
-    let mut in_seal = false;
-    let mut section = String::new();
-    for line in template.lines() {
-        let trimmed = line.trim_start();
-        if trimmed.starts_with('[') {
-            section = trimmed
-                .trim_start_matches('[')
-                .split(']')
-                .next()
-                .unwrap_or_default()
-                .to_owned();
-            if section == "seal" {
-                in_seal = true;
-                out += &seal_table(design, stack, ctx, args);
-                out.push('\n');
-                continue;
-            }
-            in_seal = false;
-        }
-        if in_seal {
-            continue;
-        }
-        let key = trimmed.split('=').next().unwrap_or_default().trim();
-        if section == "material" && key == "library" {
-            out += &format!("library = \"{}\"\n", args.material);
-            continue;
-        }
-        if let Some(p) = args
-            .pressure_difference
-            .as_ref()
-            .filter(|_| section == "fluid" && key == "pressure_difference")
-        {
-            let quoted = toml::Value::String(p.clone()).to_string();
-            out += &format!("pressure_difference = {quoted}\n");
-            continue;
-        }
-        out += line;
-        out.push('\n');
-    }
-    out
-}
-
-fn write_scenario(
-    path: &Path,
-    template: &str,
-    design: &Design,
-    stack: &gland_design::StackUp,
-    ctx: &Context,
-    args: &GlandArgs,
-) -> Result<(), CliError> {
+fn write_scenario(path: &Path, scenario: &str) -> Result<(), CliError> {
     if path.exists() {
         return Err(input(format!(
             "-o {}: the file exists; sealsim gland never overwrites a file: give another name \
@@ -425,10 +219,7 @@ fn write_scenario(
             path.display()
         )));
     }
-    write_output(
-        Some(path),
-        scenario_text(template, design, stack, ctx, args).as_bytes(),
-    )?;
+    write_output(Some(path), scenario.as_bytes())?;
     eprintln!(
         "wrote {} (run it with `sealsim run {}`)",
         path.display(),

@@ -11,6 +11,7 @@ pub mod compare;
 pub mod datasheet;
 pub mod figures;
 pub mod fit_prony;
+pub mod gland;
 pub mod leak;
 pub mod life;
 pub mod study;

@@ -238,6 +238,16 @@ fn bad_input_exits_2_with_the_fix() {
             "face glands",
         ),
         (vec!["AS568-001", "--service", "face"], "0.139"),
+        // the new user's −214 (OD 32.05 mm) in a 25.4 mm bore: the designer refuses what
+        // `run` refuses, with the nearest size of the cross-section
+        (
+            vec!["AS568-214", "--service", "piston", "--bore", "25.4 mm"],
+            "cannot be assembled",
+        ),
+        (
+            vec!["AS568-214", "--service", "piston", "--bore", "25.4 mm"],
+            "AS568-210",
+        ),
         (
             vec!["AS568-214", "--service", "face", "--backup-rings", "1"],
             "metal to metal",
