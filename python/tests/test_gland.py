@@ -42,7 +42,7 @@ def test_gland_is_the_commands_json_and_its_scenario_runs(cli, tmp_path):
 
 
 def test_gland_quantities_as_si_floats_are_the_strings():
-    a = sealsim.gland("AS568-214", "piston", bore="31.75 mm", temperature=("-20 C", "80 C"))
+    a = sealsim.gland("AS568-214", "piston", bore="0.03175 m", temperature=("253.15 K", "353.15 K"))
     b = sealsim.gland("AS568-214", "piston", bore=0.03175, temperature=(253.15, 353.15))
     assert a.summary == b.summary
 

@@ -310,6 +310,16 @@ fn scenario_text(
             continue;
         }
         let key = trimmed.split('=').next().unwrap_or_default().trim();
+        if section.is_empty() && key == "name" {
+            let name = format!(
+                "{} {} gland, {}, designed by sealsim gland",
+                ctx.size,
+                design.service.kind.name(),
+                request.material
+            );
+            out += &format!("name = {}\n", toml::Value::String(name));
+            continue;
+        }
         if section == "material" && key == "library" {
             out += &format!("library = \"{}\"\n", request.material);
             continue;
@@ -323,8 +333,33 @@ fn scenario_text(
             out += &format!("pressure_difference = {quoted}\n");
             continue;
         }
+        if let Some((lo, hi)) = request.temperatures {
+            // the service range the stack-up was checked over: the run at its hottest (the
+            // conservative end for ageing and set), the shutdown check at its coldest
+            if section == "environment" && key == "temperature" {
+                out += &format!(
+                    "temperature = {}  # the hottest of the designed service range\n",
+                    celsius(hi)
+                );
+                continue;
+            }
+            if trimmed.starts_with("[failure]") && lo < gland_design::ASSEMBLY_TEMPERATURE {
+                out += line;
+                out += &format!(
+                    "\nshutdown_temperature = {}  # the coldest of the designed service range\n",
+                    celsius(lo)
+                );
+                continue;
+            }
+        }
         out += line;
         out.push('\n');
     }
     out
+}
+
+/// A temperature for the scenario file, in °C to 0.01 K.
+fn celsius(t: f64) -> String {
+    let s = format!("{:.2}", t - 273.15);
+    format!("\"{} C\"", s.trim_end_matches('0').trim_end_matches('.'))
 }
