@@ -381,9 +381,10 @@ class GlandDesign:
 
     @property
     def stack_up(self) -> Any:
-        """The stack-up, one row per quantity (fractions for squeeze, stretch, OD compression and
-        fill; the clearance in the row's ``unit``): nominal, the worst case at 23 °C, the worst case over
-        the service temperatures, the limit it is checked against and whether it holds."""
+        """The stack-up, one row per quantity (fractions for squeeze, stretch, OD compression
+        and fill; the clearance in the row's ``unit``): nominal, the worst case at 23 °C, the
+        worst case over the service temperatures, the limit it is checked against and whether
+        it holds."""
         rows = self.summary["stack_up"]
         names = [
             "quantity",
