@@ -302,7 +302,7 @@ impl PartRow<'_> {
         for (j, input) in self.study.inputs.iter().enumerate() {
             let cell = match input.kind {
                 InputKind::Words(_) => Cell::Word(self.field(1 + j).to_owned()),
-                InputKind::Quantity { .. } | InputKind::SizeTolerance => {
+                InputKind::Quantity { .. } | InputKind::SizeTolerance | InputKind::FitTolerance => {
                     Cell::Number(self.number(1 + j)?)
                 }
             };
@@ -474,7 +474,7 @@ fn life_text(t: Option<f64>, why: &str) -> String {
 fn levels<'s>(study: &Study, s: &'s StudySummary) -> Vec<&'s LevelLife> {
     let rank = |l: &LevelLife| match &study.inputs[l.input].kind {
         InputKind::Words(words) => words.iter().position(|w| *w == l.level),
-        InputKind::Quantity { .. } | InputKind::SizeTolerance => None,
+        InputKind::Quantity { .. } | InputKind::SizeTolerance | InputKind::FitTolerance => None,
     };
     let mut out: Vec<&LevelLife> = s.by_level.iter().collect();
     out.sort_by_key(|l| (l.input, rank(l)));

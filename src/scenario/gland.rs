@@ -82,6 +82,7 @@ pub(super) fn gland_only_keys(raw: &RawSeal) -> Vec<(&'static str, Option<Range<
         ("groove_depth_tolerance", q(&raw.groove_depth_tolerance)),
         ("groove_width", q(&raw.groove_width)),
         ("diametral_clearance", q(&raw.diametral_clearance)),
+        ("fit", raw.fit.as_ref().map(Spanned::span)),
         ("extrusion_gap", q(&raw.extrusion_gap)),
         ("bore_diameter", q(&raw.bore_diameter)),
         ("rod_diameter", q(&raw.rod_diameter)),
@@ -757,6 +758,51 @@ impl GlandTable<'_, '_> {
         }
     }
 
+    /// The diametral clearance of a piston or rod gland: as `given`, checked against the ISO
+    /// 286 `fit` at the seat `diameter` \[m\] when both are given; the fit's largest (the
+    /// conservative end for extrusion, docs/model.md §6.2.1) when only the fit is.
+    fn fit_clearance(&self, given: Option<f64>, diameter: f64) -> Result<f64, ScenarioError> {
+        let Some(fit) = &self.raw.fit else {
+            return given.ok_or_else(|| {
+                self.missing(
+                    "diametral_clearance",
+                    "the diametral clearance (bore minus piston, or housing bore minus rod; 0 \
+                     for none) or the `fit` (\"H8/f7\"), which decides extrusion",
+                )
+            });
+        };
+        // clearances are tens of µm: to 1 µm
+        let mm3 = |v: f64| format!("{:.3}", v * 1e3);
+        let bad = |message: String| self.source.error(fit.span(), "seal.fit", message);
+        let (min, max) = crate::fits::Fit::parse(fit.get_ref())
+            .and_then(|f| f.clearance(diameter))
+            .map_err(|e| bad(e.to_string()))?;
+        if min < 0.0 {
+            return Err(bad(format!(
+                "{} is not a clearance fit at {} mm (clearance {} … {} mm): a seal's piston \
+                 or rod must move; choose a shaft d, e, f, g or h with hole H",
+                fit.get_ref(),
+                mm3(diameter),
+                mm3(min),
+                mm3(max)
+            )));
+        }
+        match given {
+            None => Ok(max),
+            // 1 nm: the rounding of a clearance typed in mm
+            Some(c) if c >= min - 1e-9 && c <= max + 1e-9 => Ok(c),
+            Some(c) => Err(bad(format!(
+                "diametral_clearance {} mm is outside the {} clearance {} … {} mm at {} mm: \
+                 remove diametral_clearance (the fit's largest is used) or fix one of them",
+                mm3(c),
+                fit.get_ref(),
+                mm3(min),
+                mm3(max),
+                mm3(diameter)
+            ))),
+        }
+    }
+
     /// `key`, which this gland needs for `what`, missing from the table.
     fn missing(&self, key: &str, what: &str) -> ScenarioError {
         self.source.error(
@@ -851,6 +897,17 @@ impl GlandTable<'_, '_> {
             "diametral_clearance",
             "extrusion_gap (the flange separation, default 0)",
         )?;
+        if let Some(fit) = &raw.fit {
+            return Err(self.source.error(
+                fit.span(),
+                "seal.fit",
+                format!(
+                    "not a key of {}: a face gland has no bore-and-piston fit (its gap is \
+                     extrusion_gap, the flange separation); remove it",
+                    self.a_gland
+                ),
+            ));
+        }
         self.refuse(
             &raw.bore_diameter,
             "bore_diameter",
@@ -915,15 +972,9 @@ impl GlandTable<'_, '_> {
                 },
             )?;
         }
-        let clearance = match &raw.diametral_clearance {
-            Some(q) => self.source.quantity(q, &DIAMETRAL_CLEARANCE)?,
-            None => {
-                return Err(self.missing(
-                    "diametral_clearance",
-                    "the diametral clearance (bore minus piston, or housing bore minus \
-                     rod; 0 for none), which decides extrusion",
-                ));
-            }
+        let given = match &raw.diametral_clearance {
+            Some(q) => Some(self.source.quantity(q, &DIAMETRAL_CLEARANCE)?),
+            None => None,
         };
         let (own, other, field) = if kind == GlandKind::Piston {
             (&raw.bore_diameter, &raw.rod_diameter, &BORE_DIAMETER)
@@ -951,6 +1002,7 @@ impl GlandTable<'_, '_> {
                 ));
             }
         };
+        let clearance = self.fit_clearance(given, diameter)?;
         let locator = if kind == GlandKind::Piston {
             Locator::Bore(diameter)
         } else {

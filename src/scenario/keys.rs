@@ -955,6 +955,15 @@ const SEAL: &[Key] = &[
         "gland: bore minus piston (housing bore minus rod); the extrusion gap is half of it",
     ),
     key(
+        "fit",
+        Text,
+        Absent("the clearance as given"),
+        "piston, rod: the ISO 286 fit `\"HOLE/SHAFT\"` of bore and piston (housing and rod), e.g. \
+         `\"H8/f7\"` (IT5–IT11; H; d, e, f, g, h; to 500 mm): `diametral_clearance` defaults to \
+         the fit's largest at the bore (rod) diameter and must lie within its range; a study's \
+         `tolerances = \"fits\"` draws the clearance within it",
+    ),
+    key(
         "extrusion_gap",
         Quantity(gland::EXTRUSION_GAP),
         Literal("\"0 m\"", "face gland"),

@@ -325,6 +325,9 @@ pub(super) struct RawSeal {
     pub groove_depth_tolerance: Option<Quantity>,
     pub groove_width: Option<Quantity>,
     pub diametral_clearance: Option<Quantity>,
+    /// A piston or rod gland's ISO 286 fit `HOLE/SHAFT` (`"H8/f7"`): the clearance range at
+    /// the bore or rod diameter.
+    pub fit: Option<Spanned<String>>,
     pub extrusion_gap: Option<Quantity>,
     pub bore_diameter: Option<Quantity>,
     pub rod_diameter: Option<Quantity>,

@@ -93,6 +93,10 @@ pub enum InputKind {
     /// AS568 ± tolerance, so that it follows a varied `seal.size`; the case's ring is then
     /// written out as `cross_section` + `inner_diameter`.
     SizeTolerance,
+    /// `seal.diametral_clearance` within the case's ISO 286 `seal.fit` (`tolerance = "fit"`):
+    /// the value z ∈ [−1, 1] places the clearance between the fit's smallest (−1) and largest
+    /// (+1) at the case's bore or rod diameter, so that it follows a varied `seal.fit`.
+    FitTolerance,
 }
 
 /// One varied input.
@@ -113,7 +117,9 @@ impl StudyInput {
             InputKind::Quantity {
                 dimension: Some(d), ..
             } if *d != Dimension::DIMENSIONLESS => format!("{}_{}", self.key, si_suffix(*d)),
-            InputKind::SizeTolerance => format!("{}_tolerance_fraction", self.key),
+            InputKind::SizeTolerance | InputKind::FitTolerance => {
+                format!("{}_tolerance_fraction", self.key)
+            }
             _ => self.key.clone(),
         }
     }
@@ -123,7 +129,7 @@ impl StudyInput {
         match &self.kind {
             InputKind::Quantity { scale, offset, .. } => Cell::Number(x * scale + offset),
             InputKind::Words(w) => Cell::Word(w[x as usize].clone()),
-            InputKind::SizeTolerance => Cell::Number(x),
+            InputKind::SizeTolerance | InputKind::FitTolerance => Cell::Number(x),
         }
     }
 
@@ -141,7 +147,7 @@ impl StudyInput {
                 toml::Value::String(format!("{} {unit}", units::exact(x)))
             }
             InputKind::Words(w) => toml::Value::String(w[x as usize].clone()),
-            InputKind::SizeTolerance => toml::Value::Float(x),
+            InputKind::SizeTolerance | InputKind::FitTolerance => toml::Value::Float(x),
         }
     }
 
@@ -149,6 +155,9 @@ impl StudyInput {
     pub fn describe(&self, x: f64) -> String {
         if self.kind == InputKind::SizeTolerance {
             return format!("{} = nominal {x:+.3} × the size's tolerance", self.key);
+        }
+        if self.kind == InputKind::FitTolerance {
+            return format!("{} = the fit's middle {x:+.3} × its half range", self.key);
         }
         match self.toml_value(x) {
             toml::Value::String(s) => format!("{} = \"{s}\"", self.key),
@@ -260,9 +269,21 @@ impl Study {
             fingerprint,
         };
         // Every key path must be one a scenario accepts: each input alone at its median.
+        // A fraction of a case's own tolerance (of its size, of its fit) goes with the input it
+        // follows when that is varied too.
+        let median = |j: usize| (&study.inputs[j], study.plan.inputs[j].quantile(0.5));
         for (j, input) in study.inputs.iter().enumerate() {
-            let x = study.plan.inputs[j].quantile(0.5);
-            study.scenario_with(&[(input, x)], None)?;
+            let follows = match input.kind {
+                InputKind::SizeTolerance => Some("seal.size"),
+                InputKind::FitTolerance => Some("seal.fit"),
+                _ => None,
+            };
+            let mut alone = vec![median(j)];
+            if let Some(k) = follows.and_then(|key| study.inputs.iter().position(|i| i.key == key))
+            {
+                alone.push(median(k));
+            }
+            study.scenario_with(&alone, None)?;
         }
         Ok(study)
     }
@@ -334,15 +355,28 @@ impl Study {
     ) -> Result<Scenario, ScenarioError> {
         let mut table = self.base.clone();
         let mut ring = Vec::new();
+        let mut fit = None;
         for (input, x) in assignments {
-            if input.kind == InputKind::SizeTolerance {
-                ring.push((*input, *x));
-                continue;
+            match input.kind {
+                InputKind::SizeTolerance => ring.push((*input, *x)),
+                InputKind::FitTolerance => fit = Some((*input, *x)),
+                _ => set(&mut table, &input.key, input.toml_value(*x))
+                    .map_err(|m| self.error(input, m))?,
             }
-            set(&mut table, &input.key, input.toml_value(*x)).map_err(|m| self.error(input, m))?;
         }
         if let Some((first, _)) = ring.first() {
             size_within_tolerance(&mut table, &ring).map_err(|m| self.error(first, m))?;
+        }
+        if let Some((input, z)) = fit {
+            clearance_within_fit(&mut table, z).map_err(|m| self.error(input, m))?;
+        } else if assignments.iter().any(|(i, _)| i.key == "seal.fit")
+            && !assignments
+                .iter()
+                .any(|(i, _)| i.key == "seal.diametral_clearance")
+            && let Some(toml::Value::Table(seal)) = table.get_mut("seal")
+        {
+            // a varied fit sets the clearance (its largest): the base's own was for its fit
+            seal.remove("diametral_clearance");
         }
         let text =
             toml::to_string(&table).map_err(|e| self.error(assignments[0].0, e.to_string()))?;
@@ -713,8 +747,41 @@ fn size_within_tolerance(
     Ok(())
 }
 
-/// The dimensions `tolerances = "fits"` draws, each with its band (`"size"` or `"scenario"`):
-/// the ring within its size's tolerance when the base or `[vary]` gives `seal.size`, and every
+/// The case's `seal.diametral_clearance` \[m\] at the fraction `z` ∈ [−1, 1] between the
+/// smallest and largest clearance of its ISO 286 `seal.fit` at its bore (piston) or rod
+/// diameter; the case's own `diametral_clearance` is replaced.
+fn clearance_within_fit(table: &mut toml::Table, z: f64) -> Result<(), String> {
+    let Some(toml::Value::Table(seal)) = table.get_mut("seal") else {
+        return Err("tolerance = \"fit\" needs a [seal] with `fit`".into());
+    };
+    let Some(toml::Value::String(fit)) = seal.get("fit") else {
+        return Err(
+            "tolerance = \"fit\" draws the clearance within the case's ISO 286 fit: the case has \
+             no `seal.fit` (give one in the base, \"H8/f7\", or vary it)"
+                .into(),
+        );
+    };
+    let seat = ["bore_diameter", "rod_diameter"]
+        .iter()
+        .find_map(|k| seal.get(*k).and_then(toml::Value::as_str))
+        .ok_or(
+            "tolerance = \"fit\" needs the case's bore_diameter (piston) or rod_diameter (rod)",
+        )?;
+    let diameter = units::parse_quantity(seat, Dimension::LENGTH).map_err(|e| e.to_string())?;
+    let (min, max) = crate::fits::Fit::parse(fit)
+        .and_then(|f| f.clearance(diameter))
+        .map_err(|e| format!("seal.fit: {e}"))?;
+    let clearance = 0.5 * (min + max) + z * 0.5 * (max - min);
+    seal.insert(
+        "diametral_clearance".into(),
+        toml::Value::String(format!("{} m", units::exact(clearance))),
+    );
+    Ok(())
+}
+
+/// The dimensions `tolerances = "fits"` draws, each with its band (`"size"`, `"fit"` or
+/// `"scenario"`): the ring within its size's tolerance when the base or `[vary]` gives
+/// `seal.size`, the clearance within its ISO 286 fit when they give `seal.fit`, and every
 /// `seal.X` whose `seal.X_tolerance` the base gives.
 fn toleranced(
     base: &toml::Table,
@@ -723,6 +790,9 @@ fn toleranced(
     let mut out = Vec::new();
     if get(base, "seal.size").is_some() || vary.contains_key("seal.size") {
         out.extend(RING_KEYS.iter().map(|k| ((*k).to_owned(), "size")));
+    }
+    if get(base, "seal.fit").is_some() || vary.contains_key("seal.fit") {
+        out.push(("seal.diametral_clearance".to_owned(), "fit"));
     }
     if let Some(toml::Value::Table(seal)) = base.get("seal") {
         for key in seal.keys() {
@@ -1212,6 +1282,9 @@ impl Entry<'_> {
             ("tolerance", Some(toml::Value::String(t))) if t == "size" => {
                 Some(self.size_tolerance(table))
             }
+            ("tolerance", Some(toml::Value::String(t))) if t == "fit" => {
+                Some(self.fit_tolerance(table))
+            }
             _ => None,
         }
     }
@@ -1255,6 +1328,47 @@ impl Entry<'_> {
             _ => return Err(self.err("`shape` is \"normal\" (±3σ) or \"uniform\"")),
         };
         Ok((self.with_kind(InputKind::SizeTolerance), d))
+    }
+
+    /// `tolerance = "fit"` on `seal.diametral_clearance`: the fraction z between the case's
+    /// ISO 286 fit's smallest (−1) and largest (+1) clearance, normal with the range at ±3σ
+    /// (truncated there; both parts' sizes spread about their tolerance zones' middles) or
+    /// `shape = "uniform"`.
+    fn fit_tolerance(
+        &self,
+        table: &toml::Table,
+    ) -> Result<(StudyInput, Distribution), ScenarioError> {
+        if self.key != "seal.diametral_clearance" {
+            return Err(self.err(
+                "tolerance = \"fit\" applies to seal.diametral_clearance (the clearance of the \
+                 case's ISO 286 `seal.fit`): give this key a band such as \"±0.05 mm\"",
+            ));
+        }
+        if table.contains_key("nominal") {
+            return Err(self.err(
+                "tolerance = \"fit\" takes the range from the case's `seal.fit`: remove `nominal`",
+            ));
+        }
+        let d = match table.get("shape") {
+            None => Distribution::Normal {
+                mean: 0.0,
+                std: 1.0 / 3.0,
+                lo: -1.0,
+                hi: 1.0,
+            },
+            Some(toml::Value::String(s)) if s == "normal" => Distribution::Normal {
+                mean: 0.0,
+                std: 1.0 / 3.0,
+                lo: -1.0,
+                hi: 1.0,
+            },
+            Some(toml::Value::String(s)) if s == "uniform" => Distribution::Uniform {
+                min: -1.0,
+                max: 1.0,
+            },
+            _ => return Err(self.err("`shape` is \"normal\" (±3σ) or \"uniform\"")),
+        };
+        Ok((self.with_kind(InputKind::FitTolerance), d))
     }
 
     /// `values = [...]`: quantities (all of one quantity) or words, equally likely.

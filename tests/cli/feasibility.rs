@@ -298,3 +298,39 @@ fn dynamic_squeeze_above_16_percent_warns_just_past_it() {
         );
     }
 }
+
+/// `seal.fit`: the clearance of an ISO 286 fit at the bore. H8/f7 at 31.75 mm (30–50 mm row:
+/// H8 +0/+39 µm, f7 −25/−50 µm) is 25…89 µm: without `diametral_clearance` the run takes the
+/// largest (extrusion gap 0.0445 mm), a clearance outside the range is refused naming both, an
+/// unknown class is refused at the key.
+#[test]
+fn a_fit_gives_the_clearance_range_and_refuses_a_clearance_outside_it() {
+    let with_fit = |clearance: &str, fit: &str| {
+        PISTON.replace(
+            "diametral_clearance = \"0.1 mm\"",
+            &format!("{clearance}fit = \"{fit}\""),
+        )
+    };
+    let (code, stdout, stderr, _, _) = run_text(&with_fit("", "H8/f7"));
+    assert_eq!(code, Some(0), "{stderr}");
+    assert!(stdout.contains("extrusion gap 0.0445 mm"), "{stdout}");
+    let (code, stdout, stderr, _, _) =
+        run_text(&with_fit("diametral_clearance = \"0.05 mm\"\n", "H8/f7"));
+    assert_eq!(code, Some(0), "{stderr}");
+    assert!(stdout.contains("extrusion gap 0.025 mm"), "{stdout}");
+    let line = PISTON
+        .lines()
+        .position(|l| l.starts_with("diametral_clearance"))
+        .unwrap()
+        + 2;
+    refused(
+        &with_fit("diametral_clearance = \"0.1 mm\"\n", "H8/f7"),
+        &format!("{line}: seal.fit"),
+        &["0.100 mm", "0.025 … 0.089 mm"],
+    );
+    refused(
+        &with_fit("", "H8/k6"),
+        &format!("{}: seal.fit", line - 1),
+        &["k6", "H8/f7"],
+    );
+}

@@ -206,3 +206,133 @@ fn study_err(dir: &std::path::Path, vary: &str) -> String {
     assert_eq!(out.status.code(), Some(2));
     String::from_utf8(out.stderr).unwrap()
 }
+
+/// `tolerance = "fit"` places the clearance within the case's ISO 286 fit at the 31.75 mm bore:
+/// H8/f7 in the 30–50 mm row is H8 +0/+39 µm, f7 −25/−50 µm → 25…89 µm; H11/d10 is H11
+/// +0/+160 µm, d10 −80/−180 µm → 80…340 µm (ISO 286-2 tables; independent of the code's).
+#[test]
+fn a_clearance_within_its_fit_follows_the_case_fit() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = study(
+        dir.path(),
+        "fit",
+        "",
+        "\"seal.fit\" = { values = [\"H8/f7\", \"H11/d10\"] }\n\"seal.diametral_clearance\" = \
+         { tolerance = \"fit\" }\n",
+    );
+    let study = Study::load(&path).unwrap();
+    let clearance = |fit: f64, z: f64| {
+        let s = study.scenario(0, &[fit, z]).unwrap();
+        2.0 * s.gland.unwrap().extrusion_gap * 1e6
+    };
+    for (fit, z, want) in [
+        (0.0, -1.0, 25.0),
+        (0.0, 1.0, 89.0),
+        (0.0, 0.0, 57.0),
+        (1.0, -1.0, 80.0),
+        (1.0, 1.0, 340.0),
+    ] {
+        let got = clearance(fit, z);
+        assert!(
+            (got - want).abs() < 1e-6,
+            "fit {fit} z {z}: {got} µm vs {want}"
+        );
+    }
+    // on another key, with a nominal, or without a fit in the case: refused at the key
+    let bad = study_err(
+        dir.path(),
+        "\"seal.groove_depth\" = { tolerance = \"fit\" }\n",
+    );
+    assert!(
+        bad.contains("seal.groove_depth") && bad.contains("diametral_clearance"),
+        "{bad}"
+    );
+    let bad = study_err(
+        dir.path(),
+        "\"seal.diametral_clearance\" = { tolerance = \"fit\" }\n",
+    );
+    assert!(bad.contains("seal.fit"), "{bad}");
+}
+
+/// Fit grades as a study input with `tolerances = "fits"`: the loose H11/d10 fit (80…340 µm)
+/// opens the clearance past what one back-up ring holds at 210 bar in the upper part of its
+/// range, so some of its cases fail at installation by extrusion — exactly those above one
+/// threshold of the drawn fraction — while no H8/f7 case (at most 89 µm) does; the summary gives
+/// the B10 of each fit, the loose fit's lower bound at the installation.
+#[test]
+fn a_study_over_fit_grades_gives_b10_per_fit_and_the_loose_fit_extrudes() {
+    let dir = tempfile::tempdir().unwrap();
+    study(
+        dir.path(),
+        "fits",
+        "tolerances = \"fits\"\n",
+        "\"seal.fit\" = { values = [\"H8/f7\", \"H11/d10\"] }\n",
+    );
+    let out = sealsim()
+        .current_dir(dir.path())
+        .args([
+            "study",
+            "fits.study.toml",
+            "-o",
+            "cases.csv",
+            "--summary",
+            "s.json",
+        ])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let (header, rows) = read_csv(&dir.path().join("cases.csv"));
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let (z, fit, mode) = (
+        col("seal.diametral_clearance_tolerance_fraction"),
+        col("seal.fit"),
+        col("mode"),
+    );
+    let cases: Vec<(String, f64, bool)> = rows
+        .iter()
+        .map(|r| {
+            (
+                r[fit].clone(),
+                r[z].parse().unwrap(),
+                r[mode] == "extrusion",
+            )
+        })
+        .collect();
+    assert!(cases.iter().all(|(_, z, _)| (-1.0..=1.0).contains(z)));
+    assert!(
+        cases.iter().all(|(f, _, e)| f == "H11/d10" || !e),
+        "an H8/f7 case extrudes"
+    );
+    let loose: Vec<&(String, f64, bool)> = cases.iter().filter(|c| c.0 == "H11/d10").collect();
+    let lowest_extruded = loose
+        .iter()
+        .filter(|c| c.2)
+        .map(|c| c.1)
+        .fold(f64::INFINITY, f64::min);
+    let highest_held = loose
+        .iter()
+        .filter(|c| !c.2)
+        .map(|c| c.1)
+        .fold(-1.0, f64::max);
+    assert!(lowest_extruded.is_finite(), "no H11/d10 case extrudes");
+    assert!(
+        highest_held < lowest_extruded,
+        "{highest_held} held, {lowest_extruded} extruded"
+    );
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("s.json")).unwrap()).unwrap();
+    let levels = summary["by_level"].as_array().unwrap();
+    let level = |name: &str| {
+        let l = levels.iter().find(|l| l["level"] == name).unwrap();
+        assert_eq!(l["input"], "seal.fit");
+        l.clone()
+    };
+    assert_eq!(level("H11/d10")["b10_lower_s"].as_f64(), Some(0.0));
+    assert!(level("H8/f7")["b10_lower_s"].as_f64().unwrap() > 0.0);
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    assert!(stdout.contains("B10 by seal.fit"), "{stdout}");
+}
