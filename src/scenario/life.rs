@@ -305,12 +305,12 @@ impl SealSpec {
     /// conservative end: the compression falls from it at every colder temperature, and P0
     /// stays the stress the run starts from in a hot service (docs/model.md §6).
     pub fn thermal_reference(&self, environment: &TemperatureHistory) -> f64 {
-        match (self.installation_temperature, self.geometry) {
-            (Some(t), _) => t,
-            (None, SealGeometry::Flat { .. }) => environment
+        match self.installation_temperature {
+            Some(t) => t,
+            None if self.geometry.bolted() => environment
                 .at(0.0)
                 .max(super::gland::DEFAULT_INSTALLATION_TEMPERATURE),
-            (None, SealGeometry::ORing { .. }) => environment.at(0.0),
+            None => environment.at(0.0),
         }
     }
 }
@@ -468,7 +468,7 @@ impl Source<'_> {
             return Ok(None);
         };
         let Some(rubber_expansion) = material.thermal_expansion else {
-            if housing.by_default && matches!(seal.geometry, SealGeometry::Flat { .. }) {
+            if housing.by_default && seal.geometry.bolted() {
                 // a bolted gasket by default: refused later only where the temperature departs
                 // from the bolting's (Source::flat_without_expansion)
                 return Ok(None);
@@ -513,8 +513,7 @@ impl Source<'_> {
         failure: &FailureCriteria,
         fix: &str,
     ) -> Result<(), ScenarioError> {
-        let (Some(housing), SealGeometry::Flat { .. }) = (&seal.housing_expansion, seal.geometry)
-        else {
+        let (Some(housing), true) = (&seal.housing_expansion, seal.geometry.bolted()) else {
             return Ok(());
         };
         let installed = seal.thermal_reference(environment);

@@ -17,7 +17,7 @@ use crate::material::Material;
 use crate::numerical::reference::NumericalSettings;
 use crate::numerical::{HeightMap, psd as map_psd};
 use crate::roughness::{self, Band, Callout, ShortWavelengths};
-use crate::seal::{Profile, SealGeometry, VolumeSwell};
+use crate::seal::VolumeSwell;
 use crate::simulate::LifeProblem;
 use crate::simulate::{AsperityModulus, GrooveInterface};
 use crate::surface::Spectrum;
@@ -686,16 +686,9 @@ impl Source<'_> {
             &super::life::FailureContext {
                 low_temperature_limit: material.low_temperature_limit(),
                 moving: motion.is_some(),
-                cooling_time: match geometry {
-                    SealGeometry::ORing { cross_section, .. } => {
-                        thermal_settling_time(*cross_section)
-                    }
-                    // through its compressed thickness; unknown: cooled at once, the least
-                    // relaxation on the way (docs/model.md §8.2)
-                    SealGeometry::Flat { thickness, .. } => {
-                        thickness.map_or(0.0, thermal_settling_time)
-                    }
-                },
+                // a ring's cord, a gasket's compressed thickness; unknown: cooled at once,
+                // the least relaxation on the way (docs/model.md §8.2)
+                cooling_time: geometry.cooling_length().map_or(0.0, thermal_settling_time),
                 no_shutdown: (loading == crate::simulate::Loading::Force).then_some(
                     "under loading = \"force\" the bolts or springs keep the seal's load at rest \
                      too; the check is of a seal held at a fixed compression (loading = \
@@ -1104,7 +1097,7 @@ impl Source<'_> {
         material: &Material,
         environment: &crate::material::TemperatureHistory,
     ) -> Result<Option<ScenarioError>, ScenarioError> {
-        if !matches!(seal.geometry, SealGeometry::ORing { .. }) {
+        if !seal.geometry.fitted() {
             return Ok(None);
         }
         let Some(limit) = material.low_temperature_limit() else {
@@ -2535,11 +2528,10 @@ fn settling_environment(
     environment: crate::material::TemperatureHistory,
     seal: &super::life::SealSpec,
 ) -> crate::material::TemperatureHistory {
-    match (seal.fitting_temperature, seal.geometry) {
-        (Some(fitted), SealGeometry::ORing { cross_section, .. })
-            if fitted != environment.at(0.0) =>
-        {
-            environment.with_lead_in(fitted, thermal_settling_time(cross_section))
+    match (seal.fitting_temperature, seal.geometry.fitted()) {
+        (Some(fitted), true) if fitted != environment.at(0.0) => {
+            let length = seal.geometry.cooling_length().unwrap_or(0.0);
+            environment.with_lead_in(fitted, thermal_settling_time(length))
         }
         _ => environment,
     }
@@ -2551,31 +2543,10 @@ fn settling_environment(
 /// as P0, Lindley's contact width as L_x and the circumference π D as L_y (`sealsim run`
 /// integrates the whole profile as strips in series).
 fn static_seal(life: &LifeProblem) -> FlatSeal {
-    match life.geometry {
-        // at the installation's temperature T(0): the bolted stress with its thermal strain
-        // there, as the first state of a life run (exactly P0 without thermal strain)
-        SealGeometry::Flat {
-            nominal_pressure,
-            width,
-            length,
-            ..
-        } => FlatSeal {
-            nominal_pressure: nominal_pressure
-                * life
-                    .geometry
-                    .load_variable(life.thermal_strain.as_ref(), life.installed_temperature()),
-            width,
-            length,
-        },
-        SealGeometry::ORing { .. } => {
-            let profile: Profile = life.initial_profile();
-            FlatSeal {
-                nominal_pressure: profile.peak(),
-                width: profile.width(),
-                length: life.geometry.sealing_length(),
-            }
-        }
-    }
+    let load = life
+        .geometry
+        .load_variable(life.thermal_strain.as_ref(), life.installed_temperature());
+    life.geometry.static_seal(load, &|| life.initial_profile())
 }
 
 /// The temperature scale a quantity was written in (°C for a bare number).
