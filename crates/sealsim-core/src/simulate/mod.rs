@@ -663,8 +663,8 @@ impl<'a> Simulator<'a> {
     /// k_e. Below the compound's T10 the ring is glassy on the time scale of a shutdown and the
     /// relaxed force is not the least one: the check must also hold for the ring cooled through
     /// its hereditary response ([`Self::glassy_shutdown`]). A flat gasket is checked alike: each
-    /// kind's set contact is [`crate::seal::SealGeometry::set_contact`]. `None` when the check
-    /// does not apply (force loading, or `[failure] lost_interference = false`).
+    /// kind's set contact is the `set_contact` of [`crate::seal::SealGeometry`]. `None` when the
+    /// check does not apply (force loading, or `[failure] lost_interference = false`).
     fn shutdown(&self, state: &Mechanics) -> Option<ShutdownState> {
         let p = self.problem;
         let shutdown = p.failure.shutdown?;
