@@ -15,7 +15,6 @@ use crate::material::shift::{Cycle, DAY, YEAR};
 use crate::material::{Ageing, BALANCED_CROSSLINKING, Material, Shift, TemperatureHistory};
 use crate::simulate::{AgeingSource, FailureCriteria, ThermalStrain, TimeGrid};
 use crate::units::{Dimension, show};
-use std::path::PathBuf;
 use toml::Spanned;
 
 pub(super) const DAILY_AMPLITUDE: Field = field(
@@ -1134,14 +1133,6 @@ impl Source<'_> {
                 show((MAX_CYCLE_STEPS / 8.0 * period).round())
             ),
         ))
-    }
-
-    /// A file named in the scenario, resolved against the scenario file's directory.
-    pub(super) fn relative_path(&self, file: &str) -> PathBuf {
-        match self.path.parent() {
-            Some(dir) => dir.join(file),
-            None => PathBuf::from(file),
-        }
     }
 }
 

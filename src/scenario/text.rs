@@ -2,8 +2,8 @@
 //! CSV-like file, and the one error of a data file. Every reader of a data file uses these;
 //! they use nothing of the scenario but its error type.
 
-use super::error::ScenarioError;
-use std::path::Path;
+use super::error::{ScenarioError, Source};
+use std::path::{Path, PathBuf};
 
 /// A data file that cannot be used: the file, the 1-based line when the problem is on one
 /// line, and what is wrong. Displayed as `path:line: message`.
@@ -42,4 +42,14 @@ pub(super) fn read(path: &Path) -> Result<String, ScenarioError> {
         path: path.to_path_buf(),
         source,
     })
+}
+
+impl Source<'_> {
+    /// A file named in the scenario, resolved against the scenario file's directory.
+    pub(super) fn relative_path(&self, file: &str) -> PathBuf {
+        match self.path.parent() {
+            Some(dir) => dir.join(file),
+            None => PathBuf::from(file),
+        }
+    }
 }
