@@ -167,10 +167,9 @@ pub fn run(args: LeakArgs) -> Result<(), CliError> {
 
 /// Which state `leak` evaluates for an O-ring (issue: say it in the output, not only the help).
 fn oring_state_note(scenario: &Scenario) -> Option<String> {
-    use crate::seal::SealGeometry;
     use crate::simulate::GrooveInterface;
     let life = &scenario.life;
-    if !matches!(life.geometry, SealGeometry::ORing { .. }) {
+    if !life.geometry.pressure_from_squeeze() {
         return None;
     }
     let interfaces = match life.groove {

@@ -14,7 +14,6 @@ use crate::fluid::Fluid;
 use crate::material::shift::{DAY, YEAR};
 use crate::material::{Material, Status};
 use crate::report::findings::{FindingRecord, records};
-use crate::seal::SealGeometry;
 use crate::simulate::{AsperityModulus, LevelBand, LifeProblem, LifeResult, Loading, Outcome};
 use crate::units::human;
 use crate::validity::Limit;
@@ -806,7 +805,7 @@ impl Summary {
                 crate::simulate::AgeingSource::MissingInComparison => "missing_in_comparison",
             },
             low_temperature_limit_k: problem.material.low_temperature_limit(),
-            seal: seal_kind(&problem.geometry).to_owned(),
+            seal: problem.geometry.name().to_owned(),
             loading: loading_name(problem.loading).to_owned(),
             fidelity: problem.fidelity.name().to_owned(),
             contact_area: (problem.contact.area != crate::contact::AreaModel::default())
@@ -871,10 +870,7 @@ impl Summary {
                 .and_then(|spec| MotionSummary::new(spec, result)),
             gland: problem.gland.as_ref().map(|g| GlandSummary {
                 kind: g.kind.name().to_owned(),
-                squeeze: match problem.geometry {
-                    SealGeometry::ORing { squeeze, .. } => squeeze,
-                    SealGeometry::Flat { .. } => 0.0,
-                },
+                squeeze: problem.geometry.ring_squeeze().unwrap_or(0.0),
                 squeeze_min: g.squeeze_range.map(|r| r.0),
                 squeeze_max: g.squeeze_range.map(|r| r.1),
                 energisation_factor: problem.energisation_factor,
@@ -1107,13 +1103,6 @@ fn level_verdict(problem: &LifeProblem, result: &LifeResult) -> Verdict {
 /// survives.
 pub fn failure_mode(result: &LifeResult) -> &'static str {
     result.failure.map_or("none", |f| f.mode.as_str())
-}
-
-fn seal_kind(geometry: &SealGeometry) -> &'static str {
-    match geometry {
-        SealGeometry::Flat { .. } => "flat",
-        SealGeometry::ORing { .. } => "o-ring",
-    }
 }
 
 fn loading_name(loading: Loading) -> &'static str {
@@ -1508,10 +1497,7 @@ fn shutdown_line(run: &SummaryRun, last: &crate::simulate::HistoryRow) -> Option
         )
     });
     // a flat gasket keeps a compression of its recovered thickness (§8.2)
-    let kept = match run.problem.geometry {
-        SealGeometry::Flat { .. } => "compression of the set gasket",
-        SealGeometry::ORing { .. } => "squeeze of the set ring",
-    };
+    let kept = run.problem.geometry.set_quantity();
     Some(format!(
         "at {} and ΔP = {} MPa: {kept} {} % after {}{glassy}; {lost}",
         celsius(shutdown.temperature),
@@ -1856,36 +1842,7 @@ fn motion_description(spec: &MotionSpec, m: &MotionSummary, duration: &str) -> S
 
 /// `"O-ring d = 3.53 mm, D = 50 mm, squeeze 20 %, displacement loading, asperity modulus relaxed"`.
 fn seal_description(problem: &LifeProblem) -> String {
-    let geometry = match problem.geometry {
-        SealGeometry::Flat {
-            nominal_pressure,
-            width,
-            length,
-            compression,
-            ..
-        } => format!(
-            "flat, P0 = {} MPa over {} mm × {} mm{}",
-            human(nominal_pressure / 1e6, 4),
-            human(width * 1e3, 4),
-            human(length * 1e3, 4),
-            // the compression matters where the thermal strain changes it (docs/model.md §6)
-            if problem.thermal_strain.is_some() {
-                format!(", compression {} %", human(compression * 100.0, 3))
-            } else {
-                String::new()
-            }
-        ),
-        SealGeometry::ORing {
-            cross_section,
-            mean_diameter,
-            squeeze,
-        } => format!(
-            "O-ring d = {} mm, D = {} mm, squeeze {} %",
-            human(cross_section * 1e3, 4),
-            human(mean_diameter * 1e3, 4),
-            human(squeeze * 100.0, 3)
-        ),
-    };
+    let geometry = problem.geometry.describe(problem.thermal_strain.is_some());
     let asperity = match problem.asperity_modulus {
         AsperityModulus::Relaxed => "relaxed (E∞)".to_owned(),
         AsperityModulus::Instantaneous => "instantaneous (E0)".to_owned(),

@@ -8,7 +8,7 @@ use std::path::Path;
 
 /// A data file or fit that cannot be used: the one data-file error, [`DataFileError`](crate::scenario::DataFileError)
 /// (`path:line: message`), under the name this module's callers know.
-pub type AgeingFitError = crate::scenario::DataFileError;
+pub type AgeingFitError = super::text::DataFileError;
 
 type Located = (Option<usize>, String);
 
@@ -42,7 +42,7 @@ pub fn parse_ageing_data(text: &str, path: &Path) -> Result<Vec<AgeingSeries>, A
 }
 
 fn parse(text: &str) -> Result<Vec<AgeingSeries>, Located> {
-    let mut rows = super::data_lines(text);
+    let mut rows = super::text::data_lines(text);
     let Some((header_line, header)) = rows.next() else {
         return Err((
             None,

@@ -94,7 +94,7 @@ pub fn sizes() -> Result<&'static [Size], TableError> {
 
 fn parse(text: &str) -> Result<Vec<Size>, TableError> {
     let mut out: Vec<Size> = Vec::new();
-    for (line, row) in super::data_lines(text) {
+    for (line, row) in super::text::data_lines(text) {
         if row.starts_with("dash") {
             continue;
         }

@@ -8,8 +8,8 @@
 //! (default true).
 
 use super::error::{ScenarioError, Source};
+use super::field::{Bound, Field, field};
 use super::raw::{Quantity, RawContamination, RawSimulation, RawSizeDistribution};
-use super::validate::{Bound, Field, field};
 use crate::clogging::{CaptureLaw, Contamination, DEFAULT_TOLERANCE, SizeDistribution};
 use crate::units::{self, Dimension, show};
 use toml::Spanned;
@@ -286,7 +286,7 @@ fn parse_size_table(text: &str) -> Result<(Vec<f64>, Vec<f64>), TableError> {
     let mut f: Vec<f64> = Vec::new();
     let mut scale = 1.0;
     let mut text_rows = 0;
-    for (line, row) in super::data_lines(text) {
+    for (line, row) in super::text::data_lines(text) {
         let cells: Vec<&str> = row.split(',').map(str::trim).collect();
         if d.is_empty() && cells.iter().all(|c| c.parse::<f64>().is_err()) {
             text_rows += 1;

@@ -17,9 +17,10 @@
 //! ```
 
 use super::error::{ScenarioError, Source};
+use super::field::{Bound, Field, field};
+use super::library;
 use super::raw::{Quantity, RawQuantity};
-use super::validate::{Bound, Field, field};
-use super::{library, read};
+use super::text::read;
 use crate::material::Material;
 use crate::material::datasheet::{Datasheet, LowTemperature, SetPoint};
 use crate::units::Dimension;

@@ -11,10 +11,11 @@
 //! plots = ["lambda_c", "u_c", "leak_rate"]   # also "u_c_and_hrms_c"; default: the first three
 //! ```
 
+use super::Scenario;
 use super::error::{ScenarioError, Source};
+use super::field::{Bound, Field, field};
 use super::raw::Quantity;
-use super::validate::{Bound, Field, field};
-use super::{Scenario, read};
+use super::text::read;
 use crate::math::log_spaced;
 use crate::units::{Dimension, show};
 use serde::Deserialize;

@@ -142,7 +142,7 @@ pub fn si_unit(name: &str) -> Option<&'static str> {
 
 /// A fit file that cannot be used: the one data-file error, [`DataFileError`](crate::scenario::DataFileError)
 /// (`path:line: message`), under the name this module's callers know.
-pub type FitDataError = crate::scenario::DataFileError;
+pub type FitDataError = super::text::DataFileError;
 
 /// Reads and checks the fit file at `path`, which must hold data of `kind`.
 pub fn read_fit_data(path: &Path, kind: FitKind) -> Result<FitData, FitDataError> {
@@ -275,7 +275,7 @@ struct Series<'a> {
 }
 
 fn parse(text: &str, kind: FitKind) -> Result<FitData, Located> {
-    let mut rows = super::data_lines(text).peekable();
+    let mut rows = super::text::data_lines(text).peekable();
     let Some((header_line, header)) = rows.next() else {
         return Err((
             None,

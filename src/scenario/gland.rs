@@ -24,12 +24,13 @@
 
 use super::as568;
 use super::error::{ScenarioError, Source};
-use super::life::{HousingExpansion, SealSpec};
 use super::raw::{Quantity, RawSeal};
 // `seal.cross_section` and `seal.squeeze` are the keys of a ring between plates too: one
-// definition each, in `life` (the key registry, `super::keys`, names them once).
-use super::life::{CROSS_SECTION, SQUEEZE};
-use super::validate::{Bound, Field, field};
+// definition each, in `seal_spec` (the key registry names them once).
+use super::field::{Bound, Field, field};
+use super::seal_spec::{
+    CROSS_SECTION, DEFAULT_INSTALLATION_TEMPERATURE, HousingExpansion, SQUEEZE, SealSpec,
+};
 use crate::gland::{
     GlandDesign, GlandError, GlandKind, Installed, Limit, Locator, MAX_COMPRESSION_GUIDANCE,
     MAX_FILL_GUIDANCE, MAX_STRETCH_GUIDANCE, MIN_FILL_GUIDANCE, NOMINAL_FILL_GUIDANCE,
@@ -68,8 +69,6 @@ pub(super) const ENERGISATION_FACTOR: Field = field(
 
 /// Default energisation factor of a groove-seated ring (docs/model.md §6.3).
 pub const DEFAULT_ENERGISATION_FACTOR: f64 = 1.0;
-/// Default installation temperature of a groove-seated ring: 23 °C \[K\].
-pub const DEFAULT_INSTALLATION_TEMPERATURE: f64 = 296.15;
 
 /// The keys that belong to a groove-seated ring only, with their values' spans (for the
 /// message when `gland` is absent).

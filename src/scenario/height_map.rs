@@ -1,5 +1,5 @@
 //! Height maps: a CSV file of a rectangular grid of heights (`surface.height_map`; a `.gsf`
-//! file is read by [`super::gsf`]).
+//! file is read by the `gsf` module).
 //!
 //! Format: one grid row per line (row `iy`, increasing y), comma-separated heights (column `ix`,
 //! increasing x, the flow direction), in metres unless the scenario's `height_unit` says
@@ -35,7 +35,7 @@ pub(super) fn parse(text: &str, unit: f64) -> Result<(usize, usize, Vec<f64>), H
     // (line, column count) of the first row, and the line of every row.
     let mut first: Option<(usize, usize)> = None;
     let mut lines = Vec::new();
-    for (line, row) in super::data_lines(text) {
+    for (line, row) in super::text::data_lines(text) {
         let cells: Vec<&str> = row.split(',').map(str::trim).collect();
         match first {
             None => first = Some((line, cells.len())),

@@ -89,7 +89,7 @@ pub(super) fn parse(text: &str) -> Result<Vec<(f64, f64)>, HistoryError> {
 
 /// The columns of a history file's text.
 pub(super) fn parse_history(text: &str) -> Result<History, HistoryError> {
-    let mut rows = super::data_lines(text).peekable();
+    let mut rows = super::text::data_lines(text).peekable();
     let Some((line, header)) = rows.next() else {
         return Err(HistoryError {
             line: None,

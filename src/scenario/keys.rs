@@ -9,11 +9,14 @@
 //! and that the committed reference is the rendered one.
 
 use super::contamination as cont;
+use super::field::{Bound, Field};
 use super::gland;
 use super::life;
 use super::material as mat;
 use super::motion;
-use super::validate::{self as val, Bound, Field};
+use super::seal_kind;
+use super::seal_spec;
+use super::validate as val;
 use crate::units::{Dimension, show};
 use std::fmt::Write as _;
 
@@ -801,7 +804,7 @@ const FLUID: &[Key] = &[
 const SEAL: &[Key] = &[
     key(
         "kind",
-        Choice(&["flat", "o-ring"]),
+        Choice(&seal_kind::KIND_NAMES),
         Literal("\"flat\"", ""),
         "a flat seal, or an O-ring (between plates, or seated in a `gland`)",
     ),
@@ -813,25 +816,25 @@ const SEAL: &[Key] = &[
     ),
     key(
         "nominal_pressure",
-        Quantity(life::NOMINAL_PRESSURE),
+        Quantity(seal_kind::NOMINAL_PRESSURE),
         Required("flat"),
         "flat: nominal squeezing pressure P0 at the end of installation",
     ),
     key(
         "width",
-        Quantity(life::WIDTH),
+        Quantity(seal_kind::WIDTH),
         Required("flat"),
         "flat: L_x, along the flow",
     ),
     key(
         "length",
-        Quantity(life::LENGTH),
+        Quantity(seal_kind::LENGTH),
         Required("flat"),
         "flat: L_y, across the flow",
     ),
     key(
         "thickness",
-        Quantity(life::THICKNESS),
+        Quantity(seal_kind::THICKNESS),
         Absent(
             "a liquid needs none; a gas run on a flat seal is refused without it; the shutdown \
              check then asks only that the compression stays positive, and the gasket cools at \
@@ -843,7 +846,7 @@ const SEAL: &[Key] = &[
     ),
     key(
         "compression",
-        Quantity(life::COMPRESSION),
+        Quantity(seal_kind::COMPRESSION),
         Derived(
             "0.1 for a flat seal under displacement loading (assumed: the low end of vendors' \
              10–50 %, the conservative end; docs/model.md §6)",
@@ -853,26 +856,26 @@ const SEAL: &[Key] = &[
     ),
     key(
         "cross_section",
-        Quantity(life::CROSS_SECTION),
+        Quantity(seal_spec::CROSS_SECTION),
         Required("o-ring"),
         "O-ring: cord diameter d (in a gland: the free cord, with `inner_diameter`)",
     ),
     key(
         "mean_diameter",
-        Quantity(life::MEAN_DIAMETER),
+        Quantity(seal_kind::MEAN_DIAMETER),
         Required("o-ring between plates"),
         "O-ring: mean diameter D; the sealing length is π D (an error with `gland`)",
     ),
     key(
         "squeeze",
-        Quantity(life::SQUEEZE),
+        Quantity(seal_spec::SQUEEZE),
         Required("o-ring between plates; in a gland: or `groove_depth`"),
         "O-ring: compression / d at installation (Lindley's relations hold for 5–30 %, warned \
          outside)",
     ),
     key(
         "housing_expansion",
-        Quantity(life::HOUSING_EXPANSION),
+        Quantity(seal_spec::HOUSING_EXPANSION),
         Derived(
             "none (no thermal strain) for an O-ring between plates; steel's in a gland and for a \
              flat seal under displacement loading",

@@ -177,7 +177,7 @@ fn the_registry_names_exactly_the_keys_serde_accepts() {
 }
 
 /// The fields of a key (empty for a key that is no quantity).
-fn fields(kind: &Kind) -> Vec<super::validate::Field> {
+fn fields(kind: &Kind) -> Vec<super::field::Field> {
     match kind {
         Kind::Quantity(f) | Kind::QuantityPair(f) | Kind::ChoiceOrQuantity(_, f) => vec![*f],
         Kind::Quantities(fs) => fs.iter().map(|(_, f)| *f).collect(),

@@ -3,9 +3,6 @@
 //! (`nbr-70` ↔ `materials/nbr-70.toml`); the file format is the material schema of
 //! [`crate::material::compound`] with `name`, `status` and complete provenance required.
 
-use super::ScenarioError;
-use super::material::library_material_from_str;
-use crate::material::Material;
 use std::fmt;
 use std::path::PathBuf;
 
@@ -42,14 +39,6 @@ impl Entry {
     /// The file the entry was embedded from, relative to the crate root (used in messages).
     pub fn path(&self) -> PathBuf {
         PathBuf::from(format!("materials/{}.toml", self.id))
-    }
-
-    /// Parses and validates the entry.
-    pub fn load(&self) -> Result<Material, ScenarioError> {
-        let mut material = library_material_from_str(self.text, &self.path())?;
-        material.library_id = Some(self.id.to_owned());
-        material.class = crate::permeation::family_of(self.id).map(str::to_owned);
-        Ok(material)
     }
 }
 

@@ -1,84 +1,22 @@
 //! The seal-life tables of a scenario → the pieces of a [`LifeProblem`]:
-//! `[seal]` (flat or O-ring, loading, thermal strain), `[environment]` (temperature history),
+//! `[seal]`'s thermal strain (the kinds are read in `seal_kind`), `[environment]` (temperature history),
 //! `[failure]`, `[ageing]` and `[simulation]`, each error located like the rest of the file.
 //!
 //! [`LifeProblem`]: crate::simulate::LifeProblem
 
 use super::error::{ScenarioError, Source};
+use super::field::{Bound, Field, field};
 use super::history;
 use super::raw::{Quantity, RawEnvironment, RawFailure, RawScenarioAgeing, RawSeal, RawSimulation};
-use super::validate::{Bound, Field, field};
-use crate::gland::{Gland, GlandDesign, Housing};
+pub use super::seal_kind::DEFAULT_FLAT_COMPRESSION;
+use super::seal_spec::SealSpec;
 use crate::leak::Fidelity;
 use crate::material::shift::{Cycle, DAY, YEAR};
 use crate::material::{Ageing, BALANCED_CROSSLINKING, Material, Shift, TemperatureHistory};
-use crate::seal::{SealGeometry, VolumeSwell};
-use crate::simulate::{AgeingSource, FailureCriteria, Loading, ThermalStrain, TimeGrid};
+use crate::simulate::{AgeingSource, FailureCriteria, ThermalStrain, TimeGrid};
 use crate::units::{Dimension, show};
-use std::path::PathBuf;
 use toml::Spanned;
 
-pub(super) const NOMINAL_PRESSURE: Field = field(
-    "seal.nominal_pressure",
-    Dimension::PRESSURE,
-    "Pa",
-    Bound::Range(1.0, 1e10),
-);
-pub(super) const THICKNESS: Field = field(
-    "seal.thickness",
-    Dimension::LENGTH,
-    "m",
-    Bound::Range(1e-6, 1.0),
-);
-pub(super) const COMPRESSION: Field = field(
-    "seal.compression",
-    Dimension::DIMENSIONLESS,
-    "",
-    Bound::Open(0.0, 1.0),
-);
-/// A bolted flat gasket's installed compression ε0 when `compression` is not given: 10 % of
-/// its free thickness, **assumed** — the low end of the vendors' bands read (Elasto Proxy,
-/// "Enclosure gasket compression": "the ideal compression percentage is 40, the maximum is 50,
-/// and the minimum is between 10 to 15"; EMI Seals: "25% min – 50% max, … sweet spot being 35%
-/// compression"). The smallest ε0 is the conservative end: a given thermal contraction
-/// (α_r − α_h) ΔT takes the largest fraction of it (docs/model.md §6).
-pub const DEFAULT_FLAT_COMPRESSION: f64 = 0.10;
-pub(super) const WIDTH: Field = field(
-    "seal.width",
-    Dimension::LENGTH,
-    "m",
-    Bound::Range(1e-9, 10.0),
-);
-pub(super) const LENGTH: Field = field(
-    "seal.length",
-    Dimension::LENGTH,
-    "m",
-    Bound::Range(1e-9, 10.0),
-);
-pub(super) const CROSS_SECTION: Field = field(
-    "seal.cross_section",
-    Dimension::LENGTH,
-    "m",
-    Bound::Range(1e-9, 10.0),
-);
-pub(super) const MEAN_DIAMETER: Field = field(
-    "seal.mean_diameter",
-    Dimension::LENGTH,
-    "m",
-    Bound::Range(1e-9, 10.0),
-);
-pub(super) const SQUEEZE: Field = field(
-    "seal.squeeze",
-    Dimension::DIMENSIONLESS,
-    "",
-    Bound::Open(0.0, 1.0),
-);
-pub(super) const HOUSING_EXPANSION: Field = field(
-    "seal.housing_expansion",
-    Dimension::THERMAL_EXPANSION,
-    "1/K",
-    Bound::Range(0.0, 1e-2),
-);
 pub(super) const DAILY_AMPLITUDE: Field = field(
     "environment.daily_amplitude",
     Dimension::TEMPERATURE,
@@ -272,61 +210,6 @@ pub const DAILY_PHASE: f64 = 9.0 * 3600.0;
 /// 201.5 of a non-leap year.
 pub const YEARLY_MAXIMUM: f64 = 201.5 * DAY;
 
-/// `[seal]` validated, before the thermal strain (which needs the material and the
-/// environment).
-pub(super) struct SealSpec {
-    pub geometry: SealGeometry,
-    /// The groove of a groove-seated O-ring.
-    pub gland: Option<Gland>,
-    /// k_e (docs/model.md §6.3).
-    pub energisation_factor: f64,
-    pub loading: Loading,
-    /// The housing's CTE and where it was set (`housing`, `housing_expansion`, or a gland's
-    /// default).
-    pub housing_expansion: Option<HousingExpansion>,
-    /// `installation_temperature` \[K\], or a gland's default (23 °C): the thermal strain's
-    /// reference.
-    pub installation_temperature: Option<f64>,
-    /// `installation_temperature` as given \[K\] (`None` when absent): the fitting
-    /// temperature the installation ramp runs at (docs/model.md §5.2).
-    pub fitting_temperature: Option<f64>,
-    /// A groove-seated ring's ring and groove (docs/model.md §6.2).
-    pub design: Option<GlandDesign>,
-    /// Located warnings about the input (e.g. a gland fill above the guidance).
-    pub warnings: Vec<String>,
-    /// A flat gasket's compressed thickness \[m\] (`seal.thickness`; permeation, §13.3).
-    pub thickness: Option<f64>,
-}
-
-impl SealSpec {
-    /// The thermal strain's reference temperature \[K\]: `installation_temperature` (a gland's
-    /// default 23 °C); otherwise T(0) for an O-ring between plates, and for a flat gasket the
-    /// hotter of 23 °C (bolted at room temperature) and T(0) (re-tightened hot) — the
-    /// conservative end: the compression falls from it at every colder temperature, and P0
-    /// stays the stress the run starts from in a hot service (docs/model.md §6).
-    pub fn thermal_reference(&self, environment: &TemperatureHistory) -> f64 {
-        match (self.installation_temperature, self.geometry) {
-            (Some(t), _) => t,
-            (None, SealGeometry::Flat { .. }) => environment
-                .at(0.0)
-                .max(super::gland::DEFAULT_INSTALLATION_TEMPERATURE),
-            (None, SealGeometry::ORing { .. }) => environment.at(0.0),
-        }
-    }
-}
-
-/// The housing's linear CTE α_h and the key that set it.
-pub(super) struct HousingExpansion {
-    /// α_h \[1/K\].
-    pub value: f64,
-    /// The span of the key's value (of `gland` for the default).
-    pub span: std::ops::Range<usize>,
-    /// `seal.housing`, `seal.housing_expansion` or `seal.gland`.
-    pub key: &'static str,
-    /// Set by default (a groove-seated ring without `housing` or `housing_expansion`).
-    pub by_default: bool,
-}
-
 /// What `[failure]`'s defaults depend on beyond the fluid and the environment.
 pub(super) struct FailureContext {
     /// The compound's T10 \[K\] (`None`: it has none, and the cold limit does not apply).
@@ -344,114 +227,7 @@ pub(super) struct FailureContext {
     pub highest_pressure: Option<f64>,
 }
 
-/// The keys of each seal kind (for the messages).
-const FLAT_KEYS: &str = "nominal_pressure, width, length, loading and thickness; under \
-                         displacement loading also compression, housing or housing_expansion, \
-                         and installation_temperature";
-const ORING_KEYS: &str = "cross_section, mean_diameter, squeeze, loading, housing or \
-                          housing_expansion, installation_temperature, and gland with its ring \
-                          and groove keys";
-
 impl Source<'_> {
-    /// `[seal]`: `kind = "flat"` (default) or `"o-ring"`; an O-ring swollen by the fluid's
-    /// `swell` (docs/model.md §3.8): the cord (and a seated ring's inside diameter) × λ_s in the
-    /// same gland.
-    pub(super) fn seal(
-        &self,
-        table: &Spanned<RawSeal>,
-        swell: Option<&VolumeSwell>,
-    ) -> Result<SealSpec, ScenarioError> {
-        let raw = table.get_ref();
-        let kind = raw.kind.as_ref().map_or("flat", |k| k.get_ref().as_str());
-        let seal = SealTable {
-            source: self,
-            table,
-            raw,
-            // the kind with its article, for the messages (the other kinds are rejected below)
-            a_seal: match kind {
-                "o-ring" => "an O-ring seal",
-                _ => "a flat seal",
-            },
-        };
-        let loading = self.loading(raw)?;
-        match kind {
-            "flat" => seal.flat(loading),
-            "o-ring" => seal.o_ring(loading, swell),
-            other => {
-                let span = raw.kind.as_ref().map_or(table.span(), Spanned::span);
-                Err(self.error(
-                    span,
-                    "seal.kind",
-                    format!("must be \"flat\" or \"o-ring\", got {other:?}"),
-                ))
-            }
-        }
-    }
-
-    /// `seal.loading`: displacement (default) or force.
-    fn loading(&self, raw: &RawSeal) -> Result<Loading, ScenarioError> {
-        match &raw.loading {
-            None => Ok(Loading::Displacement),
-            Some(l) => match l.get_ref().as_str() {
-                "displacement" => Ok(Loading::Displacement),
-                "force" => Ok(Loading::Force),
-                other => Err(self.error(
-                    l.span(),
-                    "seal.loading",
-                    format!(
-                        "must be \"displacement\" (fixed squeeze, e.g. an O-ring in a groove) \
-                         or \"force\" (fixed load, e.g. spring-loaded), got {other:?}"
-                    ),
-                )),
-            },
-        }
-    }
-
-    /// `housing = "steel"` (a CTE of [`Housing`]) or `housing_expansion` (a CTE), mutually
-    /// exclusive; `None` when neither is given.
-    pub(super) fn housing_expansion(
-        &self,
-        raw: &RawSeal,
-    ) -> Result<Option<HousingExpansion>, ScenarioError> {
-        match (&raw.housing, &raw.housing_expansion) {
-            (Some(_), Some(q)) => Err(self.error(
-                q.span(),
-                HOUSING_EXPANSION.key,
-                "housing and housing_expansion both give the housing's expansion: name the \
-                 material (housing) or give its CTE (housing_expansion), not both",
-            )),
-            (Some(name), None) => match Housing::from_name(name.get_ref()) {
-                Some(h) => Ok(Some(HousingExpansion {
-                    value: h.expansion(),
-                    span: name.span(),
-                    key: "seal.housing",
-                    by_default: false,
-                })),
-                None => Err(self.error(
-                    name.span(),
-                    "seal.housing",
-                    format!(
-                        "must be one of {} (or give housing_expansion, a CTE such as \
-                         \"12e-6 1/K\"), got {:?}",
-                        Housing::ALL
-                            .iter()
-                            .map(|h| format!("{:?}", h.name()))
-                            .collect::<Vec<_>>()
-                            .join(", "),
-                        name.get_ref()
-                    ),
-                )),
-            },
-            (None, Some(q)) => Ok(Some(HousingExpansion {
-                value: self.quantity(q, &HOUSING_EXPANSION)?,
-                span: q.span(),
-                key: HOUSING_EXPANSION.key,
-                by_default: false,
-            })),
-            (None, None) => Ok(None),
-        }
-    }
-
     /// The thermal strain of an O-ring with a housing CTE (`housing`, `housing_expansion`, or a
     /// groove-seated ring's default steel): the rubber's CTE is the material's
     /// `thermal_expansion` (required), the installation temperature defaults to the
@@ -468,7 +244,7 @@ impl Source<'_> {
             return Ok(None);
         };
         let Some(rubber_expansion) = material.thermal_expansion else {
-            if housing.by_default && matches!(seal.geometry, SealGeometry::Flat { .. }) {
+            if housing.by_default && seal.geometry.bolted() {
                 // a bolted gasket by default: refused later only where the temperature departs
                 // from the bolting's (Source::flat_without_expansion)
                 return Ok(None);
@@ -513,8 +289,7 @@ impl Source<'_> {
         failure: &FailureCriteria,
         fix: &str,
     ) -> Result<(), ScenarioError> {
-        let (Some(housing), SealGeometry::Flat { .. }) = (&seal.housing_expansion, seal.geometry)
-        else {
+        let (Some(housing), true) = (&seal.housing_expansion, seal.geometry.bolted()) else {
             return Ok(());
         };
         let installed = seal.thermal_reference(environment);
@@ -1359,14 +1134,6 @@ impl Source<'_> {
             ),
         ))
     }
-
-    /// A file named in the scenario, resolved against the scenario file's directory.
-    pub(super) fn relative_path(&self, file: &str) -> PathBuf {
-        match self.path.parent() {
-            Some(dir) => dir.join(file),
-            None => PathBuf::from(file),
-        }
-    }
 }
 
 /// A fidelity name of the ladder (docs/model.md §4): `rule-of-thumb`, `critical-junction` (= `table`,
@@ -1407,260 +1174,12 @@ impl ReferenceState {
     }
 }
 
-/// A `[seal]` table being read: the file, the table, and the seal's kind with its article for
-/// the messages ("a flat seal").
-struct SealTable<'s, 'a> {
-    source: &'s Source<'a>,
-    table: &'s Spanned<RawSeal>,
-    raw: &'s RawSeal,
-    a_seal: &'static str,
-}
-
-impl SealTable<'_, '_> {
-    /// The value of `q`, a key this seal needs (its kind's `keys` named when missing).
-    fn required(&self, q: &Option<Quantity>, f: &Field, keys: &str) -> Result<f64, ScenarioError> {
-        self.source.required(
-            q,
-            f,
-            self.table.span(),
-            &format!("in [seal] ({} needs {keys})", self.a_seal),
-        )
-    }
-
-    /// The first of `keys` present, refused: this seal `takes` other keys.
-    fn foreign(
-        &self,
-        keys: &[(&Option<Quantity>, &str)],
-        takes: &str,
-    ) -> Result<(), ScenarioError> {
-        for (present, key) in keys {
-            if let Some(q) = present {
-                return Err(self.source.error(
-                    q.span(),
-                    &format!("seal.{key}"),
-                    format!("not a key of {}, which takes {takes}", self.a_seal),
-                ));
-            }
-        }
-        Ok(())
-    }
-
-    /// A flat seal: `nominal_pressure`, `width`, `length`, optional `thickness`. Under
-    /// displacement loading (a bolted gasket) its compression follows the temperature
-    /// (docs/model.md §6): `compression` (default [`DEFAULT_FLAT_COMPRESSION`]), the flanges'
-    /// `housing` or `housing_expansion` (default steel) and `installation_temperature` (the
-    /// bolting's, default 23 °C). Under force loading those keys would change nothing (the
-    /// bolts or springs hold the load) and are refused.
-    fn flat(&self, loading: Loading) -> Result<SealSpec, ScenarioError> {
-        let raw = self.raw;
-        self.foreign(
-            &[
-                (&raw.cross_section, "cross_section"),
-                (&raw.mean_diameter, "mean_diameter"),
-                (&raw.squeeze, "squeeze"),
-            ],
-            FLAT_KEYS,
-        )?;
-        if let Some(span) = raw.gland.as_ref().map(Spanned::span) {
-            return Err(self.source.error(
-                span,
-                "seal.gland",
-                "applies to an O-ring seated in a groove, not a flat gasket (kind = \"flat\", \
-                 the default): set kind = \"o-ring\" for a groove-seated ring, or remove gland",
-            ));
-        }
-        for (key, span) in super::gland::gland_only_keys(raw) {
-            if let Some(span) = span {
-                return Err(self.source.error(
-                    span,
-                    &format!("seal.{key}"),
-                    format!(
-                        "applies to an O-ring gland, not a flat gasket (kind = \"flat\", the \
-                         default), which takes {FLAT_KEYS}"
-                    ),
-                ));
-            }
-        }
-        if loading == Loading::Force {
-            let q = |q: &Option<Quantity>| q.as_ref().map(Spanned::span);
-            for (key, span) in [
-                ("compression", q(&raw.compression)),
-                ("housing", raw.housing.as_ref().map(Spanned::span)),
-                ("housing_expansion", q(&raw.housing_expansion)),
-                ("installation_temperature", q(&raw.installation_temperature)),
-            ] {
-                if let Some(span) = span {
-                    return Err(self.source.error(
-                        span,
-                        &format!("seal.{key}"),
-                        "applies to the thermal strain of a gasket held at a fixed compression \
-                         (loading = \"displacement\"); under loading = \"force\" the bolts or \
-                         springs keep the load whatever the temperature, so it would change \
-                         nothing: remove it, or set loading = \"displacement\"",
-                    ));
-                }
-            }
-        }
-        let displaced = loading == Loading::Displacement;
-        let housing_expansion = if displaced {
-            Some(
-                self.source
-                    .housing_expansion(raw)?
-                    .unwrap_or(HousingExpansion {
-                        value: Housing::Steel.expansion(),
-                        span: raw.kind.as_ref().map_or(self.table.span(), Spanned::span),
-                        key: "seal.kind",
-                        by_default: true,
-                    }),
-            )
-        } else {
-            None
-        };
-        let installation_temperature = match &raw.installation_temperature {
-            Some(q) => Some(
-                self.source
-                    .absolute_temperature(q, "seal.installation_temperature")?,
-            ),
-            // by default the hotter of 23 °C and T(0), set once the environment is known
-            // (SealSpec::thermal_reference)
-            None => None,
-        };
-        let thickness = self.source.optional(raw.thickness.as_ref(), &THICKNESS)?;
-        Ok(SealSpec {
-            geometry: SealGeometry::Flat {
-                nominal_pressure: self.required(
-                    &raw.nominal_pressure,
-                    &NOMINAL_PRESSURE,
-                    FLAT_KEYS,
-                )?,
-                width: self.required(&raw.width, &WIDTH, FLAT_KEYS)?,
-                length: self.required(&raw.length, &LENGTH, FLAT_KEYS)?,
-                compression: self
-                    .source
-                    .optional(raw.compression.as_ref(), &COMPRESSION)?
-                    .unwrap_or(DEFAULT_FLAT_COMPRESSION),
-                thickness,
-            },
-            gland: None,
-            energisation_factor: 0.0,
-            loading,
-            housing_expansion,
-            installation_temperature,
-            // the bolting temperature is the thermal strain's reference only: the installation
-            // ramp runs at T(0), as before
-            fitting_temperature: None,
-            design: None,
-            warnings: Vec::new(),
-            thickness,
-        })
-    }
-
-    /// An O-ring: seated in a gland (`gland`), or squeezed between plates.
-    fn o_ring(
-        &self,
-        loading: Loading,
-        swell: Option<&VolumeSwell>,
-    ) -> Result<SealSpec, ScenarioError> {
-        let raw = self.raw;
-        self.foreign(
-            &[
-                (&raw.nominal_pressure, "nominal_pressure"),
-                (&raw.width, "width"),
-                (&raw.length, "length"),
-                (&raw.thickness, "thickness"),
-                (&raw.compression, "compression"),
-            ],
-            ORING_KEYS,
-        )?;
-        if let Some(gland) = &raw.gland {
-            let kind = self.source.gland_kind(gland)?;
-            return self
-                .source
-                .gland_seal(self.table, kind, gland.span(), loading, swell);
-        }
-        for (key, span) in super::gland::gland_only_keys(raw) {
-            if let Some(span) = span {
-                return Err(self.source.error(
-                    span,
-                    &format!("seal.{key}"),
-                    "only applies to a groove-seated ring: set gland = \"face\", \
-                     \"piston\" or \"rod\" (without gland the ring is squeezed \
-                     between plates, given by cross_section, mean_diameter and squeeze)",
-                ));
-            }
-        }
-        self.plate_o_ring(loading, swell)
-    }
-
-    /// An O-ring between plates: `cross_section`, `mean_diameter` and `squeeze`, with the
-    /// thermal strain's `housing` and `installation_temperature`.
-    fn plate_o_ring(
-        &self,
-        loading: Loading,
-        swell: Option<&VolumeSwell>,
-    ) -> Result<SealSpec, ScenarioError> {
-        let raw = self.raw;
-        let cross_section = self.required(&raw.cross_section, &CROSS_SECTION, ORING_KEYS)?;
-        let mean_diameter = self.required(&raw.mean_diameter, &MEAN_DIAMETER, ORING_KEYS)?;
-        let squeeze = self.required(&raw.squeeze, &SQUEEZE, ORING_KEYS)?;
-        if mean_diameter <= cross_section {
-            let span = raw
-                .mean_diameter
-                .as_ref()
-                .map_or(self.table.span(), Spanned::span);
-            return Err(self.source.error(
-                span,
-                MEAN_DIAMETER.key,
-                format!(
-                    "must exceed the cross_section ({} m), got {} m",
-                    show(cross_section),
-                    show(mean_diameter)
-                ),
-            ));
-        }
-        let housing_expansion = self.source.housing_expansion(raw)?;
-        let installation_temperature = match &raw.installation_temperature {
-            Some(q) if housing_expansion.is_none() => {
-                return Err(self.source.error(
-                    q.span(),
-                    "seal.installation_temperature",
-                    "the thermal strain it is the reference of is modelled only with \
-                     housing or housing_expansion (or in a gland); set one \
-                     (housing_expansion = 0 for a housing that does not expand) or \
-                     remove installation_temperature",
-                ));
-            }
-            Some(q) => Some(
-                self.source
-                    .absolute_temperature(q, "seal.installation_temperature")?,
-            ),
-            None => None,
-        };
-        let geometry = SealGeometry::ORing {
-            cross_section,
-            mean_diameter,
-            squeeze,
-        };
-        Ok(SealSpec {
-            geometry: swell.map_or(geometry, |s| s.geometry(geometry)),
-            gland: None,
-            energisation_factor: 0.0,
-            loading,
-            housing_expansion,
-            installation_temperature,
-            fitting_temperature: installation_temperature,
-            design: None,
-            warnings: Vec::new(),
-            thickness: None,
-        })
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::scenario::{Scenario, ScenarioError, library};
-    use crate::simulate::AsperityModulus;
+    use crate::seal::SealGeometry;
+    use crate::simulate::{AsperityModulus, Loading};
     use std::f64::consts::PI;
     use std::path::Path;
 

@@ -21,12 +21,12 @@
 //! default `relaxed`); a scenario material with E∞ = 0 is therefore an error.
 
 use super::error::{ScenarioError, Source};
+use super::field::{Bound, Field, field};
 use super::library;
 use super::raw::{
     Quantity, RawAgeing, RawBand, RawCompatibility, RawMaterial, RawMaterialFile, RawPermeation,
     RawPronyTerm, RawQuantity, RawShift,
 };
-use super::validate::{Bound, Field, field};
 use crate::contact::Elastic;
 use crate::material::compatibility::{Compatibility, FluidClass, Rating};
 use crate::material::{
@@ -1217,6 +1217,18 @@ fn present_keys(raw: &RawMaterial) -> Vec<(&'static str, Range<usize>)> {
     .into_iter()
     .filter_map(|(key, span)| Some((key, span?)))
     .collect()
+}
+
+/// A library compound parsed: in the material module, which reads every material table, so
+/// that the library (the embedded files) needs nothing of it.
+impl library::Entry {
+    /// Parses and validates the entry.
+    pub fn load(&self) -> Result<Material, ScenarioError> {
+        let mut material = library_material_from_str(self.text, &self.path())?;
+        material.library_id = Some(self.id.to_owned());
+        material.class = crate::permeation::family_of(self.id).map(str::to_owned);
+        Ok(material)
+    }
 }
 
 #[cfg(test)]

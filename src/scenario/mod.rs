@@ -27,6 +27,7 @@ pub use crate::material::compatibility;
 mod contamination;
 pub mod datasheet;
 mod error;
+mod field;
 pub mod figure_set;
 pub mod fit_data;
 mod gland;
@@ -44,70 +45,26 @@ mod motion;
 pub mod profile;
 mod psd;
 mod raw;
+mod seal_kind;
+mod seal_spec;
 pub mod study;
+mod surface_files;
 pub mod templates;
+mod text;
 mod validate;
+mod validated;
 
 pub use error::ScenarioError;
 pub use material::{PARAMETERS, load_material_file, material_from_str};
+pub use surface_files::{is_gsf, parse_height_map, read_height_map, read_psd_file};
+pub use text::DataFileError;
+pub use validated::Scenario;
 
-use crate::gland::GlandDesign;
-use crate::leak::StaticProblem;
 use crate::material::Material;
-use crate::numerical::HeightMap;
-use crate::numerical::reference::NumericalSettings;
-use crate::simulate::LifeProblem;
 use error::Source;
 use raw::RawScenario;
-use std::path::{Path, PathBuf};
-
-/// A validated scenario: everything in SI units, ready for the solvers.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Scenario {
-    /// The `name` key, or the file stem when it is absent.
-    pub name: String,
-    /// The file the scenario was read from (as given).
-    pub path: PathBuf,
-    /// The rubber (`[material]`: inline, or a library compound).
-    pub material: Material,
-    /// The static leak problem of the seal; its elastic constants are the material's relaxed
-    /// modulus E∞ and ν. For an O-ring its flat seal is the central strip right after
-    /// installation (Hertz peak pressure of Lindley's force with E0, Lindley's contact width,
-    /// sealing length π D).
-    pub problem: StaticProblem,
-    /// The seal-life problem (`sealsim run`): O-ring or flat seal, loading, environment,
-    /// ageing, failure criteria and time grid; 16 strips across an O-ring's profile.
-    pub life: LifeProblem,
-    /// The measured surface of `surface.height_map` (heights and pixel in m) for the numerical
-    /// level: the map itself, or for a map that is not square with an even side its largest
-    /// centred even square crop ([`crate::numerical::Topography::square_crop`]); `None` for a
-    /// spectrum given by parameters or `psd_file`. When present, `problem.spectrum` and
-    /// `life.spectrum` are the PSD estimate of the whole map
-    /// ([`crate::numerical::psd::estimate_topography`], restricted to `q0`, `q1` if given).
-    pub height_map: Option<HeightMap>,
-    /// `[numerical]`: grid, band, realisations and seed of the numerical level (defaults:
-    /// [`NumericalSettings::default`]).
-    pub numerical: NumericalSettings,
-    /// A groove-seated O-ring's ring and groove (`[seal] gland = …`, docs/model.md §6.2): its
-    /// installed state, squeeze range over the tolerances and gland fill
-    /// ([`GlandDesign::installed`], [`GlandDesign::squeeze_range`],
-    /// [`GlandDesign::max_material_fill`]); `life.geometry` is its nominal installed state.
-    pub gland: Option<GlandDesign>,
-    /// Warnings about the input, each located like an error (`FILE:LINE: KEY: …`), e.g. a gland
-    /// fill above the guidance; the commands print them as `warning:` lines.
-    pub warnings: Vec<String>,
-    /// The library compound's rating in the library fluid's class (docs/model.md §6.8); `None`
-    /// when the fluid is not a rated class or no source rated the pair.
-    pub compatibility: Option<compatibility::Compatibility>,
-    /// The library fluid's class on the rating scale at the run's highest temperature
-    /// ([`compatibility::FluidClass::of`]); `None` for a fluid the ratings do not cover (a
-    /// gas, an inline fluid). `sealsim compare` ranks by it.
-    pub fluid_class: Option<compatibility::FluidClass>,
-    /// The files the scenario reads besides itself (a material file, a temperature history,
-    /// PSD files, height maps, traces, a contact profile, a size distribution), as resolved
-    /// from the scenario's directory: no output may be written over them.
-    pub inputs: Vec<PathBuf>,
-}
+use std::path::Path;
+use text::read;
 
 impl Scenario {
     /// Reads and validates the scenario file at `path` (a `psd_file` or `height_map` is
@@ -148,114 +105,6 @@ impl Scenario {
         let raw: RawScenario = source.deserialize()?;
         source.scenario(&raw, replacement)
     }
-}
-
-/// A data file that cannot be used: the file, the 1-based line when the problem is on one
-/// line, and what is wrong. Displayed as `path:line: message`.
-#[derive(Debug, Clone, PartialEq)]
-pub struct DataFileError {
-    pub path: std::path::PathBuf,
-    pub line: Option<usize>,
-    pub message: String,
-}
-
-impl std::fmt::Display for DataFileError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{}", self.path.display())?;
-        if let Some(line) = self.line {
-            write!(f, ":{line}")?;
-        }
-        write!(f, ": {}", self.message)
-    }
-}
-
-impl std::error::Error for DataFileError {}
-
-/// The spectrum of a PSD file (CSV of `q [1/m], C [m⁴]`, the format of `[surface] psd_file`),
-/// interpolated as a piecewise power law.
-pub fn read_psd_file(path: &Path) -> Result<crate::surface::Spectrum, DataFileError> {
-    let error = |line: Option<usize>, message: String| DataFileError {
-        path: path.to_path_buf(),
-        line,
-        message,
-    };
-    let text = read(path).map_err(|e| error(None, e.to_string()))?;
-    let (q, c) = psd::parse(&text).map_err(|e| error(e.line, e.message))?;
-    crate::surface::Spectrum::tabulated(&q, &c).map_err(|e| error(None, e.to_string()))
-}
-
-/// Whether `path` names a Gwyddion Simple Field file (extension `.gsf`, any case).
-pub fn is_gsf(path: &Path) -> bool {
-    path.extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("gsf"))
-}
-
-/// A height map file as a [`crate::numerical::Topography`] (SI units): a `.gsf` file
-/// ([`gsf`], self-describing; `pixel` must then be `None` and `unit` 1) or a CSV grid
-/// (`height_map` format, heights times `unit`, spacing `pixel`, which is then required).
-pub fn read_height_map(
-    path: &Path,
-    pixel: Option<f64>,
-    unit: f64,
-) -> Result<crate::numerical::Topography, DataFileError> {
-    let error = |line: Option<usize>, message: String| DataFileError {
-        path: path.to_path_buf(),
-        line,
-        message,
-    };
-    if is_gsf(path) {
-        let bytes =
-            std::fs::read(path).map_err(|e| error(None, format!("cannot read the file: {e}")))?;
-        return gsf::parse(&bytes).map_err(|e| error(e.line, e.message));
-    }
-    let Some(pixel) = pixel else {
-        return Err(error(
-            None,
-            "a CSV height grid needs its pixel size (the spacing of the samples)".into(),
-        ));
-    };
-    let text = read(path).map_err(|e| error(None, e.to_string()))?;
-    parse_height_map(&text, path, pixel, unit)
-}
-
-/// A CSV height grid's `text` (`height_map` format: one row of heights per line, times
-/// `unit`) as a [`crate::numerical::Topography`] of spacing `pixel` \[m\]; `path` only
-/// names the grid in errors.
-pub fn parse_height_map(
-    text: &str,
-    path: &Path,
-    pixel: f64,
-    unit: f64,
-) -> Result<crate::numerical::Topography, DataFileError> {
-    let (nx, ny, heights) = height_map::parse(text, unit).map_err(|e| DataFileError {
-        path: path.to_path_buf(),
-        line: e.line,
-        message: e.message,
-    })?;
-    Ok(crate::numerical::Topography {
-        nx,
-        ny,
-        pixel,
-        heights,
-    })
-}
-
-/// The data rows of a CSV-like text file with their 1-based line numbers: a leading byte-order
-/// mark (spreadsheet exports) is dropped, rows are trimmed, blank and `#` lines skipped.
-pub(crate) fn data_lines(text: &str) -> impl Iterator<Item = (usize, &str)> {
-    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    text.lines()
-        .enumerate()
-        .map(|(i, l)| (i + 1, l.trim()))
-        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'))
-}
-
-/// The text of a scenario-like file, or a located read error.
-fn read(path: &Path) -> Result<String, ScenarioError> {
-    std::fs::read_to_string(path).map_err(|source| ScenarioError::Read {
-        path: path.to_path_buf(),
-        source,
-    })
 }
 
 #[cfg(test)]

@@ -12,8 +12,8 @@
 //! from its Hertz profile, a flat seal has none.
 
 use super::error::{ScenarioError, Source};
+use super::field::{Bound, Field, field};
 use super::raw::RawMotion;
-use super::validate::{Bound, Field, field};
 use crate::dynamic::ihl::{ContactProfile, GradientSource, InletGradients};
 use crate::dynamic::{Motion, MotionSpec};
 use crate::units::{self, Dimension, show};
@@ -243,7 +243,7 @@ impl Source<'_> {
 pub fn parse_contact_profile(text: &str) -> Result<ContactProfile, (Option<usize>, String)> {
     let cells =
         |row: &str| -> Vec<String> { row.split(',').map(|c| c.trim().to_owned()).collect() };
-    let mut rows = super::data_lines(text);
+    let mut rows = super::text::data_lines(text);
     let Some((header_line, header)) = rows.next() else {
         return Err((None, "no data: expected a header row x,p".into()));
     };

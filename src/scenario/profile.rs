@@ -23,7 +23,7 @@ pub const SPACING_TOLERANCE: f64 = 1e-2;
 
 /// A malformed trace file: the one data-file error, [`DataFileError`](crate::scenario::DataFileError)
 /// (`path:line: message`), under the name this module's callers know.
-pub type TraceFileError = crate::scenario::DataFileError;
+pub type TraceFileError = super::text::DataFileError;
 
 /// Reads a trace file (module docs).
 ///
@@ -48,7 +48,7 @@ pub fn parse_trace(text: &str, path: &Path) -> Result<Trace, TraceFileError> {
         line,
         message,
     };
-    let mut lines = super::data_lines(text).peekable();
+    let mut lines = super::text::data_lines(text).peekable();
     let Some((header_line, header)) = lines.next() else {
         return Err(err(None, "empty file: expected a header row `x,z`".into()));
     };

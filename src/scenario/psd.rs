@@ -72,7 +72,7 @@ fn column_factors(units: [&str; 2], line: usize) -> Result<(f64, f64), PsdError>
 pub(super) fn parse(text: &str) -> Result<(Vec<f64>, Vec<f64>), PsdError> {
     let mut q: Vec<f64> = Vec::new();
     let mut c: Vec<f64> = Vec::new();
-    let mut rows = super::data_lines(text).peekable();
+    let mut rows = super::text::data_lines(text).peekable();
     // the header (and a units row, unless the header names them): a bare q could be 1/m or
     // 1/µm, a bare C m⁴ or µm⁴
     let Some((line, header)) = rows.next() else {

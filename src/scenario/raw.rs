@@ -1,8 +1,8 @@
 //! The scenario file exactly as written: one struct per TOML table, every value spanned.
 //!
-//! Nothing here checks a value or knows a unit; that is [`super::validate`]'s job. Adding a
+//! Nothing here checks a value or knows a unit; that is validation's job (`validate` and the module of each table). Adding a
 //! key means adding a field here, reading it there, and its entry in the key registry
-//! ([`super::keys`]; a test fails until it has one). All tables reject unknown keys, so a
+//! (`keys`; a test fails until it has one). All tables reject unknown keys, so a
 //! misspelt key is an error with the key named, never silently ignored.
 
 use serde::de::{self, Deserialize, Deserializer, Visitor};
@@ -96,7 +96,7 @@ impl RawScenario {
 /// `[material]`: the rubber compound (schema in [`crate::material::compound`]): a library
 /// reference (`library = "ID"`), an elastic rubber (`youngs_modulus`) or a viscoelastic one
 /// (`long_term_modulus` + `prony`). Which keys are required or allowed together is checked in
-/// validation (`super::material`), where the message can explain the choices. The same table
+/// validation (the `material` module), where the message can explain the choices. The same table
 /// is the whole content of a library file (`materials/ID.toml`).
 #[derive(Debug, serde::Deserialize)]
 #[serde(deny_unknown_fields)]

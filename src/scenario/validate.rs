@@ -6,10 +6,9 @@
 
 use super::Scenario;
 use super::error::{ScenarioError, Source};
+use super::field::{Bound, Field, field};
 use super::psd;
-use super::raw::{
-    Quantity, RawFluid, RawModel, RawNumerical, RawQuantity, RawScenario, RawSurface,
-};
+use super::raw::{Quantity, RawFluid, RawModel, RawNumerical, RawScenario, RawSurface};
 use crate::contact::{AreaModel, ContactSettings};
 use crate::fluid::{Fluid, GasService, LibraryFluid, MINERAL_OIL_EXPANSION, ViscosityLaw, Walther};
 use crate::leak::{FlatSeal, StaticProblem};
@@ -17,7 +16,7 @@ use crate::material::Material;
 use crate::numerical::reference::NumericalSettings;
 use crate::numerical::{HeightMap, psd as map_psd};
 use crate::roughness::{self, Band, Callout, ShortWavelengths};
-use crate::seal::{Profile, SealGeometry, VolumeSwell};
+use crate::seal::VolumeSwell;
 use crate::simulate::LifeProblem;
 use crate::simulate::{AsperityModulus, GrooveInterface};
 use crate::surface::Spectrum;
@@ -27,111 +26,6 @@ use toml::Spanned;
 
 /// Gauss–Legendre points across an O-ring's Hertz profile (strips in series) in a life run.
 pub const STRIPS: usize = 16;
-
-/// The values a key accepts (all of them also finite).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(super) enum Bound {
-    /// strictly inside (lo, hi)
-    Open(f64, f64),
-    /// inside \[lo, hi\]
-    Closed(f64, f64),
-    /// The plausible range \[lo, hi\] of a physical quantity (README "Ranges", docs/model.md §11.1): outside it
-    /// the value is nonsense or overflows the model. A value ≤ 0 where `lo > 0` is reported as
-    /// "must be positive", a negative one where `lo = 0` as "must not be negative"; anything
-    /// else outside as "must lie in \[lo, hi\] unit".
-    Range(f64, f64),
-}
-
-impl Bound {
-    /// `None` if `v` is allowed, else what is wrong ("must …").
-    fn violation(self, v: f64, unit: &str) -> Option<String> {
-        let got = if unit.is_empty() {
-            show(v)
-        } else {
-            format!("{} {unit}", show(v))
-        };
-        let ok = v.is_finite()
-            && match self {
-                Bound::Open(lo, hi) => v > lo && v < hi,
-                Bound::Closed(lo, hi) | Bound::Range(lo, hi) => (lo..=hi).contains(&v),
-            };
-        if ok {
-            return None;
-        }
-        Some(match self {
-            _ if !v.is_finite() => format!("must be finite, got {got}"),
-            // a fraction given as a percentage: say how to write one
-            Bound::Open(lo, hi) if unit.is_empty() && hi == 1.0 && v > 1.0 && v < 100.0 => format!(
-                "must lie strictly between {} and {}, got {got}: a fraction (write \"{got} %\" for \
-                 a percentage)",
-                show(lo),
-                show(hi)
-            ),
-            Bound::Open(lo, hi) => format!(
-                "must lie strictly between {} and {}, got {got}",
-                show(lo),
-                show(hi)
-            ),
-            Bound::Closed(lo, hi) => {
-                format!("must lie between {} and {}, got {got}", show(lo), show(hi))
-            }
-            Bound::Range(lo, _) if lo > 0.0 && v <= 0.0 => format!("must be positive, got {got}"),
-            Bound::Range(lo, _) if lo == 0.0 && v < 0.0 => {
-                format!("must not be negative, got {got}")
-            }
-            Bound::Range(lo, hi) => {
-                let unit = if unit.is_empty() {
-                    String::new()
-                } else {
-                    format!(" {unit}")
-                };
-                format!("must lie in [{}, {}]{unit}, got {got}", show(lo), show(hi))
-            }
-        })
-    }
-}
-
-/// One numeric key of the scenario file.
-#[derive(Debug, Clone, Copy)]
-pub(super) struct Field {
-    /// Dotted key path, as printed in errors.
-    pub(super) key: &'static str,
-    dimension: Dimension,
-    /// SI unit symbol, for messages ("" if dimensionless).
-    unit: &'static str,
-    bound: Bound,
-}
-
-impl Field {
-    /// The quantity's dimension (what units it accepts).
-    pub(super) fn dimension(&self) -> Dimension {
-        self.dimension
-    }
-
-    /// SI unit symbol ("" if dimensionless).
-    pub(super) fn unit(&self) -> &'static str {
-        self.unit
-    }
-
-    /// The values it accepts.
-    pub(super) fn bound(&self) -> Bound {
-        self.bound
-    }
-}
-
-pub(super) const fn field(
-    key: &'static str,
-    dimension: Dimension,
-    unit: &'static str,
-    bound: Bound,
-) -> Field {
-    Field {
-        key,
-        dimension,
-        unit,
-        bound,
-    }
-}
 
 pub(super) const RMS_ROUGHNESS: Field = field(
     "surface.rms_roughness",
@@ -556,7 +450,7 @@ impl Source<'_> {
         raw: &RawScenario,
         material: &Material,
         fluid: &Fluid,
-        seal: &super::life::SealSpec,
+        seal: &super::seal_spec::SealSpec,
         replaced: bool,
     ) -> Result<(Option<crate::permeation::SealPermeation>, Option<String>), ScenarioError> {
         use crate::permeation::{Missing, SealPermeation, figure};
@@ -673,7 +567,7 @@ impl Source<'_> {
             &crate::material::TemperatureHistory,
             Option<&crate::pressure::PressureHistory>,
         ),
-        seal: &super::life::SealSpec,
+        seal: &super::seal_spec::SealSpec,
     ) -> Result<Service, ScenarioError> {
         let (geometry, loading) = (&seal.geometry, seal.loading);
         let (ageing, ageing_source) =
@@ -686,16 +580,9 @@ impl Source<'_> {
             &super::life::FailureContext {
                 low_temperature_limit: material.low_temperature_limit(),
                 moving: motion.is_some(),
-                cooling_time: match geometry {
-                    SealGeometry::ORing { cross_section, .. } => {
-                        thermal_settling_time(*cross_section)
-                    }
-                    // through its compressed thickness; unknown: cooled at once, the least
-                    // relaxation on the way (docs/model.md §8.2)
-                    SealGeometry::Flat { thickness, .. } => {
-                        thickness.map_or(0.0, thermal_settling_time)
-                    }
-                },
+                // a ring's cord, a gasket's compressed thickness; unknown: cooled at once,
+                // the least relaxation on the way (docs/model.md §8.2)
+                cooling_time: geometry.cooling_length().map_or(0.0, thermal_settling_time),
                 no_shutdown: (loading == crate::simulate::Loading::Force).then_some(
                     "under loading = \"force\" the bolts or springs keep the seal's load at rest \
                      too; the check is of a seal held at a fixed compression (loading = \
@@ -1047,50 +934,6 @@ impl Source<'_> {
         Ok(settings)
     }
 
-    /// A written quantity → a checked SI value: the unit must have the field's dimension and
-    /// the value must lie in its range.
-    pub(super) fn quantity(&self, raw: &Quantity, field: &Field) -> Result<f64, ScenarioError> {
-        let value = match raw.get_ref() {
-            // `210` for a pressure is 210 Pa to the parser and 210 bar to the engineer: a
-            // dimensional key needs its unit (0 is 0 in every unit)
-            RawQuantity::Number(v)
-                if field.dimension != units::Dimension::DIMENSIONLESS && *v != 0.0 =>
-            {
-                return Err(self.error(raw.span(), field.key, field.dimension.bare_number_fix(*v)));
-            }
-            RawQuantity::Number(v) => *v,
-            RawQuantity::Text(text) => units::parse_quantity(text, field.dimension)
-                .map_err(|e| self.error(raw.span(), field.key, e.to_string()))?,
-        };
-        match field.bound.violation(value, field.unit) {
-            Some(message) => Err(self.error(raw.span(), field.key, message)),
-            None => Ok(value),
-        }
-    }
-
-    /// [`Source::quantity`] for a key that must be present: when it is absent, an error at
-    /// `table` (the span of its table) reading "missing key `name` {why}", `name` the key's last
-    /// path component.
-    pub(super) fn required(
-        &self,
-        raw: &Option<Quantity>,
-        field: &Field,
-        table: Range<usize>,
-        why: &str,
-    ) -> Result<f64, ScenarioError> {
-        match raw {
-            Some(q) => self.quantity(q, field),
-            None => Err(self.error(
-                table,
-                field.key,
-                format!(
-                    "missing key `{}` {why}",
-                    field.key.rsplit('.').next().unwrap_or(field.key)
-                ),
-            )),
-        }
-    }
-
     /// A ring fitted at or below its compound's low-temperature limit T10 (docs/model.md §5.2):
     /// below it the rubber is leathery to glassy, it cannot be stretched and seated without
     /// damage, and a fitter warms it first. A stated `installation_temperature` there is refused;
@@ -1100,11 +943,11 @@ impl Source<'_> {
     fn fitting_temperature(
         &self,
         raw: &RawScenario,
-        seal: &super::life::SealSpec,
+        seal: &super::seal_spec::SealSpec,
         material: &Material,
         environment: &crate::material::TemperatureHistory,
     ) -> Result<Option<ScenarioError>, ScenarioError> {
-        if !matches!(seal.geometry, SealGeometry::ORing { .. }) {
+        if !seal.geometry.fitted() {
             return Ok(None);
         }
         let Some(limit) = material.low_temperature_limit() else {
@@ -1206,15 +1049,6 @@ impl Source<'_> {
             "surface.lay",
             format!("{what}; {consequence} [docs/model.md §9.15]"),
         )))
-    }
-
-    /// [`Source::quantity`] for a key that may be absent.
-    pub(super) fn optional(
-        &self,
-        raw: Option<&Quantity>,
-        field: &Field,
-    ) -> Result<Option<f64>, ScenarioError> {
-        raw.map(|q| self.quantity(q, field)).transpose()
     }
 
     /// `[fluid] gas = "…"` (docs/model.md §3.9): a library gas or `"custom"` (with
@@ -2245,7 +2079,7 @@ impl Source<'_> {
             }
         }
         let path = self.relative_path(file.get_ref());
-        let gsf = super::is_gsf(&path);
+        let gsf = super::surface_files::is_gsf(&path);
         let (pixel, unit) = if gsf {
             // the file states its pixel size and units (scenario/gsf.rs)
             for (present, key) in [
@@ -2315,7 +2149,7 @@ impl Source<'_> {
                 line,
                 message,
             };
-        let topography = super::read_height_map(&path, pixel, unit)
+        let topography = super::surface_files::read_height_map(&path, pixel, unit)
             .map_err(|e| format_error(e.line, e.message))?;
         let spectrum = map_psd::estimate_topography(&topography, &map_psd::PsdOptions::default())
             .map_err(|e| format_error(None, e.to_string()))?;
@@ -2533,13 +2367,12 @@ fn temperature_span(raw: &RawScenario) -> Range<usize> {
 /// to the environment's over its thermal time (docs/model.md §5.2).
 fn settling_environment(
     environment: crate::material::TemperatureHistory,
-    seal: &super::life::SealSpec,
+    seal: &super::seal_spec::SealSpec,
 ) -> crate::material::TemperatureHistory {
-    match (seal.fitting_temperature, seal.geometry) {
-        (Some(fitted), SealGeometry::ORing { cross_section, .. })
-            if fitted != environment.at(0.0) =>
-        {
-            environment.with_lead_in(fitted, thermal_settling_time(cross_section))
+    match (seal.fitting_temperature, seal.geometry.fitted()) {
+        (Some(fitted), true) if fitted != environment.at(0.0) => {
+            let length = seal.geometry.cooling_length().unwrap_or(0.0);
+            environment.with_lead_in(fitted, thermal_settling_time(length))
         }
         _ => environment,
     }
@@ -2551,31 +2384,10 @@ fn settling_environment(
 /// as P0, Lindley's contact width as L_x and the circumference π D as L_y (`sealsim run`
 /// integrates the whole profile as strips in series).
 fn static_seal(life: &LifeProblem) -> FlatSeal {
-    match life.geometry {
-        // at the installation's temperature T(0): the bolted stress with its thermal strain
-        // there, as the first state of a life run (exactly P0 without thermal strain)
-        SealGeometry::Flat {
-            nominal_pressure,
-            width,
-            length,
-            ..
-        } => FlatSeal {
-            nominal_pressure: nominal_pressure
-                * life
-                    .geometry
-                    .load_variable(life.thermal_strain.as_ref(), life.installed_temperature()),
-            width,
-            length,
-        },
-        SealGeometry::ORing { .. } => {
-            let profile: Profile = life.initial_profile();
-            FlatSeal {
-                nominal_pressure: profile.peak(),
-                width: profile.width(),
-                length: life.geometry.sealing_length(),
-            }
-        }
-    }
+    let load = life
+        .geometry
+        .load_variable(life.thermal_strain.as_ref(), life.installed_temperature());
+    life.geometry.static_seal(load, &|| life.initial_profile())
 }
 
 /// The temperature scale a quantity was written in (°C for a bare number).

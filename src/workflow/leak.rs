@@ -6,7 +6,6 @@ use crate::contact::FullContact;
 use crate::dynamic::{DragCoefficients, DragSettings, IhlInput, MotionPoint, MotionSpec};
 use crate::leak::{ContactPath, Fidelity, FlatSeal, LeakPoint, StaticSolver};
 use crate::scenario::Scenario;
-use crate::seal::SealGeometry;
 use crate::simulate::{LifeProblem, Simulator};
 use crate::validity::{self, At, Findings};
 
@@ -52,17 +51,12 @@ pub fn evaluate(
             .filter(|p| *p > 0.0)
             .map(|p| p / e_star)
     };
-    let nodes = match (scenario.life.geometry, pressures) {
-        (SealGeometry::Flat { .. }, Some(list)) => {
-            Some(list.iter().flat_map(|&p| ends(p)).collect())
-        }
-        (
-            SealGeometry::Flat {
-                nominal_pressure, ..
-            },
-            None,
-        ) => Some(ends(nominal_pressure).collect()),
-        (SealGeometry::ORing { .. }, _) => None,
+    // a seal of given P0 (flat): the table's nodes around it or the swept pressures; a ring's
+    // pressure follows from its squeeze, so no nodes
+    let nodes = match (scenario.life.geometry.given_pressure(), pressures) {
+        (Some(_), Some(list)) => Some(list.iter().flat_map(|&p| ends(p)).collect()),
+        (Some(nominal_pressure), None) => Some(ends(nominal_pressure).collect()),
+        (None, _) => None,
     };
     let (path, findings) = scenario_path(scenario, fidelity, nodes, progress);
     evaluate_on(scenario, path, findings, pressures)
@@ -84,18 +78,17 @@ pub fn evaluate_on(
         validity::surface(groove, &mut findings);
     }
     let solver = StaticSolver::with_path(pb.clone(), path);
-    let mut points: Vec<LeakPoint> = match scenario.life.geometry {
-        SealGeometry::ORing { .. } => installed_oring(&scenario.life, solver.path(), pressures),
-        SealGeometry::Flat { .. } => {
-            let own = [pb.seal.nominal_pressure];
-            let list = pressures.unwrap_or(&own);
-            list.iter().map(|&p0| solver.evaluate(p0)).collect()
-        }
+    let oring = scenario.life.geometry.pressure_from_squeeze();
+    let mut points: Vec<LeakPoint> = if oring {
+        installed_oring(&scenario.life, solver.path(), pressures)
+    } else {
+        let own = [pb.seal.nominal_pressure];
+        let list = pressures.unwrap_or(&own);
+        list.iter().map(|&p0| solver.evaluate(p0)).collect()
     };
     for point in &points {
         solver.assess(point, &mut findings);
     }
-    let oring = matches!(scenario.life.geometry, SealGeometry::ORing { .. });
     let e_star = pb.material.effective_modulus();
     let contact = points
         .iter()

@@ -28,7 +28,6 @@ use crate::math::special::erf_inv;
 use crate::numerical::psd::{self, PsdOptions, Window};
 use crate::numerical::reference::{NumericalSettings, Surfaces, band_limited, evaluate};
 use crate::numerical::surface::synthesize;
-use crate::seal::SealGeometry;
 use crate::simulate::{LifeProblem, Simulator};
 use std::f64::consts::PI;
 use std::time::Instant;
@@ -247,13 +246,12 @@ fn static_state(
     pb.contact = life.contact;
     timed(|| {
         let path = analytic_path(life, setting);
-        let point = match life.geometry {
-            SealGeometry::ORing { .. } => super::leak::installed_oring(life, &path, None)
+        let point = if life.geometry.pressure_from_squeeze() {
+            super::leak::installed_oring(life, &path, None)
                 .into_iter()
-                .next(),
-            SealGeometry::Flat { .. } => {
-                Some(StaticSolver::with_path(pb.clone(), path).evaluate(pb.seal.nominal_pressure))
-            }
+                .next()
+        } else {
+            Some(StaticSolver::with_path(pb.clone(), path).evaluate(pb.seal.nominal_pressure))
         };
         point.map_or((0.0, pb.seal.nominal_pressure), |p| {
             (p.leak_rate, p.nominal_pressure)

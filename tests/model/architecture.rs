@@ -2,7 +2,9 @@
 //! every `crate::module` reference outside unit tests — code and doc links alike, since a doc
 //! link across a future crate boundary breaks too — is an edge. No edge may point from a lower
 //! layer to a higher one, and the module graph has no cycle. `sealsim-math` is a crate of its
-//! own, so an edge from it into the physics is a compile error.
+//! own, so an edge from it into the physics is a compile error. Inside the input layer the
+//! submodules of `src/scenario/` form no cycle either, and the seal geometry's variants are
+//! named only in the seal module and where the input builds them.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::fs;
@@ -177,8 +179,9 @@ fn cycles(graph: &BTreeMap<String, BTreeSet<String>>) -> BTreeSet<Vec<String>> {
         next: 0,
         found: BTreeSet::new(),
     };
-    for v in LAYERS.iter().map(|(m, _)| *m) {
-        if !s.index.contains_key(v) {
+    // every node with an edge (a node without one is in no cycle)
+    for v in graph.keys() {
+        if !s.index.contains_key(v.as_str()) {
             visit(&mut s, v);
         }
     }
@@ -228,6 +231,217 @@ fn the_cycle_finder_finds_a_planted_cycle_and_nothing_else() {
     assert_eq!(
         referenced_modules("use crate::{leak, seal::Seal};\nlet x = crate::units::human(1.0, 3);"),
         BTreeSet::from(["leak".to_string(), "seal".into(), "units".into()])
+    );
+}
+
+/// The part of a source file before its unit-test module.
+fn without_unit_tests(text: &str) -> &str {
+    text.find("#[cfg(test)]\nmod tests")
+        .map_or(text, |i| &text[..i])
+}
+
+/// The names a path prefix `prefix` (`super::`, `crate::scenario::`) is followed by in `text`:
+/// the identifier right after it, or each first identifier of a `{…}` group.
+fn names_after(text: &str, prefix: &str) -> BTreeSet<String> {
+    let ident = |s: &str| -> String {
+        s.chars()
+            .take_while(|c| c.is_alphanumeric() || *c == '_')
+            .collect()
+    };
+    let mut found = BTreeSet::new();
+    for (i, _) in text.match_indices(prefix) {
+        let rest = &text[i + prefix.len()..];
+        if let Some(group) = rest.strip_prefix('{') {
+            let end = group.find('}').unwrap_or(group.len());
+            for part in group[..end].split(',') {
+                found.insert(ident(part.trim()));
+            }
+        } else {
+            found.insert(ident(rest));
+        }
+    }
+    found.remove("");
+    found
+}
+
+/// The graph of the input layer's submodules (`src/scenario/*.rs`, a folder counting as one
+/// node; the unit-test-only modules `*_tests` and every `mod tests` left out), from every
+/// `super::NAME` and `crate::scenario::NAME` in code and doc links alike:
+///
+/// * NAME a submodule: an edge to it;
+/// * NAME re-exported by `mod.rs` from a submodule (`pub use x::Name`): an edge to `x`, its home;
+/// * NAME an alias of a lower layer's module (`pub use crate::…`): no edge;
+/// * otherwise NAME is an item of `mod.rs` itself: an edge to `mod`.
+///
+/// `mod.rs` declares every submodule, so it has an edge to each: it is the top, and a
+/// submodule that uses an item of `mod.rs` (not a re-export) closes a cycle through it.
+fn scenario_graph(dir: &Path) -> BTreeMap<String, BTreeSet<String>> {
+    let module_of = |path: &Path| -> String {
+        let rel = path.strip_prefix(dir).unwrap();
+        let first = rel.components().next().unwrap().as_os_str();
+        first.to_string_lossy().trim_end_matches(".rs").to_string()
+    };
+    let mut files = Vec::new();
+    rust_files(dir, &mut files);
+    let submodules: BTreeSet<String> = files
+        .iter()
+        .map(|f| module_of(f))
+        .filter(|m| m != "mod" && !m.ends_with("_tests"))
+        .collect();
+    let root = fs::read_to_string(dir.join("mod.rs")).unwrap();
+    let root = without_unit_tests(&root);
+    // re-exports: `pub use x::{A, B};`, `pub use x::A;` (x a submodule) and aliases
+    let mut home: BTreeMap<String, Option<String>> = BTreeMap::new();
+    for line in root.lines() {
+        let Some(rest) = line.trim().strip_prefix("pub use ") else {
+            continue;
+        };
+        let rest = rest.trim_end_matches(';');
+        let (from, names) = rest.split_once("::{").map_or_else(
+            || {
+                let (from, name) = rest.rsplit_once("::").unwrap();
+                (from.to_string(), vec![name.to_string()])
+            },
+            |(from, names)| {
+                let names = names.trim_end_matches('}').split(',');
+                (
+                    from.to_string(),
+                    names.map(|n| n.trim().to_string()).collect(),
+                )
+            },
+        );
+        for name in names {
+            let module = submodules.contains(from.as_str()).then(|| from.clone());
+            home.insert(name, module);
+        }
+    }
+    let mut graph: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+    graph.insert("mod".into(), submodules.clone());
+    for file in &files {
+        let me = module_of(file);
+        if !submodules.contains(&me) {
+            continue;
+        }
+        let text = fs::read_to_string(file).unwrap();
+        let code = without_unit_tests(&text);
+        let mut names = names_after(code, "super::");
+        names.extend(names_after(code, "crate::scenario::"));
+        for name in names {
+            let to = if submodules.contains(&name) {
+                Some(name)
+            } else if name == "self" {
+                Some("mod".to_string())
+            } else {
+                match home.get(&name) {
+                    Some(module) => module.clone(),
+                    None => Some("mod".to_string()),
+                }
+            };
+            if let Some(to) = to.filter(|to| *to != me) {
+                graph.entry(me.clone()).or_default().insert(to);
+            }
+        }
+    }
+    graph
+}
+
+/// The input layer's submodules import each other in no circle (ARCHITECTURE.md, "How it got
+/// there"): shared pieces live in a lower submodule (`text`, `field`, `seal_spec`, …), never
+/// in `mod.rs`, which only declares, re-exports and holds the entry points.
+#[test]
+fn the_scenario_submodules_have_no_cycle() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/scenario");
+    let graph = scenario_graph(&dir);
+    // the walk sees the graph (the key registry names the tables' modules, validate reads the
+    // life tables with them)
+    assert!(graph["keys"].contains("life") && graph["validate"].contains("life"));
+    let found = cycles(&graph);
+    assert!(
+        found.is_empty(),
+        "import cycles among src/scenario's submodules: {found:?}; edges: {graph:?}"
+    );
+}
+
+/// The scenario graph's reading of names, on a planted module tree.
+#[test]
+fn the_scenario_graph_resolves_re_exports_and_items_of_the_root() {
+    let dir = std::env::temp_dir().join(format!("sealsim-arch-{}", std::process::id()));
+    fs::create_dir_all(dir.join("folder")).unwrap();
+    let write = |name: &str, text: &str| fs::write(dir.join(name), text).unwrap();
+    write(
+        "mod.rs",
+        "mod a;\nmod b;\nmod c;\nmod folder;\npub use c::{Thing, Other};\n\
+         pub use crate::x::alias;\npub fn helper() {}\n",
+    );
+    write("a.rs", "use super::b::B;\n");
+    write("c.rs", "/// no edge: [`Vec`]\n");
+    write("b.rs", "use super::alias;\nfn f() { super::helper(); }\n");
+    write("folder/mod.rs", "use crate::scenario::Thing;\n");
+    write("c_tests.rs", "use super::helper;\n");
+    let graph = scenario_graph(&dir);
+    fs::remove_dir_all(&dir).unwrap();
+    let set = |names: &[&str]| names.iter().map(|n| n.to_string()).collect::<BTreeSet<_>>();
+    assert_eq!(graph["mod"], set(&["a", "b", "c", "folder"]));
+    assert_eq!(graph["a"], set(&["b"]));
+    assert_eq!(
+        graph["b"],
+        set(&["mod"]),
+        "an item of mod.rs: an edge to mod"
+    );
+    assert_eq!(
+        graph["folder"],
+        set(&["c"]),
+        "a re-export: an edge to its home"
+    );
+    assert!(!graph.contains_key("c") && !graph.contains_key("c_tests"));
+    // b → mod → a → b: the cycle a helper in mod.rs closes (c and folder are outside it)
+    assert_eq!(
+        cycles(&graph),
+        BTreeSet::from([vec!["a".to_string(), "b".into(), "mod".into()]])
+    );
+}
+
+/// Where the seal geometry's variants may be named outside the seal module
+/// (`crates/sealsim-core/src/seal/`): the input's construction sites, a ring between plates or a
+/// flat seal in `seal_kind.rs` and a groove-seated ring in `gland.rs` — three in all. Every other
+/// use of a kind's behaviour is a method of `SealGeometry`, so a new seal kind touches the seal
+/// module and the input's kind file, not every file that matched on the kinds before.
+const SEAL_VARIANT_SITES: &[(&str, usize)] = &[
+    ("src/scenario/gland.rs", 1),
+    ("src/scenario/seal_kind.rs", 2),
+];
+
+#[test]
+fn seal_kinds_are_matched_only_in_the_seal_module() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut files = Vec::new();
+    for src in ["src", "crates/sealsim-core/src"] {
+        rust_files(&root.join(src), &mut files);
+    }
+    let seal_module = root.join("crates/sealsim-core/src/seal");
+    let mut found: Vec<(String, usize)> = files
+        .iter()
+        .filter(|f| !f.starts_with(&seal_module))
+        .filter_map(|f| {
+            let text = fs::read_to_string(f).unwrap();
+            let n = without_unit_tests(&text).matches("SealGeometry::").count();
+            let rel = f
+                .strip_prefix(root)
+                .unwrap()
+                .to_string_lossy()
+                .replace('\\', "/");
+            (n > 0).then_some((rel, n))
+        })
+        .collect();
+    found.sort();
+    let allowed: Vec<(String, usize)> = SEAL_VARIANT_SITES
+        .iter()
+        .map(|(f, n)| (f.to_string(), *n))
+        .collect();
+    assert_eq!(
+        found, allowed,
+        "`SealGeometry::` outside crates/sealsim-core/src/seal/ (unit tests left out): a kind's \
+         behaviour belongs in its kind file behind a method of SealGeometry"
     );
 }
 

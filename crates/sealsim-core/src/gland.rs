@@ -4,7 +4,7 @@
 //! groove-seated ring (energisation, extrusion into the clearance gap; docs/model.md §6.3).
 //!
 //! Everything here is SI (m, 1/K) and knows no file or unit; the scenario boundary
-//! (`[seal] gland = …`, `src/scenario/life.rs`) validates the keys into a [`GlandDesign`].
+//! (`[seal] gland = …`, `src/scenario/gland.rs`) validates the keys into a [`GlandDesign`].
 //!
 //! **Relations** (docs/model.md §6.2):
 //!

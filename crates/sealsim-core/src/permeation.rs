@@ -842,19 +842,19 @@ impl SealPermeation {
         p_high: f64,
         p_low: f64,
     ) -> Result<(SealPermeation, Option<PermeationNote>), Missing> {
-        let path = match (*geometry, thickness) {
-            (
-                crate::seal::SealGeometry::ORing {
-                    cross_section,
-                    mean_diameter,
-                    squeeze,
-                },
-                _,
-            ) => PermeationPath::o_ring(cross_section, mean_diameter, squeeze),
-            (crate::seal::SealGeometry::Flat { width, length, .. }, Some(t)) => {
-                PermeationPath::gasket(t, width, length)
-            }
-            (crate::seal::SealGeometry::Flat { .. }, None) => return Err(Missing::NoThickness),
+        use crate::seal::PermeationSection;
+        let path = match geometry.permeation_section(thickness) {
+            Some(PermeationSection::Ring {
+                cross_section,
+                mean_diameter,
+                squeeze,
+            }) => PermeationPath::o_ring(cross_section, mean_diameter, squeeze),
+            Some(PermeationSection::Gasket {
+                thickness,
+                land_width,
+                circumference,
+            }) => PermeationPath::gasket(thickness, land_width, circumference),
+            None => return Err(Missing::NoThickness),
         }
         .map_err(Missing::Path)?;
         let note = data.diffusivity.is_none().then(|| {

@@ -662,40 +662,26 @@ impl<'a> Simulator<'a> {
     /// [`RESTART_ENERGISATION`] = 0, Green & English's criterion, §6.3), whatever the service's
     /// k_e. Below the compound's T10 the ring is glassy on the time scale of a shutdown and the
     /// relaxed force is not the least one: the check must also hold for the ring cooled through
-    /// its hereditary response ([`Self::glassy_shutdown`]). A flat gasket is checked alike
-    /// ([`Self::flat_shutdown`]). `None` when the check does not apply (force loading, or
-    /// `[failure] lost_interference = false`).
+    /// its hereditary response ([`Self::glassy_shutdown`]). A flat gasket is checked alike: each
+    /// kind's set contact is the `set_contact` of [`crate::seal::SealGeometry`]. `None` when the
+    /// check does not apply (force loading, or `[failure] lost_interference = false`).
     fn shutdown(&self, state: &Mechanics) -> Option<ShutdownState> {
         let p = self.problem;
         let shutdown = p.failure.shutdown?;
         if p.loading != Loading::Displacement {
             return None;
         }
-        let cross_section = match p.geometry {
-            crate::seal::SealGeometry::ORing { cross_section, .. } => cross_section,
-            crate::seal::SealGeometry::Flat {
-                nominal_pressure,
-                compression,
-                thickness,
-                ..
-            } => {
-                let gasket = (nominal_pressure, compression, thickness);
-                return Some(self.flat_shutdown(state, &shutdown, gasket));
-            }
-        };
         let squeeze = p
             .geometry
             .squeeze_at(p.thermal_strain.as_ref(), shutdown.temperature);
-        let set = state.networks.set_strain().clamp(0.0, 1.0 - f64::EPSILON);
-        let interference = (squeeze - set) * cross_section;
-        let remaining = ((squeeze - set) / (1.0 - set)).max(0.0);
-        let cord = cross_section * (1.0 - set);
-        let modulus = p.material.prony.long_term() * state.networks.network();
-        let profile = Profile::hertz(
-            modulus * cord * crate::seal::squeeze_function(remaining),
-            crate::seal::oring_contact_width(cord, remaining).max(f64::MIN_POSITIVE),
-        );
-        let touches = interference > p.spectrum.rms_roughness();
+        let set = p.geometry.set_contact(&crate::seal::SetInput {
+            squeeze,
+            set_strain: state.networks.set_strain(),
+            network: state.networks.network(),
+            long_term: p.material.prony.long_term(),
+            installed_modulus: p.installed_modulus(),
+            roughness: p.spectrum.rms_roughness(),
+        });
         let restarts = |peak: f64| {
             crate::leak::opening(peak, RESTART_ENERGISATION, shutdown.pressure_difference).is_none()
         };
@@ -703,57 +689,11 @@ impl<'a> Simulator<'a> {
         // the glassy ring must still press on the face (a force, not a rounding) and restart
         let glassy_holds = glassy_peak.is_none_or(|peak| peak > 0.0 && restarts(peak));
         Some(ShutdownState {
-            remaining_squeeze: remaining,
-            peak_pressure: profile.peak(),
+            remaining_squeeze: set.remaining,
+            peak_pressure: set.peak_pressure,
             glassy_peak_pressure: glassy_peak,
-            holds: touches && restarts(profile.peak()) && glassy_holds,
+            holds: set.touches && restarts(set.peak_pressure) && glassy_holds,
         })
-    }
-
-    /// The shutdown check of a bolted flat gasket (docs/model.md §8.2): the gasket at the
-    /// shutdown temperature T_sd between flanges whose gap the thermal strain sets. With the
-    /// networks' set `s_λ = y/c` on the load ε/ε0, the set in compression is `s = s_λ ε0`; the
-    /// remaining compression over the recovered thickness is `ε_r = (ε(T_sd) − s)/(1 − s)`,
-    /// the interference `(ε(T_sd) − s) t_free` (t_free = t_c/(1 − ε0); without the thickness,
-    /// the compression `ε(T_sd) − s` itself must stay positive), and the fully relaxed
-    /// pressure, linear in the compression like the gasket's stress,
-    /// `p = P0 c E∞ (ε(T_sd) − s)/(ε0 E_install)`. It holds while the interference exceeds the
-    /// counterface's rms roughness, that pressure holds ΔP_min on its own (k_e = 0, as in
-    /// service), and, below T10, the gasket cooled through its hereditary response still
-    /// presses ([`Self::glassy_shutdown`]). `gasket` is (P0 \[Pa\], ε0, t_c \[m\]).
-    fn flat_shutdown(
-        &self,
-        state: &Mechanics,
-        shutdown: &Shutdown,
-        (nominal_pressure, compression, thickness): (f64, f64, Option<f64>),
-    ) -> ShutdownState {
-        let p = self.problem;
-        let squeeze = p
-            .geometry
-            .squeeze_at(p.thermal_strain.as_ref(), shutdown.temperature);
-        let set = (state.networks.set_strain() * compression).clamp(0.0, 1.0 - f64::EPSILON);
-        let remaining = ((squeeze - set) / (1.0 - set)).max(0.0);
-        let touches = match thickness {
-            Some(t) => (squeeze - set) * t / (1.0 - compression) > p.spectrum.rms_roughness(),
-            None => squeeze - set > 0.0,
-        };
-        let peak = (nominal_pressure
-            * state.networks.network()
-            * p.material.prony.long_term()
-            * (squeeze - set)
-            / (compression * p.installed_modulus()))
-        .max(0.0);
-        let restarts = |peak: f64| {
-            crate::leak::opening(peak, RESTART_ENERGISATION, shutdown.pressure_difference).is_none()
-        };
-        let glassy_peak = self.glassy_shutdown(state, shutdown);
-        let glassy_holds = glassy_peak.is_none_or(|peak| peak > 0.0 && restarts(peak));
-        ShutdownState {
-            remaining_squeeze: remaining,
-            peak_pressure: peak,
-            glassy_peak_pressure: glassy_peak,
-            holds: touches && restarts(peak) && glassy_holds,
-        }
     }
 
     /// The glassy branch of the shutdown check (docs/model.md §8.2): below the compound's T10
@@ -1357,7 +1297,9 @@ impl<'a> Simulator<'a> {
                     viscosity,
                     p.shape_factor,
                 );
-                let oring = matches!(p.geometry, crate::seal::SealGeometry::ORing { .. })
+                let oring = p
+                    .geometry
+                    .pressure_from_squeeze()
                     .then(|| (seal.seal.nominal_pressure, profile.width(), dp));
                 let ihl = crate::dynamic::IhlInput {
                     gradients: spec.gradients_for(oring),

@@ -321,7 +321,8 @@ impl LifeProblem {
 
     /// The rubber's temperature `t` \[K\] and, for an O-ring, its squeeze at `t`.
     pub(super) fn assess_rubber(&self, t: f64, at: At, out: &mut Findings) {
-        if let SealGeometry::ORing { .. } = self.geometry {
+        // Lindley's squeeze range: a ring's (a kind with a ring squeeze)
+        if self.geometry.ring_squeeze().is_some() {
             validity::squeeze(
                 self.geometry.squeeze_at(self.thermal_strain.as_ref(), t),
                 at,

@@ -1,24 +1,25 @@
 //! Seal geometry and loading: the nominal contact-pressure profile across the sealing width.
 //!
-//! * Flat seal: uniform nominal pressure over `width × length` (PY08 Fig. 2).
-//! * O-ring of cord diameter d and mean diameter D squeezed by ε (compression/d) between flat
-//!   plates — Lindley's empirical relations for a laterally unrestrained O-ring
-//!   (P.B. Lindley, "Compression characteristics of laterally-unrestrained rubber O-rings",
-//!   J. Inst. Rubber Ind. 1 (1967) 209), as written in docs/model.md §6:
-//!   force per unit length `f = E d (1.25 ε^{3/2} + 50 ε⁶)` \[N/m\], contact width
-//!   `b = d √(6ε/π)` \[m\], and a Hertz-shaped profile `p(x) = p_max √(1 − (2x/b)²)`,
-//!   `p_max = 4 f/(π b)`. The constants could not be checked word for word against the
-//!   original here (docs/model.md marks them "recalled"); what is tested is their own consistency
-//!   (∫p dx = f) and the stated range: the relations are meant for squeeze up to ≈ 30 %, and
-//!   sealsim warns beyond (and below 5 %, where the ε⁶ term is irrelevant but the contact is
-//!   too narrow for a Hertz picture of a real groove).
+//! One home per seal kind: [`SealGeometry`] names the kinds (its variants), and each kind's
+//! behaviour — sealing length, squeeze or compression and its thermal strain, load variable,
+//! pressure profile, swell, permeation section, shutdown contact, its names and its report
+//! fragment — is the [`SealKind`] implementation in the kind's own file:
 //!
-//! Viscoelasticity enters through the *squeeze function* `g(ε) = 1.25 ε^{3/2} + 50 ε⁶`: the
-//! sealing force is `f(t) = d ∫ E(ξ(t) − ξ(s)) dg(ε(s))` (quasi-linear viscoelasticity), so
-//! the Prony recursion runs on g rather than on ε.
+//! * [`flat`]: a flat seal, uniform nominal pressure over `width × length` (PY08 Fig. 2), a
+//!   bolted gasket under displacement loading.
+//! * [`oring`]: an O-ring of cord diameter d and mean diameter D squeezed by ε between flat
+//!   plates or in a groove — Lindley's relations (docs/model.md §6).
+//!
+//! [`SealGeometry::kind`] is the one `match` that hands a geometry to its kind (ARCHITECTURE.md,
+//! "A new seal kind": a new kind is its variant, one arm there, and its file).
 
 use crate::fluid::FlowGeometry;
 use std::f64::consts::PI;
+
+pub mod flat;
+pub mod oring;
+
+pub use oring::{LINDLEY_RANGE, oring_contact_width, squeeze_from_load, squeeze_function};
 
 /// A flat seal: uniform nominal pressure over a rectangle `width × length` (PY08 Fig. 2).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -39,33 +40,6 @@ impl FlatSeal {
             across_flow: self.length,
         }
     }
-}
-
-/// Lower and upper squeeze of the range in which Lindley's relations are used without warning.
-pub const LINDLEY_RANGE: (f64, f64) = (0.05, 0.30);
-
-/// Lindley's squeeze function `g(ε) = 1.25 ε^{3/2} + 50 ε⁶` (dimensionless); `f = E d g(ε)`.
-pub fn squeeze_function(eps: f64) -> f64 {
-    let e = eps.max(0.0);
-    1.25 * e.powf(1.5) + 50.0 * e.powi(6)
-}
-
-/// The squeeze whose [`squeeze_function`] is `load` (≥ 0): g is increasing, so bisection on
-/// [0, 1] to the last bit (g(1) = 51.25; larger loads give 1).
-pub fn squeeze_from_load(load: f64) -> f64 {
-    if load <= 0.0 {
-        return 0.0;
-    }
-    let (lo, hi) =
-        sealsim_math::roots::bisect(0.0, 1.0, 64, sealsim_math::roots::to_the_last_bit, |x| {
-            squeeze_function(x) < load
-        });
-    0.5 * (lo + hi)
-}
-
-/// O-ring contact width `b = d √(6ε/π)` \[m\].
-pub fn oring_contact_width(cross_section: f64, eps: f64) -> f64 {
-    cross_section * (6.0 * eps.max(0.0) / PI).sqrt()
 }
 
 /// Where the nominal pressure comes from.
@@ -95,54 +69,63 @@ pub enum SealGeometry {
 }
 
 impl SealGeometry {
+    /// The geometry as its kind, the one place that matches on the variants: every method
+    /// below calls the kind's [`SealKind`] implementation through it.
+    fn kind<R>(&self, f: impl FnOnce(&dyn SealKind) -> R) -> R {
+        match *self {
+            SealGeometry::Flat {
+                nominal_pressure,
+                width,
+                length,
+                compression,
+                thickness,
+            } => f(&flat::Flat {
+                nominal_pressure,
+                width,
+                length,
+                compression,
+                thickness,
+            }),
+            SealGeometry::ORing {
+                cross_section,
+                mean_diameter,
+                squeeze,
+            } => f(&oring::ORing {
+                cross_section,
+                mean_diameter,
+                squeeze,
+            }),
+        }
+    }
+
+    /// The kind's name in the outputs (`"flat"`, `"o-ring"`; the JSON summary's `seal_kind`).
+    pub fn name(&self) -> &'static str {
+        self.kind(|k| k.name())
+    }
+
+    /// What the shutdown check keeps of the set seal, for the report: `"squeeze of the set
+    /// ring"`, `"compression of the set gasket"` (docs/model.md §8.2).
+    pub fn set_quantity(&self) -> &'static str {
+        self.kind(|k| k.set_quantity())
+    }
+
+    /// The report's description of the geometry, e.g. `"O-ring d = 3.53 mm, D = 50 mm,
+    /// squeeze 20 %"`; `thermal`: the run has a thermal strain (a flat gasket then shows its
+    /// compression, which the strain changes).
+    pub fn describe(&self, thermal: bool) -> String {
+        self.kind(|k| k.describe(thermal))
+    }
+
     /// L_y, the sealing length across the flow \[m\] (O-ring: π D).
     pub fn sealing_length(&self) -> f64 {
-        match *self {
-            SealGeometry::Flat { length, .. } => length,
-            SealGeometry::ORing { mean_diameter, .. } => PI * mean_diameter,
-        }
+        self.kind(|k| k.sealing_length())
     }
 
-    /// The squeeze at temperature `t` \[K\] with the thermal strain `thermal`. With gland depth
-    /// h and cord d, ε = 1 − h/d; heating by ΔT expands the housing with α_h and the cord by its
-    /// free strain e_r(T) ([`ThermalStrain::rubber_strain`]: α_r ΔT above T_g), so
-    /// `ε(T) = 1 − (1 − ε0)(1 + α_h ΔT)/(1 + e_r(T)) ≈ ε0 + (1 − ε0)(α_r − α_h) ΔT`
-    /// (docs/model.md §6): the compression is referred to the current cord. A flat gasket's
-    /// compression follows the same relation with its free thickness for d and the flange gap
-    /// for h, written `ε0 + (1 − ε0)(e_r(T) − α_h ΔT)/(1 + e_r(T))` (the same number, exactly
-    /// ε0 at ΔT = 0); without thermal strain it stays ε0.
+    /// The squeeze (O-ring) or compression (flat gasket) at temperature `t` \[K\] with the
+    /// thermal strain `thermal` (docs/model.md §6): [`oring::ORing::squeeze_at`],
+    /// [`flat::Flat::squeeze_at`]; without thermal strain the installed one.
     pub fn squeeze_at(&self, thermal: Option<&ThermalStrain>, t: f64) -> f64 {
-        match *self {
-            SealGeometry::ORing { squeeze, .. } => match thermal {
-                Some(th) => {
-                    let dt = t - th.installation_temperature;
-                    1.0 - (1.0 - squeeze) * (1.0 + th.housing_expansion * dt)
-                        / (1.0 + th.rubber_strain(t))
-                }
-                None => squeeze,
-            },
-            SealGeometry::Flat { compression, .. } => match thermal {
-                Some(th) => {
-                    let dt = t - th.installation_temperature;
-                    let free = th.rubber_strain(t);
-                    compression
-                        + (1.0 - compression) * (free - th.housing_expansion * dt) / (1.0 + free)
-                }
-                None => compression,
-            },
-        }
-    }
-
-    /// A flat gasket's compression at `t` \[K\] over its installed one, ε(T)/ε0, no less than 0
-    /// (a gasket the flanges no longer touch carries no load): 1 at the installation
-    /// temperature and without thermal strain.
-    fn flat_load(&self, thermal: Option<&ThermalStrain>, t: f64) -> f64 {
-        match *self {
-            SealGeometry::Flat { compression, .. } => {
-                self.squeeze_at(thermal, t).max(0.0) / compression
-            }
-            SealGeometry::ORing { .. } => 1.0,
-        }
+        self.kind(|k| k.squeeze_at(thermal, t))
     }
 
     /// The material strain at temperature `t` \[K\] that the chemical networks are stepped with
@@ -150,10 +133,7 @@ impl SealGeometry {
     /// linearly), for a flat seal its compression over the installed one, ε(T)/ε0 (its unit
     /// load at the installation temperature; 1 without thermal strain).
     pub fn deformation(&self, thermal: Option<&ThermalStrain>, t: f64) -> f64 {
-        match self {
-            SealGeometry::ORing { .. } => self.squeeze_at(thermal, t),
-            SealGeometry::Flat { .. } => self.flat_load(thermal, t),
-        }
+        self.kind(|k| k.deformation(thermal, t))
     }
 
     /// The variable the Prony recursion runs on at temperature `t` \[K\]: Lindley's g(ε) for an
@@ -161,10 +141,7 @@ impl SealGeometry {
     /// temperature and without thermal strain), so that its pressure is
     /// `P0 σ/E_install` with σ the hereditary stress on it (docs/model.md §6).
     pub fn load_variable(&self, thermal: Option<&ThermalStrain>, t: f64) -> f64 {
-        match self {
-            SealGeometry::ORing { .. } => squeeze_function(self.squeeze_at(thermal, t)),
-            SealGeometry::Flat { .. } => self.flat_load(thermal, t),
-        }
+        self.kind(|k| k.load_variable(thermal, t))
     }
 
     /// The nominal profile for the hereditary `stress` \[Pa\] on the load variable, with
@@ -178,29 +155,175 @@ impl SealGeometry {
         thermal: Option<&ThermalStrain>,
         t: f64,
     ) -> Profile {
-        match *self {
-            SealGeometry::Flat {
-                nominal_pressure,
-                width,
-                ..
-            } => Profile::Uniform {
-                // a gasket the cold has pulled off its flanges presses with nothing, not a tension
-                pressure: (nominal_pressure * stress / instantaneous_modulus).max(0.0),
-                width,
-            },
-            SealGeometry::ORing { cross_section, .. } => {
-                let eps = self.squeeze_at(thermal, t);
-                let width = oring_contact_width(cross_section, eps).max(f64::MIN_POSITIVE);
-                Profile::hertz((cross_section * stress).max(0.0), width)
-            }
-        }
+        self.kind(|k| k.profile(stress, instantaneous_modulus, thermal, t))
     }
 
-    /// Whether Lindley's relations are used outside their range at squeeze `eps`.
+    /// Whether Lindley's relations are used outside their range at squeeze `eps` (an O-ring
+    /// only; docs/model.md §9.6).
     pub fn squeeze_out_of_range(&self, eps: f64) -> bool {
-        matches!(self, SealGeometry::ORing { .. })
-            && !(LINDLEY_RANGE.0..=LINDLEY_RANGE.1).contains(&eps)
+        self.kind(|k| k.squeeze_out_of_range(eps))
     }
+
+    /// The seal swollen by `swell` (docs/model.md §3.8; [`VolumeSwell::geometry`]).
+    pub fn swollen(&self, swell: &VolumeSwell) -> SealGeometry {
+        self.kind(|k| k.swollen(swell))
+    }
+
+    /// The nominal pressure P0 \[Pa\] the input gives (a flat seal), `None` where the pressure
+    /// follows from the squeeze (an O-ring: `leak` evaluates its installed state, and a moving
+    /// ring's inlet gradients come from its Hertz profile).
+    pub fn given_pressure(&self) -> Option<f64> {
+        self.kind(|k| k.given_pressure())
+    }
+
+    /// Whether the contact pressure follows from the squeeze, not a given P0: `given_pressure`
+    /// is `None`.
+    pub fn pressure_from_squeeze(&self) -> bool {
+        self.given_pressure().is_none()
+    }
+
+    /// A ring's installed squeeze ε0 (the gland summary's), `None` for a kind without one.
+    pub fn ring_squeeze(&self) -> Option<f64> {
+        self.kind(|k| k.ring_squeeze())
+    }
+
+    /// The length \[m\] heat crosses to reach the seal's middle, for its thermal settling time
+    /// d²/a (docs/model.md §5.2): an O-ring's cord, a gasket's compressed thickness (`None`
+    /// when not given: cooled at once, the least relaxation on the way, §8.2).
+    pub fn cooling_length(&self) -> Option<f64> {
+        self.kind(|k| k.cooling_length())
+    }
+
+    /// Whether the seal is fitted by squeezing it at its fitting temperature (an O-ring): its
+    /// temperature then settles from the fitting one, and a fit below T10 is flagged
+    /// (docs/model.md §5.2). A bolted gasket's installation ramp runs at T(0).
+    pub fn fitted(&self) -> bool {
+        self.kind(|k| k.fitted())
+    }
+
+    /// Whether the seal is a gasket held by bolted flanges (a flat seal): bolted at room
+    /// temperature at the coldest, and its thermal strain defaults to steel flanges without
+    /// needing the rubber's expansion until the temperature departs from the bolting's
+    /// (docs/model.md §6).
+    pub fn bolted(&self) -> bool {
+        self.kind(|k| k.bolted())
+    }
+
+    /// The cross-section permeation runs through (docs/model.md §13.3), with a gasket's
+    /// compressed `thickness` \[m\] as the caller has it; `None` where it is not known (a
+    /// gasket without its thickness).
+    pub fn permeation_section(&self, thickness: Option<f64>) -> Option<PermeationSection> {
+        self.kind(|k| k.permeation_section(thickness))
+    }
+
+    /// The set seal at shutdown (docs/model.md §8.2), see [`SetContact`]: `squeeze` is
+    /// [`Self::squeeze_at`] the shutdown temperature, `set_strain` the networks' set on the
+    /// load variable, `network` the network factor, `long_term` E∞ \[Pa\],
+    /// `installed_modulus` E_install \[Pa\], `roughness` the counterface's rms height \[m\].
+    pub fn set_contact(&self, set: &SetInput) -> SetContact {
+        self.kind(|k| k.set_contact(set))
+    }
+
+    /// The flat seal of the static leak problem (`sealsim leak`): a flat seal's own, with its
+    /// pressure P0 × `load` (the load variable at the installation's temperature, exactly 1
+    /// without thermal strain); an O-ring's uniform equivalent of its central strip, the peak
+    /// and width of the `initial` profile over its circumference π D.
+    pub fn static_seal(&self, load: f64, initial: &dyn Fn() -> Profile) -> FlatSeal {
+        self.kind(|k| k.static_seal(load, initial))
+    }
+}
+
+/// What the shutdown check of a set seal needs besides its geometry (docs/model.md §8.2).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SetInput {
+    /// The squeeze or compression at the shutdown temperature.
+    pub squeeze: f64,
+    /// The networks' set on the load variable.
+    pub set_strain: f64,
+    /// The network factor c (the fraction of the original network left).
+    pub network: f64,
+    /// E∞ \[Pa\].
+    pub long_term: f64,
+    /// The installed modulus E_install \[Pa\].
+    pub installed_modulus: f64,
+    /// The counterface's rms roughness \[m\].
+    pub roughness: f64,
+}
+
+/// The set seal at shutdown: what the check of docs/model.md §8.2 compares.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SetContact {
+    /// The squeeze (compression) left over the recovered cord (thickness), ε_r.
+    pub remaining: f64,
+    /// The fully relaxed peak contact pressure \[Pa\].
+    pub peak_pressure: f64,
+    /// Whether the interference still exceeds the roughness.
+    pub touches: bool,
+}
+
+/// The cross-section a gas permeates through (docs/model.md §13.3).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum PermeationSection {
+    /// A squeezed cord: d, D \[m\] and the squeeze.
+    Ring {
+        cross_section: f64,
+        mean_diameter: f64,
+        squeeze: f64,
+    },
+    /// A gasket's edge: its compressed thickness, the land width along the flow and the
+    /// circumference across it \[m\].
+    Gasket {
+        thickness: f64,
+        land_width: f64,
+        circumference: f64,
+    },
+}
+
+/// The behaviour of one seal kind ([`SealGeometry::kind`] hands a geometry to it); the
+/// methods are documented on [`SealGeometry`]'s of the same name.
+pub trait SealKind {
+    /// See [`SealGeometry::name`].
+    fn name(&self) -> &'static str;
+    /// See [`SealGeometry::set_quantity`].
+    fn set_quantity(&self) -> &'static str;
+    /// See [`SealGeometry::describe`].
+    fn describe(&self, thermal: bool) -> String;
+    /// See [`SealGeometry::sealing_length`].
+    fn sealing_length(&self) -> f64;
+    /// See [`SealGeometry::squeeze_at`].
+    fn squeeze_at(&self, thermal: Option<&ThermalStrain>, t: f64) -> f64;
+    /// See [`SealGeometry::deformation`].
+    fn deformation(&self, thermal: Option<&ThermalStrain>, t: f64) -> f64;
+    /// See [`SealGeometry::load_variable`].
+    fn load_variable(&self, thermal: Option<&ThermalStrain>, t: f64) -> f64;
+    /// See [`SealGeometry::profile`].
+    fn profile(
+        &self,
+        stress: f64,
+        instantaneous_modulus: f64,
+        thermal: Option<&ThermalStrain>,
+        t: f64,
+    ) -> Profile;
+    /// See [`SealGeometry::squeeze_out_of_range`].
+    fn squeeze_out_of_range(&self, eps: f64) -> bool;
+    /// See [`SealGeometry::swollen`].
+    fn swollen(&self, swell: &VolumeSwell) -> SealGeometry;
+    /// See [`SealGeometry::given_pressure`].
+    fn given_pressure(&self) -> Option<f64>;
+    /// See [`SealGeometry::ring_squeeze`].
+    fn ring_squeeze(&self) -> Option<f64>;
+    /// See [`SealGeometry::cooling_length`].
+    fn cooling_length(&self) -> Option<f64>;
+    /// See [`SealGeometry::fitted`].
+    fn fitted(&self) -> bool;
+    /// See [`SealGeometry::bolted`].
+    fn bolted(&self) -> bool;
+    /// See [`SealGeometry::permeation_section`].
+    fn permeation_section(&self, thickness: Option<f64>) -> Option<PermeationSection>;
+    /// See [`SealGeometry::set_contact`].
+    fn set_contact(&self, set: &SetInput) -> SetContact;
+    /// See [`SealGeometry::static_seal`].
+    fn static_seal(&self, load: f64, initial: &dyn Fn() -> Profile) -> FlatSeal;
 }
 
 /// The rubber's equilibrium volume swell in the fluid: ΔV/V0 of ASTM D471 (the volume change of
@@ -253,18 +376,7 @@ impl VolumeSwell {
     /// the mean diameter (where the ring sits) is kept. A flat seal is unchanged (its nominal
     /// pressure is given).
     pub fn geometry(&self, geometry: SealGeometry) -> SealGeometry {
-        match geometry {
-            SealGeometry::ORing {
-                cross_section,
-                mean_diameter,
-                squeeze,
-            } => SealGeometry::ORing {
-                cross_section: cross_section * self.linear_stretch(),
-                mean_diameter,
-                squeeze: self.squeeze(squeeze),
-            },
-            flat @ SealGeometry::Flat { .. } => flat,
-        }
+        geometry.swollen(self)
     }
 }
 

@@ -1,0 +1,75 @@
+//! The surface data files a scenario or `sealsim surface` reads: PSD files and height maps
+//! (CSV grids and Gwyddion `.gsf` files), each read into SI model types.
+
+use super::text::{DataFileError, read};
+use super::{gsf, height_map, psd};
+use std::path::Path;
+
+/// The spectrum of a PSD file (CSV of `q [1/m], C [m⁴]`, the format of `[surface] psd_file`),
+/// interpolated as a piecewise power law.
+pub fn read_psd_file(path: &Path) -> Result<crate::surface::Spectrum, DataFileError> {
+    let error = |line: Option<usize>, message: String| DataFileError {
+        path: path.to_path_buf(),
+        line,
+        message,
+    };
+    let text = read(path).map_err(|e| error(None, e.to_string()))?;
+    let (q, c) = psd::parse(&text).map_err(|e| error(e.line, e.message))?;
+    crate::surface::Spectrum::tabulated(&q, &c).map_err(|e| error(None, e.to_string()))
+}
+
+/// Whether `path` names a Gwyddion Simple Field file (extension `.gsf`, any case).
+pub fn is_gsf(path: &Path) -> bool {
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("gsf"))
+}
+
+/// A height map file as a [`crate::numerical::Topography`] (SI units): a `.gsf` file
+/// ([`gsf`], self-describing; `pixel` must then be `None` and `unit` 1) or a CSV grid
+/// (`height_map` format, heights times `unit`, spacing `pixel`, which is then required).
+pub fn read_height_map(
+    path: &Path,
+    pixel: Option<f64>,
+    unit: f64,
+) -> Result<crate::numerical::Topography, DataFileError> {
+    let error = |line: Option<usize>, message: String| DataFileError {
+        path: path.to_path_buf(),
+        line,
+        message,
+    };
+    if is_gsf(path) {
+        let bytes =
+            std::fs::read(path).map_err(|e| error(None, format!("cannot read the file: {e}")))?;
+        return gsf::parse(&bytes).map_err(|e| error(e.line, e.message));
+    }
+    let Some(pixel) = pixel else {
+        return Err(error(
+            None,
+            "a CSV height grid needs its pixel size (the spacing of the samples)".into(),
+        ));
+    };
+    let text = read(path).map_err(|e| error(None, e.to_string()))?;
+    parse_height_map(&text, path, pixel, unit)
+}
+
+/// A CSV height grid's `text` (`height_map` format: one row of heights per line, times
+/// `unit`) as a [`crate::numerical::Topography`] of spacing `pixel` \[m\]; `path` only
+/// names the grid in errors.
+pub fn parse_height_map(
+    text: &str,
+    path: &Path,
+    pixel: f64,
+    unit: f64,
+) -> Result<crate::numerical::Topography, DataFileError> {
+    let (nx, ny, heights) = height_map::parse(text, unit).map_err(|e| DataFileError {
+        path: path.to_path_buf(),
+        line: e.line,
+        message: e.message,
+    })?;
+    Ok(crate::numerical::Topography {
+        nx,
+        ny,
+        pixel,
+        heights,
+    })
+}
