@@ -7,24 +7,7 @@ use crate::gland::GlandKind;
 use crate::gland_design::{Design, INCH, Limits, Quantity, Row, StackUp};
 use serde_json::{Value, json};
 
-/// What the report names besides the design: the size, the temperatures, the conditions.
-#[derive(Debug, Clone)]
-pub struct Context {
-    /// `AS568-214`.
-    pub size: String,
-    /// Service temperatures \[K\].
-    pub temperatures: (f64, f64),
-    /// Pressure difference \[Pa\].
-    pub pressure: f64,
-    /// Hardness \[Shore A\] and where it came from.
-    pub hardness: f64,
-    /// Ring CTE \[1/K\] and its compound.
-    pub ring_expansion: f64,
-    pub material: String,
-    /// Housing CTE \[1/K\] and its name.
-    pub housing_expansion: f64,
-    pub housing: String,
-}
+pub use crate::workflow::gland::Context;
 
 fn mm(v: f64) -> String {
     format!("{:.3}", v * 1e3)

@@ -5,7 +5,6 @@
 
 use crate::gland::{GlandKind, Housing};
 use crate::gland_design::{self, Conditions, Design, INCH, Service, StackUp};
-use crate::report::gland::Context;
 use crate::scenario::{as568, library, templates};
 use crate::units::{Dimension, parse_quantity};
 
@@ -35,6 +34,25 @@ pub struct GlandRequest {
     /// The ring's compound, a library id.
     pub material: String,
     /// The housing's material (its CTE), [`Housing::from_name`].
+    pub housing: String,
+}
+
+/// What the report names besides the design: the size, the temperatures, the conditions.
+#[derive(Debug, Clone)]
+pub struct Context {
+    /// `AS568-214`.
+    pub size: String,
+    /// Service temperatures \[K\].
+    pub temperatures: (f64, f64),
+    /// Pressure difference \[Pa\].
+    pub pressure: f64,
+    /// Hardness \[Shore A\] and where it came from.
+    pub hardness: f64,
+    /// Ring CTE \[1/K\] and its compound.
+    pub ring_expansion: f64,
+    pub material: String,
+    /// Housing CTE \[1/K\] and its name.
+    pub housing_expansion: f64,
     pub housing: String,
 }
 
