@@ -11,13 +11,15 @@ use std::path::{Path, PathBuf};
 
 /// Arguments of `sealsim advise`.
 #[derive(Debug, Clone, Args)]
-#[command(after_help = "The design variables, where they apply to the seal: the compound \
+#[command(
+    after_help = "The design variables, where they apply to the seal: the compound \
     (library compounds rated A or B for the fluid), the squeeze (groove depth or squeeze), the \
     groove width, back-up rings (piston and rod glands), the finish (finer only, to Ra 0.05 µm), \
     a flat seal's seating stress and compression. The temperature and the pressure are the \
     service: their sensitivity is printed, never proposed. A value the validator refuses, or \
     one that breaks a handbook limit the scenario keeps, is never proposed. Exit 0 whatever the \
-    advice (\"no change within the bounds passes\" included).")]
+    advice (\"no change within the bounds passes\" included)."
+)]
 pub struct AdviseArgs {
     /// Scenario file (TOML).
     #[arg(value_name = "SCENARIO")]
@@ -55,7 +57,10 @@ pub fn life_flag(text: &str) -> Result<f64, CliError> {
 pub fn run(args: AdviseArgs) -> Result<(), CliError> {
     let target = life_flag(&args.life)?;
     let text = std::fs::read_to_string(&args.scenario).map_err(|e| {
-        CliError::Input(format!("{}: cannot read the scenario: {e}", args.scenario.display()))
+        CliError::Input(format!(
+            "{}: cannot read the scenario: {e}",
+            args.scenario.display()
+        ))
     })?;
     let base = Scenario::from_str(&text, &args.scenario)?;
     let mut inputs: Vec<&Path> = vec![args.scenario.as_path()];

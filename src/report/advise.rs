@@ -155,10 +155,7 @@ pub fn text(a: &Advice, file: &str) -> String {
             ]
         })
         .collect();
-    out += &columns(
-        &["key", "base", "down", "up", "effect"],
-        &rows,
-    );
+    out += &columns(&["key", "base", "down", "up", "effect"], &rows);
     out += &format!("the base: {}\n", short(&a.base_measure, a.target));
     for s in &a.skipped {
         out += &format!("not varied: {}: {}\n", s.what, s.why);
@@ -180,11 +177,10 @@ pub fn text(a: &Advice, file: &str) -> String {
 /// A measure in a few words for the table.
 fn short(m: &Measure, target: f64) -> String {
     match (m.life, &m.margin) {
-        (Some(t), _) => format!(
-            "{} by {}",
-            human_time(t),
-            m.mode.unwrap_or("?")
-        ) + &format!(" ({}%)", signed(100.0 * (t / target - 1.0))),
+        (Some(t), _) => {
+            format!("{} by {}", human_time(t), m.mode.unwrap_or("?"))
+                + &format!(" ({}%)", signed(100.0 * (t / target - 1.0)))
+        }
         (None, Some(margin)) => format!(
             "passes, {} margin {}%",
             margin.quantity,

@@ -509,7 +509,9 @@ impl Search<'_> {
         out.extend(self.compounds(&mut skipped));
         let seal = table.get("seal").and_then(toml::Value::as_table);
         let get = |t: Option<&toml::Table>, k: &str| -> Option<String> {
-            t.and_then(|t| t.get(k)).and_then(|v| v.as_str()).map(str::to_owned)
+            t.and_then(|t| t.get(k))
+                .and_then(|v| v.as_str())
+                .map(str::to_owned)
         };
         let gland = self.base.gland.as_ref();
         if let Some(g) = gland {
@@ -550,11 +552,10 @@ impl Search<'_> {
         } else if let Some(text) = get(seal, "squeeze") {
             out.extend(self.squeeze(&text));
         } else {
-            let flat = (
-                "sealsim's bound: × 1/2 … × 2 of the given value (assumed; the gasket maker's \
-                 maximum seating stress is the real limit)"
-            )
-            .to_owned();
+            let flat =
+                ("sealsim's bound: × 1/2 … × 2 of the given value (assumed; the gasket maker's \
+                 maximum seating stress is the real limit)")
+                    .to_owned();
             if let Some(text) = get(seal, "nominal_pressure") {
                 out.extend(self.grid(
                     "seal.nominal_pressure",
@@ -723,16 +724,12 @@ impl Search<'_> {
             });
             return None;
         };
-        let own: Option<String> = self
-            .text
-            .parse::<toml::Table>()
-            .ok()
-            .and_then(|t| {
-                t.get("material")?
-                    .get("library")?
-                    .as_str()
-                    .map(str::to_owned)
-            });
+        let own: Option<String> = self.text.parse::<toml::Table>().ok().and_then(|t| {
+            t.get("material")?
+                .get("library")?
+                .as_str()
+                .map(str::to_owned)
+        });
         let choices: Vec<Choice> = crate::scenario::library::ids()
             .filter_map(|id| {
                 let setting = Setting {
@@ -971,8 +968,11 @@ impl Search<'_> {
         }
         let batch: Vec<Setting> = pairs.iter().map(|p| p.2.clone()).collect();
         self.evaluate(&batch, results);
-        let passing_alone =
-            |label: &str| singles.iter().any(|(_, l, _)| l.len() == 1 && l[0] == label);
+        let passing_alone = |label: &str| {
+            singles
+                .iter()
+                .any(|(_, l, _)| l.len() == 1 && l[0] == label)
+        };
         let mut out = Vec::new();
         let mut best_pair: Option<(f64, usize)> = None;
         for (k, (i, j, s)) in pairs.iter().enumerate() {
@@ -1196,7 +1196,9 @@ pub fn admissible(base: &Scenario, s: &Scenario) -> bool {
         (Some(b), Some(g)) => {
             let kinds = |limits: &[Limit]| -> (bool, bool) {
                 (
-                    limits.iter().any(|l| matches!(l, Limit::Compression { .. })),
+                    limits
+                        .iter()
+                        .any(|l| matches!(l, Limit::Compression { .. })),
                     limits.iter().any(|l| matches!(l, Limit::Squeeze { .. })),
                 )
             };
