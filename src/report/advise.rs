@@ -126,10 +126,8 @@ pub fn text(a: &Advice, file: &str) -> String {
             if p.runs == 1 { "" } else { "s" }
         );
     }
-    out += &format!(
-        "\nsensitivity (each variable ±5 % within its admissible range; the change of life/target \
-         − 1, or of the limiting margin once the target is met):\n"
-    );
+    out += "\nsensitivity (each variable ±5 % within its admissible range; the change of \
+            life/target − 1, or of the limiting margin once the target is met):\n";
     let rows: Vec<Vec<String>> = a
         .sensitivity
         .iter()

@@ -268,6 +268,9 @@ pub struct Advice {
 /// settings would join the key).
 type PathKey = (Spectrum, ContactSettings, Fidelity);
 
+/// The contact paths built so far, each with its findings.
+type Paths = Mutex<Vec<(PathKey, Arc<(ContactPath, Findings)>)>>;
+
 /// The search's shared state: the base text, the contact paths built so far, the run count.
 struct Search<'a> {
     text: &'a str,
@@ -276,7 +279,7 @@ struct Search<'a> {
     options: &'a Options,
     /// `simulation.duration` set to the target when the base's differs.
     duration: Option<(String, toml::Value)>,
-    paths: Mutex<Vec<(PathKey, Arc<(ContactPath, Findings)>)>>,
+    paths: Paths,
     runs: AtomicUsize,
     progress: SharedProgress<'a>,
     /// Runs kept for the verification of the proposals.
@@ -364,7 +367,7 @@ impl Search<'_> {
         }
         for v in &design {
             if let Levels::Choices(choices) = &v.levels {
-                batch.extend(choices.iter().map(|c| choice(c)));
+                batch.extend(choices.iter().map(choice));
             }
         }
         let mut results: BTreeMap<String, Measure> = BTreeMap::new();
