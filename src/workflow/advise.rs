@@ -35,10 +35,10 @@ use std::path::Path;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 
-/// The finest practical counterface finish the search goes down to: Ra 0.05 µm \[m\].
-/// **Assumed** (no source read gives a limit of practice): about the finish of a superfinished
-/// or lapped steel surface; a finer one is a special process. The search never proposes a
-/// finer finish, and never a rougher one.
+/// The finest practical counterface finish the search goes down to: Ra 0.05 µm \[m\], the low
+/// end of super-finishing (0.05–0.2 µm) and lapping (0.05–0.4 µm) on normal production
+/// machines (CalQlata, "Surface Finish (machining)", <http://calqlata.com/Maths/Surface_Finish.html>,
+/// a secondary source). The search never proposes a finer finish, and never a rougher one.
 pub const FINEST_RA: f64 = 0.05e-6;
 
 /// The step of the sensitivity: ±5 % of the variable's value (at least one practical step).
@@ -850,7 +850,7 @@ impl Search<'_> {
                 what: what.to_owned(),
                 why: format!(
                     "{section}.{key} = {text:?} is already at or below the finest practical \
-                     finish (Ra 0.05 µm, assumed)"
+                     finish (Ra 0.05 µm: super-finishing, lapping)"
                 ),
             });
             return None;
@@ -865,7 +865,7 @@ impl Search<'_> {
             step,
             (finest / si, 1.0),
             false,
-            "finer only, to the finest practical finish Ra 0.05 µm (assumed)",
+            "finer only, to the finest practical finish Ra 0.05 µm (super-finishing, lapping)",
         )
     }
 
@@ -1345,9 +1345,9 @@ mod tests {
 
     #[test]
     fn the_sensitivity_steps_five_per_cent_within_the_range() {
-        // 5 % of 2.9 mm is 0.145 mm: 15 steps of 0.01 mm (rounded), cut at the range
-        let g = grid(2.9, 0.01, -50, 9);
-        assert_eq!(sensitivity_steps(&g), (Some(-15), Some(9)));
+        // 5 % of 2 mm is 0.1 mm: 10 steps of 0.01 mm, cut at the range upwards
+        let g = grid(2.0, 0.01, -50, 9);
+        assert_eq!(sensitivity_steps(&g), (Some(-10), Some(9)));
         // no room upwards: no step that way; at least one step when 5 % is less than a step
         let g = grid(0.1, 0.01, -5, 0);
         assert_eq!(sensitivity_steps(&g), (Some(-1), None));
