@@ -993,8 +993,14 @@ impl Search<'_> {
                 best_pair = Some((m.score, k));
             }
         }
+        // the best pair is listed only where it buys more margin than the best single change
+        let best_single = singles
+            .iter()
+            .filter_map(|(s, _, _)| results.get(&s.id()).map(|m| m.score))
+            .fold(f64::NEG_INFINITY, f64::max);
         if out.is_empty()
-            && let Some((_, k)) = best_pair
+            && let Some((score, k)) = best_pair
+            && score > best_single
         {
             let (i, j, s) = &pairs[k];
             out.push((
