@@ -292,6 +292,25 @@ class Scenario:
         guidance."""
         return self._inner.input_warnings
 
+    def advise(
+        self,
+        life: Union[str, float] = "10y",
+        threads: Optional[int] = None,
+        max_runs: Optional[int] = None,
+        progress: Any = None,
+    ) -> Dict[str, Any]:
+        """What would make it pass (``sealsim advise``, docs/model.md §16): the sensitivity
+        of the verdict to each design variable and the smallest changes (alone and in pairs)
+        that meet ``life`` (a time with its unit, ``"10y"``, or seconds), each verified by a
+        full run. Returns the ``--json`` document as a dict (SI): ``base``, ``proposals`` (each
+        with its ``changes`` as scenario keys and TOML values, ``passes``, ``life_s``,
+        ``margin``, ``runs``), ``sensitivity``. Apply a proposal with
+        ``scenario.replace({c["key"]: tomllib.loads("v = " + c["value"])["v"] ...})``.
+        ``threads``: worker threads (default all cores; the same advice on any number);
+        ``max_runs``: the bound on the life runs (default 200)."""
+        text = self._inner._advise(life, threads, max_runs, _progress(progress, "life runs"))
+        return json.loads(text)
+
     def run(self, fidelity: Optional[str] = None, progress: Any = None) -> RunResult:
         """The seal's life (``sealsim run``), at ``fidelity`` if given (``exact``,
         ``critical-junction``, ``effective-medium``, ``rule-of-thumb``, ``numerical``).

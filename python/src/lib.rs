@@ -518,6 +518,51 @@ impl PyScenario {
         })
     }
 
+    /// `sealsim advise`: the advice's JSON text (SI), as `--json` writes it. `life`: a time
+    /// with its unit (`"10y"`) or seconds.
+    #[pyo3(signature = (life, threads = None, max_runs = None, progress = None))]
+    fn _advise<'py>(
+        &self,
+        py: Python<'py>,
+        life: &Bound<'py, PyAny>,
+        threads: Option<usize>,
+        max_runs: Option<usize>,
+        progress: Option<Bound<'py, PyAny>>,
+    ) -> PyResult<String> {
+        let (target, target_text) = if let Ok(text) = life.extract::<String>() {
+            let t = units::parse_quantity(&text, Dimension::TIME)
+                .map_err(|e| PyValueError::new_err(format!("life: {e}")))?;
+            (t, text.trim().to_owned())
+        } else {
+            let t: f64 = life.extract()?;
+            (t, format!("{} s", units::exact(t)))
+        };
+        if !(target.is_finite() && target > 0.0) {
+            return Err(PyValueError::new_err("life: must be positive"));
+        }
+        if threads == Some(0) || max_runs == Some(0) {
+            return Err(PyValueError::new_err("threads and max_runs: at least 1"));
+        }
+        let options = workflow::advise::Options {
+            target,
+            target_text,
+            max_runs: max_runs.unwrap_or(workflow::advise::DEFAULT_MAX_RUNS),
+            threads,
+        };
+        let (text, file, scenario) = (
+            self.text.clone(),
+            self.file.clone(),
+            Arc::clone(&self.inner),
+        );
+        let json = blocking_with_progress(py, progress.as_ref(), move |meter| {
+            let progress = |done: usize, total: usize| meter.set(done, total);
+            workflow::advise::advise(&text, Path::new(&file), &scenario, &options, &progress)
+                .map(|advice| sealsim::report::advise::json(&advice, &file))
+        })?
+        .map_err(scenario_error)?;
+        json.map_err(internal)
+    }
+
     /// `sealsim leak`: (table columns, findings JSON text). `pressures` in Pa (or strings with
     /// units); `None`: the scenario's own.
     #[pyo3(signature = (pressures = None, fidelity = None, progress = None))]

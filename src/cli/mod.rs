@@ -5,6 +5,7 @@
 //! [`run()`]. Exit status: 0 success, 2 bad input (usage, flag values, scenario files), 1 failure
 //! to write the output or an internal error.
 
+pub mod advise;
 pub mod ageing_fit;
 pub mod compare;
 pub mod figures;
@@ -164,6 +165,9 @@ pub enum Command {
     Run(run::RunArgs),
     /// The same life scenario with several compounds, side by side.
     Compare(compare::CompareArgs),
+    /// What would make it pass: the sensitivity of the verdict to each design variable and the
+    /// smallest changes (alone and in pairs) that meet a life target, each verified by a run.
+    Advise(Box<advise::AdviseArgs>),
     /// Leak rate at one or more nominal pressures, as CSV (an O-ring: its installed profile, the
     /// first state of `run`; a pressure is the profile's peak).
     Leak(leak::LeakArgs),
@@ -275,6 +279,7 @@ pub fn run(command: Command) -> Result<(), CliError> {
     match command {
         Command::Run(args) => run::run(args),
         Command::Compare(args) => compare::run(args),
+        Command::Advise(args) => advise::run(*args),
         Command::Leak(args) => leak::run(args),
         Command::Tradeoff(args) => tradeoff::run(args),
         Command::Figures(args) => figures::run(args),

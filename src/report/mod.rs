@@ -2,6 +2,7 @@
 //!
 //! Units are printed only here (column names carry them); the physics hands over SI values.
 
+pub mod advise;
 pub mod ageing_fit;
 pub mod columns;
 pub mod csv;

@@ -7,6 +7,7 @@
 //! Every workflow returns its validity [`Findings`] (docs/model.md §9) with its results, so
 //! that every command reports them the same way.
 
+pub mod advise;
 pub mod compare;
 pub mod datasheet;
 pub mod figures;

@@ -13,6 +13,7 @@
 mod common;
 mod support;
 
+mod advise;
 mod ageing_fit;
 mod callout;
 mod cold;

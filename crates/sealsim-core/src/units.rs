@@ -1039,6 +1039,7 @@ const UNITS: &[UnitDef] = &[
     unit("year", 365.25 * DAY, Dimension::TIME, false),
     unit("years", 365.25 * DAY, Dimension::TIME, false),
     unit("yr", 365.25 * DAY, Dimension::TIME, false),
+    unit("y", 365.25 * DAY, Dimension::TIME, false),
     unit("Pa", 1.0, Dimension::PRESSURE, true),
     unit("bar", 1e5, Dimension::PRESSURE, true),
     unit("psi", 6894.757293168, Dimension::PRESSURE, false),
