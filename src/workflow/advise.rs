@@ -945,15 +945,7 @@ impl Search<'_> {
         let mut best: Vec<(&Variable, Setting, f64)> = design
             .iter()
             .filter_map(|v| {
-                let settings: Vec<Setting> = match &v.levels {
-                    Levels::Choices(cs) => cs.iter().map(choice).collect(),
-                    Levels::Continuous(g) => [g.lo, g.hi]
-                        .into_iter()
-                        .filter(|&n| n != 0)
-                        .map(|n| continuous(v, g, n))
-                        .collect(),
-                };
-                settings
+                extremes(v)
                     .into_iter()
                     .filter_map(|s| results.get(&s.id()).map(|m| (m.score, s)))
                     .max_by(|a, b| a.0.total_cmp(&b.0))
@@ -1072,15 +1064,7 @@ impl Search<'_> {
     ) -> Vec<(Setting, Vec<String>, usize)> {
         let mut all: Vec<(f64, Setting, Vec<String>)> = Vec::new();
         for v in design {
-            let settings: Vec<Setting> = match &v.levels {
-                Levels::Choices(cs) => cs.iter().map(choice).collect(),
-                Levels::Continuous(g) => [g.lo, g.hi]
-                    .into_iter()
-                    .filter(|&n| n != 0)
-                    .map(|n| continuous(v, g, n))
-                    .collect(),
-            };
-            for s in settings {
+            for s in extremes(v) {
                 if let Some(m) = results.get(&s.id()) {
                     all.push((m.score, s, vec![v.label.clone()]));
                 }
@@ -1121,6 +1105,19 @@ impl Search<'_> {
 }
 
 /// The setting of a continuous variable at step `n`.
+/// A variable's settings at the ends of its range (a continuous one's ends other than the
+/// base, each choice of a discrete one): where its best is looked for.
+fn extremes(v: &Variable) -> Vec<Setting> {
+    match &v.levels {
+        Levels::Choices(cs) => cs.iter().map(choice).collect(),
+        Levels::Continuous(g) => [g.lo, g.hi]
+            .into_iter()
+            .filter(|&n| n != 0)
+            .map(|n| continuous(v, g, n))
+            .collect(),
+    }
+}
+
 fn continuous(v: &Variable, g: &Grid, n: i64) -> Setting {
     Setting {
         values: vec![(v.key.clone(), toml::Value::String(g.text(n)))],
@@ -1225,12 +1222,11 @@ pub fn admissible(base: &Scenario, s: &Scenario) -> bool {
                 && ig.fill >= MIN_FILL_GUIDANCE.min(ib.fill)
                 && ig.stretch <= MAX_STRETCH_GUIDANCE.max(ib.stretch)
         }
-        (None, None) => match (&base.life.geometry, &s.life.geometry) {
-            (
-                crate::seal::SealGeometry::ORing { squeeze: b, .. },
-                crate::seal::SealGeometry::ORing { squeeze: q, .. },
-            ) => {
-                let (b, q) = (*b, *q);
+        (None, None) => match (
+            base.life.geometry.ring_squeeze(),
+            s.life.geometry.ring_squeeze(),
+        ) {
+            (Some(b), Some(q)) => {
                 let lo = STATIC_SQUEEZE.0.min(b);
                 let hi = STATIC_SQUEEZE.1.max(b);
                 (lo..=hi).contains(&q)
