@@ -10,7 +10,7 @@
 //! * [`oring`]: an O-ring of cord diameter d and mean diameter D squeezed by ε between flat
 //!   plates or in a groove — Lindley's relations (docs/model.md §6).
 //!
-//! [`SealGeometry::kind`] is the one `match` that hands a geometry to its kind (ARCHITECTURE.md,
+//! `SealGeometry::kind` (private) is the one `match` that hands a geometry to its kind (ARCHITECTURE.md,
 //! "A new seal kind": a new kind is its variant, one arm there, and its file).
 
 use crate::fluid::FlowGeometry;
@@ -279,7 +279,7 @@ pub enum PermeationSection {
     },
 }
 
-/// The behaviour of one seal kind ([`SealGeometry::kind`] hands a geometry to it); the
+/// The behaviour of one seal kind (`SealGeometry::kind` (private) hands a geometry to it); the
 /// methods are documented on [`SealGeometry`]'s of the same name.
 pub trait SealKind {
     /// See [`SealGeometry::name`].
