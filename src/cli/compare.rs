@@ -96,6 +96,9 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
         .map(|spec| Path::new(spec.trim()))
         .chain(std::iter::once(args.scenario.as_path()))
         .collect();
+    if let Some(path) = args.output.as_deref() {
+        super::expect_extension("-o", path, &["csv"])?;
+    }
     super::guard_outputs(
         &material_files,
         &[

@@ -136,6 +136,9 @@ pub fn run(args: LeakArgs) -> Result<(), CliError> {
     let inputs: Vec<&std::path::Path> = std::iter::once(args.scenario.as_path())
         .chain(scenario.inputs.iter().map(std::path::PathBuf::as_path))
         .collect();
+    if let Some(path) = args.output.as_deref() {
+        super::expect_extension("-o", path, &["csv"])?;
+    }
     super::guard_outputs(&inputs, &[("-o", args.output.as_deref())])?;
     let pressures = match (&args.pressures, args.sweep) {
         (Some(list), _) => Some(list.clone()),

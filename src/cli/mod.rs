@@ -354,6 +354,40 @@ fn identity(path: &Path) -> std::path::PathBuf {
     }
 }
 
+/// The formats an output flag writes, the first its own (`None`: the command decides, e.g.
+/// `-o`, which is CSV for a history and TOML for a material).
+fn flag_format(flag: &str) -> Option<&'static [&'static str]> {
+    match flag {
+        "--plot" | "--plot-master" | "--plot-shift" | "--survival-plot" | "--tornado-plot" => {
+            Some(&["svg"])
+        }
+        "--report" => Some(&["html", "htm"]),
+        "--summary" | "--json" => Some(&["json"]),
+        _ => None,
+    }
+}
+
+/// Refuses an output whose extension names another format than the flag writes (a `.png` plot
+/// would hold SVG text, an `.xlsx` table CSV): exit 2 before anything runs. A path without an
+/// extension (`/dev/stdout`, a pipe) is taken as asked.
+pub(crate) fn expect_extension(flag: &str, path: &Path, formats: &[&str]) -> Result<(), CliError> {
+    let Some(ext) = path.extension().and_then(std::ffi::OsStr::to_str) else {
+        return Ok(());
+    };
+    if formats.iter().any(|f| f.eq_ignore_ascii_case(ext)) {
+        return Ok(());
+    }
+    let fixed = path.with_extension(formats[0]);
+    Err(CliError::Input(format!(
+        "{flag} {}: this output is {} and would not be a .{ext} file; name it {} (other \
+         formats are not written: convert the {} file)",
+        path.display(),
+        formats[0].to_uppercase(),
+        fixed.display(),
+        formats[0].to_uppercase()
+    )))
+}
+
 /// Refuses, before anything runs, an output that would replace one of `inputs` or another
 /// output of the same command (exit 2, nothing written): `outputs` are (flag, path) pairs.
 pub(crate) fn guard_outputs(
@@ -365,6 +399,9 @@ pub(crate) fn guard_outputs(
     let mut seen: Vec<(std::path::PathBuf, &str)> = Vec::new();
     for (flag, path) in outputs {
         let Some(path) = path else { continue };
+        if let Some(formats) = flag_format(flag) {
+            expect_extension(flag, path, formats)?;
+        }
         let id = identity(path);
         if let Some((_, input)) = inputs.iter().find(|(i, _)| *i == id) {
             return Err(CliError::Input(format!(

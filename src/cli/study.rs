@@ -191,6 +191,9 @@ fn run_cases(args: RunArgs) -> Result<(), CliError> {
         .chain(study.base_scenario.inputs.iter().map(PathBuf::as_path))
         .collect();
     let o = &args.outputs;
+    if let Some(path) = args.output.as_deref() {
+        super::expect_extension("-o", path, &["csv"])?;
+    }
     super::guard_outputs(
         &inputs,
         &[
@@ -299,6 +302,9 @@ fn merge(args: MergeArgs) -> Result<(), CliError> {
         .chain(args.parts.iter().map(PathBuf::as_path))
         .collect();
     let o = &args.outputs;
+    if let Some(path) = args.output.as_deref() {
+        super::expect_extension("-o", path, &["csv"])?;
+    }
     super::guard_outputs(
         &inputs,
         &[

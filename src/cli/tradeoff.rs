@@ -66,6 +66,9 @@ pub fn run(args: TradeoffArgs) -> Result<(), CliError> {
     let inputs: Vec<&std::path::Path> = std::iter::once(args.scenario.as_path())
         .chain(scenario.inputs.iter().map(std::path::PathBuf::as_path))
         .collect();
+    if let Some(path) = args.output.as_deref() {
+        super::expect_extension("-o", path, &["csv"])?;
+    }
     super::guard_outputs(
         &inputs,
         &[

@@ -144,3 +144,46 @@ fn output_onto_a_directory_keeps_it_and_removes_the_temporary() {
     assert_eq!(names(dir.path()), ["history.csv"]);
     assert_eq!(fs::read_to_string(out.join("keep.txt")).unwrap(), PREVIOUS);
 }
+
+/// An output named for another format than the flag writes is refused before anything runs
+/// (issue 42, item 2: `--plot life.png` wrote SVG text into a `.png`, `-o hist.xlsx` CSV): exit 2
+/// naming the flag and the name that would be right, nothing written; the right extension in any
+/// case and a path without one (a device) are taken.
+#[test]
+fn an_output_named_for_another_format_is_refused_and_nothing_is_written() {
+    for (flag, name, wanted) in [
+        ("--plot", "life.png", "life.svg"),
+        ("-o", "hist.xlsx", "hist.csv"),
+        ("--summary", "s.txt", "s.json"),
+        ("--report", "r.pdf", "r.html"),
+    ] {
+        let dir = tempfile::tempdir().unwrap();
+        let out = sealsim()
+            .current_dir(root())
+            .args(["run", SCENARIO, flag])
+            .arg(dir.path().join(name))
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{flag} {name}: {err}");
+        assert!(err.contains(flag) && err.contains(wanted), "{err}");
+        assert!(
+            names(dir.path()).is_empty(),
+            "{flag} {name} wrote something"
+        );
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let out = sealsim()
+        .current_dir(root())
+        .args(["run", SCENARIO, "--plot"])
+        .arg(dir.path().join("LIFE.SVG"))
+        .args(["-o", "/dev/null"])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(names(dir.path()), ["LIFE.SVG"]);
+}
