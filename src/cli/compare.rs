@@ -96,9 +96,6 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
         .map(|spec| Path::new(spec.trim()))
         .chain(std::iter::once(args.scenario.as_path()))
         .collect();
-    if let Some(path) = args.output.as_deref() {
-        super::expect_extension("-o", path, &["csv"])?;
-    }
     super::guard_outputs(
         &material_files,
         &[
@@ -108,6 +105,9 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
             ("--report", args.report.as_deref()),
         ],
     )?;
+    if let Some(path) = args.output.as_deref() {
+        super::expect_extension("-o", path, &["csv"])?;
+    }
     let runs = workflow::compare::rank(
         workflow::compare::compare(
             &args.scenario,

@@ -136,10 +136,10 @@ pub fn run(args: LeakArgs) -> Result<(), CliError> {
     let inputs: Vec<&std::path::Path> = std::iter::once(args.scenario.as_path())
         .chain(scenario.inputs.iter().map(std::path::PathBuf::as_path))
         .collect();
+    super::guard_outputs(&inputs, &[("-o", args.output.as_deref())])?;
     if let Some(path) = args.output.as_deref() {
         super::expect_extension("-o", path, &["csv"])?;
     }
-    super::guard_outputs(&inputs, &[("-o", args.output.as_deref())])?;
     let pressures = match (&args.pressures, args.sweep) {
         (Some(list), _) => Some(list.clone()),
         (None, Some(sweep)) => Some(sweep.pressures(args.points.unwrap_or(DEFAULT_SWEEP_POINTS))),

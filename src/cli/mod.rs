@@ -399,9 +399,6 @@ pub(crate) fn guard_outputs(
     let mut seen: Vec<(std::path::PathBuf, &str)> = Vec::new();
     for (flag, path) in outputs {
         let Some(path) = path else { continue };
-        if let Some(formats) = flag_format(flag) {
-            expect_extension(flag, path, formats)?;
-        }
         let id = identity(path);
         if let Some((_, input)) = inputs.iter().find(|(i, _)| *i == id) {
             return Err(CliError::Input(format!(
@@ -418,6 +415,12 @@ pub(crate) fn guard_outputs(
             )));
         }
         seen.push((id, flag));
+    }
+    // then the format a name promises (after the overwrites: the worse mistake first)
+    for (flag, path) in outputs {
+        if let (Some(path), Some(formats)) = (path, flag_format(flag)) {
+            expect_extension(flag, path, formats)?;
+        }
     }
     Ok(())
 }

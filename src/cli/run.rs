@@ -84,9 +84,6 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
     let inputs: Vec<&std::path::Path> = std::iter::once(args.scenario.as_path())
         .chain(scenario.inputs.iter().map(std::path::PathBuf::as_path))
         .collect();
-    if let Some(path) = args.output.as_deref() {
-        super::expect_extension("-o", path, &["csv"])?;
-    }
     super::guard_outputs(
         &inputs,
         &[
@@ -96,6 +93,9 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
             ("--report", args.report.as_deref()),
         ],
     )?;
+    if let Some(path) = args.output.as_deref() {
+        super::expect_extension("-o", path, &["csv"])?;
+    }
     if let Some(fidelity) = args.fidelity {
         scenario.life.fidelity = fidelity;
     }

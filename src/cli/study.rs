@@ -191,9 +191,6 @@ fn run_cases(args: RunArgs) -> Result<(), CliError> {
         .chain(study.base_scenario.inputs.iter().map(PathBuf::as_path))
         .collect();
     let o = &args.outputs;
-    if let Some(path) = args.output.as_deref() {
-        super::expect_extension("-o", path, &["csv"])?;
-    }
     super::guard_outputs(
         &inputs,
         &[
@@ -204,6 +201,9 @@ fn run_cases(args: RunArgs) -> Result<(), CliError> {
             ("--report", o.report.as_deref()),
         ],
     )?;
+    if let Some(path) = args.output.as_deref() {
+        super::expect_extension("-o", path, &["csv"])?;
+    }
     let total = study.cases();
     let range = match args.shard {
         Some((k, n)) => shard_range(k, n, total),
@@ -302,9 +302,6 @@ fn merge(args: MergeArgs) -> Result<(), CliError> {
         .chain(args.parts.iter().map(PathBuf::as_path))
         .collect();
     let o = &args.outputs;
-    if let Some(path) = args.output.as_deref() {
-        super::expect_extension("-o", path, &["csv"])?;
-    }
     super::guard_outputs(
         &inputs,
         &[
@@ -315,6 +312,9 @@ fn merge(args: MergeArgs) -> Result<(), CliError> {
             ("--report", o.report.as_deref()),
         ],
     )?;
+    if let Some(path) = args.output.as_deref() {
+        super::expect_extension("-o", path, &["csv"])?;
+    }
     let mut outcomes: Vec<CaseOutcome> = Vec::with_capacity(study.cases());
     let mut source: Vec<Option<usize>> = vec![None; study.cases()];
     let design = study.plan.values(0..study.cases());

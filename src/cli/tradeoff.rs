@@ -66,9 +66,6 @@ pub fn run(args: TradeoffArgs) -> Result<(), CliError> {
     let inputs: Vec<&std::path::Path> = std::iter::once(args.scenario.as_path())
         .chain(scenario.inputs.iter().map(std::path::PathBuf::as_path))
         .collect();
-    if let Some(path) = args.output.as_deref() {
-        super::expect_extension("-o", path, &["csv"])?;
-    }
     super::guard_outputs(
         &inputs,
         &[
@@ -77,6 +74,9 @@ pub fn run(args: TradeoffArgs) -> Result<(), CliError> {
             ("--report", args.report.as_deref()),
         ],
     )?;
+    if let Some(path) = args.output.as_deref() {
+        super::expect_extension("-o", path, &["csv"])?;
+    }
     let options = TradeoffOptions {
         band: args.band.unwrap_or(scenario.numerical.band),
         seed: args.seed.unwrap_or(scenario.numerical.seed),
