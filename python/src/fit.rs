@@ -48,7 +48,7 @@ pub(crate) fn positive(
 }
 
 /// An absolute temperature: a float in K, or a string with its unit ("70 C").
-fn temperature(value: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<Option<f64>> {
+pub(crate) fn temperature(value: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<Option<f64>> {
     let Some(value) = value else { return Ok(None) };
     if value.is_instance_of::<PyString>() {
         let text: String = value.extract()?;

@@ -2,57 +2,13 @@
 //! tolerance stack-up, and the runnable scenario — `sealsim gland` through
 //! [`sealsim::workflow::gland`].
 
+use super::fit::{positive, temperature};
 use super::{ScenarioError, internal};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use pyo3::types::PyString;
 use sealsim::gland::GlandKind;
-use sealsim::units::{self, Dimension};
+use sealsim::units::Dimension;
 use sealsim::workflow::gland::{GlandError, GlandRequest, design};
-
-/// A positive quantity: a float in SI or a string with its unit ("31.75 mm", "210 bar"); the
-/// string is kept as typed (the scenario writes it).
-fn positive(
-    value: &Bound<'_, PyAny>,
-    name: &str,
-    dim: Dimension,
-    si: &str,
-) -> PyResult<(f64, String)> {
-    let (v, text) = if value.is_instance_of::<PyString>() {
-        let text: String = value.extract()?;
-        let v = units::parse_quantity(&text, dim)
-            .map_err(|e| PyValueError::new_err(format!("{name} \"{text}\": {e}")))?;
-        (v, text)
-    } else {
-        let v = value.extract::<f64>()?;
-        (v, format!("{v:e} {si}"))
-    };
-    if v.is_finite() && v > 0.0 {
-        Ok((v, text))
-    } else {
-        Err(PyValueError::new_err(format!(
-            "{name} must be positive and finite, got {text}"
-        )))
-    }
-}
-
-/// A temperature: a float in K or a string with its unit ("-20 C").
-fn temperature(value: &Bound<'_, PyAny>) -> PyResult<f64> {
-    let t = if value.is_instance_of::<PyString>() {
-        let text: String = value.extract()?;
-        units::parse_temperature(&text)
-            .map_err(|e| PyValueError::new_err(format!("temperature \"{text}\": {e}")))?
-    } else {
-        value.extract::<f64>()?
-    };
-    if t.is_finite() && t > 0.0 {
-        Ok(t)
-    } else {
-        Err(PyValueError::new_err(format!(
-            "temperature must be above 0 K, got {t} K"
-        )))
-    }
-}
 
 /// `sealsim gland`: (the stack-up JSON text of `--json`, the scenario's TOML of `-o`).
 #[pyfunction]
@@ -121,13 +77,17 @@ fn _gland(
         (_, Some(_), GlandKind::Face | GlandKind::Piston) => {
             return bad("rod= is the rod of a rod gland; a piston gland takes bore=");
         }
-        (Some(b), _, _) => Some(positive(b, "bore", Dimension::LENGTH, "m")?.0),
-        (_, Some(r), _) => Some(positive(r, "rod", Dimension::LENGTH, "m")?.0),
+        (Some(b), _, _) => positive(Some(b), "bore", Dimension::LENGTH)?,
+        (_, Some(r), _) => positive(Some(r), "rod", Dimension::LENGTH)?,
         _ => None,
     };
     let temperatures = match &temperature {
         Some((lo, hi)) => {
-            let (lo, hi) = (self::temperature(lo)?, self::temperature(hi)?);
+            let kelvin = |t| {
+                self::temperature(Some(t), "temperature")?
+                    .ok_or_else(|| internal("a temperature went missing"))
+            };
+            let (lo, hi) = (kelvin(lo)?, kelvin(hi)?);
             if lo > hi {
                 return bad("temperature=(min, max): min is above max");
             }
@@ -135,10 +95,16 @@ fn _gland(
         }
         None => None,
     };
-    let pressure_difference = pressure_difference
-        .as_ref()
-        .map(|p| positive(p, "pressure_difference", Dimension::PRESSURE, "Pa"))
-        .transpose()?;
+    // the value, and its text as typed for the scenario (a float: in Pa)
+    let pressure_difference = match &pressure_difference {
+        Some(p) => positive(Some(p), "pressure_difference", Dimension::PRESSURE)?.map(|v| {
+            let text = p
+                .extract::<String>()
+                .unwrap_or_else(|_| format!("{v:e} Pa"));
+            (v, text)
+        }),
+        None => None,
+    };
     let request = GlandRequest {
         size,
         kind,

@@ -705,6 +705,14 @@ pub(crate) fn set(table: &mut toml::Table, key: &str, value: toml::Value) -> Res
     Ok(())
 }
 
+/// A fraction of a case's own tolerance band, normal with the band at ±3σ (truncated there).
+const FRACTION_NORMAL: Distribution = Distribution::Normal {
+    mean: 0.0,
+    std: 1.0 / 3.0,
+    lo: -1.0,
+    hi: 1.0,
+};
+
 /// The ring keys a size's own tolerance can vary (`tolerance = "size"`).
 const RING_KEYS: [&str; 2] = ["seal.cross_section", "seal.inner_diameter"];
 
@@ -1309,25 +1317,24 @@ impl Entry<'_> {
                  `nominal`",
             ));
         }
-        let shape = match table.get("shape") {
-            None => Some("normal"),
-            Some(toml::Value::String(s)) => Some(s.as_str()),
-            Some(_) => None,
-        };
-        let d = match shape {
-            Some("normal") => Distribution::Normal {
-                mean: 0.0,
-                std: 1.0 / 3.0,
-                lo: -1.0,
-                hi: 1.0,
-            },
-            Some("uniform") => Distribution::Uniform {
+        Ok((
+            self.with_kind(InputKind::SizeTolerance),
+            self.fraction(table)?,
+        ))
+    }
+
+    /// The fraction z ∈ [−1, 1] of a case's own tolerance (`tolerance = "size"`, `"fit"`):
+    /// normal with the band at ±3σ, truncated there (default), or `shape = "uniform"`.
+    fn fraction(&self, table: &toml::Table) -> Result<Distribution, ScenarioError> {
+        match table.get("shape") {
+            None => Ok(FRACTION_NORMAL),
+            Some(toml::Value::String(s)) if s == "normal" => Ok(FRACTION_NORMAL),
+            Some(toml::Value::String(s)) if s == "uniform" => Ok(Distribution::Uniform {
                 min: -1.0,
                 max: 1.0,
-            },
-            _ => return Err(self.err("`shape` is \"normal\" (±3σ) or \"uniform\"")),
-        };
-        Ok((self.with_kind(InputKind::SizeTolerance), d))
+            }),
+            _ => Err(self.err("`shape` is \"normal\" (±3σ) or \"uniform\"")),
+        }
     }
 
     /// `tolerance = "fit"` on `seal.diametral_clearance`: the fraction z between the case's
@@ -1349,26 +1356,10 @@ impl Entry<'_> {
                 "tolerance = \"fit\" takes the range from the case's `seal.fit`: remove `nominal`",
             ));
         }
-        let d = match table.get("shape") {
-            None => Distribution::Normal {
-                mean: 0.0,
-                std: 1.0 / 3.0,
-                lo: -1.0,
-                hi: 1.0,
-            },
-            Some(toml::Value::String(s)) if s == "normal" => Distribution::Normal {
-                mean: 0.0,
-                std: 1.0 / 3.0,
-                lo: -1.0,
-                hi: 1.0,
-            },
-            Some(toml::Value::String(s)) if s == "uniform" => Distribution::Uniform {
-                min: -1.0,
-                max: 1.0,
-            },
-            _ => return Err(self.err("`shape` is \"normal\" (±3σ) or \"uniform\"")),
-        };
-        Ok((self.with_kind(InputKind::FitTolerance), d))
+        Ok((
+            self.with_kind(InputKind::FitTolerance),
+            self.fraction(table)?,
+        ))
     }
 
     /// `values = [...]`: quantities (all of one quantity) or words, equally likely.

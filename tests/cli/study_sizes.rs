@@ -73,24 +73,7 @@ fn a_study_over_three_sizes_and_their_fits_gives_b10_per_size() {
         ),
     );
     let (csv, json) = (dir.path().join("cases.csv"), dir.path().join("s.json"));
-    let out = sealsim()
-        .current_dir(dir.path())
-        .args([
-            "study",
-            "sizes.study.toml",
-            "-o",
-            "cases.csv",
-            "--summary",
-            "s.json",
-        ])
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let stdout = String::from_utf8(out.stdout).unwrap();
+    let stdout = run_study(dir.path(), "sizes");
     let (header, rows) = read_csv(&csv);
     let col = |name: &str| header.iter().position(|h| h == name).unwrap();
     // every dimension with a tolerance is an input: the ring within its size's, the groove depth
@@ -200,6 +183,23 @@ fn a_ring_within_its_size_tolerance_follows_the_case_size() {
     assert!(bad.contains("remove `nominal`"), "{bad}");
 }
 
+/// Runs `NAME.study.toml` in `dir` into `cases.csv` and `s.json` (exit 0) and returns stdout.
+fn run_study(dir: &std::path::Path, name: &str) -> String {
+    let out = sealsim()
+        .current_dir(dir)
+        .arg("study")
+        .arg(format!("{name}.study.toml"))
+        .args(["-o", "cases.csv", "--summary", "s.json"])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).unwrap()
+}
+
 fn study_err(dir: &std::path::Path, vary: &str) -> String {
     let path = study(dir, "bad", "", vary);
     let out = sealsim().arg("study").arg(&path).output().unwrap();
@@ -268,23 +268,7 @@ fn a_study_over_fit_grades_gives_b10_per_fit_and_the_loose_fit_extrudes() {
         "tolerances = \"fits\"\n",
         "\"seal.fit\" = { values = [\"H8/f7\", \"H11/d10\"] }\n",
     );
-    let out = sealsim()
-        .current_dir(dir.path())
-        .args([
-            "study",
-            "fits.study.toml",
-            "-o",
-            "cases.csv",
-            "--summary",
-            "s.json",
-        ])
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let stdout = run_study(dir.path(), "fits");
     let (header, rows) = read_csv(&dir.path().join("cases.csv"));
     let col = |name: &str| header.iter().position(|h| h == name).unwrap();
     let (z, fit, mode) = (
@@ -333,6 +317,5 @@ fn a_study_over_fit_grades_gives_b10_per_fit_and_the_loose_fit_extrudes() {
     };
     assert_eq!(level("H11/d10")["b10_lower_s"].as_f64(), Some(0.0));
     assert!(level("H8/f7")["b10_lower_s"].as_f64().unwrap() > 0.0);
-    let stdout = String::from_utf8(out.stdout).unwrap();
     assert!(stdout.contains("B10 by seal.fit"), "{stdout}");
 }
