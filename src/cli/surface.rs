@@ -14,8 +14,8 @@ use std::path::PathBuf;
 #[derive(Debug, Clone, Args)]
 #[command(
     after_help = "SOURCE: a scenario (.toml: its counterface spectrum as the contact \
-    sees it), one or more line traces (CSV with header x,z and an optional units row such as \
-    mm,um; several files are averaged), a height map (a Gwyddion Simple Field .gsf file, or a \
+    sees it), one or more line traces (CSV with header x,z and a units row such as \
+    mm,um, required; several files are averaged), a height map (a Gwyddion Simple Field .gsf file, or a \
     CSV grid of heights — one row per line, no header — when --pixel-size is given), or a PSD \
     file (CSV of q [1/m], C [m^4]).\n\
     Height maps: Ra, Rq, Rz measured on every row as a profile along x (same mean-line rule as \

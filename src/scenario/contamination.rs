@@ -277,9 +277,9 @@ impl Source<'_> {
 /// wrong.
 type TableError = (Option<usize>, String);
 
-/// A size table: rows `d, F` (comma-separated; `#` comments and blank lines ignored), an
-/// optional header row (no number in it) and an optional units row after it whose first cell
-/// is a length unit (`um`; default m). d strictly increasing and positive, F non-decreasing
+/// A size table: rows `d, F` (comma-separated; `#` comments and blank lines ignored) after a
+/// header row (no number in it) and a units row whose first cell is the length unit of d
+/// (`um`): required, as for every data file, since a bare `10` could be metres or micrometres. d strictly increasing and positive, F non-decreasing
 /// within \[0, 1\] and reaching 1 at the last row ("not a CDF" otherwise).
 fn parse_size_table(text: &str) -> Result<(Vec<f64>, Vec<f64>), TableError> {
     let mut d: Vec<f64> = Vec::new();
@@ -293,14 +293,20 @@ fn parse_size_table(text: &str) -> Result<(Vec<f64>, Vec<f64>), TableError> {
             if text_rows == 2 {
                 // units row: the first cell is the diameter's length unit
                 let unit = cells.first().copied().unwrap_or("");
-                if !unit.is_empty() {
-                    scale = units::parse_quantity(&format!("1 {unit}"), Dimension::LENGTH)
-                        .map_err(|e| (Some(line), format!("diameter unit {unit:?}: {e}")))?;
-                }
+                scale = units::parse_quantity(&format!("1 {unit}"), Dimension::LENGTH)
+                    .map_err(|e| (Some(line), format!("diameter unit {unit:?}: {e}")))?;
             } else if text_rows > 2 {
                 return Err((Some(line), "expected a data row (d, F)".into()));
             }
             continue;
+        }
+        if d.is_empty() && text_rows < 2 {
+            return Err((
+                Some(line),
+                "no units row: start the table with a header and a units row, e.g. `d,F` then \
+                 `um,` — without it a diameter of 10 could be metres or micrometres"
+                    .into(),
+            ));
         }
         let [dc, fc] = cells[..] else {
             return Err((
@@ -377,14 +383,27 @@ mod tests {
         let (d, f) = parse_size_table("d,F\num,\n0.5,0\n1,0.5\n2,1\n").unwrap();
         assert_eq!(f, vec![0.0, 0.5, 1.0]);
         assert!((d[1] - 1e-6).abs() < 1e-18);
-        let (d, _) = parse_size_table("# sizes\n1e-6,0.2\n2e-6,1\n").unwrap();
+        let (d, _) = parse_size_table("# sizes\nd,F\nm,\n1e-6,0.2\n2e-6,1\n").unwrap();
         assert_eq!(d, vec![1e-6, 2e-6]);
-        let e = parse_size_table("1e-6,0.5\n2e-6,0.4\n3e-6,1\n").unwrap_err();
-        assert_eq!(e.0, Some(2));
+        let e = parse_size_table("d,F\nm,\n1e-6,0.5\n2e-6,0.4\n3e-6,1\n").unwrap_err();
+        assert_eq!(e.0, Some(4));
         assert!(e.1.contains("not a CDF"), "{}", e.1);
-        let e = parse_size_table("1e-6,0.5\n2e-6,0.9\n").unwrap_err();
+        let e = parse_size_table("d,F\nm,\n1e-6,0.5\n2e-6,0.9\n").unwrap_err();
         assert!(e.1.contains("must reach 1"), "{}", e.1);
-        let e = parse_size_table("1e-6,1.5\n").unwrap_err();
+        let e = parse_size_table("d,F\nm,\n1e-6,1.5\n").unwrap_err();
         assert!(e.1.contains("not a CDF"), "{}", e.1);
+    }
+
+    /// A table without its units row is refused at its first number (a size in µm read as
+    /// metres would be a 10⁶× slip); an empty unit cell too.
+    #[test]
+    fn a_size_table_without_units_is_refused() {
+        let e = parse_size_table("# sizes\n1e-6,0.2\n2e-6,1\n").unwrap_err();
+        assert_eq!(e.0, Some(2));
+        assert!(e.1.contains("no units row"), "{}", e.1);
+        let e = parse_size_table("d,F\n1,0.2\n2,1\n").unwrap_err();
+        assert!(e.1.contains("no units row"), "{}", e.1);
+        let e = parse_size_table("d,F\n,\n1,0.2\n2,1\n").unwrap_err();
+        assert_eq!(e.0, Some(2));
     }
 }

@@ -17,6 +17,7 @@ mod bem;
 mod clogging;
 mod contact_area;
 mod datasheet;
+mod docs_facts;
 mod dynamic;
 mod effective_medium;
 mod feasibility;
