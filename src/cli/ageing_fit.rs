@@ -52,7 +52,7 @@ pub struct AgeingFitArgs {
     #[arg(short, long, value_name = "FILE")]
     pub output: Option<PathBuf>,
 
-    /// Write the Arrhenius chart (SVG) to FILE.
+    /// Write the Arrhenius chart (SVG, PNG or PDF) to FILE.
     #[arg(long, value_name = "FILE.svg|png|pdf")]
     pub plot: Option<PathBuf>,
 

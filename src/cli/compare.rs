@@ -54,7 +54,7 @@ pub struct CompareArgs {
     #[arg(long, value_name = "FILE.json")]
     pub summary: Option<PathBuf>,
 
-    /// Write an overlay chart of the leak-rate histories to FILE (SVG).
+    /// Write an overlay chart of the leak-rate histories to FILE (SVG, PNG or PDF).
     #[arg(long, value_name = "FILE.svg|png|pdf")]
     pub plot: Option<PathBuf>,
 

@@ -101,11 +101,11 @@ pub struct TtsArgs {
     #[arg(long, value_name = "T")]
     pub reference_temperature: Option<String>,
 
-    /// Write the shifted data on the master curve (SVG) to FILE.
+    /// Write the shifted data on the master curve (SVG, PNG or PDF) to FILE.
     #[arg(long, value_name = "FILE.svg|png|pdf")]
     pub plot_master: Option<PathBuf>,
 
-    /// Write the shift factors a_T against T with the fitted law (SVG) to FILE.
+    /// Write the shift factors a_T against T with the fitted law (SVG, PNG or PDF) to FILE.
     #[arg(long, value_name = "FILE.svg|png|pdf")]
     pub plot_shift: Option<PathBuf>,
 }

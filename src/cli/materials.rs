@@ -159,7 +159,7 @@ pub struct CurveArgs {
     #[arg(short, long, value_name = "FILE")]
     pub output: Option<PathBuf>,
 
-    /// Also write an SVG chart of E(t), 1/J(t), E′ and E″ at ω = 1/t.
+    /// Also write a chart of E(t), 1/J(t), E′ and E″ at ω = 1/t (SVG, PNG or PDF).
     #[arg(long, value_name = "FILE.svg|png|pdf")]
     pub plot: Option<PathBuf>,
 }

@@ -53,9 +53,10 @@ pub struct RunArgs {
     #[arg(long, value_name = "FILE.json")]
     pub summary: Option<PathBuf>,
 
-    /// Write the chart of the run to FILE (SVG): leak rate (clipped at the floor, with the
-    /// leak-rate threshold), sealing force (with the retained-force threshold) and temperature
-    /// against time in h, days or years, the failure marked.
+    /// Write the chart of the run to FILE (SVG, PNG or PDF by its extension): leak rate (clipped
+    /// at the floor, with the leak-rate threshold; a gas's interface, permeation and total),
+    /// sealing force (with the retained-force threshold) and temperature against time in h, days
+    /// or years, the failure marked.
     #[arg(long, value_name = "FILE.svg|png|pdf")]
     pub plot: Option<PathBuf>,
 

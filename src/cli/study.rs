@@ -75,11 +75,11 @@ pub struct SummaryOutputs {
     #[arg(long, value_name = "FILE.json")]
     pub summary: Option<PathBuf>,
 
-    /// Write the survival curve (Kaplan–Meier with its band, the Weibull fit) to FILE (SVG).
+    /// Write the survival curve (Kaplan–Meier with its band, the Weibull fit) to FILE (SVG, PNG or PDF).
     #[arg(long, value_name = "FILE.svg|png|pdf")]
     pub survival_plot: Option<PathBuf>,
 
-    /// Write the tornado chart of the inputs' influence on the life to FILE (SVG).
+    /// Write the tornado chart of the inputs' influence on the life to FILE (SVG, PNG or PDF).
     #[arg(long, value_name = "FILE.svg|png|pdf")]
     pub tornado_plot: Option<PathBuf>,
 

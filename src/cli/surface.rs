@@ -56,7 +56,7 @@ pub struct SurfaceArgs {
     #[arg(long)]
     pub json: bool,
 
-    /// Write the C(q) chart (SVG) to FILE.
+    /// Write the C(q) chart (SVG, PNG or PDF) to FILE.
     #[arg(long, value_name = "FILE.svg|png|pdf")]
     pub plot: Option<PathBuf>,
 

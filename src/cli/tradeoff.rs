@@ -29,7 +29,7 @@ pub struct TradeoffArgs {
     #[arg(short, long, value_name = "FILE.csv")]
     pub output: Option<PathBuf>,
 
-    /// Write the error-against-time chart (log–log SVG) to FILE.
+    /// Write the error-against-time chart (log–log; SVG, PNG or PDF) to FILE.
     #[arg(long, value_name = "FILE.svg|png|pdf")]
     pub plot: Option<PathBuf>,
 

@@ -39,6 +39,8 @@ figure.plot { margin: 1em 0; }
 figure.plot svg { max-width: 100%; height: auto; border: 1px solid #eee; }
 figcaption { color: #444; font-size: 0.9em; margin-top: 0.3em; }
 ul.warnings li { margin-bottom: 0.3em; }
+table.record { width: 100%; table-layout: fixed; }
+table.record th { width: 28%; }
 table.record td.hash { font-family: ui-monospace, 'DejaVu Sans Mono', monospace; font-size: 0.85em;
        word-break: break-all; }
 @media print {
@@ -49,7 +51,7 @@ table.record td.hash { font-family: ui-monospace, 'DejaVu Sans Mono', monospace;
   figure.plot { break-inside: avoid; }
   figure.plot svg { width: 100%; max-height: 240mm; border: none; }
   pre { white-space: pre-wrap; word-break: break-all; overflow: visible; }
-  table, tr, .verdict { break-inside: avoid; }
+  tr, .verdict { break-inside: avoid; }
   a { color: inherit; text-decoration: none; }
 }
 ";

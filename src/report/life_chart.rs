@@ -709,3 +709,21 @@ pub fn compare_chart(
     }
     Ok(svg)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::on_line;
+
+    /// A mark at x sits on the polyline as drawn on a log-x axis: halfway in log x between
+    /// 1 and 100 (x = 10) is halfway in y; the ends hold beyond the line.
+    #[test]
+    fn a_mark_is_placed_on_the_line_as_drawn() {
+        let line = [(1.0, 0.0), (100.0, 2.0), (1000.0, 5.0)];
+        assert!((on_line(&line, 10.0) - 1.0).abs() < 1e-12);
+        assert!((on_line(&line, 100.0) - 2.0).abs() < 1e-12);
+        assert!((on_line(&line, 10f64.powf(2.5)) - 3.5).abs() < 1e-12);
+        assert_eq!(on_line(&line, 0.5), 0.0);
+        assert_eq!(on_line(&line, 5000.0), 5.0);
+        assert_eq!(on_line(&[], 1.0), 0.0);
+    }
+}
