@@ -52,8 +52,8 @@ pub struct AgeingFitArgs {
     #[arg(short, long, value_name = "FILE")]
     pub output: Option<PathBuf>,
 
-    /// Write the Arrhenius chart (SVG) to FILE.
-    #[arg(long, value_name = "FILE.svg")]
+    /// Write the Arrhenius chart (SVG, PNG or PDF) to FILE.
+    #[arg(long, value_name = "FILE.svg|png|pdf")]
     pub plot: Option<PathBuf>,
 
     /// Write a [material.ageing] table (reference temperature: the service temperature, or
@@ -172,6 +172,7 @@ pub fn run(args: AgeingFitArgs) -> Result<(), CliError> {
         ),
         None => None,
     };
+    let svg = super::plot_file(args.plot.as_deref(), svg.as_deref())?;
     let toml = args.write_material_ageing.as_ref().map(|_| {
         let reference = service_temperature
             .unwrap_or_else(|| usable.iter().map(|p| p.0).fold(f64::INFINITY, f64::min));
@@ -187,7 +188,7 @@ pub fn run(args: AgeingFitArgs) -> Result<(), CliError> {
         )
     });
     if let (Some(path), Some(svg)) = (&args.plot, &svg) {
-        write_output(Some(path), svg.as_bytes())?;
+        write_output(Some(path), svg)?;
     }
     if let (Some(path), Some(toml)) = (&args.write_material_ageing, &toml) {
         write_output(Some(path), toml.as_bytes())?;

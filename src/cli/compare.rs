@@ -54,8 +54,8 @@ pub struct CompareArgs {
     #[arg(long, value_name = "FILE.json")]
     pub summary: Option<PathBuf>,
 
-    /// Write an overlay chart of the leak-rate histories to FILE (SVG).
-    #[arg(long, value_name = "FILE.svg")]
+    /// Write an overlay chart of the leak-rate histories to FILE (SVG, PNG or PDF).
+    #[arg(long, value_name = "FILE.svg|png|pdf")]
     pub plot: Option<PathBuf>,
 
     /// Override the scenario's simulation.fidelity.
@@ -169,6 +169,8 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
         )
     });
 
+    let plot = super::plot_file(args.plot.as_deref(), svg.as_deref())?;
+
     super::print_shared_warnings(runs.iter().map(|(r, _)| (r.label.as_str(), &r.scenario)));
     for (run, _) in &runs {
         print_findings(Some(&run.label), &run.result.findings);
@@ -179,8 +181,8 @@ pub fn run(args: CompareArgs) -> Result<(), CliError> {
     if let (Some(path), Some(json)) = (&args.summary, &json) {
         write_output(Some(path), json.as_bytes())?;
     }
-    if let (Some(path), Some(svg)) = (&args.plot, &svg) {
-        write_output(Some(path), svg.as_bytes())?;
+    if let (Some(path), Some(plot)) = (&args.plot, &plot) {
+        write_output(Some(path), plot)?;
     }
     if let (Some(path), Some(page)) = (&args.report, &page) {
         write_output(Some(path), page.as_bytes())?;
@@ -216,6 +218,16 @@ fn report_page(
         body += "<p class=\"illustrative\">ILLUSTRATIVE material data in at least one compound: \
                  the results show trends, they are not for design decisions.</p>\n";
     }
+    // the scenario and every file a compound's run read (a material file, data), once each
+    let mut inputs: Vec<&std::path::Path> = vec![std::path::Path::new(file)];
+    for (run, _) in runs {
+        for path in &run.scenario.inputs {
+            if !inputs.contains(&path.as_path()) {
+                inputs.push(path);
+            }
+        }
+    }
+    body += &html::record("sealsim compare", &inputs);
     body += &html::heading("Comparison");
     let empty = Vec::new();
     let (header, rest) = cells.split_first().unwrap_or((&empty, &[]));

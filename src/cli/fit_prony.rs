@@ -101,12 +101,12 @@ pub struct TtsArgs {
     #[arg(long, value_name = "T")]
     pub reference_temperature: Option<String>,
 
-    /// Write the shifted data on the master curve (SVG) to FILE.
-    #[arg(long, value_name = "FILE.svg")]
+    /// Write the shifted data on the master curve (SVG, PNG or PDF) to FILE.
+    #[arg(long, value_name = "FILE.svg|png|pdf")]
     pub plot_master: Option<PathBuf>,
 
-    /// Write the shift factors a_T against T with the fitted law (SVG) to FILE.
-    #[arg(long, value_name = "FILE.svg")]
+    /// Write the shift factors a_T against T with the fitted law (SVG, PNG or PDF) to FILE.
+    #[arg(long, value_name = "FILE.svg|png|pdf")]
     pub plot_shift: Option<PathBuf>,
 }
 
@@ -267,13 +267,15 @@ pub fn run(args: FitPronyArgs) -> Result<(), CliError> {
     };
     let master_svg = svg(&args.tts.plot_master, master_chart)?;
     let shift_svg = svg(&args.tts.plot_shift, shift_chart)?;
+    let master_svg = super::plot_file(args.tts.plot_master.as_deref(), master_svg.as_deref())?;
+    let shift_svg = super::plot_file(args.tts.plot_shift.as_deref(), shift_svg.as_deref())?;
     eprint!("{}", summary(&outcome));
     for (path, svg) in [
         (&args.tts.plot_master, &master_svg),
         (&args.tts.plot_shift, &shift_svg),
     ] {
         if let (Some(path), Some(svg)) = (path, svg) {
-            write_output(Some(path), svg.as_bytes())?;
+            write_output(Some(path), svg)?;
         }
     }
     write_output(args.output.as_deref(), text.as_bytes())

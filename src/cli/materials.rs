@@ -159,8 +159,8 @@ pub struct CurveArgs {
     #[arg(short, long, value_name = "FILE")]
     pub output: Option<PathBuf>,
 
-    /// Also write an SVG chart of E(t), 1/J(t), E′ and E″ at ω = 1/t.
-    #[arg(long, value_name = "FILE.svg")]
+    /// Also write a chart of E(t), 1/J(t), E′ and E″ at ω = 1/t (SVG, PNG or PDF).
+    #[arg(long, value_name = "FILE.svg|png|pdf")]
     pub plot: Option<PathBuf>,
 }
 
@@ -426,9 +426,10 @@ fn curve(args: CurveArgs) -> Result<(), CliError> {
         ),
         None => None,
     };
+    let svg = super::plot_file(args.plot.as_deref(), svg.as_deref())?;
     // everything is computed before the first file is written
     if let (Some(path), Some(svg)) = (&args.plot, &svg) {
-        write_output(Some(path), svg.as_bytes())?;
+        write_output(Some(path), svg)?;
     }
     write_output(args.output.as_deref(), csv.as_bytes())
 }

@@ -359,7 +359,7 @@ fn identity(path: &Path) -> std::path::PathBuf {
 fn flag_format(flag: &str) -> Option<&'static [&'static str]> {
     match flag {
         "--plot" | "--plot-master" | "--plot-shift" | "--survival-plot" | "--tornado-plot" => {
-            Some(&["svg"])
+            Some(&report::plot::PLOT_EXTENSIONS)
         }
         "--report" => Some(&["html", "htm"]),
         "--summary" | "--json" => Some(&["json"]),
@@ -378,6 +378,15 @@ pub(crate) fn expect_extension(flag: &str, path: &Path, formats: &[&str]) -> Res
         return Ok(());
     }
     let fixed = path.with_extension(formats[0]);
+    if formats == report::plot::PLOT_EXTENSIONS {
+        // a chart: written in the format its extension names
+        return Err(CliError::Input(format!(
+            "{flag} {}: a chart is written as .svg, .png or .pdf (by the extension), not .{ext}; \
+             name it {}, or .png or .pdf",
+            path.display(),
+            fixed.display()
+        )));
+    }
     Err(CliError::Input(format!(
         "{flag} {}: this output is {} and would not be a .{ext} file; name it {} (other \
          formats are not written: convert the {} file)",
@@ -386,6 +395,20 @@ pub(crate) fn expect_extension(flag: &str, path: &Path, formats: &[&str]) -> Res
         fixed.display(),
         formats[0].to_uppercase()
     )))
+}
+
+/// The bytes of the chart output `path` (`--plot x.png`): `svg` in the format its extension
+/// names, SVG, PNG or PDF ([`report::plot::encode`]); `None` when either is absent.
+pub(crate) fn plot_file(
+    path: Option<&Path>,
+    svg: Option<&str>,
+) -> Result<Option<Vec<u8>>, CliError> {
+    match (path, svg) {
+        (Some(path), Some(svg)) => report::plot::encode_for(path, svg)
+            .map(Some)
+            .map_err(|e| CliError::Internal(e.to_string())),
+        _ => Ok(None),
+    }
 }
 
 /// Refuses, before anything runs, an output that would replace one of `inputs` or another

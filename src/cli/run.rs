@@ -53,10 +53,11 @@ pub struct RunArgs {
     #[arg(long, value_name = "FILE.json")]
     pub summary: Option<PathBuf>,
 
-    /// Write the chart of the run to FILE (SVG): leak rate (clipped at the floor, with the
-    /// leak-rate threshold), sealing force (with the retained-force threshold) and temperature
-    /// against time in h, days or years, the failure marked.
-    #[arg(long, value_name = "FILE.svg")]
+    /// Write the chart of the run to FILE (SVG, PNG or PDF by its extension): leak rate (clipped
+    /// at the floor, with the leak-rate threshold; a gas's interface, permeation and total),
+    /// sealing force (with the retained-force threshold) and temperature against time in h, days
+    /// or years, the failure marked.
+    #[arg(long, value_name = "FILE.svg|png|pdf")]
     pub plot: Option<PathBuf>,
 
     /// Write a self-contained HTML report to FILE: the verdict, the summary, the chart, the
@@ -126,16 +127,18 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
         .as_ref()
         .map(|_| report_page(&scenario, &file, &result, &text, svg.as_deref(), &floor));
 
+    let plot = super::plot_file(args.plot.as_deref(), svg.as_deref())?;
+
     print_scenario_warnings(None, &scenario);
     print_findings(None, &result.findings);
     for (path, bytes) in [
-        (&args.output, csv.as_deref()),
-        (&args.summary, json.as_deref()),
-        (&args.plot, svg.as_deref()),
-        (&args.report, page.as_deref()),
+        (&args.output, csv.as_deref().map(str::as_bytes)),
+        (&args.summary, json.as_deref().map(str::as_bytes)),
+        (&args.plot, plot.as_deref()),
+        (&args.report, page.as_deref().map(str::as_bytes)),
     ] {
         if let (Some(path), Some(bytes)) = (path, bytes) {
-            write_output(Some(path), bytes.as_bytes())?;
+            write_output(Some(path), bytes)?;
         }
     }
     write_output(None, text.as_bytes())?;
@@ -172,6 +175,10 @@ fn report_page(
                  estimated, not measured; the results show trends, they are not for design \
                  decisions.</p>\n";
     }
+    let inputs: Vec<&std::path::Path> = std::iter::once(std::path::Path::new(file))
+        .chain(scenario.inputs.iter().map(std::path::PathBuf::as_path))
+        .collect();
+    body += &html::record("sealsim run", &inputs);
     body += &html::heading("Summary");
     body += &html::summary_table(summary);
     body += &html::paragraph(&format!(

@@ -75,12 +75,12 @@ pub struct SummaryOutputs {
     #[arg(long, value_name = "FILE.json")]
     pub summary: Option<PathBuf>,
 
-    /// Write the survival curve (Kaplan–Meier with its band, the Weibull fit) to FILE (SVG).
-    #[arg(long, value_name = "FILE.svg")]
+    /// Write the survival curve (Kaplan–Meier with its band, the Weibull fit) to FILE (SVG, PNG or PDF).
+    #[arg(long, value_name = "FILE.svg|png|pdf")]
     pub survival_plot: Option<PathBuf>,
 
-    /// Write the tornado chart of the inputs' influence on the life to FILE (SVG).
-    #[arg(long, value_name = "FILE.svg")]
+    /// Write the tornado chart of the inputs' influence on the life to FILE (SVG, PNG or PDF).
+    #[arg(long, value_name = "FILE.svg|png|pdf")]
     pub tornado_plot: Option<PathBuf>,
 
     /// Write a self-contained HTML report to FILE: the summary, the survival curve, the
@@ -281,15 +281,23 @@ fn finish(
             tornado.as_deref(),
         )
     });
+    let survival_file = super::plot_file(outputs.survival_plot.as_deref(), survival.as_deref())?;
+    let tornado_file = super::plot_file(outputs.tornado_plot.as_deref(), tornado.as_deref())?;
     for (path, bytes) in [
-        (table, csv.as_deref()),
-        (outputs.summary.as_deref(), json.as_deref()),
-        (outputs.survival_plot.as_deref(), survival.as_deref()),
-        (outputs.tornado_plot.as_deref(), tornado.as_deref()),
-        (outputs.report.as_deref(), page.as_deref()),
+        (table, csv.as_deref().map(str::as_bytes)),
+        (
+            outputs.summary.as_deref(),
+            json.as_deref().map(str::as_bytes),
+        ),
+        (outputs.survival_plot.as_deref(), survival_file.as_deref()),
+        (outputs.tornado_plot.as_deref(), tornado_file.as_deref()),
+        (
+            outputs.report.as_deref(),
+            page.as_deref().map(str::as_bytes),
+        ),
     ] {
         if let (Some(path), Some(bytes)) = (path, bytes) {
-            write_output(Some(path), bytes.as_bytes())?;
+            write_output(Some(path), bytes)?;
         }
     }
     write_output(None, text.as_bytes())

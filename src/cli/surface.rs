@@ -56,8 +56,8 @@ pub struct SurfaceArgs {
     #[arg(long)]
     pub json: bool,
 
-    /// Write the C(q) chart (SVG) to FILE.
-    #[arg(long, value_name = "FILE.svg")]
+    /// Write the C(q) chart (SVG, PNG or PDF) to FILE.
+    #[arg(long, value_name = "FILE.svg|png|pdf")]
     pub plot: Option<PathBuf>,
 
     /// Write the summary to FILE (atomically) instead of standard output.
@@ -121,8 +121,11 @@ pub fn run(args: SurfaceArgs) -> Result<(), CliError> {
                 .map_err(|e| CliError::Internal(e.to_string()))
         })
         .transpose()?;
-    if let (Some(path), Some(svg)) = (&args.plot, &svg) {
-        write_output(Some(path), svg.as_bytes())?;
+    if let (Some(path), Some(plot)) = (
+        &args.plot,
+        super::plot_file(args.plot.as_deref(), svg.as_deref())?,
+    ) {
+        write_output(Some(path), &plot)?;
     }
     write_output(args.output.as_deref(), main.as_bytes())
 }

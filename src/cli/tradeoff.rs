@@ -29,8 +29,8 @@ pub struct TradeoffArgs {
     #[arg(short, long, value_name = "FILE.csv")]
     pub output: Option<PathBuf>,
 
-    /// Write the error-against-time chart (log–log SVG) to FILE.
-    #[arg(long, value_name = "FILE.svg")]
+    /// Write the error-against-time chart (log–log; SVG, PNG or PDF) to FILE.
+    #[arg(long, value_name = "FILE.svg|png|pdf")]
     pub plot: Option<PathBuf>,
 
     /// Band q1/q0 resolved by the numerical level (default: the scenario's numerical.band, 32).
@@ -125,13 +125,14 @@ pub fn run(args: TradeoffArgs) -> Result<(), CliError> {
         );
         html::document(&format!("{}: speed against accuracy", scenario.name), &body)
     });
+    let plot = super::plot_file(args.plot.as_deref(), svg.as_deref())?;
     for (path, bytes) in [
-        (&args.output, csv.as_deref()),
-        (&args.plot, svg.as_deref()),
-        (&args.report, page.as_deref()),
+        (&args.output, csv.as_deref().map(str::as_bytes)),
+        (&args.plot, plot.as_deref()),
+        (&args.report, page.as_deref().map(str::as_bytes)),
     ] {
         if let (Some(path), Some(bytes)) = (path, bytes) {
-            write_output(Some(path), bytes.as_bytes())?;
+            write_output(Some(path), bytes)?;
         }
     }
     print_scenario_warnings(None, &scenario);

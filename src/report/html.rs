@@ -39,6 +39,21 @@ figure.plot { margin: 1em 0; }
 figure.plot svg { max-width: 100%; height: auto; border: 1px solid #eee; }
 figcaption { color: #444; font-size: 0.9em; margin-top: 0.3em; }
 ul.warnings li { margin-bottom: 0.3em; }
+table.record { width: 100%; table-layout: fixed; }
+table.record th { width: 28%; }
+table.record td.hash { font-family: ui-monospace, 'DejaVu Sans Mono', monospace; font-size: 0.85em;
+       word-break: break-all; }
+@media print {
+  @page { size: A4; margin: 14mm 12mm; }
+  body { max-width: none; margin: 0; padding: 0; font-size: 9.5pt; }
+  h2 { break-after: avoid; }
+  h2:has(+ figure.plot) { break-before: page; }
+  figure.plot { break-inside: avoid; }
+  figure.plot svg { width: 100%; max-height: 240mm; border: none; }
+  pre { white-space: pre-wrap; word-break: break-all; overflow: visible; }
+  tr, .verdict { break-inside: avoid; }
+  a { color: inherit; text-decoration: none; }
+}
 ";
 
 /// A whole page: `title` and the body's HTML.
@@ -53,6 +68,93 @@ pub fn document(title: &str, body: &str) -> String {
         escape(title),
         env!("CARGO_PKG_VERSION"),
     )
+}
+
+/// The sealsim commit the binary was built from (build.rs: `git rev-parse HEAD`, or
+/// `SEALSIM_COMMIT`), or "unknown" (built outside a git checkout).
+pub fn commit() -> &'static str {
+    option_env!("SEALSIM_GIT_COMMIT").unwrap_or("unknown")
+}
+
+/// The time a report is written, as UTC ISO 8601 (`2026-11-29T10:29:09Z`): `SOURCE_DATE_EPOCH`
+/// (seconds since 1970, the reproducible-builds convention) when set to an integer, else the
+/// clock.
+pub fn report_date() -> String {
+    let seconds = std::env::var("SOURCE_DATE_EPOCH")
+        .ok()
+        .and_then(|s| s.trim().parse::<i64>().ok())
+        .unwrap_or_else(|| {
+            std::time::SystemTime::now()
+                .duration_since(std::time::UNIX_EPOCH)
+                .map_or(0, |d| i64::try_from(d.as_secs()).unwrap_or(i64::MAX))
+        });
+    iso_8601(seconds)
+}
+
+/// `seconds` since 1970-01-01T00:00:00Z as `YYYY-MM-DDThh:mm:ssZ` (proleptic Gregorian; the
+/// days-to-civil algorithm of H. Hinnant, "chrono-Compatible Low-Level Date Algorithms").
+pub fn iso_8601(seconds: i64) -> String {
+    let (days, second) = (seconds.div_euclid(86_400), seconds.rem_euclid(86_400));
+    let z = days + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z - era * 146_097; // [0, 146096]
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365; // [0, 399]
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100); // [0, 365]
+    let mp = (5 * doy + 2) / 153; // [0, 11], March first
+    let day = doy - (153 * mp + 2) / 5 + 1;
+    let month = if mp < 10 { mp + 3 } else { mp - 9 };
+    let year = yoe + era * 400 + i64::from(month <= 2);
+    format!(
+        "{year:04}-{month:02}-{day:02}T{:02}:{:02}:{:02}Z",
+        second / 3600,
+        second % 3600 / 60,
+        second % 60
+    )
+}
+
+/// The SHA-256 of `bytes` as 64 lower-case hex digits (FIPS 180-4).
+pub fn sha256_hex(bytes: &[u8]) -> String {
+    use sha2::Digest;
+    sha2::Sha256::digest(bytes)
+        .iter()
+        .map(|b| format!("{b:02x}"))
+        .collect()
+}
+
+/// The "Record" of a report, for filing it: when it was written (UTC), by which sealsim
+/// (version and commit) and from which input files, each with its SHA-256 (read now; a file
+/// that cannot be read says why).
+pub fn record(command: &str, inputs: &[&std::path::Path]) -> String {
+    let mut out = String::from("<table class=\"record\">\n");
+    let row = |name: &str, value: &str, class: &str| {
+        format!(
+            "<tr><th>{}</th><td{class}>{}</td></tr>\n",
+            escape(name),
+            escape(value)
+        )
+    };
+    out += &row("written (UTC)", &report_date(), "");
+    out += &row(
+        "by",
+        &format!(
+            "sealsim {} (commit {}), {command}",
+            env!("CARGO_PKG_VERSION"),
+            commit()
+        ),
+        "",
+    );
+    for path in inputs {
+        let hash = match std::fs::read(path) {
+            Ok(bytes) => format!("SHA-256 {}", sha256_hex(&bytes)),
+            Err(e) => format!("not readable now: {e}"),
+        };
+        out += &row(
+            &format!("input {}", path.display()),
+            &hash,
+            " class=\"hash\"",
+        );
+    }
+    heading("Record") + &out + "</table>\n"
 }
 
 /// A section heading.
@@ -210,5 +312,32 @@ mod tests {
         let page = document("t", &f);
         assert!(!page.contains("<script"));
         assert!(!page.contains("http://") && !page.contains("https://"));
+    }
+
+    /// Dates against the calendar: the epoch, a leap day, the turn of 2000 (a leap year by the
+    /// 400 rule), the day before the epoch and 2100-03-01 (2100 is not leap).
+    #[test]
+    fn dates_are_utc_iso_8601() {
+        assert_eq!(iso_8601(0), "1970-01-01T00:00:00Z");
+        assert_eq!(iso_8601(951_782_400), "2000-02-29T00:00:00Z");
+        assert_eq!(iso_8601(946_684_799), "1999-12-31T23:59:59Z");
+        assert_eq!(iso_8601(-1), "1969-12-31T23:59:59Z");
+        // 2100 is not leap: 28 February is followed by 1 March
+        assert_eq!(iso_8601(4_107_456_000), "2100-02-28T00:00:00Z");
+        assert_eq!(iso_8601(4_107_542_400), "2100-03-01T00:00:00Z");
+        assert_eq!(iso_8601(1_795_944_549), "2026-11-29T09:29:09Z");
+    }
+
+    /// The FIPS 180-2 example digests of "" and "abc".
+    #[test]
+    fn sha256_matches_the_standard_examples() {
+        assert_eq!(
+            sha256_hex(b""),
+            "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855"
+        );
+        assert_eq!(
+            sha256_hex(b"abc"),
+            "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad"
+        );
     }
 }

@@ -58,14 +58,16 @@ fn decade_label(v: &f64) -> String {
     }
 }
 
-/// The floor as a grey dashed line across `x_lo..x_hi`, labelled `label`.
+/// The floor as a grey dashed line across `x_lo..x_hi` at log10 `y`, labelled with its value
+/// `shown` (in the panel's unit) and `label`.
 fn floor_line(
     chart: &mut Panel<'_, '_>,
     (x_lo, x_hi): (f64, f64),
+    y: f64,
+    shown: &str,
     floor: &LeakFloor,
     label: &str,
 ) -> Result<(), PlotError> {
-    let y = floor.rate.log10();
     chart
         .draw_series(DashedLineSeries::new(
             vec![(x_lo, y), (x_hi, y)],
@@ -74,11 +76,7 @@ fn floor_line(
             GREY.stroke_width(1),
         ))
         .map_err(err)?
-        .label(format!(
-            "floor {} m³/s ({}){label}",
-            human(floor.rate, 2),
-            floor.meaning()
-        ))
+        .label(format!("floor {shown} ({}){label}", floor.meaning()))
         .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], GREY.stroke_width(1)));
     Ok(())
 }
@@ -155,8 +153,49 @@ type Points = Vec<(f64, f64)>;
 /// One panel's drawing area.
 type Area<'b> = DrawingArea<SVGBackend<'b>, plotters::coord::Shift>;
 
+/// The leak panel's unit: a liquid's volume flow \[m³/s\]; a gas's throughput \[Pa·m³/s\], the
+/// volume flow at the mean pressure p̄ times p̄ (docs/model.md §13.7), the quantity its
+/// `max_leak_rate` is given and compared in (interface + permeation).
+struct LeakUnit {
+    /// Multiplies a volume flow \[m³/s\] into the panel's unit: p̄ for a gas, 1 for a liquid.
+    scale: f64,
+    gas: bool,
+}
+
+impl LeakUnit {
+    fn of(problem: &LifeProblem) -> LeakUnit {
+        match (problem.fluid.gas, problem.fluid.mean_pressure()) {
+            (Some(_), Some(p)) if p > 0.0 => LeakUnit {
+                scale: p,
+                gas: true,
+            },
+            _ => LeakUnit {
+                scale: 1.0,
+                gas: false,
+            },
+        }
+    }
+
+    /// `v` in the panel's unit to `digits` significant digits, with its unit (and mbar·L/s
+    /// beside Pa·m³/s: 1 Pa·m³/s = 10 mbar·L/s).
+    fn show(&self, v: f64, digits: usize) -> String {
+        if self.gas {
+            format!(
+                "{} Pa·m³/s ({} mbar·L/s)",
+                human(v, digits),
+                human(10.0 * v, digits)
+            )
+        } else {
+            format!("{} m³/s", human(v, digits))
+        }
+    }
+}
+
 /// Panel 1, the leak rate: log10 of the rate, never below the floor; the floor and the
-/// leak-rate threshold dashed, lift-off shaded, the failure marked.
+/// leak-rate threshold dashed, lift-off shaded, the failure marked on the curve the criterion
+/// compares. For a gas the throughput \[Pa·m³/s\] through the interface, by permeation
+/// through the rubber and their total (what a leak detector sees and `max_leak_rate` is
+/// compared with, docs/model.md §13.7), the threshold on the same axis.
 fn leak_panel(
     area: &Area<'_>,
     axis: &TimeAxis,
@@ -166,14 +205,23 @@ fn leak_panel(
 ) -> Result<(), PlotError> {
     let (rows, failure) = (&result.rows, result.failure);
     let (unit, x_lo, x_hi, x_label) = (axis.unit, axis.x_lo, axis.x_hi, &axis.label);
-    let y_lo = leak_axis_bottom(floor);
-    let clip = |q: f64| q.max(floor.rate).log10();
-    let threshold = problem.failure.max_leak_rate;
+    let leak = LeakUnit::of(problem);
+    let floor_value = floor.rate * leak.scale;
+    let y_lo = floor_value.log10().floor();
+    let clip = |q: f64| q.max(floor_value).log10();
+    let mean_pressure = leak.gas.then_some(leak.scale);
+    // the panel's quantities of a row, in its unit: interface, permeation (a gas with
+    // permeation data) and their total
+    let interface = |r: &crate::simulate::HistoryRow| r.leak_rate * leak.scale;
+    let permeation = |r: &crate::simulate::HistoryRow| r.permeation.filter(|_| leak.gas);
+    let total = |r: &crate::simulate::HistoryRow| r.detected_leak_rate(mean_pressure) * leak.scale;
+    let permeates = rows.iter().any(|r| permeation(r).is_some());
+    let threshold = problem.failure.max_leak_rate.map(|q| q * leak.scale);
     let top = rows
         .iter()
-        .map(|r| r.leak_rate)
+        .map(total)
         .chain(threshold)
-        .fold(floor.rate * 10.0, f64::max);
+        .fold(floor_value * 10.0, f64::max);
     let y_hi = top.log10().ceil() + 0.5;
     let all_sealed = rows.iter().all(|r| floor.seals(r.leak_rate));
     let mut chart = ChartBuilder::on(area)
@@ -186,7 +234,11 @@ fn leak_panel(
         .configure_mesh()
         .x_desc(x_label)
         .x_label_formatter(&|v| human(*v, 2))
-        .y_desc("leak rate [m³/s]")
+        .y_desc(if leak.gas {
+            "throughput [Pa·m³/s] (×10: mbar·L/s)"
+        } else {
+            "leak rate [m³/s]"
+        })
         .y_label_formatter(&decade_label)
         .draw()
         .map_err(err)?;
@@ -204,21 +256,50 @@ fn leak_panel(
                 .map(|&(a, b)| Rectangle::new([(a, y_lo), (b, y_hi)], ORANGE.mix(0.15).filled())),
         )
         .map_err(err)?;
-    let points: Vec<(f64, f64)> = rows
-        .iter()
-        .filter(|r| r.time > 0.0)
-        .map(|r| (r.time / unit, clip(r.leak_rate)))
-        .collect();
+    let line = |value: &dyn Fn(&crate::simulate::HistoryRow) -> f64| -> Points {
+        rows.iter()
+            .filter(|r| r.time > 0.0)
+            .map(|r| (r.time / unit, clip(value(r))))
+            .collect()
+    };
+    if permeates {
+        // the total first and widest, so that the part it shares with either term shows
+        chart
+            .draw_series(LineSeries::new(line(&total), BLACK.stroke_width(4)))
+            .map_err(err)?
+            .label("total: interface + permeation (what max_leak_rate is compared with)")
+            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLACK.stroke_width(4)));
+        chart
+            .draw_series(LineSeries::new(
+                line(&|r| permeation(r).unwrap_or(0.0)),
+                GREEN.stroke_width(2),
+            ))
+            .map_err(err)?
+            .label("permeation through the rubber")
+            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], GREEN.stroke_width(2)));
+    }
+    let name = match (leak.gas, permeates) {
+        (true, true) => "interface (through the contact)",
+        (true, false) => "throughput through the interface",
+        (false, _) => "leak rate",
+    };
     chart
-        .draw_series(LineSeries::new(points, BLUE.stroke_width(2)))
+        .draw_series(LineSeries::new(line(&interface), BLUE.stroke_width(2)))
         .map_err(err)?
         .label(if all_sealed {
-            format!("leak rate: {}", floor.sealed())
+            format!("{name}: {}", floor.sealed())
         } else {
-            "leak rate".to_owned()
+            name.to_owned()
         })
         .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLUE.stroke_width(2)));
-    floor_line(&mut chart, (x_lo, x_hi), floor, ": below it reads sealed")?;
+    floor_line(
+        &mut chart,
+        (x_lo, x_hi),
+        clip(floor_value),
+        &leak.show(floor_value, 2),
+        floor,
+        ": below it reads sealed",
+    )?;
     if let Some(q) = threshold {
         chart
             .draw_series(DashedLineSeries::new(
@@ -228,7 +309,7 @@ fn leak_panel(
                 VERMILLION.stroke_width(2),
             ))
             .map_err(err)?
-            .label(format!("max_leak_rate {} m³/s", human(q, 3)))
+            .label(format!("max_leak_rate {}", leak.show(q, 3)))
             .legend(|(x, y)| {
                 PathElement::new(vec![(x, y), (x + 20, y)], VERMILLION.stroke_width(2))
             });
@@ -242,12 +323,18 @@ fn leak_panel(
                 Rectangle::new([(x, y - 5), (x + 20, y + 5)], ORANGE.mix(0.3).filled())
             });
     }
-    if let Some(f) = failure {
-        let q = result.leak_rate_at(f.time).unwrap_or(0.0);
-        let x = (f.time / unit).clamp(x_lo, x_hi);
+    // on the total: the curve the leak-rate criterion crosses (the interface for a liquid)
+    let mark = failure.map(|f| {
+        let q = result
+            .detected_leak_rate_at(f.time, mean_pressure)
+            .unwrap_or(0.0)
+            * leak.scale;
+        ((f.time / unit).clamp(x_lo, x_hi), clip(q))
+    });
+    if let (Some(f), Some(at)) = (failure, mark) {
         chart
             .draw_series(std::iter::once(Cross::new(
-                (x, clip(q)),
+                at,
                 8,
                 VERMILLION.stroke_width(3),
             )))
@@ -259,7 +346,18 @@ fn leak_panel(
             ))
             .legend(|(x, y)| Cross::new((x + 10, y), 6, VERMILLION.stroke_width(3)));
     }
-    legend(&mut chart, SeriesLabelPosition::UpperLeft)
+    legend(&mut chart, SeriesLabelPosition::UpperLeft)?;
+    // the mark again over the legend box, which may cover it
+    if let Some(at) = mark {
+        chart
+            .draw_series(std::iter::once(Cross::new(
+                at,
+                8,
+                VERMILLION.stroke_width(3),
+            )))
+            .map_err(err)?;
+    }
+    Ok(())
 }
 
 /// Panel 2, the sealing force \[N/mm\]: the retained-force threshold dashed, the compression
@@ -309,13 +407,18 @@ fn force_panel(
             .draw()
             .map_err(err)?;
         chart
-            .draw_secondary_series(DashedLineSeries::new(set, 2, 3, GREY.stroke_width(2)))
+            .draw_secondary_series(DashedLineSeries::new(
+                set.clone(),
+                2,
+                3,
+                GREY.stroke_width(2),
+            ))
             .map_err(err)?
             .label("compression set (right axis)")
             .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], GREY.stroke_width(2)));
     }
     chart
-        .draw_series(LineSeries::new(force, GREEN.stroke_width(2)))
+        .draw_series(LineSeries::new(force.clone(), GREEN.stroke_width(2)))
         .map_err(err)?
         .label("sealing force per unit length")
         .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], GREEN.stroke_width(2)));
@@ -338,20 +441,67 @@ fn force_panel(
                 PathElement::new(vec![(x, y), (x + 20, y)], VERMILLION.stroke_width(2))
             });
     }
-    if let Some(f) = failure {
-        let x = (f.time / unit).clamp(x_lo, x_hi);
-        let k = rows
-            .partition_point(|r| r.time < f.time)
-            .min(rows.len() - 1);
+    if let Some(c) = problem.failure.min_sealing_force {
         chart
-            .draw_series(std::iter::once(Cross::new(
-                (x, rows[k].sealing_force / 1e3),
+            .draw_series(DashedLineSeries::new(
+                vec![(x_lo, c / 1e3), (x_hi, c / 1e3)],
                 8,
-                VERMILLION.stroke_width(3),
-            )))
-            .map_err(err)?;
+                5,
+                VERMILLION.stroke_width(2),
+            ))
+            .map_err(err)?
+            .label(format!("min_sealing_force {} N/mm", human(c / 1e3, 3)))
+            .legend(|(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], VERMILLION.stroke_width(2))
+            });
+    }
+    if let (Some(c), false) = (problem.failure.max_compression_set, set.is_empty()) {
+        chart
+            .draw_secondary_series(DashedLineSeries::new(
+                vec![(x_lo, 100.0 * c), (x_hi, 100.0 * c)],
+                3,
+                5,
+                VERMILLION.stroke_width(2),
+            ))
+            .map_err(err)?
+            .label(format!(
+                "max_compression_set {} % (right axis)",
+                human(100.0 * c, 3)
+            ))
+            .legend(|(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], VERMILLION.stroke_width(2))
+            });
+    }
+    if let Some(f) = failure {
+        // on the curve of the quantity that failed: the compression set (right axis) for its
+        // criterion, else the sealing force
+        let x = (f.time / unit).clamp(x_lo, x_hi);
+        let cross = |y: f64| std::iter::once(Cross::new((x, y), 8, VERMILLION.stroke_width(3)));
+        if f.mode == crate::simulate::FailureMode::CompressionSet && !set.is_empty() {
+            chart
+                .draw_secondary_series(cross(on_line(&set, x)))
+                .map_err(err)?;
+        } else {
+            chart.draw_series(cross(on_line(&force, x))).map_err(err)?;
+        }
     }
     legend(&mut chart, SeriesLabelPosition::UpperRight)
+}
+
+/// The y of the polyline `points` (x on a log axis, y linear, as the panels draw them) at `x`:
+/// linear in log x between the vertices about it, so a mark drawn there sits on the line; the
+/// end values beyond the ends (0 without points).
+fn on_line(points: &[(f64, f64)], x: f64) -> f64 {
+    let k = points.partition_point(|p| p.0 < x);
+    match (k.checked_sub(1).and_then(|i| points.get(i)), points.get(k)) {
+        (Some(a), Some(b)) if b.0 > a.0 && a.0 > 0.0 => {
+            let w = (x / a.0).ln() / (b.0 / a.0).ln();
+            a.1 + w * (b.1 - a.1)
+        }
+        (_, Some(b)) => b.1,
+        (Some(a), None) => a.1,
+        (None, None) => 0.0,
+    }
 }
 
 /// Panel 3, the temperature \[°C\]: its daily envelope, frozen spans shaded.
@@ -533,7 +683,10 @@ pub fn compare_chart(
                     PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2))
                 });
             if let Some(f) = r.failure {
-                let q = r.leak_rate_at(f.time).unwrap_or(0.0);
+                // on the drawn curve: for a gas interface + permeation, what the criterion compares
+                let q = r
+                    .detected_leak_rate_at(f.time, mean_pressure)
+                    .unwrap_or(0.0);
                 chart
                     .draw_series(std::iter::once(Cross::new(
                         ((f.time / unit).clamp(x_lo, x_hi), clip(q)),
@@ -543,9 +696,34 @@ pub fn compare_chart(
                     .map_err(err)?;
             }
         }
-        floor_line(&mut chart, (x_lo, x_hi), floor, "; crosses: failures")?;
+        floor_line(
+            &mut chart,
+            (x_lo, x_hi),
+            clip(floor.rate),
+            &format!("{} m³/s", human(floor.rate, 2)),
+            floor,
+            "; crosses: failures",
+        )?;
         legend(&mut chart, SeriesLabelPosition::UpperLeft)?;
         root.present().map_err(err)?;
     }
     Ok(svg)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::on_line;
+
+    /// A mark at x sits on the polyline as drawn on a log-x axis: halfway in log x between
+    /// 1 and 100 (x = 10) is halfway in y; the ends hold beyond the line.
+    #[test]
+    fn a_mark_is_placed_on_the_line_as_drawn() {
+        let line = [(1.0, 0.0), (100.0, 2.0), (1000.0, 5.0)];
+        assert!((on_line(&line, 10.0) - 1.0).abs() < 1e-12);
+        assert!((on_line(&line, 100.0) - 2.0).abs() < 1e-12);
+        assert!((on_line(&line, 10f64.powf(2.5)) - 3.5).abs() < 1e-12);
+        assert_eq!(on_line(&line, 0.5), 0.0);
+        assert_eq!(on_line(&line, 5000.0), 5.0);
+        assert_eq!(on_line(&[], 1.0), 0.0);
+    }
 }

@@ -1,7 +1,40 @@
 //! Log–log line charts of one quantity against another, rendered as SVG (plotters) with the
-//! `cli` feature.
+//! `cli` feature; every chart of the command line written as SVG, PNG or PDF by its file's
+//! extension ([`PlotFormat`], [`encode`]).
 
 use std::fmt;
+use std::path::Path;
+
+/// The extensions a chart can be written as, the first the one drawn ([`PlotFormat`]).
+pub const PLOT_EXTENSIONS: [&str; 3] = ["svg", "png", "pdf"];
+
+/// The file format of a chart, chosen by its output's extension.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PlotFormat {
+    /// The drawing itself (plotters' SVG): vector, text as text.
+    Svg,
+    /// A bitmap at [`PNG_SCALE`] pixels per SVG pixel (resvg), text in the embedded font.
+    Png,
+    /// One vector page the size of the chart (svg2pdf), text in the embedded font.
+    Pdf,
+}
+
+/// Pixels of a PNG per pixel of the SVG drawing: 2, so an 800 × 560 chart is 1600 × 1120 and
+/// stays sharp on a printed A4 page at its width (about 190 dpi).
+pub const PNG_SCALE: f32 = 2.0;
+
+impl PlotFormat {
+    /// The format `path` names by its extension (any case); SVG without one (a device such as
+    /// `/dev/stdout`, a pipe) or with another (the command line refuses those before it runs:
+    /// `cli::expect_extension` with [`PLOT_EXTENSIONS`]).
+    pub fn of(path: &Path) -> PlotFormat {
+        match path.extension().and_then(std::ffi::OsStr::to_str) {
+            Some(e) if e.eq_ignore_ascii_case("png") => PlotFormat::Png,
+            Some(e) if e.eq_ignore_ascii_case("pdf") => PlotFormat::Pdf,
+            _ => PlotFormat::Svg,
+        }
+    }
+}
 
 /// One labelled curve; points with non-positive or non-finite coordinates are not drawn
 /// (on log axes they do not exist — e.g. a sealed state with zero leak rate).
@@ -246,6 +279,71 @@ pub(crate) mod svg {
     }
 }
 
+/// `svg` (a chart drawn by plotters) as the bytes of `format`: the text itself for SVG; for PNG
+/// and PDF parsed by usvg with DejaVu Sans as every family (embedded in the binary: no system
+/// font is read, so the output is the same on every machine), then rasterised by resvg
+/// ([`PNG_SCALE`]) or converted by svg2pdf (one page of the drawing's size at 72 dpi: 800 SVG
+/// pixels are 800 pt, 282 mm).
+#[cfg(feature = "cli")]
+pub fn encode(svg: &str, format: PlotFormat) -> Result<Vec<u8>, PlotError> {
+    use resvg::{tiny_skia, usvg};
+    if format == PlotFormat::Svg {
+        return Ok(svg.as_bytes().to_vec());
+    }
+    let mut options = usvg::Options {
+        font_family: "DejaVu Sans".to_owned(),
+        ..usvg::Options::default()
+    };
+    {
+        let fonts = options.fontdb_mut();
+        for face in [
+            dejavu::sans::regular(),
+            dejavu::sans::bold(),
+            dejavu::sans::oblique(),
+        ] {
+            fonts.load_font_source(usvg::fontdb::Source::Binary(std::sync::Arc::new(face)));
+        }
+        // plotters writes `font-family="sans-serif"` (and a caller may name serif/monospace)
+        fonts.set_sans_serif_family("DejaVu Sans");
+        fonts.set_serif_family("DejaVu Sans");
+        fonts.set_monospace_family("DejaVu Sans");
+    }
+    let tree = usvg::Tree::from_str(svg, &options)
+        .map_err(|e| PlotError(format!("the chart's SVG could not be read: {e}")))?;
+    match format {
+        PlotFormat::Svg => Ok(svg.as_bytes().to_vec()),
+        PlotFormat::Png => {
+            let size = tree
+                .size()
+                .to_int_size()
+                .scale_by(PNG_SCALE)
+                .ok_or_else(|| PlotError("the chart is too large to draw as a PNG".to_owned()))?;
+            let mut pixmap = tiny_skia::Pixmap::new(size.width(), size.height())
+                .ok_or_else(|| PlotError("the chart has no area to draw".to_owned()))?;
+            resvg::render(
+                &tree,
+                tiny_skia::Transform::from_scale(PNG_SCALE, PNG_SCALE),
+                &mut pixmap.as_mut(),
+            );
+            pixmap
+                .encode_png()
+                .map_err(|e| PlotError(format!("PNG encoding failed: {e}")))
+        }
+        PlotFormat::Pdf => svg2pdf::to_pdf(
+            &tree,
+            svg2pdf::ConversionOptions::default(),
+            svg2pdf::PageOptions::default(),
+        )
+        .map_err(|e| PlotError(format!("PDF conversion failed: {e}"))),
+    }
+}
+
+/// [`encode`] in the format `path` names ([`PlotFormat::of`]).
+#[cfg(feature = "cli")]
+pub fn encode_for(path: &Path, svg: &str) -> Result<Vec<u8>, PlotError> {
+    encode(svg, PlotFormat::of(path))
+}
+
 #[cfg(all(test, feature = "cli"))]
 mod tests {
     use super::*;
@@ -281,5 +379,76 @@ mod tests {
             series: vec![],
         };
         assert!(chart.to_svg().is_err());
+    }
+
+    fn chart(title: &str, label: &str) -> LogLogChart {
+        LogLogChart {
+            title: title.into(),
+            x_label: label.into(),
+            y_label: label.into(),
+            series: vec![Series {
+                label: label.into(),
+                points: vec![(1.0, 1.0), (10.0, 0.1), (100.0, 3.0)],
+            }],
+        }
+    }
+
+    /// The dark pixels of a PNG (any channel below half): ink, whether lines or glyphs; 0 for
+    /// bytes that do not decode (which the tests' ink bounds then refuse).
+    fn dark_pixels(png: &[u8]) -> usize {
+        let Ok(pixmap) = resvg::tiny_skia::Pixmap::decode_png(png) else {
+            return 0;
+        };
+        pixmap
+            .pixels()
+            .iter()
+            .filter(|p| p.alpha() > 0 && (p.red() < 128 || p.green() < 128 || p.blue() < 128))
+            .count()
+    }
+
+    #[test]
+    fn formats_follow_the_extension_in_any_case() {
+        for (name, format) in [
+            ("a.svg", PlotFormat::Svg),
+            ("a.PNG", PlotFormat::Png),
+            ("dir.x/a.pdf", PlotFormat::Pdf),
+            ("/dev/stdout", PlotFormat::Svg),
+        ] {
+            assert_eq!(PlotFormat::of(Path::new(name)), format, "{name}");
+        }
+    }
+
+    /// A PNG is a PNG of the chart's size × [`PNG_SCALE`], and its text is drawn: the same chart
+    /// with long labels has more ink than with one-letter ones (a missing font draws no glyphs,
+    /// and both would have the same).
+    #[test]
+    fn a_png_is_a_bitmap_of_the_chart_with_its_text() {
+        let short = encode(&chart("t", "a").to_svg().unwrap(), PlotFormat::Png).unwrap();
+        assert!(short.starts_with(b"\x89PNG\r\n\x1a\n"));
+        let pixmap = resvg::tiny_skia::Pixmap::decode_png(&short).unwrap();
+        assert_eq!((pixmap.width(), pixmap.height()), (1600, 1120));
+        let words = "leak rate through the interface and the rubber";
+        let long = encode(&chart(words, words).to_svg().unwrap(), PlotFormat::Png).unwrap();
+        let (ink_short, ink_long) = (dark_pixels(&short), dark_pixels(&long));
+        assert!(ink_short > 1000, "axes and curve drawn: {ink_short}");
+        // four labels of 46 glyphs at 2 × 13–20 px: thousands of dark pixels more
+        assert!(ink_long > ink_short + 5000, "{ink_long} vs {ink_short}");
+    }
+
+    /// A PDF is one page of the chart's size (800 × 560 pt) with its text embedded as a font.
+    #[test]
+    fn a_pdf_is_one_page_with_an_embedded_font() {
+        let pdf = encode(&chart("t", "a").to_svg().unwrap(), PlotFormat::Pdf).unwrap();
+        assert!(pdf.starts_with(b"%PDF-"));
+        let text = String::from_utf8_lossy(&pdf);
+        assert!(text.contains("/MediaBox [0 0 800 560]"), "page size");
+        assert!(text.contains("DejaVu"), "the embedded font is named");
+        assert!(text.trim_end().ends_with("%%EOF"));
+    }
+
+    #[test]
+    fn an_svg_is_the_drawing_itself() {
+        let svg = chart("t", "a").to_svg().unwrap();
+        assert_eq!(encode(&svg, PlotFormat::Svg).unwrap(), svg.as_bytes());
     }
 }

@@ -867,6 +867,17 @@ pub fn report_page(
         ),
     };
     body += &html::verdict("info", &verdict);
+    let inputs: Vec<&std::path::Path> = [study.path.as_path(), study.base_path.as_path()]
+        .into_iter()
+        .chain(
+            study
+                .base_scenario
+                .inputs
+                .iter()
+                .map(std::path::PathBuf::as_path),
+        )
+        .collect();
+    body += &html::record("sealsim study", &inputs);
     body += &html::heading("Summary");
     body += &html::pre(table);
     if let Some(svg) = survival {

@@ -2,7 +2,7 @@
 // Browser check of one self-contained sealsim HTML report (inline CSS, inline <svg> charts,
 // no scripts, no external fonts or images).
 //
-//   node check-report.mjs REPORT.html SCREENSHOT.png [--min-plots N]
+//   node check-report.mjs REPORT.html SCREENSHOT.png [--min-plots N] [--pdf FILE.pdf]
 //
 // Opens REPORT.html as a file:// URL in Debian's headless Chromium (/usr/bin/chromium, or
 // $CHROMIUM) through playwright-core, and fails (exit 1, one "FAIL: ..." line per problem on
@@ -17,13 +17,16 @@
 // Whenever the page loaded it writes a full-page screenshot (viewport 1280 wide) to
 // SCREENSHOT.png, also on failure so the failure can be looked at. On success it prints one
 // JSON line: {"ok":true,"plots":N,"titles":[...],"requests":[...],"title":...,"height":...}.
+// With --pdf it also prints the page as the print stylesheet lays it out (A4, Chromium's
+// Page.printToPDF through page.pdf) to FILE.pdf, as an engineer files it with a design review
+// (issue 42, item 7); shipped-reports.sh then checks what its first page says.
 // Exit codes: 0 passed, 1 check failed, 2 usage error or the browser could not be started.
 import { existsSync, statSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { launchChromium } from './chromium.mjs';
 
-const USAGE = 'usage: node check-report.mjs REPORT.html SCREENSHOT.png [--min-plots N]';
+const USAGE = 'usage: node check-report.mjs REPORT.html SCREENSHOT.png [--min-plots N] [--pdf FILE.pdf]';
 
 function usage(msg) {
   console.error(`check-report: ${msg}\n${USAGE}`);
@@ -33,11 +36,16 @@ function usage(msg) {
 // ---- arguments ---------------------------------------------------------------------------
 const positional = [];
 let minPlots = 1;
+let pdfArg = null;
 const argv = process.argv.slice(2);
 for (let i = 0; i < argv.length; i++) {
   const a = argv[i];
   let value = null;
-  if (a === '--min-plots') {
+  if (a === '--pdf') {
+    if (i + 1 >= argv.length) usage('--pdf needs a file');
+    pdfArg = argv[++i];
+    continue;
+  } else if (a === '--min-plots') {
     if (i + 1 >= argv.length) usage('--min-plots needs a value');
     value = argv[++i];
   } else if (a.startsWith('--min-plots=')) {
@@ -187,6 +195,12 @@ try {
 
   await page.screenshot({ path: screenshotPath, fullPage: true, timeout: 60_000 });
   summary = { ok: true, report: reportArg, plots, titles, requests, title, height, screenshot: screenshotArg };
+  if (pdfArg) {
+    // the report's own @page size (A4) and margins, backgrounds kept (the verdict's colour)
+    await page.emulateMedia({ media: 'print' });
+    await page.pdf({ path: resolve(pdfArg), preferCSSPageSize: true, printBackground: true, timeout: 60_000 });
+    summary.pdf = pdfArg;
+  }
 } catch (e) {
   fail(`browser error: ${e.message.split('\n')[0]}`);
 } finally {

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Browser check of sealsim's self-contained HTML reports in headless Chromium.
 #
-#   tests/browser/check-report.sh [--min-plots N] OUTDIR REPORT.html...
+#   tests/browser/check-report.sh [--min-plots N] [--pdf] OUTDIR REPORT.html...
 #   tests/browser/check-report.sh --book BOOK_DIR OUTDIR PAGE.html...
 #
 # For each REPORT.html (e.g. OUTDIR/../study.html) runs check-report.mjs beside this script, which
@@ -9,7 +9,8 @@
 # data: URI, failed requests, fewer than N `figure.plot svg` (default 1), plots rendered with zero
 # size, and <img>/<script>/<link rel=stylesheet> pointing outside the document; see its header.
 # Writes a full-page screenshot OUTDIR/<report name without .html>.png for each report and prints
-# one JSON summary line per report on stdout. Checks every report, then exits 1 if any failed
+# one JSON summary line per report on stdout; with --pdf also prints each report to
+# OUTDIR/<name>.pdf (A4, the report's print stylesheet). Checks every report, then exits 1 if any failed
 # (2 on a usage error).
 #
 # With --book BOOK_DIR it checks pages of a built mdBook (PAGE paths relative to BOOK_DIR; scripts
@@ -25,19 +26,24 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 
 usage() {
-  echo "usage: $0 [--min-plots N] OUTDIR REPORT.html..." >&2
+  echo "usage: $0 [--min-plots N] [--pdf] OUTDIR REPORT.html..." >&2
   echo "       $0 --book BOOK_DIR OUTDIR PAGE.html..." >&2
   exit 2
 }
 
 node_opts=()
 book=""
+pdf=""
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --min-plots)
       [[ $# -ge 2 ]] || usage
       node_opts+=(--min-plots "$2")
       shift 2
+      ;;
+    --pdf)
+      pdf=1
+      shift
       ;;
     --book)
       [[ $# -ge 2 ]] || usage
@@ -86,7 +92,9 @@ for report in "$@"; do
   name="$(basename "$report")"
   name="${name%.html}"
   name="${name%.htm}"
-  if ! node "$here/check-report.mjs" "$report" "$outdir/$name.png" "${node_opts[@]}"; then
+  pdf_opts=()
+  [[ -n "$pdf" ]] && pdf_opts=(--pdf "$outdir/$name.pdf")
+  if ! node "$here/check-report.mjs" "$report" "$outdir/$name.png" "${node_opts[@]}" "${pdf_opts[@]}"; then
     echo "check-report: FAILED: $report" >&2
     status=1
   fi

@@ -36,6 +36,7 @@ mod levels;
 mod materials;
 mod motion;
 mod new;
+mod plots;
 mod pressure_history;
 mod ranges;
 mod ranking;

@@ -152,7 +152,7 @@ fn output_onto_a_directory_keeps_it_and_removes_the_temporary() {
 #[test]
 fn an_output_named_for_another_format_is_refused_and_nothing_is_written() {
     for (flag, name, wanted) in [
-        ("--plot", "life.png", "life.svg"),
+        ("--plot", "life.xlsx", "life.svg"),
         ("-o", "hist.xlsx", "hist.csv"),
         ("--summary", "s.txt", "s.json"),
         ("--report", "r.pdf", "r.html"),
