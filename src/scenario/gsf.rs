@@ -20,14 +20,15 @@
 //! * the units default to metres and must be lengths (`m`, `um`, `µm`, `nm`, …);
 //! * the pixels must be square (`XReal/XRes = YReal/YRes` within 1e-6, relative): the
 //!   spectrum estimate and the numerical level assume one spacing;
-//! * each side at least 8 pixels, every value finite, and exactly
+//! * each side at least 8 pixels, at most `MAX_PIXELS` (8192²) in all, every value finite
+//!   and within ±10 mm (`MAX_HEIGHT`; FLT_MAX is a no-data marker), and exactly
 //!   `XRes · YRes` values after the padding (a short file is truncated, a longer one is
 //!   refused too: it is not what the header says).
 //!
 //! The file gives the pixel size and the height unit, so a scenario's `pixel_size` and
 //! `height_unit` are refused next to a `.gsf` map.
 
-use super::height_map::{HeightMapError, MIN_SIZE};
+use super::height_map::{HeightMapError, MAX_PIXELS, MIN_SIZE, implausible_height};
 use crate::numerical::Topography;
 use crate::units::{Dimension, parse_unit, show};
 
@@ -102,6 +103,13 @@ pub(super) fn parse(bytes: &[u8]) -> Result<Topography, HeightMapError> {
         }
     };
     let (nx, ny) = (count("XRes")?, count("YRes")?);
+    // checked: a header whose XRes · YRes wraps once passed the size check and panicked
+    let pixels = nx.checked_mul(ny).filter(|&n| n <= MAX_PIXELS).ok_or_else(|| {
+        whole(format!(
+            "XRes × YRes = {nx} × {ny} is more than {MAX_PIXELS} pixels (8192 × 8192), the \
+             largest height map read: the header is corrupt, or crop or resample the map"
+        ))
+    })?;
     let unit = |name: &str| -> Result<f64, HeightMapError> {
         let Some((line, _, value)) = get(name) else {
             return Ok(1.0);
@@ -148,7 +156,7 @@ pub(super) fn parse(bytes: &[u8]) -> Result<Topography, HeightMapError> {
         )));
     }
     let data = &bytes[start..];
-    let expected = nx * ny * 4;
+    let expected = pixels * 4;
     if data.len() != expected {
         return Err(whole(format!(
             "XRes × YRes = {nx} × {ny} needs {expected} bytes of data after the header, found \
@@ -161,12 +169,12 @@ pub(super) fn parse(bytes: &[u8]) -> Result<Topography, HeightMapError> {
             }
         )));
     }
-    let mut heights = Vec::with_capacity(nx * ny);
+    let mut heights = Vec::with_capacity(pixels);
     for (i, chunk) in data.chunks_exact(4).enumerate() {
         let v = f64::from(f32::from_le_bytes([chunk[0], chunk[1], chunk[2], chunk[3]]));
-        if !v.is_finite() {
+        if let Some(why) = implausible_height(v, vertical) {
             return Err(whole(format!(
-                "value {} (row {}, column {}) is not finite",
+                "value {} (row {}, column {}): {why}",
                 i + 1,
                 i / nx + 1,
                 i % nx + 1

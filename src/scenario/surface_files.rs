@@ -15,7 +15,21 @@ pub fn read_psd_file(path: &Path) -> Result<crate::surface::Spectrum, DataFileEr
     };
     let text = read(path).map_err(|e| error(None, e.to_string()))?;
     let (q, c) = psd::parse(&text).map_err(|e| error(e.line, e.message))?;
-    crate::surface::Spectrum::tabulated(&q, &c).map_err(|e| error(None, e.to_string()))
+    let spectrum =
+        crate::surface::Spectrum::tabulated(&q, &c).map_err(|e| error(None, e.to_string()))?;
+    // moments that overflow (a C(q) of 1e308 …) make every later number infinite, as a
+    // scenario's psd_file refuses them (`sealsim surface` once printed "Ra inf µm")
+    let (h_rms, slope) = (spectrum.rms_roughness(), spectrum.rms_slope());
+    if !(h_rms.is_finite() && slope.is_finite()) {
+        return Err(error(
+            None,
+            format!(
+                "the spectrum's moments overflow (h_rms = {h_rms} m, rms slope = {slope}): \
+                 check the values and the units of C(q)"
+            ),
+        ));
+    }
+    Ok(spectrum)
 }
 
 /// Whether `path` names a Gwyddion Simple Field file (extension `.gsf`, any case).

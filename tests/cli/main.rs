@@ -39,6 +39,7 @@ mod new;
 mod pressure_history;
 mod ranges;
 mod ranking;
+mod reader_fuzz;
 mod report;
 mod rubber;
 mod run;
