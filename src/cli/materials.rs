@@ -380,7 +380,12 @@ fn check(args: &CheckArgs) -> Result<(), CliError> {
 
 fn curve(args: CurveArgs) -> Result<(), CliError> {
     super::guard_outputs(
-        &args.material.file.iter().map(PathBuf::as_path).collect::<Vec<_>>(),
+        &args
+            .material
+            .file
+            .iter()
+            .map(PathBuf::as_path)
+            .collect::<Vec<_>>(),
         &[
             ("--output", args.output.as_deref()),
             ("--plot", args.plot.as_deref()),
@@ -470,7 +475,12 @@ fn chart(id: &str, material: &Material, curve: &Curve) -> LogLogChart {
 
 fn export(args: ExportArgs) -> Result<(), CliError> {
     super::guard_outputs(
-        &args.material.file.iter().map(PathBuf::as_path).collect::<Vec<_>>(),
+        &args
+            .material
+            .file
+            .iter()
+            .map(PathBuf::as_path)
+            .collect::<Vec<_>>(),
         &[("--output", args.output.as_deref())],
     )?;
     let (id, material) = resolve(&args.material)?;

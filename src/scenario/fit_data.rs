@@ -1054,6 +1054,22 @@ mod tests {
         assert!(parse_ok("t,F/F0\nh,1\n1,1\n2,0.9\n3,0.8\n", r).points() == 3);
     }
 
+    /// A modulus of 1e200 MPa or 1e-320 MPa (the review's D10) once reached the fitter, whose
+    /// least squares overflowed: exit 1 "not finite". Now refused at its line with the range.
+    #[test]
+    fn moduli_beyond_a_rubbers_are_refused_at_their_line() {
+        for cell in ["1e200", "1e-320"] {
+            let e = error(
+                &format!("t,E_relax\ns,MPa\n1,10\n10,9\n100,8\n1000,7.5\n10000,{cell}\n"),
+                FitKind::Relaxation,
+            );
+            assert!(
+                e.starts_with("d.csv:7: E_relax:") && e.contains("outside 1–1e12 Pa"),
+                "{e}"
+            );
+        }
+    }
+
     #[test]
     fn relaxation_checks() {
         let r = FitKind::Relaxation;

@@ -49,9 +49,34 @@ impl Rng {
 
 /// Cell values a mutation writes: extremes, no-data markers, non-numbers.
 const EXTREMES: &[&str] = &[
-    "0", "-0", "-1", "1e308", "-1e308", "1e-320", "5e-324", "nan", "NaN", "inf", "-inf", "1e400",
-    "3.4028235e38", "-3.4028235e38", "1e38", "1e17", "1e-30", "0x10", "1_000", "", " ", "abc",
-    "١٢", "1e5", "1e-5", "123456789012345678901234567890123456789", "1,2", "\"3\"",
+    "0",
+    "-0",
+    "-1",
+    "1e308",
+    "-1e308",
+    "1e-320",
+    "5e-324",
+    "nan",
+    "NaN",
+    "inf",
+    "-inf",
+    "1e400",
+    "3.4028235e38",
+    "-3.4028235e38",
+    "1e38",
+    "1e17",
+    "1e-30",
+    "0x10",
+    "1_000",
+    "",
+    " ",
+    "abc",
+    "١٢",
+    "1e5",
+    "1e-5",
+    "123456789012345678901234567890123456789",
+    "1,2",
+    "\"3\"",
 ];
 
 /// A text mutation of a CSV file: a cell replaced, lines deleted, duplicated, swapped, the
@@ -132,8 +157,17 @@ fn mutate_gsf(bytes: &[u8], rng: &mut Rng) -> Vec<u8> {
             let header = String::from_utf8_lossy(&out[..header_end]).into_owned();
             let field = *rng.pick(&["XRes", "YRes", "XReal", "YReal", "XYUnits", "ZUnits"]);
             let value = *rng.pick(&[
-                "0", "7", "4294967296", "1073741824", "2305843009213693953",
-                "9223372036854775808", "18446744073709551616", "NaN", "-1", "1e-300", "furlong",
+                "0",
+                "7",
+                "4294967296",
+                "1073741824",
+                "2305843009213693953",
+                "9223372036854775808",
+                "18446744073709551616",
+                "NaN",
+                "-1",
+                "1e-300",
+                "furlong",
             ]);
             let mut lines: Vec<String> = header.lines().map(str::to_owned).collect();
             for line in &mut lines {
@@ -162,6 +196,16 @@ fn mutate_gsf(bytes: &[u8], rng: &mut Rng) -> Vec<u8> {
                     .copy_from_slice(&v.to_le_bytes());
             }
         }
+        4 if rng.below(2) == 0 => {
+            // square pixels and a size whose byte count wraps (the review's D4 header)
+            let header = format!(
+                "{}\nXRes = 4294967296\nYRes = 1073741824\nXReal = 1e-3\nYReal = 0.00025\n",
+                sealsim::scenario::gsf::MAGIC
+            );
+            out = header.into_bytes();
+            let pad = 4 - out.len() % 4;
+            out.extend(std::iter::repeat_n(0u8, pad));
+        }
         4 => out.truncate(rng.below(out.len())),
         _ => out.extend_from_slice(&[0, 0, 0x80, 0x7f]),
     }
@@ -172,7 +216,10 @@ fn mutate_gsf(bytes: &[u8], rng: &mut Rng) -> Vec<u8> {
 #[derive(Clone, Copy, Debug)]
 enum Target {
     /// `sealsim surface FILE` (`pixel`, `unit` for a CSV height map).
-    Surface { pixel: Option<f64>, unit: Option<f64> },
+    Surface {
+        pixel: Option<f64>,
+        unit: Option<f64>,
+    },
     /// A scenario that names the file (`toml` with `{FILE}` for its name) is loaded.
     Scenario(&'static str),
     /// `fit-prony FILE --kind relaxation|dma --like nbr-70` (CSR force needs its ring).
@@ -195,7 +242,10 @@ fn map_csv() -> String {
             (0..32)
                 .map(|x| {
                     let (xf, yf) = (f64::from(x), f64::from(y));
-                    format!("{:.4}", (0.7 * xf).sin() * 0.5 + (1.3 * yf + 0.2 * xf).cos() * 0.3)
+                    format!(
+                        "{:.4}",
+                        (0.7 * xf).sin() * 0.5 + (1.3 * yf + 0.2 * xf).cos() * 0.3
+                    )
                 })
                 .collect::<Vec<_>>()
                 .join(",")
@@ -208,7 +258,11 @@ fn map_csv() -> String {
 fn map_gsf() -> Vec<u8> {
     let heights: Vec<f64> = map_csv()
         .lines()
-        .flat_map(|l| l.split(',').map(|c| c.parse::<f64>().unwrap() * 1e-6).collect::<Vec<_>>())
+        .flat_map(|l| {
+            l.split(',')
+                .map(|c| c.parse::<f64>().unwrap() * 1e-6)
+                .collect::<Vec<_>>()
+        })
         .collect();
     sealsim::scenario::gsf::write(32, 32, 32e-6, 32e-6, &heights)
 }
@@ -324,17 +378,24 @@ fn check(path: &Path, target: Target) -> Result<Option<String>, String> {
     }
 }
 
-/// `Err` when `text` holds a non-finite number (`NaN`, `inf`, or a JSON `null`).
+/// `Err` when `text` holds a non-finite number (`NaN`, `inf`). A JSON `null` is an absent
+/// figure (no Hurst fit, no roll-off): `SurfaceReport::json` refuses a non-finite one.
 fn finite_text(text: &str) -> Result<(), String> {
     let lower = text.to_lowercase();
-    for bad in ["nan", "inf", "null"] {
+    for bad in ["nan", "inf"] {
         if let Some(at) = lower.find(bad) {
             // a word such as "information" is no number
             let next = lower[at + bad.len()..].chars().next();
-            if bad == "inf" && next.is_some_and(char::is_alphabetic) && !lower[at..].starts_with("infinity") {
+            if bad == "inf"
+                && next.is_some_and(char::is_alphabetic)
+                && !lower[at..].starts_with("infinity")
+            {
                 continue;
             }
-            return Err(format!("non-finite output near {:?}", &text[at.saturating_sub(40)..(at + 40).min(text.len())]));
+            return Err(format!(
+                "non-finite output near {:?}",
+                &text[at.saturating_sub(40)..(at + 40).min(text.len())]
+            ));
         }
     }
     Ok(())
@@ -342,22 +403,93 @@ fn finite_text(text: &str) -> Result<(), String> {
 
 fn seeds() -> Vec<Seed> {
     use sealsim::scenario::fit_data::FitKind;
-    let map = Target::Surface { pixel: Some(1e-6), unit: Some(1e-6) };
-    let plain = Target::Surface { pixel: None, unit: None };
+    let map = Target::Surface {
+        pixel: Some(1e-6),
+        unit: Some(1e-6),
+    };
+    let plain = Target::Surface {
+        pixel: None,
+        unit: None,
+    };
     vec![
-        Seed { name: "map.csv", file: "", gsf: false, target: map },
-        Seed { name: "map.csv", file: "", gsf: false, target: Target::Scenario("map") },
-        Seed { name: "map.gsf", file: "", gsf: true, target: plain },
-        Seed { name: "map.gsf", file: "", gsf: true, target: Target::Scenario("map") },
-        Seed { name: "psd.csv", file: "scenarios/psd-example.csv", gsf: false, target: plain },
-        Seed { name: "psd.csv", file: "scenarios/psd-example.csv", gsf: false, target: Target::Scenario("psd") },
-        Seed { name: "trace.csv", file: "scenarios/traces/ground-fine.csv", gsf: false, target: plain },
-        Seed { name: "history.csv", file: "scenarios/cold-night.csv", gsf: false, target: Target::Scenario("history") },
-        Seed { name: "profile.csv", file: "scenarios/hydraulic-rod-seal-profile.csv", gsf: false, target: Target::Scenario("profile") },
-        Seed { name: "csr.csv", file: "scenarios/lab-data/csr-nbr-70c.csv", gsf: false, target: Target::Fit(FitKind::Relaxation, true) },
-        Seed { name: "relax.csv", file: "RELAX", gsf: false, target: Target::Fit(FitKind::Relaxation, false) },
-        Seed { name: "dma.csv", file: "DMA", gsf: false, target: Target::Fit(FitKind::Dma, false) },
-        Seed { name: "ageing.csv", file: "scenarios/lab-data/cs-ageing-nbr.csv", gsf: false, target: Target::Ageing },
+        Seed {
+            name: "map.csv",
+            file: "",
+            gsf: false,
+            target: map,
+        },
+        Seed {
+            name: "map.csv",
+            file: "",
+            gsf: false,
+            target: Target::Scenario("map"),
+        },
+        Seed {
+            name: "map.gsf",
+            file: "",
+            gsf: true,
+            target: plain,
+        },
+        Seed {
+            name: "map.gsf",
+            file: "",
+            gsf: true,
+            target: Target::Scenario("map"),
+        },
+        Seed {
+            name: "psd.csv",
+            file: "scenarios/psd-example.csv",
+            gsf: false,
+            target: plain,
+        },
+        Seed {
+            name: "psd.csv",
+            file: "scenarios/psd-example.csv",
+            gsf: false,
+            target: Target::Scenario("psd"),
+        },
+        Seed {
+            name: "trace.csv",
+            file: "scenarios/traces/ground-fine.csv",
+            gsf: false,
+            target: plain,
+        },
+        Seed {
+            name: "history.csv",
+            file: "scenarios/cold-night.csv",
+            gsf: false,
+            target: Target::Scenario("history"),
+        },
+        Seed {
+            name: "profile.csv",
+            file: "scenarios/hydraulic-rod-seal-profile.csv",
+            gsf: false,
+            target: Target::Scenario("profile"),
+        },
+        Seed {
+            name: "csr.csv",
+            file: "scenarios/lab-data/csr-nbr-70c.csv",
+            gsf: false,
+            target: Target::Fit(FitKind::Relaxation, true),
+        },
+        Seed {
+            name: "relax.csv",
+            file: "RELAX",
+            gsf: false,
+            target: Target::Fit(FitKind::Relaxation, false),
+        },
+        Seed {
+            name: "dma.csv",
+            file: "DMA",
+            gsf: false,
+            target: Target::Fit(FitKind::Dma, false),
+        },
+        Seed {
+            name: "ageing.csv",
+            file: "scenarios/lab-data/cs-ageing-nbr.csv",
+            gsf: false,
+            target: Target::Ageing,
+        },
     ]
 }
 
@@ -397,8 +529,14 @@ fn seed_text(file: &str) -> String {
 fn bounded(path: PathBuf, target: Target) -> Result<Option<String>, String> {
     let (tx, rx) = mpsc::channel();
     std::thread::spawn(move || {
-        let result = std::panic::catch_unwind(|| check(&path, target))
-            .unwrap_or_else(|p| Err(format!("panic: {:?}", p.downcast_ref::<String>().map(String::as_str).or(p.downcast_ref::<&str>().copied()))));
+        let result = std::panic::catch_unwind(|| check(&path, target)).unwrap_or_else(|p| {
+            Err(format!(
+                "panic: {:?}",
+                p.downcast_ref::<String>()
+                    .map(String::as_str)
+                    .or(p.downcast_ref::<&str>().copied())
+            ))
+        });
         let _ = tx.send(result);
     });
     match rx.recv_timeout(CASE_BOUND) {
@@ -413,14 +551,24 @@ fn mutated_data_files_are_read_or_refused_never_crash_hang_or_give_non_finite_nu
     let seeds = seeds();
     let originals: Vec<Vec<u8>> = seeds
         .iter()
-        .map(|s| if s.gsf { map_gsf() } else { seed_text(s.file).into_bytes() })
+        .map(|s| {
+            if s.gsf {
+                map_gsf()
+            } else {
+                seed_text(s.file).into_bytes()
+            }
+        })
         .collect();
     // every seed file as shipped is read (else the mutations test nothing)
     for (seed, bytes) in seeds.iter().zip(&originals) {
         let path = dir.path().join(seed.name);
         std::fs::write(&path, bytes).unwrap();
         let outcome = bounded(path, seed.target);
-        assert!(matches!(outcome, Ok(None)), "{} as shipped: {outcome:?}", seed.name);
+        assert!(
+            matches!(outcome, Ok(None)),
+            "{} as shipped: {outcome:?}",
+            seed.name
+        );
     }
     let mut rng = Rng(SEED);
     let start = Instant::now();
@@ -444,7 +592,10 @@ fn mutated_data_files_are_read_or_refused_never_crash_hang_or_give_non_finite_nu
             Err(e) => {
                 let keep = dir.path().join(format!("failure-{cases}-{}", seed.name));
                 std::fs::write(&keep, &bytes).unwrap();
-                failures.push(format!("case {cases} ({}, {:?}): {e}", seed.name, seed.target));
+                failures.push(format!(
+                    "case {cases} ({}, {:?}): {e}",
+                    seed.name, seed.target
+                ));
             }
         }
         cases += 1;
@@ -457,7 +608,12 @@ fn mutated_data_files_are_read_or_refused_never_crash_hang_or_give_non_finite_nu
     if !failures.is_empty() {
         let _ = dir.keep();
     }
-    assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures.join("\n"));
+    assert!(
+        failures.is_empty(),
+        "{} failures:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
     assert!(cases >= 200, "only {cases} cases in the budget");
 }
 
@@ -474,10 +630,18 @@ fn the_binary_exits_0_or_2_on_mutated_data_in_bounded_time() {
     let psd = seed_text("scenarios/psd-example.csv");
     for case in 0..CLI_CASES {
         let (name, bytes, extra): (&str, Vec<u8>, &[&str]) = match case % 4 {
-            0 => ("m.csv", mutate_text(&map, &mut rng).into_bytes(), &["--pixel-size", "1 um", "--height-unit", "um"]),
+            0 => (
+                "m.csv",
+                mutate_text(&map, &mut rng).into_bytes(),
+                &["--pixel-size", "1 um", "--height-unit", "um"],
+            ),
             1 => ("m.gsf", mutate_gsf(&gsf, &mut rng), &[]),
             2 => ("p.csv", mutate_text(&psd, &mut rng).into_bytes(), &[]),
-            _ => ("t.csv", mutate_text(&seed_text("scenarios/traces/ground-fine.csv"), &mut rng).into_bytes(), &[]),
+            _ => (
+                "t.csv",
+                mutate_text(&seed_text("scenarios/traces/ground-fine.csv"), &mut rng).into_bytes(),
+                &[],
+            ),
         };
         let path = dir.path().join(name);
         std::fs::write(&path, &bytes).unwrap();
@@ -519,4 +683,42 @@ fn the_binary_exits_0_or_2_on_mutated_data_in_bounded_time() {
         }
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// The review's D10 and D11 through the binary: a PSD row of C = 1e308 m⁴ made `sealsim
+/// surface` print "Ra inf µm" and exit 0; a relaxation modulus of 1e200 MPa made `fit-prony`
+/// exit 1 ("not finite"). Both are bad input: exit 2 naming the file.
+#[test]
+fn an_overflowing_spectrum_and_an_absurd_modulus_exit_2() {
+    let dir = tempfile::tempdir().unwrap();
+    let psd = seed_text("scenarios/psd-example.csv");
+    let mut lines: Vec<&str> = psd.lines().collect();
+    let row = lines
+        .iter()
+        .rposition(|l| l.starts_with(|c: char| c.is_ascii_digit()))
+        .unwrap();
+    let q = lines[row].split(',').next().unwrap().to_owned();
+    let bad_row = format!("{q},1e308");
+    lines[row] = &bad_row;
+    std::fs::write(dir.path().join("p.csv"), lines.join("\n") + "\n").unwrap();
+    std::fs::write(
+        dir.path().join("r.csv"),
+        "t,E_relax\ns,MPa\n1,10\n10,9\n100,8\n1000,7.5\n10000,1e200\n",
+    )
+    .unwrap();
+    for args in [
+        &["surface", "p.csv"][..],
+        &["surface", "p.csv", "--json"],
+        &["fit-prony", "r.csv", "--kind", "relaxation"],
+    ] {
+        let out = Command::new(env!("CARGO_BIN_EXE_sealsim"))
+            .current_dir(dir.path())
+            .args(args)
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.contains(args[1]), "{err}");
+        assert!(finite_text(&String::from_utf8_lossy(&out.stdout)).is_ok());
+    }
 }

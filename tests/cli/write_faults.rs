@@ -245,7 +245,10 @@ fn study_slurm_never_replaces_the_study_or_its_base() {
         dir.path(),
         "scenarios/studies/as568-225-squeeze-tolerance.study.toml",
     );
-    let base = copy_in(dir.path(), "scenarios/studies/as568-225-face-water-80c.toml");
+    let base = copy_in(
+        dir.path(),
+        "scenarios/studies/as568-225-face-water-80c.toml",
+    );
     let (study_text, base_text) = (fs::read(&study).unwrap(), fs::read(&base).unwrap());
     for out in [&study, &base] {
         let (code, err) = in_dir(
@@ -302,7 +305,15 @@ fn materials_outputs_never_collide_or_replace_the_compound_file() {
     let dir = tempfile::tempdir().unwrap();
     let (code, err) = in_dir(
         dir.path(),
-        &["materials", "curve", "nbr-70", "-o", "c.csv", "--plot", "c.csv"],
+        &[
+            "materials",
+            "curve",
+            "nbr-70",
+            "-o",
+            "c.csv",
+            "--plot",
+            "c.csv",
+        ],
     );
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("writes the same file"), "{err}");
@@ -310,8 +321,22 @@ fn materials_outputs_never_collide_or_replace_the_compound_file() {
     let m = copy_in(dir.path(), "materials/nbr-70.toml");
     let text = fs::read(&m).unwrap();
     for args in [
-        &["materials", "curve", "--file", "nbr-70.toml", "-o", "nbr-70.toml"][..],
-        &["materials", "curve", "--file", "nbr-70.toml", "--plot", "./nbr-70.toml"],
+        &[
+            "materials",
+            "curve",
+            "--file",
+            "nbr-70.toml",
+            "-o",
+            "nbr-70.toml",
+        ][..],
+        &[
+            "materials",
+            "curve",
+            "--file",
+            "nbr-70.toml",
+            "--plot",
+            "./nbr-70.toml",
+        ],
         &[
             "materials",
             "export",
@@ -394,7 +419,10 @@ fn another_users_file_is_refused_unless_writable_and_keeps_its_owner() {
 
     // root writes a file of uid/gid 65534: replaced, owner and group kept
     std::os::unix::fs::chown(&theirs, Some(65534), Some(65534)).unwrap();
-    let (code, err) = in_dir(dir.path(), &["run", "oring-nbr-water-80c.toml", "-o", "theirs.csv"]);
+    let (code, err) = in_dir(
+        dir.path(),
+        &["run", "oring-nbr-water-80c.toml", "-o", "theirs.csv"],
+    );
     assert_eq!(code, Some(0), "{err}");
     let meta = fs::metadata(&theirs).unwrap();
     assert_eq!((meta.uid(), meta.gid()), (65534, 65534));
@@ -412,16 +440,41 @@ fn links_are_written_through_and_loops_refused() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
     symlink("made.csv", d.join("dangling.csv")).unwrap();
-    let (code, err) = in_dir(&root(), &["run", SCENARIO, "-o", d.join("dangling.csv").to_str().unwrap()]);
+    let (code, err) = in_dir(
+        &root(),
+        &[
+            "run",
+            SCENARIO,
+            "-o",
+            d.join("dangling.csv").to_str().unwrap(),
+        ],
+    );
     assert_eq!(code, Some(0), "{err}");
-    assert!(fs::symlink_metadata(d.join("dangling.csv")).unwrap().file_type().is_symlink());
-    assert!(fs::read_to_string(d.join("made.csv")).unwrap().starts_with("time_s,"));
+    assert!(
+        fs::symlink_metadata(d.join("dangling.csv"))
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
+    assert!(
+        fs::read_to_string(d.join("made.csv"))
+            .unwrap()
+            .starts_with("time_s,")
+    );
 
     symlink("loop.csv", d.join("loop.csv")).unwrap();
-    let (code, err) = in_dir(&root(), &["run", SCENARIO, "-o", d.join("loop.csv").to_str().unwrap()]);
+    let (code, err) = in_dir(
+        &root(),
+        &["run", SCENARIO, "-o", d.join("loop.csv").to_str().unwrap()],
+    );
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("symbolic link loop"), "{err}");
-    assert!(fs::symlink_metadata(d.join("loop.csv")).unwrap().file_type().is_symlink());
+    assert!(
+        fs::symlink_metadata(d.join("loop.csv"))
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
 
     symlink("z.csv", d.join("zlink.json")).unwrap();
     let (code, err) = in_dir(
@@ -437,7 +490,10 @@ fn links_are_written_through_and_loops_refused() {
     );
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("writes the same file"), "{err}");
-    assert_eq!(names(d), ["dangling.csv", "loop.csv", "made.csv", "zlink.json"]);
+    assert_eq!(
+        names(d),
+        ["dangling.csv", "loop.csv", "made.csv", "zlink.json"]
+    );
 }
 
 /// `-o /dev/stdout >> log.txt` and a link to `/proc/self/fd/3` opened with `3>> log` append to
@@ -460,7 +516,12 @@ fn an_append_mode_stream_is_appended_to_not_replaced() {
     assert_eq!(code, Some(0), "{err}");
     let log = fs::read_to_string(d.join("log3.txt")).unwrap();
     assert!(log.starts_with("earlier lines\ntime_s,"), "{}", &log[..200]);
-    assert!(fs::symlink_metadata(d.join("fd3")).unwrap().file_type().is_symlink());
+    assert!(
+        fs::symlink_metadata(d.join("fd3"))
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
 
     let (code, err) = shell(d, "\"$B\" run \"$S\" -o /dev/stdout > out.txt");
     assert_eq!(code, Some(0), "{err}");
@@ -472,5 +533,8 @@ fn an_append_mode_stream_is_appended_to_not_replaced() {
     assert!(summary.lines().count() > 3, "{summary}");
     assert!(out.starts_with("time_s,"), "{}", &out[..200]);
     assert!(out.ends_with(&summary), "the summary was lost: {out}");
-    assert_eq!(names(d), ["alone.txt", "fd3", "log.txt", "log3.txt", "out.txt"]);
+    assert_eq!(
+        names(d),
+        ["alone.txt", "fd3", "log.txt", "log3.txt", "out.txt"]
+    );
 }
