@@ -40,16 +40,10 @@ def values(rng, depth=0):
     if depth < 2:
         pool += [
             [values(rng, depth + 1) for _ in range(rng.randrange(0, 3))],
-            {values(rng, depth + 1) if rng.random() < 0.3 else "k": values(rng, depth + 1)},
+            {rng.choice(["k", "", "a.b.c", "seal.squeeze", "t"]): values(rng, depth + 1)},
             (values(rng, depth + 1), values(rng, depth + 1)),
         ]
-    choice = rng.choice(pool)
-    if isinstance(choice, dict):
-        try:
-            hash(next(iter(choice)))
-        except TypeError:
-            return {"k": 1}
-    return choice
+    return rng.choice(pool)
 
 
 def targets():
@@ -70,8 +64,9 @@ def targets():
                     ("Scenario.leak", scenario.leak),
                     ("Scenario.advise", scenario.advise),
                 ]
-            else:
-                out.append((name, obj))
+            # result classes (RunResult, FitResult, ...) are built by sealsim from its own
+            # output; their constructors are no entry point
+
         elif callable(obj):
             out.append((name, obj))
     return out
@@ -90,7 +85,7 @@ def parameters(fn):
 def test_public_api_raises_only_documented_exceptions():
     rng = random.Random(SEED)
     funcs = targets()
-    assert len(funcs) >= 15, [n for n, _ in funcs]
+    assert len(funcs) >= 14, [n for n, _ in funcs]
     seen = {}
     unexpected = []
     for i in range(CALLS):
