@@ -19,8 +19,10 @@ Every call releases the GIL. Studies, comparisons and numerical-level calls run 
 thread: Ctrl-C (``KeyboardInterrupt``) stops the wait at once, and ``progress=`` reports them.
 An analytic run or leak table (milliseconds) runs on the calling thread. Invalid
 input raises :class:`ScenarioError` (a ``ValueError``) with the command line's
-``file:line: key: message``; a bug in sealsim raises :class:`InternalError` (a
-``RuntimeError``), never a crash.
+``file:line: key: message``, an argument of the wrong type ``TypeError``, a number out of range
+``ValueError``, a missing file ``FileNotFoundError``; a bug in sealsim raises
+:class:`InternalError` (a ``RuntimeError``), never a crash (python/tests/test_fuzz.py holds the
+public API to these).
 """
 
 from __future__ import annotations
