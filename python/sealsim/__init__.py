@@ -19,8 +19,10 @@ Every call releases the GIL. Studies, comparisons and numerical-level calls run 
 thread: Ctrl-C (``KeyboardInterrupt``) stops the wait at once, and ``progress=`` reports them.
 An analytic run or leak table (milliseconds) runs on the calling thread. Invalid
 input raises :class:`ScenarioError` (a ``ValueError``) with the command line's
-``file:line: key: message``; a bug in sealsim raises :class:`InternalError` (a
-``RuntimeError``), never a crash.
+``file:line: key: message``, an argument of the wrong type ``TypeError``, a number out of range
+``ValueError``, a missing file ``FileNotFoundError``; a bug in sealsim raises
+:class:`InternalError` (a ``RuntimeError``), never a crash (python/tests/test_fuzz.py holds the
+public API to these).
 """
 
 from __future__ import annotations
@@ -360,6 +362,8 @@ def compare(
     as ``--all``). Each compound's findings are ``.attrs["warnings"]`` of a DataFrame and the
     headline (it names only a compound rated A/B) is ``.attrs["headline"]``. ``progress`` as
     for :meth:`Scenario.run`."""
+    if not isinstance(scenario, Scenario):
+        raise TypeError(f"compare: scenario must be a sealsim.Scenario, got {type(scenario).__name__}")
     columns, findings, headline = _sealsim._compare(
         scenario._inner,
         list(compounds),
@@ -605,6 +609,8 @@ def contact(
         array = numpy.ascontiguousarray(array, dtype=numpy.float64)
         shape = array.shape
         heights = array.tobytes()
+    if scenario is not None and not isinstance(scenario, Scenario):
+        raise TypeError(f"contact: scenario must be a sealsim.Scenario, got {type(scenario).__name__}")
     raw = _sealsim._contact(
         list(pressures),
         None if scenario is None else scenario._inner,
@@ -623,3 +629,32 @@ def contact(
     if raw["level"] == "numerical":
         return ContactResult(raw)
     return _table(raw["table"])
+
+
+def _documented_errors(name: str, fn: Any) -> Any:
+    """``fn`` raising only the documented exception types: an integer out of a native type's
+    range (``threads=-1``, ``10**400`` as a float) raises ``ValueError`` with Python's words,
+    not ``OverflowError`` (an ``ArithmeticError`` that ``except ValueError`` misses)."""
+    import functools
+
+    @functools.wraps(fn)
+    def wrapper(*args: Any, **kwargs: Any) -> Any:
+        try:
+            return fn(*args, **kwargs)
+        except OverflowError as e:
+            raise ValueError(f"{name}: a number out of range: {e}") from e
+
+    return wrapper
+
+
+for _name in ("compare", "study", "gland", "materials", "contact", "fit_prony", "surface", "quantity"):
+    globals()[_name] = _documented_errors(_name, globals()[_name])
+for _name in ("advise", "run", "leak", "replace"):
+    setattr(Scenario, _name, _documented_errors(f"Scenario.{_name}", getattr(Scenario, _name)))
+for _name in ("from_file", "from_toml"):
+    setattr(
+        Scenario,
+        _name,
+        classmethod(_documented_errors(f"Scenario.{_name}", getattr(Scenario, _name).__func__)),
+    )
+del _name

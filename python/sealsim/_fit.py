@@ -34,6 +34,11 @@ def _columns_csv(data: Any, units: Optional[Mapping[str, str]]) -> str:
     """Columns (a DataFrame or a mapping of name -> values) as a fit data file: the header
     row, the units row (``units`` or SI: s, Pa, N, 1, K, Hz, rad/s by the column's name), then
     one row per point."""
+    if not (hasattr(data, "columns") or isinstance(data, Mapping)):
+        raise TypeError(
+            "fit_prony: data must be a data file's path, a DataFrame or a dict of column name "
+            f"-> values, got {type(data).__name__}"
+        )
     names = [str(n) for n in (data.columns if hasattr(data, "columns") else data.keys())]
     given = dict(units or {})
     unit_row = [given.get(n) or _sealsim._fit_column_unit(n) or "?" for n in names]

@@ -70,6 +70,12 @@ fn topography(heights: &[u8], shape: (usize, usize), pixel: Option<f64>) -> PyRe
             heights[i]
         )));
     }
+    // the scenario reader's bound (±10 mm, no-data markers): a map in µm passed as metres
+    for (i, &h) in heights.iter().enumerate() {
+        if let Some(why) = sealsim::scenario::implausible_height(h, 1.0) {
+            return Err(bad(format!("height_map[{}, {}]: {why}", i / nx, i % nx)));
+        }
+    }
     Ok(Topography {
         nx,
         ny,
@@ -151,10 +157,18 @@ fn problem(
         }
         None => {
             let e = need("youngs_modulus", youngs_modulus)?;
-            if !(e.is_finite() && e > 0.0 && poisson_ratio > -1.0 && poisson_ratio <= 0.5) {
-                return Err(bad(
-                    "youngs_modulus must be positive and poisson_ratio in (-1, 0.5]".to_owned(),
-                ));
+            // the scenario key's range (material.youngs_modulus, 1e3–1e12 Pa): 5e-324 once gave
+            // an infinite reduced pressure, 1e300 a NaN mean gap
+            if !(e.is_finite() && (1e3..=1e12).contains(&e)) {
+                return Err(bad(format!(
+                    "youngs_modulus must lie in 1e3–1e12 Pa (a rubber's modulus, as the \
+                     scenario key material.youngs_modulus), got {e} Pa"
+                )));
+            }
+            if !(poisson_ratio > -1.0 && poisson_ratio <= 0.5) {
+                return Err(bad(format!(
+                    "poisson_ratio must lie in (-1, 0.5], got {poisson_ratio}"
+                )));
             }
             let spectrum = match (&map, estimated) {
                 (_, Some(sp)) => Some(sp),

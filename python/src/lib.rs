@@ -386,7 +386,11 @@ pub(crate) struct PyScenario {
 
 impl PyScenario {
     fn new(text: String, file: String) -> PyResult<PyScenario> {
-        let scenario = Scenario::from_str(&text, Path::new(&file)).map_err(scenario_error)?;
+        // a panic while reading a data file is an InternalError, never a PanicException (a
+        // BaseException that `except Exception` misses)
+        let scenario = std::panic::catch_unwind(|| Scenario::from_str(&text, Path::new(&file)))
+            .map_err(|payload| internal(format!("sealsim panicked: {}", panic_text(&*payload))))?
+            .map_err(scenario_error)?;
         Ok(PyScenario {
             inner: Arc::new(scenario),
             text,
@@ -436,8 +440,11 @@ impl PyScenario {
         for (k, v) in values.iter() {
             assignments.push((k.extract::<String>()?, toml_value(&v)?));
         }
-        let (text, scenario) = workflow::replace(&self.text, Path::new(&self.file), &assignments)
-            .map_err(scenario_error)?;
+        let (text, scenario) = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            workflow::replace(&self.text, Path::new(&self.file), &assignments)
+        }))
+        .map_err(|payload| internal(format!("sealsim panicked: {}", panic_text(&*payload))))?
+        .map_err(scenario_error)?;
         Ok(PyScenario {
             inner: Arc::new(scenario),
             text,

@@ -36,6 +36,27 @@ pub struct FiguresArgs {
 /// Runs `sealsim figures`: everything is computed before the first file is written.
 pub fn run(args: FiguresArgs) -> Result<(), CliError> {
     let set = FigureSet::load(&args.figure_set)?;
+    // no figure may replace the set, a scenario of it or a data file a scenario reads
+    let planned: Vec<PathBuf> = set
+        .groups
+        .iter()
+        .flat_map(|group| {
+            let (csv, svgs) = output_paths(&args.out_dir, group);
+            std::iter::once(csv).chain(svgs.into_iter().map(|(_, path)| path))
+        })
+        .collect();
+    let inputs: Vec<&std::path::Path> = std::iter::once(args.figure_set.as_path())
+        .chain(set.groups.iter().flat_map(|g| {
+            g.scenarios.iter().flat_map(|s| {
+                std::iter::once(s.path.as_path()).chain(s.inputs.iter().map(PathBuf::as_path))
+            })
+        }))
+        .collect();
+    let outputs: Vec<(&str, Option<&std::path::Path>)> = planned
+        .iter()
+        .map(|p| ("--out-dir", Some(p.as_path())))
+        .collect();
+    super::guard_outputs(&inputs, &outputs)?;
     let groups =
         workflow::figures::evaluate(&set, args.fidelity, &mut progress_bar("numerical level"));
     let mut files: Vec<(PathBuf, String)> = Vec::new();

@@ -379,6 +379,18 @@ fn check(args: &CheckArgs) -> Result<(), CliError> {
 }
 
 fn curve(args: CurveArgs) -> Result<(), CliError> {
+    super::guard_outputs(
+        &args
+            .material
+            .file
+            .iter()
+            .map(PathBuf::as_path)
+            .collect::<Vec<_>>(),
+        &[
+            ("--output", args.output.as_deref()),
+            ("--plot", args.plot.as_deref()),
+        ],
+    )?;
     let (id, material) = resolve(&args.material)?;
     if let (Some(t), Shift::None) = (args.temperature, material.shift) {
         eprintln!(
@@ -463,6 +475,15 @@ fn chart(id: &str, material: &Material, curve: &Curve) -> LogLogChart {
 }
 
 fn export(args: ExportArgs) -> Result<(), CliError> {
+    super::guard_outputs(
+        &args
+            .material
+            .file
+            .iter()
+            .map(PathBuf::as_path)
+            .collect::<Vec<_>>(),
+        &[("--output", args.output.as_deref())],
+    )?;
     let (id, material) = resolve(&args.material)?;
     let text = match args.format {
         ExportFormat::Abaqus => abaqus(&id, &args.material.command_line(), &material),

@@ -338,19 +338,46 @@ impl FailExitCode {
 }
 
 /// The file a path names, for comparing paths: the canonical path when it exists, else its
-/// canonical directory joined with its name (an output not yet written).
+/// canonical directory joined with its name (an output not yet written; for a dangling link,
+/// the target it would create, so that a link and its target are one output).
 fn identity(path: &Path) -> std::path::PathBuf {
     if let Ok(p) = path.canonicalize() {
         return p;
     }
-    let name = path.file_name().map(std::ffi::OsStr::to_os_string);
-    let dir = match path.parent() {
+    let followed = match report::output_target(path) {
+        Ok(report::OutputTarget::File { path, .. }) => path,
+        _ => path.to_path_buf(),
+    };
+    let name = followed.file_name().map(std::ffi::OsStr::to_os_string);
+    let dir = match followed.parent() {
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),
     };
     match (dir.canonicalize(), name) {
         (Ok(d), Some(n)) => d.join(n),
-        _ => path.to_path_buf(),
+        _ => followed,
+    }
+}
+
+/// Refuses an output the writer would not replace (exit 2, before anything runs): a symbolic
+/// link loop, a block device, a read-only file or one this user may not write
+/// ([`report::replace_refusal`]). A directory is left to the writer (exit 1, as before).
+fn refuse_unwritable(flag: &str, path: &Path) -> Result<(), CliError> {
+    if path.is_dir() {
+        return Ok(());
+    }
+    let refusal = match report::output_target(path) {
+        Ok(report::OutputTarget::File {
+            path: target,
+            existing: Some(meta),
+        }) => report::replace_refusal(&target, &meta),
+        Ok(_) => None,
+        Err(e) if e.kind() == io::ErrorKind::InvalidInput => Some(e.to_string()),
+        Err(_) => None, // unreadable metadata: the write reports it
+    };
+    match refusal {
+        Some(why) => Err(CliError::Input(format!("{flag} {}: {why}", path.display()))),
+        None => Ok(()),
     }
 }
 
@@ -412,7 +439,10 @@ pub(crate) fn plot_file(
 }
 
 /// Refuses, before anything runs, an output that would replace one of `inputs` or another
-/// output of the same command (exit 2, nothing written): `outputs` are (flag, path) pairs.
+/// output of the same command, or that the writer would refuse (a read-only file, a link loop:
+/// [`refuse_unwritable`]) (exit 2, nothing written): `outputs` are (flag, path) pairs. Every
+/// command that writes a file calls it with all its inputs: the files named on the command
+/// line and every data file a scenario read (`Scenario::inputs`).
 pub(crate) fn guard_outputs(
     inputs: &[&Path],
     outputs: &[(&str, Option<&Path>)],
@@ -438,6 +468,11 @@ pub(crate) fn guard_outputs(
             )));
         }
         seen.push((id, flag));
+    }
+    for (flag, path) in outputs {
+        if let Some(path) = path {
+            refuse_unwritable(flag, path)?;
+        }
     }
     // then the format a name promises (after the overwrites: the worse mistake first)
     for (flag, path) in outputs {

@@ -307,6 +307,7 @@ fn merge(args: MergeArgs) -> Result<(), CliError> {
     let study = Study::load(&args.study)?;
     let inputs: Vec<&Path> = [args.study.as_path(), study.base_path.as_path()]
         .into_iter()
+        .chain(study.base_scenario.inputs.iter().map(PathBuf::as_path))
         .chain(args.parts.iter().map(PathBuf::as_path))
         .collect();
     let o = &args.outputs;
@@ -380,6 +381,12 @@ fn slurm(args: SlurmArgs) -> Result<(), CliError> {
         None => std::env::current_exe()
             .map_err(|e| CliError::Internal(format!("cannot locate this binary: {e}")))?,
     };
+    // the script must never replace the study, its base scenario or a file the base reads
+    let inputs: Vec<&Path> = [args.study.as_path(), study.base_path.as_path()]
+        .into_iter()
+        .chain(study.base_scenario.inputs.iter().map(PathBuf::as_path))
+        .collect();
+    super::guard_outputs(&inputs, &[("-o", args.output.as_deref())])?;
     let shards = (args.shards as usize).min(study.cases().max(1));
     let script = out::slurm_script(&out::SlurmJob {
         study: &study,

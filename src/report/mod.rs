@@ -25,7 +25,7 @@ pub mod tradeoff;
 use std::fmt;
 use std::fs::{self, File, OpenOptions};
 use std::io::{self, Write};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
 
 /// Why a report could not be produced. Both cases are internal errors (bugs), not user
@@ -56,40 +56,239 @@ impl fmt::Display for ReportError {
 
 impl std::error::Error for ReportError {}
 
-/// Writes `bytes` to `path` whole or not at all.
+/// How many symbolic links an output path may pass through (Linux's own limit, `MAXSYMLINKS`).
+const MAX_LINKS: usize = 40;
+
+/// Where an output path leads once its symbolic links are followed (see [`write_atomic`]).
+#[derive(Debug)]
+pub enum OutputTarget {
+    /// A regular file to replace whole, or a new file to create (`existing` is `None`): the
+    /// path with every link followed, so a link is written through and kept, and a dangling
+    /// link creates its target.
+    File {
+        path: PathBuf,
+        existing: Option<fs::Metadata>,
+    },
+    /// A stream written in place, never replaced: a character device (`/dev/null`), a FIFO or
+    /// a socket (`append` false), or a descriptor (`/dev/stdout`, `/dev/fd/N`,
+    /// `/proc/self/fd/N`), which may be a redirected regular file (`append` true, so that
+    /// `-o /dev/stdout >> log.txt` keeps the log's earlier lines).
+    Stream { path: PathBuf, append: bool },
+}
+
+/// `/dev/stdout`, `/dev/stderr`, `/dev/fd/N`, `/proc/self/fd/N`, `/proc/PID/fd/N`: a path that
+/// names an open descriptor; following it would name the file the descriptor was opened on,
+/// which the writer must not replace (the shell's redirect, maybe in append mode, holds it).
+fn names_a_descriptor(path: &Path) -> bool {
+    let text = path.to_string_lossy();
+    if matches!(&*text, "/dev/stdout" | "/dev/stderr" | "/dev/stdin") {
+        return true;
+    }
+    if text.starts_with("/dev/fd/") {
+        return true;
+    }
+    let Some(rest) = text.strip_prefix("/proc/") else {
+        return false;
+    };
+    let mut parts = rest.splitn(3, '/');
+    let owner = parts.next().unwrap_or("");
+    let fd = parts.next() == Some("fd");
+    fd && (owner == "self"
+        || owner == "thread-self"
+        || (!owner.is_empty() && owner.bytes().all(|b| b.is_ascii_digit())))
+}
+
+/// The descriptor number a descriptor path names (`/dev/stdout` → 1), when it is ours.
+fn own_descriptor(path: &Path) -> Option<u32> {
+    let text = path.to_string_lossy();
+    match &*text {
+        "/dev/stdout" => return Some(1),
+        "/dev/stderr" => return Some(2),
+        _ => {}
+    }
+    let pid = std::process::id().to_string();
+    let number = text
+        .strip_prefix("/dev/fd/")
+        .or_else(|| text.strip_prefix("/proc/self/fd/"))
+        .or_else(|| text.strip_prefix("/proc/thread-self/fd/"))
+        .or_else(|| {
+            text.strip_prefix("/proc/")
+                .and_then(|r| r.strip_prefix(pid.as_str()))
+                .and_then(|r| r.strip_prefix("/fd/"))
+        })?;
+    number.parse().ok()
+}
+
+/// Follows `path`'s symbolic links (at most [`MAX_LINKS`]) to what an output there writes.
 ///
-/// The bytes go to a temporary file in the same directory (`.{name}.tmp-{pid}-{n}`), which is
-/// flushed and synced and then renamed over `path`. On any error the temporary file is
-/// removed and an existing `path` is left untouched. (A replaced file gets default
-/// permissions, not those of the file it replaces.)
-///
-/// A symbolic link is followed: the file it points to is replaced, the link kept. An
-/// existing path that is not a regular file (`/dev/null`, `/dev/stdout`, a FIFO) is a stream
-/// that cannot be replaced, so the bytes are written into it directly; renaming over it would
-/// turn, say, `/dev/null` into a regular file for every other program on the machine.
-pub fn write_atomic(path: &Path, bytes: &[u8]) -> io::Result<()> {
-    match fs::metadata(path) {
-        Ok(meta) if meta.is_file() => {
-            if fs::symlink_metadata(path)?.file_type().is_symlink() {
-                return replace_whole(&fs::canonicalize(path)?, bytes);
+/// Errors: a link loop (or a chain longer than [`MAX_LINKS`]), a directory, a block device (a
+/// disk: never written at offset 0 by mistake), or metadata that cannot be read.
+pub fn output_target(path: &Path) -> io::Result<OutputTarget> {
+    let mut current = path.to_path_buf();
+    for _ in 0..=MAX_LINKS {
+        if names_a_descriptor(&current) {
+            return Ok(OutputTarget::Stream {
+                path: current,
+                append: true,
+            });
+        }
+        let meta = match fs::symlink_metadata(&current) {
+            Ok(meta) => meta,
+            Err(e) if e.kind() == io::ErrorKind::NotFound => {
+                return Ok(OutputTarget::File {
+                    path: current,
+                    existing: None,
+                });
             }
-            replace_whole(path, bytes)
+            Err(e) => return Err(e),
+        };
+        let kind = meta.file_type();
+        if kind.is_symlink() {
+            let target = fs::read_link(&current)?;
+            current = match current.parent() {
+                Some(dir) if target.is_relative() => dir.join(target),
+                _ => target,
+            };
+            continue;
         }
-        Ok(meta) if meta.is_dir() => Err(io::Error::new(
-            io::ErrorKind::InvalidInput,
-            format!("{} is a directory", path.display()),
+        if kind.is_dir() {
+            return Err(io::Error::new(
+                io::ErrorKind::InvalidInput,
+                format!("{} is a directory", current.display()),
+            ));
+        }
+        if kind.is_file() {
+            return Ok(OutputTarget::File {
+                path: current,
+                existing: Some(meta),
+            });
+        }
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::FileTypeExt;
+            if kind.is_block_device() {
+                return Err(io::Error::new(
+                    io::ErrorKind::InvalidInput,
+                    format!(
+                        "{} is a block device (a disk): an output is never written onto one",
+                        current.display()
+                    ),
+                ));
+            }
+        }
+        return Ok(OutputTarget::Stream {
+            path: current,
+            append: false,
+        });
+    }
+    Err(io::Error::new(
+        io::ErrorKind::InvalidInput,
+        format!(
+            "{} is a symbolic link loop (more than {MAX_LINKS} links, or a link to itself)",
+            path.display()
+        ),
+    ))
+}
+
+/// Why an existing regular file may not be replaced by an output: it is read-only (no write
+/// permission bit at all, e.g. 0444: a protection even root is held to here, as `cp` and an
+/// editor warn), or this process may not write it (another user's file, as a shell redirect
+/// would refuse). `None`: it may be replaced.
+pub fn replace_refusal(path: &Path, meta: &fs::Metadata) -> Option<String> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        let mode = meta.permissions().mode() & 0o7777;
+        if mode & 0o222 == 0 {
+            return Some(format!(
+                "{} is read-only (mode {mode:04o}): it is not replaced; make it writable \
+                 (chmod u+w) or give the output another name",
+                path.display()
+            ));
+        }
+    }
+    #[cfg(not(unix))]
+    if meta.permissions().readonly() {
+        return Some(format!(
+            "{} is read-only: it is not replaced; make it writable or give the output another \
+             name",
+            path.display()
+        ));
+    }
+    // Opening for writing (no truncation, no creation) changes nothing and asks the kernel
+    // the question a shell redirect asks: may this process write the file?
+    match OpenOptions::new().write(true).open(path) {
+        Err(e) if e.kind() == io::ErrorKind::PermissionDenied => Some(format!(
+            "{} is not writable by this user (another user's file, or one without write \
+             permission for you): it is not replaced; give the output another name",
+            path.display()
         )),
-        Ok(_) => {
-            let mut stream = OpenOptions::new().write(true).open(path)?;
-            stream.write_all(bytes)?;
-            stream.flush()
-        }
-        Err(_) => replace_whole(path, bytes),
+        _ => None,
     }
 }
 
-/// The temporary-file-and-rename write of [`write_atomic`], for a regular file or a new path.
-fn replace_whole(path: &Path, bytes: &[u8]) -> io::Result<()> {
+/// Writes `bytes` to `path` whole or not at all.
+///
+/// A regular file (or a new path) is written to a temporary file in the same directory
+/// (`.{name}.tmp-{pid}-{n}`), flushed and synced and renamed over it. On any error the
+/// temporary file is removed and an existing file is left untouched. The replaced file keeps
+/// its permission bits (a 0600 file stays private) and, where the process may set them (root,
+/// or a group the user is in), its owner and group; a read-only file (mode without any write
+/// bit, e.g. 0444) or one this process may not write is refused ([`replace_refusal`]).
+///
+/// Symbolic links are followed ([`output_target`]): the file a link points to is replaced and
+/// the link kept; a dangling link creates its target (as a shell redirect does); a link loop is
+/// refused. An existing path that is not a regular file (`/dev/null`, a FIFO) is a stream that
+/// cannot be replaced, so the bytes are written into it directly; renaming over it would turn,
+/// say, `/dev/null` into a regular file for every other program on the machine. A descriptor
+/// path (`/dev/stdout`, `/dev/fd/N`, `/proc/self/fd/N`, or a link to one) is written to that
+/// descriptor, appending when it is a redirected file: `-o /dev/stdout >> log.txt` adds to
+/// the log, never replaces it. A block device is refused.
+pub fn write_atomic(path: &Path, bytes: &[u8]) -> io::Result<()> {
+    match output_target(path)? {
+        OutputTarget::File { path, existing } => {
+            if let Some(meta) = &existing
+                && let Some(why) = replace_refusal(&path, meta)
+            {
+                return Err(io::Error::new(io::ErrorKind::PermissionDenied, why));
+            }
+            replace_whole(&path, bytes, existing.as_ref())
+        }
+        OutputTarget::Stream { path, append } => write_stream(&path, append, bytes),
+    }
+}
+
+/// Writes into a stream in place: our own standard output or error through the process's
+/// handle (so that the bytes land after, and before, what the command prints there), any other
+/// descriptor or device by opening it (appending, for a redirected file).
+fn write_stream(path: &Path, append: bool, bytes: &[u8]) -> io::Result<()> {
+    match own_descriptor(path) {
+        Some(1) => {
+            let mut out = io::stdout().lock();
+            out.write_all(bytes)?;
+            return out.flush();
+        }
+        Some(2) => {
+            let mut err = io::stderr().lock();
+            err.write_all(bytes)?;
+            return err.flush();
+        }
+        _ => {}
+    }
+    let mut options = OpenOptions::new();
+    if append {
+        options.append(true);
+    } else {
+        options.write(true);
+    }
+    let mut stream = options.open(path)?;
+    stream.write_all(bytes)?;
+    stream.flush()
+}
+
+/// The temporary-file-and-rename write of [`write_atomic`], for a regular file or a new path;
+/// `existing` is the replaced file's metadata (its mode and owner are carried over).
+fn replace_whole(path: &Path, bytes: &[u8], existing: Option<&fs::Metadata>) -> io::Result<()> {
     let name = path.file_name().ok_or_else(|| {
         io::Error::new(
             io::ErrorKind::InvalidInput,
@@ -100,20 +299,47 @@ fn replace_whole(path: &Path, bytes: &[u8]) -> io::Result<()> {
         Some(dir) if !dir.as_os_str().is_empty() => dir,
         _ => Path::new("."),
     };
-    let tmp = dir.join(format!(
-        ".{}.tmp-{}-{}",
-        name.to_string_lossy(),
-        std::process::id(),
-        next_serial()
-    ));
     // `create_new`: never clobber a file that is not ours (so only remove it if we made it).
-    let file = OpenOptions::new().write(true).create_new(true).open(&tmp)?;
-    let result = fill_and_rename(file, bytes, &tmp, path);
+    // A name left by a killed process of the same PID (a container's PID 1) is skipped.
+    let mut attempt = 0;
+    let (file, tmp) = loop {
+        let tmp = dir.join(format!(
+            ".{}.tmp-{}-{}",
+            name.to_string_lossy(),
+            std::process::id(),
+            next_serial()
+        ));
+        match OpenOptions::new().write(true).create_new(true).open(&tmp) {
+            Ok(file) => break (file, tmp),
+            Err(e) if e.kind() == io::ErrorKind::AlreadyExists && attempt < 64 => attempt += 1,
+            Err(e) => return Err(e),
+        }
+    };
+    let result = keep_mode_and_owner(&file, existing)
+        .and_then(|()| fill_and_rename(file, bytes, &tmp, path));
     if result.is_err() {
         // Best effort: the original error is the one worth reporting.
         let _ = fs::remove_file(&tmp);
     }
     result
+}
+
+/// Gives the temporary the replaced file's owner and group where this process may (root; the
+/// group alone for a user in it; otherwise the writer owns the new file), then its permission
+/// bits (after the owner: changing the owner clears set-id bits).
+fn keep_mode_and_owner(file: &File, existing: Option<&fs::Metadata>) -> io::Result<()> {
+    let Some(old) = existing else { return Ok(()) };
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        let new = file.metadata()?;
+        if (new.uid(), new.gid()) != (old.uid(), old.gid())
+            && std::os::unix::fs::fchown(file, Some(old.uid()), Some(old.gid())).is_err()
+        {
+            let _ = std::os::unix::fs::fchown(file, None, Some(old.gid()));
+        }
+    }
+    file.set_permissions(old.permissions())
 }
 
 fn fill_and_rename(mut file: File, bytes: &[u8], tmp: &Path, path: &Path) -> io::Result<()> {

@@ -74,7 +74,49 @@ impl SurfaceReport {
     }
 
     /// The JSON object (keys named with their units).
+    ///
+    /// # Errors
+    /// [`ReportError::NonFinite`] for a NaN or infinite figure: serde_json would print it as
+    /// `null`, which reads as "absent" (the readers refuse what would give one).
     pub fn json(&self) -> Result<String, ReportError> {
+        let mut numbers: Vec<(&'static str, f64)> = vec![
+            ("ra_m", self.ra),
+            ("rq_m", self.rq),
+            ("h_rms_m", self.h_rms),
+            ("rms_slope", self.rms_slope),
+            ("band_per_m", self.band.0),
+            ("band_per_m", self.band.1),
+            ("q0_per_m", self.q0),
+            ("q1_per_m", self.q1),
+        ];
+        numbers.extend(self.rz.map(|v| ("rz_m", v)));
+        numbers.extend(self.rolloff.map(|v| ("rolloff_per_m", v)));
+        if let Some((h, interval)) = self.hurst {
+            numbers.push(("hurst_exponent", h));
+            numbers.extend(interval.into_iter().flat_map(|(a, b)| {
+                [
+                    ("hurst_exponent_interval", a),
+                    ("hurst_exponent_interval", b),
+                ]
+            }));
+        }
+        numbers.extend(
+            self.fit_band
+                .into_iter()
+                .flat_map(|(a, b)| [("hurst_fit_band_per_m", a), ("hurst_fit_band_per_m", b)]),
+        );
+        numbers.extend(
+            self.map_figures
+                .into_iter()
+                .flat_map(|(a, b)| [("map_h_rms_m", a), ("map_rms_slope", b)]),
+        );
+        if let Some(&(column, value)) = numbers.iter().find(|(_, v)| !v.is_finite()) {
+            return Err(ReportError::NonFinite {
+                row: 1,
+                column,
+                value,
+            });
+        }
         let (hurst, interval) = match self.hurst {
             Some((h, i)) => (Some(h), i.map(|(a, b)| vec![a, b])),
             None => (None, None),

@@ -579,7 +579,30 @@ pub fn show_kelvin(t: f64) -> String {
     format!("{} K ({:.4} °C)", show(t), t - 273.15).replace(".0000 °C", " °C")
 }
 
-/// One cell in SI: finite, positive (temperatures: above absolute zero); frequencies as ω.
+/// The range a cell of `quantity` must lie in (SI), its unit and the likely slip beyond it.
+/// Bounds (assumed, chosen wide): a rubber's modulus lies between its rubbery plateau
+/// (~1e5 Pa) and its glass (~3e9 Pa), so 1 Pa–1e12 Pa holds any rubber with decades to spare
+/// (the scenario's modulus key takes 1e3–1e12 Pa); times and frequencies within 1e-30–1e30 (a
+/// shifted master curve spans some 30 decades); forces 1e-9–1e9 N. Beyond them the fitter's
+/// least squares overflowed (a modulus of 1e308 Pa or 1e-320 MPa: exit 1, "not finite").
+fn plausible_range(quantity: Quantity) -> Option<(f64, f64, &'static str, &'static str)> {
+    match quantity {
+        Quantity::Relaxation | Quantity::Storage | Quantity::Loss => Some((
+            1.0,
+            1e12,
+            "Pa",
+            ": not a rubber's modulus; check the units row (MPa for Pa, or kPa?)",
+        )),
+        Quantity::Time => Some((1e-30, 1e30, "s", ": check the units row")),
+        Quantity::Frequency => Some((1e-30, 1e30, "Hz", ": check the units row")),
+        Quantity::Omega => Some((1e-30, 1e30, "rad/s", ": check the units row")),
+        Quantity::Force => Some((1e-9, 1e9, "N", ": check the units row")),
+        Quantity::Retained | Quantity::Temperature => None,
+    }
+}
+
+/// One cell in SI: finite, positive (temperatures: above absolute zero), within
+/// [`plausible_range`]; frequencies as ω.
 fn cell_value(line: usize, cell: &str, column: &Column) -> Result<f64, Located> {
     let number = match cell.parse::<f64>() {
         Ok(v) if v.is_finite() => v,
@@ -602,6 +625,20 @@ fn cell_value(line: usize, cell: &str, column: &Column) -> Result<f64, Located> 
         return Err(at(
             line,
             format!("{}: must be positive, got {cell}", column.name),
+        ));
+    }
+    if let Some((lo, hi, unit, hint)) = plausible_range(column.quantity)
+        && !(lo..=hi).contains(&value)
+    {
+        return Err(at(
+            line,
+            format!(
+                "{}: {cell} is {} {unit}, outside {}–{} {unit}{hint}",
+                column.name,
+                show(value),
+                show(lo),
+                show(hi)
+            ),
         ));
     }
     Ok(if column.quantity == Quantity::Frequency {
@@ -1015,6 +1052,22 @@ mod tests {
                 .all(|(v, e)| (v - e).abs() < 1e-15)
         );
         assert!(parse_ok("t,F/F0\nh,1\n1,1\n2,0.9\n3,0.8\n", r).points() == 3);
+    }
+
+    /// A modulus of 1e200 MPa or 1e-320 MPa (the review's D10) once reached the fitter, whose
+    /// least squares overflowed: exit 1 "not finite". Now refused at its line with the range.
+    #[test]
+    fn moduli_beyond_a_rubbers_are_refused_at_their_line() {
+        for cell in ["1e200", "1e-320"] {
+            let e = error(
+                &format!("t,E_relax\ns,MPa\n1,10\n10,9\n100,8\n1000,7.5\n10000,{cell}\n"),
+                FitKind::Relaxation,
+            );
+            assert!(
+                e.starts_with("d.csv:7: E_relax:") && e.contains("outside 1–1e12 Pa"),
+                "{e}"
+            );
+        }
     }
 
     #[test]

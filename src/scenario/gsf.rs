@@ -20,14 +20,15 @@
 //! * the units default to metres and must be lengths (`m`, `um`, `µm`, `nm`, …);
 //! * the pixels must be square (`XReal/XRes = YReal/YRes` within 1e-6, relative): the
 //!   spectrum estimate and the numerical level assume one spacing;
-//! * each side at least 8 pixels, every value finite, and exactly
+//! * each side at least 8 pixels, at most `MAX_PIXELS` (8192²) in all, every value finite
+//!   and within ±10 mm (`MAX_HEIGHT`; FLT_MAX is a no-data marker), and exactly
 //!   `XRes · YRes` values after the padding (a short file is truncated, a longer one is
 //!   refused too: it is not what the header says).
 //!
 //! The file gives the pixel size and the height unit, so a scenario's `pixel_size` and
 //! `height_unit` are refused next to a `.gsf` map.
 
-use super::height_map::{HeightMapError, MIN_SIZE};
+use super::height_map::{HeightMapError, MAX_PIXELS, MIN_SIZE, implausible_height};
 use crate::numerical::Topography;
 use crate::units::{Dimension, parse_unit, show};
 
@@ -102,6 +103,16 @@ pub(super) fn parse(bytes: &[u8]) -> Result<Topography, HeightMapError> {
         }
     };
     let (nx, ny) = (count("XRes")?, count("YRes")?);
+    // checked: a header whose XRes · YRes wraps once passed the size check and panicked
+    let pixels = nx
+        .checked_mul(ny)
+        .filter(|&n| n <= MAX_PIXELS)
+        .ok_or_else(|| {
+            whole(format!(
+                "XRes × YRes = {nx} × {ny} is more than {MAX_PIXELS} pixels (8192 × 8192), the \
+             largest height map read: the header is corrupt, or crop or resample the map"
+            ))
+        })?;
     let unit = |name: &str| -> Result<f64, HeightMapError> {
         let Some((line, _, value)) = get(name) else {
             return Ok(1.0);
@@ -148,7 +159,7 @@ pub(super) fn parse(bytes: &[u8]) -> Result<Topography, HeightMapError> {
         )));
     }
     let data = &bytes[start..];
-    let expected = nx * ny * 4;
+    let expected = pixels * 4;
     if data.len() != expected {
         return Err(whole(format!(
             "XRes × YRes = {nx} × {ny} needs {expected} bytes of data after the header, found \
@@ -161,12 +172,12 @@ pub(super) fn parse(bytes: &[u8]) -> Result<Topography, HeightMapError> {
             }
         )));
     }
-    let mut heights = Vec::with_capacity(nx * ny);
+    let mut heights = Vec::with_capacity(pixels);
     for (i, chunk) in data.chunks_exact(4).enumerate() {
         let v = f64::from(f32::from_le_bytes([chunk[0], chunk[1], chunk[2], chunk[3]]));
-        if !v.is_finite() {
+        if let Some(why) = implausible_height(v, vertical) {
             return Err(whole(format!(
-                "value {} (row {}, column {}) is not finite",
+                "value {} (row {}, column {}): {why}",
                 i + 1,
                 i / nx + 1,
                 i % nx + 1
@@ -206,6 +217,42 @@ mod tests {
         (0..nx * ny)
             .map(|i| f64::from(f32::from_bits(0x3400_0000 + (i as u32 * 7919) % 100_000)))
             .collect()
+    }
+
+    /// The reliability review's D4 headers: `XRes · YRes · 4` wrapped to 0 and passed the size
+    /// check, then panicked ("capacity overflow"; an index out of bounds in the PSD estimate).
+    #[test]
+    fn a_header_whose_size_wraps_is_refused_not_a_panic() {
+        for (x, y, xr, yr) in [
+            ("4294967296", "1073741824", "1e-3", "0.00025"),
+            ("9223372036854775808", "9223372036854775808", "1", "1"),
+        ] {
+            let mut bytes =
+                format!("{MAGIC}\nXRes = {x}\nYRes = {y}\nXReal = {xr}\nYReal = {yr}\n")
+                    .into_bytes();
+            let pad = 4 - bytes.len() % 4;
+            bytes.extend(std::iter::repeat_n(0u8, pad));
+            let e = parse(&bytes).expect_err("refused");
+            assert!(e.message.contains("more than 67108864 pixels"), "{e:?}");
+        }
+    }
+
+    /// FLT_MAX, a profilometer's no-data marker, and a height beyond 10 mm are refused (one
+    /// 3.4e38 µm cell once made a life run take 105 s and leak 7.75e106 m³/s).
+    #[test]
+    fn a_no_data_cell_and_an_absurd_height_are_refused() {
+        let mut h = heights(8, 8);
+        h[9] = f64::from(f32::MAX);
+        let e = parse(&write(8, 8, 8e-6, 8e-6, &h)).expect_err("refused");
+        assert!(
+            e.message.contains("row 2, column 2") && e.message.contains("no-data"),
+            "{e:?}"
+        );
+        h[9] = 0.02; // 20 mm
+        let e = parse(&write(8, 8, 8e-6, 8e-6, &h)).expect_err("refused");
+        assert!(e.message.contains("height unit"), "{e:?}");
+        h[9] = 0.009; // 9 mm: within the bound
+        assert!(parse(&write(8, 8, 8e-6, 8e-6, &h)).is_ok());
     }
 
     #[test]

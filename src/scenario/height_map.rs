@@ -14,6 +14,48 @@ use crate::units::show;
 /// Smallest accepted grid side.
 pub const MIN_SIZE: usize = 8;
 
+/// Largest accepted grid, in pixels: 8192 × 8192 (2²⁶). A 4096² map takes about 55 bytes a
+/// pixel (0.9 GB) and 3–4 s in `sealsim surface` (measured on a 2-core machine); this bound
+/// keeps a map within a few GB and a corrupt header (`XRes · YRes` past any memory) from
+/// allocating at all. An engineering bound (assumed), not a property of the theory.
+pub const MAX_PIXELS: usize = 1 << 26;
+
+/// Largest accepted height magnitude \[m\]: 10 mm. A seal face's roughness (µm) with its
+/// form and tilt over a profilometer's field (mm) stays far below it; a height beyond it is a
+/// unit slip (a map in µm read as metres) or a no-data marker, and an absurd height makes the
+/// spectrum's moments, and the run time, explode (a 3.4e38 µm cell: 105 s and a leak of
+/// 1e107 m³/s before this bound). Assumed, chosen wide (band: roughness 1e-9–1e-4 m).
+pub const MAX_HEIGHT: f64 = 0.01;
+
+/// A value at or beyond this magnitude, in the file's own unit, is read as an instrument's
+/// no-data marker (single-precision FLT_MAX = 3.4028235e38, the common one, or 1e38).
+pub const NO_DATA: f64 = 1e38;
+
+/// Why a height `v` (in the file's unit, `unit` its SI factor) is refused, or `None`.
+pub fn implausible_height(v: f64, unit: f64) -> Option<String> {
+    if !v.is_finite() || !(v * unit).is_finite() {
+        return Some(format!("the height must be finite, got {}", show(v)));
+    }
+    if v.abs() >= NO_DATA {
+        return Some(format!(
+            "height {} looks like an instrument's no-data marker (FLT_MAX = 3.4e38): fill or \
+             crop the missing cells before using the map",
+            show(v)
+        ));
+    }
+    if (v * unit).abs() > MAX_HEIGHT {
+        return Some(format!(
+            "height {} = {} m is beyond ±{} m, not a seal surface's height: the likely slip \
+             is the height unit (a map in µm or nm read as metres: set height_unit) or a \
+             no-data marker",
+            show(v),
+            show(v * unit),
+            show(MAX_HEIGHT)
+        ));
+    }
+    None
+}
+
 /// A malformed height map: what is wrong and, when it is on one row, the 1-based line.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct HeightMapError {
@@ -51,6 +93,15 @@ pub(super) fn parse(text: &str, unit: f64) -> Result<(usize, usize, Vec<f64>), H
             }
             Some(_) => {}
         }
+        if heights.len() + cells.len() > MAX_PIXELS {
+            return Err(at(
+                line,
+                format!(
+                    "the grid passes {MAX_PIXELS} values (8192 × 8192), the largest height map \
+                     read: crop or resample it"
+                ),
+            ));
+        }
         for (column, cell) in cells.iter().enumerate() {
             heights.push(height(cell, column + 1, line, unit)?);
         }
@@ -83,17 +134,13 @@ pub(super) fn parse(text: &str, unit: f64) -> Result<(usize, usize, Vec<f64>), H
     Ok((columns, rows, heights))
 }
 
-/// A finite height (m) from one cell.
+/// A finite height (m) from one cell, within [`MAX_HEIGHT`].
 fn height(cell: &str, column: usize, line: usize, unit: f64) -> Result<f64, HeightMapError> {
     match cell.parse::<f64>() {
-        Ok(v) if v.is_finite() && (v * unit).is_finite() => Ok(v * unit),
-        Ok(v) => Err(at(
-            line,
-            format!(
-                "column {column}: the height must be finite, got {}",
-                show(v)
-            ),
-        )),
+        Ok(v) => match implausible_height(v, unit) {
+            None => Ok(v * unit),
+            Some(why) => Err(at(line, format!("column {column}: {why}"))),
+        },
         Err(_) => Err(at(line, format!("column {column}: not a number: {cell:?}"))),
     }
 }

@@ -2282,15 +2282,11 @@ impl Source<'_> {
         let spectrum =
             Spectrum::tabulated(&q, &c).map_err(|e| format_error(None, e.to_string()))?;
         // moments that overflow (C(q) of 1e308 …) make every later number meaningless
-        let (h_rms, slope) = (spectrum.rms_roughness(), spectrum.rms_slope());
-        if !(h_rms.is_finite() && slope.is_finite()) {
-            return Err(format_error(
-                None,
-                format!(
-                    "the spectrum's moments overflow (h_rms = {h_rms} m, rms slope = {slope}): \
-                     check the values and the units of C(q)"
-                ),
-            ));
+        if let Some(why) = super::surface_files::implausible_spectrum(
+            spectrum.rms_roughness(),
+            spectrum.rms_slope(),
+        ) {
+            return Err(format_error(None, why));
         }
 
         let q0 = self.optional(raw.q0.as_ref(), &Q0)?;

@@ -40,6 +40,7 @@ mod plots;
 mod pressure_history;
 mod ranges;
 mod ranking;
+mod reader_fuzz;
 mod report;
 mod rubber;
 mod run;
