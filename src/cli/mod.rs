@@ -435,36 +435,9 @@ pub(crate) fn leak_floor_flag(
     fluid: &crate::fluid::Fluid,
 ) -> Result<Option<f64>, CliError> {
     let Some(text) = text else { return Ok(None) };
-    let bad = |message: String| CliError::Input(format!("--leak-floor: {message}"));
-    let value = match (fluid.gas, fluid.mean_pressure()) {
-        (Some(gas), Some(p)) => match crate::units::parse_throughput(text, gas.temperature) {
-            Ok(q) => q / p,
-            Err(_) => crate::units::parse_quantity(text, crate::units::Dimension::VOLUME_FLOW)
-                .map_err(|_| {
-                    bad(format!(
-                        "{text:?} is neither a throughput nor a volume flow: give e.g. \
-                         \"1e-9 mbar*L/s\", \"1e-8 atm*cc/s\", \"1e-6 sccm\" or \"1e-10 Pa*m^3/s\""
-                    ))
-                })?,
-        },
-        _ => {
-            if crate::units::parse_throughput(text, 293.15).is_ok()
-                && crate::units::parse_quantity(text, crate::units::Dimension::VOLUME_FLOW).is_err()
-            {
-                return Err(bad(format!(
-                    "{text:?} is a gas throughput, but the fluid is a liquid: give a volume flow, \
-                     e.g. \"1e-15 m^3/s\", \"0.01 mL/h\" or \"1 drops/min\""
-                )));
-            }
-            crate::units::parse_quantity(text, crate::units::Dimension::VOLUME_FLOW)
-                .map_err(|e| bad(e.to_string()))?
-        }
-    };
-    if value.is_finite() && value > 0.0 {
-        Ok(Some(value))
-    } else {
-        Err(bad(format!("must be positive, got {text}")))
-    }
+    crate::workflow::leak::parse_leak_floor(text, fluid)
+        .map(Some)
+        .map_err(|message| CliError::Input(format!("--leak-floor: {message}")))
 }
 
 /// Writes a finished output: atomically to `path`, or to stdout.

@@ -4,6 +4,7 @@
 //! ([`SurfaceReport`]; its text, JSON and chart are `report::surface`'s). The command line
 //! parses the flags into [`SurfaceOptions`] (SI), calls these, renders and writes.
 
+use crate::plausibility::HeightStatistics;
 use crate::numerical::Topography;
 use crate::numerical::psd::{PsdOptions, fit_psd, radial_psd_topography};
 use crate::profile::{ProfileOptions, Trace, analyse, profile_parameters};
@@ -377,6 +378,13 @@ pub fn traces_report(
     };
     let rz: Vec<f64> = result.parameters.iter().filter_map(|p| p.rz).collect();
     let mut warnings = Vec::new();
+    // heights in µm under a units row of m still make a spectrum (docs/model.md §2.4)
+    for (name, trace) in named {
+        let stats = HeightStatistics::of_trace(trace.spacing, &trace.heights);
+        if let Some((text, _)) = stats.warning(None) {
+            warnings.push(format!("{name}: {text} [docs/model.md §2.4]"));
+        }
+    }
     if options.cutoff.is_none() {
         warnings.push(format!(
             "the traces ({} mm) are shorter than two sampling lengths of {} mm: Ra, Rq, Rz are \
@@ -474,6 +482,11 @@ pub fn map_report(
     let n = rows.len() as f64;
     let rz: Vec<f64> = rows.iter().filter_map(|p| p.rz).collect();
     let mut warnings = Vec::new();
+    // heights in µm read as m still make a spectrum (docs/model.md §2.4)
+    let stats = HeightStatistics::of_map(map.nx, map.ny, map.pixel, &map.heights);
+    if let Some((text, _)) = stats.warning(None) {
+        warnings.push(format!("{source}: {text} [docs/model.md §2.4]"));
+    }
     if row_cutoff.is_none() {
         warnings.push(format!(
             "the rows ({} mm) are shorter than two sampling lengths of {} mm: Ra, Rq, Rz are \
