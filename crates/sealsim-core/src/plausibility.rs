@@ -191,14 +191,16 @@ fn short(value: f64) -> String {
 mod tests {
     use super::*;
 
-    /// A sine grid `amplitude sin(2π x / wavelength)`: rms amplitude/√2, rms slope
-    /// 2π amplitude/(wavelength √2) (continuous values; first differences are within 1 % at 64
-    /// samples a wavelength).
+    /// A grid `amplitude cos(2π (x − x̄) / wavelength)` along x, even about the centre x̄ (so
+    /// the best-fit plane is flat: on whole periods its mean and tilt vanish): rms
+    /// amplitude/√2, rms slope 2π amplitude/(wavelength √2) (continuous values; first
+    /// differences are within 0.1 % at 64 samples a wavelength).
     fn sine(n: usize, pixel: f64, amplitude: f64, wavelength: f64) -> Vec<f64> {
+        let centre = (n as f64 - 1.0) / 2.0;
         (0..n * n)
             .map(|i| {
-                let x = (i % n) as f64 * pixel;
-                amplitude * (2.0 * std::f64::consts::PI * x / wavelength).sin()
+                let x = ((i % n) as f64 - centre) * pixel;
+                amplitude * (2.0 * std::f64::consts::PI * x / wavelength).cos()
             })
             .collect()
     }
