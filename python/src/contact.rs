@@ -15,13 +15,13 @@
 use crate::{PyScenario, ScenarioError, blocking, fidelity, float_column, internal, pressure};
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyList, PyString};
-use sealsim::plausibility::HeightStatistics;
-use sealsim::units::{self, Dimension};
 use sealsim::contact::{ContactSettings, Elastic, Junction};
 use sealsim::leak::{ContactPath, Fidelity, PathOptions};
 use sealsim::numerical::reference::{self, NumericalSettings, Surfaces};
 use sealsim::numerical::{HeightMap, Topography, psd};
+use sealsim::plausibility::HeightStatistics;
 use sealsim::surface::Spectrum;
+use sealsim::units::{self, Dimension};
 
 /// Smallest side of a height map, as a scenario's height map file (`scenario::height_map`).
 const MIN_SIDE: usize = 8;

@@ -65,7 +65,7 @@ pub struct LeakArgs {
 
     /// Comma-separated CONTACT pressures: a flat seal's nominal pressure, an O-ring's peak
     /// contact pressure with k_e ΔP (default: the scenario's own). Not the fluid pressure: for
-    /// "at 50 bar of oil" use --pressure-differences. Alias: --pressures.
+    /// "at 50 bar of oil" use --pressure-differences.
     // allow_hyphen_values: a negative pressure reaches parse_pressure (and its message)
     // instead of being read as an option
     #[arg(long, visible_alias = "pressures", value_name = "P,...", value_delimiter = ',',

@@ -168,8 +168,8 @@ pub enum Command {
     /// What would make it pass: the sensitivity of the verdict to each design variable and the
     /// smallest changes (alone and in pairs) that meet a life target, each verified by a run.
     Advise(Box<advise::AdviseArgs>),
-    /// Leak rate at one or more nominal pressures, as CSV (an O-ring: its installed profile, the
-    /// first state of `run`; a pressure is the profile's peak).
+    /// Leak rate of the installed seal (the first state of `run`) at fluid pressure differences
+    /// (--pressure-differences "50 bar, 210 bar") or at contact pressures, as CSV.
     Leak(leak::LeakArgs),
     /// Speed against accuracy: the scenario at every fidelity level and a ladder of numerical
     /// settings, with wall time and error against the most accurate setting.

@@ -241,7 +241,7 @@ pub fn at_pressure_differences(
 /// Which state `leak` evaluates for an O-ring (issue: say it in the output, not only the help);
 /// `given`: contact pressures were given, which the note then says are not fluid pressures.
 pub fn oring_state_note(scenario: &Scenario, given: bool) -> Option<String> {
-        let life = &scenario.life;
+    let life = &scenario.life;
     if !life.geometry.pressure_from_squeeze() {
         return None;
     }
@@ -250,7 +250,9 @@ pub fn oring_state_note(scenario: &Scenario, given: bool) -> Option<String> {
         crate::simulate::GrooveInterface::Counterface => {
             "counterface and groove bottom (the same surface) in parallel"
         }
-        crate::simulate::GrooveInterface::Own(_) => "counterface and groove bottom ([groove_surface]) in parallel",
+        crate::simulate::GrooveInterface::Own(_) => {
+            "counterface and groove bottom ([groove_surface]) in parallel"
+        }
     };
     let dp = life.fluid.pressure_difference;
     let energised = crate::units::human(life.energisation_factor * dp, 4);

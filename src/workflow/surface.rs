@@ -4,9 +4,9 @@
 //! ([`SurfaceReport`]; its text, JSON and chart are `report::surface`'s). The command line
 //! parses the flags into [`SurfaceOptions`] (SI), calls these, renders and writes.
 
-use crate::plausibility::HeightStatistics;
 use crate::numerical::Topography;
 use crate::numerical::psd::{PsdOptions, fit_psd, radial_psd_topography};
+use crate::plausibility::HeightStatistics;
 use crate::profile::{ProfileOptions, Trace, analyse, profile_parameters};
 use crate::roughness::{Band, DEFAULT_CUTOFF, DEFAULT_SHORT_CUTOFF, ra_from_rq, rz_over_rq};
 use crate::scenario::profile::read_trace;

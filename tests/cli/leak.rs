@@ -822,7 +822,11 @@ fn pressure_differences_of_the_piston_template_are_the_first_row_of_run() {
             let q = num(&row[col("leak_rate_m3_per_s")]);
             assert_eq!(q, num(&h("leak_rate_m3_per_s")), "{bar} bar");
             assert_eq!(row[col("state")], h("state"), "{bar} bar");
-            assert_eq!(leaks, q > 0.0 && row[col("state")] == "leaking", "{bar} bar: {q}");
+            assert_eq!(
+                leaks,
+                q > 0.0 && row[col("state")] == "leaking",
+                "{bar} bar: {q}"
+            );
             // the run fails at installation by extrusion exactly where the row says it extrudes
             let extrudes_in_run = summary["failure_mode"] == "extrusion"
                 && summary["time_to_failure_s"].as_f64() == Some(0.0);
@@ -867,7 +871,12 @@ fn contact_pressures_are_named_and_exclusive_of_pressure_differences() {
     let (code, stdout, stderr) = leak_in(
         dir.path(),
         &template,
-        &["--pressure-difference-sweep", "10bar..300bar", "--points", "3"],
+        &[
+            "--pressure-difference-sweep",
+            "10bar..300bar",
+            "--points",
+            "3",
+        ],
     );
     assert_eq!(code, Some(0), "{stderr}");
     let dps: Vec<f64> = stdout
@@ -877,5 +886,8 @@ fn contact_pressures_are_named_and_exclusive_of_pressure_differences() {
         .collect();
     assert_eq!(dps.len(), 3, "{stdout}");
     assert_eq!((dps[0], dps[2]), (1e6, 3e7));
-    assert!((dps[1] / (1e6f64 * 3e7).sqrt() - 1.0).abs() < 1e-12, "{dps:?}");
+    assert!(
+        (dps[1] / (1e6f64 * 3e7).sqrt() - 1.0).abs() < 1e-12,
+        "{dps:?}"
+    );
 }

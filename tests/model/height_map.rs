@@ -426,8 +426,14 @@ fn a_height_map_in_micrometres_read_as_metres_warns_with_the_slip() {
         .find(|l| l.contains("heights look like"))
         .unwrap_or_else(|| panic!("no unit-slip warning:\n{stderr}"));
     assert!(line.starts_with("warning: "), "{line}");
-    assert!(line.contains("scenario.toml:8: surface.height_unit"), "{line}");
-    assert!(line.contains("heights look like µm read as m: rms "), "{line}");
+    assert!(
+        line.contains("scenario.toml:8: surface.height_unit"),
+        "{line}"
+    );
+    assert!(
+        line.contains("heights look like µm read as m: rms "),
+        "{line}"
+    );
     assert!(line.contains(" m over 5.0e-7 m samples"), "{line}");
     assert!(line.contains("write height_unit = \"um\""), "{line}");
     for good in [
@@ -464,7 +470,10 @@ fn a_trace_in_micrometres_under_a_unit_of_metres_warns() {
         assert_eq!(warning.is_some(), warns, "{units}: {code:?}\n{stderr}");
         if let Some(line) = warning {
             assert!(line.starts_with("warning: "), "{line}");
-            assert!(line.contains("heights look 1.0e6 times too large"), "{line}");
+            assert!(
+                line.contains("heights look 1.0e6 times too large"),
+                "{line}"
+            );
             assert!(line.contains("surface.profile"), "{line}");
         }
     }

@@ -240,12 +240,18 @@ mod tests {
         assert!(slipped.implausible());
         assert_eq!(slipped.likely_factor(), Some(1e-6));
         let (text, unit) = slipped.warning(Some(1.0)).unwrap();
-        assert!(text.starts_with("heights look like µm read as m: rms 5.0e-1 m"), "{text}");
+        assert!(
+            text.starts_with("heights look like µm read as m: rms 5.0e-1 m"),
+            "{text}"
+        );
         assert_eq!(unit, Some("um"));
         // the unit named is relative to the one read: a file in mm whose heights are nm
         let as_mm = HeightStatistics::of_map(n, n, pixel, &as_um);
         let (text, unit) = as_mm.warning(Some(1e-3)).unwrap();
-        assert!(text.starts_with("heights look like nm read as mm"), "{text}");
+        assert!(
+            text.starts_with("heights look like nm read as mm"),
+            "{text}"
+        );
         assert_eq!(unit, Some("nm"));
     }
 
@@ -291,7 +297,10 @@ mod tests {
         };
         assert_eq!(s.likely_factor(), None);
         let (text, unit) = s.warning(Some(1.0)).unwrap();
-        assert!(text.starts_with("heights implausible for their spacing"), "{text}");
+        assert!(
+            text.starts_with("heights implausible for their spacing"),
+            "{text}"
+        );
         assert!(text.contains("pixel size"), "{text}");
         assert_eq!(unit, None);
     }
@@ -304,13 +313,18 @@ mod tests {
             spacing: 1e-6,
         };
         let (text, unit) = s.warning(None).unwrap();
-        assert!(text.starts_with("heights look 1.0e6 times too large"), "{text}");
+        assert!(
+            text.starts_with("heights look 1.0e6 times too large"),
+            "{text}"
+        );
         assert_eq!(unit, None);
     }
 
     #[test]
     fn a_trace_is_a_one_row_map() {
-        let z: Vec<f64> = (0..1000).map(|i| if i % 2 == 0 { 1e-6 } else { -1e-6 }).collect();
+        let z: Vec<f64> = (0..1000)
+            .map(|i| if i % 2 == 0 { 1e-6 } else { -1e-6 })
+            .collect();
         let s = HeightStatistics::of_trace(1e-6, &z);
         assert!((s.rms_height - 1e-6).abs() < 1e-9, "{s:?}");
         assert!((s.rms_slope - 2.0).abs() < 1e-12, "{s:?}");
