@@ -106,6 +106,6 @@ pub mod workflow;
 // they had before the split.
 pub use sealsim_core::{
     clogging, contact, dynamic, extrusion, fits, fluid, gas, gland, gland_design, interface, leak,
-    material, math, numerical, permeation, pressure, profile, roughness, seal, simulate, study,
-    surface, units, validity,
+    material, math, numerical, permeation, plausibility, pressure, profile, roughness, seal,
+    simulate, study, surface, units, validity,
 };

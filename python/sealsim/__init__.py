@@ -176,11 +176,19 @@ class RunResult:
     def __repr__(self) -> str:
         return f"RunResult({self.scenario.name!r}: {self.verdict_text})"
 
-    def plot(self, ax: Any = None) -> Any:
+    def plot(self, ax: Any = None, leak_floor: Union[float, str, None] = None) -> Any:
         """A matplotlib figure of the leak rate, the sealing force and the temperature
-        against time (three stacked axes; the failure marked). Needs matplotlib."""
+        against time (three stacked axes; the failure marked). Needs matplotlib.
+
+        The leak axis is clipped at the leak floor as ``sealsim run``'s chart clips it
+        (docs/model.md §15.2): ``leak_floor`` as ``--leak-floor`` takes it (m³/s, or a string
+        with units: ``"1e-15 m^3/s"``, a gas's ``"1e-9 mbar*L/s"``), default one molecule a
+        second. A rate below the floor, zero included, is drawn on the floor, never below; the
+        floor is a grey dashed line, and a run sealed throughout is labelled "sealed (below
+        floor)"."""
         import matplotlib.pyplot as plt
 
+        floor = self.scenario._inner._leak_floor(leak_floor)
         h = self.history
         t = numpy.asarray(h["time_s"], dtype=float)
         duration = t[-1] if len(t) else 0.0
@@ -188,10 +196,26 @@ class RunResult:
         scale, unit = (year, "years") if duration >= 2 * year else (day, "days")
         fig, axes = plt.subplots(3, 1, sharex=True, figsize=(7, 7))
         q = numpy.asarray(h["leak_rate_m3_per_s"], dtype=float)
-        positive = q[q > 0]
-        floor = positive.min() if positive.size else 1e-30
-        axes[0].semilogy(t / scale, numpy.maximum(q, floor))
+        # as life_chart.rs: below the floor (0 included, NaN too) reads on the floor
+        q_drawn = numpy.where(q >= floor, q, floor)
+        sealed = bool(numpy.all(q_drawn <= floor))
+        what = (
+            "the floor given"
+            if leak_floor is not None
+            else "one molecule a second"
+        )
+        label = f"sealed (below floor {floor:.2g} m³/s)" if sealed else "leak rate"
+        axes[0].semilogy(t / scale, q_drawn, label=label)
+        axes[0].axhline(
+            floor,
+            color="grey",
+            linestyle="--",
+            linewidth=1,
+            label=f"floor {floor:.2g} m³/s ({what}): below it reads sealed",
+        )
+        axes[0].set_ylim(bottom=10 ** numpy.floor(numpy.log10(floor)))
         axes[0].set_ylabel("leak rate [m³/s]")
+        axes[0].legend(fontsize="x-small", loc="upper left")
         axes[1].plot(t / scale, numpy.asarray(h["sealing_force_N_per_m"], dtype=float))
         axes[1].set_ylabel("sealing force [N/m]")
         axes[2].plot(t / scale, numpy.asarray(h["temperature_K"], dtype=float) - 273.15)
@@ -323,25 +347,52 @@ class Scenario:
 
     def leak(
         self,
-        pressures: Optional[Sequence[Union[float, str]]] = None,
+        contact_pressures: Optional[Sequence[Union[float, str]]] = None,
         fidelity: Optional[str] = None,
         progress: Any = None,
+        *,
+        pressure_differences: Optional[Sequence[Union[float, str]]] = None,
+        pressures: Optional[Sequence[Union[float, str]]] = None,
     ) -> Any:
-        """The leak at each nominal pressure (``sealsim leak``): Pa floats or strings with
-        units (``"2 bar"``); None for the scenario's own. At nominal pressure P0 the critical
-        junction ζc is where the contact area A(ζc)/A0 falls to the percolation threshold a_c =
-        0.4 (``[model] percolation_threshold``); its gap u_c = u1(ζc) gives
-        Q̇ = (L_y/L_x) α u_c³ ΔP/(12η) (Persson & Yang 2008, eqs. 1–3; docs/model.md §3). The table has the columns of
-        ``sealsim leak``'s CSV; its validity findings are ``.attrs["warnings"]`` of a
-        DataFrame. ``progress`` as for :meth:`run`."""
-        columns, findings = self._inner._leak(
-            None if pressures is None else list(pressures),
+        """The leak of the seal (``sealsim leak``), at one of two kinds of pressure (Pa floats or
+        strings with units, ``"2 bar"``):
+
+        * ``pressure_differences``: the FLUID pressure difference ΔP across the seal ("at 50 and
+          210 bar of oil"): one row per ΔP, the installed seal at its own squeeze evaluated with
+          that ΔP (an O-ring: the energisation k_e ΔP, its profile's strips, lift-off by the
+          fluid pressure), the first row of :meth:`run` with ``fluid.pressure_difference`` set
+          to ΔP; columns ``pressure_difference_Pa``, ``extrudes`` (``yes``/``no`` at
+          installation, blank without a gland), ``contact_pressure_Pa``, then as below
+          (``sealsim leak --pressure-differences``).
+        * ``contact_pressures`` (``pressures`` is its old name): the CONTACT pressure, a flat
+          seal's nominal pressure P0 or an O-ring's peak contact pressure (``sealsim leak
+          --contact-pressures``); for an O-ring a ``UserWarning`` says so. None (and no
+          ``pressure_differences``): the scenario's own state.
+
+        At nominal pressure P0 the critical junction ζc is where the contact area A(ζc)/A0 falls
+        to the percolation threshold a_c = 0.4 (``[model] percolation_threshold``); its gap u_c
+        = u1(ζc) gives Q̇ = (L_y/L_x) α u_c³ ΔP/(12η) (Persson & Yang 2008, eqs. 1–3;
+        docs/model.md §3). The table has the columns of ``sealsim leak``'s CSV; its validity
+        findings are ``.attrs["warnings"]`` of a DataFrame, the O-ring's note
+        ``.attrs["note"]``. ``progress`` as for :meth:`run`."""
+        if pressures is not None:
+            if contact_pressures is not None:
+                raise TypeError("leak: give contact_pressures or its old name pressures, not both")
+            contact_pressures = pressures
+        columns, findings, note = self._inner._leak(
+            None if contact_pressures is None else list(contact_pressures),
             fidelity,
             _progress(progress, "numerical level"),
+            None if pressure_differences is None else list(pressure_differences),
         )
+        if note is not None and contact_pressures is not None:
+            import warnings
+
+            warnings.warn(note, UserWarning, stacklevel=2)
         table = _table(columns)
         if hasattr(table, "attrs"):
             table.attrs["warnings"] = json.loads(findings)
+            table.attrs["note"] = note
         return table
 
     def __repr__(self) -> str:
@@ -544,7 +595,8 @@ def contact(
     scenario: Optional[Scenario] = None,
     *,
     height_map: Any = None,
-    pixel_size: Optional[float] = None,
+    pixel_size: Union[float, str, None] = None,
+    height_unit: Optional[str] = None,
     youngs_modulus: Optional[float] = None,
     poisson_ratio: float = 0.5,
     rms_roughness: Optional[float] = None,
@@ -559,9 +611,13 @@ def contact(
 
     The rubber is ``scenario``'s (its relaxed E* and ``[model]`` settings) or an elastic
     half-space (``youngs_modulus`` Pa, ``poisson_ratio``). The surface is ``height_map`` (a 2-D
-    array of heights in m, row ``iy``, column ``ix`` along the flow, with ``pixel_size`` m; a
-    non-square map runs on its centred even square, as a scenario's), else ``scenario``'s, else
-    a self-affine spectrum (``rms_roughness`` m, ``hurst_exponent``, ``q0``, ``q1`` 1/m).
+    array of heights, row ``iy``, column ``ix`` along the flow, in m or in ``height_unit``
+    (``"um"``), with ``pixel_size`` in m or a string with its unit, ``"0.5 um"``, read by the
+    scenario files' parser; a non-square map runs on its centred even square, as a
+    scenario's), else ``scenario``'s, else a self-affine spectrum (``rms_roughness`` m,
+    ``hurst_exponent``, ``q0``, ``q1`` 1/m). Heights implausible for their pixel (rms slope
+    above 10 at the pixel, or rms of 1 mm or more: docs/model.md §2.4) raise a ``UserWarning``
+    naming the likely unit slip ("heights look like µm read as m").
     Keywords that would be ignored (a modulus or spectrum beside a scenario, a spectrum beside
     a height map) raise :class:`ScenarioError`.
 
@@ -625,7 +681,12 @@ def contact(
         pixel_size,
         fidelity,
         viscosity,
+        height_unit,
     )
+    if raw.get("height_warning"):
+        import warnings
+
+        warnings.warn(raw["height_warning"], UserWarning, stacklevel=2)
     if raw["level"] == "numerical":
         return ContactResult(raw)
     return _table(raw["table"])

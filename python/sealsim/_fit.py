@@ -178,13 +178,13 @@ def _points(points: Sequence[Sequence[float]]) -> Any:
     return _table({"q_per_m": [p[0] for p in points], "C_m4": [p[1] for p in points]})
 
 
-def _trace_csv(x: Any, z: Any) -> str:
+def _trace_csv(x: Any, z: Any, z_unit: str = "m") -> str:
     x = numpy.asarray(x, dtype=float).ravel()
     z = numpy.asarray(z, dtype=float).ravel()
     if x.shape != z.shape:
         raise ValueError(f"surface: a trace's x and z differ in length ({x.size}, {z.size})")
     rows = [f"{repr(float(a))},{repr(float(b))}" for a, b in zip(x, z)]
-    return "\n".join(["x,z", "m,m", *rows]) + "\n"
+    return "\n".join(["x,z", f"m,{z_unit}", *rows]) + "\n"
 
 
 def _is_trace(item: Any) -> bool:
@@ -209,7 +209,10 @@ def surface(
     height grid with ``pixel_size``) or a list of trace paths (averaged); a 2-D numpy array of
     heights [m] (rows along x) with ``pixel_size`` [m]; a trace ``(x, z)`` [m] (or a dict /
     DataFrame with columns ``x`` and ``z``), or a list of them. Lengths are SI floats or strings
-    with units (``"0.8 mm"``); ``height_unit`` (``"um"``) scales a height grid. ``name``: the
+    with units (``"0.8 mm"``, by the scenario files' parser); ``height_unit`` (``"um"``) is the
+    unit of the heights of a grid or a trace's ``z`` (default m; a trace's ``x`` is in m).
+    Heights implausible for their spacing (rms slope above 10 at the spacing, or rms of 1 mm or
+    more: docs/model.md §2.4) raise a ``UserWarning`` with the likely unit slip. ``name``: the
     source's name in the summary (a list for several traces; default ``<heights>``,
     ``trace 1``, ...).
     """
@@ -243,10 +246,16 @@ def surface(
         traces = []
         for label, t in zip(names, items):
             x, z = (t["x"], t["z"]) if not isinstance(t, tuple) else t
-            traces.append((label, _trace_csv(x, z)))
+            traces.append((label, _trace_csv(x, z, (height_unit or "m").strip())))
         raw = _sealsim._surface(traces=traces, **options)
     text, spectrum, law = raw
     result = SurfaceResult(json.loads(text))
+    # heights implausible for their spacing (a unit slip, docs/model.md §2.4) warn at once
+    for w in result.get("warnings", []):
+        if "heights look" in w or "heights implausible" in w:
+            import warnings
+
+            warnings.warn(w, UserWarning, stacklevel=2)
     result.spectrum = _points(spectrum)
     result.law = _points(law)
     return result

@@ -14,12 +14,14 @@
 
 use crate::{PyScenario, ScenarioError, blocking, fidelity, float_column, internal, pressure};
 use pyo3::prelude::*;
-use pyo3::types::{PyBytes, PyDict, PyList};
+use pyo3::types::{PyBytes, PyDict, PyList, PyString};
 use sealsim::contact::{ContactSettings, Elastic, Junction};
 use sealsim::leak::{ContactPath, Fidelity, PathOptions};
 use sealsim::numerical::reference::{self, NumericalSettings, Surfaces};
 use sealsim::numerical::{HeightMap, Topography, psd};
+use sealsim::plausibility::HeightStatistics;
 use sealsim::surface::Spectrum;
+use sealsim::units::{self, Dimension};
 
 /// Smallest side of a height map, as a scenario's height map file (`scenario::height_map`).
 const MIN_SIDE: usize = 8;
@@ -36,7 +38,12 @@ fn bad(message: String) -> PyErr {
 /// A 2-D grid of heights from numpy: `heights` the native-endian `f64` bytes of a C-contiguous
 /// `ny × nx` array (row `iy`, column `ix` along the flow), `pixel` the spacing (m). Every height
 /// must be finite, each side at least [`MIN_SIDE`].
-fn topography(heights: &[u8], shape: (usize, usize), pixel: Option<f64>) -> PyResult<Topography> {
+fn topography(
+    heights: &[u8],
+    shape: (usize, usize),
+    pixel: Option<f64>,
+    unit: f64,
+) -> PyResult<Topography> {
     let (ny, nx) = shape;
     if nx < MIN_SIDE || ny < MIN_SIDE {
         return Err(bad(format!(
@@ -60,7 +67,7 @@ fn topography(heights: &[u8], shape: (usize, usize), pixel: Option<f64>) -> PyRe
     }
     let heights: Vec<f64> = heights
         .chunks_exact(8)
-        .map(|b| f64::from_ne_bytes([b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7]]))
+        .map(|b| f64::from_ne_bytes([b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7]]) * unit)
         .collect();
     if let Some(i) = heights.iter().position(|h| !h.is_finite()) {
         return Err(bad(format!(
@@ -403,12 +410,14 @@ fn numerical_result<'py>(
 /// nominal pressure \[Pa\], at an analytic level Persson's A/A0 at full magnification, ū(ζ = 1)
 /// and the critical junction; at the numerical level the boundary-element A/A0 and ū, the
 /// percolation verdict, the Reynolds conductance and the fields. `height_map`: the native
-/// `f64` bytes of a C-contiguous array of `shape` (ny, nx), heights in m, `pixel_size` m.
+/// `f64` bytes of a C-contiguous array of `shape` (ny, nx), heights in `height_unit` (default
+/// m), `pixel_size` m or a string with its unit. The dict's `height_warning`: the unit-slip
+/// warning of implausible heights, or `None`.
 #[pyfunction]
 #[pyo3(signature = (pressures, scenario = None, youngs_modulus = None, poisson_ratio = 0.5,
                     rms_roughness = None, hurst_exponent = None, q0 = None, q1 = None,
                     height_map = None, shape = None, pixel_size = None, fidelity = None,
-                    viscosity = None))]
+                    viscosity = None, height_unit = None))]
 #[allow(clippy::too_many_arguments)]
 fn _contact<'py>(
     py: Python<'py>,
@@ -422,19 +431,48 @@ fn _contact<'py>(
     q1: Option<f64>,
     height_map: Option<Bound<'py, PyBytes>>,
     shape: Option<(usize, usize)>,
-    pixel_size: Option<f64>,
+    pixel_size: Option<Bound<'py, PyAny>>,
     fidelity: Option<&str>,
     viscosity: Option<f64>,
+    height_unit: Option<&str>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let pressures = pressures
         .iter()
         .map(pressure)
         .collect::<PyResult<Vec<f64>>>()?;
+    // "0.5 um" by the scenario files' parser, or a float in m
+    let pixel_size = match &pixel_size {
+        Some(v) if v.is_instance_of::<PyString>() => {
+            let text: String = v.extract()?;
+            Some(
+                units::parse_quantity(&text, Dimension::LENGTH)
+                    .map_err(|e| bad(format!("pixel_size: {e}")))?,
+            )
+        }
+        Some(v) => Some(v.extract::<f64>()?),
+        None => None,
+    };
+    let unit = match height_unit {
+        Some(text) => crate::surface::height_unit(text)?,
+        None => 1.0,
+    };
     let map = match (height_map, shape) {
-        (Some(h), Some(shape)) => Some(topography(h.as_bytes(), shape, pixel_size)?),
+        (Some(h), Some(shape)) => Some(topography(h.as_bytes(), shape, pixel_size, unit)?),
         (Some(_), None) => return Err(bad("height_map needs its shape".to_owned())),
         (None, _) => None,
     };
+    // heights in µm passed as m still make a spectrum: the likely slip (docs/model.md §2.4)
+    let height_warning = map.as_ref().and_then(|m| {
+        HeightStatistics::of_map(m.nx, m.ny, m.pixel, &m.heights)
+            .warning(Some(unit))
+            .map(|(text, likely)| match likely {
+                Some(likely) => format!(
+                    "contact: height_map: {text}; pass height_unit=\"{likely}\" \
+                     [docs/model.md §2.4]"
+                ),
+                None => format!("contact: height_map: {text} [docs/model.md §2.4]"),
+            })
+    });
     let level = self::fidelity(fidelity)?;
     let pb = problem(
         scenario,
@@ -480,6 +518,7 @@ fn _contact<'py>(
         let out = PyDict::new(py);
         out.set_item("level", level.name())?;
         out.set_item("table", table)?;
+        out.set_item("height_warning", height_warning)?;
         return Ok(out);
     }
     let reduced: Vec<f64> = pressures.iter().map(|p| p / e_star).collect();
@@ -492,7 +531,9 @@ fn _contact<'py>(
         numerical_points(surfaces, &reduced, &numerical)
     })?
     .map_err(internal)?;
-    numerical_result(py, &points, &pressures, e_star, viscosity)
+    let out = numerical_result(py, &points, &pressures, e_star, viscosity)?;
+    out.set_item("height_warning", height_warning)?;
+    Ok(out)
 }
 
 /// Adds `_contact` to the module.

@@ -21,7 +21,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyBytes, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
 use sealsim::leak::Fidelity;
 use sealsim::material::Material;
-use sealsim::report::csv::{Cell, Table, leak_outcome_table};
+use sealsim::report::csv::{Cell, Table, leak_outcome_table, pressure_difference_table};
 use sealsim::report::life::{CompareRow, Summary, compare_table, history_for};
 use sealsim::scenario::study::Study;
 use sealsim::scenario::{Scenario, ScenarioError as RustScenarioError, library};
@@ -570,27 +570,61 @@ impl PyScenario {
         json.map_err(internal)
     }
 
-    /// `sealsim leak`: (table columns, findings JSON text). `pressures` in Pa (or strings with
-    /// units); `None`: the scenario's own.
-    #[pyo3(signature = (pressures = None, fidelity = None, progress = None))]
+    /// `sealsim leak`: (table columns, findings JSON text, the O-ring note). `pressures`: contact
+    /// pressures in Pa (or strings with units), `None` the scenario's own;
+    /// `pressure_differences`: fluid ΔP in Pa (or strings), one row each (`sealsim leak
+    /// --pressure-differences`), exclusive of `pressures`.
+    #[pyo3(signature = (pressures = None, fidelity = None, progress = None,
+                        pressure_differences = None))]
     fn _leak<'py>(
         &self,
         py: Python<'py>,
         pressures: Option<Vec<Bound<'py, PyAny>>>,
         fidelity: Option<&str>,
         progress: Option<Bound<'py, PyAny>>,
-    ) -> PyResult<(Bound<'py, PyDict>, String)> {
+        pressure_differences: Option<Vec<Bound<'py, PyAny>>>,
+    ) -> PyResult<(Bound<'py, PyDict>, String, Option<String>)> {
         let pressures = pressures
             .map(|list| list.iter().map(pressure).collect::<PyResult<Vec<f64>>>())
             .transpose()?;
+        let differences = pressure_differences
+            .map(|list| {
+                list.iter()
+                    .map(pressure_difference)
+                    .collect::<PyResult<Vec<f64>>>()
+            })
+            .transpose()?;
+        if pressures.is_some() && differences.is_some() {
+            return Err(ScenarioError::new_err(
+                "leak: give either contact_pressures or pressure_differences, not both",
+            ));
+        }
+        let note = if differences.is_some() {
+            None
+        } else {
+            workflow::leak::oring_state_note(&self.inner, pressures.is_some())
+        };
         let level = self::fidelity(fidelity)?.unwrap_or(self.inner.life.fidelity);
         let scenario = Arc::clone(&self.inner);
         let leak = move |progress: workflow::Progress<'_>| {
-            let outcome =
-                workflow::leak::evaluate(&scenario, pressures.as_deref(), level, progress);
-            let csv = leak_outcome_table(&outcome, scenario.life.fluid.mean_pressure());
-            let findings =
-                serde_json::to_string(&sealsim::report::findings::records(&outcome.findings));
+            let (csv, findings) = match &differences {
+                Some(differences) => {
+                    let (rows, findings) = workflow::leak::at_pressure_differences(
+                        &scenario,
+                        differences,
+                        level,
+                        progress,
+                    );
+                    (pressure_difference_table(&rows), findings)
+                }
+                None => {
+                    let outcome =
+                        workflow::leak::evaluate(&scenario, pressures.as_deref(), level, progress);
+                    let csv = leak_outcome_table(&outcome, scenario.life.fluid.mean_pressure());
+                    (csv, outcome.findings)
+                }
+            };
+            let findings = serde_json::to_string(&sealsim::report::findings::records(&findings));
             (csv, findings)
         };
         let (csv, findings) = if level == Fidelity::Numerical {
@@ -601,7 +635,30 @@ impl PyScenario {
             inline(py, || leak(&mut |_, _| {}))?
         };
         let csv = csv.map_err(internal)?;
-        Ok((columns(py, &csv)?, findings.map_err(internal)?))
+        Ok((columns(py, &csv)?, findings.map_err(internal)?, note))
+    }
+
+    /// The leak floor \[m³/s\] of `sealsim run`'s chart and summary (docs/model.md §15.2):
+    /// `text` read as `--leak-floor` reads it (a float: m³/s), `None` one molecule a second.
+    #[pyo3(signature = (value = None))]
+    fn _leak_floor(&self, value: Option<Bound<'_, PyAny>>) -> PyResult<f64> {
+        let fluid = &self.inner.life.fluid;
+        let floor = match value {
+            None => return Ok(fluid.one_molecule_per_second()),
+            Some(v) if v.is_instance_of::<PyString>() => {
+                let text: String = v.extract()?;
+                workflow::leak::parse_leak_floor(&text, fluid)
+                    .map_err(|m| ScenarioError::new_err(format!("leak_floor: {m}")))?
+            }
+            Some(v) => v.extract::<f64>()?,
+        };
+        if floor.is_finite() && floor > 0.0 {
+            Ok(floor)
+        } else {
+            Err(ScenarioError::new_err(format!(
+                "leak_floor: must be positive, got {floor} m³/s"
+            )))
+        }
     }
 
     fn __repr__(&self) -> String {
@@ -623,6 +680,24 @@ pub(crate) fn pressure(value: &Bound<'_, PyAny>) -> PyResult<f64> {
     } else {
         Err(PyValueError::new_err(format!(
             "a nominal pressure must be positive and finite, got {p} Pa"
+        )))
+    }
+}
+
+/// A fluid pressure difference ΔP ≥ 0: a float in Pa, or a string with its unit ("210 bar").
+fn pressure_difference(value: &Bound<'_, PyAny>) -> PyResult<f64> {
+    let p = if value.is_instance_of::<PyString>() {
+        let text: String = value.extract()?;
+        units::parse_quantity(&text, Dimension::PRESSURE)
+            .map_err(|e| PyValueError::new_err(format!("pressure difference \"{text}\": {e}")))?
+    } else {
+        value.extract::<f64>()?
+    };
+    if p.is_finite() && p >= 0.0 {
+        Ok(p)
+    } else {
+        Err(PyValueError::new_err(format!(
+            "a pressure difference must be at least 0 and finite, got {p} Pa"
         )))
     }
 }

@@ -20,6 +20,16 @@ fn length(value: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<Option<f64>>
     crate::fit::positive(value, name, Dimension::LENGTH)
 }
 
+/// The length unit of heights (`"um"`) as m per unit, by the scenario files' unit parser.
+pub(crate) fn height_unit(text: &str) -> PyResult<f64> {
+    match units::parse_unit(text.trim()) {
+        Ok((factor, dimension)) if dimension == Dimension::LENGTH => Ok(factor),
+        _ => Err(ScenarioError::new_err(format!(
+            "height_unit: expected a length unit such as m, um or nm, got {text:?}"
+        ))),
+    }
+}
+
 /// A surface error as the Python exception: a source that does not exist
 /// `FileNotFoundError`, other bad input `ScenarioError`, each with the CLI's message.
 fn surface_error(e: SurfaceError, sources: &[PathBuf]) -> PyErr {
@@ -64,14 +74,7 @@ fn _surface<'py>(
     pixel_size: Option<Bound<'py, PyAny>>,
     height_unit: Option<&str>,
 ) -> PyResult<Outcome> {
-    let unit = height_unit
-        .map(|text| match units::parse_unit(text.trim()) {
-            Ok((factor, dimension)) if dimension == Dimension::LENGTH => Ok(factor),
-            _ => Err(ScenarioError::new_err(format!(
-                "height_unit: expected a length unit such as m, um or nm, got {text:?}"
-            ))),
-        })
-        .transpose()?;
+    let unit = height_unit.map(self::height_unit).transpose()?;
     let options = SurfaceOptions {
         cutoff: length(cutoff.as_ref(), "cutoff")?,
         short_cutoff: length(short_cutoff.as_ref(), "short_cutoff")?,

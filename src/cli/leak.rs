@@ -3,7 +3,7 @@
 use super::{CliError, print_findings, print_scenario_warnings, progress_bar, write_output};
 use crate::leak::Fidelity;
 use crate::math::log_spaced;
-use crate::report::csv::leak_outcome_table;
+use crate::report::csv::{leak_outcome_table, pressure_difference_table};
 use crate::scenario::Scenario;
 use crate::units::{self, Dimension};
 use crate::workflow;
@@ -17,8 +17,16 @@ const MAX_SWEEP_POINTS: i64 = 1_000_000;
 
 /// Arguments of `sealsim leak`.
 #[derive(Debug, Clone, Args)]
+#[command(group(clap::ArgGroup::new("sweeps").args(["sweep", "pressure_difference_sweep"])))]
 #[command(
-    after_help = "Pressures need their units (\"0.2 MPa\", \"2bar\", \"30psi\"): a bare number is \
+    after_help = "Two kinds of pressure: --contact-pressures (alias --pressures) and --sweep give the \
+    CONTACT pressure (a flat seal's nominal pressure P0, an O-ring's peak contact pressure); \
+    --pressure-differences and --pressure-difference-sweep give the FLUID pressure difference ΔP \
+    (\"at 50 bar and 210 bar of oil\"), each row the installed seal at that ΔP as `sealsim run` \
+    starts from it, with the columns pressure_difference_Pa, extrudes (yes|no at installation, \
+    blank without a gland) and contact_pressure_Pa before zeta_c; a pressure history is not \
+    applied. Without either: the scenario's own state.\n\
+    Pressures need their units (\"0.2 MPa\", \"2bar\", \"30psi\"): a bare number is \
     refused.\n\
     Output columns: nominal_pressure_Pa, zeta_c, lambda_c_m, u_c_m, ubar_c_m, hrms_c_m, \
     leak_rate_m3_per_s, state (leaking|sealed|lift_off), area_fraction, mean_gap_m; lambda_c = \
@@ -55,20 +63,37 @@ pub struct LeakArgs {
     #[arg(value_name = "SCENARIO")]
     pub scenario: PathBuf,
 
-    /// Comma-separated nominal pressures (default: the scenario's seal.nominal_pressure).
+    /// Comma-separated CONTACT pressures: a flat seal's nominal pressure, an O-ring's peak
+    /// contact pressure with k_e ΔP (default: the scenario's own). Not the fluid pressure: for
+    /// "at 50 bar of oil" use --pressure-differences.
     // allow_hyphen_values: a negative pressure reaches parse_pressure (and its message)
     // instead of being read as an option
-    #[arg(long, value_name = "P,...", value_delimiter = ',', value_parser = parse_pressure,
-          allow_hyphen_values = true)]
-    pub pressures: Option<Vec<f64>>,
+    #[arg(long, visible_alias = "pressures", value_name = "P,...", value_delimiter = ',',
+          value_parser = parse_pressure, allow_hyphen_values = true)]
+    pub contact_pressures: Option<Vec<f64>>,
 
-    /// Log-spaced nominal pressures from A to B inclusive, e.g. 0.05MPa..1MPa.
-    #[arg(long, value_name = "A..B", value_parser = parse_sweep, conflicts_with = "pressures",
-          allow_hyphen_values = true)]
+    /// Log-spaced contact pressures from A to B inclusive, e.g. 0.05MPa..1MPa.
+    #[arg(long, value_name = "A..B", value_parser = parse_sweep,
+          conflicts_with = "contact_pressures", allow_hyphen_values = true)]
     pub sweep: Option<Sweep>,
 
-    /// Number of points of --sweep (default: 20).
-    #[arg(long, value_name = "N", requires = "sweep", allow_negative_numbers = true,
+    /// Comma-separated FLUID pressure differences ΔP across the seal, e.g. "50 bar, 210 bar":
+    /// the installed seal at its own squeeze evaluated at each ΔP (energisation, the profile's
+    /// strips, lift-off by the fluid pressure), the first row of `sealsim run` with
+    /// fluid.pressure_difference = ΔP.
+    #[arg(long, value_name = "ΔP,...", value_delimiter = ',', value_parser = parse_difference,
+          conflicts_with_all = ["contact_pressures", "sweep"], allow_hyphen_values = true)]
+    pub pressure_differences: Option<Vec<f64>>,
+
+    /// Log-spaced fluid pressure differences from A to B inclusive, e.g. 10bar..300bar (as
+    /// --pressure-differences).
+    #[arg(long, value_name = "A..B", value_parser = parse_sweep,
+          conflicts_with_all = ["contact_pressures", "sweep", "pressure_differences"],
+          allow_hyphen_values = true)]
+    pub pressure_difference_sweep: Option<Sweep>,
+
+    /// Number of points of --sweep or --pressure-difference-sweep (default: 20).
+    #[arg(long, value_name = "N", requires = "sweeps", allow_negative_numbers = true,
           value_parser = clap::value_parser!(u32).range(2..=MAX_SWEEP_POINTS))]
     pub points: Option<u32>,
 
@@ -113,6 +138,23 @@ fn parse_pressure(text: &str) -> Result<f64, String> {
     }
 }
 
+/// A fluid pressure difference ΔP ≥ 0 with its unit ("210 bar"; a bare number is refused).
+fn parse_difference(text: &str) -> Result<f64, String> {
+    let text = text.trim();
+    let value = match text.parse::<f64>() {
+        Ok(v) => return Err(Dimension::PRESSURE.bare_number_fix(v)),
+        Err(_) => units::parse_quantity(text, Dimension::PRESSURE).map_err(|e| e.to_string())?,
+    };
+    if value.is_finite() && value >= 0.0 {
+        Ok(value)
+    } else {
+        Err(format!(
+            "a pressure difference must be at least 0 and finite, got {} Pa",
+            units::show(value)
+        ))
+    }
+}
+
 /// `A..B` with `0 < A < B`.
 fn parse_sweep(text: &str) -> Result<Sweep, String> {
     let (a, b) = text
@@ -140,9 +182,18 @@ pub fn run(args: LeakArgs) -> Result<(), CliError> {
     if let Some(path) = args.output.as_deref() {
         super::expect_extension("-o", path, &["csv"])?;
     }
-    let pressures = match (&args.pressures, args.sweep) {
+    let points = args.points.unwrap_or(DEFAULT_SWEEP_POINTS);
+    let differences = match (&args.pressure_differences, args.pressure_difference_sweep) {
         (Some(list), _) => Some(list.clone()),
-        (None, Some(sweep)) => Some(sweep.pressures(args.points.unwrap_or(DEFAULT_SWEEP_POINTS))),
+        (None, Some(sweep)) => Some(sweep.pressures(points)),
+        (None, None) => None,
+    };
+    if let Some(differences) = differences {
+        return run_differences(&args, &scenario, &differences);
+    }
+    let pressures = match (&args.contact_pressures, args.sweep) {
+        (Some(list), _) => Some(list.clone()),
+        (None, Some(sweep)) => Some(sweep.pressures(points)),
         (None, None) => None,
     };
     let fidelity = args.fidelity.unwrap_or(scenario.life.fidelity);
@@ -155,9 +206,40 @@ pub fn run(args: LeakArgs) -> Result<(), CliError> {
     let csv = leak_outcome_table(&outcome, scenario.life.fluid.mean_pressure())?;
     print_scenario_warnings(None, &scenario);
     print_findings(None, &outcome.findings);
-    if let Some(note) = oring_state_note(&scenario) {
+    if let Some(note) = workflow::leak::oring_state_note(&scenario, pressures.is_some()) {
         eprintln!("note: {note}");
     }
+    gas_note(&scenario);
+    write_output(args.output.as_deref(), csv.as_bytes())
+}
+
+/// `sealsim leak --pressure-differences`: one row per fluid ΔP.
+fn run_differences(
+    args: &LeakArgs,
+    scenario: &Scenario,
+    differences: &[f64],
+) -> Result<(), CliError> {
+    let fidelity = args.fidelity.unwrap_or(scenario.life.fidelity);
+    let (rows, findings) = workflow::leak::at_pressure_differences(
+        scenario,
+        differences,
+        fidelity,
+        &mut progress_bar("numerical level"),
+    );
+    let csv = pressure_difference_table(&rows)?;
+    print_scenario_warnings(None, scenario);
+    print_findings(None, &findings);
+    if scenario.life.pressure.is_some() {
+        eprintln!(
+            "note: each row holds its ΔP constant: the scenario's pressure history is not applied"
+        );
+    }
+    gas_note(scenario);
+    write_output(args.output.as_deref(), csv.as_bytes())
+}
+
+/// A gas's throughput columns are the interface's only.
+fn gas_note(scenario: &Scenario) {
     if scenario.life.fluid.gas.is_some() {
         eprintln!(
             "note: the throughput columns are the flow through the interface only; permeation \
@@ -165,28 +247,6 @@ pub fn run(args: LeakArgs) -> Result<(), CliError> {
              permeation data: permeation_Pa_m3_per_s) [docs/model.md §3.9, §13.7]"
         );
     }
-    write_output(args.output.as_deref(), csv.as_bytes())
-}
-
-/// Which state `leak` evaluates for an O-ring (issue: say it in the output, not only the help).
-fn oring_state_note(scenario: &Scenario) -> Option<String> {
-    use crate::simulate::GrooveInterface;
-    let life = &scenario.life;
-    if !life.geometry.pressure_from_squeeze() {
-        return None;
-    }
-    let interfaces = match life.groove {
-        GrooveInterface::None => "one interface (a ring between plates)",
-        GrooveInterface::Counterface => {
-            "counterface and groove bottom (the same surface) in parallel"
-        }
-        GrooveInterface::Own(_) => "counterface and groove bottom ([groove_surface]) in parallel",
-    };
-    Some(format!(
-        "O-ring: the installed state `sealsim run` starts from; pressures are the peak contact \
-         pressure including k_e ΔP = {} Pa; {interfaces}",
-        units::human(life.energisation_factor * life.fluid.pressure_difference, 4)
-    ))
 }
 
 #[cfg(test)]

@@ -168,8 +168,8 @@ pub enum Command {
     /// What would make it pass: the sensitivity of the verdict to each design variable and the
     /// smallest changes (alone and in pairs) that meet a life target, each verified by a run.
     Advise(Box<advise::AdviseArgs>),
-    /// Leak rate at one or more nominal pressures, as CSV (an O-ring: its installed profile, the
-    /// first state of `run`; a pressure is the profile's peak).
+    /// Leak rate of the installed seal (the first state of `run`) at fluid pressure differences
+    /// (--pressure-differences "50 bar, 210 bar") or at contact pressures, as CSV.
     Leak(leak::LeakArgs),
     /// Speed against accuracy: the scenario at every fidelity level and a ladder of numerical
     /// settings, with wall time and error against the most accurate setting.
@@ -493,36 +493,9 @@ pub(crate) fn leak_floor_flag(
     fluid: &crate::fluid::Fluid,
 ) -> Result<Option<f64>, CliError> {
     let Some(text) = text else { return Ok(None) };
-    let bad = |message: String| CliError::Input(format!("--leak-floor: {message}"));
-    let value = match (fluid.gas, fluid.mean_pressure()) {
-        (Some(gas), Some(p)) => match crate::units::parse_throughput(text, gas.temperature) {
-            Ok(q) => q / p,
-            Err(_) => crate::units::parse_quantity(text, crate::units::Dimension::VOLUME_FLOW)
-                .map_err(|_| {
-                    bad(format!(
-                        "{text:?} is neither a throughput nor a volume flow: give e.g. \
-                         \"1e-9 mbar*L/s\", \"1e-8 atm*cc/s\", \"1e-6 sccm\" or \"1e-10 Pa*m^3/s\""
-                    ))
-                })?,
-        },
-        _ => {
-            if crate::units::parse_throughput(text, 293.15).is_ok()
-                && crate::units::parse_quantity(text, crate::units::Dimension::VOLUME_FLOW).is_err()
-            {
-                return Err(bad(format!(
-                    "{text:?} is a gas throughput, but the fluid is a liquid: give a volume flow, \
-                     e.g. \"1e-15 m^3/s\", \"0.01 mL/h\" or \"1 drops/min\""
-                )));
-            }
-            crate::units::parse_quantity(text, crate::units::Dimension::VOLUME_FLOW)
-                .map_err(|e| bad(e.to_string()))?
-        }
-    };
-    if value.is_finite() && value > 0.0 {
-        Ok(Some(value))
-    } else {
-        Err(bad(format!("must be positive, got {text}")))
-    }
+    crate::workflow::leak::parse_leak_floor(text, fluid)
+        .map(Some)
+        .map_err(|message| CliError::Input(format!("--leak-floor: {message}")))
 }
 
 /// Writes a finished output: atomically to `path`, or to stdout.

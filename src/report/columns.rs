@@ -302,7 +302,11 @@ pub const FILES: &[File] = &[
         prose: "One row per pressure. Numbers are in the shortest scientific form that \
                 round-trips (`2e5`); a cell without a value is empty. A gas adds its group \
                 after `state`; `[motion]` adds the sliding group, and a stroke cycle the stroke \
-                group after it.",
+                group after it. With `--pressure-differences` (one row per fluid ΔP) two \
+                columns come first, `pressure_difference_Pa` (the fluid pressure difference \
+                ΔP, Pa) and `extrudes` (`yes`/`no`: the extrusion check at installation at \
+                that ΔP; blank without a gland), and `nominal_pressure_Pa` is named \
+                `contact_pressure_Pa`.",
         groups: &[
             Group {
                 when: "always",

@@ -81,6 +81,46 @@ pub fn leak_outcome_table(
     }
 }
 
+/// `sealsim leak --pressure-differences`'s table (the Python package's
+/// `Scenario.leak(pressure_differences=…)`): one row per fluid pressure difference,
+/// `pressure_difference_Pa` and `extrudes` (`yes`/`no` at installation, blank without a gland)
+/// before the columns of [`leak_outcome_table`] at that ΔP, whose first column is named
+/// `contact_pressure_Pa` here (a flat seal's nominal pressure, an O-ring's peak contact pressure
+/// with k_e ΔP): the two pressures side by side, so neither is mistaken for the other.
+pub fn pressure_difference_table(
+    rows: &[crate::workflow::leak::DifferenceRow],
+) -> Result<String, ReportError> {
+    let mut out = String::new();
+    for (index, row) in rows.iter().enumerate() {
+        let table = leak_outcome_table(&row.outcome, row.mean_pressure)?;
+        let mut lines = table.lines();
+        let (Some(header), Some(record), None) = (lines.next(), lines.next(), lines.next()) else {
+            return Err(ReportError::Csv(format!(
+                "row {}: a pressure difference gives one point, got {} lines",
+                index + 1,
+                table.lines().count()
+            )));
+        };
+        if index == 0 {
+            let rest = header.strip_prefix(LEAK_COLUMNS[0]).unwrap_or(header);
+            out.push_str("pressure_difference_Pa,extrudes,contact_pressure_Pa");
+            out.push_str(rest);
+            out.push('\n');
+        }
+        let dp = number(index + 1, "pressure_difference_Pa", row.pressure_difference)?;
+        let extrudes = match row.extrudes {
+            Some(true) => "yes",
+            Some(false) => "no",
+            None => "",
+        };
+        out.push_str(&format!("{dp},{extrudes},{record}\n"));
+    }
+    if rows.is_empty() {
+        out.push_str("pressure_difference_Pa,extrudes,contact_pressure_Pa\n");
+    }
+    Ok(out)
+}
+
 /// The leak table of `points` with the [`CONTACT_COLUMNS`] of `contact` (`contact[i]` belongs
 /// to `points[i]`; `None` leaves its cells blank), header plus one row per point, as CSV text.
 pub fn leak_table(

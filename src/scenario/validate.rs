@@ -1657,12 +1657,12 @@ impl Source<'_> {
             }
         }
         if let Some(files) = &raw.profile {
-            let (spectrum, note) = self.profile_surface(raw, files)?;
-            return Ok((spectrum, None, vec![note]));
+            let (spectrum, notes) = self.profile_surface(raw, files)?;
+            return Ok((spectrum, None, notes));
         }
         if let Some(file) = &raw.height_map {
-            let (spectrum, map, note) = self.height_map_surface(raw, file)?;
-            return Ok((spectrum, Some(map), note.into_iter().collect()));
+            let (spectrum, map, notes) = self.height_map_surface(raw, file)?;
+            return Ok((spectrum, Some(map), notes));
         }
         for (present, key) in [
             (raw.pixel_size.as_ref().map(Spanned::span), PIXEL_SIZE.key),
@@ -1703,7 +1703,7 @@ impl Source<'_> {
         &self,
         raw: &RawSurface,
         files: &Spanned<crate::scenario::raw::Files>,
-    ) -> Result<(Spectrum, ScenarioError), ScenarioError> {
+    ) -> Result<(Spectrum, Vec<ScenarioError>), ScenarioError> {
         for (present, key) in [
             (
                 raw.rms_roughness.as_ref().map(Spanned::span),
@@ -1739,6 +1739,7 @@ impl Source<'_> {
             return Err(self.error(files.span(), "surface.profile", "names no trace file"));
         }
         let mut traces = Vec::with_capacity(names.len());
+        let mut slips = Vec::new();
         for name in &names {
             let path = self.relative_path(name);
             let trace = crate::scenario::profile::read_trace(&path).map_err(|e| {
@@ -1750,6 +1751,20 @@ impl Source<'_> {
                     message: e.message,
                 }
             })?;
+            // heights in µm under a units row of m still make a spectrum (§2.4)
+            if let Some((text, _)) =
+                crate::plausibility::HeightStatistics::of_trace(trace.spacing, &trace.heights)
+                    .warning(None)
+            {
+                slips.push(self.error(
+                    files.span(),
+                    "surface.profile",
+                    format!(
+                        "{}: {text}; check the z unit of its units row [docs/model.md §2.4]",
+                        path.display()
+                    ),
+                ));
+            }
             traces.push(trace);
         }
         let first = self.relative_path(names[0]);
@@ -1825,7 +1840,8 @@ impl Source<'_> {
                 spectrum.rms_slope()
             ),
         );
-        Ok((spectrum, note))
+        slips.insert(0, note);
+        Ok((spectrum, slips))
     }
 
     /// A drawing callout (`ra`, `rq` or `rz`, given as `value` of `field`) with `cutoff` λc
@@ -2055,7 +2071,7 @@ impl Source<'_> {
         &self,
         raw: &RawSurface,
         file: &Spanned<String>,
-    ) -> Result<(Spectrum, HeightMap, Option<ScenarioError>), ScenarioError> {
+    ) -> Result<(Spectrum, HeightMap, Vec<ScenarioError>), ScenarioError> {
         for (present, key) in [
             (
                 raw.rms_roughness.as_ref().map(Spanned::span),
@@ -2151,6 +2167,26 @@ impl Source<'_> {
             };
         let topography = super::surface_files::read_height_map(&path, pixel, unit)
             .map_err(|e| format_error(e.line, e.message))?;
+        // heights in µm read as m still make a spectrum: warn with the likely slip (§2.4)
+        let slip = crate::plausibility::HeightStatistics::of_map(
+            topography.nx,
+            topography.ny,
+            topography.pixel,
+            &topography.heights,
+        )
+        .warning(Some(unit))
+        .map(|(text, likely)| match (&raw.height_unit, likely) {
+            (Some(given), Some(likely)) => self.error(
+                given.span(),
+                HEIGHT_UNIT,
+                format!("{text}; write height_unit = \"{likely}\" [docs/model.md §2.4]"),
+            ),
+            _ => self.error(
+                file.span(),
+                HEIGHT_MAP,
+                format!("{text} (the file's own units) [docs/model.md §2.4]"),
+            ),
+        });
         let spectrum = map_psd::estimate_topography(&topography, &map_psd::PsdOptions::default())
             .map_err(|e| format_error(None, e.to_string()))?;
         // the numerical level needs a square periodic grid of even side: the centred crop
@@ -2181,7 +2217,7 @@ impl Source<'_> {
         let (span, key) = match (&raw.q0, &raw.q1) {
             (Some(q), _) => (q.span(), Q0.key),
             (None, Some(q)) => (q.span(), Q1.key),
-            (None, None) => return Ok((spectrum, map, note)),
+            (None, None) => return Ok((spectrum, map, note.into_iter().chain(slip).collect())),
         };
         let (lo, hi) = (q0.unwrap_or(spectrum.q0()), q1.unwrap_or(spectrum.q1()));
         let spectrum = spectrum.restricted(lo, hi).map_err(|e| {
@@ -2195,7 +2231,7 @@ impl Source<'_> {
                 ),
             )
         })?;
-        Ok((spectrum, map, note))
+        Ok((spectrum, map, note.into_iter().chain(slip).collect()))
     }
 
     fn self_affine_surface(&self, table: &Spanned<RawSurface>) -> Result<Spectrum, ScenarioError> {

@@ -6,6 +6,7 @@
 
 use crate::numerical::Topography;
 use crate::numerical::psd::{PsdOptions, fit_psd, radial_psd_topography};
+use crate::plausibility::HeightStatistics;
 use crate::profile::{ProfileOptions, Trace, analyse, profile_parameters};
 use crate::roughness::{Band, DEFAULT_CUTOFF, DEFAULT_SHORT_CUTOFF, ra_from_rq, rz_over_rq};
 use crate::scenario::profile::read_trace;
@@ -377,6 +378,13 @@ pub fn traces_report(
     };
     let rz: Vec<f64> = result.parameters.iter().filter_map(|p| p.rz).collect();
     let mut warnings = Vec::new();
+    // heights in µm under a units row of m still make a spectrum (docs/model.md §2.4)
+    for (name, trace) in named {
+        let stats = HeightStatistics::of_trace(trace.spacing, &trace.heights);
+        if let Some((text, _)) = stats.warning(None) {
+            warnings.push(format!("{name}: {text} [docs/model.md §2.4]"));
+        }
+    }
     if options.cutoff.is_none() {
         warnings.push(format!(
             "the traces ({} mm) are shorter than two sampling lengths of {} mm: Ra, Rq, Rz are \
@@ -474,6 +482,11 @@ pub fn map_report(
     let n = rows.len() as f64;
     let rz: Vec<f64> = rows.iter().filter_map(|p| p.rz).collect();
     let mut warnings = Vec::new();
+    // heights in µm read as m still make a spectrum (docs/model.md §2.4)
+    let stats = HeightStatistics::of_map(map.nx, map.ny, map.pixel, &map.heights);
+    if let Some((text, _)) = stats.warning(None) {
+        warnings.push(format!("{source}: {text} [docs/model.md §2.4]"));
+    }
     if row_cutoff.is_none() {
         warnings.push(format!(
             "the rows ({} mm) are shorter than two sampling lengths of {} mm: Ra, Rq, Rz are \

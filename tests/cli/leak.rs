@@ -600,11 +600,15 @@ fn nonexistent_scenario_file_is_named() {
 #[test]
 fn bad_pressure_value_is_rejected() {
     let case = Case::new(PAPER);
+    // the old name is an alias: the message names the option by its name
     case.rejects(
         &["--pressures", "0.1MPa,10 m"],
-        &["--pressures", "expected a pressure"],
+        &["--contact-pressures", "expected a pressure"],
     );
-    case.rejects(&["--pressures=-1MPa"], &["--pressures", "must be positive"]);
+    case.rejects(
+        &["--pressures=-1MPa"],
+        &["--contact-pressures", "must be positive"],
+    );
 }
 
 #[test]
@@ -751,4 +755,139 @@ fn water_below_freezing_is_a_located_warning() {
              (268.15 K), but water is liquid at 1 atm only from 0 °C (273.15 K) to 100 °C \
              (373.15 K)",
         ));
+}
+
+/// `sealsim leak SCENARIO ARGS…` on `text` written as `s.toml` in `dir`: (status, stdout,
+/// stderr).
+fn leak_in(dir: &Path, text: &str, args: &[&str]) -> (Option<i32>, String, String) {
+    fs::write(dir.join("s.toml"), text).unwrap();
+    let out = crate::support::sealsim()
+        .current_dir(dir)
+        .args(["leak", "s.toml"])
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code(),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+/// Issue 42: "50 bar, 210 bar" are the fluid pressures an engineer means. For the piston
+/// template (`sealsim new o-ring-piston`) each row of `--pressure-differences` must be the first
+/// row of an independent `sealsim run` of the same scenario with `fluid.pressure_difference`
+/// set to that ΔP: the same peak contact pressure (energised by k_e ΔP), leak rate and state,
+/// and `extrudes` as the run's extrusion verdict at installation. The template's honed bore
+/// seals, so the same with a turned bore (Ra 6.3 µm) that leaks: the leak rates compared are
+/// then not 0 = 0. Fails on the old code (no such option: exit 2).
+#[test]
+fn pressure_differences_of_the_piston_template_are_the_first_row_of_run() {
+    use crate::support::{edited, read_csv, run_in, shipped};
+    let template = shipped("templates/o-ring-piston.toml");
+    let turned = edited(&template, &[("ra = \"0.2 um\"", "ra = \"6.3 um\"")]);
+    for (text, leaks) in [(template, false), (turned, true)] {
+        let dir = TempDir::new().unwrap();
+        let (code, stdout, stderr) = leak_in(
+            dir.path(),
+            &text,
+            &["--pressure-differences", "50 bar, 210 bar"],
+        );
+        assert_eq!(code, Some(0), "{stderr}");
+        fs::write(dir.path().join("leak.csv"), &stdout).unwrap();
+        let (header, rows) = read_csv(&dir.path().join("leak.csv"));
+        let col = |name: &str| header.iter().position(|h| h == name).expect(name);
+        assert_eq!(
+            header[..3],
+            ["pressure_difference_Pa", "extrudes", "contact_pressure_Pa"]
+        );
+        assert_eq!(rows.len(), 2, "{stdout}");
+        for (row, bar) in rows.iter().zip([50, 210]) {
+            let dp: f64 = row[col("pressure_difference_Pa")].parse().unwrap();
+            assert_eq!(dp, f64::from(bar) * 1e5);
+            let line = format!("pressure_difference = \"{bar} bar\"");
+            let at = edited(&text, &[("pressure_difference =", &line)]);
+            let (summary, _) = run_in(dir.path(), &at, &["-o", "h.csv"]);
+            let (h_header, history) = read_csv(&dir.path().join("h.csv"));
+            let h = |name: &str| {
+                let i = h_header.iter().position(|x| x == name).expect(name);
+                history[0][i].clone()
+            };
+            let num = |s: &str| s.parse::<f64>().unwrap();
+            assert_eq!(
+                num(&row[col("contact_pressure_Pa")]),
+                num(&h("peak_pressure_Pa")),
+                "{bar} bar"
+            );
+            let q = num(&row[col("leak_rate_m3_per_s")]);
+            assert_eq!(q, num(&h("leak_rate_m3_per_s")), "{bar} bar");
+            assert_eq!(row[col("state")], h("state"), "{bar} bar");
+            assert_eq!(
+                leaks,
+                q > 0.0 && row[col("state")] == "leaking",
+                "{bar} bar: {q}"
+            );
+            // the run fails at installation by extrusion exactly where the row says it extrudes
+            let extrudes_in_run = summary["failure_mode"] == "extrusion"
+                && summary["time_to_failure_s"].as_f64() == Some(0.0);
+            assert_eq!(row[col("extrudes")] == "yes", extrudes_in_run, "{bar} bar");
+        }
+        // 210 bar = 3046 psi is above the chart's 3000 psi without back-up rings
+        assert_eq!(rows[1][col("extrudes")], "yes");
+        assert_eq!(rows[0][col("extrudes")], "no");
+    }
+}
+
+/// Contact pressures stay a separate, named option (`--pressures` its old name): an O-ring's
+/// output says they are contact pressures, not fluid pressures; the two kinds exclude each
+/// other, and a ΔP needs its unit and may not be negative (exit 2, nothing written).
+#[test]
+fn contact_pressures_are_named_and_exclusive_of_pressure_differences() {
+    let template = crate::support::shipped("templates/o-ring-piston.toml");
+    let dir = TempDir::new().unwrap();
+    for flag in ["--contact-pressures", "--pressures"] {
+        let (code, stdout, stderr) = leak_in(dir.path(), &template, &[flag, "50 bar"]);
+        assert_eq!(code, Some(0), "{stderr}");
+        assert!(stdout.starts_with(HEADER), "{stdout}");
+        assert!(
+            stderr.contains("the pressures given are CONTACT pressures")
+                && stderr.contains("use --pressure-differences"),
+            "{stderr}"
+        );
+    }
+    for args in [
+        &["--pressure-differences", "50 bar", "--pressures", "1 MPa"][..],
+        &["--pressure-differences", "50"],
+        &["--pressure-differences", "-5 bar"],
+        &["--pressure-difference-sweep", "210bar..50bar"],
+        &["--points", "4"],
+    ] {
+        let (code, stdout, stderr) = leak_in(dir.path(), &template, args);
+        assert_eq!(code, Some(2), "{args:?}: {stderr}");
+        assert!(stdout.is_empty(), "{args:?}");
+        assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
+    }
+    // a ΔP sweep: log-spaced, both ends included, one row each
+    let (code, stdout, stderr) = leak_in(
+        dir.path(),
+        &template,
+        &[
+            "--pressure-difference-sweep",
+            "10bar..300bar",
+            "--points",
+            "3",
+        ],
+    );
+    assert_eq!(code, Some(0), "{stderr}");
+    let dps: Vec<f64> = stdout
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').next().unwrap().parse().unwrap())
+        .collect();
+    assert_eq!(dps.len(), 3, "{stdout}");
+    assert_eq!((dps[0], dps[2]), (1e6, 3e7));
+    assert!(
+        (dps[1] / (1e6f64 * 3e7).sqrt() - 1.0).abs() < 1e-12,
+        "{dps:?}"
+    );
 }

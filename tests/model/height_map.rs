@@ -399,3 +399,82 @@ fn the_numerical_level_runs_on_the_measured_map_itself() {
     assert_eq!(rates.len(), 2);
     assert!(rates[0] > rates[1] && rates[1] >= 0.0, "{rates:?}");
 }
+
+/// `sealsim leak scenario.toml` of `case`: (status, stderr).
+fn leak_stderr(dir: &std::path::Path) -> (Option<i32>, String) {
+    let out = cargo_bin_cmd!("sealsim")
+        .current_dir(dir)
+        .args(["leak", "scenario.toml"])
+        .output()
+        .unwrap();
+    (out.status.code(), String::from_utf8(out.stderr).unwrap())
+}
+
+/// Issue 42: a height map in µm with `height_unit = "m"` (the review's slip: rms ≈ 1 m over
+/// 0.5 µm pixels) warns with the likely slip and the fix at the height_unit line; the same
+/// file with the right unit, and the map in metres, do not. Fails on the old code (no
+/// warning).
+#[test]
+fn a_height_map_in_micrometres_read_as_metres_warns_with_the_slip() {
+    let map = synthetic_map(3);
+    let in_um = csv(&map, 1e-6);
+    let slipped = Case::with_map(&in_um);
+    let (code, stderr) = leak_stderr(slipped.dir.path());
+    assert_eq!(code, Some(0), "{stderr}");
+    let line = stderr
+        .lines()
+        .find(|l| l.contains("heights look like"))
+        .unwrap_or_else(|| panic!("no unit-slip warning:\n{stderr}"));
+    assert!(line.starts_with("warning: "), "{line}");
+    assert!(
+        line.contains("scenario.toml:8: surface.height_unit"),
+        "{line}"
+    );
+    assert!(
+        line.contains("heights look like µm read as m: rms "),
+        "{line}"
+    );
+    assert!(line.contains(" m over 5.0e-7 m samples"), "{line}");
+    assert!(line.contains("write height_unit = \"um\""), "{line}");
+    for good in [
+        Case::new(
+            "height_map = \"map.csv\"\npixel_size = \"0.5 um\"\nheight_unit = \"um\"",
+            &in_um,
+        ),
+        Case::with_map(&csv(&map, 1.0)),
+    ] {
+        let (code, stderr) = leak_stderr(good.dir.path());
+        assert_eq!(code, Some(0), "{stderr}");
+        assert!(!stderr.contains("heights look"), "{stderr}");
+    }
+}
+
+/// The same for line traces: the shipped fine-ground trace (x in mm, z in µm) with its units
+/// row saying `mm,m` warns that the heights look 10⁶ times too large for their unit.
+#[test]
+fn a_trace_in_micrometres_under_a_unit_of_metres_warns() {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scenarios");
+    let scenario = fs::read_to_string(root.join("oring-nbr-water-80c-trace.toml")).unwrap();
+    let trace = fs::read_to_string(root.join("traces/ground-fine.csv")).unwrap();
+    for (units, warns) in [("mm,um", false), ("mm,m", true)] {
+        let dir = TempDir::new().unwrap();
+        fs::create_dir(dir.path().join("traces")).unwrap();
+        fs::write(dir.path().join("scenario.toml"), &scenario).unwrap();
+        fs::write(
+            dir.path().join("traces/ground-fine.csv"),
+            trace.replacen("\nmm,um\n", &format!("\n{units}\n"), 1),
+        )
+        .unwrap();
+        let (code, stderr) = leak_stderr(dir.path());
+        let warning = stderr.lines().find(|l| l.contains("heights look"));
+        assert_eq!(warning.is_some(), warns, "{units}: {code:?}\n{stderr}");
+        if let Some(line) = warning {
+            assert!(line.starts_with("warning: "), "{line}");
+            assert!(
+                line.contains("heights look 1.0e6 times too large"),
+                "{line}"
+            );
+            assert!(line.contains("surface.profile"), "{line}");
+        }
+    }
+}

@@ -23,6 +23,7 @@ pub mod leak;
 pub mod material;
 pub mod numerical;
 pub mod permeation;
+pub mod plausibility;
 pub mod pressure;
 pub mod profile;
 pub mod roughness;
