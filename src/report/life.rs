@@ -1298,7 +1298,15 @@ pub fn run_summary(
 fn target(duration: f64) -> String {
     let text = human_time(duration);
     match text.split_once(' ') {
-        Some((n, unit)) => format!("{n}-{}", unit.strip_suffix('s').unwrap_or(unit)),
+        Some((n, unit)) => {
+            let unit = match unit {
+                "s" => "second",
+                "min" => "minute",
+                "h" => "hour",
+                other => other.strip_suffix('s').unwrap_or(other),
+            };
+            format!("{n}-{unit}")
+        }
         None => text,
     }
 }
