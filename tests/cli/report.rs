@@ -112,6 +112,7 @@ fn a_leak_below_the_floor_reads_sealed_its_chart_stops_at_the_floor_and_the_csv_
     let text = run_ok(&[
         &"run",
         &paper,
+        &"--verbose",
         &"--leak-floor",
         &"1e-12 m^3/s",
         &"-o",
