@@ -1750,13 +1750,19 @@ pub fn brief_summary(
                 Some((q, t)) if !floor.seals(q) => format!("; highest {} {}", show(q), at_time(t)),
                 _ => String::new(),
             };
+            let (first, last) = (
+                rate(result.rows.first(), &show),
+                rate(result.rows.last(), &show),
+            );
+            // what "≈ 0" stands for (docs/model.md §15.2)
+            let zero = if first.starts_with("≈ 0") || last.starts_with("≈ 0") {
+                format!(" (≈ 0: below {}, {})", show(floor.rate), floor.meaning())
+            } else {
+                String::new()
+            };
             out.line(
                 "leak rate",
-                format!(
-                    "{} at installation, {} after {duration}{highest}",
-                    rate(result.rows.first(), &show),
-                    rate(result.rows.last(), &show)
-                ),
+                format!("{first} at installation, {last} after {duration}{highest}{zero}"),
             );
         }
     }
