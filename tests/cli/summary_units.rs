@@ -25,22 +25,41 @@ fn the_headline_opens_with_its_verdict_and_is_short_quiet_and_verbose_agree() {
     assert!(lines[0].ends_with("[ILLUSTRATIVE data]"), "{}", lines[0]);
     assert!(lines.len() <= 25, "{} lines:\n{brief}", lines.len());
     for line in &lines[1..] {
-        assert!(line.chars().count() <= 120, "{} chars: {line}", line.chars().count());
+        assert!(
+            line.chars().count() <= 120,
+            "{} chars: {line}",
+            line.chars().count()
+        );
     }
     assert!(brief.contains("!!! ILLUSTRATIVE material data"), "{brief}");
     // the derivations are --verbose's, not the default's
     assert!(!brief.contains("ageing         two networks"), "{brief}");
 
     let quiet = sealsim_ok(&[&"run", &headline(), &"--quiet"]);
-    assert_eq!(quiet, format!("{}\n", lines[0]), "--quiet: the verdict line alone");
+    assert_eq!(
+        quiet,
+        format!("{}\n", lines[0]),
+        "--quiet: the verdict line alone"
+    );
 
     let verbose = sealsim_ok(&[&"run", &headline(), &"--verbose"]);
     let mut v = verbose.lines();
     assert_eq!(v.next(), Some(lines[0]), "{verbose}");
     let body: Vec<&str> = v.collect();
     // the full body of before: scenario first, the derivations, the result last
-    assert!(body[0].starts_with("scenario       NBR O-ring face seal"), "{verbose}");
-    for label in ["material", "seal", "fluid", "temperature", "ageing", "lowest", "level band"] {
+    assert!(
+        body[0].starts_with("scenario       NBR O-ring face seal"),
+        "{verbose}"
+    );
+    for label in [
+        "material",
+        "seal",
+        "fluid",
+        "temperature",
+        "ageing",
+        "lowest",
+        "level band",
+    ] {
         assert!(
             body.iter().any(|l| l.starts_with(&format!("{label:<15}"))),
             "--verbose lacks {label}:\n{verbose}"
@@ -108,11 +127,20 @@ fn us_units_in_the_summary_and_the_csv_which_reads_back_to_the_same_si_values() 
     let text = sealsim_ok(&[&"run", &headline(), &"--units", &"us", &"-o", &us]);
     // the summary: pressures in psi, temperatures in °F, lengths in inches, forces in lbf/in
     // (80 °C = 176 °F; ΔP 2 bar = 29.0 psi)
-    for needle in ["176 °F", "ΔP 29 psi", " in at installation", "lbf/in", " cc in 30 years"] {
+    for needle in [
+        "176 °F",
+        "ΔP 29 psi",
+        " in at installation",
+        "lbf/in",
+        " cc in 30 years",
+    ] {
         assert!(text.contains(needle), "no {needle:?} in:\n{text}");
     }
     // (the scenario's name says "80 °C": the figures are what must not)
-    let figures: String = text.lines().filter(|l| !l.starts_with("scenario")).collect();
+    let figures: String = text
+        .lines()
+        .filter(|l| !l.starts_with("scenario"))
+        .collect();
     for si in ["MPa", "°C", "N/mm", "m³"] {
         assert!(!figures.contains(si), "{si} in:\n{text}");
     }
