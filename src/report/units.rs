@@ -368,10 +368,17 @@ mod tests {
                 Cell::Text("sealed".into()),
             ]],
         };
-        assert_eq!(
-            table_csv(&table, UnitSystem::Us).unwrap(),
-            "time_s,temperature_F,u_c_in,state\n1e0,2.12e2,,sealed\n"
+        let csv = table_csv(&table, UnitSystem::Us).unwrap();
+        let mut lines = csv.lines();
+        assert_eq!(lines.next(), Some("time_s,temperature_F,u_c_in,state"));
+        let cells: Vec<&str> = lines.next().unwrap().split(',').collect();
+        assert_eq!(cells[0], "1e0");
+        // 373.15 K is 212 °F (water's boiling point at 1 atm, by the scale's definition)
+        assert!(
+            (cells[1].parse::<f64>().unwrap() - 212.0).abs() < 1e-12,
+            "{csv}"
         );
+        assert_eq!(&cells[2..], ["", "sealed"]);
         assert_eq!(
             table_csv(&table, UnitSystem::Si).unwrap(),
             table.to_csv().unwrap()
