@@ -9,8 +9,11 @@
 use super::{CliError, print_findings, print_scenario_warnings, progress_bar, write_output};
 use crate::leak::Fidelity;
 use crate::report::html;
-use crate::report::life::{LeakFloor, Summary, history_table_for, human_summary};
+use crate::report::life::{
+    Detail, LeakFloor, Summary, brief_summary, history_for, human_summary, run_summary,
+};
 use crate::report::life_chart::life_chart;
+use crate::report::units::table_csv;
 use crate::scenario::Scenario;
 use crate::simulate::LifeResult;
 use crate::workflow;
@@ -20,7 +23,8 @@ use std::path::PathBuf;
 /// Arguments of `sealsim run`.
 #[derive(Debug, Clone, Args)]
 #[command(
-    after_help = "History columns (CSV, SI units): time_s, temperature_K, reduced_time_s, \
+    after_help = "Summary: a verdict line first (PASS, FAIL, OPEN or UNDECIDED, the life against the run's duration, the failure mode and its quantity against the limit), then the key figures; --quiet the verdict line alone, --verbose the full derivation.\n\
+    History columns (CSV; SI units, or those of --units in the names, e.g. temperature_F, peak_pressure_psi, leak_rate_cc_per_min): time_s, temperature_K, reduced_time_s, \
     shift_factor (blank when frozen), sealing_force_N_per_m, peak_pressure_Pa, mean_pressure_Pa, \
     contact_width_m, u_c_m (blank when sealed at the peak), leak_rate_m3_per_s, \
     leaked_volume_m3, state (sealed|leaking|pressure_held|lift_off), open_fraction (open share of the critical channels' flow under particle clogging; 1 without [contamination]), compression_set (chemical, with [ageing]), shutdown_squeeze (the set ring's squeeze at the shutdown condition). The first row is the installation, t = 0. With --fail-exit-code N the run exits N when the seal fails or is open (docs/model.md §8.1).\n\
@@ -75,8 +79,35 @@ pub struct RunArgs {
     #[arg(long, value_name = "LEVEL", value_parser = super::FidelityArg)]
     pub fidelity: Option<Fidelity>,
 
+    /// Print the verdict line only (PASS, FAIL, OPEN or UNDECIDED; the life against the
+    /// run's duration, the failure mode and its quantity against the limit).
+    #[arg(short, long, conflicts_with = "verbose")]
+    pub quiet: bool,
+
+    /// Print the verdict line and the full derivation (material, seal, fluid, ageing, level
+    /// band; SI) instead of the short table.
+    #[arg(short, long)]
+    pub verbose: bool,
+
+    /// Units of the summary, the HTML report and the history CSV's columns: si (the CSV in
+    /// m, Pa, K, N/m, m³/s), metric (mm, bar, °C, N/mm, mL/min, mL, mbar·L/s) or us (in, psi,
+    /// °F, lbf/in, cc/min, cc, atm·cc/s). The CSV's column names carry the unit; the JSON
+    /// summary is SI always.
+    #[arg(long, value_name = "SYSTEM", default_value = "si", value_parser = units_arg)]
+    pub units: crate::report::units::UnitSystem,
+
     #[command(flatten)]
     pub fail: super::FailExitCode,
+}
+
+/// `--units`: `si`, `metric` or `us` (shared by the commands that take it).
+pub(crate) fn units_arg(text: &str) -> Result<crate::report::units::UnitSystem, String> {
+    crate::report::units::UnitSystem::from_name(text).ok_or_else(|| {
+        format!(
+            "unknown unit system {text:?}: expected one of {}",
+            crate::report::units::UnitSystem::NAMES.join(", ")
+        )
+    })
 }
 
 /// Runs `sealsim run`.
@@ -109,7 +140,10 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
     let csv = args
         .output
         .as_ref()
-        .map(|_| history_table_for(&result, &scenario.life.fluid))
+        .map(|_| {
+            history_for(&result, &scenario.life.fluid)
+                .and_then(|table| table_csv(&table, args.units))
+        })
         .transpose()?;
     let json = args
         .summary
@@ -121,11 +155,35 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
         .then(|| life_chart(&scenario.name, &scenario.life, &result, &floor))
         .transpose()
         .map_err(|e| CliError::Internal(e.to_string()))?;
-    let text = human_summary(&scenario.name, &file, &scenario.life, &result, &floor);
-    let page = args
-        .report
-        .as_ref()
-        .map(|_| report_page(&scenario, &file, &result, &text, svg.as_deref(), &floor));
+    let detail = match (args.quiet, args.verbose) {
+        (true, _) => Detail::Quiet,
+        (_, true) => Detail::Verbose,
+        _ => Detail::Brief,
+    };
+    let text = run_summary(
+        &scenario.name,
+        &file,
+        &scenario.life,
+        &result,
+        &floor,
+        args.units,
+        detail,
+    );
+    let page = args.report.as_ref().map(|_| {
+        let life = &scenario.life;
+        // the verdict is the report's banner; the key figures follow in the units asked for
+        let brief = brief_summary(&scenario.name, &file, life, &result, &floor, args.units);
+        let full = human_summary(&scenario.name, &file, life, &result, &floor);
+        report_page(
+            &scenario,
+            &file,
+            &result,
+            &brief,
+            &full,
+            svg.as_deref(),
+            &floor,
+        )
+    });
 
     let plot = super::plot_file(args.plot.as_deref(), svg.as_deref())?;
 
@@ -154,6 +212,7 @@ fn report_page(
     file: &str,
     result: &LifeResult,
     summary: &str,
+    derivation: &str,
     svg: Option<&str>,
     floor: &LeakFloor,
 ) -> String {
@@ -180,7 +239,10 @@ fn report_page(
         .collect();
     body += &html::record("sealsim run", &inputs);
     body += &html::heading("Summary");
+    // the verdict line and the key figures in the units asked for, then the derivation (SI)
     body += &html::summary_table(summary);
+    body += &html::heading("Derivation (SI)");
+    body += &html::summary_table(derivation);
     body += &html::paragraph(&format!(
         "Leak rates below {} m³/s ({}) read \"sealed\" and are drawn at that floor; the history \
          CSV keeps the raw values.",

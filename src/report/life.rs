@@ -9,6 +9,7 @@
 use super::ReportError;
 use super::csv::{Cell, Table, csv_error, finish, number};
 use super::plot::{LogLogChart, Series};
+use super::units::{Quantity, UnitSystem};
 use crate::dynamic::{Motion, MotionPoint, MotionSpec, StrokeCycle};
 use crate::fluid::Fluid;
 use crate::material::shift::{DAY, YEAR};
@@ -1257,6 +1258,591 @@ pub fn human_summary(
         out.line("level band", band_line(problem, result, band));
     }
     out.line("result", verdict(problem, result).text);
+    out.text
+}
+
+/// How much of a run's summary the terminal gets (`--quiet`, the default, `--verbose`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Detail {
+    /// The verdict line only.
+    Quiet,
+    /// The verdict line and the short table of key figures ([`brief_summary`]).
+    #[default]
+    Brief,
+    /// The verdict line and the full derivation ([`human_summary`], SI).
+    Verbose,
+}
+
+/// The terminal summary of a run: [`verdict_line`] first, then what `detail` asks for. The
+/// verdict line and the short table are in `units`; the verbose derivation stays SI.
+pub fn run_summary(
+    scenario: &str,
+    file: &str,
+    problem: &LifeProblem,
+    result: &LifeResult,
+    floor: &LeakFloor,
+    units: UnitSystem,
+    detail: Detail,
+) -> String {
+    let mut text = verdict_line(problem, result, floor, units);
+    text.push('\n');
+    match detail {
+        Detail::Quiet => {}
+        Detail::Brief => text += &brief_summary(scenario, file, problem, result, floor, units),
+        Detail::Verbose => text += &human_summary(scenario, file, problem, result, floor),
+    }
+    text
+}
+
+/// `"30-year"`, `"500-day"`: the run's duration as the target a verdict is read against.
+fn target(duration: f64) -> String {
+    let text = human_time(duration);
+    match text.split_once(' ') {
+        Some((n, unit)) => {
+            let unit = match unit {
+                "s" => "second",
+                "min" => "minute",
+                "h" => "hour",
+                other => other.strip_suffix('s').unwrap_or(other),
+            };
+            format!("{n}-{unit}")
+        }
+        None => text,
+    }
+}
+
+/// One criterion of a run against its limit, for the verdict line: what it compares and, for
+/// the quantities with a ratio, the factor by which the worst value over the run stays inside
+/// the limit (below 1: crossed).
+struct Margin {
+    mode: crate::simulate::FailureMode,
+    text: String,
+    factor: Option<f64>,
+}
+
+/// `limit / worst` (∞ when the worst is 0) for a criterion with a maximum.
+fn below(worst: f64, limit: f64) -> f64 {
+    if worst > 0.0 {
+        limit / worst
+    } else {
+        f64::INFINITY
+    }
+}
+
+/// Every criterion the run checks with the worst value over the run beside its limit (for a
+/// decreasing force the lowest, for a leak the highest: the run's tightest point, so never a
+/// margin larger than the end's).
+fn margins(
+    problem: &LifeProblem,
+    result: &LifeResult,
+    floor: &LeakFloor,
+    units: UnitSystem,
+) -> Vec<Margin> {
+    use crate::simulate::FailureMode as M;
+    use Quantity as Q;
+    let c = &problem.failure;
+    let mut out = Vec::new();
+    let min_force = result.minimum_force().map_or(0.0, |m| m.0);
+    // e^{-K} run to 1e-26 is arithmetic, not a force: shown as 0 ("fully set")
+    let shown_force =
+        if result.reference_force > 0.0 && min_force < FULLY_SET * result.reference_force {
+            0.0
+        } else {
+            min_force
+        };
+    if let Some(limit) = c.max_leak_rate {
+        let p = problem.fluid.mean_pressure();
+        let worst = result
+            .rows
+            .iter()
+            .map(|r| r.detected_leak_rate(p))
+            .fold(result.maximum_leak_rate().map_or(0.0, |m| m.0), f64::max);
+        let (q, scale) = match p {
+            Some(p) => (Q::Throughput, p),
+            None => (Q::VolumeFlow, 1.0),
+        };
+        let shown = if floor.seals(worst) { 0.0 } else { worst };
+        out.push(Margin {
+            mode: M::LeakRate,
+            text: versus(units, q, "highest leak rate", shown * scale, limit * scale),
+            factor: Some(below(worst, limit)),
+        });
+    }
+    if let Some(limit) = c.max_leaked_volume {
+        let v = result.leaked_volume();
+        out.push(Margin {
+            mode: M::LeakedVolume,
+            text: versus(
+                units,
+                Q::Volume,
+                &format!(
+                    "leaked volume{}",
+                    if result.leaked_volume_is_lower_bound() {
+                        " ≥"
+                    } else {
+                        ""
+                    }
+                ),
+                v,
+                limit,
+            ),
+            factor: Some(below(v, limit)),
+        });
+    }
+    if let Some(fraction) = c.min_retained_force
+        && result.reference_force > 0.0
+    {
+        let limit = fraction * result.reference_force;
+        out.push(Margin {
+            mode: M::RetainedForce,
+            text: versus(units, Q::ForcePerLength, "lowest force", shown_force, limit),
+            factor: Some(min_force / limit),
+        });
+    }
+    if let Some(limit) = c.min_sealing_force {
+        out.push(Margin {
+            mode: M::SealingForce,
+            text: versus(units, Q::ForcePerLength, "lowest force", shown_force, limit),
+            factor: (limit > 0.0).then(|| min_force / limit),
+        });
+    }
+    if let Some(limit) = c.max_compression_set {
+        let set = result
+            .rows
+            .iter()
+            .filter_map(|r| r.compression_set)
+            .fold(0.0, f64::max);
+        out.push(Margin {
+            mode: M::CompressionSet,
+            text: format!(
+                "compression set {} % (limit {})",
+                human(100.0 * set, 3),
+                human(100.0 * limit, 3)
+            ),
+            factor: Some(below(set, limit)),
+        });
+    }
+    if let Some(limit) = c.min_contact_pressure {
+        out.push(Margin {
+            mode: M::ContactPressure,
+            text: format!(
+                "installed peak contact pressure vs {} limit",
+                units.show(Q::Pressure, limit, 3)
+            ),
+            factor: None,
+        });
+    } else if let Some(m) = c.gasket_factor {
+        out.push(Margin {
+            mode: M::ContactPressure,
+            text: format!(
+                "installed mean contact pressure vs m·ΔP (m = {})",
+                human(m, 3)
+            ),
+            factor: None,
+        });
+    }
+    if c.lift_off {
+        out.push(Margin {
+            mode: M::LiftOff,
+            text: "the fluid pressure opens the contact".to_owned(),
+            factor: None,
+        });
+    }
+    if c.extrusion {
+        out.push(Margin {
+            mode: M::Extrusion,
+            text: "the clearance gap beyond the extrusion chart's limit".to_owned(),
+            factor: None,
+        });
+    }
+    if let (Some(sd), Some(end)) = (c.shutdown, result.rows.last().and_then(|r| r.shutdown)) {
+        out.push(Margin {
+            mode: M::LostInterference,
+            text: format!(
+                "{} {} % at the end, at the shutdown's {}",
+                problem.geometry.set_quantity(),
+                human(100.0 * end.remaining_squeeze, 3),
+                units.show(Q::Temperature, sd.temperature, 4),
+            ),
+            factor: None,
+        });
+    }
+    if let Some(cold) = c.low_temperature {
+        let (coldest, _) = problem.environment.coldest(0.0, problem.time.duration);
+        out.push(Margin {
+            mode: M::LowTemperature,
+            text: format!(
+                "coldest {} (limit {}: T10 less {} K)",
+                units.show(Q::Temperature, coldest, 4),
+                units.show(Q::Temperature, cold.threshold(), 4),
+                human(cold.margin, 3)
+            ),
+            factor: None,
+        });
+    }
+    out
+}
+
+/// `"lowest force 0.2 N/mm (limit 0.51)"`: a worst value `value` and its limit \[SI\] in
+/// `units` (the unit once; a value of 0 reads "≈ 0").
+fn versus(units: UnitSystem, quantity: Quantity, what: &str, value: f64, limit: f64) -> String {
+    let unit = units.display(quantity);
+    let value = if value == 0.0 {
+        "≈ 0".to_owned()
+    } else {
+        human(unit.from_si(value), 3)
+    };
+    format!(
+        "{what} {value} {} (limit {})",
+        unit.symbol,
+        human(unit.from_si(limit), 3)
+    )
+}
+
+/// The line every run summary opens with (issue 42): `PASS`, `FAIL`, `OPEN` (failed at
+/// installation, or open with lift-off waived) or `UNDECIDED` (the neighbouring fidelity level
+/// gives another outcome, docs/model.md §4.1; never a pass), the life against the run's
+/// duration (the target), the failure mode and its quantity against its limit, or for a pass
+/// the criterion with the smallest margin (worst value over the run); `[ILLUSTRATIVE data]`
+/// when the compound's data are estimates. `--quiet` prints this line alone.
+pub fn verdict_line(
+    problem: &LifeProblem,
+    result: &LifeResult,
+    floor: &LeakFloor,
+    units: UnitSystem,
+) -> String {
+    let target = target(problem.time.duration);
+    let margins = margins(problem, result, floor, units);
+    let of_mode = |mode| {
+        margins
+            .iter()
+            .find(|m| m.mode == mode)
+            .map_or(String::new(), |m| format!(": {}", m.text))
+    };
+    let kind = verdict(problem, result).kind;
+    let line = match (kind, result.failure) {
+        (VerdictKind::Undecided, _) => format!(
+            "UNDECIDED by the model (a {target} target): {}",
+            verdict(problem, result)
+                .text
+                .trim_start_matches("UNDECIDED by the model: ")
+        ),
+        (VerdictKind::Fails, Some(f)) if f.time == 0.0 => format!(
+            "OPEN at installation (a {target} target) by {}{}",
+            f.mode.as_str(),
+            of_mode(f.mode)
+        ),
+        (VerdictKind::Fails, Some(f)) => format!(
+            "FAIL after {} of a {target} target by {}{}",
+            human_time(f.time),
+            f.mode.as_str(),
+            of_mode(f.mode)
+        ),
+        (VerdictKind::Open, _) | (VerdictKind::Fails, None) => format!(
+            "OPEN {} (a {target} target): {}; not a failure only because [failure] lift_off = \
+             false",
+            result
+                .open_since()
+                .map_or("at installation".to_owned(), at_time),
+            result.final_state().label()
+        ),
+        (VerdictKind::Survives, _) => {
+            let tightest = margins
+                .iter()
+                .filter(|m| m.factor.is_some_and(f64::is_finite))
+                .min_by(|a, b| {
+                    a.factor
+                        .partial_cmp(&b.factor)
+                        .unwrap_or(std::cmp::Ordering::Equal)
+                });
+            let margin = match tightest {
+                Some(m) => format!(
+                    "; tightest: {} ×{}",
+                    m.text,
+                    human(m.factor.unwrap_or(f64::INFINITY), 3)
+                ),
+                None if margins.is_empty() => "; no failure criterion set".to_owned(),
+                None => format!(
+                    "; none reached ({})",
+                    margins
+                        .iter()
+                        .map(|m| m.mode.as_str())
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                ),
+            };
+            format!(
+                "PASS over the {target} target, {} at the end{margin}",
+                result.final_state().as_str()
+            )
+        }
+    };
+    if problem.material.status == Status::Illustrative {
+        format!("{line} [ILLUSTRATIVE data]")
+    } else {
+        line
+    }
+}
+
+/// The short table under the verdict line (the default summary): the key figures in `units`,
+/// each line at most ~120 characters. The derivations are `--verbose`'s ([`human_summary`]),
+/// the report's and the JSON's.
+pub fn brief_summary(
+    scenario: &str,
+    file: &str,
+    problem: &LifeProblem,
+    result: &LifeResult,
+    floor: &LeakFloor,
+    units: UnitSystem,
+) -> String {
+    use Quantity as Q;
+    let duration = human_time(problem.time.duration);
+    let mut out = SummaryText::default();
+    let both = format!("{scenario} ({file})");
+    if both.chars().count() <= 100 {
+        out.line("scenario", both);
+    } else {
+        out.line("scenario", scenario.to_owned());
+        out.line("", file.to_owned());
+    }
+    let m = &problem.material;
+    out.line("material", format!("{} [{}]", m.name, m.status.as_str()));
+    if m.status == Status::Illustrative {
+        out.line(
+            "",
+            "!!! ILLUSTRATIVE material data: estimated, not measured; trends only, NOT for design \
+             decisions !!!"
+                .to_owned(),
+        );
+    }
+    let (lo, hi) = problem.environment.range();
+    let temperature = if problem.environment.is_constant() || lo == hi {
+        units.show(Q::Temperature, lo, 4)
+    } else {
+        format!(
+            "{} to {}",
+            units.show(Q::Temperature, lo, 4),
+            units.show(Q::Temperature, hi, 4)
+        )
+    };
+    let pressure = match (problem.fluid.gas, problem.fluid.mean_pressure()) {
+        (Some(gas), Some(_)) => format!(
+            "P_a {}, P_b {} abs.",
+            units.show(
+                Q::Pressure,
+                gas.outlet_pressure + problem.fluid.pressure_difference,
+                3
+            ),
+            units.show(Q::Pressure, gas.outlet_pressure, 3)
+        ),
+        _ => {
+            let dp = result.rows.iter().map(|r| r.pressure_difference);
+            let (a, b) = dp.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+                (a.min(p), b.max(p))
+            });
+            if a.is_finite() && a < b {
+                format!(
+                    "ΔP {} to {}",
+                    units.show(Q::Pressure, a, 3),
+                    units.show(Q::Pressure, b, 3)
+                )
+            } else {
+                format!(
+                    "ΔP {}",
+                    units.show(Q::Pressure, problem.fluid.pressure_difference, 3)
+                )
+            }
+        }
+    };
+    let width = result.rows.first().map_or(String::new(), |r| {
+        format!(
+            ", contact width {} at installation",
+            units.show(Q::Length, r.contact_width, 3)
+        )
+    });
+    out.line(
+        "service",
+        format!(
+            "{temperature}, {pressure}; {}{width}",
+            problem.geometry.name()
+        ),
+    );
+    if let (Some(first), Some(last)) = (result.rows.first(), result.rows.last()) {
+        let fraction = retained_fraction(last.sealing_force, result.reference_force);
+        let end = if result.reference_force > 0.0 && fraction < FULLY_SET {
+            "≈ 0 (fully set)".to_owned()
+        } else {
+            units.show(Q::ForcePerLength, last.sealing_force, 3)
+        };
+        out.line(
+            "sealing force",
+            format!(
+                "{} at installation, {end} after {duration}",
+                units.show(Q::ForcePerLength, first.sealing_force, 3)
+            ),
+        );
+        if let Some((peak, t)) = result.minimum_peak_pressure() {
+            out.line(
+                "contact",
+                format!(
+                    "peak pressure {} at installation, lowest {} {}",
+                    units.show(Q::Pressure, first.peak_pressure, 3),
+                    units.show(Q::Pressure, peak, 3),
+                    at_time(t)
+                ),
+            );
+        }
+    }
+    let changes = result.state_changes();
+    let states: Vec<String> = changes
+        .iter()
+        .take(3)
+        .map(|(state, t)| {
+            let name = state.as_str();
+            if *t == 0.0 {
+                format!("{name} from installation")
+            } else {
+                format!("{name} from {}", human_time(*t))
+            }
+        })
+        .collect();
+    let more = if changes.len() > 3 {
+        format!("; {} more changes (--verbose)", changes.len() - 3)
+    } else {
+        String::new()
+    };
+    out.line("state", format!("{}{more}", states.join("; then ")));
+    let rate = |row: Option<&crate::simulate::HistoryRow>, show: &dyn Fn(f64) -> String| match row {
+        Some(r) if r.state == crate::simulate::SealState::LiftOff && floor.seals(r.leak_rate) => {
+            "OPEN (flow not modelled)".to_owned()
+        }
+        Some(r) if r.state == crate::simulate::SealState::LiftOff => {
+            format!("≥ {} (OPEN: a lower bound)", show(r.leak_rate))
+        }
+        Some(r) if floor.seals(r.leak_rate) && r.permeation.is_none() => "≈ 0".to_owned(),
+        Some(r) => show(r.leak_rate),
+        None => "≈ 0".to_owned(),
+    };
+    match problem.fluid.mean_pressure() {
+        Some(p) => {
+            // what a leak detector sees: interface + permeation (docs/model.md §13.7)
+            let total = |q: f64| units.show(Q::Throughput, q, 3);
+            let row_total = |r: Option<&crate::simulate::HistoryRow>| {
+                r.map_or(0.0, |r| p * r.leak_rate + r.permeation.unwrap_or(0.0))
+            };
+            out.line(
+                "throughput",
+                format!(
+                    "{} at installation, {} after {duration} (interface{})",
+                    total(row_total(result.rows.first())),
+                    total(row_total(result.rows.last())),
+                    if result.rows.iter().any(|r| r.permeation.is_some()) {
+                        " + permeation"
+                    } else {
+                        ""
+                    }
+                ),
+            );
+        }
+        None => {
+            let show = |q: f64| units.show(Q::VolumeFlow, q, 3);
+            let highest = match result.maximum_leak_rate() {
+                Some((q, t)) if !floor.seals(q) => format!("; highest {} {}", show(q), at_time(t)),
+                _ => String::new(),
+            };
+            let (first, last) = (
+                rate(result.rows.first(), &show),
+                rate(result.rows.last(), &show),
+            );
+            // what "≈ 0" stands for (docs/model.md §15.2)
+            let zero = if first.starts_with("≈ 0") || last.starts_with("≈ 0") {
+                format!(" (≈ 0: below {}, {})", show(floor.rate), floor.meaning())
+            } else {
+                String::new()
+            };
+            out.line(
+                "leak rate",
+                format!("{first} at installation, {last} after {duration}{highest}{zero}"),
+            );
+        }
+    }
+    let lower = if result.leaked_volume_is_lower_bound() {
+        " (a lower bound: lifted off)"
+    } else {
+        ""
+    };
+    out.line(
+        "leaked volume",
+        format!(
+            "{}{} in {duration}{lower}",
+            at_least(result.leaked_volume_is_lower_bound()),
+            units.show(Q::Volume, result.leaked_volume(), 3)
+        ),
+    );
+    if let Some(set) = result.rows.last().and_then(|r| r.compression_set) {
+        out.line(
+            "set",
+            format!(
+                "chemical compression set {} % after {duration}",
+                human(100.0 * set, 3)
+            ),
+        );
+    }
+    if let (Some(sd), Some(end)) = (
+        problem.failure.shutdown,
+        result.rows.last().and_then(|r| r.shutdown),
+    ) {
+        let lost = result
+            .interference_lost()
+            .map_or("holds throughout".to_owned(), |t| {
+                format!("interference lost by {}", human_time(t))
+            });
+        out.line(
+            "shutdown",
+            format!(
+                "at {}, ΔP {}: {} {} % after {duration}; {lost}",
+                units.show(Q::Temperature, sd.temperature, 4),
+                units.show(Q::Pressure, sd.pressure_difference, 3),
+                problem.geometry.set_quantity(),
+                human(100.0 * end.remaining_squeeze, 3)
+            ),
+        );
+    }
+    if let Some(cold) = problem.failure.low_temperature {
+        let (coldest, when) = problem.environment.coldest(0.0, problem.time.duration);
+        if coldest < cold.limit {
+            out.line(
+                "cold limit",
+                format!(
+                    "T10 {}, holds to {}; coldest {} {}",
+                    units.show(Q::Temperature, cold.limit, 4),
+                    units.show(Q::Temperature, cold.threshold(), 4),
+                    units.show(Q::Temperature, coldest, 4),
+                    at_time(when)
+                ),
+            );
+        }
+    }
+    if let Some(band) = &result.band {
+        let same = if result.undecided() {
+            "another outcome: UNDECIDED"
+        } else {
+            "the same outcome"
+        };
+        out.line(
+            "level band",
+            format!(
+                "at {}: {}; {same}",
+                band.level.name(),
+                band_outcome_text(problem, band)
+            ),
+        );
+    }
+    out.line(
+        "details",
+        "--verbose: the derivations; --summary FILE.json: every figure (SI); --report: both"
+            .to_owned(),
+    );
     out.text
 }
 

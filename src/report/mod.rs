@@ -21,6 +21,7 @@ pub mod sizes;
 pub mod study;
 pub mod surface;
 pub mod tradeoff;
+pub mod units;
 
 use std::fmt;
 use std::fs::{self, File, OpenOptions};

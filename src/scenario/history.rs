@@ -10,6 +10,10 @@
 //!   temperature unit an absolute scale (`K`, `C`, `°C`, `degC`, `F`, …), the pressure unit a
 //!   unit of pressure (`Pa`, `kPa`, `bar`, `MPa`, `psi`, …); a file without one, or with a column
 //!   left without its unit, is refused (its line named), since a bare number is ambiguous;
+//! * or, instead of the header and units rows, column names that carry their units,
+//!   `time_<unit>`, `temperature_<unit>` and/or `pressure_<unit>` (`time_s,temperature_F`), other
+//!   columns ignored: so the history CSV of `sealsim run -o` (in any `--units`) reads back as an
+//!   environment history, to the same SI values;
 //! * then at least one data row of finite numbers; times strictly increasing (t = 0 is the
 //!   installation); temperatures above 0 K; pressures finite (what they may be — ΔP ≥ 0 for a
 //!   liquid, an absolute inlet pressure at or above the outlet's for a gas — is checked against
@@ -102,56 +106,68 @@ pub(super) fn parse_history(text: &str) -> Result<History, HistoryError> {
         .split(',')
         .map(|c| c.trim().to_ascii_lowercase())
         .collect();
-    let Some(columns) = HEADERS.into_iter().find(|h| {
+    let plain = HEADERS.into_iter().find(|h| {
         names.len() == h.len() + 1
             && names[0] == "time"
             && h.iter().zip(&names[1..]).all(|(c, n)| c.name() == n)
-    }) else {
+    });
+    // a history written by `sealsim run -o` carries its units in its column names
+    let named = plain.map_or_else(|| named_columns(header), |_| None);
+    let Some(columns) = plain.or(named.as_ref().map(|n| n.columns)) else {
         return Err(at(
             line,
             format!(
                 "expected the header row `time,temperature` (or `time,temperature,pressure`, \
-                 `time,pressure`), got {header:?}"
+                 `time,pressure`, or the columns of a `sealsim run -o` history such as `time_s` \
+                 and `temperature_K`), got {header:?}"
             ),
         ));
     };
+    // which cells of a row are time and the columns, of how many
+    let (width, picks) = match &named {
+        Some(n) => (names.len(), n.picks.clone()),
+        None => (columns.len() + 1, (0..=columns.len()).collect()),
+    };
     // the units row is required: a bare `0,20` is 20 K to a parser and 20 °C to a reader
-    let (seconds, units) = match rows.next() {
-        Some((line, row)) if row.split(',').all(|c| c.trim().parse::<f64>().is_err()) => {
-            units_row(line, row, columns)?
-        }
-        Some((line, _)) => {
-            return Err(at(
-                line,
-                format!(
-                    "no units row: add one after the header, e.g. `{}` — without it \"20\" \
+    let (seconds, units) = match named {
+        Some(n) => units_row(line, &n.units, columns)?,
+        None => match rows.next() {
+            Some((line, row)) if row.split(',').all(|c| c.trim().parse::<f64>().is_err()) => {
+                units_row(line, row, columns)?
+            }
+            Some((line, _)) => {
+                return Err(at(
+                    line,
+                    format!(
+                        "no units row: add one after the header, e.g. `{}` — without it \"20\" \
                      could be 20 K or 20 °C, \"3\" 3 bar or 3 MPa",
-                    example_units(columns)
-                ),
-            ));
-        }
-        None => {
-            return Err(at(
-                line,
-                format!(
-                    "no units row and no data: expected e.g. `{}` after the header, then data \
+                        example_units(columns)
+                    ),
+                ));
+            }
+            None => {
+                return Err(at(
+                    line,
+                    format!(
+                        "no units row and no data: expected e.g. `{}` after the header, then data \
                      rows",
-                    example_units(columns)
-                ),
-            ));
-        }
+                        example_units(columns)
+                    ),
+                ));
+            }
+        },
     };
     let mut temperature: Vec<(f64, f64)> = Vec::new();
     let mut pressure: Vec<PressureRow> = Vec::new();
     let mut last: Option<f64> = None;
     for (line, row) in rows {
         let cells: Vec<&str> = row.split(',').map(str::trim).collect();
-        if cells.len() != columns.len() + 1 {
+        if cells.len() != width {
             return Err(at(
                 line,
                 format!(
                     "expected {} comma-separated columns (time, {}), found {}",
-                    columns.len() + 1,
+                    width,
                     columns
                         .iter()
                         .map(|c| c.name())
@@ -161,7 +177,7 @@ pub(super) fn parse_history(text: &str) -> Result<History, HistoryError> {
                 ),
             ));
         }
-        let t = number(cells[0], "time", line)? * seconds;
+        let t = number(cells[picks[0]], "time", line)? * seconds;
         if !t.is_finite() {
             return Err(at(line, "the value is too large once converted to SI"));
         }
@@ -178,7 +194,7 @@ pub(super) fn parse_history(text: &str) -> Result<History, HistoryError> {
             ));
         }
         last = Some(t);
-        for (cell, unit) in cells[1..].iter().zip(&units) {
+        for (cell, unit) in picks[1..].iter().map(|&i| cells[i]).zip(&units) {
             match unit {
                 Unit::Temperature(u) => temperature.push((t, kelvin(cell, u, line)?)),
                 Unit::Pressure(pascal) => {
@@ -202,6 +218,48 @@ pub(super) fn parse_history(text: &str) -> Result<History, HistoryError> {
             .contains(&Column::Temperature)
             .then_some(temperature),
         pressure: columns.contains(&Column::Pressure).then_some(pressure),
+    })
+}
+
+/// The columns of a history written by `sealsim run -o` (any `--units`): `time_<unit>`,
+/// `temperature_<unit>` and `pressure_<unit>`, the unit after the first `_` (`time_s`,
+/// `temperature_F`); the other columns are not read.
+struct NamedColumns {
+    columns: &'static [Column],
+    /// The cells of time and of each column, in a row.
+    picks: Vec<usize>,
+    /// The units as a units row (`s,F`).
+    units: String,
+}
+
+/// The [`NamedColumns`] of a header row, if it names a time and a temperature or pressure.
+fn named_columns(header: &str) -> Option<NamedColumns> {
+    let cells: Vec<&str> = header.split(',').map(str::trim).collect();
+    let find = |stem: &str| {
+        let mut found = cells.iter().enumerate().filter_map(|(i, c)| {
+            let (name, unit) = c.split_once('_')?;
+            (name.eq_ignore_ascii_case(stem) && !unit.is_empty()).then_some((i, unit))
+        });
+        // a name given twice is ambiguous: not this form
+        match (found.next(), found.next()) {
+            (Some(one), None) => Some(Some(one)),
+            (None, _) => Some(None),
+            _ => None,
+        }
+    };
+    let time = find("time")??;
+    let (temperature, pressure) = (find("temperature")?, find("pressure")?);
+    let (columns, rest): (&'static [Column], Vec<(usize, &str)>) = match (temperature, pressure) {
+        (Some(t), Some(p)) => (HEADERS[1], vec![t, p]),
+        (Some(t), None) => (HEADERS[0], vec![t]),
+        (None, Some(p)) => (HEADERS[2], vec![p]),
+        (None, None) => return None,
+    };
+    let all: Vec<(usize, &str)> = std::iter::once(time).chain(rest).collect();
+    Some(NamedColumns {
+        columns,
+        picks: all.iter().map(|&(i, _)| i).collect(),
+        units: all.iter().map(|&(_, u)| u).collect::<Vec<_>>().join(","),
     })
 }
 

@@ -1065,7 +1065,8 @@ const ENVIRONMENT: &[Key] = &[
         Absent(""),
         "CSV of the temperature, the fluid pressure or both against time (README \"Temperature \
          history\"; a `pressure` column is ΔP for a liquid, a gas's absolute inlet pressure; \
-         docs/model.md §8.4)",
+         docs/model.md §8.4); or a `sealsim run -o` history in any `--units`, whose \
+         `time_<unit>` and `temperature_<unit>` columns are read",
     ),
     key(
         "daily_amplitude",

@@ -2395,6 +2395,10 @@ fn temperature_span(raw: &RawScenario) -> Range<usize> {
     })
 }
 
+/// Two temperatures closer than this \[K\] are the same for the fitting lead-in (1 µK: far below
+/// any measurement, far above the rounding of a unit round trip, ~1e-13 K).
+const SAME_TEMPERATURE: f64 = 1e-6;
+
 /// A ring fitted at another temperature than the environment's first: its temperature settles
 /// to the environment's over its thermal time (docs/model.md §5.2).
 fn settling_environment(
@@ -2402,7 +2406,10 @@ fn settling_environment(
     seal: &super::seal_spec::SealSpec,
 ) -> crate::material::TemperatureHistory {
     match (seal.fitting_temperature, seal.geometry.fitted()) {
-        (Some(fitted), true) if fitted != environment.at(0.0) => {
+        // a difference in the last bits (a history read back from °F: 296.15 K → 73.4 °F →
+        // 296.14999999999996 K) is no difference: no thermometer resolves a µK, and the lead-in
+        // would replace the history's first seconds with its ramp
+        (Some(fitted), true) if (fitted - environment.at(0.0)).abs() > SAME_TEMPERATURE => {
             let length = seal.geometry.cooling_length().unwrap_or(0.0);
             environment.with_lead_in(fitted, thermal_settling_time(length))
         }

@@ -33,7 +33,7 @@ fn inches_percent_gauge_pressure_and_plural_times_run() {
     fs::write(dir.path().join("s.toml"), ORING).unwrap();
     let out = sealsim()
         .current_dir(dir.path())
-        .args(["run", "s.toml", "--summary", "s.json"])
+        .args(["run", "s.toml", "--verbose", "--summary", "s.json"])
         .output()
         .unwrap();
     assert!(out.status.success(), "{out:?}");

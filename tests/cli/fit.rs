@@ -877,6 +877,7 @@ fn run_gland(dir: &TempDir, name: &str, material: &str) -> std::process::Output 
     cargo_bin_cmd!("sealsim")
         .arg("run")
         .arg(&scenario)
+        .arg("--verbose")
         .output()
         .unwrap()
 }

@@ -615,6 +615,7 @@ fn a_missing_permeation_figure_is_refused_where_it_is_supplied() {
     let out = crate::support::sealsim()
         .arg("run")
         .arg(&scenario)
+        .arg("--verbose")
         .arg("-o")
         .arg(&csv)
         .arg("--summary")

@@ -40,6 +40,7 @@ fn run(text: &str) -> (Option<i32>, String, String, bool, String) {
     let out = sealsim()
         .arg("run")
         .arg(&scenario)
+        .arg("--verbose")
         .arg("-o")
         .arg(&outputs[0])
         .arg("--summary")

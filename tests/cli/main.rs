@@ -47,6 +47,7 @@ mod run;
 mod small_defects;
 mod study;
 mod study_sizes;
+mod summary_units;
 mod surface;
 mod swell;
 mod tradeoff;

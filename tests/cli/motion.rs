@@ -255,6 +255,7 @@ fn rod_seal_run_reports_the_films_and_leaks_the_cycle_mean() {
     let out = cargo_bin_cmd!("sealsim")
         .arg("run")
         .arg(scenario_path("hydraulic-rod-seal.toml"))
+        .arg("--verbose")
         .arg("-o")
         .arg(&h)
         .arg("--summary")

@@ -112,6 +112,7 @@ fn a_leak_below_the_floor_reads_sealed_its_chart_stops_at_the_floor_and_the_csv_
     let text = run_ok(&[
         &"run",
         &paper,
+        &"--verbose",
         &"--leak-floor",
         &"1e-12 m^3/s",
         &"-o",
@@ -146,7 +147,11 @@ fn a_leak_below_the_floor_reads_sealed_its_chart_stops_at_the_floor_and_the_csv_
         .unwrap();
     assert_eq!(lowest, 12, "the axis runs down to 1e-{lowest}");
     // the default floor is one molecule a second
-    let text = run_ok(&[&"run", &scenarios_dir().join("oring-nbr-water-80c.toml")]);
+    let text = run_ok(&[
+        &"run",
+        &"--verbose",
+        &scenarios_dir().join("oring-nbr-water-80c.toml"),
+    ]);
     assert!(
         text.contains("≈ 0 (below 3e-29 m³/s, one molecule a second) at installation"),
         "{text}"

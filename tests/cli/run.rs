@@ -91,6 +91,7 @@ impl Outputs {
         let mut cmd = cargo_bin_cmd!("sealsim");
         cmd.arg("run")
             .arg(scenario)
+            .arg("--verbose")
             .arg("-o")
             .arg(self.path("h.csv"))
             .arg("--summary")
@@ -418,7 +419,7 @@ fn summary_on_stdout_is_readable() {
         .current_dir(bare.dir.path())
         .assert()
         .success()
-        .stdout(predicate::str::contains("result"));
+        .stdout(predicate::str::contains("leaked volume"));
     let mut names: Vec<_> = fs::read_dir(bare.dir.path())
         .unwrap()
         .map(|e| e.unwrap().file_name())

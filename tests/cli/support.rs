@@ -41,6 +41,7 @@ pub fn run_text(text: &str) -> (Option<i32>, String, String, Option<String>, Opt
     let out = sealsim()
         .arg("run")
         .arg(&scenario)
+        .arg("--verbose") // the full derivation, which the tests read
         .arg("-o")
         .arg(&csv)
         .arg("--summary")
@@ -131,7 +132,7 @@ pub fn run_in(dir: &std::path::Path, text: &str, args: &[&str]) -> (serde_json::
     let _ = std::fs::remove_file(&json);
     let out = sealsim()
         .current_dir(dir)
-        .args(["run", "s.toml", "--summary", "s.json"])
+        .args(["run", "s.toml", "--verbose", "--summary", "s.json"])
         .args(args)
         .output()
         .unwrap();

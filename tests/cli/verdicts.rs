@@ -40,7 +40,15 @@ fn run_in(dir: &Path, text: &str, extra: &[&str]) -> Run {
         .current_dir(dir)
         .arg("run")
         .arg(&scenario)
-        .args(["-o", "h.csv", "--summary", "s.json", "--report", "r.html"])
+        .args([
+            "--verbose",
+            "-o",
+            "h.csv",
+            "--summary",
+            "s.json",
+            "--report",
+            "r.html",
+        ])
         .args(extra)
         .output()
         .unwrap();
