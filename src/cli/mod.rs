@@ -8,6 +8,7 @@
 pub mod advise;
 pub mod ageing_fit;
 pub mod compare;
+pub mod explain;
 pub mod figures;
 pub mod fit_prony;
 pub mod generate;
@@ -224,6 +225,9 @@ pub enum Command {
     New(new::NewArgs),
     /// Documentation generated from the commands themselves: man pages and shell completions.
     Generate(generate::GenerateArgs),
+    /// What a warning's code means (`sealsim explain W001`): its explanation and the model
+    /// section; without a code, every code.
+    Explain(explain::ExplainArgs),
 }
 
 /// Why a command failed; decides the exit status.
@@ -317,6 +321,7 @@ pub fn run(command: Command) -> Result<(), CliError> {
         Command::Study(args) => study::run(*args),
         Command::New(args) => new::run(args),
         Command::Generate(args) => generate::run(args),
+        Command::Explain(args) => explain::run(args),
     }
 }
 

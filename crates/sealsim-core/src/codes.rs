@@ -66,7 +66,7 @@ macro_rules! codes {
 
 codes! {
     PRESSURE_RATIO = "W001", "pressure_ratio", Validity, "§9.1",
-        "fluid pressure comparable to the contact pressure",
+        "fluid's load on the rubber not modelled",
         "ΔP/P0 > 0.5, with P0 the peak contact pressure that holds the critical junction. The \
          fluid pressure is modelled on the asperities of the interface, but its load on the \
          rubber body, which reshapes the nominal contact, is not: the contact picture is \

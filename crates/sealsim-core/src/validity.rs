@@ -499,16 +499,17 @@ impl Finding {
 }
 
 /// `KIND[CODE]: HEAD: TAIL — sealsim explain CODE` in at most [`MAX_LINE`] characters: `tail`
-/// is shortened with `…` (or left out) to fit, then `head` if it must.
+/// (a title) is left out when it does not fit whole, and `head` is shortened with `…` if it
+/// must.
 pub fn one_line(kind: &str, code: &str, head: &str, tail: &str) -> String {
     let open = format!("{kind}[{code}]: ");
     let close = format!(" — sealsim explain {code}");
     let room = MAX_LINE.saturating_sub(open.chars().count() + close.chars().count());
-    let head_len = head.chars().count();
-    let body = if tail.is_empty() || head_len + 2 + 8 > room {
+    let whole = head.chars().count() + 2 + tail.chars().count();
+    let body = if tail.is_empty() || whole > room {
         clip(head, room)
     } else {
-        format!("{head}: {}", clip(tail, room - head_len - 2))
+        format!("{head}: {tail}")
     };
     format!("{open}{body}{close}")
 }
