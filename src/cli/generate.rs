@@ -78,10 +78,9 @@ pub fn run(args: GenerateArgs) -> Result<(), CliError> {
             out.output.as_deref(),
             crate::report::columns::markdown().as_bytes(),
         ),
-        Generate::Warnings(out) => write_output(
-            out.output.as_deref(),
-            super::explain::markdown().as_bytes(),
-        ),
+        Generate::Warnings(out) => {
+            write_output(out.output.as_deref(), super::explain::markdown().as_bytes())
+        }
     }
 }
 

@@ -423,9 +423,10 @@ impl ScenarioError {
             ScenarioError::Invalid {
                 path, line, key, ..
             } => {
-                let name = path
-                    .file_name()
-                    .map_or_else(|| path.display().to_string(), |n| n.to_string_lossy().into());
+                let name = path.file_name().map_or_else(
+                    || path.display().to_string(),
+                    |n| n.to_string_lossy().into(),
+                );
                 let line = line.map(|l| format!(":{l}")).unwrap_or_default();
                 let key = key.as_deref().map(|k| format!(": {k}")).unwrap_or_default();
                 format!("{name}{line}{key}")

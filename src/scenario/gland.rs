@@ -1167,24 +1167,29 @@ impl GlandTable<'_, '_> {
             .groove_width
             .as_ref()
             .map_or(self.table.span(), Spanned::span);
-        let (code, message) = if max_material > MAX_FILL_GUIDANCE
-            || nominal > NOMINAL_FILL_GUIDANCE
+        let (code, message) = if max_material > MAX_FILL_GUIDANCE || nominal > NOMINAL_FILL_GUIDANCE
         {
-            (&crate::codes::GLAND_OVERFILL, format!(
-                "gland fill {} % nominal, {} % at maximum material condition: above the \
+            (
+                &crate::codes::GLAND_OVERFILL,
+                format!(
+                    "gland fill {} % nominal, {} % at maximum material condition: above the \
                  85 % nominal (O-Ring Supply Co.) or 90 % maximum-material (Parker, gland \
                  overfill) guidance: little room for thermal expansion or swell{swollen}; \
                  widen the groove [docs/model.md §6.2]",
-                percent(nominal),
-                percent(max_material)
-            ))
+                    percent(nominal),
+                    percent(max_material)
+                ),
+            )
         } else if nominal < MIN_FILL_GUIDANCE {
-            (&crate::codes::GLAND_UNDERFILL, format!(
-                "gland fill {} %: the ring fills less than half its groove (the usual \
+            (
+                &crate::codes::GLAND_UNDERFILL,
+                format!(
+                    "gland fill {} %: the ring fills less than half its groove (the usual \
                  range is 65–85 %, O-Ring Supply Co.): it can shift and roll — is the \
                  groove width or depth in the intended unit? [docs/model.md §6.2]",
-                percent(nominal)
-            ))
+                    percent(nominal)
+                ),
+            )
         } else {
             return None;
         };

@@ -363,7 +363,11 @@ impl Source<'_> {
         };
         let mut warnings = seal.warnings;
         warnings.extend(self.service_warnings(raw, seal.design.as_ref(), &life, permeation_note));
-        warnings.extend(notes.into_iter().map(|n| n.warning(&crate::codes::SURFACE_NOTE)));
+        warnings.extend(
+            notes
+                .into_iter()
+                .map(|n| n.warning(&crate::codes::SURFACE_NOTE)),
+        );
         if let Some(w) = self.lay(&raw.surface, life.fluid.gas.is_some())? {
             warnings.push(w.warning(&crate::codes::SURFACE_LAY));
         }

@@ -260,7 +260,8 @@ codes! {
 
 /// The registered code `code` (`W001`, case-insensitive), if any.
 pub fn lookup(code: &str) -> Option<&'static Code> {
-    ALL.iter().find(|c| c.code.eq_ignore_ascii_case(code.trim()))
+    ALL.iter()
+        .find(|c| c.code.eq_ignore_ascii_case(code.trim()))
 }
 
 #[cfg(test)]
@@ -281,7 +282,11 @@ mod tests {
             assert!(c.title.chars().count() <= 60, "{}: {}", c.code, c.title);
             assert!(c.section.starts_with('§'), "{}", c.code);
             let prefix = if c.kind == Kind::Note { 'N' } else { 'W' };
-            assert!(c.code.starts_with(prefix) && c.code.len() == 4, "{}", c.code);
+            assert!(
+                c.code.starts_with(prefix) && c.code.len() == 4,
+                "{}",
+                c.code
+            );
         }
         assert_eq!(lookup("w001"), Some(&PRESSURE_RATIO));
         assert_eq!(lookup("W999"), None);
@@ -292,7 +297,10 @@ mod tests {
         use crate::validity::Limit;
         for l in Limit::ALL {
             let c = l.code();
-            assert_eq!((c.id, c.section, c.kind), (l.id(), l.section(), Kind::Validity));
+            assert_eq!(
+                (c.id, c.section, c.kind),
+                (l.id(), l.section(), Kind::Validity)
+            );
         }
         let validity = ALL.iter().filter(|c| c.kind == Kind::Validity).count();
         assert_eq!(validity, Limit::ALL.len());

@@ -967,7 +967,10 @@ mod tests {
                 At::Time(1.0),
                 &mut out,
             );
-            assert!(out.is_empty(), "P0 = {p0}, lifted off {lifted_off}: {out:?}");
+            assert!(
+                out.is_empty(),
+                "P0 = {p0}, lifted off {lifted_off}: {out:?}"
+            );
         }
     }
 
