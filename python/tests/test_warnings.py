@@ -29,11 +29,11 @@ def test_the_headline_run_issues_its_validity_and_input_warnings_with_codes(repo
     assert w001.record["id"] == "pressure_ratio" and w001.record["value"] == 1.0
     assert isinstance(w001, UserWarning)
     # a note (how the callout was read) is not a warning
-    assert all(not w.code.startswith("N") for w in ours)
+    assert all(not w.message.code.startswith("N") for w in ours)
     # every code is one `sealsim explain` knows
     import subprocess
 
-    for code in {w.code for w in ours}:
+    for code in {w.message.code for w in ours}:
         out = subprocess.run([cli_path, "explain", code], capture_output=True, text=True)
         assert out.returncode == 0 and out.stdout.startswith(code)
 
