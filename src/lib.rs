@@ -105,7 +105,7 @@ pub mod workflow;
 // The physics (crates/sealsim-core) and the numerics (crates/sealsim-math), under the paths
 // they had before the split.
 pub use sealsim_core::{
-    clogging, contact, dynamic, extrusion, fits, fluid, gas, gland, gland_design, interface, leak,
-    material, math, numerical, permeation, plausibility, pressure, profile, roughness, seal,
+    clogging, codes, contact, dynamic, extrusion, fits, fluid, gas, gland, gland_design, interface,
+    leak, material, math, numerical, permeation, plausibility, pressure, profile, roughness, seal,
     simulate, study, surface, units, validity,
 };

@@ -23,12 +23,20 @@ input raises :class:`ScenarioError` (a ``ValueError``) with the command line's
 ``ValueError``, a missing file ``FileNotFoundError``; a bug in sealsim raises
 :class:`InternalError` (a ``RuntimeError``), never a crash (python/tests/test_fuzz.py holds the
 public API to these).
+
+The warnings the command line prints on stderr are issued with :func:`warnings.warn`: a
+validity finding of a run or leak table as a :class:`ValidityWarning`, a scenario's input
+warning as an :class:`InputWarning`, both :class:`SealsimWarning` (a ``UserWarning``) with
+``.code`` (``"W001"``, expanded by ``sealsim explain W001`` and the guide's warnings page) and
+``.record`` (the JSON record). The message starts with the code, so one code is silenced with
+``warnings.filterwarnings("ignore", message="W001")``, a kind with ``category=ValidityWarning``.
 """
 
 from __future__ import annotations
 
 import json
 import os
+import warnings
 from typing import Any, Dict, Iterable, List, Mapping, Optional, Sequence, Union
 
 import numpy
@@ -45,6 +53,9 @@ __all__ = [
     "StudyResult",
     "ScenarioError",
     "InternalError",
+    "SealsimWarning",
+    "ValidityWarning",
+    "InputWarning",
     "compare",
     "study",
     "gland",
@@ -61,6 +72,39 @@ __all__ = [
 ]
 
 PathLike = Union[str, "os.PathLike[str]"]
+
+
+class SealsimWarning(UserWarning):
+    """A warning of sealsim's (the line the command line prints on stderr): ``.code`` is its
+    stable code (``"W001"``; ``sealsim explain W001`` and the guide's warnings page explain it),
+    ``.record`` its JSON record. The message starts with the code, so
+    ``warnings.filterwarnings("ignore", message="W001")`` silences that code alone."""
+
+    def __init__(self, message: str, code: str = "", record: Optional[Dict[str, Any]] = None):
+        super().__init__(message)
+        self.code = code
+        self.record: Dict[str, Any] = dict(record or {})
+
+
+class ValidityWarning(SealsimWarning):
+    """A validity limit of the model crossed by a run or a leak table (docs/model.md §9): the
+    result is still computed; the warning says how far to trust it. ``.record`` is the
+    summary's record (``id``, ``quantity``, ``value``, ``bound``, ``worst_time_s``, …)."""
+
+
+class InputWarning(SealsimWarning):
+    """A scenario input accepted but questionable (``file:line: key: …``: a gland fill above
+    the guidance, ageing constants measured in another medium, …)."""
+
+
+def _warn(category: type, records: Iterable[Dict[str, Any]], stacklevel: int) -> None:
+    """Issues one warning of ``category`` per record that has a code (notes excluded)."""
+    for record in records:
+        code = record.get("code")
+        if not code or record.get("kind") == "note":
+            continue
+        text = f"{code} {record.get('id', '')}: {record.get('message', '')}"
+        warnings.warn(category(text, code, record), stacklevel=stacklevel + 1)
 
 
 def _table(columns: Mapping[str, Any]) -> Any:
@@ -146,12 +190,14 @@ class RunResult:
         history: one row per output time (the first is the installation, t = 0) with the
             columns of the history CSV (``time_s``, ``temperature_K``, ...,
             ``leak_rate_m3_per_s``, ``state``, ...); a blank cell of the CSV is NaN.
-        summary: the ``--summary`` JSON as a dict.
+        summary: the ``--summary`` JSON as a dict (its ``input_warnings``: the scenario's
+            input warnings and notes with their codes).
         time_to_failure: seconds, or None when the seal survives.
         failure_mode: ``leak_rate``, ``leaked_volume``, ``retained_force``, ``lift_off``, ...,
             ``low_temperature``, or ``none``.
         verdict: ``fails``, ``open`` or ``survives``; ``verdict_text`` the sentence.
-        warnings: the validity findings, a list of dicts (as in the summary JSON).
+        warnings: the validity findings, a list of dicts (as in the summary JSON, each with
+            its ``code``); :meth:`Scenario.run` also issues each as a :class:`ValidityWarning`.
     """
 
     def __init__(self, scenario: "Scenario", columns: Mapping[str, list], summary: Dict[str, Any]):
@@ -343,7 +389,11 @@ class Scenario:
         ``progress``: True for a text bar, a tqdm bar or a callable ``(done, total)``, told
         of the numerical level's tabulated pressures (the other levels report nothing)."""
         history, summary = self._inner._run(fidelity, _progress(progress, "numerical level"))
-        return RunResult(self, history, json.loads(summary))
+        result = RunResult(self, history, json.loads(summary))
+        # the command line's stderr: the input warnings, then the run's findings
+        _warn(InputWarning, result.summary.get("input_warnings", []), stacklevel=2)
+        _warn(ValidityWarning, result.warnings, stacklevel=2)
+        return result
 
     def leak(
         self,
@@ -385,13 +435,13 @@ class Scenario:
             _progress(progress, "numerical level"),
             None if pressure_differences is None else list(pressure_differences),
         )
+        records = json.loads(findings)
+        _warn(ValidityWarning, records, stacklevel=2)
         if note is not None and contact_pressures is not None:
-            import warnings
-
             warnings.warn(note, UserWarning, stacklevel=2)
         table = _table(columns)
         if hasattr(table, "attrs"):
-            table.attrs["warnings"] = json.loads(findings)
+            table.attrs["warnings"] = records
             table.attrs["note"] = note
         return table
 

@@ -19,6 +19,15 @@ class ScenarioError(ValueError):
 class InternalError(RuntimeError):
     """A bug in sealsim (a panic or a non-finite result), raised instead of a crash."""
 
+class SealsimWarning(UserWarning):
+    code: str
+    record: Dict[str, Any]
+    def __init__(self, message: str, code: str = ..., record: Optional[Dict[str, Any]] = ...) -> None: ...
+
+class ValidityWarning(SealsimWarning): ...
+
+class InputWarning(SealsimWarning): ...
+
 class RunResult:
     scenario: Scenario
     history: Table

@@ -371,7 +371,9 @@ fn life_report(
 ) {
     let result = workflow::life::run(scenario, progress);
     let history = history_for(&result, &scenario.life.fluid);
-    let summary = Summary::new(&scenario.name, file, &scenario.life, &result).to_json();
+    let mut summary = Summary::new(&scenario.name, file, &scenario.life, &result);
+    summary.input_warnings = sealsim::report::findings::input_records(&scenario.warnings);
+    let summary = summary.to_json();
     (history, summary)
 }
 
@@ -473,7 +475,7 @@ impl PyScenario {
     /// The input's warnings (`FILE:LINE: KEY: …`).
     #[getter]
     fn input_warnings(&self) -> Vec<String> {
-        self.inner.warnings.clone()
+        self.inner.warnings.iter().map(|w| w.text.clone()).collect()
     }
 
     /// The fidelity level the scenario runs at.

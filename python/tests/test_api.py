@@ -69,7 +69,11 @@ def test_replace_sets_dotted_keys_and_returns_a_new_scenario():
     fkm = base.replace({"material.library": "fkm-75"})
     assert "FKM" in fkm.run().summary["material"]
     # chained
-    assert cooler.replace({"environment.temperature": "80 C"}).run().summary == base.run().summary
+    # the same run; the input warnings name the lines of the rewritten text
+    def physics(r):
+        return {k: v for k, v in r.summary.items() if k != "input_warnings"}
+
+    assert physics(cooler.replace({"environment.temperature": "80 C"}).run()) == physics(base.run())
 
 
 def test_replace_errors_are_scenario_errors_naming_the_key():

@@ -62,6 +62,11 @@ pub struct CompareArgs {
     #[arg(long, value_name = "LEVEL", value_parser = super::FidelityArg)]
     pub fidelity: Option<Fidelity>,
 
+    /// Print every warning in full (not its one line) and the notes (how inputs were read:
+    /// a callout's spectrum, the compound's rating for the fluid).
+    #[arg(short, long)]
+    pub verbose: bool,
+
     /// Write a self-contained HTML report to FILE: the table, the overlay chart, each
     /// compound's warnings (inline SVG and CSS, nothing fetched).
     #[arg(long, value_name = "FILE.html")]
@@ -83,6 +88,7 @@ pub struct CompareArgs {
 
 /// Runs `sealsim compare`.
 pub fn run(args: CompareArgs) -> Result<(), CliError> {
+    super::set_verbose(args.verbose);
     // every compound and every scenario variant is checked before anything runs
     let materials: Vec<(String, Material)> = args
         .materials

@@ -5,7 +5,8 @@
 //! guide: `generate keys [-o FILE]` renders the scenario key reference
 //! (`docs/src/reference/keys.md`) from the key registry ([`crate::scenario::keys`]), `generate
 //! columns` the CSV column reference (`docs/src/reference/columns.md`) from
-//! [`crate::report::columns`]; tests check that the committed files are what they render.
+//! [`crate::report::columns`], `generate warnings` the warnings page
+//! (`docs/src/reference/warnings.md`) from [`crate::codes`]; tests check that the committed files are what they render.
 
 use super::{CliError, write_output};
 use clap::{Args, CommandFactory, Subcommand};
@@ -46,6 +47,9 @@ pub enum Generate {
     /// registry.
     #[command(hide = true)]
     Columns(OutputArgs),
+    /// The warnings page in Markdown (docs/src/reference/warnings.md), from the code registry.
+    #[command(hide = true)]
+    Warnings(OutputArgs),
 }
 
 /// Where a generated file goes.
@@ -74,6 +78,9 @@ pub fn run(args: GenerateArgs) -> Result<(), CliError> {
             out.output.as_deref(),
             crate::report::columns::markdown().as_bytes(),
         ),
+        Generate::Warnings(out) => {
+            write_output(out.output.as_deref(), super::explain::markdown().as_bytes())
+        }
     }
 }
 

@@ -101,6 +101,11 @@ pub struct LeakArgs {
     #[arg(long, value_name = "LEVEL", value_parser = super::FidelityArg)]
     pub fidelity: Option<Fidelity>,
 
+    /// Print every warning in full (not its one line) and the notes (how inputs were read:
+    /// a callout's spectrum, the compound's rating for the fluid).
+    #[arg(short, long)]
+    pub verbose: bool,
+
     /// Write the CSV to FILE (atomically) instead of standard output.
     #[arg(short, long, value_name = "FILE")]
     pub output: Option<PathBuf>,
@@ -174,6 +179,7 @@ fn parse_sweep(text: &str) -> Result<Sweep, String> {
 
 /// Runs `sealsim leak`.
 pub fn run(args: LeakArgs) -> Result<(), CliError> {
+    super::set_verbose(args.verbose);
     let scenario = Scenario::load(&args.scenario)?;
     let inputs: Vec<&std::path::Path> = std::iter::once(args.scenario.as_path())
         .chain(scenario.inputs.iter().map(std::path::PathBuf::as_path))

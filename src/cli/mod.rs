@@ -8,6 +8,7 @@
 pub mod advise;
 pub mod ageing_fit;
 pub mod compare;
+pub mod explain;
 pub mod figures;
 pub mod fit_prony;
 pub mod generate;
@@ -56,17 +57,42 @@ pub(crate) fn styled_bar(what: &str) -> indicatif::ProgressBar {
     bar
 }
 
-/// Prints validity findings to stderr, one `warning:` line each, `context` (e.g. a compound's
-/// id) leading each line.
+/// Whether `--verbose` was given: the full text of every warning, and the notes.
+static VERBOSE: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// Sets `--verbose` for the warnings and notes printed from now on.
+pub(crate) fn set_verbose(verbose: bool) {
+    VERBOSE.store(verbose, std::sync::atomic::Ordering::Relaxed);
+}
+
+fn verbose() -> bool {
+    VERBOSE.load(std::sync::atomic::Ordering::Relaxed)
+}
+
+/// Prints validity findings to stderr, one `warning[W0xx]:` line each of at most 120 characters
+/// (in full with `--verbose`), `context` (e.g. a compound's id) leading each line.
 pub(crate) fn print_findings(context: Option<&str>, findings: &crate::validity::Findings) {
-    eprint!("{}", report::findings::warning_lines(context, findings));
+    if verbose() {
+        eprint!("{}", report::findings::warning_lines(context, findings));
+    } else {
+        eprint!("{}", report::findings::short_lines(context, findings));
+    }
+}
+
+/// Prints one input warning (short, or in full with `--verbose`); a note only with `--verbose`.
+fn print_input(context: Option<&str>, w: &crate::scenario::InputWarning) {
+    if verbose() {
+        eprintln!("{}", report::findings::input_line(context, w));
+    } else if !w.is_note() {
+        eprintln!("{}", report::findings::input_short(context, w));
+    }
 }
 
 /// Prints a scenario's input warnings (e.g. a gland fill above the guidance) to stderr, one
-/// `warning:` line each, `context` (e.g. a compound's id) leading each line.
+/// `warning[W0xx]:` line each, `context` (e.g. a compound's id) leading each line.
 pub(crate) fn print_scenario_warnings(context: Option<&str>, scenario: &crate::scenario::Scenario) {
     for w in &scenario.warnings {
-        eprintln!("{}", report::findings::input_line(context, w));
+        print_input(context, w);
     }
 }
 
@@ -80,17 +106,17 @@ pub(crate) fn print_shared_warnings<'a>(
     let mut seen: Vec<&str> = Vec::new();
     for (_, scenario) in &variants {
         for w in &scenario.warnings {
-            if seen.contains(&w.as_str()) {
+            if seen.contains(&w.text.as_str()) {
                 continue;
             }
-            seen.push(w);
+            seen.push(&w.text);
             let having: Vec<&str> = variants
                 .iter()
                 .filter(|(_, s)| s.warnings.contains(w))
                 .map(|(label, _)| *label)
                 .collect();
             let context = (having.len() < variants.len()).then(|| having.join(", "));
-            eprintln!("{}", report::findings::input_line(context.as_deref(), w));
+            print_input(context.as_deref(), w);
         }
     }
 }
@@ -199,6 +225,9 @@ pub enum Command {
     New(new::NewArgs),
     /// Documentation generated from the commands themselves: man pages and shell completions.
     Generate(generate::GenerateArgs),
+    /// What a warning's code means (`sealsim explain W001`): its explanation and the model
+    /// section; without a code, every code.
+    Explain(explain::ExplainArgs),
 }
 
 /// Why a command failed; decides the exit status.
@@ -292,6 +321,7 @@ pub fn run(command: Command) -> Result<(), CliError> {
         Command::Study(args) => study::run(*args),
         Command::New(args) => new::run(args),
         Command::Generate(args) => generate::run(args),
+        Command::Explain(args) => explain::run(args),
     }
 }
 

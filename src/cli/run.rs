@@ -85,7 +85,8 @@ pub struct RunArgs {
     pub quiet: bool,
 
     /// Print the verdict line and the full derivation (material, seal, fluid, ageing, level
-    /// band; SI) instead of the short table.
+    /// band; SI) instead of the short table, every warning in full (not its one line) and the
+    /// notes (how inputs were read: a callout's spectrum, the compound's rating for the fluid).
     #[arg(short, long)]
     pub verbose: bool,
 
@@ -112,6 +113,7 @@ pub(crate) fn units_arg(text: &str) -> Result<crate::report::units::UnitSystem, 
 
 /// Runs `sealsim run`.
 pub fn run(args: RunArgs) -> Result<(), CliError> {
+    super::set_verbose(args.verbose);
     let mut scenario = Scenario::load(&args.scenario)?;
     let inputs: Vec<&std::path::Path> = std::iter::once(args.scenario.as_path())
         .chain(scenario.inputs.iter().map(std::path::PathBuf::as_path))
@@ -148,7 +150,11 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
     let json = args
         .summary
         .as_ref()
-        .map(|_| Summary::new(&scenario.name, &file, &scenario.life, &result).to_json())
+        .map(|_| {
+            let mut summary = Summary::new(&scenario.name, &file, &scenario.life, &result);
+            summary.input_warnings = crate::report::findings::input_records(&scenario.warnings);
+            summary.to_json()
+        })
         .transpose()?;
     let needs_chart = args.plot.is_some() || args.report.is_some();
     let svg = needs_chart

@@ -1,23 +1,74 @@
 //! Validity findings (docs/model.md §9) as text lines for stderr and as structured records for
 //! JSON summaries.
 
+use crate::scenario::InputWarning;
 use crate::validity::{At, Finding, Findings};
 use serde::Serialize;
 
-/// A scenario's input message (`FILE:LINE: key: …`) as a stderr line: `note: FILE:LINE: key: …`
-/// for a note (what was read, how a callout became a spectrum — information, not a problem),
-/// `warning: …` otherwise; `context` (e.g. a compound's id) after the prefix when given.
-pub fn input_line(context: Option<&str>, message: &str) -> String {
+/// A scenario's input message in full, as the report and `--verbose` show it:
+/// `warning[W034]: FILE:LINE: key: …`, or `note[N001]: FILE:LINE: key: …` for a note (what was
+/// read, how a callout became a spectrum — information, not a problem); `context` (e.g. a
+/// compound's id) after the prefix when given.
+pub fn input_line(context: Option<&str>, warning: &InputWarning) -> String {
     let lead = context.map(|c| format!("{c}: ")).unwrap_or_default();
-    match message.split_once(": note: ") {
-        Some((place, text)) => format!("note: {lead}{place}: {text}"),
-        None => format!("warning: {lead}{message}"),
+    let (kind, text) = kind_and_text(warning);
+    format!("{kind}[{}]: {lead}{text}", warning.code.code)
+}
+
+/// A scenario's input message as one stderr line of at most
+/// [`MAX_LINE`](crate::validity::MAX_LINE) characters: `warning[W034]: NAME:LINE: key: TITLE —
+/// sealsim explain W034` (the full text is in the report, the JSON summary and `--verbose`).
+pub fn input_short(context: Option<&str>, warning: &InputWarning) -> String {
+    let lead = context.map(|c| format!("{c}: ")).unwrap_or_default();
+    let (kind, _) = kind_and_text(warning);
+    crate::validity::one_line(
+        kind,
+        warning.code.code,
+        &format!("{lead}{}", warning.place),
+        warning.code.title,
+    )
+}
+
+/// `note` and the text without its `note: ` for a note, `warning` and the text otherwise.
+fn kind_and_text(warning: &InputWarning) -> (&'static str, String) {
+    match warning.text.split_once(": note: ") {
+        Some((place, text)) => ("note", format!("{place}: {text}")),
+        None if warning.is_note() => ("note", warning.text.clone()),
+        None => ("warning", warning.text.clone()),
     }
+}
+
+/// An input warning as a JSON record: its code and its full text.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct InputRecord {
+    /// The registered code (`W034`; `N001` … for a note).
+    pub code: &'static str,
+    /// The code's identifier (`gland_overfill`).
+    pub id: &'static str,
+    /// `warning` or `note`.
+    pub kind: &'static str,
+    /// The message in full (`FILE:LINE: key: …`).
+    pub message: String,
+}
+
+/// Every input warning and note of a scenario as records.
+pub fn input_records(warnings: &[InputWarning]) -> Vec<InputRecord> {
+    warnings
+        .iter()
+        .map(|w| InputRecord {
+            code: w.code.code,
+            id: w.code.id,
+            kind: kind_and_text(w).0,
+            message: w.text.clone(),
+        })
+        .collect()
 }
 
 /// One finding as a JSON record.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct FindingRecord {
+    /// The limit's registered code (`W001`; `sealsim explain W001`).
+    pub code: &'static str,
     /// The limit's identifier (e.g. `pressure_ratio`).
     pub id: &'static str,
     /// The quantity the limit bounds (e.g. `ΔP/P0`); `null` for a limit without a value.
@@ -59,6 +110,7 @@ impl FindingRecord {
             _ => None,
         };
         FindingRecord {
+            code: f.limit.code().code,
             id: f.limit.id(),
             quantity: quantity.map(|(q, _)| q),
             unit: quantity.map(|(_, u)| u),
@@ -88,13 +140,19 @@ pub fn records(findings: &Findings) -> Vec<FindingRecord> {
     findings.iter().map(FindingRecord::new).collect()
 }
 
-/// One `warning: …` line per finding, `context` (e.g. a compound's id) leading each.
+/// One `warning[W0xx]: …` line per finding in full (the report, `--verbose`), `context` (e.g. a
+/// compound's id) leading each.
 pub fn warning_lines(context: Option<&str>, findings: &Findings) -> String {
     let lead = context.map(|c| format!("{c}: ")).unwrap_or_default();
     findings
         .iter()
-        .map(|f| format!("warning: {lead}{f}\n"))
+        .map(|f| format!("warning[{}]: {lead}{f}\n", f.limit.code().code))
         .collect()
+}
+
+/// One short line per finding ([`Finding::line`]: at most 120 characters with its code).
+pub fn short_lines(context: Option<&str>, findings: &Findings) -> String {
+    findings.iter().map(|f| f.line(context) + "\n").collect()
 }
 
 #[cfg(test)]
@@ -129,7 +187,8 @@ mod tests {
         let r = records(&findings);
         assert_eq!((r[0].value, r[0].bound, r[0].quantity), (None, None, None));
         assert!(
-            warning_lines(Some("nbr-70"), &findings).starts_with("warning: nbr-70: the [failure]")
+            warning_lines(Some("nbr-70"), &findings)
+                .starts_with("warning[W013]: nbr-70: the [failure]")
         );
     }
 }

@@ -230,7 +230,7 @@ pub fn warnings(lines: &[String]) -> String {
 /// given.
 pub fn validity_lines(
     context: Option<&str>,
-    scenario_warnings: &[String],
+    scenario_warnings: &[crate::scenario::InputWarning],
     findings: &crate::validity::Findings,
 ) -> Vec<String> {
     let mut lines: Vec<String> = scenario_warnings

@@ -305,8 +305,13 @@ pub struct Summary {
     /// `[contamination]`).
     pub final_open_fraction: f64,
     /// The validity limits the run crossed, each with its worst value and when (docs/model.md
-    /// §9), as records; their `message` is what stderr shows.
+    /// §9), as records; their `message` is what `--verbose` shows on stderr, their `code` what
+    /// `sealsim explain` expands.
     pub warnings: Vec<FindingRecord>,
+    /// The scenario's input warnings and notes (`FILE:LINE: key: …`) with their codes (absent
+    /// when there are none; filled in by the caller, which has the scenario).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub input_warnings: Vec<crate::report::findings::InputRecord>,
     /// `[motion]` (absent from the JSON for a static seal).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub motion: Option<MotionSummary>,
@@ -865,6 +870,7 @@ impl Summary {
             duration_s: problem.time.duration,
             final_open_fraction: result.final_open_fraction(),
             warnings: records(&result.findings),
+            input_warnings: Vec::new(),
             motion: problem
                 .motion
                 .as_ref()

@@ -383,3 +383,60 @@ mod tests {
         assert_eq!(at("[material]", 10).as_deref(), Some("material"));
     }
 }
+
+/// A scenario input's warning or note (`FILE:LINE: key: …`): its registered code
+/// ([`crate::codes`]) and its located text. It reads as its text (`Deref<Target = str>`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct InputWarning {
+    /// The registered code (`W034`, or `N001` for a note).
+    pub code: &'static crate::codes::Code,
+    /// `FILE:LINE: key: message`, in full (a note's message starts with `note: `).
+    pub text: String,
+    /// `NAME:LINE: key`, with the file's name only (the one-line form's place).
+    pub place: String,
+}
+
+impl InputWarning {
+    /// Whether this is a note (how an input was read) rather than a warning.
+    pub fn is_note(&self) -> bool {
+        self.code.kind == crate::codes::Kind::Note
+    }
+}
+
+impl std::ops::Deref for InputWarning {
+    type Target = str;
+    fn deref(&self) -> &str {
+        &self.text
+    }
+}
+
+impl fmt::Display for InputWarning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.text)
+    }
+}
+
+impl ScenarioError {
+    /// This located message as an input warning (or note) with `code`.
+    pub fn warning(self, code: &'static crate::codes::Code) -> InputWarning {
+        let place = match &self {
+            ScenarioError::Invalid {
+                path, line, key, ..
+            } => {
+                let name = path.file_name().map_or_else(
+                    || path.display().to_string(),
+                    |n| n.to_string_lossy().into(),
+                );
+                let line = line.map(|l| format!(":{l}")).unwrap_or_default();
+                let key = key.as_deref().map(|k| format!(": {k}")).unwrap_or_default();
+                format!("{name}{line}{key}")
+            }
+            _ => String::new(),
+        };
+        InputWarning {
+            code,
+            text: self.to_string(),
+            place,
+        }
+    }
+}

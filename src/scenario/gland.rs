@@ -204,7 +204,7 @@ impl Source<'_> {
         design: Option<&GlandDesign>,
         dynamic: bool,
         vacuum: bool,
-    ) -> Vec<String> {
+    ) -> Vec<super::InputWarning> {
         let Some(design) = design else {
             return Vec::new();
         };
@@ -258,7 +258,7 @@ impl Source<'_> {
                             }
                         ),
                     )
-                    .to_string(),
+                    .warning(&crate::codes::GLAND_SQUEEZE_RANGE),
                 );
             }
         }
@@ -278,7 +278,7 @@ impl Source<'_> {
                      on the inner wall), or pressure_side = \"inside\" if the pressure \
                      really is inside [docs/model.md §6.2]",
                 )
-                .to_string(),
+                .warning(&crate::codes::VACUUM_OUTER_SEAT),
             );
         }
         warnings
@@ -711,7 +711,7 @@ impl GlandTable<'_, '_> {
         dry: &Dry,
         limits: &[Limit],
         locator_key: &'static str,
-    ) -> Vec<String> {
+    ) -> Vec<super::InputWarning> {
         limits
             .iter()
             .filter_map(|l| match *l {
@@ -733,7 +733,7 @@ impl GlandTable<'_, '_> {
                                 self.suggestions(design, dry)
                             ),
                         )
-                        .to_string(),
+                        .warning(&crate::codes::CIRCUMFERENTIAL_COMPRESSION),
                 ),
                 Limit::Squeeze { .. } => None,
             })
@@ -1125,7 +1125,7 @@ impl GlandTable<'_, '_> {
         depth: &DepthSource,
         locator_key: &'static str,
         swollen: &str,
-    ) -> Result<Vec<String>, ScenarioError> {
+    ) -> Result<Vec<super::InputWarning>, ScenarioError> {
         let at_depth = |e: &GlandError| {
             self.source
                 .gland_error(e, depth.span.clone(), depth.key, self.table, locator_key)
@@ -1145,7 +1145,7 @@ impl GlandTable<'_, '_> {
                             show(100.0 * range.nominal)
                         ),
                     )
-                    .to_string(),
+                    .warning(&crate::codes::SQUEEZE_AT_TOLERANCE),
             );
         }
         let fill = design.max_material_fill().map_err(|e| at_depth(&e))?;
@@ -1156,27 +1156,39 @@ impl GlandTable<'_, '_> {
 
     /// A gland fill above the guidance (`nominal` or at maximum material condition,
     /// `max_material`) or below half the groove [docs/model.md §6.2].
-    fn fill_warning(&self, nominal: f64, max_material: f64, swollen: &str) -> Option<String> {
+    fn fill_warning(
+        &self,
+        nominal: f64,
+        max_material: f64,
+        swollen: &str,
+    ) -> Option<super::InputWarning> {
         let width_span = self
             .raw
             .groove_width
             .as_ref()
             .map_or(self.table.span(), Spanned::span);
-        let message = if max_material > MAX_FILL_GUIDANCE || nominal > NOMINAL_FILL_GUIDANCE {
-            format!(
-                "gland fill {} % nominal, {} % at maximum material condition: above the \
+        let (code, message) = if max_material > MAX_FILL_GUIDANCE || nominal > NOMINAL_FILL_GUIDANCE
+        {
+            (
+                &crate::codes::GLAND_OVERFILL,
+                format!(
+                    "gland fill {} % nominal, {} % at maximum material condition: above the \
                  85 % nominal (O-Ring Supply Co.) or 90 % maximum-material (Parker, gland \
                  overfill) guidance: little room for thermal expansion or swell{swollen}; \
                  widen the groove [docs/model.md §6.2]",
-                percent(nominal),
-                percent(max_material)
+                    percent(nominal),
+                    percent(max_material)
+                ),
             )
         } else if nominal < MIN_FILL_GUIDANCE {
-            format!(
-                "gland fill {} %: the ring fills less than half its groove (the usual \
+            (
+                &crate::codes::GLAND_UNDERFILL,
+                format!(
+                    "gland fill {} %: the ring fills less than half its groove (the usual \
                  range is 65–85 %, O-Ring Supply Co.): it can shift and roll — is the \
                  groove width or depth in the intended unit? [docs/model.md §6.2]",
-                percent(nominal)
+                    percent(nominal)
+                ),
             )
         } else {
             return None;
@@ -1184,12 +1196,16 @@ impl GlandTable<'_, '_> {
         Some(
             self.source
                 .error(width_span, GROOVE_WIDTH.key, message)
-                .to_string(),
+                .warning(code),
         )
     }
 
     /// A ring stretched onto its seat (at `locator_key`) beyond the 5 % recommended.
-    fn stretch_warning(&self, stretch: f64, locator_key: &'static str) -> Option<String> {
+    fn stretch_warning(
+        &self,
+        stretch: f64,
+        locator_key: &'static str,
+    ) -> Option<super::InputWarning> {
         let raw = self.raw;
         let span = match locator_key {
             "seal.groove_outer_diameter" => raw.groove_outer_diameter.as_ref(),
@@ -1211,7 +1227,7 @@ impl GlandTable<'_, '_> {
                         percent(stretch)
                     ),
                 )
-                .to_string()
+                .warning(&crate::codes::STRETCH)
         })
     }
 

@@ -408,16 +408,20 @@ fn with_and_without(text: &str, path: &str, key: &str, value: &str) -> Option<(S
 /// (default)`, `short_wavelength = "extend", the default`).
 fn unlined(mut s: Scenario) -> Scenario {
     for w in &mut s.warnings {
-        *w = w.replace(" (default)", "").replace(", the default", "");
+        let text = w
+            .text
+            .replace(" (default)", "")
+            .replace(", the default", "");
         let mut out = String::new();
-        let mut rest = w.as_str();
+        let mut rest = text.as_str();
         while let Some(i) = rest.find(".toml:") {
             out.push_str(&rest[..i + 6]);
             rest = rest[i + 6..].trim_start_matches(|c: char| c.is_ascii_digit());
             out.push('N');
         }
         out.push_str(rest);
-        *w = out;
+        w.text = out;
+        w.place = String::new();
     }
     s
 }

@@ -54,7 +54,7 @@ mod text;
 mod validate;
 mod validated;
 
-pub use error::ScenarioError;
+pub use error::{InputWarning, ScenarioError};
 pub use height_map::{MAX_HEIGHT, MAX_PIXELS, NO_DATA, implausible_height};
 pub use material::{PARAMETERS, load_material_file, material_from_str};
 pub use surface_files::{is_gsf, parse_height_map, read_height_map, read_psd_file};

@@ -54,7 +54,7 @@ pub(super) struct SealSpec {
     /// A groove-seated ring's ring and groove (docs/model.md §6.2).
     pub design: Option<GlandDesign>,
     /// Located warnings about the input (e.g. a gland fill above the guidance).
-    pub warnings: Vec<String>,
+    pub warnings: Vec<super::InputWarning>,
     /// A flat gasket's compressed thickness \[m\] (`seal.thickness`; permeation, §13.3).
     pub thickness: Option<f64>,
 }

@@ -363,11 +363,15 @@ impl Source<'_> {
         };
         let mut warnings = seal.warnings;
         warnings.extend(self.service_warnings(raw, seal.design.as_ref(), &life, permeation_note));
-        warnings.extend(notes.iter().map(ToString::to_string));
+        warnings.extend(
+            notes
+                .into_iter()
+                .map(|n| n.warning(&crate::codes::SURFACE_NOTE)),
+        );
         if let Some(w) = self.lay(&raw.surface, life.fluid.gas.is_some())? {
-            warnings.push(w.to_string());
+            warnings.push(w.warning(&crate::codes::SURFACE_LAY));
         }
-        warnings.extend(cold_fitting.map(|w| w.to_string()));
+        warnings.extend(cold_fitting.map(|w| w.warning(&crate::codes::COLD_FITTING)));
         let run = Run {
             raw,
             material: &material,
@@ -422,7 +426,7 @@ impl Source<'_> {
         design: Option<&crate::gland::GlandDesign>,
         life: &LifeProblem,
         permeation_note: Option<String>,
-    ) -> Vec<String> {
+    ) -> Vec<super::InputWarning> {
         let mut warnings = self.gland_service_warnings(
             &raw.seal,
             design,
@@ -434,7 +438,7 @@ impl Source<'_> {
         if let Some(note) = permeation_note {
             warnings.push(
                 self.error(raw.fluid.span(), "fluid.gas", format!("note: {note}"))
-                    .to_string(),
+                    .warning(&crate::codes::PERMEATION_NOTE),
             );
         }
         warnings
@@ -647,7 +651,7 @@ impl Source<'_> {
     fn run_warnings(
         &self,
         run: &Run,
-        warnings: &mut Vec<String>,
+        warnings: &mut Vec<super::InputWarning>,
     ) -> Result<Option<super::compatibility::Compatibility>, ScenarioError> {
         let compatibility = self.fluid_compatibility(run);
         if let Some((c, span)) = &compatibility {
@@ -657,13 +661,18 @@ impl Source<'_> {
                 if not { "" } else { "note: " },
                 run.material.library_id.as_deref().unwrap_or("the compound"),
             );
+            let code = if not {
+                &crate::codes::FLUID_NOT_RECOMMENDED
+            } else {
+                &crate::codes::COMPATIBILITY_NOTE
+            };
             warnings.push(
                 self.error(span.clone(), "fluid.library", message)
-                    .to_string(),
+                    .warning(code),
             );
         }
         warnings.extend(self.ageing_medium_warning(run));
-        warnings.extend(self.liquid_range_warning(run));
+        self.liquid_range_check(run)?;
         warnings.extend(self.rated_temperature_warning(run));
         self.gas_condensation(run)?;
         warnings.extend(self.swell_warning(run));
@@ -686,7 +695,7 @@ impl Source<'_> {
     }
 
     /// Ageing constants measured in another medium than the run's fluid (docs/model.md §6.8).
-    fn ageing_medium_warning(&self, run: &Run) -> Option<String> {
+    fn ageing_medium_warning(&self, run: &Run) -> Option<super::InputWarning> {
         use crate::material::AgeingMedium;
         let (Some(basis), true) = (&run.material.ageing_basis, run.life.ageing.is_some()) else {
             return None;
@@ -717,48 +726,80 @@ impl Source<'_> {
                     medium.as_str()
                 ),
             )
-            .to_string()
+            .warning(&crate::codes::AGEING_MEDIUM)
         })
     }
 
-    /// A library liquid taken outside the range where it is liquid at 1 atm (docs/model.md
-    /// §3.7).
-    fn liquid_range_warning(&self, run: &Run) -> Option<String> {
-        let Some((
-            library,
-            LibraryFluid {
-                id,
-                liquid_range: Some((melting, boiling)),
-                ..
-            },
-        )) = run.known_fluid
-        else {
-            return None;
+    /// A library liquid taken outside the range where it is a liquid is refused (docs/model.md
+    /// §3.7): below its freezing or pour point, or above its boiling point at the run's
+    /// absolute pressure — the fluid's ΔP over the 1 atm outlet ([`LibraryFluid::boiling_point`]:
+    /// water on the IAPWS-IF97 saturation line, so 7 bar absolute boils at ≈ 165 °C, not
+    /// 100 °C). The viscosity law there would be evaluated past a phase change (an oil at 80 K
+    /// gave 5.97e251 Pa·s): most often a unit slip ("80 K" for "80 C").
+    fn liquid_range_check(&self, run: &Run) -> Result<(), ScenarioError> {
+        let Some((library, fluid)) = run.known_fluid else {
+            return Ok(());
         };
+        let Some((melting, _)) = fluid.liquid_range else {
+            return Ok(());
+        };
+        let absolute = run.life.fluid.pressure_difference.max(0.0) + crate::fluid::ATMOSPHERE;
+        let boiling = fluid.boiling_point(absolute);
         let (lo, hi) = run.life.environment.range();
-        (lo < melting || hi > boiling).then(|| {
-            self.error(
-                library.span(),
-                "fluid.library",
-                format!(
-                    "the temperature reaches {} … {}, but {id} is liquid at 1 atm only \
-                     from {} to {} (it freezes or boils): {} K below / {} K above; \
-                     the viscosity law there is an extrapolation [docs/model.md §3.7]",
-                    show_temperature(lo, 6),
-                    show_temperature(hi, 6),
-                    show_temperature(melting, 6),
-                    show_temperature(boiling, 6),
-                    show((melting - lo).max(0.0)),
-                    show((hi - boiling).max(0.0)),
-                ),
+        if lo >= melting && hi <= boiling {
+            return Ok(());
+        }
+        let id = fluid.id;
+        let range = if boiling.is_finite() {
+            format!(
+                "{id} is a liquid from {} to {} (its boiling point at {} bar absolute, the \
+                 fluid's ΔP over 1 atm)",
+                show_temperature(melting, 5),
+                show_temperature(boiling, 5),
+                show((absolute / 1e5 * 1e3).round() / 1e3),
             )
-            .to_string()
-        })
+        } else {
+            format!(
+                "{id} flows only above its pour point {} (illustrative, a VG 46 mineral oil's; \
+                 a product's data sheet governs)",
+                show_temperature(melting, 5)
+            )
+        };
+        let (what, fix) = if lo < melting {
+            (
+                format!("falls to {}", show_temperature(lo, 6)),
+                "is the unit right (\"80 C\", not \"80 K\")? give a temperature in the range, or \
+                 the fluid inline with its own data (viscosity_40c, viscosity_100c, density)",
+            )
+        } else {
+            (
+                format!("reaches {}", show_temperature(hi, 6)),
+                "is the unit or the pressure right? give a temperature in the range, or the \
+                 pressure that keeps the liquid from boiling",
+            )
+        };
+        let key = match run.raw.environment.as_ref() {
+            Some(e) if e.get_ref().temperature.is_some() => "environment.temperature",
+            Some(_) => "environment",
+            None => "fluid.library",
+        };
+        let span = match key {
+            "fluid.library" => library.span(),
+            _ => temperature_span(run.raw),
+        };
+        Err(self.error(
+            span,
+            key,
+            format!(
+                "the temperature {what}, but {range}: outside it the fluid is not a liquid and \
+                 its viscosity law is meaningless; {fix} [docs/model.md §3.7]"
+            ),
+        ))
     }
 
     /// A library compound above its class's rated temperature (docs/model.md §6.7): its life
     /// there is the Arrhenius extrapolation beyond "1,000 hours continuous service".
-    fn rated_temperature_warning(&self, run: &Run) -> Option<String> {
+    fn rated_temperature_warning(&self, run: &Run) -> Option<super::InputWarning> {
         let published = run
             .material
             .library_id
@@ -781,7 +822,7 @@ impl Source<'_> {
                     published.source
                 ),
             )
-            .to_string()
+            .warning(&crate::codes::RATED_TEMPERATURE)
         })
     }
 
@@ -811,7 +852,7 @@ impl Source<'_> {
     }
 
     /// A volume swell beyond seal practice (docs/model.md §3.9).
-    fn swell_warning(&self, run: &Run) -> Option<String> {
+    fn swell_warning(&self, run: &Run) -> Option<super::InputWarning> {
         let (swell, span) = run.swell?;
         (swell.volume_change > SWELL_PRACTICE).then(|| {
             self.error(
@@ -825,14 +866,14 @@ impl Source<'_> {
                     show(100.0 * SWELL_PRACTICE)
                 ),
             )
-            .to_string()
+            .warning(&crate::codes::SWELL)
         })
     }
 
     /// A relaxation series without a temperature shift or a data temperature: the series was
     /// measured at some temperature; without a shift or that temperature the run cannot tell
     /// how far from it it goes, so say so once (docs/model.md §9.13).
-    fn unshifted_warning(&self, run: &Run) -> Option<String> {
+    fn unshifted_warning(&self, run: &Run) -> Option<super::InputWarning> {
         let material = run.material;
         let unshifted = material.shift == crate::material::Shift::None
             && material.data_temperature.is_none()
@@ -854,7 +895,7 @@ impl Source<'_> {
                     show(hi)
                 ),
             )
-            .to_string()
+            .warning(&crate::codes::UNSHIFTED)
         })
     }
 

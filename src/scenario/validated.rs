@@ -44,7 +44,7 @@ pub struct Scenario {
     pub gland: Option<GlandDesign>,
     /// Warnings about the input, each located like an error (`FILE:LINE: KEY: …`), e.g. a gland
     /// fill above the guidance; the commands print them as `warning:` lines.
-    pub warnings: Vec<String>,
+    pub warnings: Vec<super::InputWarning>,
     /// The library compound's rating in the library fluid's class (docs/model.md §6.8); `None`
     /// when the fluid is not a rated class or no source rated the pair.
     pub compatibility: Option<compatibility::Compatibility>,

@@ -106,3 +106,22 @@ fn columns_is_the_committed_reference() {
     .unwrap();
     assert_eq!(String::from_utf8(out.stdout).unwrap(), committed);
 }
+
+#[test]
+fn warnings_is_the_committed_page_and_lists_every_code() {
+    let out = sealsim().args(["generate", "warnings"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    let committed = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/src/reference/warnings.md"),
+    )
+    .unwrap();
+    assert!(
+        stdout == committed,
+        "docs/src/reference/warnings.md is stale: run `sealsim generate warnings -o \
+         docs/src/reference/warnings.md`"
+    );
+    for c in sealsim::codes::ALL {
+        assert!(stdout.contains(&format!("\n## {}\n", c.code)), "{}", c.code);
+    }
+}

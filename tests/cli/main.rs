@@ -54,4 +54,5 @@ mod tradeoff;
 mod traps;
 mod validity;
 mod verdicts;
+mod warning_codes;
 mod write_faults;

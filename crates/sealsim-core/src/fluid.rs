@@ -204,8 +204,10 @@ pub struct LibraryFluid {
     pub law: ViscosityLaw,
     /// Short provenance for the run summary.
     pub source: &'static str,
-    /// The fluid's liquid range at 1 atm \[K\] (freezing or pour point, boiling point) where
-    /// known: a run outside it warns (the law there is an extrapolation past a phase change).
+    /// The fluid's liquid range at 1 atm \[K\] (freezing or pour point, boiling point; infinite
+    /// for an oil) where known: a run outside it, the boiling point taken at the run's absolute
+    /// pressure ([`LibraryFluid::boiling_point`]), is refused (the law there would be evaluated
+    /// past a phase change).
     pub liquid_range: Option<(f64, f64)>,
 }
 
@@ -317,9 +319,79 @@ pub fn library(id: &str) -> Option<LibraryFluid> {
         id,
         law: ViscosityLaw::Walther(walther),
         source,
-        // a mineral oil's pour point is a property of the product, not of its grade
-        liquid_range: None,
+        // a mineral oil's pour point is a property of the product, not of its grade: the
+        // illustrative one of a VG 46 (it does not boil in a seal's range)
+        liquid_range: Some((MINERAL_OIL_POUR_POINT, f64::INFINITY)),
     })
+}
+
+/// One standard atmosphere \[Pa\]: the outlet of a liquid seal, and the pressure of the liquid
+/// ranges above.
+pub const ATMOSPHERE: f64 = 101_325.0;
+
+/// Pour point taken for the library's ISO VG mineral oils \[K\]: −39 °C, **illustrative** —
+/// "an ISOVG 46 mineral oil might have a pour point of −39 degree C, whereas an ISOVG 460 would
+/// have a pour point of −15 degree C" (Herguth Laboratories, "Pour Point",
+/// <http://www.herguth.com/table_of_contents/pour_point.htm>); the pour point rises with the
+/// grade, so VG 68 and VG 100 products usually stop flowing warmer, and a VG 32 product may
+/// flow a few kelvin colder. A product's own data sheet governs: give the oil inline to run
+/// colder.
+pub const MINERAL_OIL_POUR_POINT: f64 = 234.15;
+
+/// The saturation temperature of water at absolute pressure `p` \[Pa\] \[K\]: the
+/// IAPWS-IF97 region-4 saturation-temperature equation (eq. 31 of the IAPWS Revised Release
+/// on the IAPWS Industrial Formulation 1997, 2007, <http://www.iapws.org/relguide/IF97-Rev.html>,
+/// as implemented in the `iapws` Python package, `iapws97._TSat_P`, whose check value
+/// T_sat(10 MPa) = 584.149488 K the test reproduces), valid from the triple-point pressure
+/// 611.213 Pa to the critical pressure 22.064 MPa. Below that range the triple-point
+/// temperature 273.16 K; above it the critical temperature 647.096 K (beyond it water is no
+/// longer a liquid that boils).
+pub fn water_saturation_temperature(p: f64) -> f64 {
+    const N: [f64; 10] = [
+        0.116_705_214_527_67e4,
+        -0.724_213_167_032_06e6,
+        -0.170_738_469_400_92e2,
+        0.120_208_247_024_70e5,
+        -0.323_255_503_223_33e7,
+        0.149_151_086_135_30e2,
+        -0.482_326_573_615_91e4,
+        0.405_113_405_420_57e6,
+        -0.238_555_575_678_49,
+        0.650_175_348_447_98e3,
+    ];
+    if p.is_nan() || p <= 611.213 {
+        return 273.16;
+    }
+    if p >= 22.064e6 {
+        return 647.096;
+    }
+    let beta = (p / 1e6).powf(0.25);
+    let e = beta * beta + N[2] * beta + N[5];
+    let f = N[0] * beta * beta + N[3] * beta + N[6];
+    let g = N[1] * beta * beta + N[4] * beta + N[7];
+    let d = 2.0 * g / (-f - (f * f - 4.0 * e * g).sqrt());
+    (N[9] + d - ((N[9] + d).powi(2) - 4.0 * (N[8] + N[9] * d)).sqrt()) / 2.0
+}
+
+impl LibraryFluid {
+    /// The fluid's boiling point at absolute pressure `p` \[Pa\] \[K\]: water on the
+    /// IAPWS-IF97 saturation line ([`water_saturation_temperature`]); 50/50 glycol–water its
+    /// 1-atm boiling point shifted as water's is (**assumed**: the boiling-point elevation of
+    /// the glycol, 106 − 100 ≈ 6 K at 1 atm, taken as constant; no pressure data for the
+    /// mixture was found); a mineral oil none (infinite: it does not boil in a seal's range).
+    pub fn boiling_point(&self, p: f64) -> f64 {
+        let Some((_, at_atmosphere)) = self.liquid_range else {
+            return f64::INFINITY;
+        };
+        match self.law {
+            ViscosityLaw::Water => water_saturation_temperature(p),
+            _ if at_atmosphere.is_finite() => {
+                at_atmosphere + water_saturation_temperature(p)
+                    - water_saturation_temperature(ATMOSPHERE)
+            }
+            _ => f64::INFINITY,
+        }
+    }
 }
 
 /// The seal's extent along and across the flow. Built with named fields only, so that the two
@@ -685,6 +757,31 @@ mod tests {
         assert_eq!(f.law, ViscosityLaw::Vogel(GLYCOL_WATER_50));
         assert_eq!(f.liquid_range, Some((236.15, 379.15)));
         assert_eq!(library("water").unwrap().liquid_range, Some(WATER_LIQUID));
+    }
+
+    #[test]
+    fn water_boils_on_the_iapws_if97_saturation_line() {
+        // IF97 eq. 31's check value (iapws._TSat_P(10) = 584.149488 K)
+        assert!((water_saturation_temperature(10e6) - 584.149488).abs() < 1e-5);
+        // 1 atm: 99.97 °C (373.124 K); 7 bar absolute: ≈ 165 °C, not 100 °C
+        assert!((water_saturation_temperature(ATMOSPHERE) - 373.124).abs() < 2e-3);
+        let seven = water_saturation_temperature(7e5) - 273.15;
+        assert!((164.5..165.5).contains(&seven), "{seven}");
+        // monotone in pressure, bounded by the triple and the critical points
+        let mut last = 0.0;
+        for k in 0..=60 {
+            let t = water_saturation_temperature(10f64.powf(2.0 + 0.1 * f64::from(k)));
+            assert!(t >= last && (273.16..=647.096).contains(&t), "{t}");
+            last = t;
+        }
+        let water = library("water").unwrap();
+        assert_eq!(water.boiling_point(7e5), water_saturation_temperature(7e5));
+        let glycol = library("ethylene-glycol-water-50").unwrap();
+        assert!((glycol.boiling_point(ATMOSPHERE) - GLYCOL_WATER_LIQUID.1).abs() < 1e-9);
+        assert!(glycol.boiling_point(7e5) > glycol.boiling_point(ATMOSPHERE) + 60.0);
+        let oil = library("iso-vg-46").unwrap();
+        assert_eq!(oil.boiling_point(ATMOSPHERE), f64::INFINITY);
+        assert_eq!(oil.liquid_range.map(|r| r.0), Some(MINERAL_OIL_POUR_POINT));
         // the law is monotone (thins when heated) over the liquid range
         let mut last = f64::INFINITY;
         for k in 0..=143 {

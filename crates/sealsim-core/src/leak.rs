@@ -888,13 +888,14 @@ impl StaticSolver {
             &ContactState {
                 nominal_pressure: point.nominal_pressure,
                 pressure_difference: self.problem.fluid.pressure_difference,
-                // lifted off, the contact is open: only the pressure ratio applies
+                // lifted off, the contact is open: no contact limit applies (the verdict says lift_off)
                 junction: if point.state == SealState::LiftOff {
                     &Junction::Sealed
                 } else {
                     &point.junction
                 },
                 cutoff: sp.q1() / sp.q0(),
+                lifted_off: point.state == SealState::LiftOff,
             },
             At::Pressure(point.nominal_pressure),
             out,

@@ -10,6 +10,7 @@
 pub use sealsim_math as math;
 
 pub mod clogging;
+pub mod codes;
 pub mod contact;
 pub mod dynamic;
 pub mod extrusion;

@@ -8,6 +8,7 @@
 //! the time of a life step — and where it first occurred. The result is still computed; the
 //! finding says how far to trust it.
 
+use crate::codes::{self, Code};
 use crate::contact::Junction;
 use crate::seal::LINDLEY_RANGE;
 use crate::surface::Spectrum;
@@ -220,8 +221,38 @@ impl Limit {
         }
     }
 
+    /// The limit's registered code (`W001` …, [`crate::codes`]).
+    pub fn code(self) -> &'static Code {
+        match self {
+            Limit::PressureRatio => &codes::PRESSURE_RATIO,
+            Limit::AspectRatio => &codes::ASPECT_RATIO,
+            Limit::MolecularGap => &codes::MOLECULAR_GAP,
+            Limit::NearCutoff => &codes::NEAR_CUTOFF,
+            Limit::HurstExponent => &codes::HURST_EXPONENT,
+            Limit::Squeeze => &codes::SQUEEZE,
+            Limit::GlassTransition => &codes::GLASS_TRANSITION,
+            Limit::Frozen => &codes::FROZEN,
+            Limit::RmsSlope => &codes::RMS_SLOPE,
+            Limit::SpeedBound => &codes::SPEED_BOUND,
+            Limit::BandLimited => &codes::BAND_LIMITED,
+            Limit::NumericalFailure => &codes::NUMERICAL_FAILURE,
+            Limit::NoFailureCriterion => &codes::NO_FAILURE_CRITERION,
+            Limit::Extrusion => &codes::EXTRUSION,
+            Limit::ExtrusionChart => &codes::EXTRUSION_CHART,
+            Limit::DataTime => &codes::DATA_TIME,
+            Limit::DataTemperature => &codes::DATA_TEMPERATURE,
+            Limit::IhlTransition => &codes::IHL_TRANSITION,
+            Limit::GradientEstimate => &codes::GRADIENT_ESTIMATE,
+            Limit::KnudsenSlip => &codes::KNUDSEN_SLIP,
+            Limit::KnudsenTransition => &codes::KNUDSEN_TRANSITION,
+            Limit::KnudsenFreeMolecular => &codes::KNUDSEN_FREE_MOLECULAR,
+            Limit::KnudsenContinuumLaw => &codes::KNUDSEN_CONTINUUM_LAW,
+            Limit::NarrowContact => &codes::NARROW_CONTACT,
+        }
+    }
+
     /// What the limit means for the result.
-    fn consequence(self) -> &'static str {
+    pub fn consequence(self) -> &'static str {
         match self {
             Limit::PressureRatio => {
                 "the fluid pressure is comparable to the contact pressure: in the interface it is \
@@ -423,6 +454,92 @@ impl fmt::Display for Finding {
     }
 }
 
+/// The longest one-line message on stderr, in characters (`warning[W001]: …` included).
+pub const MAX_LINE: usize = 120;
+
+impl Finding {
+    /// The finding in one short phrase: `ΔP/P0 = 1 > 0.5 from 350 d (worst 10 y)`, the value
+    /// against its bound and where (the first and the worst place when it was crossed more than
+    /// once); the limit's title for a limit without a value.
+    pub fn short(&self) -> String {
+        let Some((name, unit)) = self.limit.quantity() else {
+            return self.limit.code().title.to_owned();
+        };
+        let relation = if self.value > self.bound { ">" } else { "<" };
+        let mut text = format!(
+            "{name} = {} {relation} {}",
+            with_unit(self.value, unit),
+            with_unit(self.bound, unit)
+        );
+        match (self.at, self.first == self.at || self.count == 1) {
+            (At::Setup, _) => {}
+            (at, true) => text += &format!(" at {}", compact(at)),
+            (at, false) => {
+                text += &format!(" from {} (worst {})", compact(self.first), compact(at));
+            }
+        }
+        text
+    }
+
+    /// The one stderr line of the finding, at most [`MAX_LINE`] characters:
+    /// `warning[W001]: CONTEXT: ΔP/P0 = 1 > 0.5 from 350 d (worst 10 y): TITLE — sealsim explain
+    /// W001`; the title is shortened (or left out) to fit. The full text is [`Finding`]'s
+    /// `Display`.
+    pub fn line(&self, context: Option<&str>) -> String {
+        let code = self.limit.code();
+        let lead = context.map(|c| format!("{c}: ")).unwrap_or_default();
+        let short = self.short();
+        let title = if self.limit.quantity().is_some() {
+            code.title
+        } else {
+            ""
+        };
+        one_line("warning", code.code, &format!("{lead}{short}"), title)
+    }
+}
+
+/// `KIND[CODE]: HEAD: TAIL — sealsim explain CODE` in at most [`MAX_LINE`] characters: `tail`
+/// (a title) is left out when it does not fit whole, and `head` is shortened with `…` if it
+/// must.
+pub fn one_line(kind: &str, code: &str, head: &str, tail: &str) -> String {
+    let open = format!("{kind}[{code}]: ");
+    let close = format!(" — sealsim explain {code}");
+    let room = MAX_LINE.saturating_sub(open.chars().count() + close.chars().count());
+    let whole = head.chars().count() + 2 + tail.chars().count();
+    let body = if tail.is_empty() || whole > room {
+        clip(head, room)
+    } else {
+        format!("{head}: {tail}")
+    };
+    format!("{open}{body}{close}")
+}
+
+/// `text` cut to `room` characters, the last one `…` when cut.
+fn clip(text: &str, room: usize) -> String {
+    if text.chars().count() <= room {
+        return text.to_owned();
+    }
+    let mut cut: String = text.chars().take(room.saturating_sub(1)).collect();
+    cut.push('…');
+    cut
+}
+
+/// Where, compactly: `P0 = 1e6 Pa`, `350 d`, `10.5 y`, `3 h`, `installation`.
+fn compact(at: At) -> String {
+    const HOUR: f64 = 3600.0;
+    const DAY: f64 = 86_400.0;
+    const YEAR: f64 = 365.25 * DAY;
+    match at {
+        At::Time(t) if t >= 2.0 * YEAR => format!("{} y", human(t / YEAR, 3)),
+        At::Time(t) if t >= DAY => format!("{} d", human(t / DAY, 3)),
+        At::Time(t) if t >= HOUR => format!("{} h", human(t / HOUR, 3)),
+        At::Time(t) => format!("{} s", human(t, 3)),
+        At::Pressure(p0) => format!("P0 = {}", with_unit(p0, "Pa")),
+        At::Installation => "installation".to_owned(),
+        At::Setup => String::new(),
+    }
+}
+
 /// `value unit` with four significant digits ([`human`]).
 fn with_unit(value: f64, unit: &str) -> String {
     if unit == "K" {
@@ -520,19 +637,29 @@ pub struct ContactState<'a> {
     pub junction: &'a Junction,
     /// q1/q0 of the spectrum.
     pub cutoff: f64,
+    /// Whether the fluid pressure has lifted the seal off (state `lift_off`): the contact is
+    /// open, P0 no longer holds a junction, and the verdict (not a pressure ratio) reports it.
+    pub lifted_off: bool,
 }
 
 /// Pressure ratio, aspect ratio, molecular gap and nearness of the cut-off of one contact state
 /// (docs/model.md §9.1–§9.4).
+///
+/// ΔP/P0 is evaluated only where P0 holds the junction: in contact (not lifted off) with a
+/// positive P0. A seal the fluid pressure has opened is the verdict's business (state
+/// `lift_off`); its ΔP/P0 (up to 1e13 on a relaxed gasket) would say nothing true about the
+/// contact model.
 pub fn contact(state: &ContactState<'_>, at: At, out: &mut Findings) {
-    let ratio = state.pressure_difference / state.nominal_pressure;
-    out.check(
-        Limit::PressureRatio,
-        ratio > MAX_PRESSURE_RATIO,
-        ratio,
-        MAX_PRESSURE_RATIO,
-        at,
-    );
+    if !state.lifted_off && state.nominal_pressure > 0.0 {
+        let ratio = state.pressure_difference / state.nominal_pressure;
+        out.check(
+            Limit::PressureRatio,
+            ratio > MAX_PRESSURE_RATIO,
+            ratio,
+            MAX_PRESSURE_RATIO,
+            at,
+        );
+    }
     if let Junction::Leaking(j) = state.junction {
         let aspect = j.u_c / j.lambda_c;
         out.check(
@@ -802,6 +929,7 @@ mod tests {
                     pressure_difference: 1e4,
                     junction: j,
                     cutoff: 100.0,
+                    lifted_off: false,
                 },
                 At::Pressure(p0),
                 &mut out,
@@ -819,6 +947,54 @@ mod tests {
         let late = junction(1e-7, 1e-5, 51.0);
         assert!(state(1e6, &late).get(Limit::NearCutoff).is_some());
         assert!(state(1e6, &Junction::Sealed).is_empty());
+    }
+
+    #[test]
+    fn the_pressure_ratio_is_not_evaluated_where_p0_holds_no_junction() {
+        // the review's relaxed gasket: P0 → 0 gave "ΔP/P0 = 9.863e12"; lifted off, or with no
+        // contact pressure, the seal is open and the verdict says so
+        let j = Junction::Sealed;
+        for (p0, lifted_off) in [(6e5 / 9.863e12, true), (0.0, false), (1e5, true)] {
+            let mut out = Findings::default();
+            contact(
+                &ContactState {
+                    nominal_pressure: p0,
+                    pressure_difference: 6e5,
+                    junction: &j,
+                    cutoff: 100.0,
+                    lifted_off,
+                },
+                At::Time(1.0),
+                &mut out,
+            );
+            assert!(
+                out.is_empty(),
+                "P0 = {p0}, lifted off {lifted_off}: {out:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn every_finding_fits_one_line_with_its_code_even_with_a_long_context() {
+        for limit in Limit::ALL {
+            for (value, bound) in [(9.863e12, 0.5), (1.0e-300, 3.3e-9), (0.98, 0.5)] {
+                let mut f = Finding::new(limit, value, bound, At::Time(3.156e8));
+                f.first = At::Time(3.0e7);
+                f.count = 55;
+                f.detail = Some("x".repeat(300));
+                for context in [None, Some("nbr-70, fkm-75, epdm-70, vmq-70, ffkm-75")] {
+                    let line = f.line(context);
+                    assert!(line.chars().count() <= MAX_LINE, "{line}");
+                    let code = limit.code().code;
+                    assert!(line.starts_with(&format!("warning[{code}]: ")), "{line}");
+                    assert!(line.ends_with(&format!("sealsim explain {code}")), "{line}");
+                }
+            }
+        }
+        let mut f = Finding::new(Limit::PressureRatio, 1.0, 0.5, At::Time(3.156e8));
+        f.first = At::Time(350.0 * 86_400.0);
+        f.count = 31;
+        assert_eq!(f.short(), "ΔP/P0 = 1 > 0.5 from 350 d (worst 10 y)");
     }
 
     #[test]

@@ -1531,13 +1531,14 @@ impl<'a> Simulator<'a> {
             &ContactState {
                 nominal_pressure: self.snap_peak(snap),
                 pressure_difference: snap.pressure_difference,
-                // lifted off, the contact is open: only the pressure ratio applies
+                // lifted off, the contact is open: no contact limit applies (the verdict says lift_off)
                 junction: if snap.state == SealState::LiftOff {
                     &Junction::Sealed
                 } else {
                     &snap.peak_junction
                 },
                 cutoff: p.spectrum.q1() / p.spectrum.q0(),
+                lifted_off: snap.state == SealState::LiftOff,
             },
             at,
             findings,
