@@ -107,6 +107,13 @@ def _warn(category: type, records: Iterable[Dict[str, Any]], stacklevel: int) ->
         warnings.warn(category(text, code, record), stacklevel=stacklevel + 1)
 
 
+def _warn_slip(message: str, stacklevel: int) -> None:
+    """A height map's or trace's likely unit slip (docs/model.md §2.4) as the scenario's W044."""
+    record = {"code": "W044", "id": "height_unit_slip", "kind": "warning", "message": message}
+    warnings.warn(InputWarning(f"W044 height_unit_slip: {message}", "W044", record),
+                  stacklevel=stacklevel + 1)
+
+
 def _table(columns: Mapping[str, Any]) -> Any:
     """Columns (name -> the bytes of native f64s, a list of floats, or a list of strings) as a
     DataFrame, or a dict of arrays."""
@@ -666,7 +673,7 @@ def contact(
     scenario files' parser; a non-square map runs on its centred even square, as a
     scenario's), else ``scenario``'s, else a self-affine spectrum (``rms_roughness`` m,
     ``hurst_exponent``, ``q0``, ``q1`` 1/m). Heights implausible for their pixel (rms slope
-    above 10 at the pixel, or rms of 1 mm or more: docs/model.md §2.4) raise a ``UserWarning``
+    above 10 at the pixel, or rms of 1 mm or more: docs/model.md §2.4) raise an :class:`InputWarning` (W044, a ``UserWarning``)
     naming the likely unit slip ("heights look like µm read as m").
     Keywords that would be ignored (a modulus or spectrum beside a scenario, a spectrum beside
     a height map) raise :class:`ScenarioError`.
@@ -734,9 +741,7 @@ def contact(
         height_unit,
     )
     if raw.get("height_warning"):
-        import warnings
-
-        warnings.warn(raw["height_warning"], UserWarning, stacklevel=2)
+        _warn_slip(raw["height_warning"], stacklevel=2)
     if raw["level"] == "numerical":
         return ContactResult(raw)
     return _table(raw["table"])

@@ -212,7 +212,8 @@ def surface(
     with units (``"0.8 mm"``, by the scenario files' parser); ``height_unit`` (``"um"``) is the
     unit of the heights of a grid or a trace's ``z`` (default m; a trace's ``x`` is in m).
     Heights implausible for their spacing (rms slope above 10 at the spacing, or rms of 1 mm or
-    more: docs/model.md §2.4) raise a ``UserWarning`` with the likely unit slip. ``name``: the
+    more: docs/model.md §2.4) raise an ``InputWarning`` (W044, a ``UserWarning``) with the likely
+    unit slip. ``name``: the
     source's name in the summary (a list for several traces; default ``<heights>``,
     ``trace 1``, ...).
     """
@@ -253,9 +254,9 @@ def surface(
     # heights implausible for their spacing (a unit slip, docs/model.md §2.4) warn at once
     for w in result.get("warnings", []):
         if "heights look" in w or "heights implausible" in w:
-            import warnings
+            from . import _warn_slip
 
-            warnings.warn(w, UserWarning, stacklevel=2)
+            _warn_slip(w, stacklevel=2)
     result.spectrum = _points(spectrum)
     result.law = _points(law)
     return result

@@ -1676,7 +1676,10 @@ pub fn brief_summary(
     if let (Some(first), Some(last)) = (result.rows.first(), result.rows.last()) {
         let fraction = retained_fraction(last.sealing_force, result.reference_force);
         let end = if result.reference_force > 0.0 && fraction < FULLY_SET {
-            "≈ 0 (fully set)".to_owned()
+            format!(
+                "≈ 0 {} (fully set)",
+                units.display(Q::ForcePerLength).symbol
+            )
         } else {
             units.show(Q::ForcePerLength, last.sealing_force, 3)
         };

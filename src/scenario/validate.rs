@@ -363,11 +363,14 @@ impl Source<'_> {
         };
         let mut warnings = seal.warnings;
         warnings.extend(self.service_warnings(raw, seal.design.as_ref(), &life, permeation_note));
-        warnings.extend(
-            notes
-                .into_iter()
-                .map(|n| n.warning(&crate::codes::SURFACE_NOTE)),
-        );
+        // the surface's readings are notes; a unit slip (§2.4) is a warning to be seen
+        warnings.extend(notes.into_iter().map(|n| {
+            if n.to_string().ends_with("[docs/model.md §2.4]") {
+                n.warning(&crate::codes::HEIGHT_SLIP)
+            } else {
+                n.warning(&crate::codes::SURFACE_NOTE)
+            }
+        }));
         if let Some(w) = self.lay(&raw.surface, life.fluid.gas.is_some())? {
             warnings.push(w.warning(&crate::codes::SURFACE_LAY));
         }

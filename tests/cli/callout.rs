@@ -170,7 +170,12 @@ fn leak(text: &str) -> (String, String) {
     let dir = tempfile::tempdir().unwrap();
     let scenario = dir.path().join("s.toml");
     std::fs::write(&scenario, text).unwrap();
-    let out = sealsim().arg("leak").arg(&scenario).output().unwrap();
+    let out = sealsim()
+        .arg("leak")
+        .arg(&scenario)
+        .arg("--verbose") // the notes say how the callout was read
+        .output()
+        .unwrap();
     let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
     assert_eq!(out.status.code(), Some(0), "{stderr}");
     (String::from_utf8(out.stdout).unwrap(), stderr)
@@ -234,6 +239,7 @@ fn the_headline_callout_scenario_runs_end_to_end() {
     let out = sealsim()
         .arg("run")
         .arg(&path)
+        .arg("--verbose") // the notes say how the callout was read
         .arg("--summary")
         .arg(&summary)
         .output()

@@ -287,6 +287,7 @@ fn dynamic_squeeze_above_16_percent_warns_just_past_it() {
         let out = crate::support::sealsim()
             .arg("run")
             .arg(&path)
+            .arg("--verbose")
             .output()
             .unwrap();
         let stderr = String::from_utf8(out.stderr).unwrap();

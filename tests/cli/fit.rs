@@ -451,6 +451,7 @@ fn a_fitted_material_runs_by_path_and_warns_beyond_its_data() {
     let out = cargo_bin_cmd!("sealsim")
         .arg("run")
         .arg(&scenario)
+        .arg("--verbose") // the derivation and the warnings in full
         .arg("--summary")
         .arg(dir.path().join("s.json"))
         .assert()

@@ -125,9 +125,7 @@ fn an_overfilled_groove_is_a_located_warning() {
     let (code, _, stderr, _, path) = run(&text);
     assert_eq!(code, Some(0), "{stderr}");
     assert!(
-        stderr.contains(&format!(
-            "warning: {path}:18: seal.groove_width: gland fill"
-        )),
+        stderr.contains(&format!("]: {path}:18: seal.groove_width: gland fill")),
         "{stderr}"
     );
 }
@@ -212,7 +210,7 @@ fn stretch_and_fill_outside_the_guidance_warn_and_a_ring_that_cannot_seat_is_ref
     assert_eq!(code, Some(0), "{stderr}");
     assert!(
         stderr.contains(&format!(
-            "warning: {path}:16: seal.bore_diameter: the ring is stretched 13.2 %"
+            "]: {path}:16: seal.bore_diameter: the ring is stretched 13.2 %"
         )),
         "{stderr}"
     );
@@ -228,7 +226,7 @@ fn stretch_and_fill_outside_the_guidance_warn_and_a_ring_that_cannot_seat_is_ref
     assert_eq!(code, Some(0), "{stderr}");
     assert!(
         stderr.contains(&format!(
-            "warning: {path}:18: seal.groove_width: gland fill 86.2 % nominal"
+            "]: {path}:18: seal.groove_width: gland fill 86.2 % nominal"
         )),
         "{stderr}"
     );
@@ -237,7 +235,7 @@ fn stretch_and_fill_outside_the_guidance_warn_and_a_ring_that_cannot_seat_is_ref
     assert_eq!(code, Some(0), "{stderr}");
     assert!(
         stderr.contains(&format!(
-            "warning: {path}:18: seal.groove_width: gland fill 47.4 %: the ring fills less than half"
+            "]: {path}:18: seal.groove_width: gland fill 47.4 %: the ring fills less than half"
         )),
         "{stderr}"
     );

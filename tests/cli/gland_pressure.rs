@@ -26,6 +26,7 @@ fn run_day(edits: &[(&str, &str)]) -> (Value, Vec<(String, String)>, String) {
     let out = sealsim()
         .arg("run")
         .arg(&scenario)
+        .arg("--verbose") // the warnings in full, with their section
         .arg("-o")
         .arg(dir.path().join("h.csv"))
         .arg("--summary")

@@ -915,6 +915,7 @@ fn the_ageing_medium_is_stored_checked_and_validated() {
     let water = sealsim()
         .arg("run")
         .arg(root.join("oring-nbr-water-80c.toml"))
+        .arg("--verbose")
         .args(["-o", out.to_str().unwrap()])
         .output()
         .unwrap();

@@ -32,6 +32,7 @@ fn leak(scenario: &Path, args: &[&str]) -> (String, Vec<Vec<String>>, String) {
     let out = cargo_bin_cmd!("sealsim")
         .arg("leak")
         .arg(scenario)
+        .arg("--verbose") // the warnings in full
         .args(args)
         .assert()
         .success();
@@ -106,7 +107,7 @@ fn wiper_leak_has_the_drag_columns_and_warns_above_the_speed_bound() {
         .filter(|l| l.contains("hydrodynamic lift-off is not modelled"))
         .collect();
     assert_eq!(warnings.len(), 1, "{stderr}");
-    assert!(warnings[0].starts_with("warning: "), "{stderr}");
+    assert!(warnings[0].starts_with("warning[W"), "{stderr}");
     assert!(
         warnings[0].contains("sliding speed = 0.01 m/s is above 0.006539 m/s"),
         "{stderr}"
@@ -273,7 +274,7 @@ fn rod_seal_run_reports_the_films_and_leaks_the_cycle_mean() {
     assert!(
         stderr
             .lines()
-            .all(|l| l.starts_with("warning: ") || l.starts_with("note: ")),
+            .all(|l| l.starts_with("warning[W") || l.starts_with("note[N")),
         "{stderr}"
     );
     assert!(!stderr.contains("lift-off"), "{stderr}");
@@ -429,6 +430,7 @@ fn wiper_run_includes_the_drag_in_the_leak_rate() {
     cargo_bin_cmd!("sealsim")
         .arg("run")
         .arg(scenario_path("wiper-blade-water.toml"))
+        .arg("--verbose")
         .arg("-o")
         .arg(&h)
         .arg("--summary")

@@ -135,7 +135,8 @@ fn mutate_text(text: &str, rng: &mut Rng) -> String {
             }
             _ => {
                 let k = i.min(lines.len() - 1);
-                lines[k].push_str(*rng.pick(&[",", ",1", ",nan", "\r", " extra"]));
+                let tail: &str = *rng.pick(&[",", ",1", ",nan", "\r", " extra"]);
+                lines[k].push_str(tail);
             }
         }
         if lines.is_empty() {

@@ -152,7 +152,7 @@ fn every_shipped_scenario_runs_without_nan() {
         assert!(
             stderr
                 .lines()
-                .all(|l| l.starts_with("warning: ") || l.starts_with("note: ")),
+                .all(|l| l.starts_with("warning[W") || l.starts_with("note[N")),
             "{name}: {stderr}"
         );
         let csv = fs::read_to_string(out.path("h.csv")).unwrap();
@@ -456,8 +456,7 @@ fn failure_block_without_criterion_warns_and_survives() {
     let scenario = out.write("none.toml", &text);
     let (stdout, stderr) = out.run_ok(&scenario, &[]);
     assert!(
-        stderr
-            .contains("warning: the [failure] block sets no criterion: the seal can only survive"),
+        stderr.contains("]: the [failure] block sets no criterion: the seal can only survive"),
         "{stderr}"
     );
     assert!(

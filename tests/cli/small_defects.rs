@@ -274,16 +274,16 @@ fn negative_pressures_reach_the_parser() {
     let cases: [(&[&str], &str); 5] = [
         (
             &["--pressures", "-1MPa"],
-            "invalid value '-1MPa' for '--pressures <P,...>': a nominal pressure must be \
+            "invalid value '-1MPa' for '--contact-pressures <P,...>': a nominal pressure must be \
              positive and finite, got -1e6 Pa",
         ),
         (
             &["--pressures", "-2e5"],
-            "invalid value '-2e5' for '--pressures <P,...>': a pressure needs its unit",
+            "invalid value '-2e5' for '--contact-pressures <P,...>': a pressure needs its unit",
         ),
         (
             &["--pressures", "-0.1MPa,0.2MPa"],
-            "invalid value '-0.1MPa' for '--pressures <P,...>'",
+            "invalid value '-0.1MPa' for '--contact-pressures <P,...>'",
         ),
         (
             &["--sweep", "-1MPa..1MPa"],

@@ -157,6 +157,7 @@ fn a_scenario_reads_its_face_from_a_line_trace() {
         .arg(format!(
             "{manifest}/scenarios/oring-nbr-water-80c-trace.toml"
         ))
+        .arg("--verbose") // the note says how the trace was read
         .assert()
         .success();
     let stderr = String::from_utf8(out.get_output().stderr.clone()).unwrap();
@@ -387,13 +388,14 @@ fn bad_height_maps_are_refused_and_nothing_is_written() {
         (
             "ragged.csv",
             ragged.into_bytes(),
-            vec!["--pixel-size", "0.5um"],
+            // the heights are in µm (read as metres they are refused first, at row 1)
+            vec!["--pixel-size", "0.5um", "--height-unit", "um"],
             "ragged.csv:4: ragged row",
         ),
         (
             "small.csv",
             grid_csv(&map, 5).into_bytes(),
-            vec!["--pixel-size", "0.5um"],
+            vec!["--pixel-size", "0.5um", "--height-unit", "um"],
             "small.csv:5: the grid ends after 5 row(s)",
         ),
         (

@@ -142,7 +142,13 @@ fn leak(level: &str) -> (String, String) {
     let out = cargo_bin_cmd!("sealsim")
         .arg("leak")
         .arg(scenario_path("persson-yang-2008.toml"))
-        .args(["--fidelity", level, "--pressures", "0.1MPa,0.2MPa"])
+        .args([
+            "--fidelity",
+            level,
+            "--pressures",
+            "0.1MPa,0.2MPa",
+            "--verbose",
+        ])
         .assert()
         .success();
     let o = out.get_output();

@@ -33,7 +33,8 @@ fn run_text(dir: &Path, text: &str) -> (Option<i32>, String, bool) {
     std::fs::write(dir.join("s.toml"), text).unwrap();
     let out = dir.join("h.csv");
     let _ = std::fs::remove_file(&out);
-    let (code, _, stderr) = sealsim_in(dir, &["run", "s.toml", "-o", "h.csv"]);
+    // --verbose: the warnings in full, which these tests read
+    let (code, _, stderr) = sealsim_in(dir, &["run", "s.toml", "--verbose", "-o", "h.csv"]);
     (code, stderr, out.exists())
 }
 
@@ -263,7 +264,10 @@ fn messages_speak_the_inputs_terms_notes_are_notes_once_and_nothing_prints_below
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios");
     // the glass-transition warning of a -40 °C night: in °C, kelvin beside
     let cold = root.join("cold-night-nbr.toml");
-    let (code, _, stderr) = sealsim_in(dir.path(), &["run", cold.to_str().unwrap(), "-o", "c.csv"]);
+    let (code, _, stderr) = sealsim_in(
+        dir.path(),
+        &["run", cold.to_str().unwrap(), "--verbose", "-o", "c.csv"],
+    );
     assert_eq!(code, Some(0), "{stderr}");
     assert!(stderr.contains("T = -40 °C (233.1 K) is below"), "{stderr}");
     // the callout note: a note, once for three compounds
@@ -273,6 +277,7 @@ fn messages_speak_the_inputs_terms_notes_are_notes_once_and_nothing_prints_below
         &[
             "compare",
             water.to_str().unwrap(),
+            "--verbose",
             "--materials",
             "nbr-70,fkm-75,vmq-70",
             "-o",
@@ -281,11 +286,11 @@ fn messages_speak_the_inputs_terms_notes_are_notes_once_and_nothing_prints_below
     );
     assert_eq!(code, Some(0), "{stderr}");
     assert_eq!(stderr.matches("surface.ra: callout").count(), 1, "{stderr}");
-    assert!(stderr.contains("note: "), "{stderr}");
+    assert!(stderr.contains("note[N001]: "), "{stderr}");
     assert!(
         !stderr
             .lines()
-            .any(|l| l.starts_with("warning:") && l.contains("callout")),
+            .any(|l| l.starts_with("warning") && l.contains("callout")),
         "{stderr}"
     );
     // a compound without ageing constants in a scenario that ages (a file compound: every

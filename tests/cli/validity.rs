@@ -98,11 +98,13 @@ fn cases() -> Vec<(&'static str, &'static str, String)> {
     ]
 }
 
-/// `(exit success, stderr)` of `sealsim ARGS` in `dir`.
+/// `(exit success, stderr)` of `sealsim ARGS --verbose` in `dir` (the warnings in full, each
+/// ending with its section).
 fn stderr_of(dir: &TempDir, args: &[&str]) -> String {
     let out = sealsim()
         .current_dir(dir.path())
         .args(args)
+        .arg("--verbose")
         .output()
         .unwrap();
     assert!(out.status.success(), "{args:?}: {out:?}");
@@ -114,7 +116,7 @@ fn line_of<'a>(stderr: &'a str, section: &str) -> Option<&'a str> {
     let tag = format!("[docs/model.md {section}]");
     stderr
         .lines()
-        .find(|l| l.starts_with("warning: ") && l.ends_with(&tag))
+        .find(|l| l.starts_with("warning[W") && l.ends_with(&tag))
 }
 
 #[test]

@@ -490,6 +490,8 @@ fn a_ring_fitted_warm_and_cooled_loses_force_one_fitted_cold_is_refused() {
     let cold = headline_with(&[
         ("temperature = \"80 C\"", "temperature = \"-50 C\""),
         ("min_retained_force", ""),
+        // water freezes at -50 °C (refused since issue 42): a liquid given by its viscosity
+        ("library = \"water\"", "viscosity = \"1 mPa*s\""),
     ]);
     // fitted at 23 °C, then the −50 °C environment: it cools over the cord's thermal time and
     // its glassy contraction opens it within minutes

@@ -15,6 +15,7 @@ use std::path::{Path, PathBuf};
 const LAYERS: &[(&str, u8)] = &[
     ("math", 0),
     ("units", 1),
+    ("codes", 1),
     ("gas", 2),
     ("fluid", 2),
     ("interface", 2),
@@ -30,6 +31,7 @@ const LAYERS: &[(&str, u8)] = &[
     ("material", 3),
     ("clogging", 3),
     ("pressure", 3),
+    ("plausibility", 3),
     ("numerical", 4),
     ("profile", 4),
     ("leak", 4),

@@ -268,7 +268,7 @@ const MODELLED: &[(&[&str], &str)] = &[
     (&["particle", "clogging"], "contamination.volume_fraction"),
     (&["permeation"], "fluid.gas"),
     (
-        &["reciprocating", "sliding", "stroke"],
+        &["reciprocating motion", "sliding motion", "stroke cycle"],
         "motion.sliding_speed",
     ),
     (

@@ -226,6 +226,7 @@ fn a_rectangular_grid_is_accepted_and_too_few_rows_are_located() {
     let out = cargo_bin_cmd!("sealsim")
         .arg("leak")
         .arg(case.scenario())
+        .arg("--verbose") // the note says how the map was cropped
         .assert()
         .success();
     let stderr = String::from_utf8(out.get_output().stderr.clone()).unwrap();
@@ -306,7 +307,8 @@ fn a_non_finite_or_tiny_grid_is_refused() {
     let row = row.rsplit_once(',').unwrap().0.to_owned();
     Case::with_map(&with_row(&map, 2, &row))
         .rejects(&["map.csv:4: surface.height_map: column 2: the height must be finite"]);
-    let tiny = "0,1,2,3\n1,2,3,4\n2,3,4,5\n3,4,5,6\n";
+    // heights in metres within the readers' ±10 mm bound (issue 42): the size is what fails
+    let tiny = "0,1e-6,2e-6,3e-6\n1e-6,2e-6,3e-6,4e-6\n2e-6,3e-6,4e-6,5e-6\n3e-6,4e-6,5e-6,6e-6\n";
     Case::with_map(tiny).rejects(&["map.csv:1: surface.height_map: 4 value(s) per row"]);
 }
 
@@ -404,37 +406,41 @@ fn the_numerical_level_runs_on_the_measured_map_itself() {
 fn leak_stderr(dir: &std::path::Path) -> (Option<i32>, String) {
     let out = cargo_bin_cmd!("sealsim")
         .current_dir(dir)
-        .args(["leak", "scenario.toml"])
+        .args(["leak", "scenario.toml", "--verbose"])
         .output()
         .unwrap();
     (out.status.code(), String::from_utf8(out.stderr).unwrap())
 }
 
 /// Issue 42: a height map in µm with `height_unit = "m"` (the review's slip: rms ≈ 1 m over
-/// 0.5 µm pixels) warns with the likely slip and the fix at the height_unit line; the same
-/// file with the right unit, and the map in metres, do not. Fails on the old code (no
-/// warning).
+/// 0.5 µm pixels) is refused by the readers' ±10 mm bound, naming the height unit; read as mm
+/// (heights within the bound, slopes of ~10³) it warns (W044) with the likely slip and the fix
+/// at the height_unit line; the same file with the right unit, and the map in metres, do not.
+/// Fails on the old code (no warning, no refusal).
 #[test]
 fn a_height_map_in_micrometres_read_as_metres_warns_with_the_slip() {
     let map = synthetic_map(3);
     let in_um = csv(&map, 1e-6);
     let slipped = Case::with_map(&in_um);
     let (code, stderr) = leak_stderr(slipped.dir.path());
+    assert_eq!(code, Some(2), "{stderr}");
+    assert!(
+        stderr.contains("the likely slip is the height unit"),
+        "{stderr}"
+    );
+    let as_mm = Case::new(
+        "height_map = \"map.csv\"\npixel_size = \"0.5 um\"\nheight_unit = \"mm\"",
+        &in_um,
+    );
+    let (code, stderr) = leak_stderr(as_mm.dir.path());
     assert_eq!(code, Some(0), "{stderr}");
     let line = stderr
         .lines()
         .find(|l| l.contains("heights look like"))
         .unwrap_or_else(|| panic!("no unit-slip warning:\n{stderr}"));
-    assert!(line.starts_with("warning: "), "{line}");
-    assert!(
-        line.contains("scenario.toml:8: surface.height_unit"),
-        "{line}"
-    );
-    assert!(
-        line.contains("heights look like µm read as m: rms "),
-        "{line}"
-    );
-    assert!(line.contains(" m over 5.0e-7 m samples"), "{line}");
+    assert!(line.starts_with("warning[W044]: "), "{line}");
+    assert!(line.contains("surface.height_unit"), "{line}");
+    assert!(line.contains("heights look like µm read as mm"), "{line}");
     assert!(line.contains("write height_unit = \"um\""), "{line}");
     for good in [
         Case::new(
@@ -469,7 +475,7 @@ fn a_trace_in_micrometres_under_a_unit_of_metres_warns() {
         let warning = stderr.lines().find(|l| l.contains("heights look"));
         assert_eq!(warning.is_some(), warns, "{units}: {code:?}\n{stderr}");
         if let Some(line) = warning {
-            assert!(line.starts_with("warning: "), "{line}");
+            assert!(line.starts_with("warning[W044]: "), "{line}");
             assert!(
                 line.contains("heights look 1.0e6 times too large"),
                 "{line}"

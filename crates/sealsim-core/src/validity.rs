@@ -906,6 +906,22 @@ pub fn no_failure_criterion(out: &mut Findings) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every limit has its own code (in the registry, `crate::codes`: kept here so that the
+    /// registry does not name this module), with the limit's id and section.
+    #[test]
+    fn every_validity_limit_has_its_own_code_with_its_id_and_section() {
+        use crate::codes::{ALL, Kind};
+        for l in Limit::ALL {
+            let c = l.code();
+            assert_eq!(
+                (c.id, c.section, c.kind),
+                (l.id(), l.section(), Kind::Validity)
+            );
+        }
+        let validity = ALL.iter().filter(|c| c.kind == Kind::Validity).count();
+        assert_eq!(validity, Limit::ALL.len());
+    }
     use crate::contact::CriticalJunction;
 
     fn junction(u_c: f64, lambda_c: f64, zeta_c: f64) -> Junction {
