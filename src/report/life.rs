@@ -1604,75 +1604,7 @@ pub fn brief_summary(
     use Quantity as Q;
     let duration = human_time(problem.time.duration);
     let mut out = SummaryText::default();
-    let both = format!("{scenario} ({file})");
-    if both.chars().count() <= 100 {
-        out.line("scenario", both);
-    } else {
-        out.line("scenario", scenario.to_owned());
-        out.line("", file.to_owned());
-    }
-    let m = &problem.material;
-    out.line("material", format!("{} [{}]", m.name, m.status.as_str()));
-    if m.status == Status::Illustrative {
-        out.line(
-            "",
-            "!!! ILLUSTRATIVE material data: estimated, not measured; trends only, NOT for design \
-             decisions !!!"
-                .to_owned(),
-        );
-    }
-    let (lo, hi) = problem.environment.range();
-    let temperature = if problem.environment.is_constant() || lo == hi {
-        units.show(Q::Temperature, lo, 4)
-    } else {
-        format!(
-            "{} to {}",
-            units.show(Q::Temperature, lo, 4),
-            units.show(Q::Temperature, hi, 4)
-        )
-    };
-    let pressure = match (problem.fluid.gas, problem.fluid.mean_pressure()) {
-        (Some(gas), Some(_)) => format!(
-            "P_a {}, P_b {} abs.",
-            units.show(
-                Q::Pressure,
-                gas.outlet_pressure + problem.fluid.pressure_difference,
-                3
-            ),
-            units.show(Q::Pressure, gas.outlet_pressure, 3)
-        ),
-        _ => {
-            let dp = result.rows.iter().map(|r| r.pressure_difference);
-            let (a, b) = dp.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
-                (a.min(p), b.max(p))
-            });
-            if a.is_finite() && a < b {
-                format!(
-                    "ΔP {} to {}",
-                    units.show(Q::Pressure, a, 3),
-                    units.show(Q::Pressure, b, 3)
-                )
-            } else {
-                format!(
-                    "ΔP {}",
-                    units.show(Q::Pressure, problem.fluid.pressure_difference, 3)
-                )
-            }
-        }
-    };
-    let width = result.rows.first().map_or(String::new(), |r| {
-        format!(
-            ", contact width {} at installation",
-            units.show(Q::Length, r.contact_width, 3)
-        )
-    });
-    out.line(
-        "service",
-        format!(
-            "{temperature}, {pressure}; {}{width}",
-            problem.geometry.name()
-        ),
-    );
+    brief_setup(&mut out, scenario, file, problem, result, units);
     if let (Some(first), Some(last)) = (result.rows.first(), result.rows.last()) {
         let fraction = retained_fraction(last.sealing_force, result.reference_force);
         let end = if result.reference_force > 0.0 && fraction < FULLY_SET {
@@ -1788,6 +1720,107 @@ pub fn brief_summary(
             units.show(Q::Volume, result.leaked_volume(), 3)
         ),
     );
+    brief_checks(&mut out, problem, result, units, &duration);
+    out.line(
+        "details",
+        "--verbose: the derivations; --summary FILE.json: every figure (SI); --report: both"
+            .to_owned(),
+    );
+    out.text
+}
+
+/// The brief summary's set-up lines: the scenario, the material (and the illustrative flag)
+/// and the service (temperature, pressure, seal kind, contact width) in `units`.
+fn brief_setup(
+    out: &mut SummaryText,
+    scenario: &str,
+    file: &str,
+    problem: &LifeProblem,
+    result: &LifeResult,
+    units: UnitSystem,
+) {
+    use Quantity as Q;
+    let both = format!("{scenario} ({file})");
+    if both.chars().count() <= 100 {
+        out.line("scenario", both);
+    } else {
+        out.line("scenario", scenario.to_owned());
+        out.line("", file.to_owned());
+    }
+    let m = &problem.material;
+    out.line("material", format!("{} [{}]", m.name, m.status.as_str()));
+    if m.status == Status::Illustrative {
+        out.line(
+            "",
+            "!!! ILLUSTRATIVE material data: estimated, not measured; trends only, NOT for design \
+             decisions !!!"
+                .to_owned(),
+        );
+    }
+    let (lo, hi) = problem.environment.range();
+    let temperature = if problem.environment.is_constant() || lo == hi {
+        units.show(Q::Temperature, lo, 4)
+    } else {
+        format!(
+            "{} to {}",
+            units.show(Q::Temperature, lo, 4),
+            units.show(Q::Temperature, hi, 4)
+        )
+    };
+    let pressure = match (problem.fluid.gas, problem.fluid.mean_pressure()) {
+        (Some(gas), Some(_)) => format!(
+            "P_a {}, P_b {} abs.",
+            units.show(
+                Q::Pressure,
+                gas.outlet_pressure + problem.fluid.pressure_difference,
+                3
+            ),
+            units.show(Q::Pressure, gas.outlet_pressure, 3)
+        ),
+        _ => {
+            let dp = result.rows.iter().map(|r| r.pressure_difference);
+            let (a, b) = dp.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+                (a.min(p), b.max(p))
+            });
+            if a.is_finite() && a < b {
+                format!(
+                    "ΔP {} to {}",
+                    units.show(Q::Pressure, a, 3),
+                    units.show(Q::Pressure, b, 3)
+                )
+            } else {
+                format!(
+                    "ΔP {}",
+                    units.show(Q::Pressure, problem.fluid.pressure_difference, 3)
+                )
+            }
+        }
+    };
+    let width = result.rows.first().map_or(String::new(), |r| {
+        format!(
+            ", contact width {} at installation",
+            units.show(Q::Length, r.contact_width, 3)
+        )
+    });
+    out.line(
+        "service",
+        format!(
+            "{temperature}, {pressure}; {}{width}",
+            problem.geometry.name()
+        ),
+    );
+}
+
+/// The brief summary's checks: the compression set, the shutdown, the cold limit and the
+/// neighbouring level's outcome.
+fn brief_checks(
+    out: &mut SummaryText,
+    problem: &LifeProblem,
+    result: &LifeResult,
+    units: UnitSystem,
+    duration: &str,
+) {
+    use Quantity as Q;
     if let Some(set) = result.rows.last().and_then(|r| r.compression_set) {
         out.line(
             "set",
@@ -1847,12 +1880,6 @@ pub fn brief_summary(
             ),
         );
     }
-    out.line(
-        "details",
-        "--verbose: the derivations; --summary FILE.json: every figure (SI); --report: both"
-            .to_owned(),
-    );
-    out.text
 }
 
 /// The contact-area relation when it is not the default (`[model] area`, docs/model.md §2).

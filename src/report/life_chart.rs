@@ -195,6 +195,34 @@ impl LeakUnit {
 /// leak-rate threshold dashed, lift-off shaded, the failure marked on the curve the criterion
 /// compares. For a gas the throughput \[Pa·m³/s\] through the interface, by permeation
 /// through the rubber and their total (what a leak detector sees and `max_leak_rate` is
+/// A criterion's limit as a dashed vermillion line at `y` across `x`, labelled for the legend.
+fn limit_line(
+    chart: &mut Panel<'_, '_>,
+    (x_lo, x_hi): (f64, f64),
+    y: f64,
+    label: String,
+) -> Result<(), PlotError> {
+    chart
+        .draw_series(DashedLineSeries::new(
+            vec![(x_lo, y), (x_hi, y)],
+            8,
+            5,
+            VERMILLION.stroke_width(2),
+        ))
+        .map_err(err)?
+        .label(label)
+        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], VERMILLION.stroke_width(2)));
+    Ok(())
+}
+
+/// The lift-off stretches of a history (shaded on the leak panel), in the axis's time `unit`.
+fn lift_off_spans(rows: &[crate::simulate::HistoryRow], unit: f64) -> Vec<(f64, f64)> {
+    rows.windows(2)
+        .filter(|w| w[1].state == SealState::LiftOff && w[0].time > 0.0)
+        .map(|w| (w[0].time / unit, w[1].time / unit))
+        .collect()
+}
+
 /// compared with, docs/model.md §13.7), the threshold on the same axis.
 fn leak_panel(
     area: &Area<'_>,
@@ -242,13 +270,7 @@ fn leak_panel(
         .y_label_formatter(&decade_label)
         .draw()
         .map_err(err)?;
-    // lift-off shaded
-    let mut spans = Vec::new();
-    for w in rows.windows(2) {
-        if w[1].state == SealState::LiftOff && w[0].time > 0.0 {
-            spans.push((w[0].time / unit, w[1].time / unit));
-        }
-    }
+    let spans = lift_off_spans(rows, unit);
     chart
         .draw_series(
             spans
@@ -301,18 +323,8 @@ fn leak_panel(
         ": below it reads sealed",
     )?;
     if let Some(q) = threshold {
-        chart
-            .draw_series(DashedLineSeries::new(
-                vec![(x_lo, clip(q)), (x_hi, clip(q))],
-                8,
-                5,
-                VERMILLION.stroke_width(2),
-            ))
-            .map_err(err)?
-            .label(format!("max_leak_rate {}", leak.show(q, 3)))
-            .legend(|(x, y)| {
-                PathElement::new(vec![(x, y), (x + 20, y)], VERMILLION.stroke_width(2))
-            });
+        let label = format!("max_leak_rate {}", leak.show(q, 3));
+        limit_line(&mut chart, (x_lo, x_hi), clip(q), label)?;
     }
     if !spans.is_empty() {
         chart
@@ -325,11 +337,11 @@ fn leak_panel(
     }
     // on the total: the curve the leak-rate criterion crosses (the interface for a liquid)
     let mark = failure.map(|f| {
-        let q = result
-            .detected_leak_rate_at(f.time, mean_pressure)
-            .unwrap_or(0.0)
-            * leak.scale;
-        ((f.time / unit).clamp(x_lo, x_hi), clip(q))
+        let q = result.detected_leak_rate_at(f.time, mean_pressure);
+        (
+            (f.time / unit).clamp(x_lo, x_hi),
+            clip(q.unwrap_or(0.0) * leak.scale),
+        )
     });
     if let (Some(f), Some(at)) = (failure, mark) {
         chart

@@ -2111,6 +2111,36 @@ impl Source<'_> {
     /// `q0`, `q1`. The map returned for the numerical level is the largest centred even square
     /// ([`crate::numerical::Topography::square_crop`]), with a note when that is not the whole
     /// map.
+    /// Heights in µm read as m still make a spectrum: the likely unit slip (§2.4) as a warning
+    /// at the height_unit line (or the map's, for the file's own units).
+    fn height_slip(
+        &self,
+        raw: &RawSurface,
+        file: &Spanned<String>,
+        topography: &crate::numerical::Topography,
+        unit: f64,
+    ) -> Option<ScenarioError> {
+        crate::plausibility::HeightStatistics::of_map(
+            topography.nx,
+            topography.ny,
+            topography.pixel,
+            &topography.heights,
+        )
+        .warning(Some(unit))
+        .map(|(text, likely)| match (&raw.height_unit, likely) {
+            (Some(given), Some(likely)) => self.error(
+                given.span(),
+                HEIGHT_UNIT,
+                format!("{text}; write height_unit = \"{likely}\" [docs/model.md §2.4]"),
+            ),
+            _ => self.error(
+                file.span(),
+                HEIGHT_MAP,
+                format!("{text} (the file's own units) [docs/model.md §2.4]"),
+            ),
+        })
+    }
+
     fn height_map_surface(
         &self,
         raw: &RawSurface,
@@ -2211,26 +2241,7 @@ impl Source<'_> {
             };
         let topography = super::surface_files::read_height_map(&path, pixel, unit)
             .map_err(|e| format_error(e.line, e.message))?;
-        // heights in µm read as m still make a spectrum: warn with the likely slip (§2.4)
-        let slip = crate::plausibility::HeightStatistics::of_map(
-            topography.nx,
-            topography.ny,
-            topography.pixel,
-            &topography.heights,
-        )
-        .warning(Some(unit))
-        .map(|(text, likely)| match (&raw.height_unit, likely) {
-            (Some(given), Some(likely)) => self.error(
-                given.span(),
-                HEIGHT_UNIT,
-                format!("{text}; write height_unit = \"{likely}\" [docs/model.md §2.4]"),
-            ),
-            _ => self.error(
-                file.span(),
-                HEIGHT_MAP,
-                format!("{text} (the file's own units) [docs/model.md §2.4]"),
-            ),
-        });
+        let slip = self.height_slip(raw, file, &topography, unit);
         let spectrum = map_psd::estimate_topography(&topography, &map_psd::PsdOptions::default())
             .map_err(|e| format_error(None, e.to_string()))?;
         // the numerical level needs a square periodic grid of even side: the centred crop

@@ -135,8 +135,8 @@ fn mutate_text(text: &str, rng: &mut Rng) -> String {
             }
             _ => {
                 let k = i.min(lines.len() - 1);
-                let tail: &str = *rng.pick(&[",", ",1", ",nan", "\r", " extra"]);
-                lines[k].push_str(tail);
+                let tail = rng.pick(&[",", ",1", ",nan", "\r", " extra"]).to_string();
+                lines[k].push_str(&tail);
             }
         }
         if lines.is_empty() {
