@@ -120,9 +120,9 @@ fn own_descriptor(path: &Path) -> Option<u32> {
     number.parse().ok()
 }
 
-/// Follows `path`'s symbolic links (at most [`MAX_LINKS`]) to what an output there writes.
+/// Follows `path`'s symbolic links (at most `MAX_LINKS`, 40) to what an output there writes.
 ///
-/// Errors: a link loop (or a chain longer than [`MAX_LINKS`]), a directory, a block device (a
+/// Errors: a link loop (or a chain longer than `MAX_LINKS`), a directory, a block device (a
 /// disk: never written at offset 0 by mistake), or metadata that cannot be read.
 pub fn output_target(path: &Path) -> io::Result<OutputTarget> {
     let mut current = path.to_path_buf();
