@@ -25,11 +25,6 @@ pub(super) enum Bound {
 impl Bound {
     /// `None` if `v` is allowed, else what is wrong ("must …").
     fn violation(self, v: f64, unit: &str) -> Option<String> {
-        let got = if unit.is_empty() {
-            show(v)
-        } else {
-            format!("{} {unit}", show(v))
-        };
         let ok = v.is_finite()
             && match self {
                 Bound::Open(lo, hi) => v > lo && v < hi,
@@ -38,6 +33,12 @@ impl Bound {
         if ok {
             return None;
         }
+        // the message only when there is one: validation runs per case in a study
+        let got = if unit.is_empty() {
+            show(v)
+        } else {
+            format!("{} {unit}", show(v))
+        };
         Some(match self {
             _ if !v.is_finite() => format!("must be finite, got {got}"),
             // a fraction given as a percentage: say how to write one

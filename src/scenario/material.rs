@@ -1222,11 +1222,26 @@ fn present_keys(raw: &RawMaterial) -> Vec<(&'static str, Range<usize>)> {
 /// A library compound parsed: in the material module, which reads every material table, so
 /// that the library (the embedded files) needs nothing of it.
 impl library::Entry {
-    /// Parses and validates the entry.
+    /// Parses and validates the entry (once per process: the text is embedded, so the result
+    /// cannot change, and a study's cases each load their compound).
     pub fn load(&self) -> Result<Material, ScenarioError> {
+        type Loaded = std::collections::HashMap<&'static str, Material>;
+        static LOADED: std::sync::OnceLock<std::sync::Mutex<Loaded>> = std::sync::OnceLock::new();
+        let loaded = LOADED.get_or_init(Default::default);
+        if let Some(m) = loaded
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .get(self.id)
+        {
+            return Ok(m.clone());
+        }
         let mut material = library_material_from_str(self.text, &self.path())?;
         material.library_id = Some(self.id.to_owned());
         material.class = crate::permeation::family_of(self.id).map(str::to_owned);
+        loaded
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .insert(self.id, material.clone());
         Ok(material)
     }
 }

@@ -237,6 +237,56 @@ fn table_agrees_with_exact_path() {
     }
 }
 
+/// A table built on one spectrum's shape serves every amplitude of it (docs/model.md §2:
+/// the contact of k²C at P0/E* is that of C at P0/(k E*) with every length times k): the
+/// tables of a self-affine surface at Ra 0.2, 0.4 and 0.9 µm agree with each one's own exact
+/// path to the table's tolerance over the whole range, and with each other under the scaling
+/// to rounding — the nodes are computed once, on the unit shape, whichever surface comes first.
+#[test]
+fn one_table_shape_serves_every_amplitude() {
+    let settings = ContactSettings::default();
+    let build = |h: f64| {
+        let exact = PerssonContact::new(
+            Spectrum::self_affine(h, 0.8, 7.85e3, 6.3e8, None).unwrap(),
+            settings,
+        );
+        (
+            ContactTable::build(exact.clone(), TableSettings::default()),
+            exact,
+        )
+    };
+    let (base, _) = build(0.5e-6);
+    let (lo, hi) = base.range().expect("a table");
+    for k in [0.4, 1.0, 1.8] {
+        let (table, exact) = build(0.5e-6 * k);
+        let (lo_k, hi_k) = table.range().expect("a table");
+        assert!(rel(lo_k, k * lo) < 1e-12 && rel(hi_k, k * hi) < 1e-12);
+        let mut worst: f64 = 0.0;
+        for i in 0..=200 {
+            let s = lo * (hi / lo).powf((i as f64 + 0.37) / 201.0);
+            let scaled = table.critical_gap(k * s).unwrap();
+            // the scaling law, through two different surfaces' lookups
+            assert!(
+                rel(scaled, k * base.critical_gap(s).unwrap()) < 1e-11,
+                "k = {k}, s = {s}"
+            );
+            worst = worst.max(rel(scaled, leaking(exact.critical_junction(k * s)).u_c));
+        }
+        assert!(worst < 1e-3, "k = {k}: worst table error {worst}");
+    }
+    // the same shape gives the same unit spectrum to the bit
+    let a = Spectrum::self_affine(0.3e-6, 0.8, 7.85e3, 6.3e8, Some(2e4)).unwrap();
+    let b = Spectrum::self_affine(1.7e-6, 0.8, 7.85e3, 6.3e8, Some(2e4)).unwrap();
+    assert_eq!(a.unit_shape(), b.unit_shape());
+    assert!(rel(a.unit_shape().rms_roughness(), 1e-6) < 1e-14);
+    assert_ne!(
+        a.unit_shape(),
+        Spectrum::self_affine(0.3e-6, 0.7, 7.85e3, 6.3e8, Some(2e4))
+            .unwrap()
+            .unit_shape()
+    );
+}
+
 /// The exact level's cache of quadrature nodes ([`TableSettings::exact_cache`], 96 per decade)
 /// interpolates u_c far below the critical-junction table's error, so that `exact` stays the
 /// table's reference (docs/model.md §4).

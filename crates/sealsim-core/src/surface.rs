@@ -228,6 +228,22 @@ impl Spectrum {
         s
     }
 
+    /// The spectrum's shape: C divided by C(q0), then scaled to an rms roughness of 1 µm. Two
+    /// spectra that differ by a constant factor only (a self-affine surface at another Ra or
+    /// rms) have the same bits here whenever the factor sits in one shift of ln C, as it does
+    /// for every [`Self::self_affine`] spectrum, so the scale-free contact tables
+    /// ([`crate::contact::ContactTable`]) computed on it are shared between them.
+    pub fn unit_shape(&self) -> Self {
+        let mut s = self.clone();
+        let ln_c0 = s.segments.first().map_or(0.0, |seg| seg.ln_c);
+        for seg in &mut s.segments {
+            seg.ln_c -= ln_c0;
+        }
+        s.recompute_cumulative();
+        s.rescale_to(1e-6);
+        s
+    }
+
     fn rescale_to(&mut self, h_rms: f64) {
         let shift = (h_rms * h_rms).ln() - (2.0 * std::f64::consts::PI * self.total_m1()).ln();
         for seg in &mut self.segments {

@@ -12,7 +12,7 @@
 
 use super::{EffectiveMedium, EffectiveMediumSettings, Junction, PerssonContact};
 use crate::math::interp::UniformCubic;
-use std::sync::OnceLock;
+use std::sync::{Arc, Mutex, OnceLock};
 
 /// How the table is laid out.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -79,8 +79,29 @@ impl Default for TableSettings {
 }
 
 /// u_c(P0/E*) and ū_c(P0/E*) for one surface (see the module docs).
+///
+/// The tabulated `ln(u/h_rms)` against `logit(s/s_seal)` is the same function for every
+/// spectrum of one *shape* (C(q) up to a constant factor k²): by Persson's scaling
+/// (docs/model.md §2) the contact of `k² C` at `P0/E*` is that of `C` at `P0/(k E*)` with every
+/// length times k, so `s_seal` and `h_rms` scale by k and the tabulated quotients do not move.
+/// So the nodes are computed once per shape, on [`Spectrum::unit_shape`](crate::surface::Spectrum::unit_shape),
+/// and shared (a process-wide cache of [`SHAPE_CACHE_SIZE`] shapes): the cases of a study that
+/// varies the roughness amplitude (Ra, rms) at a fixed shape build one table between them. The
+/// nodes are a function of the shape alone, never of which surface asked first, so every run
+/// gets the same bits whatever the order, the threads or the other runs of the process.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ContactTable {
+    /// This surface's exact path (ζc, λc, h_rms(ζc), and every look-up outside the grid).
+    exact: PerssonContact,
+    s_seal: f64,
+    ln_h: f64,
+    shape: Arc<TableShape>,
+}
+
+/// The nodes of a [`ContactTable`], computed on the unit-shape spectrum.
+#[derive(Debug, PartialEq)]
+struct TableShape {
+    /// The unit-shape path the nodes are computed on.
     exact: PerssonContact,
     s_seal: f64,
     ln_h: f64,
@@ -92,6 +113,18 @@ pub struct ContactTable {
     low_start: f64,
 }
 
+/// How many table shapes the process keeps (each a few kB): a study or sweep rarely has more
+/// surface shapes than this, and the least recently built goes first.
+pub const SHAPE_CACHE_SIZE: usize = 64;
+
+type ShapeKey = (String, TableSettings);
+
+/// The process-wide cache of table shapes (see [`ContactTable`]): most recently used last.
+fn shape_cache() -> &'static Mutex<Vec<(ShapeKey, Arc<TableShape>)>> {
+    static CACHE: OnceLock<Mutex<Vec<(ShapeKey, Arc<TableShape>)>>> = OnceLock::new();
+    CACHE.get_or_init(|| Mutex::new(Vec::new()))
+}
+
 #[derive(Debug, Clone, PartialEq)]
 struct Grid {
     /// `ln(u_c/h_rms)` against `logit(s/s_seal)`.
@@ -100,9 +133,9 @@ struct Grid {
     ubar_c: UniformCubic,
 }
 
-impl ContactTable {
-    /// Builds the table by evaluating the exact path at every node.
-    pub fn build(exact: PerssonContact, settings: TableSettings) -> Self {
+impl TableShape {
+    /// The nodes, by evaluating the exact path of the unit shape at every one.
+    fn build(exact: PerssonContact, settings: TableSettings) -> Self {
         let s_seal = exact.sealing_reduced_pressure();
         let (lo, h, n) = settings.logit_grid();
         let ln_h = exact.spectrum().rms_roughness().ln();
@@ -131,7 +164,7 @@ impl ContactTable {
         } else {
             f64::INFINITY
         };
-        ContactTable {
+        TableShape {
             exact,
             s_seal,
             ln_h,
@@ -179,6 +212,53 @@ impl ContactTable {
             None
         }
     }
+}
+
+impl ContactTable {
+    /// Builds the table: the nodes of the surface's shape (computed on the unit-shape spectrum
+    /// by evaluating its exact path at every node, or taken from the process's cache of shapes),
+    /// bound to this surface's exact path.
+    pub fn build(exact: PerssonContact, settings: TableSettings) -> Self {
+        let unit = exact.spectrum().unit_shape();
+        // exact bits of the shape and the model settings: equal keys, equal nodes
+        let key = (format!("{unit:?}{:?}", exact.settings()), settings);
+        let cached = {
+            let mut cache = shape_cache().lock().unwrap_or_else(|p| p.into_inner());
+            cache.iter().position(|(k, _)| *k == key).map(|at| {
+                let entry = cache.remove(at);
+                let shape = Arc::clone(&entry.1);
+                cache.push(entry);
+                shape
+            })
+        };
+        let shape = cached.unwrap_or_else(|| {
+            // built outside the lock: another thread may build the same shape meanwhile, with
+            // the same bits
+            let shape = Arc::new(TableShape::build(
+                PerssonContact::new(unit, *exact.settings()),
+                settings,
+            ));
+            let mut cache = shape_cache().lock().unwrap_or_else(|p| p.into_inner());
+            if !cache.iter().any(|(k, _)| *k == key) {
+                if cache.len() >= SHAPE_CACHE_SIZE {
+                    cache.remove(0);
+                }
+                cache.push((key, Arc::clone(&shape)));
+            }
+            shape
+        });
+        ContactTable {
+            s_seal: exact.sealing_reduced_pressure(),
+            ln_h: exact.spectrum().rms_roughness().ln(),
+            exact,
+            shape,
+        }
+    }
+
+    /// The grid that covers the grid variable `v`, if any.
+    fn grid_at(&self, v: f64) -> Option<&Grid> {
+        self.shape.grid_at(v)
+    }
 
     /// The exact path the table was built from.
     pub fn exact(&self) -> &PerssonContact {
@@ -188,9 +268,10 @@ impl ContactTable {
     /// Range of `P0/E*` the table covers, its extension included (`None`: no table); outside
     /// it lookups are exact.
     pub fn range(&self) -> Option<(f64, f64)> {
-        let (a, b) = self.grid.as_ref()?.u_c.range();
+        let shape = &*self.shape;
+        let (a, b) = shape.grid.as_ref()?.u_c.range();
         Some((
-            self.s_seal * logistic(a.min(self.low_start)),
+            self.s_seal * logistic(a.min(shape.low_start)),
             self.s_seal * logistic(b),
         ))
     }

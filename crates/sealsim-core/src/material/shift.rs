@@ -151,6 +151,23 @@ impl TemperatureHistory {
         self.points.len() == 1 && self.cycles.iter().all(|c| c.amplitude == 0.0)
     }
 
+    /// The temperature \[K\] if it is constant on `[a, b]` (no cycle, and the table flat
+    /// there: after a lead-in, say), else `None`. Over such a piece the reduced time is exact
+    /// and a strain that follows the temperature does not change.
+    pub fn constant_on(&self, a: f64, b: f64) -> Option<f64> {
+        if self.cycles.iter().any(|c| c.amplitude != 0.0) {
+            return None;
+        }
+        let t = self.base(a);
+        let flat = self.base(b) == t
+            && self
+                .points
+                .iter()
+                .filter(|p| p.0 > a && p.0 < b)
+                .all(|p| p.1 == t);
+        flat.then_some(t)
+    }
+
     /// T(t) \[K\].
     pub fn at(&self, t: f64) -> f64 {
         self.base(t) + self.cycles.iter().map(|c| c.at(t)).sum::<f64>()
@@ -303,8 +320,12 @@ pub fn reduced_time(history: &TemperatureHistory, shift: &Shift, a: f64, b: f64)
     if b <= a {
         return 0.0;
     }
-    if history.is_constant() || matches!(shift, Shift::None) {
+    if matches!(shift, Shift::None) {
         return (b - a) / shift.factor(history.at(a));
+    }
+    // exact where T is constant: the whole history, or the piece after a lead-in
+    if let Some(t) = history.constant_on(a, b) {
+        return (b - a) / shift.factor(t);
     }
     let rate = |t: f64| shift.ln_rate(history.at(t)).exp();
     history
@@ -344,8 +365,8 @@ pub fn reduced_time_two_sided(
     if b <= a {
         return 0.0;
     }
-    if history.is_constant() {
-        return reduced_time(history, &law(side(history.at(a))), a, b);
+    if let Some(t) = history.constant_on(a, b) {
+        return reduced_time(history, &law(side(t)), a, b);
     }
     // a history that never reaches the anchor (or never leaves the side below it) sees one law
     let (coldest, hottest) = history.range();
@@ -444,6 +465,34 @@ mod tests {
         c1: 8.86,
         c2: 101.6,
     };
+
+    /// A fitted ring settling from 23 °C to 80 °C over an hour: the temperature is constant
+    /// after the lead-in and nowhere before; a cycle makes it vary everywhere; and the reduced
+    /// time over a constant piece is the closed form (b − a)/a_T, which the adaptive quadrature
+    /// gives to its 1e-12.
+    #[test]
+    fn constant_pieces_after_a_lead_in_are_exact() {
+        let h = TemperatureHistory::constant(353.15).with_lead_in(296.15, 3600.0);
+        assert!(!h.is_constant());
+        assert_eq!(h.constant_on(3600.0, 1e9), Some(353.15));
+        assert_eq!(h.constant_on(7200.0, 9000.0), Some(353.15));
+        assert_eq!(h.constant_on(0.0, 3600.0), None);
+        assert_eq!(h.constant_on(3599.0, 4000.0), None);
+        let closed = (1e9 - 4000.0) / WLF.factor(353.15);
+        assert_eq!(reduced_time(&h, &WLF, 4000.0, 1e9), closed);
+        let rate = |t: f64| WLF.ln_rate(h.at(t)).exp();
+        assert!((adaptive(&rate, 4000.0, 1e9) / closed - 1.0).abs() < 1e-11);
+        let cycled = h.clone().with_cycle(Cycle {
+            amplitude: 5.0,
+            period: 86_400.0,
+            phase: 0.0,
+        });
+        assert_eq!(cycled.constant_on(4000.0, 5000.0), None);
+        assert_eq!(
+            TemperatureHistory::constant(300.0).constant_on(0.0, 1.0),
+            Some(300.0)
+        );
+    }
 
     #[test]
     fn coldest_point_and_first_crossing_are_the_closed_forms() {

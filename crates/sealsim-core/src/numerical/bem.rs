@@ -127,7 +127,14 @@ impl Default for BemSettings {
             max_iterations: 20_000,
             preconditioned: true,
             coarse_to_fine: true,
-            threads: std::thread::available_parallelism().map_or(1, |t| t.get().min(2)),
+            // asked once per process: the query reads cgroup files, and every scenario's
+            // validation makes default settings (a study validates one per case)
+            threads: {
+                static THREADS: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
+                *THREADS.get_or_init(|| {
+                    std::thread::available_parallelism().map_or(1, |t| t.get().min(2))
+                })
+            },
         }
     }
 }
