@@ -441,9 +441,17 @@ impl RelaxationState {
         } else {
             self.network
         };
-        for (h, t) in self.branches.iter_mut().zip(prony.terms()) {
-            let x = d_xi / t.tau + d_k;
-            *h = exp_neg(x) * *h + t.modulus * network_mid * phi(x) * d_strain;
+        if d_strain == 0.0 {
+            // at constant strain (most steps of a life at a steady temperature) the branches
+            // only decay: the same bits as below, whose second term is then +0, without φ
+            for (h, t) in self.branches.iter_mut().zip(prony.terms()) {
+                *h = exp_neg(d_xi / t.tau + d_k) * *h + 0.0;
+            }
+        } else {
+            for (h, t) in self.branches.iter_mut().zip(prony.terms()) {
+                let x = d_xi / t.tau + d_k;
+                *h = exp_neg(x) * *h + t.modulus * network_mid * phi(x) * d_strain;
+            }
         }
         self.equilibrium = decay * self.equilibrium + network_mid * phi(d_k) * d_strain;
         if d_k > 0.0 {

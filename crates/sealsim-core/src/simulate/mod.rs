@@ -237,18 +237,29 @@ impl InterfaceLeak {
 struct InterfaceSolver {
     memo: HertzMemo,
     /// The reduced pressure at and above which its path conducts nothing for the run's fluid
-    /// ([`ContactPath::molecular_cut`]).
-    cut: f64,
+    /// ([`ContactPath::molecular_cut`]): found on first use, since a ring that seals all its
+    /// life never needs it (a root search with the exact path near sealing; a function of the
+    /// path and the fluid alone, so when it is found does not change its bits).
+    cut: std::cell::OnceCell<f64>,
+    molecular_size: f64,
 }
 
 impl InterfaceSolver {
-    fn new(problem: &LifeProblem, path: &ContactPath) -> Self {
+    fn new(problem: &LifeProblem) -> Self {
         let pressure_spacing = (problem.asperity_modulus == AsperityModulus::Follow)
             .then_some(interface::MEMO_PRESSURE_SPACING);
         InterfaceSolver {
             memo: HertzMemo::new(interface::MEMO_SPACING, pressure_spacing),
-            cut: path.molecular_cut(problem.fluid.molecular_size()),
+            cut: std::cell::OnceCell::new(),
+            molecular_size: problem.fluid.molecular_size(),
         }
+    }
+
+    /// [`Self::cut`] on `path`, the path this solver serves.
+    fn cut(&self, path: &ContactPath) -> f64 {
+        *self
+            .cut
+            .get_or_init(|| path.molecular_cut(self.molecular_size))
     }
 
     fn solve(
@@ -347,6 +358,8 @@ pub struct Simulator<'a> {
     /// The compound's T10 \[K\] (`None`: none), below which the shutdown check follows the
     /// hereditary response ([`Self::glassy_shutdown`]).
     low_temperature_limit: Option<f64>,
+    /// [`LifeProblem::installed_modulus`], a constant of the run that every profile needs.
+    installed_modulus: f64,
 }
 
 impl<'a> Simulator<'a> {
@@ -401,7 +414,7 @@ impl<'a> Simulator<'a> {
             creep: problem.material.prony.creep(),
             clogging,
             reference_memo: std::cell::Cell::new(None),
-            counterface: InterfaceSolver::new(problem, &path),
+            counterface: InterfaceSolver::new(problem),
             groove: match &problem.groove {
                 GrooveInterface::Own(spectrum) => {
                     let own = ContactPath::for_fluid(
@@ -410,7 +423,7 @@ impl<'a> Simulator<'a> {
                         problem.fidelity,
                         &problem.fluid,
                     );
-                    let solver = InterfaceSolver::new(problem, &own);
+                    let solver = InterfaceSolver::new(problem);
                     Some((own, solver))
                 }
                 _ => None,
@@ -418,6 +431,7 @@ impl<'a> Simulator<'a> {
             path,
             drag,
             low_temperature_limit: problem.material.low_temperature_limit(),
+            installed_modulus: problem.installed_modulus(),
         };
         simulator.reference_force = simulator.force_at_reference();
         simulator
@@ -625,7 +639,7 @@ impl<'a> Simulator<'a> {
         match p.loading {
             Loading::Displacement => p.geometry.profile(
                 state.relaxation.stress(&p.material.prony),
-                p.installed_modulus(),
+                self.installed_modulus,
                 p.thermal_strain.as_ref(),
                 p.environment.at(t),
             ),
@@ -679,7 +693,7 @@ impl<'a> Simulator<'a> {
             set_strain: state.networks.set_strain(),
             network: state.networks.network(),
             long_term: p.material.prony.long_term(),
-            installed_modulus: p.installed_modulus(),
+            installed_modulus: self.installed_modulus,
             roughness: p.spectrum.rms_roughness(),
         });
         let restarts = |peak: f64| {
@@ -751,9 +765,12 @@ impl<'a> Simulator<'a> {
             let d_load = p.geometry.load_variable(thermal, to) - relaxation.strain();
             relaxation.step(prony, 0.0, d_load);
         }
-        let profile =
-            p.geometry
-                .profile(relaxation.stress(prony), p.installed_modulus(), thermal, to);
+        let profile = p.geometry.profile(
+            relaxation.stress(prony),
+            self.installed_modulus,
+            thermal,
+            to,
+        );
         Some(profile.peak())
     }
 
@@ -900,7 +917,13 @@ impl<'a> Simulator<'a> {
                 *profile
             };
             InterfaceLeak::new(
-                self.onset_leak(&local, &threshold, offset, solver.cut * e_star, service),
+                self.onset_leak(
+                    &local,
+                    &threshold,
+                    offset,
+                    solver.cut(path) * e_star,
+                    service,
+                ),
                 junction_at(top),
                 SealState::LiftOff,
             )
@@ -933,7 +956,7 @@ impl<'a> Simulator<'a> {
                     dp,
                     &InterfaceSettings {
                         outlet_breaks: fluid.outlet_breaks(),
-                        ceiling: solver.cut * e_star,
+                        ceiling: solver.cut(path) * e_star,
                         ..INTERFACE
                     },
                 ),
