@@ -118,10 +118,11 @@ struct TableShape {
 pub const SHAPE_CACHE_SIZE: usize = 64;
 
 type ShapeKey = (String, TableSettings);
+type ShapeCache = Mutex<Vec<(ShapeKey, Arc<TableShape>)>>;
 
 /// The process-wide cache of table shapes (see [`ContactTable`]): most recently used last.
-fn shape_cache() -> &'static Mutex<Vec<(ShapeKey, Arc<TableShape>)>> {
-    static CACHE: OnceLock<Mutex<Vec<(ShapeKey, Arc<TableShape>)>>> = OnceLock::new();
+fn shape_cache() -> &'static ShapeCache {
+    static CACHE: OnceLock<ShapeCache> = OnceLock::new();
     CACHE.get_or_init(|| Mutex::new(Vec::new()))
 }
 
