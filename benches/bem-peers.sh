@@ -5,9 +5,13 @@
 # docstring) and writes the table to benches/results/bem-peers.md with date, commit, machine,
 # load and versions.
 #
-#   benches/bem-peers.sh                  # 512², 1024², 2048² with the peers; 4096², 8192² sealsim alone
+#   benches/bem-peers.sh                  # 512², 1024², 2048² with the peers (1 and 2 threads);
+#                                         # 4096², 8192² sealsim alone (2 threads)
 #   benches/bem-peers.sh --sizes 512,1024 # a subset
 #   benches/bem-peers.sh --quick          # 512² only, 1 thread, two aspher settings at 1e-8
+#
+# Running time on a busy 2-core VM: about half an hour (tamaas is skipped where its estimate
+# exceeds 10 minutes; from 2048² aspher runs only its best setting of the previous size).
 #
 # aspher 0.1.3.post1 is an sdist (C++17, CMake ≥ 3.18): it needs a compiler and Eigen 3.4 on
 # the system (Debian/Ubuntu: apt-get install libeigen3-dev), otherwise its build tries to fetch
@@ -21,7 +25,7 @@ while [[ $# -gt 0 ]]; do
     case "$1" in
         --sizes) SIZES="$2"; shift 2 ;;
         --quick) QUICK=1; SIZES="512"; shift ;;
-        -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
+        -h|--help) sed -n '2,21p' "$0"; exit 0 ;;
         *) echo "unknown option $1 (use --sizes 512,1024 or --quick)" >&2; exit 2 ;;
     esac
 done
