@@ -11,7 +11,8 @@
 #   benches/bem-peers.sh --quick          # 512² only, 1 thread, two aspher settings at 1e-8
 #
 # Running time on a busy 2-core VM: about half an hour (tamaas is skipped where its estimate
-# exceeds 10 minutes; from 2048² aspher runs only its best setting of the previous size).
+# exceeds 10 minutes, and on 2 threads above 512²; aspher runs its full grid on 1 thread up to
+# 1024², elsewhere only the pick of 1 thread: see bem_peers.py).
 #
 # aspher 0.1.3.post1 is an sdist (C++17, CMake ≥ 3.18): it needs a compiler and Eigen 3.4 on
 # the system (Debian/Ubuntu: apt-get install libeigen3-dev), otherwise its build tries to fetch
