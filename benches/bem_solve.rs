@@ -24,7 +24,10 @@ use sealsim::numerical::bem::{BemSettings, Boundary, solve};
 use std::time::Instant;
 
 fn main() {
-    let args: Vec<String> = std::env::args().skip(1).filter(|a| a != "--bench").collect();
+    let args: Vec<String> = std::env::args()
+        .skip(1)
+        .filter(|a| a != "--bench")
+        .collect();
     if args.len() < 7 {
         eprintln!(
             "usage: bem_solve MAP N PIXEL_M E_STAR_PA MEAN_PRESSURE_PA TOLERANCE THREADS [PRESSURE_OUT]"
