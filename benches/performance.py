@@ -264,7 +264,7 @@ def time_best(cmd, repeat):
 def record_timed(args, fid, cmd, shown):
     store = read_store()
     machine = machine_now()
-    commit = commit_now()
+    commit = args.commit or commit_now()
     before = load_now()
     best, cpu = time_best(cmd, args.repeat)
     figure = {
@@ -285,7 +285,7 @@ def record_timed(args, fid, cmd, shown):
 
 
 def cmd_record_command(args):
-    cmd = args.command[1:] if args.command[:1] == ["--"] else args.command
+    cmd = args.command
     if not cmd:
         sys.exit("record-command: no command given after --")
     return record_timed(args, args.id, cmd, " ".join(cmd))
@@ -404,6 +404,12 @@ def provenance(fig):
 TOKEN = re.compile(r"\{\{([a-z]+:)?([^}]*)\}\}")
 
 
+HEADER = (
+    "<!-- Generated from benches/results/measurements.json and benches/performance.md.in by "
+    "`python3 benches/performance.py render`; do not edit by hand. -->\n\n"
+)
+
+
 def render(store):
     template = TEMPLATE.read_text()
     out = []
@@ -446,7 +452,7 @@ def render(store):
                 out.append(BEM_PEERS.read_text().rstrip("\n"))
             continue
         out.append(line)
-    return "\n".join(out) + "\n"
+    return HEADER + "\n".join(out) + "\n"
 
 
 def prov_cell(store, used):
@@ -491,7 +497,6 @@ def main():
 
     b = sub.add_parser("bench", help="cargo bench under the timing lock, then record")
     b.add_argument("benches", nargs="+")
-    b.add_argument("criterion_args", nargs=argparse.REMAINDER)
     b.set_defaults(func=cmd_bench)
 
     r = sub.add_parser("record", help="criterion's latest results into the store")
@@ -505,7 +510,7 @@ def main():
     c.add_argument("id")
     c.add_argument("--repeat", type=int, default=5)
     c.add_argument("--cases", type=int, help="cases the command runs (for cases/min)")
-    c.add_argument("command", nargs=argparse.REMAINDER)
+    c.add_argument("--commit", help="the commit the binary was built from (default: HEAD)")
     c.set_defaults(func=cmd_record_command)
 
     s = sub.add_parser("record-study", help="`sealsim study` with N samples, best of K")
@@ -514,6 +519,7 @@ def main():
     s.add_argument("--samples", type=int, required=True)
     s.add_argument("--threads", type=int, required=True)
     s.add_argument("--repeat", type=int, default=3)
+    s.add_argument("--commit", help="the commit the binary was built from (default: HEAD)")
     s.add_argument("--bin", default=str(ROOT / "target/release/sealsim"))
     s.set_defaults(func=cmd_record_study)
 
@@ -531,7 +537,14 @@ def main():
     d.add_argument("--page", help="with --check: compare this file instead of the page")
     d.set_defaults(func=cmd_render)
 
-    args = p.parse_args()
+    # what follows `--` is the command (record-command) or criterion's arguments (bench)
+    argv = sys.argv[1:]
+    rest = []
+    if "--" in argv:
+        at = argv.index("--")
+        argv, rest = argv[:at], argv[at + 1 :]
+    args = p.parse_args(argv)
+    args.command = args.criterion_args = rest
     sys.exit(args.func(args))
 
 

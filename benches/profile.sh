@@ -52,7 +52,7 @@ profile() { # NAME COMMAND...
   local name=$1
   shift
   echo "== $name: $*" >&2
-  perf record -g --call-graph dwarf -F 999 -o "$out/$name.perf.data" -- "$@" > /dev/null
+  perf record --call-graph dwarf,16384 -F 199 -o "$out/$name.perf.data" -- "$@" > /dev/null
   echo "== $name: top functions by self time" >&2
   perf report -i "$out/$name.perf.data" --stdio --no-children --percent-limit 1.5 \
     2> /dev/null | grep -E '^ +[0-9.]+%' | head -25
