@@ -138,7 +138,10 @@ fn performance_check(page: Option<&Path>) -> (Option<i32>, String) {
     let out = cmd
         .output()
         .expect("python3 runs (the page's generator is Python 3, standard library only)");
-    (out.status.code(), String::from_utf8_lossy(&out.stderr).into_owned())
+    (
+        out.status.code(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
 }
 
 /// docs/src/performance.md is what `benches/performance.py render` makes of the committed
@@ -175,17 +178,26 @@ fn performance_page_is_rendered_from_the_store() {
     assert!(!machines.is_empty(), "no machine table");
     let mut rows = 0;
     for line in page.lines().filter(|l| l.starts_with("| ")) {
-        if line.starts_with("| what |") || line.starts_with("| machine |") || line.starts_with("| vm-")
+        if line.starts_with("| what |")
+            || line.starts_with("| machine |")
+            || line.starts_with("| vm-")
         {
             continue;
         }
         let cells: Vec<&str> = line.trim_end_matches(" |").rsplit(" | ").collect();
         let last = cells[0];
         let found: Vec<_> = provenance.captures_iter(last).collect();
-        assert!(!found.is_empty(), "a row without date · commit · machine: {line}");
+        assert!(
+            !found.is_empty(),
+            "a row without date · commit · machine: {line}"
+        );
         for c in found {
             let id = c[4].strip_prefix("vm-").unwrap_or(&c[4]);
-            assert!(machines.contains(&id), "machine {} not described: {line}", &c[4]);
+            assert!(
+                machines.contains(&id),
+                "machine {} not described: {line}",
+                &c[4]
+            );
         }
         rows += 1;
     }
