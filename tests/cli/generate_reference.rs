@@ -125,3 +125,81 @@ fn warnings_is_the_committed_page_and_lists_every_code() {
         assert!(stdout.contains(&format!("\n## {}\n", c.code)), "{}", c.code);
     }
 }
+
+/// `python3 benches/performance.py render --check [--page PAGE]`: its exit code and stderr.
+fn performance_check(page: Option<&Path>) -> (Option<i32>, String) {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut cmd = std::process::Command::new("python3");
+    cmd.current_dir(root)
+        .args(["benches/performance.py", "render", "--check"]);
+    if let Some(page) = page {
+        cmd.arg("--page").arg(page);
+    }
+    let out = cmd
+        .output()
+        .expect("python3 runs (the page's generator is Python 3, standard library only)");
+    (
+        out.status.code(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// docs/src/performance.md is what `benches/performance.py render` makes of the committed
+/// measurements (benches/results/measurements.json) and the template (issue 43): no benchmark
+/// runs here, only the rendering. Every figure row ends with its date · commit · machine, and
+/// every machine named is described in the machine table.
+#[test]
+fn performance_page_is_rendered_from_the_store() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let (code, stderr) = performance_check(None);
+    assert_eq!(
+        code,
+        Some(0),
+        "docs/src/performance.md is stale: run `python3 benches/performance.py render`\n{stderr}"
+    );
+
+    // the check can fail: a page with one figure changed is refused
+    let page = std::fs::read_to_string(root.join("docs/src/performance.md")).unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let tampered = dir.path().join("performance.md");
+    std::fs::write(&tampered, page.replacen(" ms", " µs", 1)).unwrap();
+    let (code, stderr) = performance_check(Some(&tampered));
+    assert_eq!(code, Some(1), "{stderr}");
+    assert!(stderr.contains("render"), "{stderr}");
+
+    // every figure row states its provenance; the machines it names are described
+    let provenance =
+        regex::Regex::new(r"(\d{4}-\d{2}-\d{2}) · ([0-9a-f]{7,}(-dirty)?) · ([a-z0-9-]+)").unwrap();
+    let machines: Vec<&str> = page
+        .lines()
+        .filter_map(|l| l.strip_prefix("| vm-"))
+        .filter_map(|l| l.split(" |").next())
+        .collect();
+    assert!(!machines.is_empty(), "no machine table");
+    let mut rows = 0;
+    for line in page.lines().filter(|l| l.starts_with("| ")) {
+        if line.starts_with("| what |")
+            || line.starts_with("| machine |")
+            || line.starts_with("| vm-")
+        {
+            continue;
+        }
+        let cells: Vec<&str> = line.trim_end_matches(" |").rsplit(" | ").collect();
+        let last = cells[0];
+        let found: Vec<_> = provenance.captures_iter(last).collect();
+        assert!(
+            !found.is_empty(),
+            "a row without date · commit · machine: {line}"
+        );
+        for c in found {
+            let id = c[4].strip_prefix("vm-").unwrap_or(&c[4]);
+            assert!(
+                machines.contains(&id),
+                "machine {} not described: {line}",
+                &c[4]
+            );
+        }
+        rows += 1;
+    }
+    assert!(rows >= 20, "{rows} figure rows");
+}
