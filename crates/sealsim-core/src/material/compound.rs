@@ -357,6 +357,47 @@ impl Material {
     /// material has no shift, when 23 °C is at or below the frozen limit, or when the modulus
     /// never reaches 10 × (E0 < 10 E(23 °C), e.g. a series without a glassy plateau).
     pub fn low_temperature_limit(&self) -> Option<f64> {
+        // a root search to the last bit over the whole series (≈ 60 evaluations), asked by the
+        // validation and the run of every case of a study: remembered per (series, shift), the
+        // only inputs, by their exact bits
+        let mut key: Vec<u64> = vec![self.prony.long_term().to_bits()];
+        key.extend(
+            self.prony
+                .terms()
+                .iter()
+                .flat_map(|t| [t.modulus.to_bits(), t.tau.to_bits()]),
+        );
+        key.extend(match self.shift {
+            Shift::None => [0, 0, 0, 0],
+            Shift::Wlf { reference, c1, c2 } => {
+                [1, reference.to_bits(), c1.to_bits(), c2.to_bits()]
+            }
+            Shift::Arrhenius {
+                reference,
+                activation_energy,
+            } => [2, reference.to_bits(), activation_energy.to_bits(), 0],
+        });
+        type Known = Vec<(Vec<u64>, Option<f64>)>;
+        static KNOWN: std::sync::OnceLock<std::sync::Mutex<Known>> = std::sync::OnceLock::new();
+        let known = KNOWN.get_or_init(Default::default);
+        if let Some((_, t)) = known
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .iter()
+            .find(|(k, _)| *k == key)
+        {
+            return *t;
+        }
+        let t = self.low_temperature_limit_uncached();
+        let mut known = known.lock().unwrap_or_else(|p| p.into_inner());
+        if known.len() >= 64 {
+            known.remove(0);
+        }
+        known.push((key, t));
+        t
+    }
+
+    fn low_temperature_limit_uncached(&self) -> Option<f64> {
         let room = GEHMAN_ROOM_TEMPERATURE;
         let lower = match self.shift {
             Shift::None => return None,

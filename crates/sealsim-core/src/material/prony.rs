@@ -310,19 +310,35 @@ impl Creep {
         if ramp <= 0.0 {
             return self.compliance(xi);
         }
-        let delayed: f64 = self
-            .retardation
+        self.ramp_compliance_with(xi, ramp, &self.ramp_weights(ramp))
+    }
+
+    /// The per-term factors `(1 − e^{−ramp/λ_j})/(ramp/λ_j)` of [`Self::ramp_compliance`]: a
+    /// run evaluates the compliance at every state after one installation ramp, so it computes
+    /// them once.
+    pub fn ramp_weights(&self, ramp: f64) -> Vec<f64> {
+        self.retardation
             .iter()
             .map(|r| {
                 let x = ramp / r.tau;
                 // (1 − e^{−x})/x, accurate for small x
-                let phi = if x < 1e-8 {
+                if x < 1e-8 {
                     1.0 - 0.5 * x
                 } else {
                     -(-x).exp_m1() / x
-                };
-                r.modulus * (1.0 - (-xi / r.tau).exp() * phi)
+                }
             })
+            .collect()
+    }
+
+    /// [`Self::ramp_compliance`] with the weights of [`Self::ramp_weights`]`(ramp)` (the same
+    /// bits); `ramp > 0`.
+    pub fn ramp_compliance_with(&self, xi: f64, ramp: f64, weights: &[f64]) -> f64 {
+        let delayed: f64 = self
+            .retardation
+            .iter()
+            .zip(weights)
+            .map(|(r, phi)| r.modulus * (1.0 - (-xi / r.tau).exp() * phi))
             .sum();
         self.instantaneous + self.fluidity * (xi + 0.5 * ramp) + delayed
     }

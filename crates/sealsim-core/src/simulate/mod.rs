@@ -360,6 +360,8 @@ pub struct Simulator<'a> {
     low_temperature_limit: Option<f64>,
     /// [`LifeProblem::installed_modulus`], a constant of the run that every profile needs.
     installed_modulus: f64,
+    /// The creep series' weights of the installation ramp ([`crate::material::Creep::ramp_weights`]).
+    ramp_weights: Vec<f64>,
 }
 
 impl<'a> Simulator<'a> {
@@ -401,6 +403,8 @@ impl<'a> Simulator<'a> {
                 DragTable::build(path.exact(), DragSettings::default()),
             )
         });
+        let creep = problem.material.prony.creep();
+        let ramp_weights = creep.ramp_weights(problem.installation_reduced_time());
         let mut simulator = Simulator {
             problem,
             rule: gauss_legendre(problem.strips.max(2)),
@@ -411,7 +415,7 @@ impl<'a> Simulator<'a> {
             ),
             initial_profile,
             reference_force: initial_profile.force_per_length(),
-            creep: problem.material.prony.creep(),
+            creep,
             clogging,
             reference_memo: std::cell::Cell::new(None),
             counterface: InterfaceSolver::new(problem),
@@ -432,6 +436,7 @@ impl<'a> Simulator<'a> {
             drag,
             low_temperature_limit: problem.material.low_temperature_limit(),
             installed_modulus: problem.installed_modulus(),
+            ramp_weights,
         };
         simulator.reference_force = simulator.force_at_reference();
         simulator
@@ -1433,9 +1438,13 @@ impl<'a> Simulator<'a> {
             AsperityModulus::Fixed(e) => one(e),
             AsperityModulus::Follow => {
                 // the fluid pressure is applied with the squeeze, ramped over the installation
-                let compliance = self
-                    .creep
-                    .ramp_compliance(state.reduced_time, self.problem.installation_reduced_time());
+                let ramp = self.problem.installation_reduced_time();
+                let compliance = if ramp > 0.0 {
+                    self.creep
+                        .ramp_compliance_with(state.reduced_time, ramp, &self.ramp_weights)
+                } else {
+                    self.creep.ramp_compliance(state.reduced_time, ramp)
+                };
                 let e_inf = prony.long_term();
                 let c = state.relaxation.network();
                 let aged = if e_inf > 0.0 && (c != 1.0 || state.creep_set != 0.0) {
