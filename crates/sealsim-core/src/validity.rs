@@ -836,6 +836,16 @@ pub fn extrusion(ratio: f64, limit: &crate::extrusion::ExtrusionLimit, at: At, o
         at,
     );
     if limit.beyond_pressure || limit.beyond_hardness {
+        // the chart finding has no magnitude (0 of 0): the first one's text is the one kept,
+        // so a run that stays beyond the chart only counts it (not formatted at every step)
+        if let Some(kept) = out
+            .items
+            .iter_mut()
+            .find(|f| f.limit == Limit::ExtrusionChart)
+        {
+            kept.count += 1;
+            return;
+        }
         let mut f = Finding::new(Limit::ExtrusionChart, 0.0, 0.0, at);
         let hardness = if limit.backup_rings > 0 {
             String::new()

@@ -1137,20 +1137,33 @@ impl<'a> Simulator<'a> {
             return self.update_mechanics(state, t);
         }
         let floor = 1e-9 * p.material.prony.instantaneous() * self.load0.abs();
-        self.advance_mechanics_controlled(state, t, floor, 0);
+        self.advance_mechanics_controlled(state, t, floor, 0, None);
     }
 
-    /// [`Self::advance_mechanics`]'s error control on one piece `state.time → t`.
-    fn advance_mechanics_controlled(&self, state: &mut Mechanics, t: f64, floor: f64, depth: u32) {
+    /// [`Self::advance_mechanics`]'s error control on one piece `state.time → t`. `whole`: the
+    /// one-step update `state → t` if already made (a split piece's left half is its parent's
+    /// first half step: the same bits, not recomputed).
+    fn advance_mechanics_controlled(
+        &self,
+        state: &mut Mechanics,
+        t: f64,
+        floor: f64,
+        depth: u32,
+        whole: Option<Mechanics>,
+    ) {
         let prony = &self.problem.material.prony;
         let a = state.time;
         let m = 0.5 * (a + t);
-        let mut one = state.clone();
-        self.update_mechanics(&mut one, t);
-        one.time = t;
-        let mut two = state.clone();
-        self.update_mechanics(&mut two, m);
-        two.time = m;
+        let one = whole.unwrap_or_else(|| {
+            let mut one = state.clone();
+            self.update_mechanics(&mut one, t);
+            one.time = t;
+            one
+        });
+        let mut half = state.clone();
+        self.update_mechanics(&mut half, m);
+        half.time = m;
+        let mut two = half.clone();
         self.update_mechanics(&mut two, t);
         two.time = t;
         let (s1, s2) = (one.relaxation.stress(prony), two.relaxation.stress(prony));
@@ -1164,9 +1177,9 @@ impl<'a> Simulator<'a> {
             return;
         }
         let time = state.time;
-        self.advance_mechanics_controlled(state, m, floor, depth + 1);
+        self.advance_mechanics_controlled(state, m, floor, depth + 1, Some(half));
         state.time = m;
-        self.advance_mechanics_controlled(state, t, floor, depth + 1);
+        self.advance_mechanics_controlled(state, t, floor, depth + 1, None);
         state.time = time;
     }
 
