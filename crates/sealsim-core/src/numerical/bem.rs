@@ -324,6 +324,30 @@ fn solve_from(
     }
 }
 
+/// What is prescribed: the mean nominal pressure p̄ (Pa, [`solve`]) or the rigid-body approach
+/// δ (m, [`solve_displacement`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Load {
+    /// Load control: the mean pressure over the cell (Pa).
+    MeanPressure(f64),
+    /// Displacement control: the approach `max h − s` (m).
+    Approach(f64),
+}
+
+/// [`solve`] or [`solve_displacement`], as `load` says.
+pub fn solve_load(
+    map: &HeightMap,
+    e_star: f64,
+    load: Load,
+    boundary: Boundary,
+    settings: &BemSettings,
+) -> Result<ContactSolution, BemError> {
+    match load {
+        Load::MeanPressure(p) => solve(map, e_star, p, boundary, settings),
+        Load::Approach(delta) => solve_displacement(map, e_star, delta, boundary, settings),
+    }
+}
+
 /// Most load-controlled solves [`solve_displacement`] spends on finding the load.
 pub const MAX_LOAD_STEPS: usize = 100;
 
@@ -339,7 +363,8 @@ pub const MAX_LOAD_STEPS: usize = 100;
 ///
 /// Method: δ(p̄) of the load-controlled problem is continuous and increasing, so p̄ is found by a
 /// safeguarded secant search on `ln p̄` (a Hertz-like `δ ∝ p̄^{2/3}` first step, bisection
-/// whenever the secant leaves the bracket), each step a load-controlled [`solve`] warm-started
+/// whenever the secant leaves the bracket of the solves at the final tolerance), each step a
+/// load-controlled [`solve`] warm-started
 /// from the previous pressure field when the load changed by less than a factor 2, at an inner
 /// tolerance one tenth of the remaining approach error relative to the rms height (between
 /// `tolerance/10` and 10⁻²: inexact steps while far off). Converged when the last solve ran at
@@ -418,13 +443,16 @@ pub fn solve_displacement(
         coarse_iterations += sol.coarse_iterations;
         let f = sol.approach - approach;
         residual = (f.abs() / scale).max(sol.residual);
-        if f < 0.0 {
+        let exact = inner <= tight;
+        // Only a solve at the final tolerance brackets the root: an inexact one's δ can be off
+        // by more than |f| (a wrong side would exclude the root for good).
+        if exact && f < 0.0 {
             lo = Some(lo.map_or(x, |l: f64| l.max(x)));
-        } else if f > 0.0 {
+        } else if exact && f > 0.0 {
             hi = Some(hi.map_or(x, |u: f64| u.min(x)));
         }
         let narrow = matches!((lo, hi), (Some(l), Some(u)) if u - l <= settings.tolerance);
-        if inner <= tight && (f.abs() <= settings.tolerance * scale || narrow) {
+        if exact && (f.abs() <= settings.tolerance * scale || narrow) {
             return Ok(ContactSolution {
                 iterations,
                 coarse_iterations,
