@@ -64,7 +64,8 @@ def test_free_boundary_hertz_contact_radius_peak_pressure_and_approach(hertz):
     delta = A_HERTZ**2 / R
     errors = (a / A_HERTZ - 1, p_max / p0 - 1, row["approach_m"] / delta - 1)
     print("Hertz 512² free: a, p0, δ relative errors", errors)
-    # the brief's bounds: 1 %, 2 %, 2 % (measured +0.04 %, −0.01 %, +0.00 %: see the report)
+    # bounds 1 %, 2 %, 2 %; measured +0.10 % (pixel counting: a is from the contact pixels),
+    # +4.5e-6 and −3.9e-6
     assert abs(errors[0]) < 0.01
     assert abs(errors[1]) < 0.02
     assert abs(errors[2]) < 0.02
@@ -87,26 +88,22 @@ def test_a_free_patch_reports_no_flow_rather_than_a_number(hertz):
 
 def test_displacement_control_reproduces_the_pressure_controlled_solution(hertz):
     """Solve at p̄, read δ; solve at δ: the mean pressure, A/A0 and the pressure field agree to
-    the tolerance (1e-8). Measured: p̄ within 3e-10, field Σ|Δp|/Σp 4e-9, A/A0 identical; bound
-    1e-8 on p̄ and 5e-8 on the field (the field's change per iteration is what the tolerance
-    bounds, and it converges linearly)."""
-    heights, mean_pressure, by_load = hertz
+    the tolerance (1e-8). The same sphere and load on a 256² grid of 2 µm pixels (a quarter of
+    the cost). Measured on the 512² grid: p̄ within 2.4e-11, field Σ|Δp|/Σp 1.4e-9, A/A0
+    identical; bound 1e-8 on p̄ and 5e-8 on the field (the tolerance bounds the field's change
+    per iteration of a linearly converging iteration, not its error)."""
+    heights, mean_pressure, _ = hertz
+    common = dict(height_map=heights[::2, ::2], pixel_size=2 * PIXEL, youngs_modulus=E_STAR, poisson_ratio=0.0, boundary="free")
+    by_load = sealsim.contact([mean_pressure], **common)
     delta = float(by_load.table["approach_m"][0])
-    by_approach = sealsim.contact(
-        displacement=[delta],
-        height_map=heights,
-        pixel_size=PIXEL,
-        youngs_modulus=E_STAR,
-        poisson_ratio=0.0,
-        boundary="free",
-    )
+    by_approach = sealsim.contact(displacement=[delta], **common)
     assert by_approach.control == "displacement"
     p_back = float(by_approach.table["nominal_pressure_Pa"][0])
     field = relative(by_approach.fields[0]["pressure_Pa"] - by_load.fields[0]["pressure_Pa"], by_load.fields[0]["pressure_Pa"])
     print("displacement control: p̄", p_back / mean_pressure - 1, "field", field)
     assert abs(p_back / mean_pressure - 1) < 1e-8
     assert field < 5e-8
-    assert abs(by_approach.table["area_fraction"][0] - by_load.table["area_fraction"][0]) <= 2 / N**2
+    assert by_approach.table["area_fraction"][0] == by_load.table["area_fraction"][0]
     assert abs(by_approach.table["approach_m"][0] - delta) <= 1e-8 * heights.std()
 
 
@@ -123,35 +120,37 @@ def punch():
     r = radius_grid()
     face = r <= A_PUNCH
     heights = numpy.where(face, 0.0, -3 * DELTA_PUNCH)
+    a = math.sqrt(face.sum() / math.pi) * PIXEL
+    force = 2 * a * E_STAR * DELTA_PUNCH
+    # load control (displacement control of the same punch takes twice as long: the edge
+    # singularity makes this the slowest case; the round trip is checked on Hertz above)
     result = sealsim.contact(
-        displacement="1 um",
+        force / (N * PIXEL) ** 2,
         height_map=heights,
         pixel_size=PIXEL,
         youngs_modulus=E_STAR,
         poisson_ratio=0.0,
         boundary="free",
     )
-    return r, face, result
+    return r, face, a, force, result
 
 
 def test_free_boundary_flat_punch_force_and_pressure_profile(punch):
-    r, face, result = punch
-    a = math.sqrt(face.sum() / math.pi) * PIXEL
-    force = float(result.table["nominal_pressure_Pa"][0]) * (N * PIXEL) ** 2
-    # the prescribed approach to the tolerance: |δ − 1 µm| ≤ 1e-8 × rms height
-    assert result.fields[0]["approach_m"][0] == pytest.approx(DELTA_PUNCH, rel=0, abs=1e-8 * 1e-6)
-    sneddon = 2 * a * E_STAR * DELTA_PUNCH
+    r, face, a, force, result = punch
+    delta = float(result.table["approach_m"][0])
     p = result.fields[0]["pressure_Pa"]
     inner = r < 0.9 * a
     p_sneddon = force / (2 * math.pi * a * numpy.sqrt(a**2 - r[inner] ** 2))
     l2 = float(numpy.linalg.norm(p[inner] - p_sneddon) / numpy.linalg.norm(p_sneddon))
-    print("punch 512² free: F", force / sneddon - 1, "L2 r<0.9a", l2)
+    stiffness = force / (2 * a * E_STAR * delta)
+    print("punch 512² free: F/(2aE*δ)", stiffness - 1, "L2 r<0.9a", l2)
     # the whole face is in contact, nothing else
     assert numpy.array_equal(p > 0, face)
-    assert abs(force / sneddon - 1) < 0.02
-    # measured 1.0e-2 (the edge singularity on a 64-pixel radius: 1.9e-2 on a 32-pixel one,
-    # halving with the pixel, as the periodic cell in the peer comparison); bound 1.5e-2
-    assert l2 < 0.015
+    assert abs(stiffness - 1) < 0.02
+    # measured 6.6e-3 with 64 pixels on the radius (the pixelated edge: the periodic cell of
+    # the peer comparison gave 1.9e-2 at 32 pixels and 1.0e-2 at 64, halving with the pixel);
+    # bound 1e-2, 1.5 × the measured value
+    assert l2 < 0.01
 
 
 def test_periodic_displacement_control_and_the_mean_plane_approach():
