@@ -323,16 +323,17 @@ fn numerical_points(
             let mut solved = Vec::new();
             let result = match boundary {
                 Boundary::Periodic => {
-                    let mut observe = |map: &HeightMap,
-                                       c: &sealsim::numerical::bem::ContactSolution,
-                                       r: &reference::Realisation| {
-                        solved.push(Solved::new(
-                            map,
-                            r.seed,
-                            c,
-                            Some((r.percolates, r.conductance)),
-                        ));
-                    };
+                    let mut observe =
+                        |map: &HeightMap,
+                         c: &sealsim::numerical::bem::ContactSolution,
+                         r: &reference::Realisation| {
+                            solved.push(Solved::new(
+                                map,
+                                r.seed,
+                                c,
+                                Some((r.percolates, r.conductance)),
+                            ));
+                        };
                     reference::evaluate_loaded(
                         surfaces,
                         1.0,
@@ -344,12 +345,14 @@ fn numerical_points(
                     )
                     .map(|_| ())
                 }
-                Boundary::Free => reference::for_each_surface(surfaces, settings, &mut |map, seed, _, _| {
-                    let c = bem::solve_load(map, 1.0, load, Boundary::Free, &settings.bem)
-                        .map_err(NumericalError::Contact)?;
-                    solved.push(Solved::new(map, seed, &c, None));
-                    Ok(())
-                }),
+                Boundary::Free => {
+                    reference::for_each_surface(surfaces, settings, &mut |map, seed, _, _| {
+                        let c = bem::solve_load(map, 1.0, load, Boundary::Free, &settings.bem)
+                            .map_err(NumericalError::Contact)?;
+                        solved.push(Solved::new(map, seed, &c, None));
+                        Ok(())
+                    })
+                }
             };
             result.map_err(|e| (format!("numerical level at {}: {e}", describe(&load)), e))?;
             Ok(NumericalPoint { solved })
@@ -390,7 +393,8 @@ fn numerical_result<'py>(
         .map_or((0, f64::NAN), |s| (s.n, s.pixel));
     let flow = boundary == Boundary::Periodic;
     let table = PyDict::new(py);
-    let column = |f: &dyn Fn(&NumericalPoint) -> f64| -> Vec<f64> { points.iter().map(f).collect() };
+    let column =
+        |f: &dyn Fn(&NumericalPoint) -> f64| -> Vec<f64> { points.iter().map(f).collect() };
     let nominal: Vec<f64> = match pressures {
         Some(p) => p.to_vec(),
         None => column(&|p| ensemble(p, |s| s.reduced_mean) * e_star),
@@ -401,17 +405,27 @@ fn numerical_result<'py>(
         nominal.iter().map(|p| p / e_star).collect::<Vec<f64>>(),
     )?;
     table.set_item("approach_m", column(&|p| ensemble(p, |s| s.approach)))?;
-    table.set_item("area_fraction", column(&|p| ensemble(p, |s| s.area_fraction)))?;
+    table.set_item(
+        "area_fraction",
+        column(&|p| ensemble(p, |s| s.area_fraction)),
+    )?;
     table.set_item("mean_gap_m", column(&|p| ensemble(p, |s| s.mean_gap)))?;
     let conductance = |p: &NumericalPoint| ensemble(p, |s| s.flow.map_or(f64::NAN, |f| f.1));
     let percolating = |p: &NumericalPoint| {
-        let count = p.solved.iter().filter(|s| s.flow.is_some_and(|f| f.0)).count();
+        let count = p
+            .solved
+            .iter()
+            .filter(|s| s.flow.is_some_and(|f| f.0))
+            .count();
         count as f64 / p.solved.len().max(1) as f64
     };
     if flow {
         table.set_item(
             "percolates",
-            points.iter().map(|p| percolating(p) > 0.0).collect::<Vec<bool>>(),
+            points
+                .iter()
+                .map(|p| percolating(p) > 0.0)
+                .collect::<Vec<bool>>(),
         )?;
         table.set_item("percolating_fraction", column(&percolating))?;
         table.set_item(
@@ -437,14 +451,19 @@ fn numerical_result<'py>(
             "pressure_Pa",
             float_column(py, all(|s| &s.reduced_pressure).map(|p| p * e_star)),
         )?;
-        let scalar = |get: &dyn Fn(&Solved) -> f64| point.solved.iter().map(get).collect::<Vec<f64>>();
+        let scalar =
+            |get: &dyn Fn(&Solved) -> f64| point.solved.iter().map(get).collect::<Vec<f64>>();
         f.set_item("area_fraction", scalar(&|s| s.area_fraction))?;
         f.set_item("mean_gap_m", scalar(&|s| s.mean_gap))?;
         f.set_item("approach_m", scalar(&|s| s.approach))?;
         f.set_item("mean_pressure_Pa", scalar(&|s| s.reduced_mean * e_star))?;
         f.set_item(
             "iterations",
-            point.solved.iter().map(|s| s.iterations).collect::<Vec<usize>>(),
+            point
+                .solved
+                .iter()
+                .map(|s| s.iterations)
+                .collect::<Vec<usize>>(),
         )?;
         if flow {
             f.set_item(
@@ -484,7 +503,11 @@ fn numerical_result<'py>(
     )?;
     out.set_item(
         "control",
-        if pressures.is_some() { "pressure" } else { "displacement" },
+        if pressures.is_some() {
+            "pressure"
+        } else {
+            "displacement"
+        },
     )?;
     out.set_item("tolerance", tolerance)?;
     out.set_item("flow", if flow { None } else { Some(FREE_FLOW) })?;

@@ -1,6 +1,7 @@
 //! Frictionless normal contact of an elastic half-space with a rigid rough surface: FFT boundary
 //! elements solved by the constrained conjugate-gradient method of Polonsky & Keer (Wear 231
-//! (1999) 206), load-controlled to a prescribed mean nominal pressure (docs/model.md §3.5).
+//! (1999) 206), load-controlled to a prescribed mean nominal pressure (docs/model.md §3.5), or
+//! displacement-controlled to a prescribed rigid-body approach ([`solve_displacement`]).
 //!
 //! # Geometry and sign conventions
 //!
