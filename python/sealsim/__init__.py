@@ -601,7 +601,8 @@ class ContactResult:
 
     Attributes:
         table: one row per pressure: ``nominal_pressure_Pa``, ``reduced_pressure`` (P0/E*),
-            ``area_fraction`` (A/A0, the fraction of pixels with a positive contact pressure),
+            ``approach_m`` (the rigid-body approach δ = max h − s), ``area_fraction`` (A/A0, the
+            fraction of pixels with a positive contact pressure),
             ``mean_gap_m`` (ū, the mean of the gap field), ``percolates`` (bool: the non-contact
             region connects the inlet to the outlet in some realisation), ``percolating_fraction``
             (of the realisations), ``conductance_m3_per_Pa_s`` (the Reynolds conductance σ_eff
@@ -613,9 +614,14 @@ class ContactResult:
             height map — row ``iy``, column ``ix`` along the flow, as the map — and
             ``(realisations, n, n)`` for random realisations; and the per-realisation
             ``area_fraction``, ``mean_gap_m``, ``percolates``, ``conductance_m3_per_Pa_s`` and
-            ``seed`` (None for a height map) as 1-D arrays.
+            ``seed`` (None for a height map) as 1-D arrays, with ``approach_m`` (δ),
+            ``mean_pressure_Pa`` and ``iterations`` (of the boundary elements, summed over the
+            load search under displacement control).
         n: grid points per side; pixel_size: their spacing (m); realisations: surfaces per
             pressure; effective_modulus: E* (Pa); viscosity: η (Pa·s) of the conductance.
+        boundary: ``"periodic"`` or ``"free"``; control: ``"pressure"`` or ``"displacement"``;
+            tolerance: the boundary elements' tolerance; flow: None, or why the percolation and
+            flow columns are missing (a free patch).
     """
 
     def __init__(self, raw: Mapping[str, Any]):
@@ -624,6 +630,10 @@ class ContactResult:
         self.realisations: int = raw["realisations"]
         self.effective_modulus: float = raw["effective_modulus"]
         self.viscosity: float = raw["viscosity"]
+        self.boundary: str = raw["boundary"]
+        self.control: str = raw["control"]
+        self.tolerance: float = raw["tolerance"]
+        self.flow: Optional[str] = raw["flow"]
         self.table: Any = _table(raw["table"])
         # a height map is one surface (2-D fields); random realisations stack (3-D), even one
         fields = raw["fields"]
@@ -634,23 +644,29 @@ class ContactResult:
             entry: Dict[str, Any] = {}
             for name in ("heights_m", "gap_m", "pressure_Pa"):
                 entry[name] = numpy.frombuffer(f[name], dtype=numpy.float64).reshape(shape).copy()
-            for name in ("area_fraction", "mean_gap_m", "conductance_m3_per_Pa_s"):
-                entry[name] = numpy.array(f[name], dtype=numpy.float64)
-            entry["percolates"] = numpy.array(f["percolates"], dtype=bool)
+            for name in ("area_fraction", "mean_gap_m", "approach_m", "mean_pressure_Pa", "conductance_m3_per_Pa_s"):
+                if name in f:
+                    entry[name] = numpy.array(f[name], dtype=numpy.float64)
+            if "percolates" in f:
+                entry["percolates"] = numpy.array(f["percolates"], dtype=bool)
+            entry["iterations"] = numpy.array(f["iterations"], dtype=numpy.int64)
             entry["seed"] = list(f["seed"])
             self.fields.append(entry)
 
     def __repr__(self) -> str:
         return (
             f"ContactResult({len(self.fields)} pressures, {self.realisations} realisation(s) of "
-            f"{self.n}² pixels of {self.pixel_size:.4g} m)"
+            f"{self.n}² pixels of {self.pixel_size:.4g} m, {self.boundary})"
         )
 
 
 def contact(
-    pressures: Sequence[Union[float, str]],
+    pressures: Union[Sequence[Union[float, str]], float, str, None] = None,
     scenario: Optional[Scenario] = None,
     *,
+    displacement: Union[Sequence[Union[float, str]], float, str, None] = None,
+    boundary: str = "periodic",
+    tolerance: Optional[float] = None,
     height_map: Any = None,
     pixel_size: Union[float, str, None] = None,
     height_unit: Optional[str] = None,
@@ -693,7 +709,27 @@ def contact(
     the solver, settings, threads and tolerances of ``sealsim leak --fidelity numerical`` and of
     the life run (a scenario's ``[numerical]``, else the defaults), so a height map gives the
     CLI's numbers bit for bit. ``viscosity`` (Pa·s) scales only ``conductance_m3_per_Pa_s``:
-    default the scenario's fluid's, else 1e-3 Pa·s (water near 20 °C)."""
+    default the scenario's fluid's, else 1e-3 Pa·s (water near 20 °C). The table adds
+    ``approach_m``, the rigid-body approach δ = max h − s (the overlap of the undeformed
+    surfaces: Hertz's indentation for a single sphere; for a periodic cell max h − (ū + ⟨h⟩)).
+
+    At the numerical level only (an analytic level refuses them):
+
+    * ``displacement``: rigid-body approaches δ (m, floats or strings with a unit, ``"1 um"``)
+      instead of ``pressures`` — give exactly one of the two. The mean pressure each needs is
+      the table's ``nominal_pressure_Pa`` (the ensemble mean; each realisation's in the fields'
+      ``mean_pressure_Pa``). δ ≤ 0 (the body at or above the highest point) gives no contact and
+      zero pressure. A periodic cell's δ must stay below max h − ⟨h⟩ (full contact):
+      :class:`ScenarioError` at or beyond it. Found by a secant search on the load-controlled
+      solver, to the same ``tolerance`` (|δ − target| ≤ tolerance × rms height).
+    * ``boundary``: ``"periodic"`` (default: the map is one cell of a periodic surface, the
+      numerical level of ``sealsim leak``) or ``"free"`` (an isolated patch on an infinite
+      half-space, unloaded outside it: Love's pixel kernel, zero-padded FFT — single asperities,
+      indenters, measured patches that are not periodic). A free patch has no percolation and
+      no flow columns (the Reynolds cell is periodic); the result's ``flow`` says so.
+    * ``tolerance``: the boundary elements' convergence threshold in (0, 1) (default 1e-8): the
+      relative pressure change per iteration and the rms gap misfit on the contact set relative
+      to the rms height. A looser value takes fewer iterations (the fields' ``iterations``)."""
     spectrum = {"rms_roughness": rms_roughness, "hurst_exponent": hurst_exponent, "q0": q0, "q1": q1}
     given = [k for k, v in spectrum.items() if v is not None]
     if scenario is not None:
@@ -724,8 +760,16 @@ def contact(
         heights = array.tobytes()
     if scenario is not None and not isinstance(scenario, Scenario):
         raise TypeError(f"contact: scenario must be a sealsim.Scenario, got {type(scenario).__name__}")
+    def listed(values: Any) -> Optional[List[Any]]:
+        # one value or a sequence of them
+        if values is None:
+            return None
+        if isinstance(values, (str, bytes, int, float)):
+            return [values]
+        return list(values)
+
     raw = _sealsim._contact(
-        list(pressures),
+        listed(pressures),
         None if scenario is None else scenario._inner,
         youngs_modulus,
         poisson_ratio,
@@ -739,6 +783,9 @@ def contact(
         fidelity,
         viscosity,
         height_unit,
+        listed(displacement),
+        tolerance,
+        boundary,
     )
     if raw.get("height_warning"):
         _warn_slip(raw["height_warning"], stacklevel=2)

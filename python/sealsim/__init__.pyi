@@ -113,13 +113,21 @@ class ContactResult:
     realisations: int
     effective_modulus: float
     viscosity: float
+    boundary: str
+    control: str
+    tolerance: float
+    flow: Optional[str]
 
 def contact(
-    pressures: Sequence[Union[float, str]],
+    pressures: Union[Sequence[Union[float, str]], float, str, None] = ...,
     scenario: Optional[Scenario] = ...,
     *,
+    displacement: Union[Sequence[Union[float, str]], float, str, None] = ...,
+    boundary: str = ...,
+    tolerance: Optional[float] = ...,
     height_map: Any = ...,
-    pixel_size: Optional[float] = ...,
+    pixel_size: Union[float, str, None] = ...,
+    height_unit: Optional[str] = ...,
     youngs_modulus: Optional[float] = ...,
     poisson_ratio: float = ...,
     rms_roughness: Optional[float] = ...,

@@ -17,7 +17,8 @@ use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyList, PyString};
 use sealsim::contact::{ContactSettings, Elastic, Junction};
 use sealsim::leak::{ContactPath, Fidelity, PathOptions};
-use sealsim::numerical::reference::{self, NumericalSettings, Surfaces};
+use sealsim::numerical::bem::{self, BemError, Boundary, Load};
+use sealsim::numerical::reference::{self, NumericalError, NumericalSettings, Surfaces};
 use sealsim::numerical::{HeightMap, Topography, psd};
 use sealsim::plausibility::HeightStatistics;
 use sealsim::surface::Spectrum;
@@ -256,109 +257,190 @@ struct Solved {
     gap: Vec<f64>,
     /// Contact pressure at E* = 1 (the reduced pressure P/E*).
     reduced_pressure: Vec<f64>,
+    /// Its mean over the cell, P0/E*.
+    reduced_mean: f64,
     area_fraction: f64,
     mean_gap: f64,
-    percolates: bool,
-    /// σ_eff at η = 1.
-    unit_conductance: f64,
+    /// Rigid-body approach `max h − s` (m).
+    approach: f64,
+    /// Conjugate-gradient iterations (summed over the load search under displacement control).
+    iterations: usize,
+    /// Percolation and σ_eff at η = 1 (`None` on a free patch: not computed).
+    flow: Option<(bool, f64)>,
 }
 
-/// The numerical level at one pressure: its ensemble and every realisation's fields.
+impl Solved {
+    fn new(
+        map: &HeightMap,
+        seed: Option<u64>,
+        c: &sealsim::numerical::bem::ContactSolution,
+        flow: Option<(bool, f64)>,
+    ) -> Self {
+        Solved {
+            seed,
+            n: map.n,
+            pixel: map.pixel,
+            heights: map.heights.clone(),
+            gap: c.gap.clone(),
+            reduced_pressure: c.pressure.clone(),
+            reduced_mean: c.mean_pressure,
+            area_fraction: c.contact_fraction,
+            mean_gap: c.mean_gap,
+            approach: c.approach,
+            iterations: c.iterations + c.coarse_iterations,
+            flow,
+        }
+    }
+}
+
+/// The numerical level at one load: every realisation's fields.
 struct NumericalPoint {
-    state: reference::NumericalState,
     solved: Vec<Solved>,
 }
 
-/// The numerical level at each reduced pressure, as [`sealsim::numerical::table`] solves its
-/// nodes: E* = 1, P0 = s, η = 1.
+/// Why a free patch has no flow columns (the result's `flow`).
+const FREE_FLOW: &str = "percolation and flow not computed: the percolation test and the \
+    Reynolds cell are periodic (a seal made of copies of the cell, docs/model.md §3.5), which an \
+    isolated patch on a half-space (boundary=\"free\") is not";
+
+/// The numerical level at each load (P0/E* or the approach in m), as
+/// [`sealsim::numerical::table`] solves its nodes: E* = 1, η = 1. Periodic: the numerical
+/// level's own pipeline ([`reference::evaluate_loaded`]: contact, percolation, flow); free: the
+/// boundary elements alone on each of its surfaces.
 fn numerical_points(
     surfaces: Surfaces<'_>,
-    reduced: &[f64],
+    loads: &[Load],
+    boundary: Boundary,
     settings: &NumericalSettings,
-) -> Result<Vec<NumericalPoint>, String> {
-    reduced
+) -> Result<Vec<NumericalPoint>, (String, NumericalError)> {
+    let describe = |load: &Load| match load {
+        Load::MeanPressure(s) => format!("P0/E* = {s:e}"),
+        Load::Approach(d) => format!("approach {d:e} m"),
+    };
+    loads
         .iter()
-        .map(|&s| {
+        .map(|&load| {
             let mut solved = Vec::new();
-            let mut observe = |map: &HeightMap,
-                               c: &sealsim::numerical::bem::ContactSolution,
-                               r: &reference::Realisation| {
-                solved.push(Solved {
-                    seed: r.seed,
-                    n: map.n,
-                    pixel: map.pixel,
-                    heights: map.heights.clone(),
-                    gap: c.gap.clone(),
-                    reduced_pressure: c.pressure.clone(),
-                    area_fraction: r.contact_fraction,
-                    mean_gap: r.mean_gap,
-                    percolates: r.percolates,
-                    unit_conductance: r.conductance,
-                });
+            let result = match boundary {
+                Boundary::Periodic => {
+                    let mut observe =
+                        |map: &HeightMap,
+                         c: &sealsim::numerical::bem::ContactSolution,
+                         r: &reference::Realisation| {
+                            solved.push(Solved::new(
+                                map,
+                                r.seed,
+                                c,
+                                Some((r.percolates, r.conductance)),
+                            ));
+                        };
+                    reference::evaluate_loaded(
+                        surfaces,
+                        1.0,
+                        load,
+                        1.0,
+                        settings,
+                        &mut |_, _| {},
+                        &mut observe,
+                    )
+                    .map(|_| ())
+                }
+                Boundary::Free => {
+                    reference::for_each_surface(surfaces, settings, &mut |map, seed, _, _| {
+                        let c = bem::solve_load(map, 1.0, load, Boundary::Free, &settings.bem)
+                            .map_err(NumericalError::Contact)?;
+                        solved.push(Solved::new(map, seed, &c, None));
+                        Ok(())
+                    })
+                }
             };
-            let state = reference::evaluate_observed(
-                surfaces,
-                1.0,
-                s,
-                1.0,
-                settings,
-                &mut |_, _| {},
-                &mut observe,
-            )
-            .map_err(|e| format!("numerical level at P0/E* = {s:e}: {e}"))?;
-            Ok(NumericalPoint { state, solved })
+            result.map_err(|e| (format!("numerical level at {}: {e}", describe(&load)), e))?;
+            Ok(NumericalPoint { solved })
         })
         .collect()
 }
 
-/// The result dict at the numerical level: `table` (columns), `fields` (one dict per pressure:
+/// The ensemble mean of one scalar, as the numerical level's summary takes it
+/// ([`reference::Spread::of`]: the CLI's number bit for bit).
+fn ensemble(point: &NumericalPoint, get: impl Fn(&Solved) -> f64) -> f64 {
+    let values: Vec<f64> = point.solved.iter().map(get).collect();
+    if values.is_empty() {
+        f64::NAN
+    } else {
+        reference::Spread::of(&values).mean
+    }
+}
+
+/// The result dict at the numerical level: `table` (columns), `fields` (one dict per load:
 /// `heights_m`, `gap_m`, `pressure_Pa` as f64 bytes of `realisations × n × n`, and the
-/// per-realisation scalars), `n`, `pixel_size`, `realisations`, `effective_modulus`.
+/// per-realisation scalars), `n`, `pixel_size`, `realisations`, `effective_modulus`,
+/// `boundary`, `control`, `tolerance` and `flow` (why the flow columns are missing, or `None`).
+/// `pressures`: the prescribed nominal pressures (load control), or `None` (displacement
+/// control: each realisation's mean pressure, the table's the ensemble mean).
+#[allow(clippy::too_many_arguments)]
 fn numerical_result<'py>(
     py: Python<'py>,
     points: &[NumericalPoint],
-    pressures: &[f64],
+    pressures: Option<&[f64]>,
     e_star: f64,
     viscosity: f64,
+    boundary: Boundary,
+    tolerance: f64,
 ) -> PyResult<Bound<'py, PyDict>> {
     let (n, pixel) = points
         .first()
         .and_then(|p| p.solved.first())
         .map_or((0, f64::NAN), |s| (s.n, s.pixel));
+    let flow = boundary == Boundary::Periodic;
     let table = PyDict::new(py);
-    let column = |f: &dyn Fn(usize, &NumericalPoint) -> f64| -> Vec<f64> {
-        points.iter().enumerate().map(|(i, p)| f(i, p)).collect()
+    let column =
+        |f: &dyn Fn(&NumericalPoint) -> f64| -> Vec<f64> { points.iter().map(f).collect() };
+    let nominal: Vec<f64> = match pressures {
+        Some(p) => p.to_vec(),
+        None => column(&|p| ensemble(p, |s| s.reduced_mean) * e_star),
     };
-    table.set_item("nominal_pressure_Pa", pressures.to_vec())?;
-    table.set_item("reduced_pressure", column(&|i, _| pressures[i] / e_star))?;
+    table.set_item("nominal_pressure_Pa", nominal.clone())?;
+    table.set_item(
+        "reduced_pressure",
+        nominal.iter().map(|p| p / e_star).collect::<Vec<f64>>(),
+    )?;
+    table.set_item("approach_m", column(&|p| ensemble(p, |s| s.approach)))?;
     table.set_item(
         "area_fraction",
-        column(&|_, p| p.state.contact_fraction.mean),
+        column(&|p| ensemble(p, |s| s.area_fraction)),
     )?;
-    table.set_item("mean_gap_m", column(&|_, p| p.state.mean_gap.mean))?;
-    table.set_item(
-        "percolates",
-        points
+    table.set_item("mean_gap_m", column(&|p| ensemble(p, |s| s.mean_gap)))?;
+    let conductance = |p: &NumericalPoint| ensemble(p, |s| s.flow.map_or(f64::NAN, |f| f.1));
+    let percolating = |p: &NumericalPoint| {
+        let count = p
+            .solved
             .iter()
-            .map(|p| p.state.percolating_fraction > 0.0)
-            .collect::<Vec<bool>>(),
-    )?;
-    table.set_item(
-        "percolating_fraction",
-        column(&|_, p| p.state.percolating_fraction),
-    )?;
-    table.set_item(
-        "conductance_m3_per_Pa_s",
-        column(&|_, p| p.state.conductance.mean / viscosity),
-    )?;
-    // the numerical table's node value, as `sealsim leak` reports it (blank there: NaN here)
-    table.set_item(
-        "u_c_m",
-        column(&|_, p| {
-            let cubed = 12.0 * p.state.conductance.mean;
-            if cubed > 0.0 { cubed.cbrt() } else { f64::NAN }
-        }),
-    )?;
+            .filter(|s| s.flow.is_some_and(|f| f.0))
+            .count();
+        count as f64 / p.solved.len().max(1) as f64
+    };
+    if flow {
+        table.set_item(
+            "percolates",
+            points
+                .iter()
+                .map(|p| percolating(p) > 0.0)
+                .collect::<Vec<bool>>(),
+        )?;
+        table.set_item("percolating_fraction", column(&percolating))?;
+        table.set_item(
+            "conductance_m3_per_Pa_s",
+            column(&|p| conductance(p) / viscosity),
+        )?;
+        // the numerical table's node value, as `sealsim leak` reports it (blank there: NaN here)
+        table.set_item(
+            "u_c_m",
+            column(&|p| {
+                let cubed = 12.0 * conductance(p);
+                if cubed > 0.0 { cubed.cbrt() } else { f64::NAN }
+            }),
+        )?;
+    }
     let fields = PyList::empty(py);
     for point in points {
         let f = PyDict::new(py);
@@ -369,25 +451,34 @@ fn numerical_result<'py>(
             "pressure_Pa",
             float_column(py, all(|s| &s.reduced_pressure).map(|p| p * e_star)),
         )?;
-        let scalar = |get: fn(&Solved) -> f64| point.solved.iter().map(get).collect::<Vec<f64>>();
-        f.set_item("area_fraction", scalar(|s| s.area_fraction))?;
-        f.set_item("mean_gap_m", scalar(|s| s.mean_gap))?;
+        let scalar =
+            |get: &dyn Fn(&Solved) -> f64| point.solved.iter().map(get).collect::<Vec<f64>>();
+        f.set_item("area_fraction", scalar(&|s| s.area_fraction))?;
+        f.set_item("mean_gap_m", scalar(&|s| s.mean_gap))?;
+        f.set_item("approach_m", scalar(&|s| s.approach))?;
+        f.set_item("mean_pressure_Pa", scalar(&|s| s.reduced_mean * e_star))?;
         f.set_item(
-            "percolates",
+            "iterations",
             point
                 .solved
                 .iter()
-                .map(|s| s.percolates)
-                .collect::<Vec<_>>(),
+                .map(|s| s.iterations)
+                .collect::<Vec<usize>>(),
         )?;
-        f.set_item(
-            "conductance_m3_per_Pa_s",
-            point
-                .solved
-                .iter()
-                .map(|s| s.unit_conductance / viscosity)
-                .collect::<Vec<f64>>(),
-        )?;
+        if flow {
+            f.set_item(
+                "percolates",
+                point
+                    .solved
+                    .iter()
+                    .map(|s| s.flow.is_some_and(|f| f.0))
+                    .collect::<Vec<_>>(),
+            )?;
+            f.set_item(
+                "conductance_m3_per_Pa_s",
+                scalar(&|s| s.flow.map_or(f64::NAN, |f| f.1) / viscosity),
+            )?;
+        }
         f.set_item(
             "seed",
             point.solved.iter().map(|s| s.seed).collect::<Vec<_>>(),
@@ -403,25 +494,87 @@ fn numerical_result<'py>(
     out.set_item("realisations", points.first().map_or(0, |p| p.solved.len()))?;
     out.set_item("effective_modulus", e_star)?;
     out.set_item("viscosity", viscosity)?;
+    out.set_item(
+        "boundary",
+        match boundary {
+            Boundary::Periodic => "periodic",
+            Boundary::Free => "free",
+        },
+    )?;
+    out.set_item(
+        "control",
+        if pressures.is_some() {
+            "pressure"
+        } else {
+            "displacement"
+        },
+    )?;
+    out.set_item("tolerance", tolerance)?;
+    out.set_item("flow", if flow { None } else { Some(FREE_FLOW) })?;
     Ok(out)
 }
 
+/// A rigid-body approach (m): a float in m or a string with its unit ("1 um"), finite; zero or
+/// negative (the body above the highest point) is allowed and gives no contact.
+fn approach(value: &Bound<'_, PyAny>) -> PyResult<f64> {
+    let d = if value.is_instance_of::<PyString>() {
+        let text: String = value.extract()?;
+        units::parse_quantity(&text, Dimension::LENGTH)
+            .map_err(|e| bad(format!("displacement \"{text}\": {e}")))?
+    } else {
+        value.extract::<f64>()?
+    };
+    if d.is_finite() {
+        Ok(d)
+    } else {
+        Err(bad(format!(
+            "displacement must be a finite rigid-body approach (m), got {d}"
+        )))
+    }
+}
+
+/// The solver tolerance: `None` the core's default, else in (0, 1).
+fn tolerance(value: Option<f64>) -> PyResult<Option<f64>> {
+    match value {
+        Some(t) if !(t.is_finite() && t > 0.0 && t < 1.0) => Err(bad(format!(
+            "tolerance must lie in (0, 1) (the boundary elements' relative convergence \
+             threshold; default 1e-8), got {t}"
+        ))),
+        other => Ok(other),
+    }
+}
+
+/// The elastic half-space's lateral boundary: "periodic" (default) or "free".
+fn boundary(value: Option<&str>) -> PyResult<Boundary> {
+    match value {
+        None | Some("periodic") => Ok(Boundary::Periodic),
+        Some("free") => Ok(Boundary::Free),
+        Some(other) => Err(bad(format!(
+            "boundary must be \"periodic\" (the map is one cell of a periodic surface) or \
+             \"free\" (an isolated patch on a half-space), got \"{other}\""
+        ))),
+    }
+}
+
 /// The contact problem on its own (python/sealsim/__init__.py `contact` documents it): at each
-/// nominal pressure \[Pa\], at an analytic level Persson's A/A0 at full magnification, ū(ζ = 1)
-/// and the critical junction; at the numerical level the boundary-element A/A0 and ū, the
-/// percolation verdict, the Reynolds conductance and the fields. `height_map`: the native
-/// `f64` bytes of a C-contiguous array of `shape` (ny, nx), heights in `height_unit` (default
-/// m), `pixel_size` m or a string with its unit. The dict's `height_warning`: the unit-slip
+/// nominal pressure \[Pa\] (or, at the numerical level, each rigid-body approach `displacement`
+/// \[m\]), at an analytic level Persson's A/A0 at full magnification, ū(ζ = 1) and the critical
+/// junction; at the numerical level the boundary-element A/A0, ū and approach, the percolation
+/// verdict, the Reynolds conductance (periodic cell only) and the fields. `height_map`: the
+/// native `f64` bytes of a C-contiguous array of `shape` (ny, nx), heights in `height_unit`
+/// (default m), `pixel_size` m or a string with its unit. `tolerance`: the boundary elements'
+/// (default 1e-8); `boundary`: "periodic" or "free". The dict's `height_warning`: the unit-slip
 /// warning of implausible heights, or `None`.
 #[pyfunction]
-#[pyo3(signature = (pressures, scenario = None, youngs_modulus = None, poisson_ratio = 0.5,
+#[pyo3(signature = (pressures = None, scenario = None, youngs_modulus = None, poisson_ratio = 0.5,
                     rms_roughness = None, hurst_exponent = None, q0 = None, q1 = None,
                     height_map = None, shape = None, pixel_size = None, fidelity = None,
-                    viscosity = None, height_unit = None))]
+                    viscosity = None, height_unit = None, displacement = None,
+                    tolerance = None, boundary = None))]
 #[allow(clippy::too_many_arguments)]
 fn _contact<'py>(
     py: Python<'py>,
-    pressures: Vec<Bound<'py, PyAny>>,
+    pressures: Option<Vec<Bound<'py, PyAny>>>,
     scenario: Option<&PyScenario>,
     youngs_modulus: Option<f64>,
     poisson_ratio: f64,
@@ -435,11 +588,37 @@ fn _contact<'py>(
     fidelity: Option<&str>,
     viscosity: Option<f64>,
     height_unit: Option<&str>,
+    displacement: Option<Vec<Bound<'py, PyAny>>>,
+    tolerance: Option<f64>,
+    boundary: Option<&str>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let pressures = pressures
-        .iter()
-        .map(pressure)
-        .collect::<PyResult<Vec<f64>>>()?;
+    // load control (nominal pressures) or displacement control (approaches), exactly one
+    let (pressures, approaches) = match (pressures, displacement) {
+        (Some(_), Some(_)) => {
+            return Err(bad(
+                "give either pressures (load control) or displacement (the rigid-body \
+                 approach), not both"
+                    .to_owned(),
+            ));
+        }
+        (None, None) => {
+            return Err(bad(
+                "give pressures (nominal pressures, Pa) or displacement (rigid-body \
+                 approaches, m)"
+                    .to_owned(),
+            ));
+        }
+        (Some(p), None) => (
+            Some(p.iter().map(pressure).collect::<PyResult<Vec<f64>>>()?),
+            None,
+        ),
+        (None, Some(d)) => (
+            None,
+            Some(d.iter().map(approach).collect::<PyResult<Vec<f64>>>()?),
+        ),
+    };
+    let tolerance = self::tolerance(tolerance)?;
+    let boundary = self::boundary(boundary)?;
     // "0.5 um" by the scenario files' parser, or a float in m
     let pixel_size = match &pixel_size {
         Some(v) if v.is_instance_of::<PyString>() => {
@@ -492,11 +671,27 @@ fn _contact<'py>(
         e_star,
         viscosity,
         map,
-        numerical,
+        mut numerical,
         level,
     } = pb;
     if let Some(level) = level {
+        // the boundary elements' keywords mean nothing to Persson's theory
+        let numerical_only = [
+            approaches.is_some().then_some("displacement"),
+            (boundary == Boundary::Free).then_some("boundary=\"free\""),
+            tolerance.is_some().then_some("tolerance"),
+        ];
+        let named: Vec<&str> = numerical_only.into_iter().flatten().collect();
+        if !named.is_empty() {
+            return Err(bad(format!(
+                "{} need(s) the numerical level (boundary elements on a height map), not {}: \
+                 pass a height_map or fidelity=\"numerical\"",
+                named.join(", "),
+                level.name()
+            )));
+        }
         let spectrum = spectrum.ok_or_else(|| internal("no spectrum for an analytic level"))?;
+        let pressures = pressures.ok_or_else(|| internal("no pressures at an analytic level"))?;
         let rows = blocking(py, move || {
             analytic_rows(spectrum, settings, level, e_star, &pressures)
         })?;
@@ -521,17 +716,40 @@ fn _contact<'py>(
         out.set_item("height_warning", height_warning)?;
         return Ok(out);
     }
-    let reduced: Vec<f64> = pressures.iter().map(|p| p / e_star).collect();
+    if let Some(t) = tolerance {
+        numerical.bem.tolerance = t;
+    }
+    // the solves run at E* = 1: pressures reduced, approaches (m) as they are
+    let loads: Vec<Load> = match (&pressures, &approaches) {
+        (Some(p), _) => p.iter().map(|p| Load::MeanPressure(p / e_star)).collect(),
+        (None, Some(d)) => d.iter().map(|&d| Load::Approach(d)).collect(),
+        (None, None) => return Err(internal("no load")),
+    };
+    let solve_settings = numerical.clone();
     let points = blocking(py, move || {
         let surfaces = match (&map, &spectrum) {
             (Some(m), _) => Surfaces::Map(m),
             (None, Some(sp)) => Surfaces::Synthetic(sp),
-            (None, None) => return Err("no surface".to_owned()),
+            (None, None) => {
+                return Err(("no surface".to_owned(), NumericalError::NoRealisations));
+            }
         };
-        numerical_points(surfaces, &reduced, &numerical)
+        numerical_points(surfaces, &loads, boundary, &solve_settings)
     })?
-    .map_err(internal)?;
-    let out = numerical_result(py, &points, &pressures, e_star, viscosity)?;
+    .map_err(|(text, e)| match e {
+        // an approach at or beyond a periodic cell's full contact is the caller's
+        NumericalError::Contact(BemError::InvalidApproach { .. }) => bad(text),
+        _ => internal(text),
+    })?;
+    let out = numerical_result(
+        py,
+        &points,
+        pressures.as_deref(),
+        e_star,
+        viscosity,
+        boundary,
+        numerical.bem.tolerance,
+    )?;
     out.set_item("height_warning", height_warning)?;
     Ok(out)
 }

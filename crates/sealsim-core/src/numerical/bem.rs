@@ -1,6 +1,7 @@
 //! Frictionless normal contact of an elastic half-space with a rigid rough surface: FFT boundary
 //! elements solved by the constrained conjugate-gradient method of Polonsky & Keer (Wear 231
-//! (1999) 206), load-controlled to a prescribed mean nominal pressure (docs/model.md §3.5).
+//! (1999) 206), load-controlled to a prescribed mean nominal pressure (docs/model.md §3.5), or
+//! displacement-controlled to a prescribed rigid-body approach ([`solve_displacement`]).
 //!
 //! # Geometry and sign conventions
 //!
@@ -154,6 +155,10 @@ pub enum Boundary {
 pub struct ContactSolution {
     /// Contact pressure (Pa), ≥ 0; its mean over the cell equals the requested mean pressure.
     pub pressure: Vec<f64>,
+    /// Mean of `pressure` over the cell (Pa): the requested mean pressure under load control
+    /// ([`solve`]), the one the approach needs under displacement control
+    /// ([`solve_displacement`]).
+    pub mean_pressure: f64,
     /// Interfacial separation `s + u − h` (m), ≥ 0, exactly 0 where `pressure > 0`.
     pub gap: Vec<f64>,
     /// Fraction of points in contact (`pressure > 0`), A/A0.
@@ -162,7 +167,8 @@ pub struct ContactSolution {
     pub mean_gap: f64,
     /// Rigid-body approach `max h − s` (m): overlap of the undeformed surfaces.
     pub approach: f64,
-    /// Conjugate-gradient iterations on the finest grid.
+    /// Conjugate-gradient iterations on the finest grid (under displacement control: summed
+    /// over the load-controlled solves of the search, [`solve_displacement`]).
     pub iterations: usize,
     /// Iterations spent on the coarse grids of the warm start (0 without it).
     pub coarse_iterations: usize,
@@ -177,6 +183,14 @@ pub enum BemError {
     InvalidModulus(f64),
     /// Mean pressure not positive and finite (Pa).
     InvalidPressure(f64),
+    /// Approach not finite, or (periodic) at or beyond full contact: the periodic cell's
+    /// approach cannot exceed `max h − ⟨h⟩` (m), reached at full contact under any larger load.
+    InvalidApproach {
+        /// The requested approach (m).
+        approach: f64,
+        /// The largest approach a solution exists for (m; infinite for a free patch).
+        limit: f64,
+    },
     /// Grid inconsistent: `n` odd or < 2, `heights.len() ≠ n²`, or pixel not positive/finite.
     InvalidGrid(String),
     /// A height is NaN or infinite.
@@ -211,6 +225,19 @@ impl fmt::Display for BemError {
                     show(*p)
                 )
             }
+            BemError::InvalidApproach { approach, limit } => {
+                if approach.is_finite() {
+                    write!(
+                        f,
+                        "approach {} m is at or beyond full contact: a periodic cell's approach \
+                         must stay below max h − ⟨h⟩ = {} m",
+                        show(*approach),
+                        show(*limit)
+                    )
+                } else {
+                    write!(f, "approach must be finite, got {} m", show(*approach))
+                }
+            }
             BemError::InvalidGrid(msg) => write!(f, "invalid height map: {msg}"),
             BemError::NonFiniteHeights => write!(f, "height map contains NaN or infinite values"),
             BemError::InvalidSettings(msg) => write!(f, "invalid solver settings: {msg}"),
@@ -240,10 +267,25 @@ pub fn solve(
     settings: &BemSettings,
 ) -> Result<ContactSolution, BemError> {
     validate(map, e_star, mean_pressure, settings)?;
+    solve_from(map, e_star, mean_pressure, boundary, settings, None)
+}
+
+/// [`solve`] after validation, from the starting pressure `start` (any non-negative field, its
+/// sum rescaled to the load) instead of the coarse-to-fine warm start when given.
+fn solve_from(
+    map: &HeightMap,
+    e_star: f64,
+    mean_pressure: f64,
+    boundary: Boundary,
+    settings: &BemSettings,
+    start: Option<&[f64]>,
+) -> Result<ContactSolution, BemError> {
     let n = map.n;
     let mut coarse_iterations = 0;
     let uniform = || vec![mean_pressure; n * n];
-    let mut pressure = if settings.coarse_to_fine && n.is_multiple_of(2) && n / 2 >= COARSEST {
+    let mut pressure = if let Some(start) = start {
+        start.to_vec()
+    } else if settings.coarse_to_fine && n.is_multiple_of(2) && n / 2 >= COARSEST {
         let coarse_settings = BemSettings {
             tolerance: settings.tolerance.max(COARSE_TOLERANCE),
             ..settings.clone()
@@ -275,6 +317,7 @@ pub fn solve(
     )?;
     let mut solution = finish(&mut elastic, &map.heights, pressure, outcome);
     solution.coarse_iterations = coarse_iterations;
+    solution.mean_pressure = mean_pressure;
     let finite = solution
         .pressure
         .iter()
@@ -287,6 +330,173 @@ pub fn solve(
     } else {
         Err(BemError::Breakdown)
     }
+}
+
+/// What is prescribed: the mean nominal pressure p̄ (Pa, [`solve`]) or the rigid-body approach
+/// δ (m, [`solve_displacement`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Load {
+    /// Load control: the mean pressure over the cell (Pa).
+    MeanPressure(f64),
+    /// Displacement control: the approach `max h − s` (m).
+    Approach(f64),
+}
+
+/// [`solve`] or [`solve_displacement`], as `load` says.
+pub fn solve_load(
+    map: &HeightMap,
+    e_star: f64,
+    load: Load,
+    boundary: Boundary,
+    settings: &BemSettings,
+) -> Result<ContactSolution, BemError> {
+    match load {
+        Load::MeanPressure(p) => solve(map, e_star, p, boundary, settings),
+        Load::Approach(delta) => solve_displacement(map, e_star, delta, boundary, settings),
+    }
+}
+
+/// Most load-controlled solves [`solve_displacement`] spends on finding the load.
+pub const MAX_LOAD_STEPS: usize = 100;
+
+/// Solves the contact at a prescribed rigid-body approach `approach` = δ = `max h − s` (m; the
+/// overlap of the undeformed surfaces, the Hertz indentation for a single sphere) instead of a
+/// prescribed load: the mean pressure p̄ (Pa) follows, [`ContactSolution::mean_pressure`].
+///
+/// * `δ ≤ 0` (the elastic body at or above the highest point): no contact, zero pressure, the gap
+///   `s − h` (not an error).
+/// * [`Boundary::Periodic`]: the approach is measured from the mean plane of the deformed
+///   surface, so it cannot reach `max h − ⟨h⟩` (full contact, at any larger load):
+///   [`BemError::InvalidApproach`] there. [`Boundary::Free`]: any `δ > 0`.
+///
+/// Method: δ(p̄) of the load-controlled problem is continuous and increasing, so p̄ is found by a
+/// safeguarded secant search on `ln p̄` (a Hertz-like `δ ∝ p̄^{2/3}` first step, bisection
+/// whenever the secant leaves the bracket of the solves at the final tolerance), each step a
+/// load-controlled [`solve`] warm-started
+/// from the previous pressure field when the load changed by less than a factor 2, at an inner
+/// tolerance one tenth of the remaining approach error relative to the rms height (between
+/// `tolerance/10` and 10⁻²: inexact steps while far off). Converged when the last solve ran at
+/// `tolerance/10` and `|δ(p̄) − δ| ≤ tolerance · h_rms` (the scale of the load-controlled gap
+/// criterion; δ itself for a flat map), or when the bracket on p̄ is narrower than `tolerance`
+/// (relative). The direct displacement-controlled conjugate-gradient iteration was not used:
+/// the preconditioner `S` has no mean (q = 0) mode, which the load then carries, so it would run
+/// unpreconditioned (three to four times the iterations, module docs).
+pub fn solve_displacement(
+    map: &HeightMap,
+    e_star: f64,
+    approach: f64,
+    boundary: Boundary,
+    settings: &BemSettings,
+) -> Result<ContactSolution, BemError> {
+    validate(map, e_star, 1.0, settings)?;
+    let h = &map.heights;
+    let len = h.len();
+    let h_max = h.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
+    let h_mean = h.iter().sum::<f64>() / len as f64;
+    let limit = match boundary {
+        Boundary::Periodic => h_max - h_mean,
+        Boundary::Free => f64::INFINITY,
+    };
+    if !approach.is_finite() {
+        return Err(BemError::InvalidApproach { approach, limit });
+    }
+    if approach <= 0.0 {
+        // Above the highest point: nothing touches, the surface stays flat.
+        let s = h_max - approach;
+        let gap: Vec<f64> = h.iter().map(|h| (s - h).max(0.0)).collect();
+        return Ok(ContactSolution {
+            pressure: vec![0.0; len],
+            mean_pressure: 0.0,
+            contact_fraction: 0.0,
+            mean_gap: gap.iter().sum::<f64>() / len as f64,
+            gap,
+            approach,
+            iterations: 0,
+            coarse_iterations: 0,
+            residual: 0.0,
+        });
+    }
+    if approach >= limit {
+        return Err(BemError::InvalidApproach { approach, limit });
+    }
+    let scale = {
+        let r = rms(h);
+        if r > 0.0 { r } else { approach }
+    };
+    let tight = 0.1 * settings.tolerance;
+    // x = ln p̄; f = δ(p̄) − δ. Bracket ends (x, f) with f < 0 and f > 0.
+    let mut lo: Option<f64> = None;
+    let mut hi: Option<f64> = None;
+    let mut previous: Option<(f64, f64)> = None;
+    let mut x = (e_star * approach / map.side()).ln();
+    let mut inner = COARSE_TOLERANCE.max(tight);
+    let mut warm: Option<(f64, Vec<f64>)> = None;
+    let (mut iterations, mut coarse_iterations) = (0, 0);
+    let mut residual = f64::INFINITY;
+    for _ in 0..MAX_LOAD_STEPS {
+        let p = x.exp();
+        if !(p.is_finite() && p > 0.0) {
+            return Err(BemError::Breakdown);
+        }
+        let step_settings = BemSettings {
+            tolerance: inner,
+            ..settings.clone()
+        };
+        let start = warm
+            .as_ref()
+            .filter(|(xw, _)| (x - xw).abs() < std::f64::consts::LN_2)
+            .map(|(_, field)| field.as_slice());
+        let sol = solve_from(map, e_star, p, boundary, &step_settings, start)?;
+        iterations += sol.iterations;
+        coarse_iterations += sol.coarse_iterations;
+        let f = sol.approach - approach;
+        residual = (f.abs() / scale).max(sol.residual);
+        let exact = inner <= tight;
+        // Only a solve at the final tolerance brackets the root: an inexact one's δ can be off
+        // by more than |f| (a wrong side would exclude the root for good).
+        if exact && f < 0.0 {
+            lo = Some(lo.map_or(x, |l: f64| l.max(x)));
+        } else if exact && f > 0.0 {
+            hi = Some(hi.map_or(x, |u: f64| u.min(x)));
+        }
+        let narrow = matches!((lo, hi), (Some(l), Some(u)) if u - l <= settings.tolerance);
+        if exact && (f.abs() <= settings.tolerance * scale || narrow) {
+            return Ok(ContactSolution {
+                iterations,
+                coarse_iterations,
+                residual,
+                ..sol
+            });
+        }
+        inner = (0.1 * f.abs() / scale).clamp(tight, COARSE_TOLERANCE.max(tight));
+        let secant = previous
+            .filter(|(xp, fp)| *xp != x && *fp != f)
+            .map(|(xp, fp)| x - f * (x - xp) / (f - fp));
+        let guess = match secant {
+            Some(next) => next,
+            // One point: δ ∝ p̄^{2/3} (Hertz), a factor 10 while nothing is measurable.
+            None if sol.approach > 0.0 => x + 1.5 * (approach / sol.approach).ln(),
+            None => x + std::f64::consts::LN_10,
+        };
+        // At most a factor 1000 per step, in the direction that reduces |f|.
+        let max_step = 1000f64.ln();
+        let mut next = x + (guess - x).clamp(-max_step, max_step);
+        if !next.is_finite() || (next - x) * f > 0.0 {
+            next = x - f.signum() * 4f64.ln();
+        }
+        if let (Some(l), Some(u)) = (lo, hi)
+            && !(next > l && next < u)
+        {
+            next = 0.5 * (l + u);
+        }
+        previous = Some((x, f));
+        warm = Some((x, sol.pressure));
+        x = next;
+    }
+    Err(BemError::NotConverged {
+        iterations,
+        residual,
+    })
 }
 
 fn validate(
@@ -701,6 +911,7 @@ fn finish(
         .collect();
     let h_max = h.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
     ContactSolution {
+        mean_pressure: pressure.iter().sum::<f64>() / len as f64,
         contact_fraction: count as f64 / len as f64,
         mean_gap: gap.iter().sum::<f64>() / len as f64,
         approach: h_max - s,
@@ -897,6 +1108,116 @@ mod tests {
             assert!(err_f.abs() < 0.02, "load–indentation error {err_f}");
             assert!(err_p.abs() < 0.03, "peak pressure error {err_p}");
         }
+    }
+
+    #[test]
+    fn displacement_control_inverts_load_control() {
+        // p̄ → δ (load control), then δ → p̄ (displacement control): the same solution back,
+        // periodic and free, at the default tolerance 1e-8.
+        let map = rough(128, 7);
+        let e_star = 1.0;
+        let s = BemSettings::default();
+        for boundary in [Boundary::Periodic, Boundary::Free] {
+            for load in [0.01, 0.1] {
+                let p = load * map.rms_slope() * e_star;
+                let by_load = solve(&map, e_star, p, boundary, &s).unwrap();
+                let by_approach =
+                    solve_displacement(&map, e_star, by_load.approach, boundary, &s).unwrap();
+                let dp: f64 = by_load
+                    .pressure
+                    .iter()
+                    .zip(&by_approach.pressure)
+                    .map(|(a, b)| (a - b).abs())
+                    .sum();
+                let field = dp / by_load.pressure.iter().sum::<f64>();
+                let mean = by_approach.mean_pressure / p - 1.0;
+                let approach = (by_approach.approach - by_load.approach) / map.rms();
+                eprintln!(
+                    "{boundary:?} p̄ {p:.3e}: p̄ back {mean:+.2e}, Σ|Δp|/Σp {field:.2e}, δ {approach:+.2e}, A/A0 {} vs {}, {} iterations ({} by load)",
+                    by_approach.contact_fraction,
+                    by_load.contact_fraction,
+                    by_approach.iterations,
+                    by_load.iterations
+                );
+                // measured ≤ 1.3e-9 (mean) and ≤ 4.1e-9 (field) at tolerance 1e-8
+                assert!(mean.abs() < 1e-8, "{boundary:?}: mean pressure {mean}");
+                assert!(field < 5e-8, "{boundary:?}: pressure field {field}");
+                assert!(approach.abs() <= 1e-8, "{boundary:?}: approach {approach}");
+                assert!(
+                    (by_approach.contact_fraction - by_load.contact_fraction).abs()
+                        <= 2.0 / (128.0 * 128.0)
+                );
+                let mean_of_field =
+                    by_approach.pressure.iter().sum::<f64>() / by_approach.pressure.len() as f64;
+                assert!((mean_of_field / by_approach.mean_pressure - 1.0).abs() < 1e-12);
+                assert!(by_approach.residual < 1e-8);
+            }
+        }
+    }
+
+    #[test]
+    fn hertz_sphere_by_approach() {
+        // Free paraboloid indented δ: F = (4/3) E* √R δ^{3/2}, a = √(Rδ) (Johnson 1985 §4.2).
+        let (n, radius, e_star) = (128usize, 50.0, 1.0);
+        let heights = (0..n * n)
+            .map(|i| {
+                let (x, y) = ((i % n) as f64 - 64.0, (i / n) as f64 - 64.0);
+                -(x * x + y * y) / (2.0 * radius)
+            })
+            .collect();
+        let map = HeightMap {
+            n,
+            pixel: 1.0,
+            heights,
+        };
+        let delta: f64 = 12.5; // a = 25 pixels
+        let sol = solve_displacement(&map, e_star, delta, Boundary::Free, &BemSettings::default())
+            .unwrap();
+        let force = sol.mean_pressure * (n * n) as f64;
+        let hertz = 4.0 / 3.0 * e_star * radius.sqrt() * delta.powf(1.5);
+        let a = (sol.contact_fraction * (n * n) as f64 / std::f64::consts::PI).sqrt();
+        eprintln!(
+            "Hertz by approach: F {:+.4}, a {:+.4}",
+            force / hertz - 1.0,
+            a / (radius * delta).sqrt() - 1.0
+        );
+        assert!((force / hertz - 1.0).abs() < 0.02);
+        assert!((a / (radius * delta).sqrt() - 1.0).abs() < 0.02);
+    }
+
+    #[test]
+    fn approach_below_the_top_touches_nothing_and_full_contact_is_refused() {
+        let map = rough(32, 4);
+        let s = BemSettings::default();
+        let top = map
+            .heights
+            .iter()
+            .cloned()
+            .fold(f64::NEG_INFINITY, f64::max);
+        for boundary in [Boundary::Periodic, Boundary::Free] {
+            for delta in [0.0, -1e-7] {
+                let sol = solve_displacement(&map, 1.0, delta, boundary, &s).unwrap();
+                assert!(sol.pressure.iter().all(|&p| p == 0.0));
+                assert_eq!((sol.mean_pressure, sol.contact_fraction), (0.0, 0.0));
+                for (g, h) in sol.gap.iter().zip(&map.heights) {
+                    assert_eq!(*g, top - delta - h);
+                }
+            }
+            assert!(matches!(
+                solve_displacement(&map, 1.0, f64::NAN, boundary, &s),
+                Err(BemError::InvalidApproach { .. })
+            ));
+        }
+        // periodic: the approach stays below max h − ⟨h⟩ (full contact)
+        let mean = map.heights.iter().sum::<f64>() / map.heights.len() as f64;
+        let full = top - mean;
+        let err = solve_displacement(&map, 1.0, full, Boundary::Periodic, &s).unwrap_err();
+        assert!(matches!(err, BemError::InvalidApproach { .. }), "{err}");
+        assert!(err.to_string().contains("full contact"));
+        // just below it: nearly full contact and a finite load; a free patch takes any approach
+        let near = solve_displacement(&map, 1.0, 0.999 * full, Boundary::Periodic, &s).unwrap();
+        assert!(near.contact_fraction > 0.9 && near.mean_pressure.is_finite());
+        assert!(solve_displacement(&map, 1.0, 2.0 * full, Boundary::Free, &s).is_ok());
     }
 
     #[test]

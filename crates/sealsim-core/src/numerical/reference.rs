@@ -14,7 +14,7 @@
 //! same band-limited spectrum.
 
 use super::HeightMap;
-use super::bem::{self, BemError, BemSettings, Boundary};
+use super::bem::{self, BemError, BemSettings, Boundary, Load};
 use super::flow::{self, FlowError, FlowSettings};
 use super::surface::synthesize;
 use crate::surface::{Spectrum, SpectrumError};
@@ -207,12 +207,62 @@ pub fn evaluate_observed(
     progress: &mut dyn FnMut(usize, usize),
     observe: &mut dyn FnMut(&HeightMap, &bem::ContactSolution, &Realisation),
 ) -> Result<NumericalState, NumericalError> {
-    let realisations = match surfaces {
-        Surfaces::Map(map) => {
-            let r = realise(map, None, e_star, p0, viscosity, settings, observe)?;
-            progress(1, 1);
-            vec![r]
-        }
+    evaluate_loaded(
+        surfaces,
+        e_star,
+        Load::MeanPressure(p0),
+        viscosity,
+        settings,
+        progress,
+        observe,
+    )
+}
+
+/// [`evaluate_observed`] under load or displacement control: each realisation's contact at the
+/// mean pressure or at the rigid-body approach `load` ([`bem::solve_load`], periodic cell).
+/// Under displacement control the state's `nominal_pressure` is the ensemble mean of the
+/// realisations' mean pressures (each in its solution, [`bem::ContactSolution::mean_pressure`]);
+/// an approach at which no realisation touches gives zero pressure and no contact (the gap field
+/// still carries the flow).
+pub fn evaluate_loaded(
+    surfaces: Surfaces<'_>,
+    e_star: f64,
+    load: Load,
+    viscosity: f64,
+    settings: &NumericalSettings,
+    progress: &mut dyn FnMut(usize, usize),
+    observe: &mut dyn FnMut(&HeightMap, &bem::ContactSolution, &Realisation),
+) -> Result<NumericalState, NumericalError> {
+    let mut realisations = Vec::new();
+    let mut pressures = Vec::new();
+    for_each_surface(surfaces, settings, &mut |map, seed, done, total| {
+        let (r, p) = realise(map, seed, e_star, load, viscosity, settings, observe)?;
+        realisations.push(r);
+        pressures.push(p);
+        progress(done, total);
+        Ok(())
+    })?;
+    let p0 = match load {
+        Load::MeanPressure(p0) => p0,
+        Load::Approach(_) => pressures.iter().sum::<f64>() / pressures.len().max(1) as f64,
+    };
+    Ok(summarise(p0, realisations))
+}
+
+/// What [`for_each_surface`] calls on each surface: `(map, seed, done, total)`.
+pub type EachSurface<'a> =
+    dyn FnMut(&HeightMap, Option<u64>, usize, usize) -> Result<(), NumericalError> + 'a;
+
+/// Calls `each(map, seed, done, total)` on every surface of the numerical level in order: the
+/// measured map (seed `None`, one of one) or the synthetic realisations of the band-limited
+/// spectrum (seeds `seed + k`, [`NumericalSettings`]).
+pub fn for_each_surface(
+    surfaces: Surfaces<'_>,
+    settings: &NumericalSettings,
+    each: &mut EachSurface<'_>,
+) -> Result<(), NumericalError> {
+    match surfaces {
+        Surfaces::Map(map) => each(map, None, 1, 1),
         Surfaces::Synthetic(spectrum) => {
             if settings.realisations == 0 {
                 return Err(NumericalError::NoRealisations);
@@ -220,37 +270,26 @@ pub fn evaluate_observed(
             let band = band_limited(spectrum, settings.band).map_err(NumericalError::Spectrum)?;
             let n = settings.grid_size();
             let total = settings.realisations;
-            let mut out = Vec::with_capacity(total);
             for k in 0..total {
                 let seed = settings.seed.wrapping_add(k as u64);
-                let map = synthesize(&band, n, seed);
-                out.push(realise(
-                    &map,
-                    Some(seed),
-                    e_star,
-                    p0,
-                    viscosity,
-                    settings,
-                    observe,
-                )?);
-                progress(k + 1, total);
+                each(&synthesize(&band, n, seed), Some(seed), k + 1, total)?;
             }
-            out
+            Ok(())
         }
-    };
-    Ok(summarise(p0, realisations))
+    }
 }
 
+/// One realisation's contact, flow and mean pressure (Pa).
 fn realise(
     map: &HeightMap,
     seed: Option<u64>,
     e_star: f64,
-    p0: f64,
+    load: Load,
     viscosity: f64,
     settings: &NumericalSettings,
     observe: &mut dyn FnMut(&HeightMap, &bem::ContactSolution, &Realisation),
-) -> Result<Realisation, NumericalError> {
-    let contact = bem::solve(map, e_star, p0, Boundary::Periodic, &settings.bem)
+) -> Result<(Realisation, f64), NumericalError> {
+    let contact = bem::solve_load(map, e_star, load, Boundary::Periodic, &settings.bem)
         .map_err(NumericalError::Contact)?;
     let flow = flow::solve(&contact.gap, map.n, map.pixel, viscosity, &settings.flow)
         .map_err(NumericalError::Flow)?;
@@ -264,7 +303,7 @@ fn realise(
         flow_iterations: flow.iterations,
     };
     observe(map, &contact, &realisation);
-    Ok(realisation)
+    Ok((realisation, contact.mean_pressure))
 }
 
 fn summarise(p0: f64, realisations: Vec<Realisation>) -> NumericalState {
