@@ -449,10 +449,40 @@ def render(store):
             continue
         if line.strip() == "{{bem-peers}}":
             if BEM_PEERS.exists():
-                out.append(BEM_PEERS.read_text().rstrip("\n"))
+                out.extend(bem_peers(store))
             continue
         out.append(line)
     return HEADER + "\n".join(out) + "\n"
+
+
+def bem_peers(store):
+    """benches/results/bem-peers.md with the page's provenance on every row of its table: the
+    date and commit its header states, and the machine of the store whose description names its
+    kernel (else the unrecorded one)."""
+    text = BEM_PEERS.read_text().rstrip("\n").splitlines()
+    date = commit = None
+    kernel = None
+    for line in text:
+        m = re.match(r"- date: (\d{4}-\d{2}-\d{2}).*commit ([0-9a-f]{7,})", line)
+        if m:
+            date, commit = m.group(1), m.group(2)
+        m = re.match(r"- machine: .*kernel (\S+)", line)
+        if m:
+            kernel = m.group(1)
+    machine = LEGACY_MACHINE
+    for mid, desc in store.get("machines", {}).items():
+        if kernel and kernel in str(desc):
+            machine = mid
+    out = []
+    for line in text:
+        if line.startswith("| n² |"):
+            line = "| what |" + line[len("| n² |"):] + " measured |"
+        elif line.startswith("|---"):
+            line += "---|"
+        elif line.startswith("| ") and date and commit:
+            line += f" {date} · {commit} · {machine} |"
+        out.append(line)
+    return out
 
 
 def prov_cell(store, used):

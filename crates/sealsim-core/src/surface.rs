@@ -232,7 +232,7 @@ impl Spectrum {
     /// spectra that differ by a constant factor only (a self-affine surface at another Ra or
     /// rms) have the same bits here whenever the factor sits in one shift of ln C, as it does
     /// for every [`Self::self_affine`] spectrum, so the scale-free contact tables
-    /// ([`crate::contact::ContactTable`]) computed on it are shared between them.
+    /// (the contact table of `contact::table`) computed on it are shared between them.
     pub fn unit_shape(&self) -> Self {
         let mut s = self.clone();
         let ln_c0 = s.segments.first().map_or(0.0, |seg| seg.ln_c);
