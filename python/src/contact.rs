@@ -6,7 +6,7 @@
 //!   junction (ζc, u_c, λc).
 //! * The numerical level: the boundary-element contact, the percolation of the non-contact
 //!   region and the Reynolds flow of the scenario's numerical level
-//!   ([`reference::evaluate_observed`], called exactly as the numerical table of `sealsim leak`
+//!   ([`reference::evaluate_loaded`], called exactly as the numerical table of `sealsim leak`
 //!   and of the life run calls it: E* = 1 at the reduced pressure P0/E*, η = 1, the same
 //!   `[numerical]` settings, threads and tolerances), on a height map handed over as raw `f64`
 //!   bytes (bit for bit) or on the scenario's random realisations; with the fields (heights, gap

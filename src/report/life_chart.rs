@@ -62,22 +62,36 @@ fn decade_label(v: &f64) -> String {
 /// `shown` (in the panel's unit) and `label`.
 fn floor_line(
     chart: &mut Panel<'_, '_>,
-    (x_lo, x_hi): (f64, f64),
+    span: (f64, f64),
     y: f64,
     shown: &str,
     floor: &LeakFloor,
     label: &str,
 ) -> Result<(), PlotError> {
+    let text = format!("floor {shown} ({}){label}", floor.meaning());
+    level_line(chart, span, y, (4, 4), GREY.stroke_width(1), text)
+}
+
+/// A horizontal dashed line at `y` across `x_lo..x_hi` (`dash`: on and off lengths in
+/// pixels), in `style`, with its legend entry `label`: the floor and the limits of the charts.
+fn level_line(
+    chart: &mut Panel<'_, '_>,
+    (x_lo, x_hi): (f64, f64),
+    y: f64,
+    (on, off): (u32, u32),
+    style: ShapeStyle,
+    label: String,
+) -> Result<(), PlotError> {
     chart
         .draw_series(DashedLineSeries::new(
             vec![(x_lo, y), (x_hi, y)],
-            4,
-            4,
-            GREY.stroke_width(1),
+            on,
+            off,
+            style,
         ))
         .map_err(err)?
-        .label(format!("floor {shown} ({}){label}", floor.meaning()))
-        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], GREY.stroke_width(1)));
+        .label(label)
+        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
     Ok(())
 }
 
@@ -198,21 +212,11 @@ impl LeakUnit {
 /// A criterion's limit as a dashed vermillion line at `y` across `x`, labelled for the legend.
 fn limit_line(
     chart: &mut Panel<'_, '_>,
-    (x_lo, x_hi): (f64, f64),
+    span: (f64, f64),
     y: f64,
     label: String,
 ) -> Result<(), PlotError> {
-    chart
-        .draw_series(DashedLineSeries::new(
-            vec![(x_lo, y), (x_hi, y)],
-            8,
-            5,
-            VERMILLION.stroke_width(2),
-        ))
-        .map_err(err)?
-        .label(label)
-        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], VERMILLION.stroke_width(2)));
-    Ok(())
+    level_line(chart, span, y, (8, 5), VERMILLION.stroke_width(2), label)
 }
 
 /// The lift-off stretches of a history (shaded on the leak panel), in the axis's time `unit`.

@@ -1225,23 +1225,20 @@ impl library::Entry {
     /// Parses and validates the entry (once per process: the text is embedded, so the result
     /// cannot change, and a study's cases each load their compound).
     pub fn load(&self) -> Result<Material, ScenarioError> {
-        type Loaded = std::collections::HashMap<&'static str, Material>;
-        static LOADED: std::sync::OnceLock<std::sync::Mutex<Loaded>> = std::sync::OnceLock::new();
-        let loaded = LOADED.get_or_init(Default::default);
-        if let Some(m) = loaded
-            .lock()
-            .unwrap_or_else(|p| p.into_inner())
-            .get(self.id)
-        {
-            return Ok(m.clone());
+        // more than the library holds: nothing is ever dropped (a failure is not kept: it is
+        // parsed again for its message)
+        static LOADED: crate::math::memo::Memo<&'static str, Option<Material>> =
+            crate::math::memo::Memo::new(1024);
+        match LOADED.get_or_insert_with(self.id, || self.parse().ok()) {
+            Some(material) => Ok(material),
+            None => self.parse(),
         }
+    }
+
+    fn parse(&self) -> Result<Material, ScenarioError> {
         let mut material = library_material_from_str(self.text, &self.path())?;
         material.library_id = Some(self.id.to_owned());
         material.class = crate::permeation::family_of(self.id).map(str::to_owned);
-        loaded
-            .lock()
-            .unwrap_or_else(|p| p.into_inner())
-            .insert(self.id, material.clone());
         Ok(material)
     }
 }

@@ -272,7 +272,7 @@ struct Case {
 const OUTPUTS: [&str; 3] = ["out.csv", "summary.json", "plot.svg"];
 
 fn run_case(index: u64, seed: u64, bases: &[Base], bin: &Path, limits: &[Duration]) -> Case {
-    let mut rng = Rng(seed ^ index.wrapping_mul(0xA24B_AED4_963E_E407));
+    let mut rng = Rng::new(seed ^ index.wrapping_mul(0xA24B_AED4_963E_E407));
     let base_index = rng.below(bases.len());
     let mut input = bases[base_index].text.clone();
     let mutations: Vec<String> = (0..1 + rng.below(3))

@@ -555,7 +555,7 @@ fn mutated_data_files_are_read_or_refused_never_crash_hang_or_give_non_finite_nu
             seed.name
         );
     }
-    let mut rng = Rng(SEED);
+    let mut rng = Rng::new(SEED);
     let start = Instant::now();
     let (mut accepted, mut refused, mut cases) = (0usize, 0usize, 0usize);
     let mut failures = Vec::new();
@@ -608,7 +608,7 @@ fn mutated_data_files_are_read_or_refused_never_crash_hang_or_give_non_finite_nu
 #[test]
 fn the_binary_exits_0_or_2_on_mutated_data_in_bounded_time() {
     let dir = tempfile::tempdir().unwrap();
-    let mut rng = Rng(SEED ^ 0xC11);
+    let mut rng = Rng::new(SEED ^ 0xC11);
     let mut failures = Vec::new();
     let map = map_csv();
     let gsf = map_gsf();

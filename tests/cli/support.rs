@@ -170,17 +170,17 @@ fn no_nan_looks_at_words() {
     }
 }
 
-/// splitmix64: a tiny, well-mixed, seedable generator (no dependency, the same stream
-/// everywhere), shared by the scenario fuzz and the data-reader fuzz.
-pub struct Rng(pub u64);
+/// The crate's seeded SplitMix64 ([`sealsim::math::rng::SplitMix64`]) with the draws the
+/// scenario fuzz and the data-reader fuzz need: the same stream everywhere.
+pub struct Rng(pub sealsim::math::rng::SplitMix64);
 
 impl Rng {
+    pub fn new(seed: u64) -> Self {
+        Rng(sealsim::math::rng::SplitMix64(seed))
+    }
+
     pub fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
+        self.0.next_u64()
     }
 
     /// Uniform in `0..n` (0 for `n = 0`).

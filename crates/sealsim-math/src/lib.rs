@@ -11,6 +11,7 @@ pub mod fft;
 pub mod fnv;
 pub mod interp;
 pub mod laplacian;
+pub mod memo;
 pub mod multigrid;
 pub mod nnls;
 pub mod quadrature;

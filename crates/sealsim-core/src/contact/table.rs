@@ -12,7 +12,7 @@
 
 use super::{EffectiveMedium, EffectiveMediumSettings, Junction, PerssonContact};
 use crate::math::interp::UniformCubic;
-use std::sync::{Arc, Mutex, OnceLock};
+use std::sync::{Arc, OnceLock};
 
 /// How the table is laid out.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -117,14 +117,10 @@ struct TableShape {
 /// surface shapes than this, and the least recently built goes first.
 pub const SHAPE_CACHE_SIZE: usize = 64;
 
-type ShapeKey = (String, TableSettings);
-type ShapeCache = Mutex<Vec<(ShapeKey, Arc<TableShape>)>>;
-
-/// The process-wide cache of table shapes (see [`ContactTable`]): most recently used last.
-fn shape_cache() -> &'static ShapeCache {
-    static CACHE: OnceLock<ShapeCache> = OnceLock::new();
-    CACHE.get_or_init(|| Mutex::new(Vec::new()))
-}
+/// The process's table shapes (see [`ContactTable`]), by the exact bits of the unit-shape
+/// spectrum, the model settings and the table's layout.
+static SHAPES: crate::math::memo::Memo<(String, TableSettings), Arc<TableShape>> =
+    crate::math::memo::Memo::new(SHAPE_CACHE_SIZE);
 
 #[derive(Debug, Clone, PartialEq)]
 struct Grid {
@@ -223,30 +219,11 @@ impl ContactTable {
         let unit = exact.spectrum().unit_shape();
         // exact bits of the shape and the model settings: equal keys, equal nodes
         let key = (format!("{unit:?}{:?}", exact.settings()), settings);
-        let cached = {
-            let mut cache = shape_cache().lock().unwrap_or_else(|p| p.into_inner());
-            cache.iter().position(|(k, _)| *k == key).map(|at| {
-                let entry = cache.remove(at);
-                let shape = Arc::clone(&entry.1);
-                cache.push(entry);
-                shape
-            })
-        };
-        let shape = cached.unwrap_or_else(|| {
-            // built outside the lock: another thread may build the same shape meanwhile, with
-            // the same bits
-            let shape = Arc::new(TableShape::build(
+        let shape = SHAPES.get_or_insert_with(key, || {
+            Arc::new(TableShape::build(
                 PerssonContact::new(unit, *exact.settings()),
                 settings,
-            ));
-            let mut cache = shape_cache().lock().unwrap_or_else(|p| p.into_inner());
-            if !cache.iter().any(|(k, _)| *k == key) {
-                if cache.len() >= SHAPE_CACHE_SIZE {
-                    cache.remove(0);
-                }
-                cache.push((key, Arc::clone(&shape)));
-            }
-            shape
+            ))
         });
         ContactTable {
             s_seal: exact.sealing_reduced_pressure(),

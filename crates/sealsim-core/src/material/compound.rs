@@ -377,24 +377,9 @@ impl Material {
                 activation_energy,
             } => [2, reference.to_bits(), activation_energy.to_bits(), 0],
         });
-        type Known = Vec<(Vec<u64>, Option<f64>)>;
-        static KNOWN: std::sync::OnceLock<std::sync::Mutex<Known>> = std::sync::OnceLock::new();
-        let known = KNOWN.get_or_init(Default::default);
-        if let Some((_, t)) = known
-            .lock()
-            .unwrap_or_else(|p| p.into_inner())
-            .iter()
-            .find(|(k, _)| *k == key)
-        {
-            return *t;
-        }
-        let t = self.low_temperature_limit_uncached();
-        let mut known = known.lock().unwrap_or_else(|p| p.into_inner());
-        if known.len() >= 64 {
-            known.remove(0);
-        }
-        known.push((key, t));
-        t
+        static KNOWN: crate::math::memo::Memo<Vec<u64>, Option<f64>> =
+            crate::math::memo::Memo::new(64);
+        KNOWN.get_or_insert_with(key, || self.low_temperature_limit_uncached())
     }
 
     fn low_temperature_limit_uncached(&self) -> Option<f64> {

@@ -182,31 +182,6 @@ pub fn evaluate(
     settings: &NumericalSettings,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<NumericalState, NumericalError> {
-    evaluate_observed(
-        surfaces,
-        e_star,
-        p0,
-        viscosity,
-        settings,
-        progress,
-        &mut |_, _, _| {},
-    )
-}
-
-/// [`evaluate`], handing each realisation's fields to `observe(map, contact, realisation)` as
-/// it is solved: the surface (heights in m), the boundary-element solution (contact pressure in
-/// Pa and gap in m on the map's grid, [`bem::ContactSolution`]) and its scalars. The same
-/// solves as [`evaluate`], number for number (the Python package's `sealsim.contact` at the
-/// numerical level).
-pub fn evaluate_observed(
-    surfaces: Surfaces<'_>,
-    e_star: f64,
-    p0: f64,
-    viscosity: f64,
-    settings: &NumericalSettings,
-    progress: &mut dyn FnMut(usize, usize),
-    observe: &mut dyn FnMut(&HeightMap, &bem::ContactSolution, &Realisation),
-) -> Result<NumericalState, NumericalError> {
     evaluate_loaded(
         surfaces,
         e_star,
@@ -214,12 +189,17 @@ pub fn evaluate_observed(
         viscosity,
         settings,
         progress,
-        observe,
+        &mut |_, _, _| {},
     )
 }
 
-/// [`evaluate_observed`] under load or displacement control: each realisation's contact at the
-/// mean pressure or at the rigid-body approach `load` ([`bem::solve_load`], periodic cell).
+/// [`evaluate`] under load or displacement control, handing each realisation's fields to
+/// `observe(map, contact, realisation)` as it is solved: the surface (heights in m), the
+/// boundary-element solution (contact pressure in Pa and gap in m on the map's grid,
+/// [`bem::ContactSolution`]) and its scalars. Each realisation's contact is at the mean pressure
+/// or at the rigid-body approach `load` ([`bem::solve_load`], periodic cell); under
+/// `Load::MeanPressure` the same solves as [`evaluate`], number for number (the Python
+/// package's `sealsim.contact` at the numerical level).
 /// Under displacement control the state's `nominal_pressure` is the ensemble mean of the
 /// realisations' mean pressures (each in its solution, [`bem::ContactSolution::mean_pressure`]);
 /// an approach at which no realisation touches gives zero pressure and no contact (the gap field
@@ -345,10 +325,10 @@ mod tests {
         let surfaces = Surfaces::Synthetic(&spectrum);
         let plain = evaluate(surfaces, 1.0, 0.02, 1.0, &settings, &mut |_, _| {}).unwrap();
         let mut seen = Vec::new();
-        let observed = evaluate_observed(
+        let observed = evaluate_loaded(
             surfaces,
             1.0,
-            0.02,
+            Load::MeanPressure(0.02),
             1.0,
             &settings,
             &mut |_, _| {},
