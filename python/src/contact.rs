@@ -51,6 +51,13 @@ fn topography(
             "height_map is {ny} × {nx}: each side needs at least {MIN_SIDE} samples"
         )));
     }
+    let max = sealsim::numerical::reference::MAX_GRID_PIXELS;
+    if nx.saturating_mul(ny) > max {
+        return Err(bad(format!(
+            "height_map is {ny} × {nx}: the contact solver takes at most {max} pixels \
+             (8192 × 8192, ≈ 4.8 GB while it solves); crop or resample the map"
+        )));
+    }
     if heights.len() != nx * ny * 8 {
         return Err(bad(format!(
             "height_map has {} bytes, not the {} of {ny} × {nx} float64 values",

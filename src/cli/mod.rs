@@ -292,7 +292,24 @@ pub fn main() -> i32 {
             return e.exit_code();
         }
     };
-    match run(cli.command) {
+    handle_interrupts();
+    crate::report::staging::begin();
+    let result = run(cli.command);
+    // every output of the command renamed together, or none of them
+    let result = match result {
+        Ok(()) | Err(CliError::SealFails(_)) => match crate::report::staging::commit() {
+            Ok(()) => result,
+            Err((target, source)) => Err(CliError::Output {
+                target: target.display().to_string(),
+                source,
+            }),
+        },
+        Err(e) => {
+            crate::report::staging::abandon();
+            Err(e)
+        }
+    };
+    match result {
         Ok(()) => 0,
         // a verdict, not an error: everything was written
         Err(e @ CliError::SealFails(_)) => e.exit_code(),
@@ -301,6 +318,28 @@ pub fn main() -> i32 {
             e.exit_code()
         }
     }
+}
+
+/// SIGINT and SIGTERM (and SIGHUP) end the process with 128 + the signal's number, as the
+/// default action's status reads in a shell, after removing every temporary in flight
+/// ([`crate::report::staging`]): an interrupted command leaves its previous outputs and
+/// nothing else. If the handler thread cannot start, the default actions stay.
+fn handle_interrupts() {
+    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+    let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP]) else {
+        return;
+    };
+    let _ = std::thread::Builder::new()
+        .name("signals".into())
+        .spawn(move || {
+            if let Some(signal) = signals.forever().next() {
+                // a progress bar's line is left open: end it before the note
+                eprintln!(
+                    "\nsealsim: interrupted (signal {signal}); outputs not yet in place removed"
+                );
+                crate::report::staging::remove_all_and_exit(128 + signal);
+            }
+        });
 }
 
 /// Dispatches to the subcommand.

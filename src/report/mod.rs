@@ -18,6 +18,7 @@ pub mod material_toml;
 pub mod materials;
 pub mod plot;
 pub mod sizes;
+pub mod staging;
 pub mod study;
 pub mod surface;
 pub mod tradeoff;
@@ -231,7 +232,8 @@ pub fn replace_refusal(path: &Path, meta: &fs::Metadata) -> Option<String> {
 /// Writes `bytes` to `path` whole or not at all.
 ///
 /// A regular file (or a new path) is written to a temporary file in the same directory
-/// (`.{name}.tmp-{pid}-{n}`), flushed and synced and renamed over it. On any error the
+/// (`.{name}.tmp-{pid}-{random}`, [`staging`]), flushed and synced and renamed over it (at the
+/// end of the command, with its other outputs, inside a [`staging::begin`] batch). On any error the
 /// temporary file is removed and an existing file is left untouched. The replaced file keeps
 /// its permission bits (a 0600 file stays private) and, where the process may set them (root,
 /// or a group the user is in), its owner and group; a read-only file (mode without any write
@@ -301,28 +303,34 @@ fn replace_whole(path: &Path, bytes: &[u8], existing: Option<&fs::Metadata>) -> 
         _ => Path::new("."),
     };
     // `create_new`: never clobber a file that is not ours (so only remove it if we made it).
-    // A name left by a killed process of the same PID (a container's PID 1) is skipped.
+    // The random part keeps a name left by a killed process (of this PID, in a container)
+    // from colliding; a collision all the same is retried under a new name.
     let mut attempt = 0;
     let (file, tmp) = loop {
         let tmp = dir.join(format!(
-            ".{}.tmp-{}-{}",
+            ".{}.tmp-{}-{:016x}",
             name.to_string_lossy(),
             std::process::id(),
-            next_serial()
+            staging::random_part()
         ));
-        match OpenOptions::new().write(true).create_new(true).open(&tmp) {
+        let made = staging::create(&tmp, || {
+            OpenOptions::new().write(true).create_new(true).open(&tmp)
+        });
+        match made {
             Ok(file) => break (file, tmp),
             Err(e) if e.kind() == io::ErrorKind::AlreadyExists && attempt < 64 => attempt += 1,
             Err(e) => return Err(e),
         }
     };
-    let result = keep_mode_and_owner(&file, existing)
-        .and_then(|()| fill_and_rename(file, bytes, &tmp, path));
-    if result.is_err() {
-        // Best effort: the original error is the one worth reporting.
-        let _ = fs::remove_file(&tmp);
+    let result = keep_mode_and_owner(&file, existing).and_then(|()| fill(file, bytes));
+    match result {
+        Ok(()) => staging::finish(&tmp, path).inspect_err(|_| staging::discard(&tmp)),
+        Err(e) => {
+            // Best effort: the original error is the one worth reporting.
+            staging::discard(&tmp);
+            Err(e)
+        }
     }
-    result
 }
 
 /// Gives the temporary the replaced file's owner and group where this process may (root; the
@@ -343,15 +351,15 @@ fn keep_mode_and_owner(file: &File, existing: Option<&fs::Metadata>) -> io::Resu
     file.set_permissions(old.permissions())
 }
 
-fn fill_and_rename(mut file: File, bytes: &[u8], tmp: &Path, path: &Path) -> io::Result<()> {
+/// Writes the whole temporary and syncs it to disk (so a rename never exposes a file whose
+/// bytes are still only in the page cache).
+fn fill(mut file: File, bytes: &[u8]) -> io::Result<()> {
     file.write_all(bytes)?;
     file.flush()?;
-    file.sync_all()?;
-    drop(file);
-    fs::rename(tmp, path)
+    file.sync_all()
 }
 
-/// A number unique within this process, so that concurrent writes never share a temp file.
+/// A number unique within this process, mixed into each temporary's random name.
 fn next_serial() -> u64 {
     static SERIAL: AtomicU64 = AtomicU64::new(0);
     SERIAL.fetch_add(1, Ordering::Relaxed)

@@ -975,7 +975,44 @@ impl Source<'_> {
         if let Some(seed) = integer(raw.seed.as_ref(), &NUMERICAL_SEED)? {
             settings.seed = seed;
         }
+        self.numerical_grid(table, &settings)?;
         Ok(settings)
+    }
+
+    /// The grid `band · pixels_per_wavelength` per side, each in range, must fit
+    /// [`MAX_GRID_PIXELS`]: 512 × 64 asks for 32768² pixels, ≈ 77 GB, which aborted on the
+    /// allocation (a Python interpreter with it) instead of being refused.
+    fn numerical_grid(
+        &self,
+        table: &Spanned<RawNumerical>,
+        settings: &NumericalSettings,
+    ) -> Result<(), ScenarioError> {
+        let raw = table.get_ref();
+        use crate::numerical::reference::{BYTES_PER_PIXEL, MAX_GRID_PIXELS};
+        let n = settings.grid_size();
+        if n.saturating_mul(n) <= MAX_GRID_PIXELS {
+            return Ok(());
+        }
+        let (span, key) = match (&raw.band, &raw.pixels_per_wavelength) {
+            (Some(b), _) => (b.span(), NUMERICAL_BAND.key),
+            (None, Some(p)) => (p.span(), NUMERICAL_PIXELS.key),
+            (None, None) => (table.span(), NUMERICAL_BAND.key),
+        };
+        let side = (MAX_GRID_PIXELS as f64).sqrt();
+        Err(self.error(
+            span,
+            key,
+            format!(
+                "band {} × pixels_per_wavelength {} asks for a {n} × {n} grid, which needs about \
+                 {:.1} GB (≈ {BYTES_PER_PIXEL} bytes a pixel); the numerical level solves at most \
+                 {side} × {side} (≈ {:.1} GB): lower band or pixels_per_wavelength so that their \
+                 product is at most {side}",
+                show(settings.band),
+                settings.pixels_per_wavelength,
+                settings.estimated_memory() / 1e9,
+                BYTES_PER_PIXEL * MAX_GRID_PIXELS as f64 / 1e9,
+            ),
+        ))
     }
 
     /// A ring fitted at or below its compound's low-temperature limit T10 (docs/model.md §5.2):

@@ -30,6 +30,7 @@ mod generate_reference;
 mod gland;
 mod gland_design;
 mod gland_pressure;
+mod hardening;
 mod integration;
 mod leak;
 mod levels;

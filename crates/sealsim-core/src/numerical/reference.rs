@@ -49,7 +49,26 @@ impl Default for NumericalSettings {
     }
 }
 
+/// Largest grid the numerical level solves, in pixels: 8192² (2²⁶), the height-map readers'
+/// bound too. An engineering bound (assumed), not a property of the model: the contact and
+/// flow solvers hold about [`BYTES_PER_PIXEL`] a pixel, so 8192² needs ≈ 4.8 GB; one pixel
+/// more per side than this can exhaust the memory of a workstation, and an allocation failure
+/// aborts the process (a Python interpreter with it) rather than failing cleanly.
+pub const MAX_GRID_PIXELS: usize = 1 << 26;
+
+/// Memory the numerical level holds per grid pixel while it solves one realisation \[B\]:
+/// 1.17 GB at 4096² and 4.69 GB at 8192² (peak RSS of `benches/bem-peers.sh`'s solve on the
+/// 2-core benchmark machine, 2026-11-29; ≈ 70 B), rounded up.
+pub const BYTES_PER_PIXEL: f64 = 72.0;
+
 impl NumericalSettings {
+    /// The memory one realisation needs, estimated from its pixel count \[B\]
+    /// (`BYTES_PER_PIXEL · n²`).
+    pub fn estimated_memory(&self) -> f64 {
+        let n = self.grid_size() as f64;
+        BYTES_PER_PIXEL * n * n
+    }
+
     /// Points per side of the synthetic surfaces, `band · pixels_per_wavelength` rounded up to
     /// an even number (at least 8).
     pub fn grid_size(&self) -> usize {
