@@ -254,7 +254,6 @@ impl PartRow<'_> {
             .collect::<Result<_, _>>()?;
         let e = k + 3 + times;
         let final_state = self.final_state(self.field(e + 4))?;
-        let warnings = self.field(e + 5);
         let invalid = (status == "invalid").then(|| self.field(e + 6).to_owned());
         if status == "invalid" && self.field(e + 6).is_empty() {
             return Err(self.error("invalid_reason", "an invalid case needs its reason".into()));
@@ -270,13 +269,37 @@ impl PartRow<'_> {
             leaked_volume: self.number(e + 2)?,
             compression_set: self.optional(e + 3)?,
             final_state: final_state.to_owned(),
-            warnings: if warnings.is_empty() {
-                Vec::new()
-            } else {
-                warnings.split(';').map(str::to_owned).collect()
-            },
+            warnings: self.warnings(e + 5)?,
             invalid,
         })
+    }
+
+    /// The `;`-separated validity limits of column `k`: each a limit's id (docs/model.md §9) or
+    /// the permeation bound's flag, as the study writes them (an edited `bogus-id` or `inf`
+    /// was merged into the table and counted in the summary).
+    fn warnings(&self, k: usize) -> Result<Vec<String>, ScenarioError> {
+        use crate::study::case::PERMEATION_BOUND;
+        use crate::validity::Limit;
+        let cell = self.field(k);
+        if cell.is_empty() {
+            return Ok(Vec::new());
+        }
+        cell.split(';')
+            .map(|id| {
+                if id == PERMEATION_BOUND || Limit::ALL.iter().any(|l| l.id() == id) {
+                    Ok(id.to_owned())
+                } else {
+                    Err(self.error(
+                        &self.expected[k],
+                        format!(
+                            "\"{id}\" is not a validity limit's id (docs/model.md §9: {}, or \
+                             {PERMEATION_BOUND}); the part file was edited or is not a part file",
+                            Limit::ALL.map(Limit::id).join(", ")
+                        ),
+                    ))
+                }
+            })
+            .collect()
     }
 
     /// The case index, one of the `cases` of the design.

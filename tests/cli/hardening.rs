@@ -184,3 +184,63 @@ fn interrupted_runs_leave_no_temporary_and_never_mix_two_runs_outputs() {
     );
     eprintln!("{interrupted} of 40 merges interrupted (a run takes {full:?})");
 }
+
+/// D16: a part file's `warnings` cell is checked on merge: an edited `bogus-id` or `inf` was
+/// carried into the merged table and counted in the summary (`"bogus-id": 1`). Now exit 2 at
+/// the part's line and column, nothing written; the unedited parts merge.
+#[test]
+fn a_merged_part_with_an_unknown_warning_id_is_refused_at_its_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    study_file(d, "s.toml", 40);
+    let parts = shards(d, "s.toml", "s");
+    let merge = |second: &str| {
+        sealsim(
+            d,
+            &[
+                "study",
+                "merge",
+                "s.toml",
+                &parts[0],
+                second,
+                "-o",
+                "m.csv",
+                "--summary",
+                "m.json",
+            ],
+        )
+    };
+    let out = merge(&parts[1]);
+    assert_eq!(out.status.code(), Some(0), "{out:?}");
+    fs::remove_file(d.join("m.csv")).unwrap();
+    fs::remove_file(d.join("m.json")).unwrap();
+    let text = fs::read_to_string(d.join(&parts[1])).unwrap();
+    let header = text.lines().find(|l| l.starts_with("case,")).unwrap();
+    let column = header.split(',').position(|c| c == "warnings").unwrap();
+    let (line, row) = text
+        .lines()
+        .enumerate()
+        .find(|(_, l)| {
+            l.split(',')
+                .next()
+                .is_some_and(|c| c.parse::<usize>().is_ok())
+        })
+        .unwrap();
+    for bogus in ["bogus-id", "inf", "near_cutoff;bogus-id"] {
+        let mut cells: Vec<&str> = row.split(',').collect();
+        cells[column] = bogus;
+        let edited = text.replacen(row, &cells.join(","), 1);
+        fs::write(d.join("edited.csv"), edited).unwrap();
+        let out = merge("edited.csv");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{bogus}: {stderr}");
+        let first = bogus.rsplit(';').next().unwrap();
+        assert!(
+            stderr.contains(&format!("edited.csv:{}", line + 1))
+                && stderr.contains("warnings")
+                && stderr.contains(&format!("\"{first}\" is not a validity limit's id")),
+            "{bogus}: {stderr}"
+        );
+        assert!(!d.join("m.csv").exists() && !d.join("m.json").exists());
+    }
+}
