@@ -42,10 +42,19 @@ pub fn scenarios(
         .collect()
 }
 
-/// The outcomes of cases `range` of `study`, on `threads` threads (`None`: all cores). An
-/// invalid case is recorded with its reason and counted as failed at installation
-/// ([`CaseOutcome::invalid`]); the rest run. Only a study none of whose cases is valid is an
-/// error (its first case's).
+/// Cases validated and run together: each block's scenarios (≈ 16 KB a case) are built, run
+/// and dropped before the next, so memory stays flat in the number of cases (the review's
+/// 10⁶-case study aborted on a 2.7 GB vector of every case's scenario, built up front).
+pub const BLOCK: usize = 4096;
+
+/// Contact paths carried from one block to the next: the most shared ones, so a study whose
+/// cases share few paths (a numerical table, minutes to build) builds each about once.
+const CARRIED: usize = 8;
+
+/// The outcomes of cases `range` of `study`, on `threads` threads (`None`: all cores), in
+/// blocks of [`BLOCK`] cases. An invalid case is recorded with its reason and counted as
+/// failed at installation ([`CaseOutcome::invalid`]); the rest run. Only a study none of
+/// whose cases is valid is an error (its first case's).
 pub fn run(
     study: &Study,
     range: Range<usize>,
@@ -62,22 +71,67 @@ pub fn run(
             message: format!("cannot start {threads:?} threads: {e}"),
         })?;
     pool.install(|| {
-        let values = study.plan.values(range.clone());
-        let mut scenarios = scenarios(study, range.start, &values);
-        if range.len() == study.cases()
-            && scenarios.iter().all(Result::is_err)
-            && let Some(Err(e)) = scenarios.drain(..).next()
-        {
-            return Err(e);
-        }
-        Ok(run_scenarios(
-            study,
-            range.start,
-            &values,
-            &scenarios,
+        let mut outcomes = Vec::with_capacity(range.len());
+        let mut carried: Vec<Carried> = Vec::new();
+        let mut first_error = None;
+        let mut any_valid = false;
+        let count = Count {
+            done: AtomicUsize::new(0),
+            total: range.len(),
             progress,
-        ))
+        };
+        progress(0, count.total);
+        for start in range.clone().step_by(BLOCK) {
+            let end = (start + BLOCK).min(range.end);
+            let values = study.plan.values(start..end);
+            let scenarios = scenarios(study, start, &values);
+            any_valid |= scenarios.iter().any(Result::is_ok);
+            let block = Block {
+                first: start,
+                values: &values,
+                scenarios: &scenarios,
+            };
+            let (done, keep) = run_block(study, &block, &carried, &count);
+            outcomes.extend(done);
+            carried = keep
+                .into_iter()
+                .filter_map(|(i, path)| {
+                    let scenario = scenarios[i].as_ref().ok()?;
+                    Some((Arc::new(scenario.clone()), path))
+                })
+                .collect();
+            if first_error.is_none() && !any_valid {
+                first_error = scenarios.into_iter().next().and_then(Result::err);
+            }
+        }
+        match first_error {
+            Some(e) if range.len() == study.cases() && !any_valid => Err(e),
+            _ => Ok(outcomes),
+        }
     })
+}
+
+/// A contact path kept across blocks, with the scenario that built it (its key).
+type Carried = (Arc<Scenario>, Arc<(ContactPath, Findings)>);
+
+/// The cases of one block: the first's index, the design's values and the validated scenarios.
+struct Block<'a> {
+    first: usize,
+    values: &'a [Vec<f64>],
+    scenarios: &'a [Result<Scenario, ScenarioError>],
+}
+
+/// Progress over all blocks.
+struct Count<'a> {
+    done: AtomicUsize,
+    total: usize,
+    progress: SharedProgress<'a>,
+}
+
+impl Count<'_> {
+    fn one(&self) {
+        (self.progress)(self.done.fetch_add(1, Ordering::AcqRel) + 1, self.total);
+    }
 }
 
 /// What a contact path depends on (as [`scenario_path`] builds it).
@@ -110,24 +164,78 @@ impl<'a> PathKey<'a> {
     }
 }
 
-/// One distinct contact path: built by the first case that needs it, dropped after the last.
+/// One distinct contact path: built by the first case that needs it (or carried from the
+/// previous block), dropped after the last unless `keep` (carried to the next block).
 struct Slot {
     path: Mutex<Option<Arc<(ContactPath, Findings)>>>,
     remaining: AtomicUsize,
+    keep: bool,
 }
 
-fn run_scenarios(
+/// Runs one block: its valid cases grouped by contact path (exact equality behind the hash),
+/// each path built by the first case that needs it — or taken from `carried` — and dropped
+/// after its last case, except the [`CARRIED`] most shared, returned with the index of the
+/// case whose scenario is their key.
+fn run_block(
     study: &Study,
-    first: usize,
-    values: &[Vec<f64>],
-    scenarios: &[Result<Scenario, ScenarioError>],
-    progress: SharedProgress<'_>,
-) -> Vec<CaseOutcome> {
-    // group the valid cases by contact path (exact equality behind the hash)
+    block: &Block<'_>,
+    carried: &[Carried],
+    count: &Count<'_>,
+) -> (Vec<CaseOutcome>, Vec<(usize, Arc<(ContactPath, Findings)>)>) {
+    let scenarios = block.scenarios;
+    let old_keys: Vec<PathKey> = carried.iter().map(|(s, _)| PathKey::of(s)).collect();
     let keys: Vec<Option<PathKey>> = scenarios
         .iter()
         .map(|s| s.as_ref().ok().map(PathKey::of))
         .collect();
+    let (slot_of, representative) = group(&keys);
+    let mut counts = vec![0usize; representative.len()];
+    for &s in slot_of.iter().filter(|&&s| s != usize::MAX) {
+        counts[s] += 1;
+    }
+    // the most shared paths outlive the block (ties: the first)
+    let mut by_count: Vec<usize> = (0..counts.len()).filter(|&s| counts[s] > 1).collect();
+    by_count.sort_by_key(|&s| std::cmp::Reverse(counts[s]));
+    by_count.truncate(CARRIED);
+    let slots: Vec<Slot> = (0..representative.len())
+        .map(|s| {
+            let key = keys[representative[s]].as_ref();
+            let old = old_keys.iter().position(|k| Some(k) == key);
+            Slot {
+                path: Mutex::new(old.map(|k| Arc::clone(&carried[k].1))),
+                remaining: AtomicUsize::new(counts[s]),
+                keep: by_count.contains(&s),
+            }
+        })
+        .collect();
+    let outcomes = (0..scenarios.len())
+        .into_par_iter()
+        .map(|i| {
+            run_case(
+                study,
+                block,
+                i,
+                slot_of.get(i).and_then(|&s| slots.get(s)),
+                count,
+            )
+        })
+        .collect();
+    let keep = by_count
+        .iter()
+        .filter_map(|&s| {
+            let path = slots[s]
+                .path
+                .lock()
+                .unwrap_or_else(|p| p.into_inner())
+                .take()?;
+            Some((representative[s], path))
+        })
+        .collect();
+    (outcomes, keep)
+}
+
+/// Each valid case's slot (`usize::MAX` for an invalid one) and each slot's first case.
+fn group(keys: &[Option<PathKey<'_>>]) -> (Vec<usize>, Vec<usize>) {
     let mut by_hash: HashMap<u64, Vec<usize>> = HashMap::new();
     let mut slot_of = Vec::with_capacity(keys.len());
     let mut representative: Vec<usize> = Vec::new();
@@ -150,63 +258,59 @@ fn run_scenarios(
         };
         slot_of.push(slot);
     }
-    let slots: Vec<Slot> = (0..representative.len())
-        .map(|s| Slot {
-            path: Mutex::new(None),
-            remaining: AtomicUsize::new(slot_of.iter().filter(|&&k| k == s).count()),
-        })
-        .collect();
+    (slot_of, representative)
+}
 
-    let total = scenarios.len();
-    let done = AtomicUsize::new(0);
-    progress(0, total);
-    (0..total)
-        .into_par_iter()
-        .map(|i| {
-            let inputs: Vec<Cell> = study
-                .inputs
-                .iter()
-                .zip(&values[i])
-                .map(|(input, &x)| input.cell(x))
-                .collect();
-            let scenario = match &scenarios[i] {
-                Ok(s) => s,
-                Err(e) => {
-                    progress(done.fetch_add(1, Ordering::AcqRel) + 1, total);
-                    return CaseOutcome::invalid(
-                        first + i,
-                        inputs,
-                        e.to_string(),
-                        study.report_times.len(),
-                    );
-                }
-            };
-            let slot = &slots[slot_of[i]];
-            let shared = {
-                let mut guard = slot.path.lock().unwrap_or_else(|p| p.into_inner());
-                match &*guard {
-                    Some(shared) => Arc::clone(shared),
-                    None => {
-                        let built = Arc::new(scenario_path(
-                            scenario,
-                            scenario.life.fidelity,
-                            None,
-                            &mut |_, _| {},
-                        ));
-                        *guard = Some(Arc::clone(&built));
-                        built
-                    }
-                }
-            };
-            let (path, findings) = (&shared.0, &shared.1);
-            let result = life_on(&scenario.life, path.clone(), findings.clone());
-            drop(shared);
-            if slot.remaining.fetch_sub(1, Ordering::AcqRel) == 1 {
-                *slot.path.lock().unwrap_or_else(|p| p.into_inner()) = None;
+/// Case `i` of the block on its contact path's `slot` (`None`: an invalid case).
+fn run_case(
+    study: &Study,
+    block: &Block<'_>,
+    i: usize,
+    slot: Option<&Slot>,
+    count: &Count<'_>,
+) -> CaseOutcome {
+    let index = block.first + i;
+    let inputs: Vec<Cell> = study
+        .inputs
+        .iter()
+        .zip(&block.values[i])
+        .map(|(input, &x)| input.cell(x))
+        .collect();
+    let (scenario, slot) = match (&block.scenarios[i], slot) {
+        (Ok(s), Some(slot)) => (s, slot),
+        (Err(e), _) => {
+            count.one();
+            return CaseOutcome::invalid(index, inputs, e.to_string(), study.report_times.len());
+        }
+        (Ok(_), None) => {
+            count.one();
+            let why = "internal error: a valid case without its contact path".to_owned();
+            return CaseOutcome::invalid(index, inputs, why, study.report_times.len());
+        }
+    };
+    let shared = {
+        let mut guard = slot.path.lock().unwrap_or_else(|p| p.into_inner());
+        match &*guard {
+            Some(shared) => Arc::clone(shared),
+            None => {
+                let built = Arc::new(scenario_path(
+                    scenario,
+                    scenario.life.fidelity,
+                    None,
+                    &mut |_, _| {},
+                ));
+                *guard = Some(Arc::clone(&built));
+                built
             }
-            let outcome = CaseOutcome::new(first + i, inputs, &result, &study.report_times);
-            progress(done.fetch_add(1, Ordering::AcqRel) + 1, total);
-            outcome
-        })
-        .collect()
+        }
+    };
+    let (path, findings) = (&shared.0, &shared.1);
+    let result = life_on(&scenario.life, path.clone(), findings.clone());
+    drop(shared);
+    if slot.remaining.fetch_sub(1, Ordering::AcqRel) == 1 && !slot.keep {
+        *slot.path.lock().unwrap_or_else(|p| p.into_inner()) = None;
+    }
+    let outcome = CaseOutcome::new(index, inputs, &result, &study.report_times);
+    count.one();
+    outcome
 }

@@ -146,6 +146,11 @@ fn interrupted_runs_leave_no_temporary_and_never_mix_two_runs_outputs() {
     assert!(merge("a.toml", &a).status().unwrap().success());
     let full = start.elapsed() / 2;
     assert_eq!(counts(d), (16000, 16000));
+    // blocks of 4096 cases (memory flat in the number of cases), paths carried across them:
+    // the whole run gives the bits of its two shards merged, whose blocks start elsewhere
+    let whole = sealsim(d, &["study", "a.toml", "-o", "whole.csv", "--threads", "2"]);
+    assert_eq!(whole.status.code(), Some(0), "{whole:?}");
+    assert!(fs::read(d.join("whole.csv")).unwrap() == fs::read(d.join("m.csv")).unwrap());
     let mut interrupted = 0;
     for k in 0..40u32 {
         let (study, parts) = if k % 2 == 0 {
