@@ -1393,7 +1393,7 @@ const NUMERICAL: &[Key] = &[
         "pixels_per_wavelength",
         Quantity(val::NUMERICAL_PIXELS),
         Literal("8", ""),
-        "pixels per shortest wavelength (grid n = band × this); whole",
+        "pixels per shortest wavelength (grid n = band × this, at most 8192); whole",
     ),
     key(
         "realisations",
