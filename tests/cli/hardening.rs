@@ -300,3 +300,81 @@ fn the_effective_medium_level_of_the_hot_oil_ring_ends_in_bounded_time() {
         assert!(matches!(code, Some(Some(0 | 3))), "{args:?}: {code:?}");
     }
 }
+
+/// A GSF file of `header` lines and no data (as the review made them).
+fn gsf(header: &str) -> Vec<u8> {
+    let mut bytes = format!("Gwyddion Simple Field 1.0\n{header}").into_bytes();
+    let pad = 4 - bytes.len() % 4;
+    bytes.extend(std::iter::repeat_n(0u8, pad));
+    bytes
+}
+
+/// The headline O-ring with its `[surface]` replaced by the height map `map`.
+fn map_scenario(map: &str) -> String {
+    let text = fs::read_to_string(root().join("scenarios/oring-nbr-water-80c.toml")).unwrap();
+    let start = text.find("[surface]").unwrap();
+    let end = text[start + 1..]
+        .find("\n[")
+        .map_or(text.len(), |k| start + 1 + k);
+    let table = if map.ends_with(".gsf") {
+        format!("[surface]\nheight_map = \"{map}\"\n")
+    } else {
+        format!("[surface]\nheight_map = \"{map}\"\npixel_size = \"1 um\"\nheight_unit = \"um\"\n")
+    };
+    format!("{}{table}{}", &text[..start], &text[end..])
+}
+
+/// D4: two GSF headers whose `XRes · YRes` wraps panicked (exit 101, "capacity overflow" and
+/// an index out of bounds); D5: a CSV map with one no-data cell (3.4e38, FLT_MAX) ran 105 s and
+/// printed a leak of 7.75e106 m³/s. All exit 2 at once, naming the file, through `surface` and
+/// through a scenario that names the map.
+#[test]
+fn overflowing_gsf_headers_and_a_no_data_cell_exit_2_through_surface_and_run() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    fs::write(
+        d.join("wrap.gsf"),
+        gsf("XRes = 4294967296\nYRes = 1073741824\nXReal = 1e-3\nYReal = 0.00025\n"),
+    )
+    .unwrap();
+    fs::write(
+        d.join("wrap2.gsf"),
+        gsf("XRes = 9223372036854775808\nYRes = 9223372036854775808\nXReal = 1\nYReal = 1\n"),
+    )
+    .unwrap();
+    let rows: Vec<String> = (0..64)
+        .map(|y| {
+            (0..64)
+                .map(|x| {
+                    if (x, y) == (9, 9) {
+                        "3.4e38".to_owned()
+                    } else {
+                        format!("{:.4}", 0.5 * (0.37 * f64::from(x * 7 + y * 13)).sin())
+                    }
+                })
+                .collect::<Vec<_>>()
+                .join(",")
+        })
+        .collect();
+    fs::write(d.join("map.csv"), rows.join("\n") + "\n").unwrap();
+    for map in ["wrap.gsf", "wrap2.gsf", "map.csv"] {
+        let toml = format!("{}.toml", map.replace('.', "-"));
+        fs::write(d.join(&toml), map_scenario(map)).unwrap();
+        let mut surface = vec!["surface", map];
+        if map.ends_with(".csv") {
+            surface.extend(["--pixel-size", "1um", "--height-unit", "um"]);
+        }
+        for args in [surface, vec!["run", &toml, "-o", "out.csv"]] {
+            let start = Instant::now();
+            let out = sealsim(d, &args);
+            let stderr = String::from_utf8_lossy(&out.stderr);
+            assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+            assert!(
+                stderr.contains(map) && !stderr.contains("panicked"),
+                "{stderr}"
+            );
+            assert!(start.elapsed().as_secs() < 20, "{args:?}");
+            assert!(!d.join("out.csv").exists());
+        }
+    }
+}
