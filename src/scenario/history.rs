@@ -26,6 +26,14 @@
 
 use crate::units::{self, Dimension, show};
 
+/// Most data rows of an `environment.history` file: each row is a knot of T(t) (or of the
+/// pressure), so an internal step of the run, whose cost is linear in them (10⁵ rows over 30
+/// years, a swing of up to 7 K between rows: 1.5 s; 10⁶: 17 s — `sealsim run`, the run and its
+/// band, on the 2-core VM). The bound is the cycles' step budget (`MAX_CYCLE_STEPS` of
+/// `scenario::life`, which re-exports this one): 45 years of hourly rows. Beyond it the file is
+/// refused at its first row over the limit (exit 2), rather than left to run for minutes.
+pub const MAX_HISTORY_ROWS: usize = 400_000;
+
 /// A malformed history file: what is wrong and, when it is on one row, the 1-based line.
 #[derive(Debug, Clone, PartialEq)]
 pub(super) struct HistoryError {
@@ -160,7 +168,12 @@ pub(super) fn parse_history(text: &str) -> Result<History, HistoryError> {
     let mut temperature: Vec<(f64, f64)> = Vec::new();
     let mut pressure: Vec<PressureRow> = Vec::new();
     let mut last: Option<f64> = None;
-    for (line, row) in rows {
+    let mut count = 0;
+    while let Some((line, row)) = rows.next() {
+        count += 1;
+        if count > MAX_HISTORY_ROWS {
+            return Err(too_long(line, count + rows.count()));
+        }
         let cells: Vec<&str> = row.split(',').map(str::trim).collect();
         if cells.len() != width {
             return Err(at(
@@ -219,6 +232,21 @@ pub(super) fn parse_history(text: &str) -> Result<History, HistoryError> {
             .then_some(temperature),
         pressure: columns.contains(&Column::Pressure).then_some(pressure),
     })
+}
+
+/// The refusal of a file of `rows` data rows, more than [`MAX_HISTORY_ROWS`], at `line`, the
+/// first row over the limit.
+fn too_long(line: usize, rows: usize) -> HistoryError {
+    at(
+        line,
+        format!(
+            "{rows} data rows, more than the limit of {MAX_HISTORY_ROWS} (this line is row {}): \
+             every row is an internal step of the run, whose cost grows with them; thin the \
+             history (e.g. hourly means: {MAX_HISTORY_ROWS} rows are 45 years of hours) or \
+             shorten it to the simulated time",
+            MAX_HISTORY_ROWS + 1
+        ),
+    )
 }
 
 /// The columns of a history written by `sealsim run -o` (any `--units`): `time_<unit>`,
@@ -393,6 +421,34 @@ fn number(cell: &str, column: &str, line: usize) -> Result<f64, HistoryError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A file of `rows` data rows after its header (line 1) and units row (line 2).
+    fn rows(n: usize) -> String {
+        let mut text = String::from("time,temperature\ns,C\n");
+        for k in 0..n {
+            text.push_str(&format!("{k},20\n"));
+        }
+        text
+    }
+
+    /// The bounded-work limit: a file of exactly [`MAX_HISTORY_ROWS`] rows reads; one row more
+    /// is refused at that row's line (2 lines of header, so line `MAX + 3`), with the file's
+    /// row count and the limit in the message.
+    #[test]
+    fn a_history_of_more_rows_than_the_limit_is_refused_at_the_first_row_over_it() {
+        let at_limit = parse(&rows(MAX_HISTORY_ROWS)).unwrap();
+        assert_eq!(at_limit.len(), MAX_HISTORY_ROWS);
+        let over = MAX_HISTORY_ROWS + 1234;
+        let e = parse(&rows(over)).unwrap_err();
+        assert_eq!(e.line, Some(MAX_HISTORY_ROWS + 3));
+        for needed in [
+            format!("{over} data rows"),
+            format!("limit of {MAX_HISTORY_ROWS}"),
+            "thin the history".to_owned(),
+        ] {
+            assert!(e.message.contains(&needed), "{needed}: {}", e.message);
+        }
+    }
 
     #[test]
     fn temperatures_outside_the_plausible_range_are_refused_at_their_line() {

@@ -194,9 +194,13 @@ pub const DEFAULT_POINTS_PER_DECADE: f64 = 20.0;
 /// cost grows with the number of temperature cycles in it, eight internal steps each).
 pub const MAX_DURATION: f64 = 1000.0 * YEAR;
 /// Most internal steps the temperature cycles may ask of one run: eight per period of the
-/// shortest cycle over the simulated time. 400 000 is 137 years of daily cycles, a few seconds
-/// of run time; beyond it the run is refused (exit 2) rather than left to run for minutes.
+/// shortest cycle over the simulated time. 400 000 is 137 years of daily cycles; the cost is
+/// linear in them (bounded work per step, docs/model.md §11.1): 130 years of the daily and
+/// yearly cycles of `scenarios/oring-epdm-outdoor-cycles.toml` (380 000 steps) run in about
+/// 4 s (`sealsim run`, the run and its band, on the 2-core VM; `benches/life_long.rs`).
+/// Beyond it the run is refused (exit 2) rather than left to run for minutes.
 pub const MAX_CYCLE_STEPS: f64 = 400_000.0;
+pub use super::history::MAX_HISTORY_ROWS;
 /// Upper limit of `simulation.points_per_decade` (a guard against typos that would make a
 /// run take minutes).
 pub const MAX_POINTS_PER_DECADE: f64 = 1000.0;

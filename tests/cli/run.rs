@@ -587,6 +587,22 @@ fn malformed_temperature_histories_are_located() {
         let scenario = nbr_with(&out, "temperature = \"80 C\"", "history = \"T.csv\"");
         out.run_rejects(&scenario, &[], &[needle, "s.toml:38)"]);
     }
+    // more rows than the run-time budget (sealsim::scenario::life::MAX_HISTORY_ROWS): refused
+    // at the first row over it, with the file's row count and the limit (exit 2)
+    let limit = sealsim::scenario::life::MAX_HISTORY_ROWS;
+    let mut csv = String::from("time,temperature\ns,C\n");
+    for k in 0..limit + 10 {
+        csv.push_str(&format!("{k},20\n"));
+    }
+    let out = Outputs::new();
+    out.write("T.csv", &csv);
+    let scenario = nbr_with(&out, "temperature = \"80 C\"", "history = \"T.csv\"");
+    let line = format!(
+        "T.csv:{}: {} data rows, more than the limit of {limit}",
+        limit + 3,
+        limit + 10
+    );
+    out.run_rejects(&scenario, &[], &[&line, "s.toml:38)"]);
     // a good one runs
     let out = Outputs::new();
     out.write("T.csv", "# ramp\ntime,temperature\nday,C\n0,20\n1,80\n");

@@ -175,10 +175,12 @@ impl PressureHistory {
                 _ => 0.0,
             }
         };
-        let mut out: Vec<f64> = (0..self.points.len())
+        // the rows strictly inside (a, b) by binary search: a long table costs O(log n) a call
+        let first = self.points.partition_point(|p| p.0 <= a);
+        let last = self.points.partition_point(|p| p.0 < b).max(first);
+        let mut out: Vec<f64> = (first..last)
             .filter(|&i| slope(i) != slope(i + 1))
             .map(|i| self.points[i].0)
-            .filter(|&k| k > a && k < b)
             .collect();
         if let Some(proof) = self.proof {
             out.extend(

@@ -91,8 +91,54 @@ pub struct Cycle {
 }
 
 impl Cycle {
+    /// `A sin(2π (t − t0)/P)` \[K\], its phase taken from [`Self::offset`].
     fn at(&self, t: f64) -> f64 {
-        self.amplitude * (std::f64::consts::TAU * (t - self.phase) / self.period).sin()
+        self.at_offset(self.offset(t))
+    }
+
+    /// `A sin(2π x/P)` \[K\] at `x` = t − t0 reduced by whole periods.
+    fn at_offset(&self, x: f64) -> f64 {
+        self.amplitude * (std::f64::consts::TAU * x / self.period).sin()
+    }
+
+    /// `t − t0` less a whole number of periods \[s\] (in (−P, P] up to rounding): `t − t0`
+    /// is carried with its rounding error (Knuth's two-sum) and reduced by `fmod`, which is
+    /// exact, so the phase is good to ~1e-16 of a period at any t. Taken as `(t − t0)/P` it
+    /// would be good to ~1e-16 of t only: 130 years into a run, 1e-11 of a day, which the
+    /// 1e-12 quadrature of [`reduced_time`] cannot converge below.
+    fn offset(&self, t: f64) -> f64 {
+        let d = t - self.phase;
+        let back = d - t;
+        let error = (t - (d - back)) + (-self.phase - back);
+        d % self.period + error
+    }
+}
+
+/// T(lo + s) \[K\] on a piece `[lo, hi]` of a history with no kink inside, as a function of the
+/// offset `s` \[s\] from its start: the table's segment and each cycle's phase are taken once at
+/// `lo` (exactly, [`Cycle::offset`]), so that the integrand of [`reduced_time`] carries no
+/// rounding of the absolute time (1e-7 s late in a long run) and its quadrature converges to
+/// 1e-12 at any t.
+struct Local {
+    /// T of the table at `lo`'s segment start, its rise over the segment \[K\], `lo` less the
+    /// segment start and the segment's width \[s\] (rise 0 and width 1 where T is constant).
+    start: f64,
+    rise: f64,
+    from: f64,
+    width: f64,
+    /// Each cycle with its [`Cycle::offset`] at `lo`.
+    cycles: Vec<(Cycle, f64)>,
+}
+
+impl Local {
+    /// T(lo + s) \[K\], the formula of [`TemperatureHistory::at`] (bit for bit at s = 0).
+    fn at(&self, s: f64) -> f64 {
+        let base = self.start + self.rise * (self.from + s) / self.width;
+        base + self
+            .cycles
+            .iter()
+            .map(|(c, x)| c.at_offset(x + s))
+            .sum::<f64>()
     }
 }
 
@@ -159,13 +205,42 @@ impl TemperatureHistory {
             return None;
         }
         let t = self.base(a);
-        let flat = self.base(b) == t
-            && self
-                .points
-                .iter()
-                .filter(|p| p.0 > a && p.0 < b)
-                .all(|p| p.1 == t);
+        let flat = self.base(b) == t && self.inside(a, b).iter().all(|p| p.1 == t);
         flat.then_some(t)
+    }
+
+    /// The table's points with a time strictly inside `(a, b)` (binary search: O(log n)).
+    fn inside(&self, a: f64, b: f64) -> &[(f64, f64)] {
+        let p = &self.points;
+        let from = p.partition_point(|q| q.0 <= a);
+        let to = p.partition_point(|q| q.0 < b).max(from);
+        &p[from..to]
+    }
+
+    /// [`Self::at`] from `lo` on, in the offset from `lo` ([`Local`]): for a piece `[lo, hi]`
+    /// with no table point strictly inside.
+    fn local(&self, lo: f64) -> Local {
+        let p = &self.points;
+        let k = p.partition_point(|&(ti, _)| ti <= lo);
+        let (start, rise, from, width) = if k == 0 || k == p.len() {
+            (p[k.saturating_sub(1)].1, 0.0, 0.0, 1.0)
+        } else {
+            let ((t0, y0), (t1, y1)) = (p[k - 1], p[k]);
+            (y0, y1 - y0, lo - t0, t1 - t0)
+        };
+        let cycles = self
+            .cycles
+            .iter()
+            .filter(|c| c.amplitude != 0.0)
+            .map(|c| (*c, c.offset(lo)))
+            .collect();
+        Local {
+            start,
+            rise,
+            from,
+            width,
+            cycles,
+        }
     }
 
     /// T(t) \[K\].
@@ -198,6 +273,12 @@ impl TemperatureHistory {
     /// The times of the table's points \[s\] (kinks of T(t)).
     pub fn knots(&self) -> impl Iterator<Item = f64> + '_ {
         self.points.iter().map(|p| p.0)
+    }
+
+    /// The times of the table's points strictly inside `(a, b)` \[s\], found by binary search
+    /// (O(log n) and the points returned, not a pass over the table).
+    pub fn knots_between(&self, a: f64, b: f64) -> impl Iterator<Item = f64> + '_ {
+        self.inside(a, b).iter().map(|p| p.0)
     }
 
     /// The coldest temperature over `[a, b]` \[K\] and its first time \[s\]: the table's
@@ -287,10 +368,11 @@ impl TemperatureHistory {
     }
 
     /// Points where T(t) has a kink or a fast change inside `(a, b)`: table knots, and each
-    /// cycle's period split into eight (so that every piece is smooth and short).
+    /// cycle's period split into eight (so that every piece is smooth and short); with `a`
+    /// and `b`, sorted. O(log n) in the table's length plus the points returned.
     fn breakpoints(&self, a: f64, b: f64) -> Vec<f64> {
         let mut v = vec![a, b];
-        v.extend(self.points.iter().map(|p| p.0).filter(|&t| t > a && t < b));
+        v.extend(self.knots_between(a, b));
         for c in &self.cycles {
             if c.amplitude == 0.0 {
                 continue;
@@ -315,7 +397,11 @@ impl TemperatureHistory {
 /// Exact for a constant temperature; otherwise the interval is split at the history's kinks
 /// and into eighths of each cycle, and each piece is integrated by globally adaptive
 /// Gauss–Legendre to 1e-12 relative, so a_T may change by decades within a step. Frozen
-/// stretches contribute nothing.
+/// stretches contribute nothing. Each piece is integrated in the offset from its start, its
+/// table segment and cycle phases taken there exactly (`Local`): the integrand carries no
+/// rounding of the absolute time, so the quadrature converges alike 130 years into a run as at
+/// its start, at the same cost. The pieces are found by binary search in the table: the cost
+/// does not grow with the table's length.
 pub fn reduced_time(history: &TemperatureHistory, shift: &Shift, a: f64, b: f64) -> f64 {
     if b <= a {
         return 0.0;
@@ -327,12 +413,23 @@ pub fn reduced_time(history: &TemperatureHistory, shift: &Shift, a: f64, b: f64)
     if let Some(t) = history.constant_on(a, b) {
         return (b - a) / shift.factor(t);
     }
-    let rate = |t: f64| shift.ln_rate(history.at(t)).exp();
     history
         .breakpoints(a, b)
         .windows(2)
-        .map(|w| adaptive(&rate, w[0], w[1]))
+        .map(|w| piece(history, shift, w[0], w[1]))
         .sum()
+}
+
+/// `∫_lo^hi dt / a_T(T(t))` \[s\] over a piece with no kink of T inside, integrated in the
+/// offset from `lo` ([`TemperatureHistory::local`]).
+fn piece(history: &TemperatureHistory, shift: &Shift, lo: f64, hi: f64) -> f64 {
+    piece_parts(history, shift, lo, hi).0
+}
+
+/// [`piece`] and the sub-intervals its quadrature used (its cost: 24 evaluations each).
+fn piece_parts(history: &TemperatureHistory, shift: &Shift, lo: f64, hi: f64) -> (f64, usize) {
+    let local = history.local(lo);
+    adaptive(&|s: f64| shift.ln_rate(local.at(s)).exp(), 0.0, hi - lo)
 }
 
 /// Reduced time of a two-sided Arrhenius law anchored at `reference` T_a \[K\]:
@@ -386,8 +483,7 @@ pub fn reduced_time_two_sided(
                 continue;
             }
             let shift = law(side(history.at(0.5 * (c[0] + c[1]))));
-            let rate = |t: f64| shift.ln_rate(history.at(t)).exp();
-            total += adaptive(&rate, c[0], c[1]);
+            total += piece(history, &shift, c[0], c[1]);
         }
     }
     total
@@ -431,8 +527,9 @@ fn crossings(history: &TemperatureHistory, level: f64, a: f64, b: f64) -> Vec<f6
 /// sub-interval with the largest error is bisected until the summed error is below 1e-12 of the
 /// summed integral, or 256 sub-intervals are in use (a bounded cost: near the WLF frozen limit
 /// the integrand falls by hundreds of decades within a step, where local tests can recurse
-/// without end).
-fn adaptive(f: &impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {
+/// without end). Returns the integral and the sub-intervals used (the cost: 24 evaluations
+/// each).
+fn adaptive(f: &impl Fn(f64) -> f64, a: f64, b: f64) -> (f64, usize) {
     let piece = |a: f64, b: f64| {
         let hi = gauss_integral(f, 16, a, b);
         (a, b, hi, (hi - gauss_integral(f, 8, a, b)).abs())
@@ -442,7 +539,7 @@ fn adaptive(f: &impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {
         let total: f64 = parts.iter().map(|p| p.2).sum();
         let error: f64 = parts.iter().map(|p| p.3).sum();
         if error <= 1e-12 * total.abs() || parts.len() >= 256 {
-            return total;
+            return (total, parts.len());
         }
         let worst = parts
             .iter()
@@ -459,6 +556,190 @@ fn adaptive(f: &impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use proptest::prelude::*;
+
+    /// 128 years: 32 common periods of a daily and a yearly cycle (4 Julian years are exactly
+    /// 1461 days), so a history of such cycles repeats after it \[s\].
+    const LATE: f64 = 128.0 * YEAR;
+    /// 1/1024 s: times on this grid below 2^42 s add exactly, so `a + LATE` is `a` moved by
+    /// exactly 128 years.
+    const GRID: f64 = 1.0 / 1024.0;
+
+    /// The EPDM WLF law of `materials/epdm-70.toml` (Tref 23 °C, C1 6.9437, C2 129.6 K).
+    const EPDM: Shift = Shift::Wlf {
+        reference: 296.15,
+        c1: 6.9437,
+        c2: 129.6,
+    };
+
+    /// The outdoor climate of `scenarios/oring-epdm-outdoor-cycles.toml`: 10 °C ± 8 K a day
+    /// (maximum at 15:00) ± 12 K a year (maximum on 21 July).
+    fn outdoor() -> TemperatureHistory {
+        TemperatureHistory::constant(283.15)
+            .with_cycle(Cycle {
+                amplitude: 8.0,
+                period: DAY,
+                phase: 9.0 * 3600.0,
+            })
+            .with_cycle(Cycle {
+                amplitude: 12.0,
+                period: YEAR,
+                phase: 110.25 * DAY,
+            })
+    }
+
+    /// A table of 100 001 rows 40 000 s apart (to 4e9 s, 127 years), zigzagging between
+    /// 0 °C and 40 °C: T repeats every 80 000 s along it.
+    fn zigzag() -> TemperatureHistory {
+        TemperatureHistory::table(
+            (0..=100_000u32)
+                .map(|k| (40_000.0 * f64::from(k), 273.15 + 40.0 * f64::from(k % 2)))
+                .collect(),
+        )
+    }
+
+    /// `x` in 2^-56 s as an integer: exact for every double that is a multiple of 2^-56 s
+    /// (all the times and phases of the test below).
+    fn fixed(x: f64) -> i128 {
+        let bits = x.to_bits();
+        let exponent = ((bits >> 52) & 0x7ff) as i32 - 1075;
+        let mantissa = i128::from(bits & ((1 << 52) - 1) | (1 << 52));
+        let scaled = mantissa << (exponent + 56);
+        if x < 0.0 { -scaled } else { scaled }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// A cycle's phase is `(t − t0) mod P` to the rounding of one period (< 1e-10 s of a
+        /// day) at any time up to 130 years, checked against the exact remainder in integer
+        /// arithmetic; `(t − t0)/P` in floating point would be off by up to ulp(t) = 4.8e-7 s.
+        #[test]
+        fn a_cycle_phase_is_exact_at_any_time(
+            t in 0.0..(130.0 * YEAR),
+            phase in 0.0..DAY,
+        ) {
+            // times and phases on a 2^-20 s grid: exactly representable in 2^-56 s units
+            let (t, phase) = ((t * 1048576.0).round() / 1048576.0, (phase * 1048576.0).round() / 1048576.0);
+            let cycle = Cycle { amplitude: 1.0, period: DAY, phase };
+            let period = fixed(DAY);
+            let exact = (fixed(t) - fixed(phase)).rem_euclid(period) as f64 / 2f64.powi(56);
+            let mut error = cycle.offset(t) - exact;
+            error -= DAY * (error / DAY).round();
+            prop_assert!(error.abs() < 1e-10, "t {t}: {} vs {exact}", cycle.offset(t));
+        }
+
+        /// Daily and yearly cycles repeat after 128 years, so must the reduced time of the
+        /// WLF law and the scission integral of a two-sided Arrhenius law whose anchor the
+        /// cycles cross: any interval (from 1 ms to 10 days) late in a 130-year run gives the
+        /// same integral as the same interval at the start, to 1e-12 relative — the quadrature
+        /// in the piece's own offset ([`Local`]) converges to its 1e-12 at any t.
+        #[test]
+        fn cycles_give_the_same_reduced_time_128_years_later(
+            a in 0.0..(4.0 * YEAR),
+            log_length in -3.0..6.0f64,
+        ) {
+            let h = outdoor();
+            let a = (a / GRID).round() * GRID;
+            let b = ((a + 10f64.powf(log_length)) / GRID).round() * GRID;
+            let early = reduced_time(&h, &EPDM, a, b);
+            let late = reduced_time(&h, &EPDM, a + LATE, b + LATE);
+            prop_assert!((late / early - 1.0).abs() <= 1e-12, "[{a}, {b}]: {early} vs {late}");
+            // anchored at the mean, 10 °C: every day crosses it
+            let k = |a: f64, b: f64| reduced_time_two_sided(&h, 283.15, 50e3, 105e3, a, b);
+            let (early, late) = (k(a, b), k(a + LATE, b + LATE));
+            prop_assert!((late / early - 1.0).abs() <= 1e-12, "[{a}, {b}]: {early} vs {late}");
+        }
+
+        /// The zigzag table repeats every 80 000 s: an interval near its end (~126 years in)
+        /// gives the reduced time and the two-sided scission (anchored at 20 °C, crossed on
+        /// every row) of the same interval near its start, to 1e-12 relative.
+        #[test]
+        fn a_long_table_gives_the_same_reduced_time_at_its_end(
+            a in 0.0..800_000.0f64,
+            log_length in -3.0..5.5f64,
+        ) {
+            let h = zigzag();
+            let shift = 49_000.0 * 80_000.0;
+            let a = (a / GRID).round() * GRID;
+            let b = ((a + 10f64.powf(log_length)) / GRID).round() * GRID;
+            let early = reduced_time(&h, &WLF, a, b);
+            let late = reduced_time(&h, &WLF, a + shift, b + shift);
+            prop_assert!((late / early - 1.0).abs() <= 1e-12, "[{a}, {b}]: {early} vs {late}");
+            let k = |a: f64, b: f64| reduced_time_two_sided(&h, 293.15, 50e3, 105e3, a, b);
+            let (early, late) = (k(a, b), k(a + shift, b + shift));
+            prop_assert!((late / early - 1.0).abs() <= 1e-12, "[{a}, {b}]: {early} vs {late}");
+        }
+
+        /// The binary-searched look-ups are the linear scans they replace: the table's points
+        /// strictly inside (a, b) and the constant pieces.
+        #[test]
+        fn look_ups_by_binary_search_are_the_scans(
+            steps in proptest::collection::vec((1u8..4, 0u8..3), 1..40),
+            a in -2.0..60.0f64,
+            length in 0.0..30.0f64,
+        ) {
+            let mut t = 0.0;
+            let points: Vec<(f64, f64)> = steps
+                .iter()
+                .map(|&(dt, y)| {
+                    t += f64::from(dt);
+                    (t, 280.0 + f64::from(y))
+                })
+                .collect();
+            let h = TemperatureHistory::table(points.clone());
+            let (a, b) = (a.round(), (a + length).round());
+            let scan: Vec<f64> = points.iter().map(|p| p.0).filter(|&k| k > a && k < b).collect();
+            prop_assert_eq!(h.knots_between(a, b).collect::<Vec<_>>(), scan);
+            let flat = points
+                .iter()
+                .filter(|p| p.0 > a && p.0 < b)
+                .all(|p| p.1 == h.base(a))
+                && h.base(b) == h.base(a);
+            prop_assert_eq!(h.constant_on(a, b), flat.then_some(h.base(a)));
+        }
+    }
+
+    /// Bounded work per step: an eighth of a day's cycle (an internal step of a cycled run) and
+    /// a row of the zigzag table cost the same quadrature 128 years in as at the start, at
+    /// most two sub-intervals (48 evaluations). (In absolute time the integrand carries the
+    /// rounding of t, ~1e-11 of the rate that late, and the 1e-12 quadrature split it up to its
+    /// cap of 256 sub-intervals: the run's cost grew faster than its length.)
+    #[test]
+    fn a_late_step_costs_what_an_early_one_does() {
+        let (cycles, table) = (outdoor(), zigzag());
+        for k in 0..8 {
+            let lo = f64::from(k) * DAY / 8.0 + 9.0 * 3600.0;
+            let parts = |lo: f64| piece_parts(&cycles, &EPDM, lo, lo + DAY / 8.0).1;
+            let (early, late) = (parts(lo), parts(lo + LATE));
+            assert_eq!(early, late, "eighth {k}");
+            assert!(late <= 2, "eighth {k}: {late}");
+            let lo = 40_000.0 * f64::from(k);
+            let parts = |lo: f64| piece_parts(&table, &WLF, lo, lo + 40_000.0).1;
+            let (early, late) = (parts(lo), parts(lo + 49_000.0 * 80_000.0));
+            assert_eq!(early, late, "row {k}");
+            assert!(late <= 2, "row {k}: {late}");
+        }
+    }
+
+    /// [`Local`] is [`TemperatureHistory::at`] in the offset from its start: the same bits at
+    /// the start, and along the piece the same temperature up to rounding.
+    #[test]
+    fn local_temperatures_are_the_history() {
+        for h in [outdoor(), zigzag(), outdoor().with_lead_in(296.15, 3600.0)] {
+            for lo in [0.0, 1800.0, 40_000.0, 1e6 + 0.5, 3.9e9] {
+                let local = h.local(lo);
+                assert_eq!(local.at(0.0), h.at(lo));
+                // within the piece from `lo`: no table point inside
+                for s in [1e-3, 1.0, 1000.0, 9999.0] {
+                    if h.knots_between(lo, lo + s).next().is_some() {
+                        continue;
+                    }
+                    assert!((local.at(s) - h.at(lo + s)).abs() < 1e-9, "{lo} + {s}");
+                }
+            }
+        }
+    }
 
     const WLF: Shift = Shift::Wlf {
         reference: 296.15,
@@ -481,7 +762,7 @@ mod tests {
         let closed = (1e9 - 4000.0) / WLF.factor(353.15);
         assert_eq!(reduced_time(&h, &WLF, 4000.0, 1e9), closed);
         let rate = |t: f64| WLF.ln_rate(h.at(t)).exp();
-        assert!((adaptive(&rate, 4000.0, 1e9) / closed - 1.0).abs() < 1e-11);
+        assert!((adaptive(&rate, 4000.0, 1e9).0 / closed - 1.0).abs() < 1e-11);
         let cycled = h.clone().with_cycle(Cycle {
             amplitude: 5.0,
             period: 86_400.0,

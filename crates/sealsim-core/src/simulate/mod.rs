@@ -109,6 +109,26 @@ const MECHANICS_MAX_DEPTH: u32 = 40;
 /// Upper bound of the pieces one internal step is split into for the thermal strain.
 const MAX_THERMAL_PIECES: f64 = 10_000.0;
 
+/// The integrals over the temperature history that one mechanical update takes: additive over
+/// adjacent intervals.
+#[derive(Debug, Clone, Copy)]
+struct Increment {
+    /// Δξ = ∫ dt / a_T \[s\].
+    reduced_time: f64,
+    /// ΔK = ∫ k_s dt (0 without ageing).
+    scission: f64,
+}
+
+impl Increment {
+    /// The increment over `[a, c]` from those over `[a, b]` (self) and `[b, c]`.
+    fn then(self, next: Increment) -> Increment {
+        Increment {
+            reduced_time: self.reduced_time + next.reduced_time,
+            scission: self.scission + next.scission,
+        }
+    }
+}
+
 /// Everything evaluated at one instant from the mechanical state.
 #[derive(Debug, Clone, Copy)]
 struct Snapshot {
@@ -1047,12 +1067,7 @@ impl<'a> Simulator<'a> {
     /// every change of the pressure's slope is a step).
     fn substeps(&self, from: f64, to: f64) -> Vec<f64> {
         let h = self.problem.environment.shortest_period().map(|p| p / 8.0);
-        let mut v: Vec<f64> = self
-            .problem
-            .environment
-            .knots()
-            .filter(|&k| k > from && k < to)
-            .collect();
+        let mut v: Vec<f64> = self.problem.environment.knots_between(from, to).collect();
         if let Some(pressure) = &self.problem.pressure {
             v.extend(pressure.knots(from, to));
         }
@@ -1137,34 +1152,38 @@ impl<'a> Simulator<'a> {
             return self.update_mechanics(state, t);
         }
         let floor = 1e-9 * p.material.prony.instantaneous() * self.load0.abs();
-        self.advance_mechanics_controlled(state, t, floor, 0, None);
+        self.advance_mechanics_controlled(state, t, floor, 0, (None, None));
     }
 
     /// [`Self::advance_mechanics`]'s error control on one piece `state.time → t`. `whole`: the
     /// one-step update `state → t` if already made (a split piece's left half is its parent's
-    /// first half step: the same bits, not recomputed).
+    /// first half step: the same bits, not recomputed); `span`: the piece's [`Increment`] if
+    /// already integrated (a split piece's halves were). The one-step update takes the sum of
+    /// the halves' increments (ξ and K are additive): each stretch of the history is integrated
+    /// once, not three times.
     fn advance_mechanics_controlled(
         &self,
         state: &mut Mechanics,
         t: f64,
         floor: f64,
         depth: u32,
-        whole: Option<Mechanics>,
+        (whole, span): (Option<Mechanics>, Option<Increment>),
     ) {
         let prony = &self.problem.material.prony;
         let a = state.time;
         let m = 0.5 * (a + t);
+        let (left, right) = (self.increment(a, m), self.increment(m, t));
         let one = whole.unwrap_or_else(|| {
             let mut one = state.clone();
-            self.update_mechanics(&mut one, t);
+            self.apply_mechanics(&mut one, t, span.unwrap_or(left.then(right)));
             one.time = t;
             one
         });
         let mut half = state.clone();
-        self.update_mechanics(&mut half, m);
+        self.apply_mechanics(&mut half, m, left);
         half.time = m;
         let mut two = half.clone();
-        self.update_mechanics(&mut two, t);
+        self.apply_mechanics(&mut two, t, right);
         two.time = t;
         let (s1, s2) = (one.relaxation.stress(prony), two.relaxation.stress(prony));
         if depth >= MECHANICS_MAX_DEPTH
@@ -1177,9 +1196,9 @@ impl<'a> Simulator<'a> {
             return;
         }
         let time = state.time;
-        self.advance_mechanics_controlled(state, m, floor, depth + 1, Some(half));
+        self.advance_mechanics_controlled(state, m, floor, depth + 1, (Some(half), Some(left)));
         state.time = m;
-        self.advance_mechanics_controlled(state, t, floor, depth + 1, None);
+        self.advance_mechanics_controlled(state, t, floor, depth + 1, (None, Some(right)));
         state.time = time;
     }
 
@@ -1187,27 +1206,40 @@ impl<'a> Simulator<'a> {
     /// linear in ξ over the step, and at constant strain for the chemical ageing); leaves
     /// `state.time`.
     fn update_mechanics(&self, state: &mut Mechanics, t: f64) {
+        let step = self.increment(state.time, t);
+        self.apply_mechanics(state, t, step);
+    }
+
+    /// The reduced time and the scission over `[a, b]` (the two integrals over the temperature
+    /// history a mechanical update needs).
+    fn increment(&self, a: f64, b: f64) -> Increment {
+        let p = self.problem;
+        Increment {
+            reduced_time: reduced_time(&p.environment, &p.material.shift, a, b),
+            scission: p
+                .ageing
+                .as_ref()
+                .map_or(0.0, |ag| ag.scission(&p.environment, a, b)),
+        }
+    }
+
+    /// [`Self::update_mechanics`] with the step's integrals `step` over `[state.time, t]`.
+    fn apply_mechanics(&self, state: &mut Mechanics, t: f64, step: Increment) {
         let p = self.problem;
         let prony = &p.material.prony;
-        let (a, b) = (state.time, t);
-        let d_xi = reduced_time(&p.environment, &p.material.shift, a, b);
+        let d_xi = step.reduced_time;
+        let temperature = p.environment.at(t);
         let d_load = match p.loading {
             Loading::Displacement => {
                 p.geometry
-                    .load_variable(p.thermal_strain.as_ref(), p.environment.at(b))
+                    .load_variable(p.thermal_strain.as_ref(), temperature)
                     - state.relaxation.strain()
             }
             Loading::Force => 0.0,
         };
-        let chem = match &p.ageing {
-            Some(ag) => ChemicalStep {
-                scission: ag.scission(&p.environment, a, b),
-                crosslinking: ag.crosslinking,
-            },
-            None => ChemicalStep {
-                scission: 0.0,
-                crosslinking: 0.0,
-            },
+        let chem = ChemicalStep {
+            scission: step.scission,
+            crosslinking: p.ageing.as_ref().map_or(0.0, |ag| ag.crosslinking),
         };
         let network_before = state.relaxation.network();
         state.relaxation.step_aged(prony, d_xi, d_load, chem);
@@ -1215,7 +1247,7 @@ impl<'a> Simulator<'a> {
         if p.loading == Loading::Displacement {
             let d_strain = p
                 .geometry
-                .deformation(p.thermal_strain.as_ref(), p.environment.at(b))
+                .deformation(p.thermal_strain.as_ref(), temperature)
                 - state.networks.strain();
             state.networks.step_aged(prony, d_xi, d_strain, chem);
         }
