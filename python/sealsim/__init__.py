@@ -15,14 +15,14 @@ importable, else dicts of numpy arrays, with the column names of the command lin
 (24302880.0, 'retained_force')
 >>> result.history["leak_rate_m3_per_s"]                 # doctest: +SKIP
 
-Every call releases the GIL. Studies, comparisons and numerical-level calls run on a worker
-thread: Ctrl-C (``KeyboardInterrupt``) stops the wait at once, and ``progress=`` reports them.
-An analytic run or leak table (milliseconds) runs on the calling thread. Invalid
-input raises :class:`ScenarioError` (a ``ValueError``) with the command line's
-``file:line: key: message``, an argument of the wrong type ``TypeError``, a number out of range
-``ValueError``, a missing file ``FileNotFoundError``; a bug in sealsim raises
-:class:`InternalError` (a ``RuntimeError``), never a crash (python/tests/test_fuzz.py holds the
-public API to these).
+Every call does its work on a worker thread with the GIL released: Ctrl-C
+(``KeyboardInterrupt``) stops the wait within 50 ms, whatever the call (the abandoned
+computation finishes in the background and its result is dropped), and ``progress=`` reports
+studies, comparisons and the numerical level. Invalid input raises :class:`ScenarioError` (a
+``ValueError``) with the command line's ``file:line: key: message``, an argument of the wrong
+type ``TypeError``, a number out of range ``ValueError``, a missing file ``FileNotFoundError``;
+a bug in sealsim (a panic) raises :class:`InternalError` (a ``RuntimeError``), never a crash
+nor pyo3's ``PanicException`` (python/tests/test_fuzz.py holds the public API to these).
 
 The warnings the command line prints on stderr are issued with :func:`warnings.warn`: a
 validity finding of a run or leak table as a :class:`ValidityWarning`, a scenario's input
@@ -755,6 +755,8 @@ def contact(
             )
         if not numpy.issubdtype(array.dtype, numpy.number) or numpy.iscomplexobj(array):
             raise ScenarioError(f"contact: height_map must hold real numbers, got {array.dtype}")
+        # the size refused before the heights are copied (a map above 8192² pixels, D6)
+        _sealsim._height_map_shape(array.shape)
         array = numpy.ascontiguousarray(array, dtype=numpy.float64)
         shape = array.shape
         heights = array.tobytes()
@@ -794,10 +796,19 @@ def contact(
     return _table(raw["table"])
 
 
+def _is_panic(error: BaseException) -> bool:
+    """Whether ``error`` is pyo3's ``PanicException`` (a Rust panic that reached Python outside
+    the extension's own ``catch_unwind``: a ``BaseException`` that ``except Exception`` misses)."""
+    kind = type(error)
+    return kind.__name__ == "PanicException" and kind.__module__ == "pyo3_runtime"
+
+
 def _documented_errors(name: str, fn: Any) -> Any:
     """``fn`` raising only the documented exception types: an integer out of a native type's
     range (``threads=-1``, ``10**400`` as a float) raises ``ValueError`` with Python's words,
-    not ``OverflowError`` (an ``ArithmeticError`` that ``except ValueError`` misses)."""
+    not ``OverflowError`` (an ``ArithmeticError`` that ``except ValueError`` misses); a Rust
+    panic the extension did not catch itself raises :class:`InternalError`, not pyo3's
+    ``PanicException``."""
     import functools
 
     @functools.wraps(fn)
@@ -806,6 +817,10 @@ def _documented_errors(name: str, fn: Any) -> Any:
             return fn(*args, **kwargs)
         except OverflowError as e:
             raise ValueError(f"{name}: a number out of range: {e}") from e
+        except BaseException as e:  # noqa: BLE001 — only a panic is replaced, the rest re-raised
+            if _is_panic(e):
+                raise InternalError(f"{name}: sealsim panicked: {e}") from e
+            raise
 
     return wrapper
 
@@ -814,6 +829,11 @@ for _name in ("compare", "study", "gland", "materials", "contact", "fit_prony", 
     globals()[_name] = _documented_errors(_name, globals()[_name])
 for _name in ("advise", "run", "leak", "replace"):
     setattr(Scenario, _name, _documented_errors(f"Scenario.{_name}", getattr(Scenario, _name)))
+for _cls, _name in ((RunResult, "plot"), (FitResult, "relaxation"), (FitResult, "write"),
+                    (GlandDesign, "scenario")):
+    _full = f"{_cls.__name__}.{_name}"
+    setattr(_cls, _name, _documented_errors(_full, getattr(_cls, _name)))
+del _cls, _full
 for _name in ("from_file", "from_toml"):
     setattr(
         Scenario,

@@ -85,8 +85,13 @@ class FitResult:
 
     def relaxation(self, t: Any) -> Any:
         """E(t) = E∞ + Σ E_i exp(−t/τ_i) [Pa] at times ``t`` [s] (at the data's temperature,
-        or in reduced time for a master curve)."""
+        or in reduced time for a master curve). A negative or NaN time raises ``ValueError``
+        (the relaxation starts at the load; exp(−t/τ) of t = −1e308 s was infinite)."""
         t = numpy.asarray(t, dtype=float)
+        bad = numpy.isnan(t) | (t < 0)
+        if numpy.any(bad):
+            first = t[bad].flat[0]
+            raise ValueError(f"relaxation: times must be at least 0 s, got {first}")
         return self.E_inf + (self._e * numpy.exp(-t[..., None] / self._tau)).sum(axis=-1)
 
     def write(self, path: PathLike) -> None:

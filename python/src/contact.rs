@@ -12,7 +12,9 @@
 //!   bytes (bit for bit) or on the scenario's random realisations; with the fields (heights, gap
 //!   and contact pressure of every realisation) as `f64` bytes for numpy.
 
-use crate::{PyScenario, ScenarioError, blocking, fidelity, float_column, internal, pressure};
+use crate::{
+    PyScenario, ScenarioError, blocking, fidelity, float_column, guarded, internal, pressure,
+};
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyList, PyString};
 use sealsim::contact::{ContactSettings, Elastic, Junction};
@@ -21,8 +23,10 @@ use sealsim::numerical::bem::{self, BemError, Boundary, Load};
 use sealsim::numerical::reference::{self, NumericalError, NumericalSettings, Surfaces};
 use sealsim::numerical::{HeightMap, Topography, psd};
 use sealsim::plausibility::HeightStatistics;
+use sealsim::scenario::Scenario;
 use sealsim::surface::Spectrum;
 use sealsim::units::{self, Dimension};
+use std::sync::Arc;
 
 /// Smallest side of a height map, as a scenario's height map file (`scenario::height_map`).
 const MIN_SIDE: usize = 8;
@@ -36,9 +40,31 @@ fn bad(message: String) -> PyErr {
     ScenarioError::new_err(format!("contact: {message}"))
 }
 
+/// Checks a height map's shape `(ny, nx)` before its heights are copied anywhere: each side at
+/// least [`MIN_SIDE`], at most [`reference::MAX_GRID_PIXELS`] in all (8192², D6: larger
+/// aborted on its allocation). The Python side calls it before it makes the array contiguous.
+#[pyfunction]
+fn _height_map_shape(shape: (usize, usize)) -> PyResult<()> {
+    let (ny, nx) = shape;
+    if nx < MIN_SIDE || ny < MIN_SIDE {
+        return Err(bad(format!(
+            "height_map is {ny} × {nx}: each side needs at least {MIN_SIDE} samples"
+        )));
+    }
+    let max = reference::MAX_GRID_PIXELS;
+    if nx.saturating_mul(ny) > max {
+        return Err(bad(format!(
+            "height_map is {ny} × {nx}: the contact solver takes at most {max} pixels \
+             (8192 × 8192, ≈ 4.8 GB while it solves); crop or resample the map"
+        )));
+    }
+    Ok(())
+}
+
 /// A 2-D grid of heights from numpy: `heights` the native-endian `f64` bytes of a C-contiguous
-/// `ny × nx` array (row `iy`, column `ix` along the flow), `pixel` the spacing (m). Every height
-/// must be finite, each side at least [`MIN_SIDE`].
+/// `ny × nx` array (row `iy`, column `ix` along the flow) in `unit` (m per unit), `pixel` the
+/// spacing (m). The shape passed [`_height_map_shape`]; every height must be finite and
+/// plausible (the scenario reader's bound).
 fn topography(
     heights: &[u8],
     shape: (usize, usize),
@@ -46,25 +72,6 @@ fn topography(
     unit: f64,
 ) -> PyResult<Topography> {
     let (ny, nx) = shape;
-    if nx < MIN_SIDE || ny < MIN_SIDE {
-        return Err(bad(format!(
-            "height_map is {ny} × {nx}: each side needs at least {MIN_SIDE} samples"
-        )));
-    }
-    let max = sealsim::numerical::reference::MAX_GRID_PIXELS;
-    if nx.saturating_mul(ny) > max {
-        return Err(bad(format!(
-            "height_map is {ny} × {nx}: the contact solver takes at most {max} pixels \
-             (8192 × 8192, ≈ 4.8 GB while it solves); crop or resample the map"
-        )));
-    }
-    if heights.len() != nx * ny * 8 {
-        return Err(bad(format!(
-            "height_map has {} bytes, not the {} of {ny} × {nx} float64 values",
-            heights.len(),
-            nx * ny * 8
-        )));
-    }
     let pixel = pixel.ok_or_else(|| {
         bad("height_map needs pixel_size, the spacing of its samples (m)".to_owned())
     })?;
@@ -99,6 +106,22 @@ fn topography(
     })
 }
 
+/// The heights' bytes checked against their `shape` ([`_height_map_shape`] and the byte
+/// count) and copied, so that the worker reads them without the GIL.
+fn map_bytes(heights: &[u8], shape: (usize, usize)) -> PyResult<Vec<u8>> {
+    _height_map_shape(shape)?;
+    let (ny, nx) = shape;
+    // nx · ny ≤ MAX_GRID_PIXELS: no overflow
+    if heights.len() != nx * ny * 8 {
+        return Err(bad(format!(
+            "height_map has {} bytes, not the {} of {ny} × {nx} float64 values",
+            heights.len(),
+            nx * ny * 8
+        )));
+    }
+    Ok(heights.to_vec())
+}
+
 /// What the contact is solved on.
 struct Problem {
     spectrum: Option<Spectrum>,
@@ -114,7 +137,7 @@ struct Problem {
 /// The surface, the rubber and the level from the arguments (see `sealsim.contact`).
 #[allow(clippy::too_many_arguments)]
 fn problem(
-    scenario: Option<&PyScenario>,
+    scenario: Option<&Scenario>,
     map: Option<Topography>,
     youngs_modulus: Option<f64>,
     poisson_ratio: f64,
@@ -131,7 +154,7 @@ fn problem(
         // a height map is the numerical level's surface; a scenario at the numerical level
         // runs it, as the CLI does; otherwise Persson's theory by quadrature
         None if map.is_some() => None,
-        None if scenario.is_some_and(|s| s.inner.life.fidelity == Fidelity::Numerical) => None,
+        None if scenario.is_some_and(|s| s.life.fidelity == Fidelity::Numerical) => None,
         None => Some(Fidelity::Exact),
     };
     if let Some(eta) = viscosity
@@ -154,20 +177,20 @@ fn problem(
     let map = map.map(|t| t.square_crop().0).or_else(|| {
         level
             .is_none()
-            .then(|| scenario.and_then(|s| s.inner.height_map.clone()))
+            .then(|| scenario.and_then(|s| s.height_map.clone()))
             .flatten()
     });
     let need =
         |name: &str, v: Option<f64>| v.ok_or_else(|| bad(format!("give {name} (or a scenario)")));
     let (spectrum, settings, e_star, eta, numerical) = match scenario {
         Some(s) => {
-            let pb = &s.inner.problem;
+            let pb = &s.problem;
             (
                 estimated.or_else(|| map.is_none().then(|| pb.spectrum.clone())),
                 pb.contact,
                 pb.material.effective_modulus(),
                 viscosity.unwrap_or(pb.fluid.viscosity),
-                sealsim::workflow::numerical_settings(&s.inner),
+                sealsim::workflow::numerical_settings(s),
             )
         }
         None => {
@@ -599,130 +622,245 @@ fn _contact<'py>(
     tolerance: Option<f64>,
     boundary: Option<&str>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    // load control (nominal pressures) or displacement control (approaches), exactly one
-    let (pressures, approaches) = match (pressures, displacement) {
-        (Some(_), Some(_)) => {
-            return Err(bad(
-                "give either pressures (load control) or displacement (the rigid-body \
-                 approach), not both"
-                    .to_owned(),
-            ));
+    // the arguments read here (a panic in it an InternalError), the heights copied out of
+    // their bytes object; everything else on the worker (a map's spectrum estimate, its
+    // checks and the solves take seconds on a large map)
+    let request = guarded(|| {
+        let (pressures, approaches) = loads(pressures, displacement)?;
+        let tolerance = self::tolerance(tolerance)?;
+        let boundary = self::boundary(boundary)?;
+        let pixel_size = pixel(pixel_size.as_ref())?;
+        let unit = match height_unit {
+            Some(text) => crate::surface::height_unit(text)?,
+            None => 1.0,
+        };
+        let heights = match (height_map, shape) {
+            (Some(h), Some(shape)) => Some((map_bytes(h.as_bytes(), shape)?, shape)),
+            (Some(_), None) => return Err(bad("height_map needs its shape".to_owned())),
+            (None, _) => None,
+        };
+        Ok(Request {
+            pressures,
+            approaches,
+            tolerance,
+            boundary,
+            pixel_size,
+            unit,
+            heights,
+            // raised on the worker after the heights' own checks, as always
+            level: self::fidelity(fidelity),
+            scenario: scenario.map(|s| Arc::clone(&s.inner)),
+            youngs_modulus,
+            poisson_ratio,
+            spectrum: [rms_roughness, hurst_exponent, q0, q1],
+            viscosity,
+        })
+    })?;
+    match blocking(py, move || solve(request))?? {
+        Outcome::Analytic {
+            level,
+            rows,
+            warning,
+        } => analytic_result(py, level, &rows, warning),
+        Outcome::Numerical {
+            points,
+            pressures,
+            e_star,
+            viscosity,
+            boundary,
+            tolerance,
+            warning,
+        } => {
+            let out = numerical_result(
+                py,
+                &points,
+                pressures.as_deref(),
+                e_star,
+                viscosity,
+                boundary,
+                tolerance,
+            )?;
+            out.set_item("height_warning", warning)?;
+            Ok(out)
         }
-        (None, None) => {
-            return Err(bad(
-                "give pressures (nominal pressures, Pa) or displacement (rigid-body \
-                 approaches, m)"
-                    .to_owned(),
-            ));
-        }
-        (Some(p), None) => (
+    }
+}
+
+/// Load control (nominal pressures, Pa) or displacement control (approaches, m): exactly one.
+type Loads = (Option<Vec<f64>>, Option<Vec<f64>>);
+
+/// The loads of `_contact` from its `pressures` and `displacement`.
+fn loads(
+    pressures: Option<Vec<Bound<'_, PyAny>>>,
+    displacement: Option<Vec<Bound<'_, PyAny>>>,
+) -> PyResult<Loads> {
+    match (pressures, displacement) {
+        (Some(_), Some(_)) => Err(bad(
+            "give either pressures (load control) or displacement (the rigid-body approach), \
+             not both"
+                .to_owned(),
+        )),
+        (None, None) => Err(bad(
+            "give pressures (nominal pressures, Pa) or displacement (rigid-body approaches, m)"
+                .to_owned(),
+        )),
+        (Some(p), None) => Ok((
             Some(p.iter().map(pressure).collect::<PyResult<Vec<f64>>>()?),
             None,
-        ),
-        (None, Some(d)) => (
+        )),
+        (None, Some(d)) => Ok((
             None,
             Some(d.iter().map(approach).collect::<PyResult<Vec<f64>>>()?),
-        ),
-    };
-    let tolerance = self::tolerance(tolerance)?;
-    let boundary = self::boundary(boundary)?;
-    // "0.5 um" by the scenario files' parser, or a float in m
-    let pixel_size = match &pixel_size {
+        )),
+    }
+}
+
+/// The pixel size: "0.5 um" by the scenario files' parser, or a float in m.
+fn pixel(value: Option<&Bound<'_, PyAny>>) -> PyResult<Option<f64>> {
+    match value {
         Some(v) if v.is_instance_of::<PyString>() => {
             let text: String = v.extract()?;
-            Some(
+            Ok(Some(
                 units::parse_quantity(&text, Dimension::LENGTH)
                     .map_err(|e| bad(format!("pixel_size: {e}")))?,
-            )
+            ))
         }
-        Some(v) => Some(v.extract::<f64>()?),
-        None => None,
-    };
-    let unit = match height_unit {
-        Some(text) => crate::surface::height_unit(text)?,
-        None => 1.0,
-    };
-    let map = match (height_map, shape) {
-        (Some(h), Some(shape)) => Some(topography(h.as_bytes(), shape, pixel_size, unit)?),
-        (Some(_), None) => return Err(bad("height_map needs its shape".to_owned())),
-        (None, _) => None,
-    };
-    // heights in µm passed as m still make a spectrum: the likely slip (docs/model.md §2.4)
-    let height_warning = map.as_ref().and_then(|m| {
-        HeightStatistics::of_map(m.nx, m.ny, m.pixel, &m.heights)
-            .warning(Some(unit))
-            .map(|(text, likely)| match likely {
-                Some(likely) => format!(
-                    "contact: height_map: {text}; pass height_unit=\"{likely}\" \
-                     [docs/model.md §2.4]"
-                ),
-                None => format!("contact: height_map: {text} [docs/model.md §2.4]"),
-            })
-    });
-    let level = self::fidelity(fidelity)?;
+        Some(v) => Ok(Some(v.extract::<f64>()?)),
+        None => Ok(None),
+    }
+}
+
+/// `_contact`'s arguments as plain values, for the worker.
+struct Request {
+    pressures: Option<Vec<f64>>,
+    approaches: Option<Vec<f64>>,
+    tolerance: Option<f64>,
+    boundary: Boundary,
+    pixel_size: Option<f64>,
+    /// m per unit of the heights.
+    unit: f64,
+    /// The heights' native f64 bytes and their shape (ny, nx).
+    heights: Option<(Vec<u8>, (usize, usize))>,
+    /// The level asked for (an unknown name: the error, raised in its turn).
+    level: PyResult<Option<Fidelity>>,
+    scenario: Option<Arc<Scenario>>,
+    youngs_modulus: Option<f64>,
+    poisson_ratio: f64,
+    /// rms_roughness, hurst_exponent, q0, q1.
+    spectrum: [Option<f64>; 4],
+    viscosity: Option<f64>,
+}
+
+/// What the worker solved, for the calling thread to turn into Python objects.
+enum Outcome {
+    Analytic {
+        level: Fidelity,
+        rows: Vec<[f64; 7]>,
+        warning: Option<String>,
+    },
+    Numerical {
+        points: Vec<NumericalPoint>,
+        pressures: Option<Vec<f64>>,
+        e_star: f64,
+        viscosity: f64,
+        boundary: Boundary,
+        tolerance: f64,
+        warning: Option<String>,
+    },
+}
+
+/// The contact problem of `r` solved (on the worker): the height map read and checked, the
+/// problem set up, then Persson's theory or the boundary elements.
+fn solve(r: Request) -> PyResult<Outcome> {
+    let map = r
+        .heights
+        .map(|(bytes, shape)| topography(&bytes, shape, r.pixel_size, r.unit))
+        .transpose()?;
+    let warning = map.as_ref().and_then(|m| height_warning(m, r.unit));
+    let [rms_roughness, hurst_exponent, q0, q1] = r.spectrum;
     let pb = problem(
-        scenario,
+        r.scenario.as_deref(),
         map,
-        youngs_modulus,
-        poisson_ratio,
+        r.youngs_modulus,
+        r.poisson_ratio,
         rms_roughness,
         hurst_exponent,
         q0,
         q1,
-        level,
-        viscosity,
+        r.level?,
+        r.viscosity,
     )?;
+    match pb.level {
+        Some(level) => {
+            // the boundary elements' keywords mean nothing to Persson's theory
+            let numerical_only = [
+                r.approaches.is_some().then_some("displacement"),
+                (r.boundary == Boundary::Free).then_some("boundary=\"free\""),
+                r.tolerance.is_some().then_some("tolerance"),
+            ];
+            let named: Vec<&str> = numerical_only.into_iter().flatten().collect();
+            if !named.is_empty() {
+                return Err(bad(format!(
+                    "{} need(s) the numerical level (boundary elements on a height map), not \
+                     {}: pass a height_map or fidelity=\"numerical\"",
+                    named.join(", "),
+                    level.name()
+                )));
+            }
+            let spectrum = pb
+                .spectrum
+                .ok_or_else(|| internal("no spectrum for an analytic level"))?;
+            let pressures = r
+                .pressures
+                .ok_or_else(|| internal("no pressures at an analytic level"))?;
+            let rows = analytic_rows(spectrum, pb.settings, level, pb.e_star, &pressures);
+            Ok(Outcome::Analytic {
+                level,
+                rows,
+                warning,
+            })
+        }
+        None => numerical(
+            pb,
+            r.pressures,
+            r.approaches,
+            r.boundary,
+            r.tolerance,
+            warning,
+        ),
+    }
+}
+
+/// A height map's unit-slip warning (heights in µm passed as m still make a spectrum: the
+/// likely slip, docs/model.md §2.4), or `None`.
+fn height_warning(m: &Topography, unit: f64) -> Option<String> {
+    HeightStatistics::of_map(m.nx, m.ny, m.pixel, &m.heights)
+        .warning(Some(unit))
+        .map(|(text, likely)| match likely {
+            Some(likely) => format!(
+                "contact: height_map: {text}; pass height_unit=\"{likely}\" [docs/model.md §2.4]"
+            ),
+            None => format!("contact: height_map: {text} [docs/model.md §2.4]"),
+        })
+}
+
+/// The numerical level of [`solve`] at each load.
+fn numerical(
+    pb: Problem,
+    pressures: Option<Vec<f64>>,
+    approaches: Option<Vec<f64>>,
+    boundary: Boundary,
+    tolerance: Option<f64>,
+    warning: Option<String>,
+) -> PyResult<Outcome> {
     let Problem {
         spectrum,
-        settings,
         e_star,
         viscosity,
         map,
         mut numerical,
-        level,
+        ..
     } = pb;
-    if let Some(level) = level {
-        // the boundary elements' keywords mean nothing to Persson's theory
-        let numerical_only = [
-            approaches.is_some().then_some("displacement"),
-            (boundary == Boundary::Free).then_some("boundary=\"free\""),
-            tolerance.is_some().then_some("tolerance"),
-        ];
-        let named: Vec<&str> = numerical_only.into_iter().flatten().collect();
-        if !named.is_empty() {
-            return Err(bad(format!(
-                "{} need(s) the numerical level (boundary elements on a height map), not {}: \
-                 pass a height_map or fidelity=\"numerical\"",
-                named.join(", "),
-                level.name()
-            )));
-        }
-        let spectrum = spectrum.ok_or_else(|| internal("no spectrum for an analytic level"))?;
-        let pressures = pressures.ok_or_else(|| internal("no pressures at an analytic level"))?;
-        let rows = blocking(py, move || {
-            analytic_rows(spectrum, settings, level, e_star, &pressures)
-        })?;
-        let table = PyDict::new(py);
-        for (k, name) in [
-            "nominal_pressure_Pa",
-            "reduced_pressure",
-            "area_fraction",
-            "mean_gap_m",
-            "zeta_c",
-            "u_c_m",
-            "lambda_c_m",
-        ]
-        .into_iter()
-        .enumerate()
-        {
-            table.set_item(name, rows.iter().map(|r| r[k]).collect::<Vec<f64>>())?;
-        }
-        let out = PyDict::new(py);
-        out.set_item("level", level.name())?;
-        out.set_item("table", table)?;
-        out.set_item("height_warning", height_warning)?;
-        return Ok(out);
-    }
     if let Some(t) = tolerance {
         numerical.bem.tolerance = t;
     }
@@ -732,36 +870,60 @@ fn _contact<'py>(
         (None, Some(d)) => d.iter().map(|&d| Load::Approach(d)).collect(),
         (None, None) => return Err(internal("no load")),
     };
-    let solve_settings = numerical.clone();
-    let points = blocking(py, move || {
-        let surfaces = match (&map, &spectrum) {
-            (Some(m), _) => Surfaces::Map(m),
-            (None, Some(sp)) => Surfaces::Synthetic(sp),
-            (None, None) => {
-                return Err(("no surface".to_owned(), NumericalError::NoRealisations));
-            }
-        };
-        numerical_points(surfaces, &loads, boundary, &solve_settings)
-    })?
-    .map_err(|(text, e)| match e {
-        // an approach at or beyond a periodic cell's full contact is the caller's
-        NumericalError::Contact(BemError::InvalidApproach { .. }) => bad(text),
-        _ => internal(text),
-    })?;
-    let out = numerical_result(
-        py,
-        &points,
-        pressures.as_deref(),
+    let surfaces = match (&map, &spectrum) {
+        (Some(m), _) => Surfaces::Map(m),
+        (None, Some(sp)) => Surfaces::Synthetic(sp),
+        (None, None) => return Err(internal("numerical level: no surface")),
+    };
+    let points =
+        numerical_points(surfaces, &loads, boundary, &numerical).map_err(|(text, e)| match e {
+            // an approach at or beyond a periodic cell's full contact is the caller's
+            NumericalError::Contact(BemError::InvalidApproach { .. }) => bad(text),
+            _ => internal(text),
+        })?;
+    Ok(Outcome::Numerical {
+        points,
+        pressures,
         e_star,
         viscosity,
         boundary,
-        numerical.bem.tolerance,
-    )?;
-    out.set_item("height_warning", height_warning)?;
+        tolerance: numerical.bem.tolerance,
+        warning,
+    })
+}
+
+/// The analytic level's result dict: `level`, `table` (one row per pressure) and
+/// `height_warning`.
+fn analytic_result<'py>(
+    py: Python<'py>,
+    level: Fidelity,
+    rows: &[[f64; 7]],
+    warning: Option<String>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let table = PyDict::new(py);
+    for (k, name) in [
+        "nominal_pressure_Pa",
+        "reduced_pressure",
+        "area_fraction",
+        "mean_gap_m",
+        "zeta_c",
+        "u_c_m",
+        "lambda_c_m",
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        table.set_item(name, rows.iter().map(|r| r[k]).collect::<Vec<f64>>())?;
+    }
+    let out = PyDict::new(py);
+    out.set_item("level", level.name())?;
+    out.set_item("table", table)?;
+    out.set_item("height_warning", warning)?;
     Ok(out)
 }
 
-/// Adds `_contact` to the module.
+/// Adds `_contact` and its shape check to the module.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add_function(wrap_pyfunction!(_contact, m)?)
+    m.add_function(wrap_pyfunction!(_contact, m)?)?;
+    m.add_function(wrap_pyfunction!(_height_map_shape, m)?)
 }

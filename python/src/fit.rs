@@ -2,7 +2,7 @@
 //! on a data file, or on CSV text the Python side wrote from columns, so that the parser and
 //! its messages are the command line's. Options are SI floats or strings with units.
 
-use crate::{ScenarioError, blocking, internal};
+use crate::{ScenarioError, blocking, guarded, internal};
 use pyo3::exceptions::{PyFileNotFoundError, PyOSError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
@@ -82,6 +82,29 @@ fn choice<T: Copy>(value: &str, what: &str, choices: &[(&str, T)]) -> PyResult<T
         })
 }
 
+/// Where `fit_prony`'s data are: CSV text, or a file to read.
+enum Data {
+    Text(String),
+    File(PathBuf),
+}
+
+impl Data {
+    /// The CSV text: a file that cannot be read is `FileNotFoundError` (or `OSError`).
+    fn read(self) -> PyResult<String> {
+        match self {
+            Data::Text(text) => Ok(text),
+            Data::File(path) => std::fs::read_to_string(&path).map_err(|e| {
+                let message = format!("{}: cannot read the data file: {e}", path.display());
+                if e.kind() == std::io::ErrorKind::NotFound {
+                    PyFileNotFoundError::new_err(message)
+                } else {
+                    PyOSError::new_err(message)
+                }
+            }),
+        }
+    }
+}
+
 /// `sealsim fit-prony`: a dict with `material_toml` (the `-o` file's text), `summary` (the
 /// standard-error lines), `name`, `source`, `tau_s` and `E_i_Pa` (the terms), `E_inf_Pa`,
 /// `E0_Pa`, `points`, `rms_relative_residual`, `max_relative_residual`, `window_s`.
@@ -125,95 +148,92 @@ fn _fit_prony<'py>(
     if name.as_deref() == Some("") {
         return Err(PyValueError::new_err("name: must not be empty"));
     }
-    let like = like
-        .as_deref()
-        .map(Like::of)
-        .transpose()
-        .map_err(fit_error)?;
-    let (file, text) = match (text, path) {
+    // the data are read and parsed on the worker (with the fit); here only where they are
+    let (file, source) = match (text, path) {
         (Some(text), _) => (
             PathBuf::from(source.unwrap_or_else(|| "<data>".to_owned())),
-            text,
+            Data::Text(text),
         ),
-        (None, Some(path)) => {
-            let text = std::fs::read_to_string(&path).map_err(|e| {
-                let message = format!("{}: cannot read the data file: {e}", path.display());
-                if e.kind() == std::io::ErrorKind::NotFound {
-                    PyFileNotFoundError::new_err(message)
-                } else {
-                    PyOSError::new_err(message)
-                }
-            })?;
-            (
-                PathBuf::from(source.unwrap_or_else(|| path.display().to_string())),
-                text,
-            )
-        }
+        (None, Some(path)) => (
+            PathBuf::from(source.unwrap_or_else(|| path.display().to_string())),
+            Data::File(path),
+        ),
         (None, None) => return Err(PyValueError::new_err("fit_prony: give a path or columns")),
     };
-    let data =
-        parse_fit_data(&text, &file, kind).map_err(|e| ScenarioError::new_err(e.to_string()))?;
-    let length =
-        |v: &Option<Bound<'py, PyAny>>, n: &str| positive(v.as_ref(), n, Dimension::LENGTH);
-    let options = FitOptions {
-        settings: FitSettings {
-            terms_per_decade,
-            regularisation: choice(
-                regularisation,
-                "regularisation",
-                &[("gcv", Regularisation::Gcv), ("none", Regularisation::None)],
-            )?,
-            honour: choice(
-                honour,
-                "honour",
-                &[("both", Honour::Both), ("storage", Honour::Storage)],
-            )?,
-        },
-        name,
-        temperature: self::temperature(temperature.as_ref(), "temperature")?,
-        csr: CsrOptions {
-            test_piece: test_piece
-                .map(|p| {
-                    choice(
-                        p,
-                        "test_piece",
-                        &[("ring", PieceKind::Ring), ("disc", PieceKind::Disc)],
-                    )
-                })
-                .transpose()?,
-            squeeze: positive(squeeze.as_ref(), "squeeze", Dimension::DIMENSIONLESS)?,
-            cross_section: length(&cross_section, "cross_section")?,
-            mean_diameter: length(&mean_diameter, "mean_diameter")?,
-            diameter: length(&diameter, "diameter")?,
-            height: length(&height, "height")?,
-            initial_force: positive(initial_force.as_ref(), "initial_force", Dimension::FORCE)?,
-            reference_modulus: positive(
-                reference_modulus.as_ref(),
-                "reference_modulus",
-                Dimension::PRESSURE,
-            )?,
-        },
-        tts: TtsOptions {
-            shift: shift
-                .map(|s| {
-                    choice(
-                        s,
-                        "shift",
-                        &[("wlf", ShiftLaw::Wlf), ("arrhenius", ShiftLaw::Arrhenius)],
-                    )
-                })
-                .transpose()?,
-            reference_temperature: self::temperature(
-                reference_temperature.as_ref(),
-                "reference_temperature",
-            )?,
-            plots: false,
-        },
-    };
+    // parsed here (Python objects), a panic in it an InternalError; an error is raised on the
+    // worker after those of `like` and of the data, in the order the checks always had
+    let options = guarded(|| {
+        let length =
+            |v: &Option<Bound<'py, PyAny>>, n: &str| positive(v.as_ref(), n, Dimension::LENGTH);
+        Ok(FitOptions {
+            settings: FitSettings {
+                terms_per_decade,
+                regularisation: choice(
+                    regularisation,
+                    "regularisation",
+                    &[("gcv", Regularisation::Gcv), ("none", Regularisation::None)],
+                )?,
+                honour: choice(
+                    honour,
+                    "honour",
+                    &[("both", Honour::Both), ("storage", Honour::Storage)],
+                )?,
+            },
+            name,
+            temperature: self::temperature(temperature.as_ref(), "temperature")?,
+            csr: CsrOptions {
+                test_piece: test_piece
+                    .map(|p| {
+                        choice(
+                            p,
+                            "test_piece",
+                            &[("ring", PieceKind::Ring), ("disc", PieceKind::Disc)],
+                        )
+                    })
+                    .transpose()?,
+                squeeze: positive(squeeze.as_ref(), "squeeze", Dimension::DIMENSIONLESS)?,
+                cross_section: length(&cross_section, "cross_section")?,
+                mean_diameter: length(&mean_diameter, "mean_diameter")?,
+                diameter: length(&diameter, "diameter")?,
+                height: length(&height, "height")?,
+                initial_force: positive(initial_force.as_ref(), "initial_force", Dimension::FORCE)?,
+                reference_modulus: positive(
+                    reference_modulus.as_ref(),
+                    "reference_modulus",
+                    Dimension::PRESSURE,
+                )?,
+            },
+            tts: TtsOptions {
+                shift: shift
+                    .map(|s| {
+                        choice(
+                            s,
+                            "shift",
+                            &[("wlf", ShiftLaw::Wlf), ("arrhenius", ShiftLaw::Arrhenius)],
+                        )
+                    })
+                    .transpose()?,
+                reference_temperature: self::temperature(
+                    reference_temperature.as_ref(),
+                    "reference_temperature",
+                )?,
+                plots: false,
+            },
+        })
+    });
     let outcome = blocking(py, move || {
-        fit(&data, &file, like.as_ref(), &options).map(|o| (material_file(&o), summary(&o), o))
-    })?
-    .map_err(fit_error)?;
+        let like = like
+            .as_deref()
+            .map(Like::of)
+            .transpose()
+            .map_err(fit_error)?;
+        let text = source.read()?;
+        let data = parse_fit_data(&text, &file, kind)
+            .map_err(|e| ScenarioError::new_err(e.to_string()))?;
+        fit(&data, &file, like.as_ref(), &options?)
+            .map(|o| (material_file(&o), summary(&o), o))
+            .map_err(fit_error)
+    })??;
     let (toml_text, summary_text, o) = outcome;
     let prony = &o.material.prony;
     let dict = PyDict::new(py);

@@ -3,7 +3,7 @@
 //! [`sealsim::workflow::gland`].
 
 use super::fit::{positive, temperature};
-use super::{ScenarioError, internal};
+use super::{ScenarioError, blocking, guarded, internal};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use sealsim::gland::GlandKind;
@@ -34,97 +34,103 @@ fn _gland(
     material: &str,
     housing: &str,
 ) -> PyResult<(String, String)> {
-    let kind = match service {
-        "face" => GlandKind::Face,
-        "piston" => GlandKind::Piston,
-        "rod" => GlandKind::Rod,
-        other => {
-            return Err(PyValueError::new_err(format!(
-                "service \"{other}\": one of \"face\", \"piston\", \"rod\""
-            )));
-        }
-    };
-    let bad = |m: &str| Err(PyValueError::new_err(m.to_owned()));
-    let pressure_outside = match (pressure, kind) {
-        (None, _) => false,
-        (Some(_), GlandKind::Piston | GlandKind::Rod) => {
+    // the arguments' parsing on the calling thread, the design on the worker
+    guarded(|| {
+        let kind = match service {
+            "face" => GlandKind::Face,
+            "piston" => GlandKind::Piston,
+            "rod" => GlandKind::Rod,
+            other => {
+                return Err(PyValueError::new_err(format!(
+                    "service \"{other}\": one of \"face\", \"piston\", \"rod\""
+                )));
+            }
+        };
+        let bad = |m: &str| Err(PyValueError::new_err(m.to_owned()));
+        let pressure_outside = match (pressure, kind) {
+            (None, _) => false,
+            (Some(_), GlandKind::Piston | GlandKind::Rod) => {
+                return bad(
+                    "pressure=\"inside\"|\"outside\" is for face glands: a piston or rod \
+                            gland seals on either side; drop pressure",
+                );
+            }
+            (Some("inside"), _) => false,
+            (Some("outside"), _) => true,
+            (Some(other), _) => {
+                return Err(PyValueError::new_err(format!(
+                    "pressure \"{other}\": \"inside\" or \"outside\""
+                )));
+            }
+        };
+        if kind == GlandKind::Face && dynamic {
             return bad(
-                "pressure=\"inside\"|\"outside\" is for face glands: a piston or rod \
-                        gland seals on either side; drop pressure",
+                "dynamic=True is for piston and rod glands (the tables have no dynamic face \
+                        gland)",
             );
         }
-        (Some("inside"), _) => false,
-        (Some("outside"), _) => true,
-        (Some(other), _) => {
-            return Err(PyValueError::new_err(format!(
-                "pressure \"{other}\": \"inside\" or \"outside\""
-            )));
+        if backup_rings > 2 {
+            return bad("backup_rings: 0, 1 or 2");
         }
-    };
-    if kind == GlandKind::Face && dynamic {
-        return bad(
-            "dynamic=True is for piston and rod glands (the tables have no dynamic face \
-                    gland)",
-        );
-    }
-    if backup_rings > 2 {
-        return bad("backup_rings: 0, 1 or 2");
-    }
-    let seat = match (&bore, &rod, kind) {
-        (Some(_), _, GlandKind::Face | GlandKind::Rod) => {
-            return bad("bore= is the bore of a piston gland; a rod gland takes rod=");
-        }
-        (_, Some(_), GlandKind::Face | GlandKind::Piston) => {
-            return bad("rod= is the rod of a rod gland; a piston gland takes bore=");
-        }
-        (Some(b), _, _) => positive(Some(b), "bore", Dimension::LENGTH)?,
-        (_, Some(r), _) => positive(Some(r), "rod", Dimension::LENGTH)?,
-        _ => None,
-    };
-    let temperatures = match &temperature {
-        Some((lo, hi)) => {
-            let kelvin = |t| {
-                self::temperature(Some(t), "temperature")?
-                    .ok_or_else(|| internal("a temperature went missing"))
-            };
-            let (lo, hi) = (kelvin(lo)?, kelvin(hi)?);
-            if lo > hi {
-                return bad("temperature=(min, max): min is above max");
+        let seat = match (&bore, &rod, kind) {
+            (Some(_), _, GlandKind::Face | GlandKind::Rod) => {
+                return bad("bore= is the bore of a piston gland; a rod gland takes rod=");
             }
-            Some((lo, hi))
-        }
-        None => None,
-    };
-    // the value, and its text as typed for the scenario (a float: in Pa)
-    let pressure_difference = match &pressure_difference {
-        Some(p) => positive(Some(p), "pressure_difference", Dimension::PRESSURE)?.map(|v| {
-            let text = p
-                .extract::<String>()
-                .unwrap_or_else(|_| format!("{v:e} Pa"));
-            (v, text)
-        }),
-        None => None,
-    };
-    let request = GlandRequest {
-        size,
-        kind,
-        dynamic,
-        pressure_outside,
-        backup_rings,
-        seat,
-        fit: fit.to_owned(),
-        temperatures,
-        pressure_difference,
-        material: material.to_owned(),
-        housing: housing.to_owned(),
-    };
-    let designed = super::inline(py, move || design(&request))?.map_err(|e| match e {
-        GlandError::Input(m) => ScenarioError::new_err(m),
-        GlandError::Internal(m) => internal(m),
-    })?;
-    let json = sealsim::report::gland::json(&designed.design, &designed.stack, &designed.context)
-        .map_err(internal)?;
-    Ok((json, designed.scenario))
+            (_, Some(_), GlandKind::Face | GlandKind::Piston) => {
+                return bad("rod= is the rod of a rod gland; a piston gland takes bore=");
+            }
+            (Some(b), _, _) => positive(Some(b), "bore", Dimension::LENGTH)?,
+            (_, Some(r), _) => positive(Some(r), "rod", Dimension::LENGTH)?,
+            _ => None,
+        };
+        let temperatures = match &temperature {
+            Some((lo, hi)) => {
+                let kelvin = |t| {
+                    self::temperature(Some(t), "temperature")?
+                        .ok_or_else(|| internal("a temperature went missing"))
+                };
+                let (lo, hi) = (kelvin(lo)?, kelvin(hi)?);
+                if lo > hi {
+                    return bad("temperature=(min, max): min is above max");
+                }
+                Some((lo, hi))
+            }
+            None => None,
+        };
+        // the value, and its text as typed for the scenario (a float: in Pa)
+        let pressure_difference = match &pressure_difference {
+            Some(p) => positive(Some(p), "pressure_difference", Dimension::PRESSURE)?.map(|v| {
+                let text = p
+                    .extract::<String>()
+                    .unwrap_or_else(|_| format!("{v:e} Pa"));
+                (v, text)
+            }),
+            None => None,
+        };
+        let request = GlandRequest {
+            size,
+            kind,
+            dynamic,
+            pressure_outside,
+            backup_rings,
+            seat,
+            fit: fit.to_owned(),
+            temperatures,
+            pressure_difference,
+            material: material.to_owned(),
+            housing: housing.to_owned(),
+        };
+        blocking(py, move || {
+            let designed = design(&request).map_err(|e| match e {
+                GlandError::Input(m) => ScenarioError::new_err(m),
+                GlandError::Internal(m) => internal(m),
+            })?;
+            let json =
+                sealsim::report::gland::json(&designed.design, &designed.stack, &designed.context)
+                    .map_err(internal)?;
+            Ok((json, designed.scenario))
+        })?
+    })
 }
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {

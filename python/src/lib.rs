@@ -6,10 +6,13 @@
 //! round-trip scientific notation, so every value crosses bit for bit), summaries its JSON text
 //! (parsed by the Python side). Numbers are SI floats.
 //!
-//! Long work runs on a worker thread with the GIL released; the calling thread waits for it and
-//! checks for signals every 50 ms, so Ctrl-C raises `KeyboardInterrupt` at once (the abandoned
+//! Every call's work runs on a worker thread ([`blocking`]) with the GIL released; the calling
+//! thread only converts the arguments and the results, waits, and checks for signals every
+//! 50 ms, so Ctrl-C raises `KeyboardInterrupt` at once whatever the call (the abandoned
 //! computation finishes in the background and its result is dropped). A panic in the library
-//! becomes `sealsim.InternalError` (a `RuntimeError`), never a crash of the interpreter.
+//! becomes `sealsim.InternalError` (a `RuntimeError`), never a crash of the interpreter nor
+//! pyo3's `PanicException`: the worker catches it, and the little parsing done on the calling
+//! thread runs inside [`guarded`].
 
 mod contact;
 mod fit;
@@ -70,7 +73,9 @@ pub(crate) fn internal(e: impl std::fmt::Display) -> PyErr {
 }
 
 /// Runs `work` on a worker thread with the GIL released, checking for signals (Ctrl-C) every
-/// 50 ms; a panic is an [`InternalError`].
+/// 50 ms; a panic is an [`InternalError`]. Every call that does Rust work beyond converting its
+/// arguments goes through here (issue 44, D8): on the calling thread Ctrl-C was not seen until
+/// the call returned, and was lost altogether in 7 of 9 long calls of the reliability review.
 pub(crate) fn blocking<T, F>(py: Python<'_>, work: F) -> PyResult<T>
 where
     T: Send + 'static,
@@ -79,18 +84,13 @@ where
     blocking_with_progress(py, None, move |_| work())
 }
 
-/// Runs `work` on the calling thread with the GIL released (other Python threads run
-/// meanwhile); a panic is an [`InternalError`]. For work of milliseconds to about a second (an
-/// analytic life run or leak table): a worker thread on another CPU runs it 5–10 % slower on a
-/// small VM (cold caches; measured by python/benches/overhead.py), and Ctrl-C is honoured when
-/// it returns. Long work (studies, comparisons, the numerical level) goes to [`blocking`].
-pub(crate) fn inline<T, F>(py: Python<'_>, work: F) -> PyResult<T>
-where
-    T: Send,
-    F: FnOnce() -> T + Send,
-{
-    py.detach(|| std::panic::catch_unwind(std::panic::AssertUnwindSafe(work)))
-        .map_err(|payload| internal(format!("sealsim panicked: {}", panic_text(&*payload))))
+/// Runs `work` on the calling thread, holding the GIL, with a panic as an [`InternalError`]
+/// (never pyo3's `PanicException`, a `BaseException` that `except Exception` misses). Only for
+/// work of microseconds, not worth a thread hand-off: reading a call's arguments (Python
+/// objects, which need the GIL) before its work goes to [`blocking`], and `quantity`.
+pub(crate) fn guarded<T>(work: impl FnOnce() -> PyResult<T>) -> PyResult<T> {
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(work))
+        .map_err(|payload| internal(format!("sealsim panicked: {}", panic_text(&*payload))))?
 }
 
 /// The message of a panic's payload.
@@ -235,10 +235,44 @@ where
     }
 }
 
-/// A CSV table (the report's text) as an ordered dict of columns: a column whose every
-/// non-empty cell is a number is [`float_column`] (an empty cell is NaN: no value), any other a
-/// list of strings. The reports write shortest round-trip numbers, so the floats are exact.
-fn columns<'py>(py: Python<'py>, csv_text: &str) -> PyResult<Bound<'py, PyDict>> {
+/// A table's column on its way to Python: numbers as the native-endian bytes of their f64s
+/// (a blank cell NaN: no value), which the Python side reads with `numpy.frombuffer`, or words.
+pub(crate) enum Column {
+    Numbers(Vec<u8>),
+    Words(Vec<String>),
+}
+
+/// A table's columns in order, made on the worker thread, so that the calling thread only
+/// copies them into Python objects.
+pub(crate) type Columns = Vec<(String, Column)>;
+
+/// Floats as the bytes of native-endian f64s.
+fn f64_bytes(values: impl IntoIterator<Item = f64>) -> Vec<u8> {
+    values.into_iter().flat_map(f64::to_ne_bytes).collect()
+}
+
+/// A column of numbers and blanks as [`Column::Numbers`] (a blank NaN), any other as words.
+fn column<'a>(cells: impl Iterator<Item = &'a str> + Clone) -> Column {
+    let numbers: Option<Vec<f64>> = cells
+        .clone()
+        .map(|c| {
+            if c.is_empty() {
+                Some(f64::NAN)
+            } else {
+                c.parse::<f64>().ok()
+            }
+        })
+        .collect();
+    match numbers {
+        Some(v) => Column::Numbers(f64_bytes(v)),
+        None => Column::Words(cells.map(str::to_owned).collect()),
+    }
+}
+
+/// A CSV table (the report's text) as [`Columns`]: a column whose every non-empty cell is a
+/// number is [`Column::Numbers`] (an empty cell is NaN: no value), any other words. The
+/// reports write shortest round-trip numbers, so the floats are exact.
+fn csv_columns(csv_text: &str) -> PyResult<Columns> {
     let mut reader = ::csv::Reader::from_reader(csv_text.as_bytes());
     let header: Vec<String> = reader
         .headers()
@@ -250,22 +284,50 @@ fn columns<'py>(py: Python<'py>, csv_text: &str) -> PyResult<Bound<'py, PyDict>>
         .records()
         .collect::<Result<_, _>>()
         .map_err(internal)?;
-    let dict = PyDict::new(py);
-    for (j, name) in header.iter().enumerate() {
-        let cells: Vec<&str> = rows.iter().map(|r| r.get(j).unwrap_or("")).collect();
+    Ok(header
+        .into_iter()
+        .enumerate()
+        .map(|(j, name)| {
+            (
+                name,
+                column(rows.iter().map(move |r| r.get(j).unwrap_or(""))),
+            )
+        })
+        .collect())
+}
+
+/// A report [`Table`] as [`Columns`], as [`csv_columns`] reads its CSV text: a column of
+/// numbers and blanks is [`Column::Numbers`] (a blank is NaN), any other words. The floats are
+/// the cells' own, which the CSV's round-trip notation carries bit for bit, so this equals
+/// `csv_columns(table.to_csv())` without formatting and parsing every cell.
+fn table_columns(table: &Table) -> Columns {
+    let mut out = Columns::new();
+    for (j, name) in table.header.iter().enumerate() {
+        let cells = table.rows.iter().map(|r| r.get(j).unwrap_or(&Cell::Blank));
         let numbers: Option<Vec<f64>> = cells
-            .iter()
-            .map(|c| {
-                if c.is_empty() {
-                    Some(f64::NAN)
-                } else {
-                    c.parse::<f64>().ok()
-                }
+            .clone()
+            .map(|c| match c {
+                Cell::Number(v) => Some(*v),
+                Cell::Blank => Some(f64::NAN),
+                Cell::Text(_) => None,
             })
             .collect();
-        match numbers {
-            Some(v) => dict.set_item(name, float_column(py, v))?,
-            None => dict.set_item(name, cells)?,
+        let column = match numbers {
+            Some(v) => Column::Numbers(f64_bytes(v)),
+            None => Column::Words(cells.map(Cell::text).collect()),
+        };
+        out.push(((*name).to_owned(), column));
+    }
+    out
+}
+
+/// [`Columns`] as an ordered dict: numbers as bytes, words as a list of str.
+fn columns_dict(py: Python<'_>, columns: Columns) -> PyResult<Bound<'_, PyDict>> {
+    let dict = PyDict::new(py);
+    for (name, column) in columns {
+        match column {
+            Column::Numbers(bytes) => dict.set_item(name, PyBytes::new(py, &bytes))?,
+            Column::Words(words) => dict.set_item(name, words)?,
         }
     }
     Ok(dict)
@@ -277,35 +339,7 @@ pub(crate) fn float_column<'py>(
     py: Python<'py>,
     values: impl IntoIterator<Item = f64>,
 ) -> Bound<'py, PyBytes> {
-    let bytes: Vec<u8> = values.into_iter().flat_map(f64::to_ne_bytes).collect();
-    PyBytes::new(py, &bytes)
-}
-
-/// A report [`Table`] as an ordered dict of columns, as [`columns`] reads its CSV text: a
-/// column of numbers and blanks is a [`float_column`] (a blank is NaN), any other a list of
-/// strings. The floats are the cells' own, which the CSV's round-trip notation carries bit for
-/// bit, so this equals `columns(table.to_csv())` without formatting and parsing every cell.
-fn table_columns<'py>(py: Python<'py>, table: &Table) -> PyResult<Bound<'py, PyDict>> {
-    let dict = PyDict::new(py);
-    for (j, name) in table.header.iter().enumerate() {
-        let cells = table.rows.iter().map(|r| r.get(j).unwrap_or(&Cell::Blank));
-        let numbers: Option<Vec<f64>> = cells
-            .clone()
-            .map(|c| match c {
-                Cell::Number(v) => Some(*v),
-                Cell::Blank => Some(f64::NAN),
-                Cell::Text(_) => None,
-            })
-            .collect();
-        match numbers {
-            Some(v) => dict.set_item(name, float_column(py, v))?,
-            None => {
-                let words: Vec<String> = cells.map(Cell::text).collect();
-                dict.set_item(name, words)?;
-            }
-        }
-    }
-    Ok(dict)
+    PyBytes::new(py, &f64_bytes(values))
 }
 
 /// A fidelity level by its name (`exact`, `critical-junction`, …), as `--fidelity` takes it.
@@ -387,71 +421,97 @@ pub(crate) struct PyScenario {
 }
 
 impl PyScenario {
+    /// Reads and validates scenario `text` from `file`: the work of `from_file`, `from_toml`
+    /// (a height map it names can take seconds), so callers run it on the worker.
     fn new(text: String, file: String) -> PyResult<PyScenario> {
-        // a panic while reading a data file is an InternalError, never a PanicException (a
-        // BaseException that `except Exception` misses)
-        let scenario = std::panic::catch_unwind(|| Scenario::from_str(&text, Path::new(&file)))
-            .map_err(|payload| internal(format!("sealsim panicked: {}", panic_text(&*payload))))?
-            .map_err(scenario_error)?;
+        let scenario = Scenario::from_str(&text, Path::new(&file)).map_err(scenario_error)?;
         Ok(PyScenario {
             inner: Arc::new(scenario),
             text,
             file,
         })
     }
+}
 
-    /// The scenario with its fidelity overridden, shared when not.
-    fn at(&self, level: Option<Fidelity>) -> Arc<Scenario> {
-        match level {
-            None => Arc::clone(&self.inner),
-            Some(f) => {
-                let mut s = (*self.inner).clone();
-                s.life.fidelity = f;
-                Arc::new(s)
-            }
+/// `scenario` with its fidelity overridden (a copy, height map and all: made on the worker),
+/// shared when not.
+fn at(scenario: Arc<Scenario>, level: Option<Fidelity>) -> Arc<Scenario> {
+    match level {
+        None => scenario,
+        Some(f) => {
+            let mut s = (*scenario).clone();
+            s.life.fidelity = f;
+            Arc::new(s)
         }
     }
+}
+
+/// `sealsim leak`'s table (CSV text) and findings: at the fluid pressure `differences`, else
+/// at the contact `pressures` (`None`: the scenario's own state).
+fn leak_report(
+    scenario: &Scenario,
+    pressures: Option<&[f64]>,
+    differences: Option<&[f64]>,
+    level: Fidelity,
+    progress: workflow::Progress<'_>,
+) -> PyResult<(String, String)> {
+    let (csv, findings) = match differences {
+        Some(differences) => {
+            let (rows, findings) =
+                workflow::leak::at_pressure_differences(scenario, differences, level, progress);
+            (pressure_difference_table(&rows), findings)
+        }
+        None => {
+            let outcome = workflow::leak::evaluate(scenario, pressures, level, progress);
+            let csv = leak_outcome_table(&outcome, scenario.life.fluid.mean_pressure());
+            (csv, outcome.findings)
+        }
+    };
+    let findings = serde_json::to_string(&sealsim::report::findings::records(&findings));
+    Ok((csv.map_err(internal)?, findings.map_err(internal)?))
 }
 
 #[pymethods]
 impl PyScenario {
     /// Reads and validates a scenario file.
     #[staticmethod]
-    fn from_file(path: PathBuf) -> PyResult<PyScenario> {
-        let text = std::fs::read_to_string(&path).map_err(|source| {
-            scenario_error(RustScenarioError::Read {
-                path: path.clone(),
-                source,
-            })
-        })?;
-        PyScenario::new(text, path.display().to_string())
+    fn from_file(py: Python<'_>, path: PathBuf) -> PyResult<PyScenario> {
+        blocking(py, move || {
+            let text = std::fs::read_to_string(&path).map_err(|source| {
+                scenario_error(RustScenarioError::Read {
+                    path: path.clone(),
+                    source,
+                })
+            })?;
+            PyScenario::new(text, path.display().to_string())
+        })?
     }
 
     /// Validates scenario TOML text; `path` names it in messages and resolves relative data
     /// files (default `<string>`, relative to the working directory).
     #[staticmethod]
     #[pyo3(signature = (text, path = None))]
-    fn from_toml(text: String, path: Option<PathBuf>) -> PyResult<PyScenario> {
+    fn from_toml(py: Python<'_>, text: String, path: Option<PathBuf>) -> PyResult<PyScenario> {
         let file = path.map_or_else(|| STRING_SOURCE.to_owned(), |p| p.display().to_string());
-        PyScenario::new(text, file)
+        blocking(py, move || PyScenario::new(text, file))?
     }
 
     /// A new scenario with dotted keys replaced, as a study's `[vary]` sets them.
-    fn replace(&self, values: &Bound<'_, PyDict>) -> PyResult<PyScenario> {
+    fn replace(&self, py: Python<'_>, values: &Bound<'_, PyDict>) -> PyResult<PyScenario> {
         let mut assignments = Vec::new();
         for (k, v) in values.iter() {
             assignments.push((k.extract::<String>()?, toml_value(&v)?));
         }
-        let (text, scenario) = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-            workflow::replace(&self.text, Path::new(&self.file), &assignments)
-        }))
-        .map_err(|payload| internal(format!("sealsim panicked: {}", panic_text(&*payload))))?
-        .map_err(scenario_error)?;
-        Ok(PyScenario {
-            inner: Arc::new(scenario),
-            text,
-            file: self.file.clone(),
-        })
+        let (text, file) = (self.text.clone(), self.file.clone());
+        blocking(py, move || {
+            let (text, scenario) =
+                workflow::replace(&text, Path::new(&file), &assignments).map_err(scenario_error)?;
+            Ok(PyScenario {
+                inner: Arc::new(scenario),
+                text,
+                file,
+            })
+        })?
     }
 
     /// The scenario's name.
@@ -492,28 +552,29 @@ impl PyScenario {
         fidelity: Option<&str>,
         progress: Option<Bound<'py, PyAny>>,
     ) -> PyResult<(Bound<'py, PyDict>, String)> {
-        let scenario = self.at(self::fidelity(fidelity)?);
-        let file = self.file.clone();
-        // the numerical level takes minutes: a worker, so that Ctrl-C stops the wait at once
-        let (history, summary) = if scenario.life.fidelity == Fidelity::Numerical {
-            blocking_with_progress(py, progress.as_ref(), move |meter| {
-                life_report(&scenario, &file, &mut |done, total| meter.set(done, total))
-            })?
-        } else {
-            inline(py, || life_report(&scenario, &file, &mut |_, _| {}))?
-        };
-        let history = history.map_err(internal)?;
-        let summary = summary.map_err(internal)?;
-        Ok((table_columns(py, &history)?, summary))
+        let level = self::fidelity(fidelity)?;
+        let (scenario, file) = (Arc::clone(&self.inner), self.file.clone());
+        // on the worker at every level: an analytic run can take minutes too (D7, D8)
+        let (history, summary) = blocking_with_progress(py, progress.as_ref(), move |meter| {
+            let scenario = at(scenario, level);
+            let (history, summary) =
+                life_report(&scenario, &file, &mut |done, total| meter.set(done, total));
+            Ok::<_, PyErr>((
+                table_columns(&history.map_err(internal)?),
+                summary.map_err(internal)?,
+            ))
+        })??;
+        Ok((columns_dict(py, history)?, summary))
     }
 
     /// The in-process Rust reference of the overhead benchmark (python/benches/overhead.py):
     /// the fastest of `repeats` runs of the life workflow alone, and of the workflow with the
-    /// history table and summary that `_run` returns (seconds, GIL released, on this thread).
-    fn _time_in_rust(&self, py: Python<'_>, repeats: usize) -> (f64, f64) {
+    /// history table and summary that `_run` returns (seconds, timed on the worker around the
+    /// work alone).
+    fn _time_in_rust(&self, py: Python<'_>, repeats: usize) -> PyResult<(f64, f64)> {
         let scenario = Arc::clone(&self.inner);
         let file = self.file.clone();
-        py.detach(move || {
+        blocking(py, move || {
             let (mut bare, mut reported) = (f64::INFINITY, f64::INFINITY);
             for _ in 0..repeats.max(1) {
                 let start = std::time::Instant::now();
@@ -538,14 +599,16 @@ impl PyScenario {
         max_runs: Option<usize>,
         progress: Option<Bound<'py, PyAny>>,
     ) -> PyResult<String> {
-        let (target, target_text) = if let Ok(text) = life.extract::<String>() {
-            let t = units::parse_quantity(&text, Dimension::TIME)
-                .map_err(|e| PyValueError::new_err(format!("life: {e}")))?;
-            (t, text.trim().to_owned())
-        } else {
-            let t: f64 = life.extract()?;
-            (t, format!("{} s", units::exact(t)))
-        };
+        let (target, target_text) = guarded(|| {
+            Ok(if let Ok(text) = life.extract::<String>() {
+                let t = units::parse_quantity(&text, Dimension::TIME)
+                    .map_err(|e| PyValueError::new_err(format!("life: {e}")))?;
+                (t, text.trim().to_owned())
+            } else {
+                let t: f64 = life.extract()?;
+                (t, format!("{} s", units::exact(t)))
+            })
+        })?;
         if !(target.is_finite() && target > 0.0) {
             return Err(PyValueError::new_err("life: must be positive"));
         }
@@ -586,58 +649,43 @@ impl PyScenario {
         progress: Option<Bound<'py, PyAny>>,
         pressure_differences: Option<Vec<Bound<'py, PyAny>>>,
     ) -> PyResult<(Bound<'py, PyDict>, String, Option<String>)> {
-        let pressures = pressures
-            .map(|list| list.iter().map(pressure).collect::<PyResult<Vec<f64>>>())
-            .transpose()?;
-        let differences = pressure_differences
-            .map(|list| {
-                list.iter()
-                    .map(pressure_difference)
-                    .collect::<PyResult<Vec<f64>>>()
-            })
-            .transpose()?;
+        let (pressures, differences) = guarded(|| {
+            let pressures = pressures
+                .map(|list| list.iter().map(pressure).collect::<PyResult<Vec<f64>>>())
+                .transpose()?;
+            let differences = pressure_differences
+                .map(|list| {
+                    list.iter()
+                        .map(pressure_difference)
+                        .collect::<PyResult<Vec<f64>>>()
+                })
+                .transpose()?;
+            Ok((pressures, differences))
+        })?;
         if pressures.is_some() && differences.is_some() {
             return Err(ScenarioError::new_err(
                 "leak: give either contact_pressures or pressure_differences, not both",
             ));
         }
-        let note = if differences.is_some() {
-            None
-        } else {
-            workflow::leak::oring_state_note(&self.inner, pressures.is_some())
-        };
         let level = self::fidelity(fidelity)?.unwrap_or(self.inner.life.fidelity);
         let scenario = Arc::clone(&self.inner);
-        let leak = move |progress: workflow::Progress<'_>| {
-            let (csv, findings) = match &differences {
-                Some(differences) => {
-                    let (rows, findings) = workflow::leak::at_pressure_differences(
-                        &scenario,
-                        differences,
-                        level,
-                        progress,
-                    );
-                    (pressure_difference_table(&rows), findings)
-                }
-                None => {
-                    let outcome =
-                        workflow::leak::evaluate(&scenario, pressures.as_deref(), level, progress);
-                    let csv = leak_outcome_table(&outcome, scenario.life.fluid.mean_pressure());
-                    (csv, outcome.findings)
-                }
-            };
-            let findings = serde_json::to_string(&sealsim::report::findings::records(&findings));
-            (csv, findings)
-        };
-        let (csv, findings) = if level == Fidelity::Numerical {
+        // on the worker at every level: an analytic leak table can take minutes too (D8)
+        let (columns, findings, note) =
             blocking_with_progress(py, progress.as_ref(), move |meter| {
-                leak(&mut |done, total| meter.set(done, total))
-            })?
-        } else {
-            inline(py, || leak(&mut |_, _| {}))?
-        };
-        let csv = csv.map_err(internal)?;
-        Ok((columns(py, &csv)?, findings.map_err(internal)?, note))
+                let note = match differences {
+                    Some(_) => None,
+                    None => workflow::leak::oring_state_note(&scenario, pressures.is_some()),
+                };
+                let (csv, findings) = leak_report(
+                    &scenario,
+                    pressures.as_deref(),
+                    differences.as_deref(),
+                    level,
+                    &mut |done, total| meter.set(done, total),
+                )?;
+                Ok::<_, PyErr>((csv_columns(&csv)?, findings, note))
+            })??;
+        Ok((columns_dict(py, columns)?, findings, note))
     }
 
     /// The leak floor \[m³/s\] of `sealsim run`'s chart and summary (docs/model.md §15.2):
@@ -645,22 +693,24 @@ impl PyScenario {
     #[pyo3(signature = (value = None))]
     fn _leak_floor(&self, value: Option<Bound<'_, PyAny>>) -> PyResult<f64> {
         let fluid = &self.inner.life.fluid;
-        let floor = match value {
-            None => return Ok(fluid.one_molecule_per_second()),
-            Some(v) if v.is_instance_of::<PyString>() => {
-                let text: String = v.extract()?;
-                workflow::leak::parse_leak_floor(&text, fluid)
-                    .map_err(|m| ScenarioError::new_err(format!("leak_floor: {m}")))?
+        guarded(|| {
+            let floor = match value {
+                None => return Ok(fluid.one_molecule_per_second()),
+                Some(v) if v.is_instance_of::<PyString>() => {
+                    let text: String = v.extract()?;
+                    workflow::leak::parse_leak_floor(&text, fluid)
+                        .map_err(|m| ScenarioError::new_err(format!("leak_floor: {m}")))?
+                }
+                Some(v) => v.extract::<f64>()?,
+            };
+            if floor.is_finite() && floor > 0.0 {
+                Ok(floor)
+            } else {
+                Err(ScenarioError::new_err(format!(
+                    "leak_floor: must be positive, got {floor} m³/s"
+                )))
             }
-            Some(v) => v.extract::<f64>()?,
-        };
-        if floor.is_finite() && floor > 0.0 {
-            Ok(floor)
-        } else {
-            Err(ScenarioError::new_err(format!(
-                "leak_floor: must be positive, got {floor} m³/s"
-            )))
-        }
+        })
     }
 
     fn __repr__(&self) -> String {
@@ -729,47 +779,58 @@ fn _compare<'py>(
     raw: bool,
 ) -> PyResult<(Bound<'py, PyDict>, String, String)> {
     let level = self::fidelity(fidelity)?;
-    let materials: Vec<(String, Material)> = compounds
-        .iter()
-        .map(|c| Ok((c.trim().to_owned(), compound(c.trim())?)))
-        .collect::<PyResult<_>>()?;
-    let scenarios: Vec<Scenario> = materials
-        .iter()
-        .map(|(_, m)| {
-            Scenario::from_str_with_material(&scenario.text, Path::new(&scenario.file), m)
-                .map_err(scenario_error)
-        })
-        .collect::<PyResult<_>>()?;
-    let (csv, findings, headline) = blocking_with_progress(py, progress.as_ref(), move |meter| {
-        // ranked as `sealsim compare` ranks (`raw`: its `--all`)
-        let runs = workflow::compare::rank(
-            workflow::compare::compare_scenarios(
-                scenarios,
-                materials,
-                level,
-                &mut |done, total| meter.set(done, total),
-            ),
-            raw,
-        );
-        let rows: Vec<CompareRow<'_>> = runs.iter().map(|run| CompareRow::of(run, None)).collect();
-        let findings: serde_json::Map<String, serde_json::Value> = runs
-            .iter()
-            .map(|(run, _)| {
-                let records = sealsim::report::findings::records(&run.result.findings);
-                (
-                    run.label.clone(),
-                    serde_json::to_value(records).unwrap_or(serde_json::Value::Null),
-                )
+    let (text, file) = (scenario.text.clone(), scenario.file.clone());
+    let (columns, findings, headline) =
+        blocking_with_progress(py, progress.as_ref(), move |meter| {
+            // each compound's scenario is read again (its height map too): on the worker
+            let materials: Vec<(String, Material)> = compounds
+                .iter()
+                .map(|c| Ok((c.trim().to_owned(), compound(c.trim())?)))
+                .collect::<PyResult<_>>()?;
+            let scenarios: Vec<Scenario> = materials
+                .iter()
+                .map(|(_, m)| {
+                    Scenario::from_str_with_material(&text, Path::new(&file), m)
+                        .map_err(scenario_error)
+                })
+                .collect::<PyResult<_>>()?;
+            compare_report(scenarios, materials, level, raw, &mut |done, total| {
+                meter.set(done, total)
             })
-            .collect();
-        (
-            compare_table(&rows),
-            serde_json::to_string(&findings),
-            sealsim::report::life::compare_headline(&runs),
-        )
-    })?;
-    let csv = csv.map_err(internal)?;
-    Ok((columns(py, &csv)?, findings.map_err(internal)?, headline))
+        })??;
+    Ok((columns_dict(py, columns)?, findings, headline))
+}
+
+/// The runs of `sealsim compare`, ranked as it ranks them (`raw`: its `--all`): the table's
+/// columns, each compound's findings (JSON) and the headline.
+fn compare_report(
+    scenarios: Vec<Scenario>,
+    materials: Vec<(String, Material)>,
+    level: Option<Fidelity>,
+    raw: bool,
+    progress: workflow::Progress<'_>,
+) -> PyResult<(Columns, String, String)> {
+    let runs = workflow::compare::rank(
+        workflow::compare::compare_scenarios(scenarios, materials, level, progress),
+        raw,
+    );
+    let rows: Vec<CompareRow<'_>> = runs.iter().map(|run| CompareRow::of(run, None)).collect();
+    let findings: serde_json::Map<String, serde_json::Value> = runs
+        .iter()
+        .map(|(run, _)| {
+            let records = sealsim::report::findings::records(&run.result.findings);
+            (
+                run.label.clone(),
+                serde_json::to_value(records).unwrap_or(serde_json::Value::Null),
+            )
+        })
+        .collect();
+    let csv = compare_table(&rows).map_err(internal)?;
+    Ok((
+        csv_columns(&csv)?,
+        serde_json::to_string(&findings).map_err(internal)?,
+        sealsim::report::life::compare_headline(&runs),
+    ))
 }
 
 /// `sealsim study`: (cases columns, summary JSON text). `source` is a study file's path or its
@@ -782,59 +843,69 @@ fn _study<'py>(
     threads: Option<usize>,
     progress: Option<Bound<'py, PyAny>>,
 ) -> PyResult<(Bound<'py, PyDict>, String)> {
-    let study = if source.contains('\n') || source.contains('=') {
-        Study::from_str(&source, Path::new(STRING_SOURCE))
-    } else {
-        Study::load(Path::new(&source))
-    }
-    .map_err(scenario_error)?;
-    let (csv, json) = blocking_with_progress(py, progress.as_ref(), move |meter| {
+    let (columns, json) = blocking_with_progress(py, progress.as_ref(), move |meter| {
+        // the study and its base scenario (a height map too) are read on the worker
+        let study = if source.contains('\n') || source.contains('=') {
+            Study::from_str(&source, Path::new(STRING_SOURCE))
+        } else {
+            Study::load(Path::new(&source))
+        }
+        .map_err(scenario_error)?;
         let progress = |done: usize, total: usize| meter.set(done, total);
-        workflow::study::run(&study, 0..study.cases(), threads, &progress).map(|outcomes| {
-            let summary = sealsim::study::summary::StudySummary::new(&outcomes, study.confidence);
-            (
-                sealsim::report::study::cases_csv(&study, &outcomes),
-                sealsim::report::study::summary_json(&study, &summary),
-            )
-        })
-    })?
-    .map_err(scenario_error)?;
-    let csv = csv.map_err(internal)?;
-    Ok((columns(py, &csv)?, json.map_err(internal)?))
+        let outcomes = workflow::study::run(&study, 0..study.cases(), threads, &progress)
+            .map_err(scenario_error)?;
+        let summary = sealsim::study::summary::StudySummary::new(&outcomes, study.confidence);
+        let csv = sealsim::report::study::cases_csv(&study, &outcomes).map_err(internal)?;
+        let json = sealsim::report::study::summary_json(&study, &summary).map_err(internal)?;
+        Ok::<_, PyErr>((csv_columns(&csv)?, json))
+    })??;
+    Ok((columns_dict(py, columns)?, json))
 }
+
+/// One library compound's row of [`_materials`]: id, name, status, E0, E∞, Tg, T10 (SI).
+type MaterialRow = (String, String, String, f64, f64, f64, f64);
 
 /// The material library: columns id, name, status, E0_Pa, E_inf_Pa, glass_transition_K,
 /// low_temperature_limit_K (NaN where the compound has none).
 #[pyfunction]
 fn _materials(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
-    let mut ids = Vec::new();
-    let mut names = Vec::new();
-    let mut status = Vec::new();
-    let mut e0 = Vec::new();
-    let mut e_inf = Vec::new();
-    let mut tg = Vec::new();
-    let mut t10 = Vec::new();
-    for id in library::ids() {
-        let m = library::get(id)
-            .map_err(internal)?
-            .load()
-            .map_err(scenario_error)?;
-        ids.push(id.to_owned());
-        names.push(m.name.clone());
-        status.push(m.status.as_str().to_owned());
-        e0.push(m.prony.instantaneous());
-        e_inf.push(m.prony.long_term());
-        tg.push(m.glass_transition.unwrap_or(f64::NAN));
-        t10.push(m.low_temperature_limit().unwrap_or(f64::NAN));
-    }
+    // every compound's file is read and validated: on the worker
+    let rows: Vec<MaterialRow> = blocking(py, || {
+        library::ids()
+            .map(|id| {
+                let m = library::get(id)
+                    .map_err(internal)?
+                    .load()
+                    .map_err(scenario_error)?;
+                Ok((
+                    id.to_owned(),
+                    m.name.clone(),
+                    m.status.as_str().to_owned(),
+                    m.prony.instantaneous(),
+                    m.prony.long_term(),
+                    m.glass_transition.unwrap_or(f64::NAN),
+                    m.low_temperature_limit().unwrap_or(f64::NAN),
+                ))
+            })
+            .collect::<PyResult<Vec<MaterialRow>>>()
+    })??;
     let dict = PyDict::new(py);
-    dict.set_item("id", ids)?;
-    dict.set_item("name", names)?;
-    dict.set_item("status", status)?;
-    dict.set_item("E0_Pa", e0)?;
-    dict.set_item("E_inf_Pa", e_inf)?;
-    dict.set_item("glass_transition_K", tg)?;
-    dict.set_item("low_temperature_limit_K", t10)?;
+    dict.set_item("id", rows.iter().map(|r| r.0.clone()).collect::<Vec<_>>())?;
+    dict.set_item("name", rows.iter().map(|r| r.1.clone()).collect::<Vec<_>>())?;
+    dict.set_item(
+        "status",
+        rows.iter().map(|r| r.2.clone()).collect::<Vec<_>>(),
+    )?;
+    dict.set_item("E0_Pa", rows.iter().map(|r| r.3).collect::<Vec<_>>())?;
+    dict.set_item("E_inf_Pa", rows.iter().map(|r| r.4).collect::<Vec<_>>())?;
+    dict.set_item(
+        "glass_transition_K",
+        rows.iter().map(|r| r.5).collect::<Vec<_>>(),
+    )?;
+    dict.set_item(
+        "low_temperature_limit_K",
+        rows.iter().map(|r| r.6).collect::<Vec<_>>(),
+    )?;
     Ok(dict)
 }
 
@@ -867,6 +938,12 @@ const DIMENSIONS: [(&str, Dimension); 14] = [
 #[pyfunction]
 #[pyo3(signature = (text, dimension = None))]
 fn quantity(text: &str, dimension: Option<&str>) -> PyResult<f64> {
+    // microseconds of parsing: on the calling thread, a panic still an InternalError
+    guarded(|| parse_quantity(text, dimension))
+}
+
+/// [`quantity`]'s work.
+fn parse_quantity(text: &str, dimension: Option<&str>) -> PyResult<f64> {
     let bad = |e: String| PyValueError::new_err(format!("\"{text}\": {e}"));
     match dimension {
         Some("temperature") => units::parse_temperature(text).map_err(|e| bad(e.to_string())),
@@ -898,6 +975,27 @@ fn quantity(text: &str, dimension: Option<&str>) -> PyResult<f64> {
     }
 }
 
+/// A panic on purpose, for the tests (python/tests/test_robustness.py): `"worker"` in work
+/// handed to [`blocking`], `"guarded"` on the calling thread inside [`guarded`] (both
+/// [`InternalError`]), `"bare"` outside either (pyo3's `PanicException`, which the Python
+/// layer's wrappers turn into `InternalError`).
+#[pyfunction]
+#[expect(
+    clippy::panic,
+    reason = "the tests' way to check that a panic reaches Python as InternalError"
+)]
+fn _panic(py: Python<'_>, place: &str) -> PyResult<()> {
+    let boom = || -> PyResult<()> { panic!("a panic on purpose (sealsim._sealsim._panic)") };
+    match place {
+        "worker" => blocking(py, boom)?,
+        "guarded" => guarded(boom),
+        "bare" => boom(),
+        other => Err(PyValueError::new_err(format!(
+            "place \"{other}\": one of \"worker\", \"guarded\", \"bare\""
+        ))),
+    }
+}
+
 /// The compiled module.
 #[pymodule]
 fn _sealsim(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -911,6 +1009,7 @@ fn _sealsim(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(_materials, m)?)?;
     contact::register(m)?;
     m.add_function(wrap_pyfunction!(quantity, m)?)?;
+    m.add_function(wrap_pyfunction!(_panic, m)?)?;
     fit::register(m)?;
     surface::register(m)?;
     gland::register(m)?;

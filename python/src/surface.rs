@@ -3,7 +3,7 @@
 //! side wrote (shortest round-trip floats, so every value is exact) and are read by the
 //! command line's parsers, with their messages.
 
-use crate::{ScenarioError, blocking, internal, scenario_error};
+use crate::{ScenarioError, blocking, guarded, internal, scenario_error};
 use pyo3::exceptions::{PyFileNotFoundError, PyValueError};
 use pyo3::prelude::*;
 use sealsim::report::surface::SurfaceReport;
@@ -74,49 +74,51 @@ fn _surface<'py>(
     pixel_size: Option<Bound<'py, PyAny>>,
     height_unit: Option<&str>,
 ) -> PyResult<Outcome> {
-    let unit = height_unit.map(self::height_unit).transpose()?;
-    let options = SurfaceOptions {
-        cutoff: length(cutoff.as_ref(), "cutoff")?,
-        short_cutoff: length(short_cutoff.as_ref(), "short_cutoff")?,
-        tip_radius: length(tip_radius.as_ref(), "tip_radius")?,
-        pixel_size: length(pixel_size.as_ref(), "pixel_size")?,
-        height_unit: unit,
-    };
+    // the options' parsing here, a panic in it an InternalError; every file, grid and trace
+    // is read on the worker (a height map can take seconds)
+    let (options, unit) = guarded(|| {
+        let unit = height_unit.map(self::height_unit).transpose()?;
+        let options = SurfaceOptions {
+            cutoff: length(cutoff.as_ref(), "cutoff")?,
+            short_cutoff: length(short_cutoff.as_ref(), "short_cutoff")?,
+            tip_radius: length(tip_radius.as_ref(), "tip_radius")?,
+            pixel_size: length(pixel_size.as_ref(), "pixel_size")?,
+            height_unit: unit,
+        };
+        Ok((options, unit))
+    })?;
     let input = |e: SurfaceError| surface_error(e, &[]);
+    // the report's JSON is written on the worker too
     match (sources, grid, traces) {
-        (Some(sources), None, None) => {
-            let files = sources.clone();
-            let report = blocking(py, move || summary(&sources, &options))?
-                .map_err(|e| surface_error(e, &files))?;
+        (Some(sources), None, None) => blocking(py, move || {
+            let report = summary(&sources, &options).map_err(|e| surface_error(e, &sources))?;
             outcome(&report)
-        }
+        })?,
         (None, Some(grid), None) => {
             callout(&options).map_err(input)?;
             let pixel = options
                 .pixel_size
                 .ok_or_else(|| PyValueError::new_err("surface: a height grid needs pixel_size"))?;
             let name = name.unwrap_or_else(|| "<heights>".to_owned());
-            let map = parse_height_map(&grid, Path::new(&name), pixel, unit.unwrap_or(1.0))
-                .map_err(|e| ScenarioError::new_err(e.to_string()))?;
-            let report =
-                blocking(py, move || map_report(name, &map, options.cutoff))?.map_err(input)?;
-            outcome(&report)
+            blocking(py, move || {
+                let map = parse_height_map(&grid, Path::new(&name), pixel, unit.unwrap_or(1.0))
+                    .map_err(|e| ScenarioError::new_err(e.to_string()))?;
+                outcome(&map_report(name, &map, options.cutoff).map_err(input)?)
+            })?
         }
         (None, None, Some(traces)) => {
             callout(&options).map_err(input)?;
-            let named = traces
-                .iter()
-                .map(|(name, text)| {
-                    parse_trace(text, Path::new(name))
-                        .map(|t| (name.clone(), t))
-                        .map_err(|e| ScenarioError::new_err(e.to_string()))
-                })
-                .collect::<PyResult<Vec<_>>>()?;
-            let report = blocking(py, move || {
-                traces_report(&named, options.cutoff, options.tip_radius)
+            blocking(py, move || {
+                let named = traces
+                    .iter()
+                    .map(|(name, text)| {
+                        parse_trace(text, Path::new(name))
+                            .map(|t| (name.clone(), t))
+                            .map_err(|e| ScenarioError::new_err(e.to_string()))
+                    })
+                    .collect::<PyResult<Vec<_>>>()?;
+                outcome(&traces_report(&named, options.cutoff, options.tip_radius).map_err(input)?)
             })?
-            .map_err(input)?;
-            outcome(&report)
         }
         _ => Err(PyValueError::new_err(
             "surface: give one of sources, grid or traces",

@@ -105,3 +105,85 @@ def test_a_study_is_interrupted_by_ctrl_c(tmp_path):
     assert done.returncode == 0, done.stdout + done.stderr
     seconds = float(done.stdout.split()[-1])
     assert 0.9 < seconds < 5.0, seconds
+
+
+@pytest.mark.parametrize("place", ["worker", "guarded", "bare"])
+def test_a_panic_is_an_internal_error_and_the_interpreter_goes_on(place):
+    """A Rust panic reaches Python as ``InternalError`` (a ``RuntimeError``), never as pyo3's
+    ``PanicException`` (a ``BaseException`` that ``except Exception`` misses, D4): caught on the
+    worker, in the calling thread's guard, or (outside both) by the public wrappers."""
+    call = sealsim._documented_errors("panic", sealsim._sealsim._panic)
+    with pytest.raises(sealsim.InternalError, match="a panic on purpose"):
+        call(place)
+    assert sealsim.quantity("2 bar") == 2e5
+
+
+def gsf(path, x_res, y_res, x_real, y_real):
+    """A GSF file of the header alone, padded as the format pads it (the review's D4 repro)."""
+    header = (
+        f"Gwyddion Simple Field 1.0\nXRes = {x_res}\nYRes = {y_res}\nXReal = {x_real}\n"
+        f"YReal = {y_real}\n"
+    ).encode()
+    path.write_bytes(header + b"\0" * (4 - len(header) % 4))
+    return path
+
+
+# XRes · YRes · 4 wraps to 0 (it passed the size check and panicked: capacity overflow), and
+# XRes · YRes wraps (index out of bounds in the spectrum estimate)
+WRAPPING = [(4294967296, 1073741824, "1e-3", "0.00025"), (2**63, 2**63, "1", "1")]
+
+
+@pytest.mark.parametrize("header", WRAPPING, ids=["xres-4e9", "xres-2^63"])
+def test_a_gsf_header_whose_size_wraps_is_a_scenario_error(tmp_path, repo, header):
+    x, y = header[:2]
+    size = f"XRes × YRes = {x} × {y} is more than"
+    path = gsf(tmp_path / "wrap.gsf", *header)
+    with pytest.raises(sealsim.ScenarioError, match=size):
+        sealsim.surface(path)
+    base = (repo / "scenarios/oring-nbr-water-80c.toml").read_text()
+    start = base.index("[surface]")
+    end = base.index("\n[", start + 1)
+    text = base[:start] + '[surface]\nheight_map = "wrap.gsf"\n' + base[end:]
+    scenario = tmp_path / "hm.toml"
+    scenario.write_text(text)
+    with pytest.raises(sealsim.ScenarioError, match=size):
+        sealsim.Scenario.from_file(scenario)
+    with pytest.raises(sealsim.ScenarioError, match=size):
+        sealsim.Scenario.from_toml(text, path=scenario)
+
+
+GRID = {"numerical.band": 512, "numerical.pixels_per_wavelength": 64}
+# each key within its range; together a 32768² grid, which aborted the interpreter (D6)
+REFUSAL = r"32768 × 32768 grid, which needs about [0-9.]+ GB"
+
+
+def test_an_oversized_numerical_grid_is_refused_by_replace(repo):
+    base = sealsim.Scenario.from_file(repo / "scenarios/oring-nbr-water-80c.toml")
+    with pytest.raises(sealsim.ScenarioError, match=REFUSAL):
+        base.replace(GRID)
+
+
+def test_an_oversized_numerical_grid_is_refused_by_from_toml(repo):
+    text = (repo / "scenarios/gasket-nbr-dirty-oil.toml").read_text()
+    assert "[numerical]" not in text
+    text += "\n[numerical]\nband = 512\npixels_per_wavelength = 64\nrealisations = 1000\n"
+    with pytest.raises(sealsim.ScenarioError, match=REFUSAL):
+        sealsim.Scenario.from_toml(text)
+
+
+def test_a_height_map_above_8192_squared_is_refused_before_it_is_copied():
+    """A broadcast view of 8193 × 8192 pixels (one number in memory) is refused on its shape:
+    made contiguous first, it would have taken 2 × 537 MB (the array, then its bytes)."""
+    import tracemalloc
+
+    import numpy
+
+    heights = numpy.broadcast_to(numpy.float64(1e-7), (8193, 8192))
+    tracemalloc.start()
+    try:
+        with pytest.raises(sealsim.ScenarioError, match="8193 × 8192: the contact solver takes at most"):
+            sealsim.contact([2e5], height_map=heights, pixel_size=1e-6, youngs_modulus=1e7)
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    assert peak < 10e6, peak
