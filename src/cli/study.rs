@@ -223,7 +223,7 @@ fn run_cases(args: RunArgs) -> Result<(), CliError> {
     let table = args
         .output
         .as_deref()
-        .map(|path| Table::create(path, &head))
+        .map(|path| OutFile::create(path, &head))
         .transpose()?;
     let records = args
         .shard
@@ -263,14 +263,15 @@ fn run_cases(args: RunArgs) -> Result<(), CliError> {
     finish(sink, &args.outputs)
 }
 
-/// The per-case table being written: its output and where it goes (for the messages).
-struct Table {
+/// An output written as it comes (the per-case table, the summary JSON), with where it goes
+/// for the messages.
+struct OutFile {
     file: StagedFile,
     path: PathBuf,
 }
 
-impl Table {
-    /// The table's output at `path`, `head` written.
+impl OutFile {
+    /// The output at `path`, `head` written.
     fn create(path: &Path, head: &[u8]) -> Result<Self, CliError> {
         let error = |source| CliError::Output {
             target: path.display().to_string(),
@@ -278,7 +279,7 @@ impl Table {
         };
         let mut file = StagedFile::create(path).map_err(error)?;
         file.write_all(head).map_err(error)?;
-        Ok(Table {
+        Ok(OutFile {
             file,
             path: path.to_path_buf(),
         })
@@ -291,7 +292,7 @@ impl Table {
         }
     }
 
-    /// The table put in place (staged with the command's other outputs).
+    /// The output put in place (staged with the command's other outputs).
     fn finish(self) -> Result<(), CliError> {
         let target = self.path.display().to_string();
         self.file
@@ -304,7 +305,7 @@ impl Table {
 /// for), the summary's records (a run, a merge; not a shard). The outcomes are not kept.
 struct Sink<'a> {
     study: &'a Study,
-    table: Option<Table>,
+    table: Option<OutFile>,
     records: Option<CaseRecords>,
 }
 
@@ -331,12 +332,6 @@ impl Sink<'_> {
 fn finish(sink: Sink<'_>, outputs: &SummaryOutputs) -> Result<(), CliError> {
     let study = sink.study;
     let summary = sink.records.unwrap_or_default().summary(study.confidence);
-    let json = outputs
-        .summary
-        .as_ref()
-        .map(|_| out::summary_json(study, &summary))
-        .transpose()
-        .map_err(|e| CliError::Internal(e.to_string()))?;
     // a chart is drawn for its own file or for the report
     let chart =
         |path: Option<&Path>,
@@ -372,11 +367,15 @@ fn finish(sink: Sink<'_>, outputs: &SummaryOutputs) -> Result<(), CliError> {
     if let Some(table) = sink.table {
         table.finish()?;
     }
+    if let Some(path) = outputs.summary.as_deref() {
+        // written as it is rendered: its survival curve has up to a step per case
+        let mut json = OutFile::create(path, b"")?;
+        if let Err(e) = out::write_summary_json(study, &summary, &mut json.file) {
+            return Err(json.error(e.into()));
+        }
+        json.finish()?;
+    }
     for (path, bytes) in [
-        (
-            outputs.summary.as_deref(),
-            json.as_deref().map(str::as_bytes),
-        ),
         (outputs.survival_plot.as_deref(), survival_file.as_deref()),
         (outputs.tornado_plot.as_deref(), tornado_file.as_deref()),
         (
@@ -416,7 +415,7 @@ fn merge(args: MergeArgs) -> Result<(), CliError> {
     let table = args
         .output
         .as_deref()
-        .map(|path| Table::create(path, &out::header_row(&study)?))
+        .map(|path| OutFile::create(path, &out::header_row(&study)?))
         .transpose()?;
     let mut sink = Sink {
         study: &study,

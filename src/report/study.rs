@@ -508,8 +508,78 @@ impl PartRow<'_> {
     }
 }
 
-/// The summary as JSON.
+/// The summary as JSON ([`write_summary_json`] into a string).
 pub fn summary_json(study: &Study, s: &StudySummary) -> Result<String, serde_json::Error> {
+    let mut bytes = Vec::new();
+    write_summary_json(study, s, &mut bytes)?;
+    String::from_utf8(bytes).map_err(|e| serde::ser::Error::custom(e.to_string()))
+}
+
+/// Writes the summary as JSON (pretty, keys in order, a final newline) to `w`. The survival
+/// curve — a step per distinct failure time, ≈ 200 B each, up to one per case — is rendered
+/// step by step as it is written, never as a document tree (≈ 1 KB a step: 1 GB for 10⁶
+/// cases).
+pub fn write_summary_json(
+    study: &Study,
+    s: &StudySummary,
+    mut w: impl std::io::Write,
+) -> Result<(), serde_json::Error> {
+    let doc = SummaryDoc {
+        doc: summary_doc(study, s),
+        km: &s.kaplan_meier,
+        confidence: s.confidence,
+    };
+    serde_json::to_writer_pretty(&mut w, &doc)?;
+    w.write_all(b"\n").map_err(serde_json::Error::io)
+}
+
+/// The summary's JSON document; its `survival` member is a placeholder for the steps.
+struct SummaryDoc<'a> {
+    doc: serde_json::Map<String, Value>,
+    km: &'a crate::study::survival::KaplanMeier,
+    confidence: f64,
+}
+
+impl serde::Serialize for SummaryDoc<'_> {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let mut map = serializer.serialize_map(Some(self.doc.len()))?;
+        for (key, value) in &self.doc {
+            if key == "survival" {
+                map.serialize_entry(key, &SurvivalSteps(self))?;
+            } else {
+                map.serialize_entry(key, value)?;
+            }
+        }
+        map.end()
+    }
+}
+
+/// The Kaplan–Meier steps with their band, each a JSON object made as it is written.
+struct SurvivalSteps<'a>(&'a SummaryDoc<'a>);
+
+impl serde::Serialize for SurvivalSteps<'_> {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeSeq;
+        let (km, confidence) = (self.0.km, self.0.confidence);
+        let mut seq = serializer.serialize_seq(Some(km.steps().len()))?;
+        for st in km.steps() {
+            let (lo, hi) = km.band(st.time, confidence);
+            seq.serialize_element(&json!({
+                "time_s": st.time,
+                "at_risk": st.at_risk,
+                "failures": st.failures,
+                "survival": st.survival,
+                "lower": lo,
+                "upper": hi,
+            }))?;
+        }
+        seq.end()
+    }
+}
+
+/// The summary's JSON members but the survival steps (a placeholder).
+fn summary_doc(study: &Study, s: &StudySummary) -> serde_json::Map<String, Value> {
     let mut doc = serde_json::Map::new();
     doc.insert("study".into(), json!(study.name));
     doc.insert("file".into(), json!(study.path.display().to_string()));
@@ -593,26 +663,8 @@ pub fn summary_json(study: &Study, s: &StudySummary) -> Result<String, serde_jso
                 .collect(),
         ),
     );
-    let km = &s.kaplan_meier;
-    doc.insert(
-        "survival".into(),
-        Value::Array(
-            km.steps()
-                .iter()
-                .map(|st| {
-                    let (lo, hi) = km.band(st.time, s.confidence);
-                    json!({
-                        "time_s": st.time,
-                        "at_risk": st.at_risk,
-                        "failures": st.failures,
-                        "survival": st.survival,
-                        "lower": lo,
-                        "upper": hi,
-                    })
-                })
-                .collect(),
-        ),
-    );
+    // the steps are written one by one (`SurvivalSteps`)
+    doc.insert("survival".into(), Value::Null);
     doc.insert(
         "warnings".into(),
         Value::Object(
@@ -622,9 +674,7 @@ pub fn summary_json(study: &Study, s: &StudySummary) -> Result<String, serde_jso
                 .collect(),
         ),
     );
-    let mut text = serde_json::to_string_pretty(&Value::Object(doc))?;
-    text.push('\n');
-    Ok(text)
+    doc
 }
 
 /// A life for people, or why there is none.
