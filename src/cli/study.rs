@@ -3,17 +3,23 @@
 //! slices, `study slurm` writes a Slurm job array that does both on a cluster.
 //!
 //! The summary table goes to standard output; the per-case CSV (`-o`), the summary JSON
-//! (`--summary`) and the charts are written only when asked for, each atomically, after every
-//! case has run (on bad input nothing is written).
+//! (`--summary`) and the charts are written only when asked for, each atomically (on bad input
+//! nothing is written). The cases run, and a merge reads its parts, in blocks: each block's
+//! rows go to the table's temporary as they come and the summary keeps a few numbers a case
+//! ([`CaseRecords`]), so a 10⁶-case study or merge runs in flat memory; every output is put in
+//! place at the end.
 
 use super::{CliError, print_scenario_warnings, write_output};
+use crate::report::StagedFile;
 use crate::report::study::{self as out, charts};
 use crate::scenario::study::Study;
 use crate::study::CaseOutcome;
 use crate::study::design::shard_range;
-use crate::study::summary::StudySummary;
+use crate::study::summary::{CaseRecords, StudySummary};
 use crate::workflow;
 use clap::{Args, Subcommand};
+use std::io::Write as _;
+use std::ops::Range;
 use std::path::{Path, PathBuf};
 
 /// Arguments of `sealsim study`.
@@ -209,23 +215,44 @@ fn run_cases(args: RunArgs) -> Result<(), CliError> {
         Some((k, n)) => shard_range(k, n, total),
         None => 0..total,
     };
+    // the table's temporary first: a bad output path fails before the cases run
+    let head = match args.shard {
+        Some(shard) => out::part_head(&study, shard, range.clone())?,
+        None => out::header_row(&study)?,
+    };
+    let table = args
+        .output
+        .as_deref()
+        .map(|path| OutFile::create(path, &head))
+        .transpose()?;
+    let records = args
+        .shard
+        .is_none()
+        .then(|| CaseRecords::with_capacity(range.len()));
+    let mut sink = Sink {
+        study: &study,
+        table,
+        records,
+    };
     print_scenario_warnings(Some("base scenario"), &study.base_scenario);
     let bar = super::styled_bar("cases");
     let progress = |done: usize, total: usize| {
         bar.set_length(total as u64);
         bar.set_position(done as u64);
     };
-    let outcomes = workflow::study::run(
+    workflow::study::run_blocks(
         &study,
         range.clone(),
         args.threads.map(usize::from),
         &progress,
+        |block| sink.take(&block),
     )?;
     bar.finish_and_clear();
 
     if let Some((k, n)) = args.shard {
-        let csv = out::part_csv(&study, (k, n), range.clone(), &outcomes)?;
-        write_output(args.output.as_deref(), csv.as_bytes())?;
+        if let Some(table) = sink.table {
+            table.finish()?;
+        }
         eprintln!(
             "shard {k}/{n}: cases {}..{} of {total} written; join the parts with `sealsim \
              study merge`",
@@ -233,24 +260,78 @@ fn run_cases(args: RunArgs) -> Result<(), CliError> {
         );
         return Ok(());
     }
-    finish(&study, &outcomes, args.output.as_deref(), &args.outputs)
+    finish(sink, &args.outputs)
 }
 
-/// Renders everything, then writes: the table, the summary, the charts, the terminal summary.
-fn finish(
-    study: &Study,
-    outcomes: &[CaseOutcome],
-    table: Option<&Path>,
-    outputs: &SummaryOutputs,
-) -> Result<(), CliError> {
-    let summary = StudySummary::new(outcomes, study.confidence);
-    let csv = table.map(|_| out::cases_csv(study, outcomes)).transpose()?;
-    let json = outputs
-        .summary
-        .as_ref()
-        .map(|_| out::summary_json(study, &summary))
-        .transpose()
-        .map_err(|e| CliError::Internal(e.to_string()))?;
+/// An output written as it comes (the per-case table, the summary JSON), with where it goes
+/// for the messages.
+struct OutFile {
+    file: StagedFile,
+    path: PathBuf,
+}
+
+impl OutFile {
+    /// The output at `path`, `head` written.
+    fn create(path: &Path, head: &[u8]) -> Result<Self, CliError> {
+        let error = |source| CliError::Output {
+            target: path.display().to_string(),
+            source,
+        };
+        let mut file = StagedFile::create(path).map_err(error)?;
+        file.write_all(head).map_err(error)?;
+        Ok(OutFile {
+            file,
+            path: path.to_path_buf(),
+        })
+    }
+
+    fn error(&self, source: std::io::Error) -> CliError {
+        CliError::Output {
+            target: self.path.display().to_string(),
+            source,
+        }
+    }
+
+    /// The output put in place (staged with the command's other outputs).
+    fn finish(self) -> Result<(), CliError> {
+        let target = self.path.display().to_string();
+        self.file
+            .finish()
+            .map_err(|source| CliError::Output { target, source })
+    }
+}
+
+/// Where a study's cases go as their blocks come: the rows to the table (if one is asked
+/// for), the summary's records (a run, a merge; not a shard). The outcomes are not kept.
+struct Sink<'a> {
+    study: &'a Study,
+    table: Option<OutFile>,
+    records: Option<CaseRecords>,
+}
+
+impl Sink<'_> {
+    /// One block of cases, in case order.
+    fn take(&mut self, block: &[CaseOutcome]) -> Result<(), CliError> {
+        if let Some(table) = &mut self.table {
+            let rows = out::case_rows(self.study, block)?;
+            if let Err(e) = table.file.write_all(&rows) {
+                return Err(table.error(e));
+            }
+        }
+        if let Some(records) = &mut self.records {
+            for case in block {
+                records.push(case);
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Renders the summary's outputs, then writes: the table, the summary, the charts, the
+/// terminal summary.
+fn finish(sink: Sink<'_>, outputs: &SummaryOutputs) -> Result<(), CliError> {
+    let study = sink.study;
+    let summary = sink.records.unwrap_or_default().summary(study.confidence);
     // a chart is drawn for its own file or for the report
     let chart =
         |path: Option<&Path>,
@@ -283,12 +364,18 @@ fn finish(
     });
     let survival_file = super::plot_file(outputs.survival_plot.as_deref(), survival.as_deref())?;
     let tornado_file = super::plot_file(outputs.tornado_plot.as_deref(), tornado.as_deref())?;
+    if let Some(table) = sink.table {
+        table.finish()?;
+    }
+    if let Some(path) = outputs.summary.as_deref() {
+        // written as it is rendered: its survival curve has up to a step per case
+        let mut json = OutFile::create(path, b"")?;
+        if let Err(e) = out::write_summary_json(study, &summary, &mut json.file) {
+            return Err(json.error(e.into()));
+        }
+        json.finish()?;
+    }
     for (path, bytes) in [
-        (table, csv.as_deref().map(str::as_bytes)),
-        (
-            outputs.summary.as_deref(),
-            json.as_deref().map(str::as_bytes),
-        ),
         (outputs.survival_plot.as_deref(), survival_file.as_deref()),
         (outputs.tornado_plot.as_deref(), tornado_file.as_deref()),
         (
@@ -324,41 +411,96 @@ fn merge(args: MergeArgs) -> Result<(), CliError> {
     if let Some(path) = args.output.as_deref() {
         super::expect_extension("-o", path, &["csv"])?;
     }
-    let mut outcomes: Vec<CaseOutcome> = Vec::with_capacity(study.cases());
-    let mut source: Vec<Option<usize>> = vec![None; study.cases()];
-    let design = study.plan.values(0..study.cases());
-    for (p, part) in args.parts.iter().enumerate() {
-        let text = std::fs::read_to_string(part).map_err(|e| {
+    let order = part_order(&study, &args)?;
+    let table = args
+        .output
+        .as_deref()
+        .map(|path| OutFile::create(path, &out::header_row(&study)?))
+        .transpose()?;
+    let mut sink = Sink {
+        study: &study,
+        table,
+        records: Some(CaseRecords::with_capacity(study.cases())),
+    };
+    let design = study.plan.sampler();
+    // the parts one at a time, in case order: each read, checked and handed on in blocks
+    for (range, p) in order {
+        let path = &args.parts[p];
+        let mut reader = open_part(path)?;
+        if out::part_cases(&study, path, &mut reader)? != range {
+            return Err(CliError::Input(format!(
+                "{}: the part file changed while it was merged",
+                path.display()
+            )));
+        }
+        out::read_part(
+            &study,
+            &design,
+            path,
+            reader,
+            (range, workflow::study::BLOCK),
+            |block| sink.take(&block),
+        )?;
+    }
+    finish(sink, &args.outputs)
+}
+
+/// A part file, buffered.
+fn open_part(path: &Path) -> Result<std::io::BufReader<std::fs::File>, CliError> {
+    std::fs::File::open(path)
+        .map(std::io::BufReader::new)
+        .map_err(|e| {
             CliError::Input(format!(
                 "{}: cannot read the part file: {e}",
-                part.display()
+                path.display()
             ))
-        })?;
-        for case in out::read_part(&study, &design, part, &text)? {
-            if let Some(q) = source[case.index] {
-                return Err(CliError::Input(format!(
-                    "{}: case {} is also in {}: a part given twice, or parts of different \
-                     shardings",
-                    part.display(),
-                    case.index,
-                    args.parts[q].display()
-                )));
-            }
-            source[case.index] = Some(p);
-            outcomes.push(case);
-        }
+        })
+}
+
+/// The parts of a merge in case order — `(cases, index in args.parts)` — from their first
+/// lines, which must name the study and, together, every case once.
+fn part_order(study: &Study, args: &MergeArgs) -> Result<Vec<(Range<usize>, usize)>, CliError> {
+    let mut order = Vec::with_capacity(args.parts.len());
+    for (p, path) in args.parts.iter().enumerate() {
+        let range = out::part_cases(study, path, &mut open_part(path)?)?;
+        order.push((range, p));
     }
-    if let Some(missing) = source.iter().position(Option::is_none) {
-        let count = source.iter().filter(|s| s.is_none()).count();
+    // an empty part (a shard of more shards than cases) holds nothing to place
+    order.retain(|(range, _)| !range.is_empty());
+    order.sort_by_key(|(range, p)| (range.start, *p));
+    let mut next = 0;
+    let (mut missing, mut first_missing) = (0, None);
+    for k in 0..order.len() {
+        let (range, p) = &order[k];
+        if range.start < next {
+            let (_, q) = &order[k - 1];
+            return Err(CliError::Input(format!(
+                "{}: case {} is also in {}: a part given twice, or parts of different \
+                 shardings",
+                args.parts[*p].display(),
+                range.start,
+                args.parts[*q].display()
+            )));
+        }
+        if range.start > next {
+            missing += range.start - next;
+            first_missing.get_or_insert(next);
+        }
+        next = range.end;
+    }
+    if next < study.cases() {
+        missing += study.cases() - next;
+        first_missing.get_or_insert(next);
+    }
+    if let Some(first) = first_missing {
         return Err(CliError::Input(format!(
-            "{}: {count} of its {} cases are in no part (the first: case {missing}); give every \
+            "{}: {missing} of its {} cases are in no part (the first: case {first}); give every \
              shard's part file",
             args.study.display(),
             study.cases()
         )));
     }
-    outcomes.sort_by_key(|c| c.index);
-    finish(&study, &outcomes, args.output.as_deref(), &args.outputs)
+    Ok(order)
 }
 
 fn slurm(args: SlurmArgs) -> Result<(), CliError> {

@@ -248,16 +248,144 @@ pub fn replace_refusal(path: &Path, meta: &fs::Metadata) -> Option<String> {
 /// descriptor, appending when it is a redirected file: `-o /dev/stdout >> log.txt` adds to
 /// the log, never replaces it. A block device is refused.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> io::Result<()> {
-    match output_target(path)? {
-        OutputTarget::File { path, existing } => {
-            if let Some(meta) = &existing
-                && let Some(why) = replace_refusal(&path, meta)
-            {
-                return Err(io::Error::new(io::ErrorKind::PermissionDenied, why));
+    let mut file = StagedFile::create(path)?;
+    file.write_all(bytes)?;
+    file.finish()
+}
+
+/// An output written as it is produced and put in place whole at [`StagedFile::finish`], as
+/// [`write_atomic`] puts its bytes (the same targets, refusals, temporary, mode and owner): a
+/// table of 10⁶ rows is never held in memory. The temporary is created at
+/// [`StagedFile::create`] (so a missing directory is an error before any work) and filled
+/// through a buffer; on any error, or if the writer is dropped unfinished, it is removed. A
+/// stream target (`/dev/stdout`, a FIFO, a device), written in place and never replaced, is
+/// held in memory and written at `finish`, so that it too gets nothing from a command that
+/// fails.
+pub struct StagedFile {
+    state: Staged,
+}
+
+enum Staged {
+    /// The temporary being written, and the file it will replace.
+    File {
+        writer: io::BufWriter<File>,
+        tmp: PathBuf,
+        target: PathBuf,
+    },
+    /// The bytes for a stream.
+    Stream {
+        path: PathBuf,
+        append: bool,
+        bytes: Vec<u8>,
+    },
+    /// Finished (or failed): nothing left to remove.
+    Done,
+}
+
+impl StagedFile {
+    /// Starts an output to `path` ([`write_atomic`]'s rules): a regular file or a new path gets
+    /// its temporary now.
+    ///
+    /// Errors: what [`output_target`] refuses, a read-only file or one this process may not
+    /// write ([`replace_refusal`]), a temporary that cannot be created (a missing directory).
+    pub fn create(path: &Path) -> io::Result<Self> {
+        let state = match output_target(path)? {
+            OutputTarget::File { path, existing } => {
+                if let Some(meta) = &existing
+                    && let Some(why) = replace_refusal(&path, meta)
+                {
+                    return Err(io::Error::new(io::ErrorKind::PermissionDenied, why));
+                }
+                let (file, tmp) = temporary(&path)?;
+                if let Err(e) = keep_mode_and_owner(&file, existing.as_ref()) {
+                    staging::discard(&tmp);
+                    return Err(e);
+                }
+                Staged::File {
+                    writer: io::BufWriter::new(file),
+                    tmp,
+                    target: path,
+                }
             }
-            replace_whole(&path, bytes, existing.as_ref())
+            OutputTarget::Stream { path, append } => Staged::Stream {
+                path,
+                append,
+                bytes: Vec::new(),
+            },
+        };
+        Ok(StagedFile { state })
+    }
+
+    /// Ends the output: the temporary flushed, synced (so a rename never exposes a file whose
+    /// bytes are still only in the page cache) and renamed over the target — or staged, inside
+    /// a [`staging::begin`] batch —; a stream's bytes written into it. On an error the
+    /// temporary is removed and an existing file left untouched.
+    pub fn finish(mut self) -> io::Result<()> {
+        match std::mem::replace(&mut self.state, Staged::Done) {
+            Staged::File {
+                writer,
+                tmp,
+                target,
+            } => {
+                let synced = writer
+                    .into_inner()
+                    .map_err(io::IntoInnerError::into_error)
+                    .and_then(|file| file.sync_all());
+                match synced {
+                    Ok(()) => {
+                        staging::finish(&tmp, &target).inspect_err(|_| staging::discard(&tmp))
+                    }
+                    Err(e) => {
+                        staging::discard(&tmp);
+                        Err(e)
+                    }
+                }
+            }
+            Staged::Stream {
+                path,
+                append,
+                bytes,
+            } => write_stream(&path, append, &bytes),
+            Staged::Done => Ok(()),
         }
-        OutputTarget::Stream { path, append } => write_stream(&path, append, bytes),
+    }
+}
+
+impl Write for StagedFile {
+    fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+        match &mut self.state {
+            Staged::File { writer, .. } => writer.write(buf),
+            Staged::Stream { bytes, .. } => bytes.write(buf),
+            Staged::Done => Err(io::Error::other("write after finish")),
+        }
+    }
+
+    fn write_all(&mut self, buf: &[u8]) -> io::Result<()> {
+        match &mut self.state {
+            Staged::File { writer, .. } => writer.write_all(buf),
+            Staged::Stream { bytes, .. } => bytes.write_all(buf),
+            Staged::Done => Err(io::Error::other("write after finish")),
+        }
+    }
+
+    /// Flushes the buffer into the temporary (a stream is written only at `finish`).
+    fn flush(&mut self) -> io::Result<()> {
+        match &mut self.state {
+            Staged::File { writer, .. } => writer.flush(),
+            Staged::Stream { .. } | Staged::Done => Ok(()),
+        }
+    }
+}
+
+impl Drop for StagedFile {
+    /// An unfinished output (an error, a failed command) leaves nothing: its temporary is
+    /// removed, the buffer dropped unwritten.
+    fn drop(&mut self) {
+        if let Staged::File { writer, tmp, .. } = std::mem::replace(&mut self.state, Staged::Done) {
+            // no flush: the bytes go nowhere
+            drop(writer.into_parts());
+            staging::discard(&tmp);
+        }
     }
 }
 
@@ -289,9 +417,9 @@ fn write_stream(path: &Path, append: bool, bytes: &[u8]) -> io::Result<()> {
     stream.flush()
 }
 
-/// The temporary-file-and-rename write of [`write_atomic`], for a regular file or a new path;
-/// `existing` is the replaced file's metadata (its mode and owner are carried over).
-fn replace_whole(path: &Path, bytes: &[u8], existing: Option<&fs::Metadata>) -> io::Result<()> {
+/// A new temporary beside `path` (`.{name}.tmp-{pid}-{random}`), recorded in the [`staging`]
+/// ledger before it is created.
+fn temporary(path: &Path) -> io::Result<(File, PathBuf)> {
     let name = path.file_name().ok_or_else(|| {
         io::Error::new(
             io::ErrorKind::InvalidInput,
@@ -306,7 +434,7 @@ fn replace_whole(path: &Path, bytes: &[u8], existing: Option<&fs::Metadata>) -> 
     // The random part keeps a name left by a killed process (of this PID, in a container)
     // from colliding; a collision all the same is retried under a new name.
     let mut attempt = 0;
-    let (file, tmp) = loop {
+    loop {
         let tmp = dir.join(format!(
             ".{}.tmp-{}-{:016x}",
             name.to_string_lossy(),
@@ -317,18 +445,9 @@ fn replace_whole(path: &Path, bytes: &[u8], existing: Option<&fs::Metadata>) -> 
             OpenOptions::new().write(true).create_new(true).open(&tmp)
         });
         match made {
-            Ok(file) => break (file, tmp),
+            Ok(file) => return Ok((file, tmp)),
             Err(e) if e.kind() == io::ErrorKind::AlreadyExists && attempt < 64 => attempt += 1,
             Err(e) => return Err(e),
-        }
-    };
-    let result = keep_mode_and_owner(&file, existing).and_then(|()| fill(file, bytes));
-    match result {
-        Ok(()) => staging::finish(&tmp, path).inspect_err(|_| staging::discard(&tmp)),
-        Err(e) => {
-            // Best effort: the original error is the one worth reporting.
-            staging::discard(&tmp);
-            Err(e)
         }
     }
 }
@@ -349,14 +468,6 @@ fn keep_mode_and_owner(file: &File, existing: Option<&fs::Metadata>) -> io::Resu
         }
     }
     file.set_permissions(old.permissions())
-}
-
-/// Writes the whole temporary and syncs it to disk (so a rename never exposes a file whose
-/// bytes are still only in the page cache).
-fn fill(mut file: File, bytes: &[u8]) -> io::Result<()> {
-    file.write_all(bytes)?;
-    file.flush()?;
-    file.sync_all()
 }
 
 /// A number unique within this process, mixed into each temporary's random name.

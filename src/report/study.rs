@@ -9,6 +9,7 @@ use crate::report::life::human_time;
 use crate::scenario::ScenarioError;
 use crate::scenario::study::{InputKind, Study};
 use crate::simulate::FailureMode;
+use crate::study::design::Sampler;
 use crate::study::summary::{B_LIVES, LevelLife, StudySummary};
 use crate::study::{CaseOutcome, Cell};
 use crate::units::{exact as num, human};
@@ -50,16 +51,39 @@ fn opt(v: Option<f64>) -> String {
     v.map_or_else(String::new, num)
 }
 
-/// The per-case table (CSV) of `outcomes`.
+/// The per-case table (CSV) of `outcomes`: the header, then [`case_rows`].
 pub fn cases_csv(
     study: &Study,
     outcomes: &[CaseOutcome],
 ) -> Result<String, crate::report::ReportError> {
+    let mut bytes = header_row(study)?;
+    bytes.extend(case_rows(study, outcomes)?);
+    String::from_utf8(bytes).map_err(|e| crate::report::ReportError::Csv(e.to_string()))
+}
+
+/// The per-case table's header line (CSV).
+pub fn header_row(study: &Study) -> Result<Vec<u8>, crate::report::ReportError> {
     let mut w = csv::Writer::from_writer(Vec::new());
     let err = |e: csv::Error| crate::report::ReportError::Csv(e.to_string());
     w.write_record(columns(study)).map_err(err)?;
+    w.into_inner()
+        .map_err(|e| crate::report::ReportError::Csv(e.to_string()))
+}
+
+/// The per-case table's rows of `outcomes` (CSV, no header): a study's table is its header
+/// followed by the rows of its blocks of cases in case order, so it can be written as the
+/// blocks come.
+pub fn case_rows(
+    study: &Study,
+    outcomes: &[CaseOutcome],
+) -> Result<Vec<u8>, crate::report::ReportError> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    let err = |e: csv::Error| crate::report::ReportError::Csv(e.to_string());
+    let width = columns(study).len();
+    let mut row: Vec<String> = Vec::with_capacity(width);
     for c in outcomes {
-        let mut row = vec![c.index.to_string()];
+        row.clear();
+        row.push(c.index.to_string());
         row.extend(c.inputs.iter().map(|cell| match cell {
             Cell::Number(x) => num(*x),
             Cell::Word(s) => s.clone(),
@@ -86,43 +110,99 @@ pub fn cases_csv(
         row.push(c.invalid.clone().unwrap_or_default());
         w.write_record(&row).map_err(err)?;
     }
-    let bytes = w
-        .into_inner()
-        .map_err(|e| crate::report::ReportError::Csv(e.to_string()))?;
-    String::from_utf8(bytes).map_err(|e| crate::report::ReportError::Csv(e.to_string()))
+    w.into_inner()
+        .map_err(|e| crate::report::ReportError::Csv(e.to_string()))
 }
 
-/// A shard's part file: its identifying first line, then the per-case table of its cases.
+/// A shard's part file: [`part_head`], then the rows of its cases.
 pub fn part_csv(
     study: &Study,
     shard: (usize, usize),
     range: std::ops::Range<usize>,
     outcomes: &[CaseOutcome],
 ) -> Result<String, crate::report::ReportError> {
-    Ok(format!(
-        "{PART_PREFIX}{} part {}/{} cases {}..{} of {}\n{}",
+    let mut bytes = part_head(study, shard, range)?;
+    bytes.extend(case_rows(study, outcomes)?);
+    String::from_utf8(bytes).map_err(|e| crate::report::ReportError::Csv(e.to_string()))
+}
+
+/// The start of shard `shard`'s part file (cases `range`): its identifying first line,
+/// `# sealsim study FINGERPRINT part K/N cases A..B of TOTAL`, then the table's header.
+pub fn part_head(
+    study: &Study,
+    shard: (usize, usize),
+    range: std::ops::Range<usize>,
+) -> Result<Vec<u8>, crate::report::ReportError> {
+    let mut bytes = format!(
+        "{PART_PREFIX}{} part {}/{} cases {}..{} of {}\n",
         study.fingerprint,
         shard.0,
         shard.1,
         range.start,
         range.end,
         study.cases(),
-        cases_csv(study, outcomes)?
-    ))
+    )
+    .into_bytes();
+    bytes.extend(header_row(study)?);
+    Ok(bytes)
 }
 
-/// The cases of one part file of `study`, checked: the file must carry the study's
-/// fingerprint, the study's columns, and for every case the inputs the study's design gives it
-/// (`design`: the design's values of every case, [`crate::study::design::Plan::values`] over all
-/// cases, computed once for all parts).
-pub fn read_part(
+/// The longest first line of a part file read (its fingerprint and cases take < 200 bytes).
+const PART_LINE: u64 = 4096;
+
+/// The cases a part file of `study` holds, from its first line (read from `reader`, which is
+/// left at the second): the file must be a part file and carry the study's fingerprint.
+pub fn part_cases(
     study: &Study,
-    design: &[Vec<f64>],
     path: &Path,
-    text: &str,
-) -> Result<Vec<CaseOutcome>, ScenarioError> {
-    let body = part_body(study, path, text)?;
-    let mut reader = csv::ReaderBuilder::new().from_reader(body.as_bytes());
+    reader: &mut impl std::io::BufRead,
+) -> Result<std::ops::Range<usize>, ScenarioError> {
+    use std::io::{BufRead as _, Read};
+    let mut first = String::new();
+    Read::take(&mut *reader, PART_LINE)
+        .read_line(&mut first)
+        .map_err(|e| part_error(path, None, None, format!("cannot read the part file: {e}")))?;
+    let header = part_header(study, path, first.trim_end_matches(['\n', '\r']))?;
+    // `… part K/N cases A..B of TOTAL`
+    let words: Vec<&str> = header.split_whitespace().collect();
+    let range = match words.as_slice() {
+        [_, "part", _, "cases", range, "of", total] => range
+            .split_once("..")
+            .and_then(|(a, b)| Some((a.parse::<usize>().ok()?, b.parse::<usize>().ok()?)))
+            .filter(|(a, b)| {
+                a <= b && *b <= study.cases() && total.parse::<usize>() == Ok(study.cases())
+            }),
+        _ => None,
+    };
+    let Some((a, b)) = range else {
+        return Err(part_error(
+            path,
+            Some(1),
+            None,
+            format!(
+                "the first line does not say which of the study's {} cases the part holds \
+                 (`… cases A..B of {}`): the part file was edited",
+                study.cases(),
+                study.cases()
+            ),
+        ));
+    };
+    Ok(a..b)
+}
+
+/// The cases of one part file of `study` (`reader` at its second line, after
+/// [`part_cases`]: `range`), checked and handed to `each_block` in blocks of `block` cases in
+/// case order: the file must carry the study's columns, its rows the cases `range` in order,
+/// and every case the inputs the study's design gives it (`design`).
+pub fn read_part<E: From<ScenarioError>>(
+    study: &Study,
+    design: &Sampler<'_>,
+    path: &Path,
+    reader: impl std::io::Read,
+    (range, block): (std::ops::Range<usize>, usize),
+    mut each_block: impl FnMut(Vec<CaseOutcome>) -> Result<(), E>,
+) -> Result<(), E> {
+    let mut reader = csv::ReaderBuilder::new().from_reader(reader);
     let expected = columns(study);
     let found: Vec<String> = reader
         .headers()
@@ -136,12 +216,25 @@ pub fn read_part(
             Some(2),
             None,
             "the columns are not this study's".into(),
-        ));
+        )
+        .into());
     }
-    let mut out = Vec::new();
-    for (r, record) in reader.records().enumerate() {
+    let mut cases = Vec::new();
+    let mut values = Vec::new();
+    let mut record = csv::StringRecord::new();
+    let mut r = 0;
+    loop {
         let line = r + 3;
-        let record = record.map_err(|e| part_error(path, Some(line), None, e.to_string()))?;
+        let more = reader
+            .read_record(&mut record)
+            .map_err(|e| part_error(path, Some(line), None, e.to_string()))?;
+        let next = range.start + r;
+        if !more {
+            break;
+        }
+        if r % block == 0 {
+            values = design.values(next..(next + block).min(range.end));
+        }
         let row = PartRow {
             study,
             path,
@@ -149,9 +242,31 @@ pub fn read_part(
             record: &record,
             expected: &expected,
         };
-        out.push(row.case(design)?);
+        cases.push(row.case(next, &range, values.get(r % block).map(Vec::as_slice))?);
+        r += 1;
+        if cases.len() == block {
+            each_block(std::mem::take(&mut cases))?;
+        }
     }
-    Ok(out)
+    if range.start + r < range.end {
+        return Err(part_error(
+            path,
+            Some(r + 3),
+            None,
+            format!(
+                "the part ends after case {}; its first line says cases {}..{} (a truncated \
+                 part file?)",
+                (range.start + r).wrapping_sub(1),
+                range.start,
+                range.end
+            ),
+        )
+        .into());
+    }
+    if !cases.is_empty() {
+        each_block(cases)?;
+    }
+    Ok(())
 }
 
 /// An error in the part file at `path`.
@@ -169,9 +284,8 @@ fn part_error(
     }
 }
 
-/// A part file's text after its first line, which must name `study` by its fingerprint.
-fn part_body<'t>(study: &Study, path: &Path, text: &'t str) -> Result<&'t str, ScenarioError> {
-    let (first, body) = text.split_once('\n').unwrap_or((text, ""));
+/// A part file's first line after its prefix, which must name `study` by its fingerprint.
+fn part_header<'t>(study: &Study, path: &Path, first: &'t str) -> Result<&'t str, ScenarioError> {
     let Some(header) = first.strip_prefix(PART_PREFIX) else {
         return Err(part_error(
             path,
@@ -194,7 +308,7 @@ fn part_body<'t>(study: &Study, path: &Path, text: &'t str) -> Result<&'t str, S
             ),
         ));
     }
-    Ok(body)
+    Ok(header)
 }
 
 /// One case's row of a part file being read: its `line`, and the study's columns
@@ -241,10 +355,25 @@ impl PartRow<'_> {
         }
     }
 
-    /// The case, checked against the study's `design` (every case's values).
-    fn case(&self, design: &[Vec<f64>]) -> Result<CaseOutcome, ScenarioError> {
-        let index = self.index(design.len())?;
-        let inputs = self.inputs(index, &design[index])?;
+    /// The case, which must be case `next` of the part's cases `range`, checked against the
+    /// design's `values` of it (`None`: beyond the part's cases).
+    fn case(
+        &self,
+        next: usize,
+        range: &std::ops::Range<usize>,
+        values: Option<&[f64]>,
+    ) -> Result<CaseOutcome, ScenarioError> {
+        let index = self.index(next, range)?;
+        let values = values.ok_or_else(|| {
+            self.error(
+                "case",
+                format!(
+                    "case {index} is beyond the part's cases {}..{} (its first line)",
+                    range.start, range.end
+                ),
+            )
+        })?;
+        let inputs = self.inputs(index, values)?;
         let k = 1 + self.study.inputs.len();
         let status = self.field(k + 1);
         let mode = self.mode(status, self.field(k + 2))?;
@@ -302,17 +431,28 @@ impl PartRow<'_> {
             .collect()
     }
 
-    /// The case index, one of the `cases` of the design.
-    fn index(&self, cases: usize) -> Result<usize, ScenarioError> {
+    /// The case index: a case of the study, and `next`, the part's rows running through its
+    /// cases `range` in order.
+    fn index(&self, next: usize, range: &std::ops::Range<usize>) -> Result<usize, ScenarioError> {
         let index: usize = self.field(0).parse().map_err(|_| {
             self.error("case", format!("\"{}\" is not a case index", self.field(0)))
         })?;
-        if index >= cases {
+        if index >= self.study.cases() {
             return Err(self.error(
                 "case",
                 format!(
                     "case {index} is beyond the study's {} cases",
                     self.study.cases()
+                ),
+            ));
+        }
+        if index != next {
+            return Err(self.error(
+                "case",
+                format!(
+                    "case {index} where case {next} belongs: a part holds the cases of its first \
+                     line ({}..{}) in order; the part file was edited",
+                    range.start, range.end
                 ),
             ));
         }
@@ -368,8 +508,78 @@ impl PartRow<'_> {
     }
 }
 
-/// The summary as JSON.
+/// The summary as JSON ([`write_summary_json`] into a string).
 pub fn summary_json(study: &Study, s: &StudySummary) -> Result<String, serde_json::Error> {
+    let mut bytes = Vec::new();
+    write_summary_json(study, s, &mut bytes)?;
+    String::from_utf8(bytes).map_err(|e| serde::ser::Error::custom(e.to_string()))
+}
+
+/// Writes the summary as JSON (pretty, keys in order, a final newline) to `w`. The survival
+/// curve — a step per distinct failure time, ≈ 200 B each, up to one per case — is rendered
+/// step by step as it is written, never as a document tree (≈ 1 KB a step: 1 GB for 10⁶
+/// cases).
+pub fn write_summary_json(
+    study: &Study,
+    s: &StudySummary,
+    mut w: impl std::io::Write,
+) -> Result<(), serde_json::Error> {
+    let doc = SummaryDoc {
+        doc: summary_doc(study, s),
+        km: &s.kaplan_meier,
+        confidence: s.confidence,
+    };
+    serde_json::to_writer_pretty(&mut w, &doc)?;
+    w.write_all(b"\n").map_err(serde_json::Error::io)
+}
+
+/// The summary's JSON document; its `survival` member is a placeholder for the steps.
+struct SummaryDoc<'a> {
+    doc: serde_json::Map<String, Value>,
+    km: &'a crate::study::survival::KaplanMeier,
+    confidence: f64,
+}
+
+impl serde::Serialize for SummaryDoc<'_> {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let mut map = serializer.serialize_map(Some(self.doc.len()))?;
+        for (key, value) in &self.doc {
+            if key == "survival" {
+                map.serialize_entry(key, &SurvivalSteps(self))?;
+            } else {
+                map.serialize_entry(key, value)?;
+            }
+        }
+        map.end()
+    }
+}
+
+/// The Kaplan–Meier steps with their band, each a JSON object made as it is written.
+struct SurvivalSteps<'a>(&'a SummaryDoc<'a>);
+
+impl serde::Serialize for SurvivalSteps<'_> {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeSeq;
+        let (km, confidence) = (self.0.km, self.0.confidence);
+        let mut seq = serializer.serialize_seq(Some(km.steps().len()))?;
+        for st in km.steps() {
+            let (lo, hi) = km.band(st.time, confidence);
+            seq.serialize_element(&json!({
+                "time_s": st.time,
+                "at_risk": st.at_risk,
+                "failures": st.failures,
+                "survival": st.survival,
+                "lower": lo,
+                "upper": hi,
+            }))?;
+        }
+        seq.end()
+    }
+}
+
+/// The summary's JSON members but the survival steps (a placeholder).
+fn summary_doc(study: &Study, s: &StudySummary) -> serde_json::Map<String, Value> {
     let mut doc = serde_json::Map::new();
     doc.insert("study".into(), json!(study.name));
     doc.insert("file".into(), json!(study.path.display().to_string()));
@@ -453,26 +663,8 @@ pub fn summary_json(study: &Study, s: &StudySummary) -> Result<String, serde_jso
                 .collect(),
         ),
     );
-    let km = &s.kaplan_meier;
-    doc.insert(
-        "survival".into(),
-        Value::Array(
-            km.steps()
-                .iter()
-                .map(|st| {
-                    let (lo, hi) = km.band(st.time, s.confidence);
-                    json!({
-                        "time_s": st.time,
-                        "at_risk": st.at_risk,
-                        "failures": st.failures,
-                        "survival": st.survival,
-                        "lower": lo,
-                        "upper": hi,
-                    })
-                })
-                .collect(),
-        ),
-    );
+    // the steps are written one by one (`SurvivalSteps`)
+    doc.insert("survival".into(), Value::Null);
     doc.insert(
         "warnings".into(),
         Value::Object(
@@ -482,9 +674,7 @@ pub fn summary_json(study: &Study, s: &StudySummary) -> Result<String, serde_jso
                 .collect(),
         ),
     );
-    let mut text = serde_json::to_string_pretty(&Value::Object(doc))?;
-    text.push('\n');
-    Ok(text)
+    doc
 }
 
 /// A life for people, or why there is none.

@@ -52,15 +52,36 @@ pub const BLOCK: usize = 4096;
 const CARRIED: usize = 8;
 
 /// The outcomes of cases `range` of `study`, on `threads` threads (`None`: all cores), in
-/// blocks of [`BLOCK`] cases. An invalid case is recorded with its reason and counted as
-/// failed at installation ([`CaseOutcome::invalid`]); the rest run. Only a study none of
-/// whose cases is valid is an error (its first case's).
+/// blocks of [`BLOCK`] cases: [`run_blocks`] with every block kept.
 pub fn run(
     study: &Study,
     range: Range<usize>,
     threads: Option<usize>,
     progress: SharedProgress<'_>,
 ) -> Result<Vec<CaseOutcome>, ScenarioError> {
+    let mut outcomes = Vec::with_capacity(range.len());
+    run_blocks(study, range, threads, progress, |block| {
+        outcomes.extend(block);
+        Ok::<(), ScenarioError>(())
+    })?;
+    Ok(outcomes)
+}
+
+/// Runs cases `range` of `study` on `threads` threads (`None`: all cores) in blocks of
+/// [`BLOCK`] cases, handing each block's outcomes (in case order, the blocks in case order) to
+/// `each_block` before the next block is built, so that a caller that keeps less than the
+/// outcomes (a table written as it comes, the summary's records) runs any number of cases in
+/// flat memory. An invalid case is recorded with its reason and counted as failed at
+/// installation ([`CaseOutcome::invalid`]); the rest run. Only a study none of whose cases is
+/// valid is an error (its first case's), returned after every block was handed over;
+/// `each_block`'s first error stops the run.
+pub fn run_blocks<E: From<ScenarioError>>(
+    study: &Study,
+    range: Range<usize>,
+    threads: Option<usize>,
+    progress: SharedProgress<'_>,
+    mut each_block: impl FnMut(Vec<CaseOutcome>) -> Result<(), E>,
+) -> Result<(), E> {
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads.unwrap_or(0))
         .build()
@@ -70,49 +91,56 @@ pub fn run(
             key: None,
             message: format!("cannot start {threads:?} threads: {e}"),
         })?;
-    pool.install(|| {
-        let mut outcomes = Vec::with_capacity(range.len());
-        let mut carried: Vec<Carried> = Vec::new();
-        let mut first_error = None;
-        let mut any_valid = false;
-        let count = Count {
-            done: AtomicUsize::new(0),
-            total: range.len(),
-            progress,
-        };
-        progress(0, count.total);
-        for start in range.clone().step_by(BLOCK) {
-            let end = (start + BLOCK).min(range.end);
-            let values = study.plan.values(start..end);
+    let design = study.plan.sampler();
+    let mut carried: Vec<Carried> = Vec::new();
+    let mut first_error = None;
+    let mut any_valid = false;
+    let count = Count {
+        done: AtomicUsize::new(0),
+        total: range.len(),
+        progress,
+    };
+    progress(0, count.total);
+    for start in range.clone().step_by(BLOCK) {
+        let end = (start + BLOCK).min(range.end);
+        let (outcomes, scenarios, keep) = pool.install(|| {
+            let values = design.values(start..end);
             let scenarios = scenarios(study, start, &values);
-            any_valid |= scenarios.iter().any(Result::is_ok);
             let block = Block {
                 first: start,
                 values: &values,
                 scenarios: &scenarios,
             };
-            let (done, keep) = run_block(study, &block, &carried, &count);
-            outcomes.extend(done);
-            carried = keep
-                .into_iter()
-                .filter_map(|(i, path)| {
-                    let scenario = scenarios[i].as_ref().ok()?;
-                    Some((Arc::new(scenario.clone()), path))
-                })
-                .collect();
-            if first_error.is_none() && !any_valid {
-                first_error = scenarios.into_iter().next().and_then(Result::err);
-            }
+            let (outcomes, keep) = run_block(study, &block, &carried, &count);
+            (outcomes, scenarios, keep)
+        });
+        any_valid |= scenarios.iter().any(Result::is_ok);
+        carried = keep
+            .into_iter()
+            .filter_map(|(i, path)| {
+                let scenario = scenarios[i].as_ref().ok()?;
+                Some((Arc::new(scenario.clone()), path))
+            })
+            .collect();
+        // the block's scenarios (≈ 16 KB a case) dropped before its outcomes are handed over
+        let first = scenarios.into_iter().next();
+        if first_error.is_none() && !any_valid {
+            first_error = first.and_then(Result::err);
         }
-        match first_error {
-            Some(e) if range.len() == study.cases() && !any_valid => Err(e),
-            _ => Ok(outcomes),
-        }
-    })
+        each_block(outcomes)?;
+    }
+    match first_error {
+        Some(e) if range.len() == study.cases() && !any_valid => Err(e.into()),
+        _ => Ok(()),
+    }
 }
 
 /// A contact path kept across blocks, with the scenario that built it (its key).
 type Carried = (Arc<Scenario>, Arc<(ContactPath, Findings)>);
+
+/// The contact paths a block keeps for the next, each with the index (in the block) of the
+/// case whose scenario is its key.
+type Kept = Vec<(usize, Arc<(ContactPath, Findings)>)>;
 
 /// The cases of one block: the first's index, the design's values and the validated scenarios.
 struct Block<'a> {
@@ -181,7 +209,7 @@ fn run_block(
     block: &Block<'_>,
     carried: &[Carried],
     count: &Count<'_>,
-) -> (Vec<CaseOutcome>, Vec<(usize, Arc<(ContactPath, Findings)>)>) {
+) -> (Vec<CaseOutcome>, Kept) {
     let scenarios = block.scenarios;
     let old_keys: Vec<PathKey> = carried.iter().map(|(s, _)| PathKey::of(s)).collect();
     let keys: Vec<Option<PathKey>> = scenarios

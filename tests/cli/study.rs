@@ -360,6 +360,80 @@ fn merging_parts_of_another_study_or_an_incomplete_set_is_refused() {
     assert!(out.exists());
 }
 
+/// Issue 44: a merge reads its parts one at a time in case order, never all of them at once:
+/// each part must hold the cases its first line names, in order. A part with two rows
+/// swapped, one cut short or one whose first line was edited is refused at its line; nothing
+/// is written.
+#[test]
+fn a_part_out_of_order_cut_short_or_with_an_edited_first_line_is_refused() {
+    let d = Dir::new();
+    let study = headline_study(&d, 6);
+    let part = |k: usize| {
+        let p = d.path(&format!("p{k}.csv"));
+        let shard = format!("{k}/2");
+        study_ok(&[&study, &"--shard", &shard, &"-o", &p]);
+        p
+    };
+    let (a, b) = (part(1), part(2));
+    let text = std::fs::read_to_string(&b).unwrap();
+    assert!(
+        text.starts_with("# sealsim study ")
+            && text.lines().next().unwrap().contains(" cases 3..6 of 6")
+    );
+    let lines: Vec<&str> = text.lines().collect();
+    let out = d.path("merged.csv");
+    let summary = d.path("merged.json");
+    let refused = |edited: Vec<&str>, wanted: &[&str]| {
+        let e = d.write("edited.csv", &(edited.join("\n") + "\n"));
+        let err = study_bad(&[
+            &"merge",
+            &study,
+            &a,
+            &e,
+            &"-o",
+            &out,
+            &"--summary",
+            &summary,
+        ]);
+        for w in wanted {
+            assert!(err.contains(w), "wanted {w} in {err}");
+        }
+        assert!(!out.exists() && !summary.exists());
+    };
+    let mut swapped = lines.clone();
+    swapped.swap(2, 3);
+    refused(
+        swapped,
+        &["edited.csv:3: case", "case 4 where case 3 belongs"],
+    );
+    refused(
+        lines[..lines.len() - 1].to_vec(),
+        &["edited.csv:5", "ends after case 4", "truncated"],
+    );
+    for (from, to) in [
+        (" cases 3..6 ", " cases 3..7 "),
+        (" of 6", " of 7"),
+        (" cases 3..6", ""),
+    ] {
+        let first = lines[0].replace(from, to);
+        let mut edited = lines.clone();
+        edited[0] = &first;
+        refused(
+            edited,
+            &["edited.csv:1:", "does not say which of the study's 6 cases"],
+        );
+    }
+    // a first line that claims fewer cases than the part holds leaves the others in no part
+    let first = lines[0].replace(" cases 3..6 ", " cases 3..5 ");
+    let mut edited = lines.clone();
+    edited[0] = &first;
+    refused(
+        edited,
+        &["1 of its 6 cases are in no part (the first: case 5)"],
+    );
+    study_ok(&[&"merge", &study, &b, &a, &"-o", &out]);
+}
+
 #[test]
 fn the_slurm_script_submits_an_array_and_a_dependent_merge() {
     let d = Dir::new();

@@ -106,6 +106,55 @@ fn killed_while_writing_keeps_the_previous_output_and_the_next_run_succeeds() {
     assert_eq!(names(dir.path()), [tmp.clone(), "history.csv".into()]);
 }
 
+/// Issue 44: a study's per-case table is written as its blocks of cases come (a 10⁶-case
+/// table is never held whole). A write that fails in the middle of the table — past a 1 KiB
+/// file-size limit (EFBIG), on the first block's 300 rows (≈ 46 KB, more than the writer's
+/// 8 KiB buffer) — leaves the previous table, no temporary and none of the other outputs; an output
+/// under a missing directory is refused and creates nothing either.
+#[test]
+fn a_study_table_that_cannot_be_written_leaves_the_previous_one_and_no_temporary() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let base = root().join(SCENARIO);
+    fs::write(
+        d.join("s.toml"),
+        format!(
+            "base = {base:?}\ndesign = \"monte-carlo\"\nsamples = 300\nseed = 3\n[vary]\n\
+             \"seal.groove_depth\" = \"±0.05 mm\"\n"
+        ),
+    )
+    .unwrap();
+    fs::write(d.join("cases.csv"), PREVIOUS).unwrap();
+    let (code, stderr) = shell(
+        d,
+        "trap '' XFSZ; ulimit -f 1; exec \"$B\" study s.toml -o cases.csv --summary s.json",
+    );
+    assert_eq!(code, Some(1), "{stderr}");
+    assert!(
+        stderr.contains("cannot write cases.csv") && stderr.contains("large"),
+        "{stderr}"
+    );
+    assert_eq!(fs::read_to_string(d.join("cases.csv")).unwrap(), PREVIOUS);
+    assert_eq!(
+        names(d),
+        ["cases.csv", "s.toml"],
+        "a temporary or an output was left"
+    );
+    let (code, stderr) = in_dir(d, &["study", "s.toml", "-o", "no-such-dir/cases.csv"]);
+    assert_eq!(code, Some(1), "{stderr}");
+    assert!(
+        stderr.contains("cannot write no-such-dir/cases.csv"),
+        "{stderr}"
+    );
+    assert_eq!(names(d), ["cases.csv", "s.toml"]);
+    // the same study with room to write: the table is whole (a header and 300 rows)
+    let (code, stderr) = in_dir(d, &["study", "s.toml", "-o", "cases.csv"]);
+    assert_eq!(code, Some(0), "{stderr}");
+    let table = fs::read_to_string(d.join("cases.csv")).unwrap();
+    assert_eq!(table.lines().count(), 301);
+    assert!(table.len() > 8 * 1024, "{} B", table.len());
+}
+
 #[test]
 fn missing_directory_is_a_clear_error_and_creates_nothing() {
     let dir = tempfile::tempdir().unwrap();

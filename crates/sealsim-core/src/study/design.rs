@@ -270,55 +270,25 @@ impl Plan {
     }
 
     /// The input values of cases `range` (each a vector in input order). Any sub-range gives
-    /// the same values as the whole.
+    /// the same values as the whole. For many calls over one study use [`Plan::sampler`]: a
+    /// Latin hypercube's permutations are drawn on each call here.
     pub fn values(&self, range: std::ops::Range<usize>) -> Vec<Vec<f64>> {
-        match self.design {
-            Design::Grid => {
-                let levels: Vec<Vec<f64>> =
-                    self.inputs.iter().map(|d| d.levels(self.levels)).collect();
-                range
-                    .map(|mut i| {
-                        // mixed radix, the last input fastest
-                        let mut v = vec![0.0; levels.len()];
-                        for (j, l) in levels.iter().enumerate().rev() {
-                            v[j] = l[i % l.len()];
-                            i /= l.len();
-                        }
-                        v
-                    })
-                    .collect()
-            }
-            Design::MonteCarlo => range
-                .map(|i| {
-                    let mut rng = self.case_stream(i);
-                    let mut u: Vec<f64> =
-                        self.inputs.iter().map(|_| open_uniform(&mut rng)).collect();
-                    if let Some(l) = &self.correlation {
-                        u = correlated(l, &u);
-                    }
-                    self.inputs
-                        .iter()
-                        .zip(u)
-                        .map(|(d, u)| d.quantile(u))
-                        .collect()
-                })
+        self.sampler().values(range)
+    }
+
+    /// The design ready to give any cases' values ([`Sampler::values`]): a Latin hypercube's
+    /// stratum permutations drawn once (8 B per case and input: 24 MB for 10⁶ cases of three
+    /// inputs), nothing for the other designs.
+    pub fn sampler(&self) -> Sampler<'_> {
+        let permutations = match self.design {
+            Design::LatinHypercube => (0..self.inputs.len())
+                .map(|j| self.permutation(j))
                 .collect(),
-            Design::LatinHypercube => {
-                let perms: Vec<Vec<usize>> = (0..self.inputs.len())
-                    .map(|j| self.permutation(j))
-                    .collect();
-                let n = self.samples as f64;
-                range
-                    .map(|i| {
-                        let mut rng = self.case_stream(i);
-                        self.inputs
-                            .iter()
-                            .zip(&perms)
-                            .map(|(d, p)| d.quantile((p[i] as f64 + open_uniform(&mut rng)) / n))
-                            .collect()
-                    })
-                    .collect()
-            }
+            Design::Grid | Design::MonteCarlo => Vec::new(),
+        };
+        Sampler {
+            plan: self,
+            permutations,
         }
     }
 
@@ -338,6 +308,67 @@ impl Plan {
             p.swap(k, r);
         }
         p
+    }
+}
+
+/// A [`Plan`] with what its cases' values share: a Latin hypercube's permutations.
+#[derive(Debug, Clone)]
+pub struct Sampler<'a> {
+    plan: &'a Plan,
+    /// Input j's stratum permutation over all cases (Latin hypercube only).
+    permutations: Vec<Vec<usize>>,
+}
+
+impl Sampler<'_> {
+    /// The input values of cases `range` (each a vector in input order), as
+    /// [`Plan::values`]: any sub-range gives the same values as the whole.
+    pub fn values(&self, range: std::ops::Range<usize>) -> Vec<Vec<f64>> {
+        let plan = self.plan;
+        match plan.design {
+            Design::Grid => {
+                let levels: Vec<Vec<f64>> =
+                    plan.inputs.iter().map(|d| d.levels(plan.levels)).collect();
+                range
+                    .map(|mut i| {
+                        // mixed radix, the last input fastest
+                        let mut v = vec![0.0; levels.len()];
+                        for (j, l) in levels.iter().enumerate().rev() {
+                            v[j] = l[i % l.len()];
+                            i /= l.len();
+                        }
+                        v
+                    })
+                    .collect()
+            }
+            Design::MonteCarlo => range
+                .map(|i| {
+                    let mut rng = plan.case_stream(i);
+                    let mut u: Vec<f64> =
+                        plan.inputs.iter().map(|_| open_uniform(&mut rng)).collect();
+                    if let Some(l) = &plan.correlation {
+                        u = correlated(l, &u);
+                    }
+                    plan.inputs
+                        .iter()
+                        .zip(u)
+                        .map(|(d, u)| d.quantile(u))
+                        .collect()
+                })
+                .collect(),
+            Design::LatinHypercube => {
+                let n = plan.samples as f64;
+                range
+                    .map(|i| {
+                        let mut rng = plan.case_stream(i);
+                        plan.inputs
+                            .iter()
+                            .zip(&self.permutations)
+                            .map(|(d, p)| d.quantile((p[i] as f64 + open_uniform(&mut rng)) / n))
+                            .collect()
+                    })
+                    .collect()
+            }
+        }
     }
 }
 
@@ -518,6 +549,13 @@ mod tests {
                     .collect();
                 assert_eq!(parts, whole, "{design:?} in {shards} shards");
             }
+            // one sampler (the permutations drawn once) over blocks of 5: the same values
+            let sampler = p.sampler();
+            let blocks: Vec<Vec<f64>> = (0..n)
+                .step_by(5)
+                .flat_map(|a| sampler.values(a..(a + 5).min(n)))
+                .collect();
+            assert_eq!(blocks, whole, "{design:?} in blocks");
         }
     }
 
