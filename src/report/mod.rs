@@ -514,6 +514,30 @@ mod tests {
         assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 2);
     }
 
+    /// A staged output is written in pieces into its temporary and replaces the old file
+    /// only at `finish`, whole; one dropped unfinished (a failed command) leaves the old file
+    /// and no temporary.
+    #[test]
+    fn a_staged_file_replaces_whole_at_finish_and_an_unfinished_one_leaves_nothing() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("out.csv");
+        fs::write(&path, "old").unwrap();
+        let mut file = StagedFile::create(&path).unwrap();
+        file.write_all(b"head\n").unwrap();
+        file.write_all(&[b'x'; 100_000]).unwrap();
+        assert_eq!(fs::read_to_string(&path).unwrap(), "old");
+        assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 2);
+        file.finish().unwrap();
+        let text = fs::read_to_string(&path).unwrap();
+        assert!(text.starts_with("head\nx") && text.len() == 5 + 100_000);
+        assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 1);
+        let mut file = StagedFile::create(&path).unwrap();
+        file.write_all(&[b'y'; 100_000]).unwrap();
+        drop(file);
+        assert_eq!(fs::read_to_string(&path).unwrap(), text);
+        assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 1);
+    }
+
     #[test]
     fn a_directory_is_refused_and_left_alone() {
         let dir = tempfile::tempdir().unwrap();
