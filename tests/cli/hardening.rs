@@ -1,5 +1,5 @@
-//! Hardening III (issue 44): the reliability review's repros (../shared/reviews/
-//! reliability-review-2026-11-28.md, D3, D6, D9/D12, D16) end to end — an oversized grid is
+//! Hardening III (issue 44): the repros of the reliability review of 2026-11-28 (its defects
+//! D3–D8, D12, D16) end to end — an oversized grid is
 //! refused, interrupted commands leave no temporary and never a mixed set of outputs, and a
 //! merged part file's warnings are checked.
 
