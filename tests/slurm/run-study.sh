@@ -8,10 +8,17 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 SEALSIM=$(realpath "${1:-target/release/sealsim}")
 [ -x "$SEALSIM" ] || { echo "no sealsim binary at $SEALSIM (cargo build --release)" >&2; exit 1; }
+# the services this test starts, it stops when it ends (ones already running are left alone)
+started=()
+for d in slurmctld slurmd munged; do pgrep -x "$d" > /dev/null || started+=("$d"); done
 bash tests/slurm/start-slurm.sh
 
 WORK=$(mktemp -d /tmp/sealsim-slurm.XXXXXX)
-trap 'rm -rf "$WORK"' EXIT
+stop_services() {
+  rm -rf "$WORK"
+  for d in "${started[@]}"; do pkill -x "$d" 2> /dev/null || true; done
+}
+trap stop_services EXIT
 # a small study of the shipped tolerance base: 24 cases, 4 shards
 sed -e 's/^samples = .*/samples = 24/' \
     -e "s#^base = .*#base = \"$PWD/scenarios/studies/as568-225-face-water-80c.toml\"#" \
